@@ -1,0 +1,54 @@
+#include "cli_args.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+
+#include "core/error.h"
+
+namespace airlight {
+
+using viz::InputError;
+
+std::string Args::next(const std::string& forFlag) {
+    if (empty()) throw InputError("option " + forFlag + " needs a value");
+    return take();
+}
+
+bool isHelpFlag(const std::string& word) { return word == "--help" || word == "-h" || word == "help"; }
+
+double parseNumber(const std::string& text, const std::string& what) {
+    errno = 0;
+    char* end = nullptr;
+    const double v = std::strtod(text.c_str(), &end);
+    if (text.empty() || end != text.c_str() + text.size() || errno == ERANGE || !std::isfinite(v))
+        throw InputError(what + ": '" + text + "' is not a finite number");
+    return v;
+}
+
+static int parseDimension(const std::string& text, const std::string& whole) {
+    if (text.empty() || text.size() > 9 || text.find_first_not_of("0123456789") != std::string::npos)
+        throw InputError("size '" + whole + "' must be WIDTHxHEIGHT, e.g. 160x120");
+    return std::atoi(text.c_str());
+}
+
+glm::ivec2 parseSize(const std::string& text) {
+    const auto x = text.find_first_of("xX");
+    if (x == std::string::npos) throw InputError("size '" + text + "' must be WIDTHxHEIGHT, e.g. 160x120");
+    const int w = parseDimension(text.substr(0, x), text);
+    const int h = parseDimension(text.substr(x + 1), text);
+    constexpr int kMaxDimension = 16384;
+    if (w < 1 || h < 1 || w > kMaxDimension || h > kMaxDimension)
+        throw InputError("size '" + text + "' is out of range: each side must be between 1 and 16384");
+    return {w, h};
+}
+
+void parseSetting(const std::string& text, viz::Settings& into) {
+    const auto eq = text.find('=');
+    if (eq == std::string::npos || eq == 0)
+        throw InputError("--set expects name=value, got '" + text + "'");
+    const std::string name = text.substr(0, eq);
+    into[name] = parseNumber(text.substr(eq + 1), "--set " + name);
+}
+
+}  // namespace airlight

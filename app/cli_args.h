@@ -1,0 +1,31 @@
+// Small command-line parsing helpers: every malformed value is an InputError naming the flag.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "debug/technique.h"
+
+namespace airlight {
+
+class Args {
+public:
+    Args(std::vector<std::string> words) : mWords(std::move(words)) {}
+    bool empty() const { return mPos >= mWords.size(); }
+    const std::string& peek() const { return mWords[mPos]; }
+    std::string next(const std::string& forFlag);  // InputError when missing
+    std::string take() { return mWords[mPos++]; }
+
+private:
+    std::vector<std::string> mWords;
+    std::size_t mPos = 0;
+};
+
+glm::ivec2 parseSize(const std::string& text);                 // "WxH", 1..16384 each
+void parseSetting(const std::string& text, viz::Settings& into);  // "name=value"
+double parseNumber(const std::string& text, const std::string& what);
+bool isHelpFlag(const std::string& word);
+
+}  // namespace airlight

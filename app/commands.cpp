@@ -1,0 +1,317 @@
+#include "commands.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <limits>
+#include <string>
+
+#include "core/error.h"
+#include "core/image_io.h"
+#include "gui.h"
+#include "platform/window_glfw.h"
+#include "render_job.h"
+#include "scene/builtin_scenes.h"
+#include "scene/gltf_writer.h"
+#include "scene/scene_source.h"
+#include "techniques/registry.h"
+
+namespace airlight {
+
+using viz::InputError;
+
+namespace {
+
+constexpr const char* kDefaultTechnique = "raymarch";
+
+constexpr const char* kRenderHelp = R"(usage: airlight render --scene S --technique T --size WxH --out F.exr|F.png [options]
+
+  --scene S          built-in scene name (see 'airlight list scenes') or a .gltf/.glb file
+                     (default: the default scene)
+  --technique T      technique id (see 'airlight list techniques'; default: raymarch)
+  --size WxH         image size in pixels, each side 1..16384 (default: 320x240)
+  --out F            output file: .exr (32-bit float, linear RGB) or .png (8-bit sRGB)
+  --layer L          airlight (L_air alone), final (default), or an intermediate id
+                     (see 'airlight list stages T')
+  --layer-index K    array layer / cube face of an intermediate with layers (default 0)
+  --set name=value   set a technique parameter (repeatable; see 'airlight list params T')
+  --stop-after ID    stop after this stage (see 'airlight list stages T')
+  --exposure X|auto  PNG only: scale applied before the sRGB encode (default: auto for colour
+                     layers, the intermediate's display range otherwise)
+  --quiet            print nothing on success
+)";
+
+constexpr const char* kListHelp = R"(usage: airlight list scenes | techniques | stages T | params T
+)";
+
+constexpr const char* kPlanHelp = R"(usage: airlight plan --scene S --technique T [--set name=value]...
+
+Prints which stages of technique T run for scene S and which shader features are compiled in,
+and for each one left out, why.
+)";
+
+constexpr const char* kExportHelp = R"(usage: airlight export-scene NAME OUT.gltf|OUT.glb
+
+Writes scene NAME (a built-in name or a .gltf/.glb file) as glTF 2.0: buffers and images embedded,
+lights as KHR_lights_punctual, area lights as emissive meshes, the medium in scenes[0].extras.medium.
+)";
+
+constexpr const char* kGuiHelp = R"(usage: airlight gui [--scene S] [--technique T] [--size WxH] [--set name=value]...
+
+Opens the window: the final frame beside one intermediate. Keys: Tab / Shift+Tab technique,
+[ and ] intermediate, C orbit/fly camera, R reset camera, + and - exposure, Esc quit.
+)";
+
+struct CommonOptions {
+    RenderRequest request;
+    std::string out;
+    std::string layer = "final";
+    int layerIndex = -1;
+    std::string exposure;
+    bool quiet = false;
+};
+
+// Parses the options shared by render, plan and gui; `allowed` lists the flags this command takes.
+CommonOptions parseOptions(Args& args, const std::string& command, const std::string& allowed) {
+    CommonOptions o;
+    o.request.scene = viz::scene::defaultSceneName();
+    o.request.technique = kDefaultTechnique;
+    o.request.width = 320;
+    o.request.height = 240;
+    while (!args.empty()) {
+        const std::string flag = args.take();
+        if (allowed.find(" " + flag + " ") == std::string::npos)
+            throw InputError("unknown option '" + flag + "' for '" + command + "' (run 'airlight " + command +
+                             " --help')");
+        if (flag == "--scene") o.request.scene = args.next(flag);
+        else if (flag == "--technique") o.request.technique = args.next(flag);
+        else if (flag == "--size") {
+            const glm::ivec2 size = parseSize(args.next(flag));
+            o.request.width = size.x, o.request.height = size.y;
+        } else if (flag == "--out") o.out = args.next(flag);
+        else if (flag == "--layer") o.layer = args.next(flag);
+        else if (flag == "--layer-index") o.layerIndex = int(parseNumber(args.next(flag), flag));
+        else if (flag == "--set") parseSetting(args.next(flag), o.request.settings);
+        else if (flag == "--stop-after") o.request.stopAfter = args.next(flag);
+        else if (flag == "--exposure") o.exposure = args.next(flag);
+        else if (flag == "--quiet") o.quiet = true;
+    }
+    return o;
+}
+
+void printNotes(const viz::scene::Scene& scene) {
+    for (const std::string& note : scene.notes) std::fprintf(stderr, "airlight: note: %s\n", note.c_str());
+}
+
+void printTiming(const viz::FrameOutput& out) {
+    std::printf("timing (%s):", out.timing.clock.c_str());
+    for (const auto& s : out.timing.stages) std::printf(" %s %.2f ms;", s.stage.c_str(), s.milliseconds);
+    std::printf(" total %.2f ms\n", out.timing.totalMilliseconds());
+}
+
+// Colour layers: auto exposure unless given. Other intermediates: their display range, or the finite
+// min..max of the data when no range was suggested.
+viz::Image displayable(const viz::Image& image, const viz::Intermediate* info, const std::string& exposure,
+                       float* exposureOut) {
+    const bool colour = !info || info->kind == viz::ViewKind::Color;
+    if (colour) {
+        *exposureOut = exposure.empty() || exposure == "auto" ? autoExposure(image)
+                                                              : float(parseNumber(exposure, "--exposure"));
+        if (image.channels >= 3) return image;
+        return viz::toDisplay(image, 0.0f, 1.0f);
+    }
+    *exposureOut = 1.0f;
+    float lo = info->rangeMin, hi = info->rangeMax;
+    if (!(hi > lo)) {
+        lo = std::numeric_limits<float>::max(), hi = -lo;
+        for (float v : image.pixels)
+            if (std::isfinite(v)) lo = std::min(lo, v), hi = std::max(hi, v);
+        if (!(hi > lo)) hi = lo + 1.0f;
+    }
+    if (info->kind == viz::ViewKind::Signed) {
+        const float m = std::max(std::fabs(lo), std::fabs(hi));
+        lo = -m, hi = m;
+    }
+    viz::Image grey = image;
+    if (grey.channels > 1) {  // show the first channel of multi-channel scalar data
+        viz::Image first(image.width, image.height, 1);
+        for (int y = 0; y < image.height; ++y)
+            for (int x = 0; x < image.width; ++x) first.at(x, y) = image.at(x, y, 0);
+        grey = first;
+    }
+    return viz::toDisplay(grey, lo, hi);
+}
+
+void writeLayer(const RenderJob& job, const std::string& layer, int layerIndex, const std::string& path,
+                const std::string& exposure) {
+    const viz::Image image = job.layerImage(layer, layerIndex);
+    if (viz::extensionOf(path) == ".png") {
+        float e = 1.0f;
+        const viz::Image shown = displayable(image, job.findIntermediate(layer), exposure, &e);
+        viz::writeImage(shown, path, e);
+    } else {
+        viz::writeImage(image, path);
+    }
+}
+
+}  // namespace
+
+int runRender(Args& args) {
+    if (!args.empty() && isHelpFlag(args.peek())) {
+        std::fputs(kRenderHelp, stdout);
+        return 0;
+    }
+    CommonOptions o = parseOptions(
+        args, "render", " --scene --technique --size --out --layer --layer-index --set --stop-after --exposure --quiet ");
+    if (o.out.empty()) throw InputError("render needs --out F.exr or --out F.png");
+    const std::string ext = viz::extensionOf(o.out);
+    if (ext != ".exr" && ext != ".png") throw InputError("--out '" + o.out + "' must end in .exr or .png");
+    const std::filesystem::path outPath(o.out);
+    if (outPath.has_parent_path() && !std::filesystem::is_directory(outPath.parent_path()))
+        throw InputError("--out '" + o.out + "': folder '" + outPath.parent_path().string() + "' does not exist");
+
+    RenderJob job(o.request);
+    if (!o.quiet) printNotes(job.scene());
+    const viz::FrameOutput& out = job.run();
+    writeLayer(job, o.layer, o.layerIndex, o.out, o.exposure);
+    if (!o.quiet) {
+        printTiming(out);
+        std::printf("wrote %s (%s, %dx%d)\n", o.out.c_str(), o.layer.c_str(), o.request.width, o.request.height);
+    }
+    return 0;
+}
+
+int runList(Args& args) {
+    if (args.empty()) throw InputError("list needs what to list: scenes, techniques, stages T or params T");
+    const std::string what = args.take();
+    if (isHelpFlag(what)) {
+        std::fputs(kListHelp, stdout);
+        return 0;
+    }
+    if (what == "scenes") {
+        for (const std::string& s : viz::scene::builtinSceneNames())
+            std::printf("%s%s\n", s.c_str(), s == viz::scene::defaultSceneName() ? "  (default)" : "");
+        return 0;
+    }
+    if (what == "techniques") {
+        for (const std::string& id : viz::techniqueIds())
+            std::printf("%-10s %s\n", id.c_str(), viz::makeTechnique(id)->description().c_str());
+        return 0;
+    }
+    if (what == "stages" || what == "params") {
+        if (args.empty()) throw InputError("list " + what + " needs a technique id");
+        const auto technique = viz::makeTechnique(args.take());
+        if (what == "stages") {
+            for (const auto& s : technique->stages()) {
+                std::printf("%s  (%s)  %s\n", s.id.c_str(), s.label.c_str(), s.purpose.c_str());
+                for (const auto& i : s.intermediates) std::printf("    intermediate %s\n", i.c_str());
+                for (const auto& p : s.params) std::printf("    param %s\n", p.c_str());
+            }
+        } else {
+            for (const auto& p : technique->params())
+                std::printf("%-20s default %-8g range [%g, %g]%s  %s\n", p.name.c_str(), p.defaultValue,
+                            p.minValue, p.maxValue, p.integer ? " integer" : "", p.help.c_str());
+        }
+        if (!args.empty()) throw InputError("unexpected argument '" + args.peek() + "'");
+        return 0;
+    }
+    throw InputError("cannot list '" + what + "' (scenes, techniques, stages T, params T)");
+}
+
+int runPlan(Args& args) {
+    if (!args.empty() && isHelpFlag(args.peek())) {
+        std::fputs(kPlanHelp, stdout);
+        return 0;
+    }
+    CommonOptions o = parseOptions(args, "plan", " --scene --technique --size --set ");
+    const auto technique = viz::makeTechnique(o.request.technique);
+    const viz::Settings settings = viz::completeSettings(*technique, o.request.settings);
+    const viz::scene::Scene scene = viz::scene::loadScene(o.request.scene);
+    printNotes(scene);
+    const viz::Plan plan = technique->plan(scene, settings);
+    std::printf("%s on %s:\n", technique->id().c_str(), o.request.scene.c_str());
+    for (const auto& s : plan.stages)
+        std::printf("  stage   %-28s %-4s %s\n", s.stage.c_str(), s.runs ? "runs" : "SKIP", s.why.c_str());
+    for (const auto& f : plan.features)
+        std::printf("  feature %-28s %-4s %s\n", f.feature.c_str(), f.enabled ? "on" : "off", f.why.c_str());
+    return 0;
+}
+
+int runExportScene(Args& args) {
+    if (!args.empty() && isHelpFlag(args.peek())) {
+        std::fputs(kExportHelp, stdout);
+        return 0;
+    }
+    if (args.empty()) throw InputError("export-scene needs a scene name and an output .gltf/.glb path");
+    const std::string name = args.take();
+    if (args.empty()) throw InputError("export-scene needs an output .gltf/.glb path after the scene name");
+    const std::string out = args.take();
+    if (!args.empty()) throw InputError("unexpected argument '" + args.peek() + "'");
+    const std::string ext = viz::extensionOf(out);
+    if (ext != ".gltf" && ext != ".glb") throw InputError("export-scene output '" + out + "' must end in .gltf or .glb");
+    const viz::scene::Scene scene = viz::scene::loadScene(name);
+    viz::scene::writeGltf(scene, out);
+    std::printf("wrote %s\n", out.c_str());
+    return 0;
+}
+
+int runGuiCommand(Args& args) {
+    if (!args.empty() && isHelpFlag(args.peek())) {
+        std::fputs(kGuiHelp, stdout);
+        return 0;
+    }
+    CommonOptions o = parseOptions(args, "gui", " --scene --technique --size --set ");
+    if (!viz::displayAvailable())
+        throw InputError("no display: set DISPLAY (or run under xvfb-run), or use 'airlight render'");
+    GuiOptions g;
+    g.scene = o.request.scene;
+    g.technique = o.request.technique;
+    g.width = o.request.width;
+    g.height = o.request.height;
+    g.settings = o.request.settings;
+    return runGui(g);
+}
+
+int runDefault() {
+    if (viz::displayAvailable()) {
+        GuiOptions g;
+        g.scene = viz::scene::defaultSceneName();
+        g.technique = kDefaultTechnique;
+        g.width = 320;
+        g.height = 240;
+        return runGui(g);
+    }
+    const std::string outDir = "out";
+    std::printf("airlight: no display: rendering the default scene '%s' with '%s' headlessly into %s/\n",
+                viz::scene::defaultSceneName().c_str(), kDefaultTechnique, outDir.c_str());
+    std::filesystem::create_directories(outDir);
+    RenderRequest request;
+    request.scene = viz::scene::defaultSceneName();
+    request.technique = kDefaultTechnique;
+    request.width = 640;
+    request.height = 480;
+    RenderJob job(request);
+    printNotes(job.scene());
+    const viz::FrameOutput& out = job.run();
+    writeLayer(job, "final", -1, outDir + "/final.png", "");
+    writeLayer(job, "airlight", -1, outDir + "/airlight.png", "");
+    writeLayer(job, "final", -1, outDir + "/final.exr", "");
+    writeLayer(job, "airlight", -1, outDir + "/airlight.exr", "");
+    int written = 4;
+    for (const auto& i : out.intermediates) {
+        if (i.kind == viz::ViewKind::Mesh || i.kind == viz::ViewKind::Buffer) continue;
+        const int layers = i.image ? 1 : std::max(1, i.extent.z);
+        for (int l = 0; l < layers; ++l) {
+            const std::string file = outDir + "/" + i.id + (layers > 1 ? ".layer" + std::to_string(l) : "") + ".png";
+            writeLayer(job, i.id, layers > 1 ? l : -1, file, "");
+            ++written;
+        }
+    }
+    printTiming(out);
+    std::printf("wrote %d images to %s/\n", written, outDir.c_str());
+    return 0;
+}
+
+}  // namespace airlight

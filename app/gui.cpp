@@ -1,0 +1,1082 @@
+// The GUI shell: one GLFW window with the final frame (left pane) beside one chosen view (right pane),
+// a clickable technique list, a view list, a status line with per-stage timings and the plan's skipped
+// stages, and an orbit/fly camera. GPU techniques run on the main thread whenever the camera or the
+// technique changes; CPU techniques (the reference) run on a worker thread in progressive passes
+// (1/4, 1/2, then full resolution) so the window never freezes.
+#include "gui.h"
+
+#include <epoxy/gl.h>
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <condition_variable>
+#include <cstdio>
+#include <functional>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <thread>
+
+#include "camera_controller.h"
+#include "core/error.h"
+#include "gl/debug_output.h"
+#include "gl/program.h"
+#include "gl/readback.h"
+#include "gl/stage_clock.h"
+#include "gl/texture.h"
+#include "gl/vertex_array.h"
+#include "platform/window_glfw.h"
+#include "render_job.h"
+#include "scene/scene_source.h"
+#include "techniques/registry.h"
+#include "ui/font.h"
+#include "ui/text_renderer.h"
+
+namespace airlight {
+
+namespace {
+
+using viz::ui::DrawList;
+using viz::ui::Rect;
+using Clock = std::chrono::steady_clock;
+
+// ---- colours (display values) and sizes (logical pixels, times the content scale) ----
+constexpr glm::vec4 kBackground{0.11f, 0.11f, 0.12f, 1.0f};
+constexpr glm::vec4 kPanel{0.16f, 0.16f, 0.18f, 1.0f};
+constexpr glm::vec4 kText{0.90f, 0.90f, 0.90f, 1.0f};
+constexpr glm::vec4 kDim{0.60f, 0.62f, 0.66f, 1.0f};
+constexpr glm::vec4 kAccent{0.98f, 0.78f, 0.35f, 1.0f};
+constexpr glm::vec4 kHighlight{0.25f, 0.36f, 0.55f, 1.0f};
+constexpr glm::vec4 kHover{0.22f, 0.22f, 0.26f, 1.0f};
+constexpr glm::vec4 kError{1.0f, 0.45f, 0.40f, 1.0f};
+constexpr float kFontSize = 15.0f;
+constexpr float kPad = 8.0f;
+constexpr float kSidebarMin = 170.0f;
+constexpr float kExposureStep = 0.5f;  // stops per +/- key press
+constexpr double kOrbitRadiansPerPixel = 0.008;
+constexpr double kLookRadiansPerPixel = 0.004;
+constexpr double kFlySpeed = 0.6;  // target distances per second
+
+// ---- display of one image in a pane ----
+
+// Mirrors the modes of shaders/ui/image.frag.
+enum class DisplayMode : int { HdrColor = 0, RangeColor = 1, Grey = 2, Signed = 3, FalseColor = 4, Bits = 5, Mask = 6 };
+
+DisplayMode displayModeFor(viz::ViewKind kind) {
+    switch (kind) {
+        case viz::ViewKind::Color: return DisplayMode::RangeColor;
+        case viz::ViewKind::Scalar: return DisplayMode::Grey;
+        case viz::ViewKind::Signed: return DisplayMode::Signed;
+        case viz::ViewKind::BitField: return DisplayMode::Bits;
+        case viz::ViewKind::Mask: return DisplayMode::Mask;
+        case viz::ViewKind::Depth: return DisplayMode::FalseColor;
+        default: return DisplayMode::Grey;
+    }
+}
+
+// What a pane shows: a 2D float texture plus how to map it, or the reason nothing can be shown.
+struct PaneImage {
+    std::string id, label, note, units;
+    viz::ViewKind kind = viz::ViewKind::Color;
+    DisplayMode mode = DisplayMode::HdrColor;
+    float rangeMin = 0.0f, rangeMax = 1.0f;
+    GLuint texture = 0;   // borrowed (technique's) or `owned`
+    viz::gl::Texture owned;
+    bool flipY = false;   // true for textures rendered by GL (row 0 at the bottom)
+    int channels = 4;
+    glm::ivec2 size{0};
+    int layer = 0, layers = 1;
+    std::string unavailable;  // non-empty: nothing to draw, and why
+};
+
+// Uploads a CPU image (row 0 at the top) as RGBA32F; its rows stay top-first, so no flip on display.
+void uploadImage(PaneImage& pane, const viz::Image& image) {
+    if (image.empty()) {
+        pane.unavailable = "(not produced by this run)";
+        return;
+    }
+    static constexpr GLenum kFormats[] = {GL_RED, GL_RG, GL_RGB, GL_RGBA};
+    VIZ_CHECK(image.channels >= 1 && image.channels <= 4, "image channel count must be 1..4");
+    pane.owned = viz::gl::Texture::create({.target = GL_TEXTURE_2D,
+                                           .format = GL_RGBA32F,
+                                           .size = {image.width, image.height, 1},
+                                           .label = "gui.pane." + (pane.id.empty() ? std::string("final") : pane.id)});
+    pane.owned.upload(kFormats[image.channels - 1], GL_FLOAT, image.pixels.data());
+    pane.texture = pane.owned.id();
+    pane.flipY = false;
+    pane.channels = image.channels;
+    pane.size = {image.width, image.height};
+}
+
+int channelsOfFormat(GLint format) {
+    switch (format) {
+        case GL_R8: case GL_R16: case GL_R16F: case GL_R32F: return 1;
+        case GL_RG8: case GL_RG16: case GL_RG16F: case GL_RG32F: return 2;
+        case GL_RGB8: case GL_RGB16F: case GL_RGB32F: case GL_R11F_G11F_B10F: case GL_SRGB8: return 3;
+        case GL_RGBA8: case GL_RGBA16: case GL_RGBA16F: case GL_RGBA32F: case GL_SRGB8_ALPHA8: return 4;
+        default: return 0;  // integer, depth or something unusual: read it back instead
+    }
+}
+
+// Makes a pane from one of the technique's intermediates. A 2D float texture is sampled directly;
+// other textures (integer, depth, arrays, cube maps, 3D) are read back one layer at a time.
+void makePane(PaneImage& pane, const viz::Intermediate& in, int layer) {
+    pane.id = in.id;
+    pane.label = in.label;
+    pane.note = in.note;
+    pane.units = in.units;
+    pane.kind = in.kind;
+    pane.mode = displayModeFor(in.kind);
+    pane.rangeMin = in.rangeMin;
+    pane.rangeMax = in.rangeMax;
+    if (in.image) {
+        uploadImage(pane, *in.image);
+        return;
+    }
+    if (in.glTexture == 0) {
+        pane.unavailable = std::string("(a ") + viz::viewKindName(in.kind) + ": no image view yet)";
+        return;
+    }
+    const GLenum target = in.glTarget ? in.glTarget : GL_TEXTURE_2D;
+    pane.layers = target == GL_TEXTURE_CUBE_MAP ? 6 : (target == GL_TEXTURE_2D ? 1 : std::max(1, in.extent.z));
+    pane.layer = std::clamp(layer, 0, pane.layers - 1);
+    GLint format = 0;
+    if (target == GL_TEXTURE_2D) {
+        glGetTextureLevelParameteriv(in.glTexture, 0, GL_TEXTURE_INTERNAL_FORMAT, &format);
+    }
+    const int channels = channelsOfFormat(format);
+    if (target == GL_TEXTURE_2D && channels > 0) {
+        pane.texture = in.glTexture;
+        pane.flipY = true;
+        pane.channels = channels;
+        GLint w = 0, h = 0;
+        glGetTextureLevelParameteriv(in.glTexture, 0, GL_TEXTURE_WIDTH, &w);
+        glGetTextureLevelParameteriv(in.glTexture, 0, GL_TEXTURE_HEIGHT, &h);
+        pane.size = {w, h};
+        return;
+    }
+    try {
+        uploadImage(pane, viz::gl::readTexture(in.glTexture, 0, pane.layer));
+    } catch (const std::exception& e) {
+        pane.unavailable = std::string("(cannot read back: ") + e.what() + ")";
+    }
+}
+
+// Draws PaneImages: shaders/ui/image.vert + image.frag over an empty vertex array.
+class ImageDisplay {
+public:
+    ImageDisplay() {
+        mProgram = viz::gl::Program::compile({.stages = {"ui/image.vert", "ui/image.frag"}, .label = "ui.image"});
+        mVertexArray = viz::gl::VertexArray::create("ui.image_vao");
+        // Nearest, and no depth comparison, whatever the technique set on its own texture.
+        mSampler = viz::gl::Sampler::create({.minFilter = GL_NEAREST, .magFilter = GL_NEAREST, .label = "ui.image"});
+    }
+
+    void draw(const PaneImage& pane, const Rect& rect, glm::ivec2 framebuffer, float exposure) const {
+        if (pane.texture == 0) return;
+        mProgram.set("uRect", glm::vec4(rect.min, rect.max));
+        mProgram.set("uViewport", glm::vec2(framebuffer));
+        mProgram.set("uMode", static_cast<int>(pane.mode));
+        mProgram.set("uRange", glm::vec2(pane.rangeMin, pane.rangeMax));
+        mProgram.set("uExposure", exposure);
+        mProgram.set("uFlipY", pane.flipY);
+        mProgram.set("uChannels", pane.channels);
+        mProgram.use();
+        glBindTextureUnit(0, pane.texture);
+        mSampler.bindUnit(0);
+        mVertexArray.bind();
+        glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+        glBindSampler(0, 0);
+    }
+
+private:
+    viz::gl::Program mProgram;
+    viz::gl::VertexArray mVertexArray;
+    viz::gl::Sampler mSampler;
+};
+
+// ---- settings ----
+
+// The given settings that this technique has a parameter for, completed with its defaults. A value
+// the technique rejects is reported in `error` and the defaults are used instead.
+viz::Settings settingsFor(const viz::Technique& technique, const viz::Settings& given, std::string& error) {
+    viz::Settings mine;
+    for (const auto& [name, value] : given) {
+        for (const viz::ParamInfo& p : technique.params())
+            if (p.name == name) mine[name] = value;
+    }
+    try {
+        return viz::completeSettings(technique, mine);
+    } catch (const viz::InputError& e) {
+        error = e.what();
+        return viz::completeSettings(technique, {});
+    }
+}
+
+// ---- worker thread for CPU techniques ----
+
+struct CpuRequest {
+    std::string technique;
+    viz::scene::Camera camera;
+    viz::Settings settings;
+    int width = 0, height = 0;
+};
+
+struct CpuResult {
+    std::string technique;
+    viz::FrameOutput output;
+    int pass = 0, passCount = 1;
+    std::string error;
+};
+
+struct CpuProgress {
+    bool busy = false;
+    int pass = 0, passCount = 1;
+    glm::ivec2 size{0};
+    double elapsed = 0.0;   // seconds in this pass
+    double estimate = 0.0;  // expected seconds for this pass, 0 = unknown
+};
+
+// Runs one CPU technique at a time in passes of growing resolution. A new request supersedes the
+// pending one and stops the running one after its current pass (Technique::run cannot be
+// interrupted). The state lives in a shared_ptr so that a pass still running at exit can finish
+// on a detached thread without touching freed memory.
+class CpuWorker {
+public:
+    explicit CpuWorker(const viz::scene::Scene& scene) : mState(std::make_shared<State>()) {
+        mState->scene = scene;
+        mThread = std::thread([state = mState] { loop(*state); });
+    }
+    ~CpuWorker() {
+        bool running = false;
+        {
+            std::lock_guard lock(mState->mutex);
+            mState->quit = true;
+            mState->request.reset();
+            running = mState->progress.busy;
+        }
+        mState->wake.notify_all();
+        if (running) {
+            std::fprintf(stderr, "airlight: leaving a reference pass to finish in the background\n");
+            mThread.detach();
+        } else {
+            mThread.join();
+        }
+    }
+    CpuWorker(const CpuWorker&) = delete;
+    CpuWorker& operator=(const CpuWorker&) = delete;
+
+    void submit(CpuRequest request) {
+        {
+            std::lock_guard lock(mState->mutex);
+            mState->request = std::move(request);
+        }
+        mState->wake.notify_all();
+    }
+    std::optional<CpuResult> take() {
+        std::lock_guard lock(mState->mutex);
+        return std::exchange(mState->result, std::nullopt);
+    }
+    CpuProgress progress() const {
+        std::lock_guard lock(mState->mutex);
+        CpuProgress p = mState->progress;
+        if (p.busy) p.elapsed = std::chrono::duration<double>(Clock::now() - mState->passStart).count();
+        return p;
+    }
+
+private:
+    struct State {
+        viz::scene::Scene scene;  // the worker's own copy; only the camera changes
+        std::map<std::string, std::unique_ptr<viz::Technique>> techniques;
+        mutable std::mutex mutex;
+        std::condition_variable wake;
+        std::optional<CpuRequest> request;
+        std::optional<CpuResult> result;
+        CpuProgress progress;
+        Clock::time_point passStart;
+        double secondsPerPixel = 0.0;  // from the last finished pass, for the estimate
+        bool quit = false;
+    };
+
+    static void loop(State& s) {
+        for (;;) {
+            CpuRequest request;
+            {
+                std::unique_lock lock(s.mutex);
+                s.wake.wait(lock, [&] { return s.quit || s.request.has_value(); });
+                if (s.quit) return;
+                request = std::move(*s.request);
+                s.request.reset();
+            }
+            runPasses(s, request);
+        }
+    }
+
+    static void runPasses(State& s, const CpuRequest& request) {
+        // Passes at 1/4, 1/2 and full resolution, skipping ones too small to be worth showing.
+        std::vector<glm::ivec2> sizes;
+        for (int div : {4, 2}) {
+            if (request.width / div >= 32 && request.height / div >= 24) sizes.push_back({request.width / div, request.height / div});
+        }
+        sizes.push_back({request.width, request.height});
+        s.scene.camera = request.camera;
+        auto& technique = s.techniques[request.technique];
+        for (std::size_t i = 0; i < sizes.size(); ++i) {
+            {
+                std::lock_guard lock(s.mutex);
+                if (s.quit || s.request.has_value()) break;  // superseded
+                s.progress = {true, int(i) + 1, int(sizes.size()), sizes[i], 0.0,
+                              s.secondsPerPixel * double(sizes[i].x) * double(sizes[i].y)};
+                s.passStart = Clock::now();
+            }
+            CpuResult result;
+            result.technique = request.technique;
+            result.pass = int(i) + 1;
+            result.passCount = int(sizes.size());
+            try {
+                if (!technique) technique = viz::makeTechnique(request.technique);
+                viz::FrameInput input;
+                input.scene = &s.scene;
+                input.width = sizes[i].x;
+                input.height = sizes[i].y;
+                input.settings = request.settings;
+                result.output = technique->run(input);
+            } catch (const std::exception& e) {
+                result.error = e.what();
+            }
+            std::lock_guard lock(s.mutex);
+            const double seconds = std::chrono::duration<double>(Clock::now() - s.passStart).count();
+            // A frame served from the reference's disk cache says nothing about the cost of the next.
+            if (result.error.empty() && result.output.timing.clock != "cache") {
+                s.secondsPerPixel = seconds / (double(sizes[i].x) * double(sizes[i].y));
+            }
+            s.progress.busy = false;
+            const bool failed = !result.error.empty();
+            s.result = std::move(result);
+            // Wake the main thread out of glfwWaitEventsTimeout (thread-safe in GLFW). After quit the
+            // window may be gone; holding the mutex keeps the two in order.
+            if (!s.quit) glfwPostEmptyEvent();
+            if (failed) break;
+        }
+        std::lock_guard lock(s.mutex);
+        s.progress.busy = false;
+    }
+
+    std::shared_ptr<State> mState;
+    std::thread mThread;
+};
+
+// ---- formatting ----
+
+// Error messages (shader logs) can span lines; the status line shows the first.
+std::string firstLine(const std::string& text) {
+    const std::size_t end = text.find('\n');
+    return end == std::string::npos ? text : text.substr(0, end) + "  (...)";
+}
+
+std::string format(const char* fmt, double a) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, fmt, a);
+    return buf;
+}
+
+std::string timingLine(const viz::Timing& timing) {
+    if (timing.stages.empty()) return "timings: (none yet)";
+    std::string line = "timings:";
+    for (const auto& st : timing.stages) line += "  " + st.stage + " " + format("%.1f ms", st.milliseconds);
+    line += "  | total " + format("%.1f ms", timing.totalMilliseconds()) + "  (clock: " + timing.clock + ")";
+    return line;
+}
+
+std::string skippedLine(const viz::Plan& plan) {
+    std::string line;
+    for (const auto& st : plan.stages) {
+        if (st.runs) continue;
+        line += (line.empty() ? "skipped: " : ";  ") + st.stage + (st.why.empty() ? "" : " (" + st.why + ")");
+    }
+    return line.empty() ? "skipped: none" : line;
+}
+
+// Distance along the ray to the nearest triangle of the scene (Moller-Trumbore, brute force over every
+// triangle: done once per reset, scenes here have a few thousand triangles), or -1 for a miss.
+double firstHit(const viz::scene::Scene& scene, glm::dvec3 origin, glm::dvec3 dir) {
+    double best = -1.0;
+    for (const auto& mesh : scene.meshes) {
+        for (std::size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
+            const glm::dvec3 a(mesh.positions[mesh.indices[i]]);
+            const glm::dvec3 e1 = glm::dvec3(mesh.positions[mesh.indices[i + 1]]) - a;
+            const glm::dvec3 e2 = glm::dvec3(mesh.positions[mesh.indices[i + 2]]) - a;
+            const glm::dvec3 p = glm::cross(dir, e2);
+            const double det = glm::dot(e1, p);
+            if (std::abs(det) < 1e-12) continue;
+            const glm::dvec3 s = origin - a;
+            const double u = glm::dot(s, p) / det;
+            if (u < 0.0 || u > 1.0) continue;
+            const glm::dvec3 q = glm::cross(s, e1);
+            const double v = glm::dot(dir, q) / det;
+            if (v < 0.0 || u + v > 1.0) continue;
+            const double t = glm::dot(e2, q) / det;
+            if (t > 1e-6 && (best < 0.0 || t < best)) best = t;
+        }
+    }
+    return best;
+}
+
+// Distance from the scene camera to the orbit target: the first surface on the view axis; failing
+// that, where the axis passes closest to the centre of the scene's bounding box; failing that (the
+// centre is behind the camera), the box's size.
+double orbitDistance(const viz::scene::Scene& scene) {
+    const glm::dvec3 forward = glm::normalize(scene.camera.forward);
+    const double hit = firstHit(scene, scene.camera.position, forward);
+    if (hit > 0.0 && hit < scene.camera.zfar) return hit;
+    glm::dvec3 lo(1e300), hi(-1e300);
+    for (const auto& mesh : scene.meshes)
+        for (const glm::vec3& p : mesh.positions) {
+            lo = glm::min(lo, glm::dvec3(p));
+            hi = glm::max(hi, glm::dvec3(p));
+        }
+    if (lo.x > hi.x) return 5.0;
+    const glm::dvec3 centre = 0.5 * (lo + hi);
+    const double radius = std::max(0.5 * glm::length(hi - lo), 1e-3);
+    const double along = glm::dot(centre - scene.camera.position, forward);
+    return along > 0.1 * radius ? along : radius;
+}
+
+// ---- the app ----
+
+class GuiApp {
+public:
+    GuiApp(const GuiOptions& options, viz::scene::Scene scene, viz::Window& window)
+        : mOptions(options)
+        , mScene(std::move(scene))
+        , mWindow(window)
+        , mController(mScene.camera, orbitDistance(mScene))
+        , mIds(viz::techniqueIds()) {
+        float sx = 1.0f, sy = 1.0f;
+        glfwGetWindowContentScale(mWindow.handle(), &sx, &sy);
+        mScale = std::max(1.0f, std::max(sx, sy));
+        mFont = std::make_unique<viz::ui::FontAtlas>(
+            viz::ui::FontAtlas::bake(viz::ui::FontAtlas::kDefaultFontPath, kFontSize * mScale));
+        mTextRenderer = std::make_unique<viz::ui::TextRenderer>(*mFont);
+        mDrawList = std::make_unique<DrawList>(*mFont);
+        mBackground = std::make_unique<DrawList>(*mFont);
+        mImageDisplay = std::make_unique<ImageDisplay>();
+        mWorker = std::make_unique<CpuWorker>(mScene);
+        const std::string wanted = options.technique.empty() ? mIds.front() : options.technique;
+        const auto it = std::find(mIds.begin(), mIds.end(), wanted);
+        mCurrent = it == mIds.end() ? 0 : int(it - mIds.begin());
+        mClockName = viz::gl::StageClock::method();
+
+        glfwSetWindowUserPointer(mWindow.handle(), this);
+        glfwSetKeyCallback(mWindow.handle(), [](GLFWwindow* w, int key, int, int action, int mods) {
+            static_cast<GuiApp*>(glfwGetWindowUserPointer(w))->onKey(key, action, mods);
+        });
+        glfwSetCharCallback(mWindow.handle(), [](GLFWwindow* w, unsigned codepoint) {
+            static_cast<GuiApp*>(glfwGetWindowUserPointer(w))->onChar(codepoint);
+        });
+        glfwSetMouseButtonCallback(mWindow.handle(), [](GLFWwindow* w, int button, int action, int) {
+            static_cast<GuiApp*>(glfwGetWindowUserPointer(w))->onMouseButton(button, action);
+        });
+        glfwSetCursorPosCallback(mWindow.handle(), [](GLFWwindow* w, double x, double y) {
+            static_cast<GuiApp*>(glfwGetWindowUserPointer(w))->onCursor(x, y);
+        });
+        glfwSetScrollCallback(mWindow.handle(), [](GLFWwindow* w, double, double dy) {
+            static_cast<GuiApp*>(glfwGetWindowUserPointer(w))->onScroll(dy);
+        });
+        selectTechnique(mCurrent);
+    }
+
+    ~GuiApp() {
+        glfwSetWindowUserPointer(mWindow.handle(), nullptr);
+        glfwSetKeyCallback(mWindow.handle(), nullptr);
+        glfwSetCharCallback(mWindow.handle(), nullptr);
+        glfwSetMouseButtonCallback(mWindow.handle(), nullptr);
+        glfwSetCursorPosCallback(mWindow.handle(), nullptr);
+        glfwSetScrollCallback(mWindow.handle(), nullptr);
+        // Panes may borrow the techniques' textures: drop them first.
+        mFinal = {};
+        mRight = {};
+        mOutput = {};
+        mTechniques.clear();
+    }
+
+    int run() {
+        auto last = Clock::now();
+        while (!mWindow.shouldClose()) {
+            const bool flying = mController.mode() == CameraController::Mode::Fly && anyFlyKeyDown();
+            const bool busy = mWorker->progress().busy;
+            if (flying || mDirty) {
+                glfwPollEvents();
+            } else {
+                // Nothing animates: sleep until input arrives, waking a few times a second while the
+                // worker computes so that its progress stays current.
+                glfwWaitEventsTimeout(busy ? 0.1 : 0.5);
+            }
+            const auto now = Clock::now();
+            const double dt = std::min(0.1, std::chrono::duration<double>(now - last).count());
+            last = now;
+            if (mController.mode() == CameraController::Mode::Fly) fly(dt);
+            if (mReduced && mDragButton < 0 && !anyFlyKeyDown()) mDirty = true;
+            if (mDirty) {
+                // A slow GPU run blocks this thread: first show a frame that says so.
+                if (technique().needsGl() && (!mHaveOutput || mLastRunSeconds > 0.3)) {
+                    mRendering = true;
+                    draw();
+                    mWindow.swapBuffers();
+                    mRendering = false;
+                }
+                render();
+            }
+            if (auto result = mWorker->take()) acceptCpuResult(std::move(*result));
+            draw();
+            mWindow.swapBuffers();
+        }
+        return 0;
+    }
+
+private:
+    // ---- techniques and rendering ----
+
+    viz::Technique& technique() { return *mTechniques.at(mIds[std::size_t(mCurrent)]); }
+
+    void selectTechnique(int index) {
+        const int n = int(mIds.size());
+        index = ((index % n) + n) % n;
+        const std::string& id = mIds[std::size_t(index)];
+        try {
+            if (!mTechniques.count(id)) mTechniques[id] = viz::makeTechnique(id);
+        } catch (const std::exception& e) {
+            mError = e.what();
+            return;
+        }
+        mCurrent = index;
+        mError.clear();
+        mSettingsError.clear();
+        mSettings = settingsFor(technique(), mOptions.settings, mSettingsError);
+        try {
+            mPlan = technique().plan(mScene, mSettings);
+        } catch (const std::exception& e) {
+            mPlan = {};
+            mError = e.what();
+        }
+        // The previous technique's frame does not belong to this one.
+        mFinal = {};
+        mRight = {};
+        mOutput = {};
+        mHaveOutput = false;
+        mPass = 0;
+        mWindow.setTitle("Airlight - " + mScene.name + " - " + id);
+        mDirty = true;
+    }
+
+    void render() {
+        mDirty = false;
+        mScene.camera = mController.camera();
+        viz::Technique& t = technique();
+        if (!t.needsGl()) {
+            mReduced = false;  // the worker's progressive passes play that role
+            mWorker->submit({t.id(), mScene.camera, mSettings, mOptions.width, mOptions.height});
+            return;
+        }
+        viz::FrameInput input;
+        input.scene = &mScene;
+        input.width = mOptions.width;
+        input.height = mOptions.height;
+        input.settings = mSettings;
+        // While the camera is being dragged or flown, render at half size to keep up; the full size
+        // follows when the interaction stops.
+        mReduced = (mDragButton >= 0 || anyFlyKeyDown()) && input.width >= 64 && input.height >= 48;
+        if (mReduced) {
+            input.width /= 2;
+            input.height /= 2;
+        }
+        // Panes borrow textures the run is about to replace.
+        mRight = {};
+        const auto start = Clock::now();
+        try {
+            mOutput = t.run(input);
+            mError.clear();
+            mHaveOutput = true;
+            mPass = 1;
+            mPassCount = 1;
+            mOutputSize = {input.width, input.height};
+        } catch (const std::exception& e) {
+            mError = e.what();
+            mOutput = {};
+            mHaveOutput = false;
+        }
+        mLastRunSeconds = std::chrono::duration<double>(Clock::now() - start).count();
+        // The technique leaves its own framebuffer and state behind.
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        refreshPanes();
+    }
+
+    void acceptCpuResult(CpuResult result) {
+        if (result.technique != mIds[std::size_t(mCurrent)]) return;  // from a technique no longer shown
+        if (!result.error.empty()) {
+            mError = result.error;
+            return;
+        }
+        mError.clear();
+        mOutput = std::move(result.output);
+        mOutputSize = {mOutput.final.width, mOutput.final.height};
+        mHaveOutput = true;
+        mPass = result.pass;
+        mPassCount = result.passCount;
+        refreshPanes();
+    }
+
+    // Number of views the right pane cycles through: the airlight image, then every intermediate.
+    int viewCount() const { return 1 + int(mOutput.intermediates.size()); }
+
+    void refreshPanes() {
+        mFinal = {};
+        mRight = {};
+        if (!mHaveOutput) return;
+        mFinal.label = "Final image";
+        mFinal.note = "surface * exp(-sigma_t d) + L_air";
+        mFinal.mode = DisplayMode::HdrColor;
+        uploadImage(mFinal, mOutput.final);
+        if (!mExposureSet && !mOutput.final.empty()) {
+            mExposure = std::round(std::log2(autoExposure(mOutput.final)) / kExposureStep) * kExposureStep;
+            mExposureSet = true;
+        }
+        // Keep showing the same view id across runs and techniques when it still exists.
+        // Ids may repeat (one shadow map per light): prefer the same position, then the first match.
+        int index = 0;
+        const auto& all = mOutput.intermediates;
+        if (mView >= 1 && mView <= int(all.size()) && all[std::size_t(mView - 1)].id == mViewId) {
+            index = mView;
+        } else {
+            for (int i = int(all.size()) - 1; i >= 0; --i)
+                if (all[std::size_t(i)].id == mViewId) index = i + 1;
+        }
+        if (mViewId == "airlight" || mViewId.empty()) index = 0;
+        mView = index;
+        if (index == 0) {
+            mRight.id = "airlight";
+            mRight.label = "Airlight L_air";
+            mRight.note = "in-scattered radiance along each eye ray, before the surface term";
+            mRight.units = "radiance";
+            mRight.kind = viz::ViewKind::Color;
+            mRight.mode = DisplayMode::HdrColor;
+            uploadImage(mRight, mOutput.airlight);
+        } else {
+            makePane(mRight, mOutput.intermediates[std::size_t(index - 1)], mLayer);
+        }
+    }
+
+    void stepView(int delta) {
+        if (!mHaveOutput) return;
+        const int n = viewCount();
+        const int next = ((mView + delta) % n + n) % n;
+        mViewId = next == 0 ? "airlight" : mOutput.intermediates[std::size_t(next - 1)].id;
+        mView = next;
+        mLayer = 0;
+        refreshPanes();
+    }
+
+    void selectView(int index) {
+        if (!mHaveOutput || index < 0 || index >= viewCount()) return;
+        mViewId = index == 0 ? "airlight" : mOutput.intermediates[std::size_t(index - 1)].id;
+        mView = index;
+        mLayer = 0;
+        refreshPanes();
+    }
+
+    // ---- input ----
+
+    glm::vec2 cursorPixels(double x, double y) const {
+        int ww = 1, wh = 1;
+        glfwGetWindowSize(mWindow.handle(), &ww, &wh);
+        const glm::ivec2 fb = mWindow.framebufferSize();
+        return {float(x) * float(fb.x) / float(std::max(ww, 1)), float(y) * float(fb.y) / float(std::max(wh, 1))};
+    }
+
+    void onKey(int key, int action, int mods) {
+        if (action != GLFW_PRESS && action != GLFW_REPEAT) return;
+        const bool shift = (mods & GLFW_MOD_SHIFT) != 0;
+        if (key == GLFW_KEY_ESCAPE) glfwSetWindowShouldClose(mWindow.handle(), GLFW_TRUE);
+        else if (key == GLFW_KEY_TAB) selectTechnique(mCurrent + (shift ? -1 : 1));
+        else if (key >= GLFW_KEY_1 && key <= GLFW_KEY_9 && key - GLFW_KEY_1 < int(mIds.size())) selectTechnique(key - GLFW_KEY_1);
+        else if (key == GLFW_KEY_RIGHT_BRACKET || (key == GLFW_KEY_V && !shift)) stepView(1);
+        else if (key == GLFW_KEY_LEFT_BRACKET || (key == GLFW_KEY_V && shift)) stepView(-1);
+        else if (key == GLFW_KEY_PERIOD || key == GLFW_KEY_COMMA) stepLayer(key == GLFW_KEY_PERIOD ? 1 : -1);
+        else if (key == GLFW_KEY_C && action == GLFW_PRESS) mController.toggleMode();
+        else if (key == GLFW_KEY_R && action == GLFW_PRESS) {
+            mController.reset();
+            mDirty = true;
+        } else if (key == GLFW_KEY_X && action == GLFW_PRESS) {
+            mExposureSet = false;  // auto exposure again on the next frame
+            if (!mOutput.final.empty()) {
+                mExposure = std::round(std::log2(autoExposure(mOutput.final)) / kExposureStep) * kExposureStep;
+                mExposureSet = true;
+            }
+        }
+    }
+
+    void onChar(unsigned codepoint) {
+        if (codepoint == '+' || codepoint == '=') mExposure += kExposureStep;
+        if (codepoint == '-' || codepoint == '_') mExposure -= kExposureStep;
+    }
+
+    void stepLayer(int delta) {
+        if (mRight.layers <= 1) return;
+        mLayer = (mRight.layer + delta + mRight.layers) % mRight.layers;
+        refreshPanes();
+    }
+
+    void onMouseButton(int button, int action) {
+        double x = 0, y = 0;
+        glfwGetCursorPos(mWindow.handle(), &x, &y);
+        const glm::vec2 p = cursorPixels(x, y);
+        if (action == GLFW_PRESS) {
+            if (button == GLFW_MOUSE_BUTTON_LEFT) {
+                for (const auto& [rect, action2] : mHits) {
+                    if (rect.contains(p)) {
+                        action2();
+                        return;
+                    }
+                }
+            }
+            if (!mViewArea.contains(p)) return;
+            mDragButton = button;
+            mLastCursor = p;
+        } else if (action == GLFW_RELEASE && button == mDragButton) {
+            mDragButton = -1;
+            if (mReduced) mDirty = true;
+        }
+    }
+
+    void onCursor(double x, double y) {
+        const glm::vec2 p = cursorPixels(x, y);
+        mHover = p;
+        if (mDragButton < 0) return;
+        const glm::dvec2 d = glm::dvec2(p - mLastCursor);
+        mLastCursor = p;
+        if (d == glm::dvec2(0.0)) return;
+        const double paneHeight = std::max(1.0f, mImageHeight);
+        const bool orbitMode = mController.mode() == CameraController::Mode::Orbit;
+        if (orbitMode && mDragButton == GLFW_MOUSE_BUTTON_LEFT) {
+            // Dragging right turns the scene right: the eye moves the other way round the target.
+            mController.orbit(-d.x * kOrbitRadiansPerPixel, d.y * kOrbitRadiansPerPixel);
+        } else if (orbitMode) {
+            // The scene follows the cursor: the camera moves against the drag.
+            mController.pan(-d.x / paneHeight, d.y / paneHeight);
+        } else if (mDragButton == GLFW_MOUSE_BUTTON_RIGHT || mDragButton == GLFW_MOUSE_BUTTON_LEFT) {
+            mController.look(-d.x * kLookRadiansPerPixel, -d.y * kLookRadiansPerPixel);
+        } else {
+            mController.pan(-d.x / paneHeight, d.y / paneHeight);
+        }
+        mDirty = true;
+    }
+
+    void onScroll(double dy) {
+        if (!mViewArea.contains(mHover)) return;
+        if (mController.mode() == CameraController::Mode::Orbit) {
+            mController.zoom(dy);
+        } else {
+            mController.move({0.0, 0.0, 0.1 * dy});
+        }
+        mDirty = true;
+    }
+
+    bool anyFlyKeyDown() const {
+        for (int key : {GLFW_KEY_W, GLFW_KEY_A, GLFW_KEY_S, GLFW_KEY_D, GLFW_KEY_Q, GLFW_KEY_E})
+            if (glfwGetKey(mWindow.handle(), key) == GLFW_PRESS) return true;
+        return false;
+    }
+
+    void fly(double dt) {
+        GLFWwindow* w = mWindow.handle();
+        const auto down = [&](int key) { return glfwGetKey(w, key) == GLFW_PRESS ? 1.0 : 0.0; };
+        const glm::dvec3 dir{down(GLFW_KEY_D) - down(GLFW_KEY_A), down(GLFW_KEY_E) - down(GLFW_KEY_Q),
+                             down(GLFW_KEY_W) - down(GLFW_KEY_S)};
+        if (dir == glm::dvec3(0.0)) return;
+        const bool fast = glfwGetKey(w, GLFW_KEY_LEFT_SHIFT) == GLFW_PRESS;
+        mController.move(dir * (kFlySpeed * dt * (fast ? 4.0 : 1.0)));
+        mDirty = true;
+    }
+
+    // ---- drawing ----
+
+    // Largest rectangle of the image's aspect ratio (the render's when the pane is empty) inside
+    // `area`, centred at the top.
+    Rect fitImage(const Rect& area, glm::ivec2 imageSize) const {
+        if (imageSize.x <= 0 || imageSize.y <= 0) imageSize = {mOptions.width, mOptions.height};
+        const float aspect = float(imageSize.x) / float(std::max(1, imageSize.y));
+        float w = area.size().x, h = w / aspect;
+        if (h > area.size().y) {
+            h = area.size().y;
+            w = h * aspect;
+        }
+        const float x = area.min.x + 0.5f * (area.size().x - w);
+        return {{x, area.min.y}, {x + w, area.min.y + h}};
+    }
+
+    // A clickable list entry: highlighted when selected, lighter under the cursor.
+    void listItem(const Rect& r, const std::string& text, bool selected, std::function<void()> onClick) {
+        DrawList& dl = *mDrawList;
+        if (selected) dl.rect(r, kHighlight);
+        else if (r.contains(mHover)) dl.rect(r, kHover);
+        dl.textClipped({r.min.x + 6.0f * mScale, r.min.y + 1.0f * mScale}, text, selected ? kText : kDim, r.max.x - 4.0f * mScale);
+        mHits.push_back({r, std::move(onClick)});
+    }
+
+    // The raw value under the cursor, written below the image. Pixel coordinates follow the image
+    // convention (row 0 at the top); one texel is read back from the texture.
+    void hoverReadout(const PaneImage& pane, const Rect& image) {
+        const glm::vec2 uv = (mHover - image.min) / image.size();
+        const glm::ivec2 texel = glm::clamp(glm::ivec2(uv * glm::vec2(pane.size)), glm::ivec2(0), pane.size - 1);
+        const int glRow = pane.flipY ? pane.size.y - 1 - texel.y : texel.y;
+        glm::vec4 v(0.0f);
+        glGetTextureSubImage(pane.texture, 0, texel.x, glRow, 0, 1, 1, 1, GL_RGBA, GL_FLOAT, sizeof v, &v);
+        std::string text = "pixel (" + std::to_string(texel.x) + ", " + std::to_string(texel.y) + ")  =";
+        for (int c = 0; c < std::clamp(pane.channels, 1, 3); ++c) text += format("  %.4g", v[c]);
+        mDrawList->textClipped({image.min.x, image.max.y + 4.0f * mScale}, text, kText, image.max.x);
+    }
+
+    // Returns where the image went.
+    Rect drawPane(const Rect& area, const PaneImage& pane, const std::string& title, const std::string& note) {
+        DrawList& dl = *mDrawList;
+        const float line = mFont->lineHeight();
+        dl.textClipped(area.min, title, kAccent, area.max.x);
+        dl.textClipped({area.min.x, area.min.y + line}, note, kDim, area.max.x);
+        const Rect imageArea{{area.min.x, area.min.y + 2.0f * line + 4.0f * mScale}, area.max};
+        const Rect image = fitImage(imageArea, pane.size);
+        // Frame behind the image: the background batch is drawn before the images.
+        mBackground->rect({image.min - 1.0f, image.max + 1.0f}, kPanel);
+        mPaneDraws.push_back({image, &pane});
+        if (!pane.unavailable.empty()) {
+            dl.textClipped({image.min.x + 8.0f * mScale, image.min.y + 8.0f * mScale}, pane.unavailable, kDim, image.max.x);
+        }
+        if (pane.texture != 0 && image.contains(mHover)) hoverReadout(pane, image);
+        if (mRendering) {
+            const std::string text = mHaveOutput ? "rendering... (last run " + format("%.1f s)", mLastRunSeconds)
+                                                 : std::string("rendering...");
+            const Rect band{{image.min.x, image.max.y - line - 10.0f * mScale}, image.max};
+            dl.rect(band, {0.0f, 0.0f, 0.0f, 0.65f});
+            dl.textClipped({band.min.x + 6.0f * mScale, band.min.y + 3.0f * mScale}, text, kText, band.max.x);
+        }
+        const CpuProgress progress = mWorker->progress();
+        if (progress.busy && !technique().needsGl()) {
+            // Progress of the running pass, estimated from the previous pass's time per pixel.
+            std::string text = "computing... pass " + std::to_string(progress.pass) + "/" + std::to_string(progress.passCount) +
+                               " (" + std::to_string(progress.size.x) + "x" + std::to_string(progress.size.y) + ")  " +
+                               format("%.1f s", progress.elapsed);
+            float fraction = -1.0f;
+            // An estimate the pass has clearly outrun (the previous pass came from the cache, say)
+            // is dropped rather than shown as a full bar.
+            if (progress.estimate > 0.0 && progress.elapsed < 1.5 * progress.estimate) {
+                fraction = float(std::min(0.99, progress.elapsed / progress.estimate));
+                text += format(" of ~%.1f s", progress.estimate);
+            }
+            const Rect band{{image.min.x, image.max.y - line - 10.0f * mScale}, image.max};
+            dl.rect(band, {0.0f, 0.0f, 0.0f, 0.65f});
+            if (fraction >= 0.0f) {
+                dl.rect({{band.min.x, band.max.y - 3.0f * mScale}, {band.min.x + fraction * band.size().x, band.max.y}}, kAccent);
+            }
+            dl.textClipped({band.min.x + 6.0f * mScale, band.min.y + 3.0f * mScale}, text, kText, band.max.x);
+        }
+        return image;
+    }
+
+    void draw() {
+        const glm::ivec2 fb = mWindow.framebufferSize();
+        if (fb.x <= 0 || fb.y <= 0) return;
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        glViewport(0, 0, fb.x, fb.y);
+        glDisable(GL_FRAMEBUFFER_SRGB);
+        glDisable(GL_DEPTH_TEST);
+        glDisable(GL_SCISSOR_TEST);
+        glDisable(GL_BLEND);
+        glDisable(GL_CULL_FACE);
+        glClearColor(kBackground.r, kBackground.g, kBackground.b, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT);
+
+        DrawList& dl = *mDrawList;
+        dl.clear();
+        mBackground->clear();
+        mHits.clear();
+        mPaneDraws.clear();
+        const float s = mScale;
+        const float pad = kPad * s;
+        const float line = mFont->lineHeight();
+        const viz::Technique& t = technique();
+
+        // Status lines at the top.
+        const CameraController::Mode mode = mController.mode();
+        std::string head = "scene: " + mScene.name + "   technique: " + t.id() + " - " + t.description() +
+                           "   render " + std::to_string(mOptions.width) + "x" + std::to_string(mOptions.height);
+        if (mHaveOutput && mReduced) head += "   (interactive: " + std::to_string(mOutputSize.x) + "x" + std::to_string(mOutputSize.y) + ")";
+        if (mHaveOutput && mPassCount > 1) {
+            head += "   (showing pass " + std::to_string(mPass) + "/" + std::to_string(mPassCount) + ": " +
+                    std::to_string(mOutputSize.x) + "x" + std::to_string(mOutputSize.y) + ")";
+        }
+        mBackground->rect({{0.0f, 0.0f}, {float(fb.x), 3.0f * line + 2.0f * pad}}, kPanel);
+        dl.textClipped({pad, pad}, head, kText, float(fb.x) - pad);
+        viz::Timing timing = mOutput.timing;
+        if (timing.clock.empty()) timing.clock = t.needsGl() ? mClockName : "steady_clock";
+        dl.textClipped({pad, pad + line}, mHaveOutput ? timingLine(timing) : "timings: (no run yet)", kDim, float(fb.x) - pad);
+        std::string third = skippedLine(mHaveOutput ? mOutput.plan : mPlan);
+        glm::vec4 thirdColor = kDim;
+        if (!mError.empty() || !mSettingsError.empty()) {
+            third = "error: " + firstLine(mError.empty() ? mSettingsError + " (using defaults)" : mError);
+            thirdColor = kError;
+        }
+        dl.textClipped({pad, pad + 2.0f * line}, third, thirdColor, float(fb.x) - pad);
+        const float top = 3.0f * line + 3.0f * pad;
+
+        // Help line at the bottom.
+        const std::string help = mode == CameraController::Mode::Orbit
+            ? "camera: ORBIT (target " + format("%.2f", mController.targetDistance()) + ")   Tab/Shift+Tab or 1-9 technique   [ ] view   , . layer   +/- exposure (X auto)   C fly   R reset   "
+              "left drag orbit, wheel zoom, right/middle drag pan   Esc quit"
+            : "camera: FLY   Tab/Shift+Tab or 1-9 technique   [ ] view   , . layer   +/- exposure (X auto)   C orbit   R reset   "
+              "right drag look, WASD move, Q/E down/up, Shift faster, middle drag pan   Esc quit";
+        const float bottom = float(fb.y) - line - pad;
+        dl.textClipped({pad, bottom}, help, kDim, float(fb.x) - pad);
+
+        // Sidebar: techniques, then views.
+        float sidebarWidth = kSidebarMin * s;
+        for (const std::string& id : mIds) sidebarWidth = std::max(sidebarWidth, mFont->measure(id) + 4.0f * pad);
+        const Rect sidebar{{0.0f, top - pad}, {sidebarWidth, bottom - pad}};
+        mBackground->rect(sidebar, kPanel);
+        float y = top;
+        dl.text({pad, y}, "Techniques (Tab)", kAccent);
+        y += line + 2.0f * s;
+        for (int i = 0; i < int(mIds.size()); ++i) {
+            const std::string name = (i < 9 ? std::to_string(i + 1) + "  " : "   ") + mIds[std::size_t(i)];
+            listItem({{pad * 0.5f, y}, {sidebarWidth - pad * 0.5f, y + line + 2.0f * s}}, name, i == mCurrent,
+                     [this, i] { selectTechnique(i); });
+            y += line + 4.0f * s;
+        }
+        y += line;
+        dl.text({pad, y}, "Views ([ ])", kAccent);
+        y += line + 2.0f * s;
+        if (mHaveOutput) {
+            for (int i = 0; i < viewCount() && y + line < sidebar.max.y; ++i) {
+                const std::string name = i == 0 ? "Airlight L_air" : mOutput.intermediates[std::size_t(i - 1)].label;
+                listItem({{pad * 0.5f, y}, {sidebarWidth - pad * 0.5f, y + line + 2.0f * s}}, name, i == mView,
+                         [this, i] { selectView(i); });
+                y += line + 4.0f * s;
+            }
+        }
+
+        // Two panes side by side.
+        const Rect panes{{sidebarWidth + pad, top}, {float(fb.x) - pad, bottom - pad}};
+        mViewArea = panes;
+        const float half = 0.5f * (panes.size().x - pad);
+        const Rect left{panes.min, {panes.min.x + half, panes.max.y}};
+        const Rect right{{panes.max.x - half, panes.min.y}, panes.max};
+        // Camera drags are scaled by the final image's on-screen height.
+        mImageHeight = drawPane(left, mFinal, "Final image", "surface radiance * exp(-sigma_t d) + L_air   (exposure " + format("%+.1f EV)", mExposure)).size().y;
+        std::string rightTitle = "(no view)";
+        std::string rightNote;
+        if (mHaveOutput) {
+            rightTitle = mRight.label + "   [" + std::to_string(mView + 1) + "/" + std::to_string(viewCount()) + "]  " + mRight.id;
+            if (mRight.layers > 1) rightTitle += "   layer " + std::to_string(mRight.layer + 1) + "/" + std::to_string(mRight.layers);
+            rightNote = mRight.note;
+            if (mRight.mode != DisplayMode::HdrColor) {
+                rightNote += "   [" + format("%g", mRight.rangeMin) + ", " + format("%g", mRight.rangeMax) + "]" +
+                             (mRight.units.empty() ? "" : " " + mRight.units) + ", " + viz::viewKindName(mRight.kind);
+            }
+        } else if (!t.needsGl()) {
+            rightTitle = "computing...";
+        }
+        drawPane(right, mRight, rightTitle, rightNote);
+
+        // Panels, then the images, then the text batch over them.
+        mTextRenderer->draw(*mBackground, fb);
+        for (const auto& [rect, pane] : mPaneDraws) {
+            const float exposure = (pane->mode == DisplayMode::HdrColor || pane->mode == DisplayMode::RangeColor) ? mExposure : 0.0f;
+            mImageDisplay->draw(*pane, rect, fb, exposure);
+        }
+        mTextRenderer->draw(dl, fb);
+    }
+
+    GuiOptions mOptions;
+    viz::scene::Scene mScene;  // the camera follows the controller
+    viz::Window& mWindow;
+    CameraController mController;
+    std::vector<std::string> mIds;
+    std::map<std::string, std::unique_ptr<viz::Technique>> mTechniques;  // main-thread instances
+    int mCurrent = 0;
+    viz::Settings mSettings;
+    viz::Plan mPlan;
+    std::string mSettingsError, mError, mClockName;
+
+    std::unique_ptr<viz::ui::FontAtlas> mFont;
+    std::unique_ptr<viz::ui::TextRenderer> mTextRenderer;
+    std::unique_ptr<DrawList> mDrawList;    // text and overlays, drawn last in one call
+    std::unique_ptr<DrawList> mBackground;  // panels behind the images
+    std::unique_ptr<ImageDisplay> mImageDisplay;
+    std::unique_ptr<CpuWorker> mWorker;
+    float mScale = 1.0f;
+
+    viz::FrameOutput mOutput;
+    bool mHaveOutput = false;
+    glm::ivec2 mOutputSize{0};
+    int mPass = 0, mPassCount = 1;
+    PaneImage mFinal, mRight;
+    std::string mViewId = "airlight";
+    int mView = 0, mLayer = 0;
+    float mExposure = 0.0f;
+    bool mExposureSet = false;
+    bool mDirty = true;
+    bool mRendering = false;  // a GPU run is about to block the thread
+    double mLastRunSeconds = 0.0;
+    bool mReduced = false;  // the last GPU run was at half size during an interaction
+
+    std::vector<std::pair<Rect, std::function<void()>>> mHits;  // clickable rectangles of the last frame
+    std::vector<std::pair<Rect, const PaneImage*>> mPaneDraws;
+    Rect mViewArea;
+    float mImageHeight = 1.0f;
+    glm::vec2 mHover{-1.0f};
+    glm::vec2 mLastCursor{0.0f};
+    int mDragButton = -1;
+};
+
+}  // namespace
+
+int runGui(const GuiOptions& options) {
+    if (options.width < 1 || options.height < 1) throw viz::InputError("render size must be at least 1x1");
+    // Everything that can fail on user input fails before the window opens.
+    viz::scene::Scene scene = viz::scene::loadScene(options.scene);
+    // Each --set must name a parameter of some technique (the window switches between them), and the
+    // values must suit the technique the window opens with.
+    std::vector<std::unique_ptr<viz::Technique>> all;
+    for (const std::string& id : viz::techniqueIds()) all.push_back(viz::makeTechnique(id));
+    for (const auto& [name, value] : options.settings) {
+        bool known = false;
+        for (const auto& t : all)
+            for (const viz::ParamInfo& p : t->params()) known = known || p.name == name;
+        if (!known) throw viz::InputError("no technique has a parameter '" + name + "'");
+    }
+    const std::unique_ptr<viz::Technique> first =
+        viz::makeTechnique(options.technique.empty() ? viz::techniqueIds().front() : options.technique);
+    viz::Settings mine;
+    for (const auto& [name, value] : options.settings)
+        for (const viz::ParamInfo& p : first->params())
+            if (p.name == name) mine[name] = value;
+    (void)viz::completeSettings(*first, mine);
+    all.clear();
+#ifdef NDEBUG
+    constexpr bool kDebugContext = false;
+#else
+    constexpr bool kDebugContext = true;
+#endif
+    std::unique_ptr<viz::Window> window = viz::Window::create(1280, 720, "Airlight", kDebugContext);
+    if (kDebugContext) viz::gl::installDebugOutput();
+    int code = 0;
+    {
+        GuiApp app(options, std::move(scene), *window);
+        code = app.run();
+    }
+    return code;
+}
+
+}  // namespace airlight

@@ -1,0 +1,23 @@
+// The interactive window: the final frame beside one chosen intermediate, a technique picker, an
+// orbit/fly camera and a status line with per-stage timings. The full debugger UI comes later.
+#pragma once
+
+#include <string>
+
+#include "debug/technique.h"
+
+namespace airlight {
+
+struct GuiOptions {
+    std::string scene;      // built-in name or .gltf/.glb path
+    std::string technique;  // initial technique id; empty = the first registered one
+    int width = 320;        // internal render resolution; the panes upscale it (nearest)
+    int height = 240;
+    viz::Settings settings;  // applied to every technique that has a parameter of that name
+};
+
+// Opens the window and runs until it is closed. Throws InputError for a bad scene or technique (before
+// any window opens) or when no GL 4.5 window can be created. Returns the process exit code.
+int runGui(const GuiOptions& options);
+
+}  // namespace airlight

@@ -1,0 +1,58 @@
+// airlight: command-line entry point. Every user error prints one line "airlight: error: ..." and exits
+// with code 2; an internal failure exits with 1.
+#include <cstdio>
+#include <exception>
+#include <filesystem>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "cli_args.h"
+#include "commands.h"
+#include "core/error.h"
+#include "gl/gl_error.h"
+
+namespace {
+
+constexpr const char* kUsage = R"(airlight - a visual debugger for volumetric shadows (single-scattering airlight)
+
+usage: airlight [COMMAND] [OPTIONS]
+
+commands:
+  (none)          open the window on the default scene; without a display, render it
+                  headlessly into out/ (final frame and every intermediate as PNG)
+  gui             open the window (options as for render: --scene, --technique, --size, --set)
+  render          render one image:  airlight render --scene S --technique T --size WxH --out F.exr|F.png
+  list            list scenes | techniques | stages T | params T
+  plan            show which stages and features a technique runs for a scene, and why
+  export-scene    write a scene as glTF:  airlight export-scene NAME out.gltf|out.glb
+
+Run 'airlight COMMAND --help' for the options of a command.
+)";
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    std::vector<std::string> words(argv + 1, argv + argc);
+    try {
+        if (words.empty()) return airlight::runDefault();
+        const std::string command = words.front();
+        airlight::Args args({words.begin() + 1, words.end()});
+        if (airlight::isHelpFlag(command)) {
+            std::fputs(kUsage, stdout);
+            return 0;
+        }
+        if (command == "render") return airlight::runRender(args);
+        if (command == "list") return airlight::runList(args);
+        if (command == "plan") return airlight::runPlan(args);
+        if (command == "export-scene") return airlight::runExportScene(args);
+        if (command == "gui") return airlight::runGuiCommand(args);
+        throw viz::InputError("unknown command '" + command + "' (run 'airlight --help')");
+    } catch (const viz::InputError& e) {
+        std::fprintf(stderr, "airlight: error: %s\n", e.what());
+        return 2;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "airlight: internal error: %s\n", e.what());
+        return 1;
+    }
+}

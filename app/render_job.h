@@ -1,0 +1,55 @@
+// Running one technique on one scene, headless: the common path of `render`, the no-display default and
+// the tests. Owns the GL context when the technique needs one.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "core/image.h"
+#include "debug/technique.h"
+#include "scene/scene.h"
+
+namespace viz {
+class HeadlessContext;
+}
+
+namespace airlight {
+
+struct RenderRequest {
+    std::string scene;      // built-in name or .gltf/.glb path
+    std::string technique;
+    int width = 160;
+    int height = 120;
+    viz::Settings settings;
+    std::string stopAfter;  // stage id or empty
+};
+
+class RenderJob {
+public:
+    explicit RenderJob(const RenderRequest& request);  // loads and validates; throws InputError
+    ~RenderJob();
+    RenderJob(const RenderJob&) = delete;
+    RenderJob& operator=(const RenderJob&) = delete;
+
+    const viz::FrameOutput& run();
+    const viz::scene::Scene& scene() const { return mScene; }
+    const viz::Technique& technique() const { return *mTechnique; }
+
+    // "airlight", "final" or an intermediate id; layer selects a cube face / array layer.
+    viz::Image layerImage(const std::string& layer, int arrayLayer = -1) const;
+    const viz::Intermediate* findIntermediate(const std::string& id) const;
+
+private:
+    viz::scene::Scene mScene;
+    std::unique_ptr<viz::HeadlessContext> mContext;
+    std::unique_ptr<viz::Technique> mTechnique;
+    viz::FrameInput mInput;
+    viz::FrameOutput mOutput;
+};
+
+int stageIndex(const viz::Technique& technique, const std::string& stageId);  // InputError if unknown
+
+// Exposure that maps the 99.5th percentile of the brightest channel to 1 (1 for a black image).
+float autoExposure(const viz::Image& image);
+
+}  // namespace airlight

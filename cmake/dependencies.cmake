@@ -1,0 +1,29 @@
+# Every dependency comes from a Debian package; nothing is fetched at configure or build time.
+# scripts/setup.sh installs them; the package names are listed there.
+find_package(PkgConfig REQUIRED)
+find_package(Threads REQUIRED)
+find_package(glfw3 3.3 REQUIRED)
+find_package(glm REQUIRED)
+find_package(TinyGLTF REQUIRED)
+find_package(embree 3 REQUIRED)
+find_package(Eigen3 REQUIRED NO_MODULE)
+pkg_check_modules(EPOXY REQUIRED IMPORTED_TARGET epoxy)
+pkg_check_modules(EGL REQUIRED IMPORTED_TARGET egl)
+pkg_check_modules(STB REQUIRED IMPORTED_TARGET stb)
+# OpenImageIO through pkg-config: Debian's CMake package config names /usr/include/opencv4 as an include
+# directory, which exists only when libopencv-dev happens to be installed.
+pkg_check_modules(OIIO REQUIRED IMPORTED_TARGET OpenImageIO)
+find_package(Boost 1.74 REQUIRED)
+if(VIZ_BUILD_TESTS)
+    find_package(GTest REQUIRED)
+endif()
+
+# glm: silence its own warnings by treating it as a system include.
+if(TARGET glm::glm)
+    get_target_property(_glm_inc glm::glm INTERFACE_INCLUDE_DIRECTORIES)
+    set_target_properties(glm::glm PROPERTIES INTERFACE_SYSTEM_INCLUDE_DIRECTORIES "${_glm_inc}")
+endif()
+# Debian's tiny_gltf.h includes <stb_image.h>, which libstb-dev installs under /usr/include/stb.
+add_library(viz_tinygltf INTERFACE)
+target_link_libraries(viz_tinygltf INTERFACE TinyGLTF::TinyGLTF)
+target_include_directories(viz_tinygltf SYSTEM INTERFACE /usr/include/stb)

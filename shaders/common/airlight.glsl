@@ -1,0 +1,223 @@
+// Airlight math for the GPU techniques: single scattering from a point or directional light in a
+// homogeneous medium along one segment of an eye ray. Float mirror of viz/shared/airlight.h (same
+// function names, argument order and structure, line by line); NUMERICS.md 5.1, Sun et al. 2005.
+// Inputs are camera-relative (tP, h computed in double on the CPU when world coordinates are large).
+#ifndef AIRLIGHT_GLSL
+#define AIRLIGHT_GLSL
+
+// ---- Precision-dependent knobs (Precision<float> in airlight.h) ---------------------------------------
+const int AIRLIGHT_NODES = 8;
+const float AIRLIGHT_NEAR_WIDTH = 2.0;
+const float AIRLIGHT_ATTENUATION_CUT = 20.0;
+const float AIRLIGHT_WINDOW = 17.0;
+const float AIRLIGHT_ASINH_LARGE = 1e4;
+const float AIRLIGHT_EXPM1_SMALL = 1e-5;
+
+// Light-to-ray distance floor, the same as on the CPU (see pointSegment).
+const float AIRLIGHT_MIN_RELATIVE_H = 1e-7;
+const float AIRLIGHT_MIN_ABSOLUTE_H = 1e-15;
+const float AIRLIGHT_INV_4PI = 0.0795774715459476679;
+const float AIRLIGHT_LN2 = 0.693147180559945309417;
+
+// ---- 8-point Gauss-Legendre rule on [-1, 1]: positive abscissae and weights (symmetric rule) ----------
+const float AIRLIGHT_GL_X[4] = float[4](0.960289856497536231684, 0.796666477413626739592,
+                                        0.525532409916328985818, 0.183434642495649804939);
+const float AIRLIGHT_GL_W[4] = float[4](0.101228536290376259153, 0.222381034453374470544,
+                                        0.313706645877887287338, 0.362683783378361982965);
+
+// ---- Elementary helpers (GLSL has no log1p/expm1; NUMERICS.md 5.3) ---------------------------------
+
+// log(1 + x) without losing x when |x| << 1 (Kahan's trick). `precise` keeps the compiler from folding
+// u - 1 into x, which would undo the rounding compensation.
+float stableLog1p(float x) {
+    precise float u = 1.0 + x;
+    if (u == 1.0) return x;
+    if (isinf(u)) return u;
+    precise float um1 = u - 1.0;
+    return log(u) * x / um1;
+}
+
+// exp(x) - 1 without cancellation for small |x| (Kahan's trick, Taylor series near 0).
+float stableExpm1(float x) {
+    if (abs(x) < AIRLIGHT_EXPM1_SMALL) {
+        return x * (1.0 + x * (0.5 + x * (1.0 / 6.0 + x * (1.0 / 24.0))));
+    }
+    precise float u = exp(x);
+    if (u == 1.0) return x;
+    precise float um1 = u - 1.0;
+    if (um1 == -1.0) return -1.0;
+    if (isinf(u)) return u;
+    return um1 * x / log(u);
+}
+
+// asinh(x) = sign(x) log1p(|x| + x^2 / (1 + sqrt(1 + x^2))); the built-in asinh cancels for x < 0.
+float stableAsinh(float x) {
+    float a = abs(x);
+    float result;
+    if (a > AIRLIGHT_ASINH_LARGE) {
+        result = log(a) + AIRLIGHT_LN2;
+    } else {
+        result = stableLog1p(a + a * a / (1.0 + sqrt(1.0 + a * a)));
+    }
+    return x < 0.0 ? -result : result;
+}
+
+// sqrt(a^2 + b^2) without overflow of the squares.
+float scaledHypot(float a, float b) {
+    float big = max(abs(a), abs(b));
+    float small = min(abs(a), abs(b));
+    if (big == 0.0 || isinf(big)) return big;
+    float ratio = small / big;
+    return big * sqrt(1.0 + ratio * ratio);
+}
+
+// ---- Phase function --------------------------------------------------------------------------------
+
+// Henyey-Greenstein with the denominator as a sum of non-negative terms: (1 - g)^2 + 2 g (1 - cos) for
+// g > 0, (1 + g)^2 - 2 g (1 + cos) for g < 0 (no cancellation in either lobe); 1/(4 pi) for g == 0.
+float phaseHGFromCosTerms(float oneMinusCos, float onePlusCos, float g) {
+    if (g == 0.0) return AIRLIGHT_INV_4PI;
+    float denom = g > 0.0 ? (1.0 - g) * (1.0 - g) + 2.0 * g * oneMinusCos
+                          : (1.0 + g) * (1.0 + g) - 2.0 * g * onePlusCos;
+    return (1.0 - g) * (1.0 + g) * AIRLIGHT_INV_4PI / (denom * sqrt(denom));
+}
+
+// cosTheta = dot(direction light->point, direction point->eye): +1 is forward scattering.
+float phaseHG(float cosTheta, float g) {
+    return phaseHGFromCosTerms(1.0 - cosTheta, 1.0 + cosTheta, g);
+}
+
+// ---- Ray-light geometry -----------------------------------------------------------------------------
+
+struct RayLightGeometry {
+    float tP;  // signed distance eye -> foot point P of the light on the ray
+    float h;   // light-to-ray distance, >= 0
+};
+
+// D = light - eye (camera-relative), w unit. h = |D x w|, never sqrt(|D|^2 - tP^2).
+RayLightGeometry rayLightGeometry(vec3 D, vec3 w) {
+    return RayLightGeometry(dot(D, w), length(cross(D, w)));
+}
+
+// ---- Point light: anchored log-tangent Gauss-Legendre (NUMERICS.md 2.5 and 5.1) ------------------
+
+// p(cos) * exp(-nu expm1(eta)) / cosh(y), y = y0 + eta; 1 -+ cos = 1 +- tanh(y) from e = exp(-|y|).
+float pointIntegrand(float eta, float y0, float nu, float g) {
+    float y = y0 + eta;
+    float e = exp(-abs(y));
+    float e2 = e * e;
+    float sech = 2.0 * e / (1.0 + e2);
+    float oneMinusCos = y >= 0.0 ? 2.0 / (1.0 + e2) : 2.0 * e2 / (1.0 + e2);
+    float onePlusCos = y >= 0.0 ? 2.0 * e2 / (1.0 + e2) : 2.0 / (1.0 + e2);
+    float attenuation = exp(-nu * stableExpm1(eta));
+    return phaseHGFromCosTerms(oneMinusCos, onePlusCos, g) * attenuation * sech;
+}
+
+// 8-point Gauss-Legendre over eta in [a, b]; 0 for an empty panel.
+float pointPanel(float a, float b, float y0, float nu, float g) {
+    if (!(b > a)) return 0.0;
+    float half_ = 0.5 * (b - a);
+    float mid = 0.5 * (a + b);
+    float sum = 0.0;
+    for (int k = 0; k < AIRLIGHT_NODES / 2; ++k) {
+        float dx = half_ * AIRLIGHT_GL_X[k];
+        sum += AIRLIGHT_GL_W[k] *
+               (pointIntegrand(mid - dx, y0, nu, g) + pointIntegrand(mid + dx, y0, nu, g));
+    }
+    return sum * half_;
+}
+
+// L(x0, x1) = int_x0^x1 sigma_s p(cos) I0 exp(-sigma_t (x + r(x))) / r(x)^2 dx, x1 may be +inf.
+// Anchored at x0 (NUMERICS.md 2.5); see viz/shared/airlight.h for the derivation, the h floor for rays
+// through the light, and the quadrature windows.
+float pointSegment(float tP, float h, float x0, float x1, float sigma_s, float sigma_t, float g, float I0) {
+    if (!(x1 > x0) || !(sigma_s > 0.0) || !(I0 > 0.0)) return 0.0;
+
+    // Positions relative to the foot point P; s1 = +inf for the sky.
+    float s0 = x0 - tP;
+    float s1 = x1 - tP;
+    bool footInside = s0 <= 0.0 && s1 >= 0.0;
+    float scale = footInside ? max(abs(s0), isinf(s1) ? 0.0 : s1)
+                             : min(abs(s0), abs(s1));
+    if (scale == 0.0) scale = abs(tP);
+    h = max(h, max(AIRLIGHT_MIN_RELATIVE_H * scale, AIRLIGHT_MIN_ABSOLUTE_H));
+
+    // Segment start: r0 = |light - point|, q0 = s0 + r0 written without cancellation for s0 < 0.
+    float r0 = scaledHypot(s0, h);
+    float q0 = s0 >= 0.0 ? s0 + r0 : h * (h / (r0 - s0));
+    float y0 = stableAsinh(s0 / h);
+
+    // E = y1 - y0 = ln(q1 / q0) from q1 - q0 = (x1 - x0)(q1 + q0)/(r1 + r0): all terms positive.
+    float E = 1e30;
+    if (!isinf(x1)) {
+        float r1 = scaledHypot(s1, h);
+        float q1 = s1 >= 0.0 ? s1 + r1 : h * (h / (r1 - s1));
+        E = stableLog1p((x1 - x0) * ((q1 + q0) / (r1 + r0)) / q0);
+    }
+
+    // Extinction cut: nu expm1(eta) reaches K at eta = log1p(K / nu).
+    float nu = sigma_t * q0;
+    if (nu > 0.0) E = min(E, stableLog1p(AIRLIGHT_ATTENUATION_CUT / nu));
+
+    // Window around the closest approach, widened for a strong HG lobe.
+    float window_ = AIRLIGHT_WINDOW - 2.0 * log(1.0 - abs(g));
+    float split = clamp(0.0, y0, y0 + E) - y0;
+    float lo = max(0.0, split - window_);
+    float hi = min(E, split + window_);
+
+    // Break points graded around the closest approach and the HG peak (a, 2a, rest) plus optical depths
+    // 2 and 6 from x0; clamped into [lo, hi], sorted, empty panels cost nothing.
+    float a = AIRLIGHT_NEAR_WIDTH;
+    float centre1 = split;
+    if (abs(g) > 0.5) {
+        float yPeak = log(0.5 * (1.0 - abs(g)));
+        centre1 = (g > 0.0 ? yPeak : -yPeak) - y0;
+    }
+    float depth2 = nu > 0.0 ? stableLog1p(2.0 / nu) : hi;
+    float depth6 = nu > 0.0 ? stableLog1p(6.0 / nu) : hi;
+    float breaks[12] = float[12](split - 3.0 * a, split - a, split, split + a, split + 3.0 * a,
+                                 centre1 - 3.0 * a, centre1 - a, centre1, centre1 + a, centre1 + 3.0 * a,
+                                 depth2, depth6);
+    for (int i = 0; i < 12; ++i) {
+        breaks[i] = clamp(breaks[i], lo, hi);
+    }
+    for (int i = 1; i < 12; ++i) {
+        float v = breaks[i];
+        int j = i - 1;
+        while (j >= 0 && breaks[j] > v) {
+            breaks[j + 1] = breaks[j];
+            --j;
+        }
+        breaks[j + 1] = v;
+    }
+    float sum = pointPanel(lo, breaks[0], y0, nu, g) + pointPanel(breaks[11], hi, y0, nu, g);
+    for (int i = 0; i < 11; ++i) {
+        sum += pointPanel(breaks[i], breaks[i + 1], y0, nu, g);
+    }
+    if (!(sum > 0.0)) return 0.0;
+
+    // Exponents combined before exponentiating: exp(-x) flushes to 0 for x > ~87 on GPUs (NUMERICS row 3).
+    float logL = log(sigma_s) + log(I0) - log(h) - sigma_t * (x0 + r0) + log(sum);
+    return exp(logL);
+}
+
+// ---- Directional light ----------------------------------------------------------------------------
+
+// int_x0^x1 sigma_s p(cosTheta) E exp(-sigma_t x) dx; sigma_t -> 0 and x1 = +inf via expm1.
+float directionalSegment(float cosTheta, float x0, float x1, float sigma_s, float sigma_t, float g, float E) {
+    if (!(x1 > x0) || !(sigma_s > 0.0) || !(E > 0.0)) return 0.0;
+    float length_ = x1 - x0;
+    float tau = sigma_t * length_;
+    float pathIntegral = tau > 0.0 ? -stableExpm1(-tau) / sigma_t : length_;
+    float logScale = log(sigma_s) + log(E) - sigma_t * x0;
+    return exp(logScale) * phaseHG(cosTheta, g) * pathIntegral;
+}
+
+// ---- Transmittance ----------------------------------------------------------------------------------
+
+// exp(-sigma_t distance); 1 for sigma_t == 0 even at distance = +inf.
+float transmittance(float sigma_t, float distance) {
+    return sigma_t > 0.0 ? exp(-sigma_t * distance) : 1.0;
+}
+
+#endif  // AIRLIGHT_GLSL

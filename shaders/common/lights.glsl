@@ -1,0 +1,98 @@
+// Light evaluation for GpuLight (common/host_device.glsl), in eye-relative world space. Implements the
+// emission side of the project's definition: E = I * colour * A_spot * cookie * exp(-sigma_t r) / r^2
+// (point, spot), E = I * colour (directional), VPL: E = weight * max(0, cos theta_e) * exp(-sigma_t r) / r^2.
+#ifndef LIGHTS_GLSL
+#define LIGHTS_GLSL
+
+#include "common/host_device.glsl"
+
+// The lights as a uniform block (see host_device.glsl for why not the SSBO); count from the caller.
+layout(std140, binding = kBindingLightsUniform) uniform GpuLightBlock { GpuLight gLights[kMaxGpuLights]; };
+layout(binding = kUnitCookies) uniform sampler2DArray uCookies;
+
+// distanceToLight() of a directional light.
+const float kInfiniteDistance = 1.0e30;
+
+// IEC 61966-2-1 sRGB decoding of a unorm value (the texture holds the file's sRGB bytes as RGBA8; the
+// texture unit's own sRGB decode is approximate on llvmpipe).
+vec3 srgbToLinear(vec3 c) {
+    return mix(pow((c + 0.055) / 1.055, vec3(2.4)), c / 12.92, lessThanEqual(c, vec3(0.04045)));
+}
+
+// Linear RGB of one texel of an sRGB-byte layer.
+vec3 fetchLinearRgb(sampler2DArray tex, ivec3 texel) { return srgbToLinear(texelFetch(tex, texel, 0).rgb); }
+
+// Bilinear filter of the decoded texels of a layer of a texture array (decode, then filter), clamp to
+// edge, v = 0 at texel row 0 (the image's top row), texel (i, j) centred at ((i + 0.5) / w, (j + 0.5) / h)
+// of a w x h image stored in the [0, w) x [0, h) corner of the layer. Filtering by hand keeps the weights
+// in fp32 (hardware filtering may quantise them), mirroring scene::sampleLinearRgb.
+vec3 sampleLayerLinearRgb(sampler2DArray tex, int layer, vec2 uv, vec2 size) {
+    vec2 f = clamp(uv, 0.0, 1.0) * size - 0.5;
+    vec2 f0 = floor(f);
+    vec2 a = f - f0;
+    ivec2 maxTexel = ivec2(size) - 1;
+    ivec2 i0 = clamp(ivec2(f0), ivec2(0), maxTexel);
+    ivec2 i1 = clamp(ivec2(f0) + 1, ivec2(0), maxTexel);
+    vec3 c00 = fetchLinearRgb(tex, ivec3(i0.x, i0.y, layer));
+    vec3 c10 = fetchLinearRgb(tex, ivec3(i1.x, i0.y, layer));
+    vec3 c01 = fetchLinearRgb(tex, ivec3(i0.x, i1.y, layer));
+    vec3 c11 = fetchLinearRgb(tex, ivec3(i1.x, i1.y, layer));
+    return mix(mix(c00, c10, a.x), mix(c01, c11, a.x), a.y);
+}
+
+// Unit vector from p toward the light (directional: against the travel direction).
+vec3 directionToLight(GpuLight L, vec3 p) {
+    if (L.info.x == kLightDirectional) return -L.direction.xyz;
+    return normalize(L.position.xyz - p);
+}
+
+// Distance from p to the light, scene units (kInfiniteDistance for directional lights).
+float distanceToLight(GpuLight L, vec3 p) {
+    if (L.info.x == kLightDirectional) return kInfiniteDistance;
+    return length(L.position.xyz - p);
+}
+
+// KHR_lights_punctual angular attenuation: clamp(cd * scale + offset, 0, 1)^2, cd = cos(axis, light->p).
+float spotAttenuation(GpuLight L, vec3 dirFromLight) {
+    float cd = dot(L.direction.xyz, dirFromLight);
+    float a = clamp(cd * L.spot.x + L.spot.y, 0.0, 1.0);
+    return a * a;
+}
+
+// Cookie projected over the outer cone: in the light frame (x right, y up, z axis),
+// uv = 0.5 + 0.5 (x, y) / (z tan(outer)), v = 0 at the top row; 1 without a cookie.
+vec3 spotCookie(GpuLight L, vec3 dirFromLight) {
+    if (L.info.y < 0) return vec3(1.0);
+    float z = dot(L.direction.xyz, dirFromLight);
+    if (z <= 0.0) return vec3(0.0);  // behind the light: outside every cone (A_spot = 0 there too)
+    vec2 xy = vec2(dot(L.frameX.xyz, dirFromLight), dot(L.frameY.xyz, dirFromLight));
+    vec2 uv = 0.5 + 0.5 * xy / (z * L.spot.z);
+    return sampleLayerLinearRgb(uCookies, L.info.y, uv, vec2(L.frameX.w, L.frameY.w));
+}
+
+// The light's angular emission toward p, without distance terms: colour * I * A_spot * cookie (spot),
+// colour * I (point, directional), weight * max(0, cos theta_e) (VPL).
+vec3 lightIntensity(GpuLight L, vec3 p) {
+    int type = L.info.x;
+    if (type == kLightPoint || type == kLightDirectional) return L.radiant.rgb;
+    vec3 dirFromLight = normalize(p - L.position.xyz);
+    if (type == kLightSpot) {
+        float a = spotAttenuation(L, dirFromLight);
+        if (a == 0.0) return vec3(0.0);
+        return L.radiant.rgb * a * spotCookie(L, dirFromLight);
+    }
+    // VPL: cosine lobe around the emitter normal.
+    return L.radiant.rgb * max(0.0, dot(L.direction.xyz, dirFromLight));
+}
+
+// E of the definition at p: lightIntensity * exp(-sigma_t r) / r^2 for point-like lights, I * colour for
+// directional ones (no attenuation on the light side). No visibility.
+vec3 unshadowedIrradiance(GpuLight L, vec3 p, float sigma_t) {
+    if (L.info.x == kLightDirectional) return L.radiant.rgb;
+    vec3 d = L.position.xyz - p;
+    float r2 = dot(d, d);
+    // r -> 0 is a true singularity of the definition; the floor only keeps it finite.
+    return lightIntensity(L, p) * (exp(-sigma_t * sqrt(r2)) / max(r2, 1.0e-20));
+}
+
+#endif  // LIGHTS_GLSL

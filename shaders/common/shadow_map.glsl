@@ -1,0 +1,76 @@
+// Shadow-map visibility V(p) for a GpuLight (1 = lit), nearest texel, in eye-relative world space.
+// Every map stores a linear distance in scene units (render::ShadowMaps): the distance to the light
+// (spot, point, VPL) or the depth dot(p, direction) along a directional light's travel direction.
+// Bias: p is lit when  d(p) <= stored + L.shadow.w + L.shadow.z * footprint,  footprint = d(p) / size for
+// perspective and cube maps and 1 / size for orthographic maps (shadow.z = 2 texels' worth, see
+// gpu_lights.cpp). Points outside a 2D map's frustum or without a map are lit.
+#ifndef SHADOW_MAP_GLSL
+#define SHADOW_MAP_GLSL
+
+#include "common/host_device.glsl"
+#include "common/lights.glsl"
+
+layout(binding = kUnitShadow2D) uniform sampler2DArray uShadow2D;
+layout(binding = kUnitShadowCube) uniform sampler2DArray uShadowCube;
+layout(binding = kUnitShadowCubeVpl) uniform sampler2DArray uShadowCubeVpl;
+
+// The value a shadow map stores for a surface at p (shaders/render/shadow.frag writes the same).
+float shadowDepth(GpuLight L, vec3 p) {
+    if (L.info.x == kLightDirectional) return dot(p, L.direction.xyz);
+    return length(p - L.position.xyz);
+}
+
+// Cube faces (+X, -X, +Y, -Y, +Z, -Z): view direction and up vector, the same table as
+// render::cubeFaceBasis in shadow_maps.cpp. Face f was rendered with lookAt(light, light + forward, up)
+// and a 90-degree square perspective, so ndc = (dot(right, d), dot(trueUp, d)) / dot(forward, d).
+void cubeFaceBasis(int face, out vec3 forward, out vec3 up) {
+    int axis = face >> 1;
+    float s = (face & 1) == 0 ? 1.0 : -1.0;
+    forward = vec3(0.0);
+    forward[axis] = s;
+    up = axis == 1 ? vec3(0.0, 0.0, s) : vec3(0.0, -1.0, 0.0);
+}
+
+// Nearest texel of a cube stored as 6 layers (cube * 6 + face) of a 2D array, for direction d != 0.
+float cubeLookup(sampler2DArray maps, int cube, vec3 d) {
+    vec3 a = abs(d);
+    int axis = (a.x >= a.y && a.x >= a.z) ? 0 : (a.y >= a.z ? 1 : 2);
+    int face = 2 * axis + (d[axis] < 0.0 ? 1 : 0);
+    vec3 forward, up;
+    cubeFaceBasis(face, forward, up);
+    vec3 right = cross(forward, up);
+    vec3 trueUp = cross(right, forward);
+    vec2 ndc = vec2(dot(right, d), dot(trueUp, d)) / dot(forward, d);
+    ivec2 size = textureSize(maps, 0).xy;
+    ivec2 texel = clamp(ivec2(floor((ndc * 0.5 + 0.5) * vec2(size))), ivec2(0), size - 1);
+    return texelFetch(maps, ivec3(texel, 6 * cube + face), 0).r;
+}
+
+float shadowVisibility(GpuLight L, vec3 p) {
+    int layer = L.info.z;
+    if (layer < 0) return 1.0;
+    int type = L.info.x;
+    float d = shadowDepth(L, p);
+    float stored;
+    float footprint;
+    if (type == kLightSpot || type == kLightDirectional) {
+        vec4 clip = L.shadowMatrix * vec4(p, 1.0);
+        if (clip.w <= 0.0) return 1.0;
+        vec2 ndc = clip.xy / clip.w;
+        if (any(greaterThan(abs(ndc), vec2(1.0)))) return 1.0;
+        ivec2 size = textureSize(uShadow2D, 0).xy;
+        // Nearest texel: GL row 0 is at ndc.y = -1, as the map was rendered.
+        ivec2 texel = clamp(ivec2(floor((ndc * 0.5 + 0.5) * vec2(size))), ivec2(0), size - 1);
+        stored = texelFetch(uShadow2D, ivec3(texel, layer), 0).r;
+        footprint = (type == kLightSpot ? d : 1.0) / float(size.x);
+    } else {
+        vec3 dir = p - L.position.xyz;
+        if (dir == vec3(0.0)) return 1.0;
+        bool vpl = type == kLightVpl;
+        stored = vpl ? cubeLookup(uShadowCubeVpl, layer, dir) : cubeLookup(uShadowCube, layer, dir);
+        footprint = d / float(vpl ? textureSize(uShadowCubeVpl, 0).x : textureSize(uShadowCube, 0).x);
+    }
+    return d <= stored + L.shadow.w + L.shadow.z * footprint ? 1.0 : 0.0;
+}
+
+#endif  // SHADOW_MAP_GLSL

@@ -1,0 +1,98 @@
+#version 450 core
+// raymarch/march.comp: brute-force single scattering. For each pixel and light, N samples along the eye
+// ray over [0, d] (d from the surface pass), each tested against the light's shadow map. Plain mode is
+// the midpoint rule of the integrand; EXACT integrates the unshadowed airlight analytically over each
+// sample's interval and weights it by the visibility at the sample. Output: L_air (rgba32f) and the lit
+// fraction of the samples. All positions are eye-relative (the eye at the origin).
+layout(local_size_x = 8, local_size_y = 8) in;
+
+#include "common/host_device.glsl"
+#include "common/airlight.glsl"
+#include "common/lights.glsl"
+#include "common/shadow_map.glsl"
+
+layout(binding = kFirstFreeTextureUnit) uniform sampler2D uDistance;  // Euclidean t of the first surface
+layout(rgba32f, binding = 0) uniform writeonly image2D uAirlight;
+layout(r32f, binding = 1) uniform writeonly image2D uLitFraction;
+
+uniform ivec2 uSize;
+uniform vec3 uForward;
+uniform vec3 uRight;
+uniform vec3 uUp;
+uniform float uTanHalf;  // tan(yfov / 2)
+uniform float uAspect;
+uniform int uSamples;
+uniform int uLightCount;
+uniform float uSigmaS;
+uniform float uSigmaT;
+uniform float uG;
+uniform uint uSeed;
+
+// PCG-style integer hash -> [0, 1): jitter that is fixed per pixel, sample and seed (deterministic).
+float hashToUnit(uvec3 v) {
+    v = v * 1664525u + 1013904223u;
+    v.x += v.y * v.z; v.y += v.z * v.x; v.z += v.x * v.y;
+    v ^= v >> 16u;
+    v.x += v.y * v.z; v.y += v.z * v.x; v.z += v.x * v.y;
+    return float(v.x >> 8u) * (1.0 / 16777216.0);
+}
+
+// The ray through the centre of pixel (x, yTop), yTop = 0 the top row: the same formula as
+// scene::pixelRay (viz/scene/camera.h).
+vec3 pixelRay(ivec2 texel) {
+    float yTop = float(uSize.y - 1 - texel.y);  // GL row 0 is the bottom of the image
+    float ndcX = 2.0 * (float(texel.x) + 0.5) / float(uSize.x) - 1.0;
+    float ndcY = 1.0 - 2.0 * (yTop + 0.5) / float(uSize.y);
+    return normalize(uForward + (ndcX * uTanHalf * uAspect) * uRight + (ndcY * uTanHalf) * uUp);
+}
+
+void main() {
+    ivec2 texel = ivec2(gl_GlobalInvocationID.xy);
+    if (any(greaterThanEqual(texel, uSize))) return;
+
+    vec3 w = pixelRay(texel);
+    float d = texelFetch(uDistance, texel, 0).r;
+    float dt = d / float(uSamples);
+
+    vec3 sum = vec3(0.0);
+    float litSamples = 0.0;
+    for (int li = 0; li < uLightCount; ++li) {
+        GpuLight L = gLights[li];
+        bool directional = L.info.x == kLightDirectional;
+#ifdef EXACT
+        // t_P and h of the ray relative to the light, once per light (NUMERICS.md section 1).
+        RayLightGeometry g = rayLightGeometry(L.position.xyz, w);
+#endif
+        for (int i = 0; i < uSamples; ++i) {
+#ifdef JITTER
+            float u = hashToUnit(uvec3(uint(texel.x) + uint(texel.y) * 65536u, uint(i), uSeed + uint(li)));
+#else
+            float u = 0.5;
+#endif
+            float t = (float(i) + u) * dt;
+            vec3 x = t * w;
+            float V = shadowVisibility(L, x);
+            litSamples += V;
+            if (V == 0.0) continue;
+            // cos theta = dot(direction light->point, direction point->eye) = dot(toLight, w).
+            vec3 toLight = directionToLight(L, x);
+            float cosTheta = dot(toLight, w);
+#ifdef EXACT
+            float x0 = float(i) * dt;
+            float x1 = float(i + 1) * dt;
+            if (directional) {
+                sum += V * directionalSegment(cosTheta, x0, x1, uSigmaS, uSigmaT, uG, 1.0) * L.radiant.rgb;
+            } else {
+                // Unit-intensity isotropic segment times the light's angular factor at the sample.
+                sum += V * pointSegment(g.tP, g.h, x0, x1, uSigmaS, uSigmaT, uG, 1.0) * lightIntensity(L, x);
+            }
+#else
+            vec3 E = unshadowedIrradiance(L, x, uSigmaT);
+            sum += V * uSigmaS * phaseHG(cosTheta, uG) * E * exp(-uSigmaT * t) * dt;
+#endif
+        }
+    }
+    float fraction = uLightCount > 0 ? litSamples / float(uLightCount * uSamples) : 0.0;
+    imageStore(uAirlight, texel, vec4(sum, 1.0));
+    imageStore(uLitFraction, texel, vec4(fraction));
+}

@@ -1,0 +1,48 @@
+#version 450 core
+// Surface pass: per pixel, the Euclidean eye distance and the unattenuated surface radiance of the
+// definition: L_e on the emitting side of an emitter + albedo / pi * sum_lights E * max(0, n.l) * V,
+// n the interpolated normal flipped toward the eye. Surfaces beyond uZfar count as misses (sky).
+#include "common/shadow_map.glsl"
+#include "render/materials.glsl"
+
+uniform float uZfar;
+uniform float uSigmaT;
+uniform int uLightCount;
+
+in vec3 vPosition;  // eye-relative: the eye is at the origin
+in vec3 vNormal;
+in vec2 vUv;
+flat in uint vMaterial;
+
+layout(location = 0) out float oDistance;
+layout(location = 1) out vec4 oRadiance;
+
+const float kPi = 3.14159265358979;
+
+void main() {
+    float dist = length(vPosition);
+    if (dist > uZfar) discard;
+    vec3 toEye = -vPosition / dist;
+    GpuMaterial m = gMaterials[vMaterial];
+
+    vec3 n = normalize(vNormal);
+    // Emitters' vertex normals are their light's normal, so this is "sees the emitting side".
+    bool front = dot(n, toEye) >= 0.0;
+    if (!front) n = -n;
+
+    vec3 radiance = front ? materialEmission(m, vUv) : vec3(0.0);
+    vec3 albedo = materialAlbedo(m, vUv);
+    vec3 sum = vec3(0.0);
+    for (int i = 0; i < uLightCount; ++i) {
+        GpuLight L = gLights[i];
+        float cosSurface = dot(n, directionToLight(L, vPosition));
+        if (cosSurface <= 0.0) continue;
+        vec3 E = unshadowedIrradiance(L, vPosition, uSigmaT);
+        if (E == vec3(0.0)) continue;
+        sum += E * cosSurface * shadowVisibility(L, vPosition);
+    }
+    radiance += albedo / kPi * sum;
+
+    oDistance = dist;
+    oRadiance = vec4(radiance, 1.0);
+}

@@ -1,0 +1,354 @@
+// End-to-end tests of the airlight command line: exit codes, one-line errors, output files.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "core/image_io.h"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct RunResult {
+    int exitCode = -1;
+    std::string out;
+    std::string err;
+};
+
+std::string readFile(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+class CliTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+        mDir = fs::temp_directory_path() / ("airlight_cli_" + std::string(info->name()) + "_" +
+                                            std::to_string(::getpid()));
+        fs::remove_all(mDir);
+        fs::create_directories(mDir);
+    }
+    void TearDown() override { fs::remove_all(mDir); }
+
+    RunResult run(const std::string& args) {
+        const fs::path out = mDir / "stdout.txt", err = mDir / "stderr.txt";
+        const std::string cmd = std::string(AIRLIGHT_EXE) + " " + args + " >" + out.string() + " 2>" + err.string();
+        const int status = std::system(cmd.c_str());
+        RunResult r;
+        r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+        r.out = readFile(out);
+        r.err = readFile(err);
+        return r;
+    }
+
+    fs::path path(const std::string& name) const { return mDir / name; }
+
+    fs::path writeText(const std::string& name, const std::string& text) const {
+        const fs::path p = mDir / name;
+        std::ofstream(p) << text;
+        return p;
+    }
+
+    // Asserts a user error: exit code 2, exactly one line on stderr naming the problem, nothing on stdout.
+    void expectUserError(const RunResult& r, const std::string& mentions) {
+        EXPECT_EQ(r.exitCode, 2) << r.err;
+        EXPECT_EQ(r.err.rfind("airlight: error: ", 0), 0u) << r.err;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+        EXPECT_NE(r.err.find(mentions), std::string::npos) << "expected '" << mentions << "' in: " << r.err;
+    }
+
+    fs::path mDir;
+};
+
+// A small valid glTF (one triangle pair floor + a spot light + camera), with pieces replaceable for the
+// bad-input cases. The buffer holds 4 vec3 positions (48 bytes) and 6 uint16 indices (12 bytes).
+std::string base64(const std::vector<unsigned char>& bytes) {
+    static const char* k = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string out;
+    for (std::size_t i = 0; i < bytes.size(); i += 3) {
+        const unsigned v = unsigned(bytes[i]) << 16 | (i + 1 < bytes.size() ? unsigned(bytes[i + 1]) << 8 : 0u) |
+                           (i + 2 < bytes.size() ? unsigned(bytes[i + 2]) : 0u);
+        out += k[(v >> 18) & 63];
+        out += k[(v >> 12) & 63];
+        out += i + 1 < bytes.size() ? k[(v >> 6) & 63] : '=';
+        out += i + 2 < bytes.size() ? k[v & 63] : '=';
+    }
+    return out;
+}
+
+struct GltfParts {
+    std::vector<float> positions{-1, 0, -1, 1, 0, -1, 1, 0, 1, -1, 0, 1};
+    std::vector<unsigned short> indices{0, 2, 1, 0, 3, 2};
+    std::string medium = R"({"sigma_s": 0.2, "sigma_a": 0.05, "g": 0.3})";
+    bool camera = true;
+    bool light = true;
+    int indexCount = 6;
+    int mode = 4;          // 4 = TRIANGLES, 0 = POINTS
+    int bufferBytes = -1;  // -1: the true length
+    std::string uri;       // empty: embedded data URI
+};
+
+std::string makeGltf(const GltfParts& p) {
+    std::vector<unsigned char> bytes(p.positions.size() * 4 + p.indices.size() * 2);
+    std::memcpy(bytes.data(), p.positions.data(), p.positions.size() * 4);
+    std::memcpy(bytes.data() + p.positions.size() * 4, p.indices.data(), p.indices.size() * 2);
+    const int byteLength = p.bufferBytes >= 0 ? p.bufferBytes : int(bytes.size());
+    const std::string uri = p.uri.empty() ? "data:application/octet-stream;base64," + base64(bytes) : p.uri;
+    std::ostringstream s;
+    s << R"({"asset": {"version": "2.0"},)";
+    if (p.light) s << R"("extensionsUsed": ["KHR_lights_punctual"], "extensions": {"KHR_lights_punctual": {"lights": [{"type": "spot", "intensity": 20, "spot": {"outerConeAngle": 0.6}}]}},)";
+    s << R"("scene": 0, "scenes": [{"nodes": [0)" << (p.camera ? ", 1" : "") << (p.light ? ", 2" : "")
+      << R"(], "extras": {"medium": )" << p.medium << R"(}}],)";
+    s << R"("nodes": [{"mesh": 0}, {"camera": 0, "translation": [0, 1.5, 4]},)"
+      << R"({"translation": [0, 3, 0], "rotation": [-0.7071068, 0, 0, 0.7071068], "extensions": {"KHR_lights_punctual": {"light": 0}}}],)";
+    s << R"("cameras": [{"type": "perspective", "perspective": {"yfov": 0.9, "znear": 0.05, "zfar": 50}}],)";
+    s << R"("meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1, "mode": )" << p.mode << "}]}],";
+    s << R"("accessors": [{"bufferView": 0, "componentType": 5126, "count": )" << p.positions.size() / 3
+      << R"(, "type": "VEC3", "min": [-1, 0, -1], "max": [1, 0, 1]},)"
+      << R"({"bufferView": 1, "componentType": 5123, "count": )" << p.indexCount << R"(, "type": "SCALAR"}],)";
+    s << R"("bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": )" << p.positions.size() * 4 << "},"
+      << R"({"buffer": 0, "byteOffset": )" << p.positions.size() * 4 << R"(, "byteLength": )" << p.indices.size() * 2
+      << "}],";
+    s << R"("buffers": [{"byteLength": )" << byteLength << R"(, "uri": ")" << uri << R"("}]})";
+    return s.str();
+}
+
+bool allFinite(const viz::Image& image) {
+    for (float v : image.pixels)
+        if (!std::isfinite(v)) return false;
+    return true;
+}
+
+}  // namespace
+
+TEST_F(CliTest, HelpOnEveryCommand) {
+    for (const std::string cmd : {"--help", "render --help", "list --help", "plan --help", "export-scene --help",
+                                  "gui --help"}) {
+        const RunResult r = run(cmd);
+        EXPECT_EQ(r.exitCode, 0) << cmd;
+        EXPECT_NE(r.out.find("usage: airlight"), std::string::npos) << cmd << ": " << r.out;
+    }
+}
+
+TEST_F(CliTest, ListsScenesTechniquesStagesAndParams) {
+    RunResult r = run("list scenes");
+    ASSERT_EQ(r.exitCode, 0);
+    for (const char* s : {"colonnade", "grate", "forest", "terrain", "stained-glass", "tv-room"})
+        EXPECT_NE(r.out.find(s), std::string::npos) << s;
+    r = run("list techniques");
+    ASSERT_EQ(r.exitCode, 0);
+    EXPECT_NE(r.out.find("reference"), std::string::npos);
+    EXPECT_NE(r.out.find("raymarch"), std::string::npos);
+    r = run("list params raymarch");
+    ASSERT_EQ(r.exitCode, 0);
+    for (const char* p : {"samples", "jitter", "shadow_map"}) EXPECT_NE(r.out.find(p), std::string::npos) << p;
+    r = run("list stages raymarch");
+    ASSERT_EQ(r.exitCode, 0);
+    EXPECT_NE(r.out.find("raymarch.march"), std::string::npos);
+}
+
+TEST_F(CliTest, RenderWritesFiniteExrOfTheRightSize) {
+    for (const std::string technique : {"raymarch", "reference"}) {
+        for (const std::string layer : {"final", "airlight"}) {
+            const fs::path out = path(technique + "_" + layer + ".exr");
+            const RunResult r = run("render --scene grate --technique " + technique + " --size 40x30 --layer " + layer +
+                                    " --out " + out.string() + " --set " +
+                                    (technique == "raymarch" ? "samples=32" : "transition_samples=64"));
+            ASSERT_EQ(r.exitCode, 0) << r.err;
+            const viz::Image image = viz::readImage(out.string());
+            EXPECT_EQ(image.width, 40);
+            EXPECT_EQ(image.height, 30);
+            EXPECT_EQ(image.channels, 3);
+            EXPECT_TRUE(allFinite(image));
+            double sum = 0.0;
+            for (float v : image.pixels) sum += v;
+            EXPECT_GT(sum, 0.0) << technique << " " << layer << " is black";
+        }
+    }
+}
+
+TEST_F(CliTest, RenderWritesPngAndIntermediates) {
+    const RunResult r = run("render --scene grate --technique raymarch --size 32x24 --layer raymarch.distance --out " +
+                            path("d.png").string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_TRUE(fs::exists(path("d.png")));
+    const RunResult stop = run("render --scene grate --technique raymarch --size 32x24 --stop-after "
+                               "raymarch.surface --layer airlight --out " + path("a.png").string());
+    EXPECT_EQ(stop.exitCode, 2) << "L_air does not exist yet after the surface stage";
+    EXPECT_FALSE(fs::exists(path("a.png")));
+}
+
+TEST_F(CliTest, PlanSaysWhatIsSkippedAndWhy) {
+    const RunResult r = run("plan --scene grate --technique raymarch");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("off"), std::string::npos);
+    EXPECT_NE(r.out.find("no area light"), std::string::npos) << r.out;
+}
+
+// Every built-in scene with every registered technique: finite, non-negative, not black.
+TEST_F(CliTest, EveryBuiltinSceneRendersWithEveryTechnique) {
+    const RunResult scenes = run("list scenes");
+    const RunResult techniques = run("list techniques");
+    std::vector<std::string> sceneNames, techniqueNames;
+    std::istringstream s(scenes.out), t(techniques.out);
+    for (std::string line; std::getline(s, line);) sceneNames.push_back(line.substr(0, line.find(' ')));
+    for (std::string line; std::getline(t, line);) techniqueNames.push_back(line.substr(0, line.find(' ')));
+    ASSERT_GE(sceneNames.size(), 6u);
+    ASSERT_GE(techniqueNames.size(), 2u);
+    for (const auto& scene : sceneNames)
+        for (const auto& technique : techniqueNames) {
+            const fs::path out = path(scene + "_" + technique + ".exr");
+            const RunResult r = run("render --scene " + scene + " --technique " + technique +
+                                    " --size 48x36 --layer airlight --quiet --out " + out.string());
+            ASSERT_EQ(r.exitCode, 0) << scene << " / " << technique << ": " << r.err;
+            const viz::Image image = viz::readImage(out.string());
+            EXPECT_TRUE(allFinite(image)) << scene << " / " << technique;
+            float lo = 0.0f, sum = 0.0f;
+            for (float v : image.pixels) lo = std::min(lo, v), sum += v;
+            EXPECT_GE(lo, 0.0f) << scene << " / " << technique;
+            EXPECT_GT(sum, 0.0f) << scene << " / " << technique << ": no airlight at all";
+        }
+}
+
+// export-scene writes glTF that loads back to the same image.
+TEST_F(CliTest, ExportSceneRoundTripRendersTheSameImage) {
+    const RunResult scenes = run("list scenes");
+    std::istringstream s(scenes.out);
+    for (std::string line; std::getline(s, line);) {
+        const std::string scene = line.substr(0, line.find(' '));
+        for (const std::string ext : {".gltf", ".glb"}) {
+            const fs::path file = path(scene + ext);
+            const RunResult e = run("export-scene " + scene + " " + file.string());
+            ASSERT_EQ(e.exitCode, 0) << e.err;
+            const fs::path a = path(scene + "_a.exr"), b = path(scene + "_b.exr");
+            ASSERT_EQ(run("render --scene " + scene + " --technique raymarch --size 40x30 --quiet --out " +
+                          a.string()).exitCode, 0);
+            const RunResult rb = run("render --scene " + file.string() + " --technique raymarch --size 40x30 --quiet --out " +
+                                     b.string());
+            ASSERT_EQ(rb.exitCode, 0) << rb.err;
+            const viz::Image ia = viz::readImage(a.string()), ib = viz::readImage(b.string());
+            ASSERT_EQ(ia.pixels.size(), ib.pixels.size());
+            double maxDiff = 0.0, maxValue = 0.0;
+            for (std::size_t i = 0; i < ia.pixels.size(); ++i) {
+                maxDiff = std::max(maxDiff, double(std::fabs(ia.pixels[i] - ib.pixels[i])));
+                maxValue = std::max(maxValue, double(std::fabs(ia.pixels[i])));
+            }
+            EXPECT_LE(maxDiff, 1e-5 * maxValue) << scene << ext;
+        }
+    }
+}
+
+TEST_F(CliTest, ExportSceneNeverLeavesAPartialFile) {
+    const RunResult r = run("export-scene grate " + (mDir / "no_such_dir" / "x.gltf").string());
+    expectUserError(r, "no_such_dir");
+    EXPECT_FALSE(fs::exists(mDir / "no_such_dir"));
+}
+
+TEST_F(CliTest, GltfFileLoadsAndRenders) {
+    const fs::path scene = writeText("ok.gltf", makeGltf({}));
+    const RunResult r = run("render --scene " + scene.string() + " --technique raymarch --size 32x24 --out " +
+                            path("ok.exr").string());
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_TRUE(fs::exists(path("ok.exr")));
+}
+
+TEST_F(CliTest, NoCameraFramesTheSceneAndSaysSo) {
+    GltfParts p;
+    p.camera = false;
+    const fs::path scene = writeText("nocam.gltf", makeGltf(p));
+    const RunResult r = run("render --scene " + scene.string() + " --technique raymarch --size 32x24 --out " +
+                            path("nocam.exr").string());
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.err.find("no camera"), std::string::npos) << r.err;
+    EXPECT_TRUE(fs::exists(path("nocam.exr")));
+}
+
+// Each bad input: one clear line, exit code 2, no output file.
+TEST_F(CliTest, BadInputIsAOneLineErrorWithExitCode2AndNoOutput) {
+    const std::string out = path("never.exr").string();
+    const std::string render = "render --technique raymarch --size 32x24 --out " + out + " --scene ";
+    struct Case {
+        std::string name, args, mentions;
+    };
+    std::vector<Case> cases;
+    cases.push_back({"missing file", render + path("absent.gltf").string(), "absent.gltf"});
+    cases.push_back({"malformed JSON", render + writeText("bad.gltf", "{\"asset\": {\"version\": ").string(),
+                     "bad.gltf"});
+    {
+        GltfParts p;
+        p.uri = "missing.bin";
+        cases.push_back({"missing buffer", render + writeText("nobuf.gltf", makeGltf(p)).string(), "missing.bin"});
+    }
+    {
+        GltfParts p;
+        p.bufferBytes = 100;  // longer than the data: the buffer is short
+        cases.push_back({"short buffer", render + writeText("short.gltf", makeGltf(p)).string(), "buffer"});
+    }
+    {
+        GltfParts p;
+        p.indexCount = 600;  // beyond its buffer view
+        cases.push_back({"accessor out of range", render + writeText("acc.gltf", makeGltf(p)).string(), "accessor"});
+    }
+    {
+        GltfParts p;
+        p.positions[4] = std::nanf("");
+        cases.push_back({"NaN vertex", render + writeText("nan.gltf", makeGltf(p)).string(), "NaN"});
+    }
+    {
+        GltfParts p;
+        p.mode = 0;  // points only
+        cases.push_back({"no triangles", render + writeText("notri.gltf", makeGltf(p)).string(), "triangle"});
+    }
+    {
+        GltfParts p;
+        p.light = false;
+        cases.push_back({"no light", render + writeText("nolight.gltf", makeGltf(p)).string(), "light"});
+    }
+    {
+        GltfParts p;
+        p.medium = R"({"sigma_s": -0.1, "sigma_a": 0.0, "g": 0.0})";
+        cases.push_back({"negative sigma", render + writeText("negsig.gltf", makeGltf(p)).string(), "sigma_s"});
+    }
+    {
+        GltfParts p;
+        p.medium = R"({"sigma_s": 0.1, "sigma_a": 0.0, "g": 1.0})";
+        cases.push_back({"|g| >= 1", render + writeText("g1.gltf", makeGltf(p)).string(), "g"});
+    }
+    cases.push_back({"size 0x0", "render --scene grate --technique raymarch --size 0x0 --out " + out, "0x0"});
+    cases.push_back({"size too large", "render --scene grate --technique raymarch --size 16385x10 --out " + out,
+                     "16385x10"});
+    cases.push_back({"unknown technique", "render --scene grate --technique nope --size 8x8 --out " + out, "nope"});
+    cases.push_back({"unknown stage", "render --scene grate --technique raymarch --stop-after nope.stage --size 8x8 --out " +
+                                          out, "nope.stage"});
+    cases.push_back({"unknown parameter", "render --scene grate --technique raymarch --set bogus=1 --size 8x8 --out " +
+                                              out, "bogus"});
+    cases.push_back({"parameter out of range", "render --scene grate --technique raymarch --set samples=0 --size 8x8 --out " +
+                                                   out, "samples"});
+    cases.push_back({"unknown scene", "render --scene nowhere --technique raymarch --size 8x8 --out " + out, "nowhere"});
+    cases.push_back({"bad output type", "render --scene grate --technique raymarch --size 8x8 --out " +
+                                            path("x.jpg").string(), "x.jpg"});
+    cases.push_back({"unknown layer", "render --scene grate --technique raymarch --size 8x8 --layer nope.layer --out " +
+                                          out, "nope.layer"});
+    for (const Case& c : cases) {
+        SCOPED_TRACE(c.name);
+        const RunResult r = run(c.args);
+        expectUserError(r, c.mentions);
+        EXPECT_FALSE(fs::exists(out)) << "partial output left behind";
+        for (const auto& entry : fs::directory_iterator(mDir))
+            EXPECT_EQ(entry.path().filename().string().find(".tmp"), std::string::npos) << entry.path();
+    }
+}

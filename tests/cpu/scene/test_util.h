@@ -1,0 +1,44 @@
+// Helpers shared by the scene tests: a fresh temporary folder per test, and file writing.
+#pragma once
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "core/error.h"
+
+namespace viz::scene::test {
+
+inline std::filesystem::path freshTempDir(const std::string& tag) {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    std::filesystem::path dir = std::filesystem::temp_directory_path() /
+                                ("airlight_scene_" + tag + "_" + info->test_suite_name() + "_" + info->name());
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    return dir;
+}
+
+inline void writeText(const std::filesystem::path& path, const std::string& text) {
+    std::ofstream(path, std::ios::binary) << text;
+}
+
+inline std::string dataPath(const std::string& name) { return std::string(VIZ_TEST_DATA_DIR) + "/scene/" + name; }
+
+// Runs f, expects an InputError whose message contains 'part', and returns the message.
+template <typename F>
+std::string expectInputError(F&& f, const std::string& part) {
+    try {
+        f();
+    } catch (const InputError& e) {
+        const std::string msg = e.what();
+        EXPECT_NE(msg.find(part), std::string::npos) << "message: " << msg;
+        EXPECT_EQ(msg.find('\n'), std::string::npos) << "message is not one line: " << msg;
+        return msg;
+    }
+    ADD_FAILURE() << "no InputError (expected one mentioning '" << part << "')";
+    return {};
+}
+
+}  // namespace viz::scene::test

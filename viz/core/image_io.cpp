@@ -1,0 +1,112 @@
+#include "core/image_io.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <filesystem>
+#include <random>
+#include <vector>
+
+#include "core/error.h"
+
+namespace viz {
+
+std::string extensionOf(const std::string& path) {
+    std::string ext = std::filesystem::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    return ext;
+}
+
+static std::uint8_t encodeSrgb8(float linear) {
+    if (!(linear > 0.0f)) return 0;  // also NaN
+    const float c = std::min(linear, 1.0f);
+    const float s = c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
+    return static_cast<std::uint8_t>(std::lround(std::clamp(s, 0.0f, 1.0f) * 255.0f));
+}
+
+static std::string temporaryPathFor(const std::filesystem::path& target) {
+    std::random_device rd;
+    const std::filesystem::path dir = target.has_parent_path() ? target.parent_path() : ".";
+    return (dir / ("." + target.filename().string() + ".tmp" + std::to_string(rd()) + target.extension().string()))
+        .string();
+}
+
+void writeImage(const Image& image, const std::string& path, float exposure) {
+    const std::string ext = extensionOf(path);
+    if (ext != ".exr" && ext != ".png")
+        throw InputError("cannot write '" + path + "': the output must end in .exr or .png");
+    VIZ_CHECK(!image.empty() && image.channels >= 1 && image.channels <= 4, "writeImage: empty image");
+    const std::filesystem::path target(path);
+    if (target.has_parent_path() && !std::filesystem::is_directory(target.parent_path()))
+        throw InputError("cannot write '" + path + "': folder '" + target.parent_path().string() + "' does not exist");
+
+    const std::string tmp = temporaryPathFor(target);
+    auto out = OIIO::ImageOutput::create(tmp);
+    if (!out) throw InputError("cannot write '" + path + "': " + OIIO::geterror());
+    bool ok = false;
+    if (ext == ".exr") {
+        OIIO::ImageSpec spec(image.width, image.height, image.channels, OIIO::TypeDesc::FLOAT);
+        spec.attribute("compression", "zip");
+        ok = out->open(tmp, spec) && out->write_image(OIIO::TypeDesc::FLOAT, image.pixels.data());
+    } else {
+        const int channels = image.channels == 2 ? 1 : image.channels;
+        std::vector<std::uint8_t> bytes(static_cast<std::size_t>(image.width) * std::size_t(image.height) *
+                                        std::size_t(channels));
+        for (int y = 0; y < image.height; ++y)
+            for (int x = 0; x < image.width; ++x)
+                for (int c = 0; c < channels; ++c) {
+                    const float v = image.at(x, y, c);
+                    bytes[(std::size_t(y) * std::size_t(image.width) + std::size_t(x)) * std::size_t(channels) +
+                          std::size_t(c)] = c == 3 ? static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f))
+                                                   : encodeSrgb8(v * exposure);
+                }
+        OIIO::ImageSpec spec(image.width, image.height, channels, OIIO::TypeDesc::UINT8);
+        ok = out->open(tmp, spec) && out->write_image(OIIO::TypeDesc::UINT8, bytes.data());
+    }
+    const std::string err = out->geterror();
+    ok = out->close() && ok;
+    out.reset();
+    std::error_code ec;
+    if (ok) std::filesystem::rename(tmp, target, ec);
+    if (!ok || ec) {
+        std::filesystem::remove(tmp, ec);
+        throw InputError("cannot write '" + path + "': " + (err.empty() ? std::string("write failed") : err));
+    }
+}
+
+Image toDisplay(const Image& image, float lo, float hi) {
+    Image out(image.width, image.height, 3);
+    const float scale = hi > lo ? 1.0f / (hi - lo) : 1.0f;
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) {
+            if (image.channels >= 3) {
+                for (int c = 0; c < 3; ++c) out.at(x, y, c) = (image.at(x, y, c) - lo) * scale;
+                continue;
+            }
+            const float v = image.at(x, y, 0);
+            if (!std::isfinite(v)) {
+                out.at(x, y, 0) = 1.0f, out.at(x, y, 1) = 0.0f, out.at(x, y, 2) = 1.0f;
+                continue;
+            }
+            const float g = std::clamp((v - lo) * scale, 0.0f, 1.0f);
+            // Display values are already in [0,1] perceptual units: undo the sRGB encode of writeImage.
+            const float linear = g <= 0.04045f ? g / 12.92f : std::pow((g + 0.055f) / 1.055f, 2.4f);
+            for (int c = 0; c < 3; ++c) out.at(x, y, c) = linear;
+        }
+    return out;
+}
+
+Image readImage(const std::string& path) {
+    auto in = OIIO::ImageInput::open(path);
+    if (!in) throw InputError("cannot read image '" + path + "': " + OIIO::geterror());
+    const OIIO::ImageSpec& spec = in->spec();
+    Image image(spec.width, spec.height, spec.nchannels);
+    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, image.pixels.data()))
+        throw InputError("cannot read image '" + path + "': " + in->geterror());
+    return image;
+}
+
+}  // namespace viz

@@ -1,0 +1,25 @@
+// Writing images with OpenImageIO. Every write goes to a temporary file in the target folder and is
+// renamed into place, so a failed write never leaves a partial file.
+#pragma once
+
+#include <string>
+
+#include "core/image.h"
+
+namespace viz {
+
+// EXR: 32-bit float, linear, the image's channels (RGB for 3). PNG: 8-bit sRGB after `exposure`
+// (a scale on linear values) and clamping; one channel images are written grey. Throws InputError on an
+// unsupported extension or an unwritable path.
+void writeImage(const Image& image, const std::string& path, float exposure = 1.0f);
+
+// Scale a scalar image linearly from [lo, hi] to [0, 1] for viewing (NaN/Inf shown as magenta when the
+// result is RGB). Returns an RGB image.
+Image toDisplay(const Image& image, float lo, float hi);
+
+Image readImage(const std::string& path);
+
+// Lower-case extension with the dot, e.g. ".exr".
+std::string extensionOf(const std::string& path);
+
+}  // namespace viz

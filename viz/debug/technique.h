@@ -1,0 +1,107 @@
+// The interface every technique implements (reference, raymarch, slices, polyvol, minmax, vsv, ivsv).
+// A technique declares ordered stages; each stage publishes named intermediates. run() always starts
+// at stage 0 and stops after the requested stage, so stepping is re-running (see STYLE.md 1.3).
+#pragma once
+
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "core/image.h"
+#include "debug/timing.h"
+#include "scene/scene.h"
+
+namespace viz {
+
+// How an intermediate is best shown.
+enum class ViewKind { Color, Scalar, Signed, BitField, Mask, Depth, Mesh, Buffer };
+const char* viewKindName(ViewKind kind);
+
+struct ParamInfo {
+    std::string name;  // "samples", "jitter", "shadow_map", ...
+    std::string help;  // one line
+    double defaultValue = 0.0;
+    double minValue = 0.0;
+    double maxValue = 0.0;
+    bool integer = true;
+};
+
+struct StageInfo {
+    std::string id;                          // "raymarch.march": stable, used by lessons and tests
+    std::string label;                       // "Ray march"
+    std::string purpose;                     // one line
+    std::vector<std::string> params;         // names of the ParamInfo this stage reads
+    std::vector<std::string> intermediates;  // ids of what it publishes
+    int substeps = 1;
+};
+
+// A published intermediate: either a CPU image or a GL texture owned by the technique (valid until the
+// next run()). Meshes and buffers carry a GL name and a short description of their layout.
+struct Intermediate {
+    std::string id;       // "raymarch.shadow_map"
+    std::string label;    // "Shadow map"
+    std::string note;     // one-line explanation
+    std::string units;    // "scene units", "W/(m^2 sr)", ...
+    ViewKind kind = ViewKind::Scalar;
+    float rangeMin = 0.0f, rangeMax = 1.0f;  // suggested display range
+    std::shared_ptr<const Image> image;      // CPU storage, or
+    unsigned glTexture = 0;                  // GL texture name (GL_TEXTURE_2D, or a cube map/array: layers)
+    unsigned glTarget = 0;
+    glm::ivec3 extent{0};
+};
+
+using Settings = std::map<std::string, double>;
+
+// Which stages run for a scene and settings, and for each one left out, why.
+struct StagePlan {
+    std::string stage;
+    bool runs = true;
+    std::string why;  // for a skipped stage: the reason; for a running one: optional detail
+};
+struct FeaturePlan {
+    std::string feature;  // shader feature / code path, e.g. "SPOT_FALLOFF"
+    bool enabled = true;
+    std::string why;
+};
+struct Plan {
+    std::vector<StagePlan> stages;
+    std::vector<FeaturePlan> features;
+};
+
+struct FrameInput {
+    const scene::Scene* scene = nullptr;
+    int width = 0;
+    int height = 0;
+    Settings settings;          // already validated and completed with defaults
+    int stopAfterStage = -1;    // index into stages(); -1 = run everything
+};
+
+struct FrameOutput {
+    Image airlight;             // RGB float, L_air alone (empty if the run stopped before it exists)
+    Image final;                // RGB float, surface * exp(-sigma_t d) + L_air
+    std::vector<Intermediate> intermediates;
+    Timing timing;
+    Plan plan;
+    int lastStageRun = -1;
+};
+
+class Technique {
+public:
+    virtual ~Technique() = default;
+    virtual std::string id() const = 0;
+    virtual std::string description() const = 0;        // one line
+    virtual const std::vector<StageInfo>& stages() const = 0;
+    virtual const std::vector<ParamInfo>& params() const = 0;
+    virtual bool needsGl() const = 0;                   // GPU techniques need a current GL 4.5 context
+    virtual Plan plan(const scene::Scene& scene, const Settings& settings) const = 0;
+    virtual FrameOutput run(const FrameInput& input) = 0;
+};
+
+// Fills in defaults and rejects unknown names and out-of-range values with an InputError.
+Settings completeSettings(const Technique& technique, const Settings& given);
+
+}  // namespace viz

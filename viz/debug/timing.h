@@ -1,0 +1,38 @@
+// Per-stage timing records. On llvmpipe GL timer queries do not measure the work, so GPU stages there
+// are bracketed by glFinish and a steady clock; the record says which clock was used.
+#pragma once
+
+#include <chrono>
+#include <string>
+#include <vector>
+
+namespace viz {
+
+struct StageTiming {
+    std::string stage;
+    double milliseconds = 0.0;
+};
+
+struct Timing {
+    std::string clock;  // "steady_clock" (CPU), "glFinish+steady_clock", "GL_TIME_ELAPSED"
+    std::vector<StageTiming> stages;
+    double totalMilliseconds() const {
+        double t = 0.0;
+        for (const auto& s : stages) t += s.milliseconds;
+        return t;
+    }
+};
+
+// Times CPU work with a steady clock.
+class CpuStopwatch {
+public:
+    CpuStopwatch() : mStart(std::chrono::steady_clock::now()) {}
+    double elapsedMilliseconds() const {
+        return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - mStart).count();
+    }
+
+private:
+    std::chrono::steady_clock::time_point mStart;
+};
+
+}  // namespace viz

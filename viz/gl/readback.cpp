@@ -1,0 +1,92 @@
+#include "gl/readback.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
+#include "core/error.h"
+
+namespace viz::gl {
+
+namespace {
+
+GLint levelParameter(GLuint texture, int level, GLenum pname) {
+    GLint v = 0;
+    glGetTextureLevelParameteriv(texture, level, pname, &v);
+    return v;
+}
+
+}  // namespace
+
+Image readTexture(GLuint texture, int level, int layer) {
+    VIZ_CHECK(texture != 0 && glIsTexture(texture), "readTexture: not a texture name");
+    GLint target = 0;
+    glGetTextureParameteriv(texture, GL_TEXTURE_TARGET, &target);
+    const int width = levelParameter(texture, level, GL_TEXTURE_WIDTH);
+    const int height = levelParameter(texture, level, GL_TEXTURE_HEIGHT);
+    const int depth = levelParameter(texture, level, GL_TEXTURE_DEPTH);
+    const int z = layer < 0 ? 0 : layer;
+    const int layerCount = target == GL_TEXTURE_CUBE_MAP ? 6 : depth;
+    VIZ_CHECK(z < std::max(layerCount, 1), "readTexture: layer out of range");
+
+    // The format decides channels and how to read: per-channel sizes and component types.
+    const bool isDepth = levelParameter(texture, level, GL_TEXTURE_DEPTH_SIZE) > 0;
+    int channels = 1;
+    GLenum componentType = GL_FLOAT;
+    if (isDepth) {
+        componentType = static_cast<GLenum>(levelParameter(texture, level, GL_TEXTURE_DEPTH_TYPE));
+    } else {
+        const bool g = levelParameter(texture, level, GL_TEXTURE_GREEN_SIZE) > 0;
+        const bool b = levelParameter(texture, level, GL_TEXTURE_BLUE_SIZE) > 0;
+        const bool a = levelParameter(texture, level, GL_TEXTURE_ALPHA_SIZE) > 0;
+        channels = a ? 4 : b ? 3 : g ? 2 : 1;
+        componentType = static_cast<GLenum>(levelParameter(texture, level, GL_TEXTURE_RED_TYPE));
+    }
+    const bool isInteger =
+        !isDepth && (componentType == GL_INT || componentType == GL_UNSIGNED_INT);
+    static const GLenum kFloatFormats[] = {GL_RED, GL_RG, GL_RGB, GL_RGBA};
+    static const GLenum kIntFormats[] = {GL_RED_INTEGER, GL_RG_INTEGER, GL_RGB_INTEGER,
+                                         GL_RGBA_INTEGER};
+    const GLenum pixelFormat = isDepth     ? GL_DEPTH_COMPONENT
+                               : isInteger ? kIntFormats[channels - 1]
+                                           : kFloatFormats[channels - 1];
+
+    const size_t count =
+        static_cast<size_t>(width) * static_cast<size_t>(height) * static_cast<size_t>(channels);
+    // Rows are tightly packed in our buffers; the default pack alignment of 4 would pad odd widths.
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    std::vector<float> raw(count);
+    const GLsizei bytes = static_cast<GLsizei>(count * sizeof(float));
+    if (isInteger) {
+        // Signed and unsigned 32-bit values are read as their own type, then converted to float.
+        const GLenum type = componentType == GL_INT ? GL_INT : GL_UNSIGNED_INT;
+        std::vector<uint32_t> ints(count);
+        glGetTextureSubImage(texture, level, 0, 0, z, width, height, 1, pixelFormat, type, bytes,
+                             ints.data());
+        for (size_t i = 0; i < count; ++i) {
+            raw[i] = type == GL_INT ? static_cast<float>(static_cast<int32_t>(ints[i]))
+                                    : static_cast<float>(ints[i]);
+        }
+    } else {
+        glGetTextureSubImage(texture, level, 0, 0, z, width, height, 1, pixelFormat, GL_FLOAT,
+                             bytes, raw.data());
+    }
+
+    // GL row 0 is the bottom; viz::Image row 0 is the top.
+    Image image(width, height, channels);
+    const size_t rowFloats = static_cast<size_t>(width) * static_cast<size_t>(channels);
+    for (int y = 0; y < height; ++y) {
+        const size_t src = static_cast<size_t>(height - 1 - y) * rowFloats;
+        std::copy(
+            raw.begin() + static_cast<std::ptrdiff_t>(src),
+            raw.begin() + static_cast<std::ptrdiff_t>(src + rowFloats),
+            image.pixels.begin() + static_cast<std::ptrdiff_t>(static_cast<size_t>(y) * rowFloats));
+    }
+    return image;
+}
+
+Image readTexture(const Texture& texture, int level, int layer) {
+    return readTexture(texture.id(), level, layer);
+}
+
+}  // namespace viz::gl

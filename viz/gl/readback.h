@@ -1,0 +1,17 @@
+// Reading textures back into viz::Image (float, row 0 at the top: GL's row 0 is the bottom, so rows
+// are flipped). The channel count follows the format: R -> 1, RG -> 2, RGB -> 3, RGBA -> 4, depth
+// -> 1. Integer formats (R32UI, ...) are converted to float values.
+#pragma once
+
+#include <epoxy/gl.h>
+
+#include "core/image.h"
+#include "gl/texture.h"
+
+namespace viz::gl {
+
+// layer: the array layer, cube face (0..5 = +X,-X,+Y,-Y,+Z,-Z) or 3D slice; -1 means layer 0.
+Image readTexture(GLuint texture, int level = 0, int layer = -1);
+Image readTexture(const Texture& texture, int level = 0, int layer = -1);
+
+}  // namespace viz::gl

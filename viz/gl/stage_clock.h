@@ -1,0 +1,42 @@
+// gl::StageClock: wall time of one GPU stage. On Mesa llvmpipe/softpipe GL timer queries do not
+// measure the rasterization work (it runs in worker threads the query does not see), so the stage
+// is bracketed by glFinish and std::chrono::steady_clock ("glFinish+steady_clock"); on other
+// drivers a GL_TIME_ELAPSED query is used ("GL_TIME_ELAPSED"). The method is chosen when the clock
+// is created (needs a current context) from the renderer string.
+#pragma once
+
+#include <epoxy/gl.h>
+
+#include <chrono>
+#include <string>
+
+#include "gl/handle.h"
+
+namespace viz::gl {
+
+enum class ClockMethod { FinishSteadyClock, TimeElapsedQuery };
+
+class StageClock {
+public:
+    StageClock();                             // method chosen from the current renderer
+    explicit StageClock(ClockMethod method);  // forced (benchmarks compare the two)
+
+    void begin();
+    // Ends the stage and returns its duration in milliseconds. Waits for the GPU (glFinish, or the
+    // query result).
+    double endMilliseconds();
+
+    ClockMethod clockMethod() const { return mMethod; }
+    // "glFinish+steady_clock" or "GL_TIME_ELAPSED" for the current context.
+    static std::string method();
+    static std::string methodName(ClockMethod method);
+    static ClockMethod methodForRenderer(const std::string& renderer);
+
+private:
+    ClockMethod mMethod;
+    Handle<QueryTraits> mQuery;
+    std::chrono::steady_clock::time_point mStart;
+    bool mRunning = false;
+};
+
+}  // namespace viz::gl

@@ -1,0 +1,60 @@
+// The lights of a scene on the GPU: an std430 array of GpuLight (shaders/common/host_device.glsl) at
+// kBindingLights and the spot cookies in one GL_TEXTURE_2D_ARRAY (GL_RGBA8 holding sRGB bytes, decoded in the
+// shader: see gpu_scene.h) at kUnitCookies.
+// Area lights become areaSamples x areaSamples virtual point lights (VPLs) at Gauss-Legendre nodes of
+// the rectangle, each with weight L_e(uv) * dA and a cosine emission lobe. Positions are eye-relative
+// (computed in double). Shadow layers and matrices are assigned here too, so ShadowMaps only renders.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "gl/buffer.h"
+#include "gl/texture.h"
+#include "render/host_device.h"
+#include "scene/scene.h"
+
+namespace viz::render {
+
+// Gauss-Legendre nodes and weights on [-1, 1] (weights sum to 2), n >= 1.
+struct GaussLegendre {
+    std::vector<double> nodes;
+    std::vector<double> weights;
+};
+GaussLegendre gaussLegendre(int n);
+
+// How many shadow maps of each kind the lights use (layers of ShadowMaps' textures).
+struct ShadowLayout {
+    int maps2D = 0;     // spot and directional, one layer each
+    int cubes = 0;      // point lights, one cube each
+    int vplCubes = 0;   // VPLs, one cube each
+};
+
+class GpuLights {
+public:
+    // areaSamples >= 1 nodes per axis for each area light. Throws InputError for areaSamples < 1 and
+    // when the lights (VPLs included) exceed hd::kMaxGpuLights.
+    GpuLights(const scene::Scene& scene, glm::dvec3 eye, int areaSamples);
+
+    // Binds the light buffer as SSBO at kBindingLights and as uniform block at kBindingLightsUniform
+    // (what common/lights.glsl reads), and the cookie array at kUnitCookies.
+    void bind() const;
+    int count() const { return static_cast<int>(mLights.size()); }
+    const std::vector<GpuLightCpu>& lights() const { return mLights; }
+    const ShadowLayout& shadowLayout() const { return mLayout; }
+    const glm::dvec3& eye() const { return mEye; }
+    const gl::Buffer& buffer() const { return mBuffer; }
+    // Cookie array (a 1x1 white layer when the scene has no cookie, so the sampler is always valid).
+    const gl::Texture& cookies() const { return mCookies; }
+
+private:
+    std::vector<GpuLightCpu> mLights;
+    ShadowLayout mLayout;
+    glm::dvec3 mEye{0.0};
+    gl::Buffer mBuffer;
+    gl::Texture mCookies;
+};
+
+}  // namespace viz::render

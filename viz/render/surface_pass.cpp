@@ -1,0 +1,64 @@
+#include "render/surface_pass.h"
+
+#include "core/error.h"
+#include "render/eye_space.h"
+
+namespace viz::render {
+
+SurfacePass::SurfacePass()
+    : mProgram(gl::Program::compile({.stages = {"render/scene.vert", "render/surface.frag"},
+                                     .label = "render.surface_program"})),
+      mFramebuffer(gl::Framebuffer::create("render.surface_fbo")) {}
+
+void SurfacePass::run(const GpuScene& gpuScene, const GpuLights& lights, const ShadowMaps& shadows,
+                      const scene::Scene& scene, int width, int height) {
+    VIZ_CHECK(width > 0 && height > 0, "surface pass needs a non-empty image");
+    if (width != mWidth || height != mHeight || !mDistance) {
+        mDistance = gl::Texture::create({.format = GL_R32F, .size = {width, height, 1}, .label = "render.distance"});
+        mRadiance = gl::Texture::create(
+            {.format = GL_RGBA32F, .size = {width, height, 1}, .label = "render.surface_radiance"});
+        mDepth = gl::Texture::create(
+            {.format = GL_DEPTH_COMPONENT32F, .size = {width, height, 1}, .label = "render.depth"});
+        for (auto* t : {&mDistance, &mRadiance}) t->setFilter(GL_NEAREST, GL_NEAREST);
+        mFramebuffer = gl::Framebuffer::create("render.surface_fbo");
+        mFramebuffer.attachColor(0, mDistance);
+        mFramebuffer.attachColor(1, mRadiance);
+        mFramebuffer.attachDepth(mDepth);
+        mFramebuffer.checkComplete();
+        mWidth = width;
+        mHeight = height;
+    }
+    const scene::Camera& camera = scene.camera;
+    // The eye of the lights' eye-relative space must be the camera, or positions would disagree.
+    VIZ_CHECK(lights.eye() == camera.position, "GpuLights were built for another eye position");
+    VIZ_CHECK(shadows.size() > 0, "ShadowMaps::build() must run before the surface pass");
+
+    lights.bind();
+    shadows.bind();
+    gpuScene.bindMaterials();
+    mProgram.use();
+    mProgram.set("uModel", eyeRelativeModel(camera.position));
+    mProgram.set("uViewProj", eyeRelativeViewProjection(camera, width, height));
+    mProgram.set("uZfar", float(camera.zfar));
+    mProgram.set("uSigmaT", float(scene.medium.sigma_t()));
+    mProgram.set("uLightCount", lights.count());
+
+    mFramebuffer.bind();
+    glViewport(0, 0, width, height);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_BLEND);
+    // Sky: distance zfar, radiance 0.
+    const float sky[4] = {float(camera.zfar), 0.0f, 0.0f, 0.0f};
+    const float black[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    const float far = 1.0f;
+    glClearNamedFramebufferfv(mFramebuffer.id(), GL_COLOR, 0, sky);
+    glClearNamedFramebufferfv(mFramebuffer.id(), GL_COLOR, 1, black);
+    glClearNamedFramebufferfv(mFramebuffer.id(), GL_DEPTH, 0, &far);
+    gpuScene.draw();
+    gl::Framebuffer::bindDefault();
+}
+
+}  // namespace viz::render

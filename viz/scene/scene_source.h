@@ -1,0 +1,24 @@
+// Where the app and the CLI get a scene from: a built-in name or a .gltf/.glb path.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+#include "scene/scene.h"
+
+namespace viz::scene {
+
+// A built-in scene name (builtin_scenes.h) or a path ending in .gltf or .glb; anything else throws
+// viz::InputError. The result has passed validateScene.
+Scene loadScene(const std::string& nameOrPath);
+
+// Stable 64-bit FNV-1a hash, as 16 hex digits, of everything that affects rendering: geometry,
+// materials, texture bytes, lights, camera and medium (not names or notes). Same value on every run.
+std::string sceneContentHash(const Scene& scene);
+
+// 64-bit FNV-1a of size bytes, continuing from 'hash' (the FNV offset basis to start).
+constexpr std::uint64_t kFnvOffsetBasis = 0xcbf29ce484222325ULL;
+std::uint64_t fnv1a64(const void* data, std::size_t size, std::uint64_t hash = kFnvOffsetBasis);
+
+}  // namespace viz::scene

@@ -1,0 +1,287 @@
+#include "techniques/raymarch/raymarch.h"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <string>
+
+#include "gl/program.h"
+#include "gl/readback.h"
+#include "gl/stage_clock.h"
+#include "gl/texture.h"
+#include "render/compose.h"
+#include "render/gpu_lights.h"
+#include "render/gpu_scene.h"
+#include "render/shadow_maps.h"
+#include "render/surface_pass.h"
+#include "scene/camera.h"
+
+namespace viz {
+namespace {
+
+// ---- ids (stable: lessons and tests use them) ----
+constexpr const char* kStageShadowMaps = "raymarch.shadow_maps";
+constexpr const char* kStageSurface = "raymarch.surface";
+constexpr const char* kStageMarch = "raymarch.march";
+constexpr const char* kStageCompose = "raymarch.compose";
+constexpr const char* kDistance = "raymarch.distance";
+constexpr const char* kSurface = "raymarch.surface";
+constexpr const char* kAirlight = "raymarch.airlight";
+constexpr const char* kLitFraction = "raymarch.lit_fraction";
+constexpr const char* kFinal = "raymarch.final";
+
+enum StageIndex { kShadowMapsIndex = 0, kSurfaceIndex = 1, kMarchIndex = 2, kComposeIndex = 3 };
+
+// VPL cube maps are many (area_samples^2 of them): cap their size to keep memory in check.
+constexpr int kMaxVplShadowSize = 256;
+
+bool anyLight(const scene::Scene& s, scene::LightType type) {
+    return std::any_of(s.lights.begin(), s.lights.end(), [&](const scene::Light& l) { return l.type == type; });
+}
+
+std::size_t triangleCount(const scene::Scene& s) {
+    std::size_t n = 0;
+    for (const auto& m : s.meshes) n += m.indices.size() / 3;
+    return n + s.meshes.size();
+}
+
+// RGBA readback -> RGB image (the technique outputs are RGB).
+Image dropAlpha(const Image& rgba) {
+    Image rgb(rgba.width, rgba.height, 3);
+    for (int y = 0; y < rgba.height; ++y)
+        for (int x = 0; x < rgba.width; ++x)
+            for (int c = 0; c < 3; ++c) rgb.at(x, y, c) = rgba.at(x, y, c);
+    return rgb;
+}
+
+Intermediate textureIntermediate(const std::string& id, const std::string& label, const std::string& note,
+                                 const std::string& units, ViewKind kind, float lo, float hi,
+                                 const gl::Texture& texture) {
+    Intermediate i;
+    i.id = id, i.label = label, i.note = note, i.units = units, i.kind = kind;
+    i.rangeMin = lo, i.rangeMax = hi;
+    i.glTexture = texture.id();
+    i.glTarget = texture.target();
+    i.extent = {texture.size().x, texture.size().y, texture.layers()};
+    return i;
+}
+
+class RaymarchTechnique final : public Technique {
+public:
+    RaymarchTechnique() {
+        mParams = {
+            {"samples", "samples per pixel and light along [0, d]", 64, 1, 65536, true},
+            {"jitter", "1: one stratified random offset per sample interval; 0: interval midpoints", 0, 0, 1, true},
+            {"exact", "1: integrate the unshadowed airlight exactly over each sample's interval", 0, 0, 1, true},
+            {"shadow_map", "shadow-map size in texels per side (2D maps and point-light cube faces)", 1024, 16,
+             8192, true},
+            {"area_samples", "virtual point lights per axis of each area light (Gauss-Legendre nodes)", 4, 1, 16,
+             true},
+            {"seed", "jitter seed", 1, 0, 1e9, true},
+        };
+        mStages = {
+            {kStageShadowMaps, "Shadow maps", "render every light's shadow map (linear distance)",
+             {"shadow_map", "area_samples"}, {"raymarch.shadow_map"}, 1},
+            {kStageSurface, "Camera view", "distance d to the first surface and the unattenuated surface radiance",
+             {}, {kDistance, kSurface}, 1},
+            {kStageMarch, "Ray march", "N shadow-map tests per ray and light, summed into L_air",
+             {"samples", "jitter", "exact", "seed"}, {kAirlight, kLitFraction}, 1},
+            {kStageCompose, "Compose", "final = surface * exp(-sigma_t d) + L_air", {}, {kFinal}, 1},
+        };
+    }
+
+    std::string id() const override { return "raymarch"; }
+    std::string description() const override {
+        return "brute-force ray marching through shadow maps (N samples per pixel)";
+    }
+    const std::vector<StageInfo>& stages() const override { return mStages; }
+    const std::vector<ParamInfo>& params() const override { return mParams; }
+    bool needsGl() const override { return true; }
+
+    Plan plan(const scene::Scene& scene, const Settings& settings) const override {
+        Plan p;
+        for (const StageInfo& s : mStages) p.stages.push_back({s.id, true, ""});
+        if (scene.medium.sigma_s == 0.0) {
+            p.stages[kMarchIndex].runs = false;
+            p.stages[kMarchIndex].why = "sigma_s = 0: the medium scatters nothing, L_air = 0";
+        }
+        const bool hasSpot = anyLight(scene, scene::LightType::Spot);
+        const bool hasCookie = std::any_of(scene.lights.begin(), scene.lights.end(),
+                                           [](const scene::Light& l) { return l.cookie >= 0; });
+        const bool exact = settings.at("exact") != 0.0;
+        const bool jitter = settings.at("jitter") != 0.0;
+        const int area = int(settings.at("area_samples"));
+        p.features.push_back({"EXACT", exact,
+                              exact ? "analytic unshadowed segment per sample interval (airlight.glsl pointSegment)"
+                                    : "exact=0: midpoint rule of the integrand"});
+        p.features.push_back({"JITTER", jitter, jitter ? "stratified offsets" : "jitter=0: interval midpoints"});
+        p.features.push_back({"SPOT", hasSpot, hasSpot ? "spot falloff A_spot" : "no spot light in the scene"});
+        p.features.push_back({"COOKIE", hasCookie, hasCookie ? "cookie texture" : "no light has a cookie"});
+        p.features.push_back({"HENYEY_GREENSTEIN", scene.medium.g != 0.0,
+                              scene.medium.g != 0.0 ? "g != 0" : "g = 0: isotropic phase 1/(4 pi)"});
+        const bool hasArea = anyLight(scene, scene::LightType::Area);
+        p.features.push_back({"AREA_VPLS", hasArea,
+                              hasArea ? "each area light -> " + std::to_string(area * area) +
+                                            " virtual point lights with cube shadow maps"
+                                      : "no area light in the scene"});
+        const bool cubes = anyLight(scene, scene::LightType::Point) || hasArea;
+        p.features.push_back({"SHADOW_MAPS_CUBE", cubes,
+                              cubes ? "point lights / VPLs need omnidirectional maps"
+                                    : "no point light or area light: no cube map needed"});
+        const bool maps2D = hasSpot || anyLight(scene, scene::LightType::Directional);
+        p.features.push_back({"SHADOW_MAPS_2D", maps2D,
+                              maps2D ? "spot / directional lights" : "no spot or directional light"});
+        return p;
+    }
+
+    FrameOutput run(const FrameInput& input) override {
+        const scene::Scene& scene = *input.scene;
+        const Settings& s = input.settings;
+        FrameOutput out;
+        out.plan = plan(scene, s);
+        out.timing.clock = gl::StageClock::method();
+        const int stop = input.stopAfterStage < 0 ? kComposeIndex : input.stopAfterStage;
+        gl::StageClock clock;
+
+        // ---- shadow maps (the scene upload is counted here: it is part of the technique's cost) ----
+        clock.begin();
+        if (!mShadows) {
+            mShadows = std::make_unique<render::ShadowMaps>();
+            mSurface = std::make_unique<render::SurfacePass>();
+            mComposer = std::make_unique<render::Composer>();
+        }
+        // Geometry is uploaded once per scene; a camera move (the window) reuses it.
+        const std::size_t triangles = triangleCount(scene);
+        if (mSceneSource != &scene || mSceneTriangles != triangles || !mGpuScene) {
+            mGpuScene = std::make_unique<render::GpuScene>(scene);
+            mSceneSource = &scene;
+            mSceneTriangles = triangles;
+        }
+        mLights = std::make_unique<render::GpuLights>(scene, scene.camera.position, int(s.at("area_samples")));
+        const int size = int(s.at("shadow_map"));
+        mShadows->build(*mGpuScene, *mLights, size, std::min(size, kMaxVplShadowSize));
+        out.timing.stages.push_back({kStageShadowMaps, clock.endMilliseconds()});
+        mShadows->publish(out.intermediates, "raymarch");
+        out.lastStageRun = kShadowMapsIndex;
+        if (stop == kShadowMapsIndex) return out;
+
+        // ---- camera view ----
+        clock.begin();
+        mSurface->run(*mGpuScene, *mLights, *mShadows, scene, input.width, input.height);
+        out.timing.stages.push_back({kStageSurface, clock.endMilliseconds()});
+        out.intermediates.push_back(textureIntermediate(
+            kDistance, "Distance d", "Euclidean distance to the first surface along the pixel ray (zfar: sky)",
+            "scene units", ViewKind::Scalar, 0.0f, float(scene.camera.zfar), mSurface->distance()));
+        out.intermediates.push_back(textureIntermediate(
+            kSurface, "Surface radiance", "emission + Lambert with shadow maps, before the medium's attenuation",
+            "radiance", ViewKind::Color, 0.0f, 1.0f, mSurface->surfaceRadiance()));
+        out.lastStageRun = kSurfaceIndex;
+        if (stop == kSurfaceIndex) return out;
+
+        // ---- ray march ----
+        clock.begin();
+        allocateTargets(input.width, input.height);
+        if (out.plan.stages[kMarchIndex].runs) {
+            const gl::Program& program = marchProgram(out.plan);
+            march(program, scene, input);
+        } else {
+            mAirlight.clear(glm::vec4(0.0f));
+            mLitFraction.clear(glm::vec4(0.0f));
+        }
+        out.timing.stages.push_back({kStageMarch, clock.endMilliseconds()});
+        out.intermediates.push_back(textureIntermediate(
+            kAirlight, "L_air", "single-scattered light reaching the eye (the quantity every technique computes)",
+            "radiance", ViewKind::Color, 0.0f, 1.0f, mAirlight));
+        out.intermediates.push_back(textureIntermediate(
+            kLitFraction, "Lit fraction", "fraction of the ray samples that the shadow maps call lit", "",
+            ViewKind::Scalar, 0.0f, 1.0f, mLitFraction));
+        out.airlight = dropAlpha(gl::readTexture(mAirlight));
+        out.lastStageRun = kMarchIndex;
+        if (stop == kMarchIndex) return out;
+
+        // ---- compose ----
+        clock.begin();
+        mComposer->run(mSurface->surfaceRadiance(), mSurface->distance(), mAirlight,
+                      float(scene.medium.sigma_t()), mFinal);
+        out.timing.stages.push_back({kStageCompose, clock.endMilliseconds()});
+        out.intermediates.push_back(textureIntermediate(kFinal, "Final", "surface * exp(-sigma_t d) + L_air",
+                                                        "radiance", ViewKind::Color, 0.0f, 1.0f, mFinal));
+        out.final = dropAlpha(gl::readTexture(mFinal));
+        out.lastStageRun = kComposeIndex;
+        return out;
+    }
+
+private:
+    void allocateTargets(int width, int height) {
+        if (mAirlight && mAirlight.size().x == width && mAirlight.size().y == height) return;
+        mAirlight = gl::Texture::create({.target = GL_TEXTURE_2D, .format = GL_RGBA32F, .size = {width, height, 1},
+                                         .levels = 1, .label = kAirlight});
+        mLitFraction = gl::Texture::create({.target = GL_TEXTURE_2D, .format = GL_R32F, .size = {width, height, 1},
+                                            .levels = 1, .label = kLitFraction});
+        mFinal = gl::Texture::create({.target = GL_TEXTURE_2D, .format = GL_RGBA32F, .size = {width, height, 1},
+                                      .levels = 1, .label = kFinal});
+    }
+
+    // Compiles only the features the plan enabled (shader permutations by #define), cached per set.
+    const gl::Program& marchProgram(const Plan& plan) {
+        gl::ShaderDefines defines;
+        std::string key;
+        for (const FeaturePlan& f : plan.features)
+            if (f.enabled) {
+                defines.push_back({f.feature, "1"});
+                key += f.feature + ";";
+            }
+        if (key != mProgramKey || !mMarch) {
+            mMarch = gl::Program::compile(
+                {.stages = {"raymarch/march.comp"}, .defines = defines, .label = "raymarch.march"});
+            mProgramKey = key;
+        }
+        return mMarch;
+    }
+
+    void march(const gl::Program& program, const scene::Scene& scene, const FrameInput& input) {
+        const scene::Camera& cam = scene.camera;
+        const Settings& s = input.settings;
+        program.use();
+        program.set("uSize", glm::ivec2(input.width, input.height));
+        program.set("uForward", glm::vec3(cam.forward));
+        program.set("uRight", glm::vec3(scene::cameraRight(cam)));
+        program.set("uUp", glm::vec3(cam.up));
+        program.set("uTanHalf", float(std::tan(cam.yfov * 0.5)));
+        program.set("uAspect", float(scene::aspectOf(cam, input.width, input.height)));
+        program.set("uSamples", int(s.at("samples")));
+        program.set("uLightCount", mLights->count());
+        program.set("uSigmaS", float(scene.medium.sigma_s));
+        program.set("uSigmaT", float(scene.medium.sigma_t()));
+        program.set("uG", float(scene.medium.g));
+        program.set("uSeed", unsigned(s.at("seed")));
+        mLights->bind();
+        mShadows->bind();
+        mSurface->distance().bindUnit(render::hd::kFirstFreeTextureUnit);
+        mAirlight.bindImage(0, GL_WRITE_ONLY);
+        mLitFraction.bindImage(1, GL_WRITE_ONLY);
+        const glm::ivec3 groups = gl::groupCount({input.width, input.height, 1}, program.workGroupSize());
+        glDispatchCompute(GLuint(groups.x), GLuint(groups.y), 1);
+        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    }
+
+    std::vector<ParamInfo> mParams;
+    std::vector<StageInfo> mStages;
+    const scene::Scene* mSceneSource = nullptr;
+    std::size_t mSceneTriangles = 0;
+    std::unique_ptr<render::GpuScene> mGpuScene;
+    std::unique_ptr<render::GpuLights> mLights;
+    // Created at the first run(): their programs need a current GL context, listing the technique does not.
+    std::unique_ptr<render::ShadowMaps> mShadows;
+    std::unique_ptr<render::SurfacePass> mSurface;
+    std::unique_ptr<render::Composer> mComposer;
+    gl::Program mMarch;
+    std::string mProgramKey;
+    gl::Texture mAirlight, mLitFraction, mFinal;
+};
+
+}  // namespace
+
+std::unique_ptr<Technique> makeRaymarchTechnique() { return std::make_unique<RaymarchTechnique>(); }
+
+}  // namespace viz

@@ -1,0 +1,19 @@
+#include "techniques/registry.h"
+
+#include "core/error.h"
+#include "techniques/raymarch/raymarch.h"
+#include "techniques/reference/reference.h"
+
+namespace viz {
+
+std::vector<std::string> techniqueIds() { return {"reference", "raymarch"}; }
+
+std::unique_ptr<Technique> makeTechnique(std::string_view id) {
+    if (id == "reference") return makeReferenceTechnique();
+    if (id == "raymarch") return makeRaymarchTechnique();
+    std::string known;
+    for (const std::string& t : techniqueIds()) known += (known.empty() ? "" : ", ") + t;
+    throw InputError("unknown technique '" + std::string(id) + "' (known: " + known + ")");
+}
+
+}  // namespace viz
