@@ -2,6 +2,8 @@
 // homogeneous medium along one segment of an eye ray. Float mirror of viz/shared/airlight.h (same
 // function names, argument order and structure, line by line); NUMERICS.md 5.1, Sun et al. 2005.
 // Inputs are camera-relative (tP, h computed in double on the CPU when world coordinates are large).
+// No step relies on compensated arithmetic (every difference that could cancel is rewritten as a sum and
+// log1p/expm1 use series near 0), so `precise` is not needed and fast-math reassociation is harmless.
 #ifndef AIRLIGHT_GLSL
 #define AIRLIGHT_GLSL
 
@@ -11,7 +13,7 @@ const float AIRLIGHT_NEAR_WIDTH = 2.0;
 const float AIRLIGHT_ATTENUATION_CUT = 20.0;
 const float AIRLIGHT_WINDOW = 17.0;
 const float AIRLIGHT_ASINH_LARGE = 1e4;
-const float AIRLIGHT_EXPM1_SMALL = 1e-5;
+const int AIRLIGHT_SERIES_TERMS = 10;
 
 // Light-to-ray distance floor, the same as on the CPU (see pointSegment).
 const float AIRLIGHT_MIN_RELATIVE_H = 1e-7;
@@ -27,27 +29,31 @@ const float AIRLIGHT_GL_W[4] = float[4](0.101228536290376259153, 0.2223810344533
 
 // ---- Elementary helpers (GLSL has no log1p/expm1; NUMERICS.md 5.3) ---------------------------------
 
-// log(1 + x) without losing x when |x| << 1 (Kahan's trick). `precise` keeps the compiler from folding
-// u - 1 into x, which would undo the rounding compensation.
+// log(1 + x) without losing x when |x| << 1: 2 atanh(z) series, z = x / (2 + x), on (-0.5, 1). GLSL's
+// log has only an absolute error bound of 2^-21 near 1, so Kahan's log(u) x / (u - 1) trick fails here.
 float stableLog1p(float x) {
-    precise float u = 1.0 + x;
-    if (u == 1.0) return x;
-    if (isinf(u)) return u;
-    precise float um1 = u - 1.0;
-    return log(u) * x / um1;
+    if (x > -0.5 && x < 1.0) {
+        float z = x / (2.0 + x);
+        float z2 = z * z;
+        float sum = 0.0;
+        for (int k = AIRLIGHT_SERIES_TERMS - 1; k >= 0; --k) {
+            sum = 1.0 / float(2 * k + 1) + z2 * sum;
+        }
+        return 2.0 * z * sum;
+    }
+    return log(1.0 + x);
 }
 
-// exp(x) - 1 without cancellation for small |x| (Kahan's trick, Taylor series near 0).
+// exp(x) - 1 without cancellation: Taylor series (Horner form) for |x| < 0.5, exp(x) - 1 outside.
 float stableExpm1(float x) {
-    if (abs(x) < AIRLIGHT_EXPM1_SMALL) {
-        return x * (1.0 + x * (0.5 + x * (1.0 / 6.0 + x * (1.0 / 24.0))));
+    if (abs(x) < 0.5) {
+        float sum = 1.0;
+        for (int k = AIRLIGHT_SERIES_TERMS; k >= 2; --k) {
+            sum = 1.0 + x * sum / float(k);
+        }
+        return x * sum;
     }
-    precise float u = exp(x);
-    if (u == 1.0) return x;
-    precise float um1 = u - 1.0;
-    if (um1 == -1.0) return -1.0;
-    if (isinf(u)) return u;
-    return um1 * x / log(u);
+    return exp(x) - 1.0;
 }
 
 // asinh(x) = sign(x) log1p(|x| + x^2 / (1 + sqrt(1 + x^2))); the built-in asinh cancels for x < 0.

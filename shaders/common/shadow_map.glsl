@@ -73,4 +73,22 @@ float shadowVisibility(GpuLight L, vec3 p) {
     return d <= stored + L.shadow.w + L.shadow.z * footprint ? 1.0 : 0.0;
 }
 
+// The slope part of the bias in scene units at p: L.shadow.z texel footprints (two texels' width).
+float shadowSlopeBias(GpuLight L, vec3 p) {
+    int type = L.info.x;
+    if (L.info.z < 0) return 0.0;
+    if (type == kLightDirectional) return L.shadow.z / float(textureSize(uShadow2D, 0).x);
+    float d = shadowDepth(L, p);
+    int size = type == kLightSpot ? textureSize(uShadow2D, 0).x
+             : type == kLightVpl ? textureSize(uShadowCubeVpl, 0).x : textureSize(uShadowCube, 0).x;
+    return L.shadow.z * d / float(size);
+}
+
+// Visibility of a surface point with unit normal n (facing the light side being shaded). The lookup
+// moves off the surface along n by the slope bias: a receiver tilted steeply away from the light
+// otherwise shadows itself in a speckled pattern (acne), because one texel covers a long stretch of it.
+float shadowVisibilitySurface(GpuLight L, vec3 p, vec3 n) {
+    return shadowVisibility(L, p + n * shadowSlopeBias(L, p));
+}
+
 #endif  // SHADOW_MAP_GLSL

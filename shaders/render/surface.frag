@@ -39,7 +39,7 @@ void main() {
         if (cosSurface <= 0.0) continue;
         vec3 E = unshadowedIrradiance(L, vPosition, uSigmaT);
         if (E == vec3(0.0)) continue;
-        sum += E * cosSurface * shadowVisibility(L, vPosition);
+        sum += E * cosSurface * shadowVisibilitySurface(L, vPosition, n);
     }
     radiance += albedo / kPi * sum;
 

@@ -1,5 +1,7 @@
 #include "render/gpu_lights.h"
 
+#include "shared/gauss_legendre.h"
+
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -80,36 +82,6 @@ gl::Texture uploadCookies(const scene::Scene& scene, std::map<int, int>& layerOf
 
 }  // namespace
 
-GaussLegendre gaussLegendre(int n) {
-    VIZ_CHECK(n >= 1, "Gauss-Legendre needs at least one node");
-    GaussLegendre rule;
-    rule.nodes.resize(static_cast<std::size_t>(n));
-    rule.weights.resize(static_cast<std::size_t>(n));
-    // Newton's method on P_n from the Chebyshev-like initial guess cos(pi (i + 0.75) / (n + 0.5)); P_n and
-    // P_n' from the three-term recurrence. Weights w = 2 / ((1 - x^2) P_n'(x)^2).
-    for (int i = 0; i < n; ++i) {
-        double x = std::cos(std::numbers::pi * (i + 0.75) / (n + 0.5));
-        double dp = 1.0;
-        for (int iter = 0; iter < 100; ++iter) {
-            // pnm1 = P_{n-1}(x), pn = P_n(x).
-            double pnm1 = 1.0, pn = x;
-            for (int k = 2; k <= n; ++k) {
-                const double next = ((2.0 * k - 1.0) * x * pn - (k - 1.0) * pnm1) / k;
-                pnm1 = pn;
-                pn = next;
-            }
-            dp = n * (x * pn - pnm1) / (x * x - 1.0);
-            const double dx = pn / dp;
-            x -= dx;
-            if (std::abs(dx) < 1e-16) break;
-        }
-        rule.nodes[static_cast<std::size_t>(i)] = x;
-        rule.weights[static_cast<std::size_t>(i)] = 2.0 / ((1.0 - x * x) * dp * dp);
-    }
-    std::reverse(rule.nodes.begin(), rule.nodes.end());
-    std::reverse(rule.weights.begin(), rule.weights.end());
-    return rule;
-}
 
 GpuLights::GpuLights(const scene::Scene& scene, glm::dvec3 eye, int areaSamples) : mEye(eye) {
     if (areaSamples < 1) {
@@ -123,7 +95,7 @@ GpuLights::GpuLights(const scene::Scene& scene, glm::dvec3 eye, int areaSamples)
 
     std::map<int, int> cookieLayer;
     mCookies = uploadCookies(scene, cookieLayer);
-    const GaussLegendre rule = gaussLegendre(areaSamples);
+    const QuadratureRule rule = gaussLegendreRule(areaSamples);
 
     for (std::size_t li = 0; li < scene.lights.size(); ++li) {
         const scene::Light& light = scene.lights[li];

@@ -18,12 +18,6 @@
 
 namespace viz::render {
 
-// Gauss-Legendre nodes and weights on [-1, 1] (weights sum to 2), n >= 1.
-struct GaussLegendre {
-    std::vector<double> nodes;
-    std::vector<double> weights;
-};
-GaussLegendre gaussLegendre(int n);
 
 // How many shadow maps of each kind the lights use (layers of ShadowMaps' textures).
 struct ShadowLayout {

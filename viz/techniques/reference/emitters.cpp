@@ -5,6 +5,7 @@
 
 #include "core/error.h"
 #include "scene/texture_sampling.h"
+#include "shared/gauss_legendre.h"
 #include "techniques/reference/quadrature.h"
 
 namespace viz::reference {
@@ -105,7 +106,7 @@ PreparedLights PreparedLights::build(const scene::Scene& scene, int areaSamples)
     for (const auto& t : scene.textures) out.textures.emplace_back(t);
     // Reserve so that the pointers PointEmitter::spot keeps stay valid.
     out.spots.reserve(scene.lights.size());
-    const GaussLegendre rule = gaussLegendreUnit(std::max(1, areaSamples));
+    const QuadratureRule rule = gaussLegendreRuleUnit(std::max(1, areaSamples));
     for (std::size_t li = 0; li < scene.lights.size(); ++li) {
         const scene::Light& light = scene.lights[li];
         switch (light.type) {

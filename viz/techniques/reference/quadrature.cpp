@@ -86,37 +86,5 @@ QuadratureResult integrateAdaptive(const std::function<glm::dvec3(double)>& f, d
     return result;
 }
 
-GaussLegendre gaussLegendreUnit(int n) {
-    VIZ_CHECK(n >= 1, "Gauss-Legendre order must be positive");
-    GaussLegendre rule;
-    rule.nodes.resize(std::size_t(n));
-    rule.weights.resize(std::size_t(n));
-    // Roots of P_n by Newton's method from the first guess cos(pi (i + 3/4) / (n + 1/2)); i = 0 is the
-    // largest root, so the mapped nodes 0.5 (1 - x) come out ascending.
-    for (int i = 0; i < n; ++i) {
-        double x = std::cos(std::numbers::pi * (i + 0.75) / (n + 0.5));
-        double dp = 1.0;
-        for (int iter = 0; iter < 100; ++iter) {
-            // Three-term recurrence: k P_k = (2k - 1) x P_{k-1} - (k - 1) P_{k-2}.
-            double p0 = 1.0, p1 = x;
-            for (int k = 2; k <= n; ++k) {
-                const double p2 = ((2.0 * k - 1.0) * x * p1 - (k - 1.0) * p0) / k;
-                p0 = p1;
-                p1 = p2;
-            }
-            if (n == 1) p0 = 1.0;
-            // P_n'(x) = n (x P_n - P_{n-1}) / (x^2 - 1)
-            dp = n * (x * p1 - p0) / (x * x - 1.0);
-            const double dx = p1 / dp;
-            x -= dx;
-            if (std::abs(dx) < 1e-16) break;
-        }
-        // Weight on [-1, 1] is 2 / ((1 - x^2) P_n'(x)^2); mapped to [0, 1] it halves.
-        const double w = 2.0 / ((1.0 - x * x) * dp * dp);
-        rule.nodes[std::size_t(i)] = 0.5 * (1.0 - x);
-        rule.weights[std::size_t(i)] = 0.5 * w;
-    }
-    return rule;
-}
 
 }  // namespace viz::reference

@@ -22,11 +22,5 @@ struct QuadratureResult {
 QuadratureResult integrateAdaptive(const std::function<glm::dvec3(double)>& f, double a, double b,
                                    double relTol, double absTol, int maxIntervals = 400);
 
-// Nodes in [0, 1] and weights (summing to 1) of the n-point Gauss-Legendre rule.
-struct GaussLegendre {
-    std::vector<double> nodes;
-    std::vector<double> weights;
-};
-GaussLegendre gaussLegendreUnit(int n);
 
 }  // namespace viz::reference

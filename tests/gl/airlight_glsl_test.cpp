@@ -1,0 +1,114 @@
+// Runs shaders/common/airlight.glsl in a compute shader over the grid of stiff and random cases of
+// tests/cpu/math/airlight_cases.h and compares with the double kernel of viz/shared/airlight.h evaluated
+// on the same float inputs (camera-relative geometry computed in double on the CPU, then rounded).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <map>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "cpu/math/airlight_cases.h"
+#include "gl/buffer.h"
+#include "gl/gl_test_fixture.h"
+#include "gl/program.h"
+#include "shared/airlight.h"
+
+namespace viz::airlight::test {
+namespace {
+
+using AirlightGlsl = gl::GlTest;
+
+double relativeError(double value, double reference) {
+    if (value == reference) return 0.0;
+    return std::abs(value - reference) / std::abs(reference);
+}
+
+TEST_F(AirlightGlsl, MatchesDoubleKernelOnStiffGrid) {
+    std::vector<SegmentCase> cases;
+    for (const SegmentCase& c : airlightCaseGrid()) cases.push_back(roundedToFloat(c));
+    const int count = int(cases.size());
+
+    std::vector<glm::vec4> inputs;
+    for (const SegmentCase& c : cases) {
+        inputs.emplace_back(float(c.tP), float(c.h), float(c.x0), float(c.x1));
+        inputs.emplace_back(float(c.sigma_s), float(c.sigma_t), float(c.g), float(c.I0));
+        inputs.emplace_back(float(c.cosTheta), 0.0f, 0.0f, 0.0f);
+    }
+    gl::Buffer inBuffer = gl::Buffer::create(
+        {.bytes = inputs.size() * sizeof(glm::vec4), .data = inputs.data(), .label = "test.airlight_inputs"});
+    gl::Buffer outBuffer =
+        gl::Buffer::create({.bytes = size_t(count) * sizeof(glm::vec4), .label = "test.airlight_outputs"});
+
+    const std::string shader = std::string(VIZ_TEST_DATA_DIR) + "/math/airlight_glsl_test.comp";
+    gl::Program program = gl::Program::compile({.stages = {shader}, .label = "test.airlight_glsl"});
+    program.use();
+    program.set("uCount", count);
+    inBuffer.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
+    outBuffer.bindBase(GL_SHADER_STORAGE_BUFFER, 1);
+    glDispatchCompute(GLuint((count + 63) / 64), 1, 1);
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    const std::vector<glm::vec4> outputs = outBuffer.download<glm::vec4>();
+    ASSERT_EQ(int(outputs.size()), count);
+
+    const double floatMin = double(std::numeric_limits<float>::min());
+    std::map<std::string, std::pair<double, std::string>> worstPoint;
+    double worstDirectional = 0, worstPhase = 0, worstTransmittance = 0;
+    for (int i = 0; i < count; ++i) {
+        const SegmentCase& c = cases[size_t(i)];
+        SCOPED_TRACE(c.name);
+        const glm::vec4 out = outputs[size_t(i)];
+
+        // pointSegment: never NaN/Inf, 1e-4 relative where the double value is a normal float.
+        const double point = pointSegment<double>(c.tP, c.h, c.x0, c.x1, c.sigma_s, c.sigma_t, c.g, c.I0);
+        ASSERT_TRUE(std::isfinite(out.x)) << out.x;
+        EXPECT_GE(out.x, 0.0f);
+        if (isNormalFloat(point)) {
+            const double error = relativeError(out.x, point);
+            EXPECT_LT(error, 1e-4) << "glsl " << out.x << " double " << point;
+            auto& w = worstPoint[c.group];
+            if (error >= w.first) w = {error, c.name};
+        } else {
+            EXPECT_LE(std::abs(double(out.x) - point), 2.0 * floatMin) << "glsl " << out.x << " double " << point;
+        }
+
+        // directionalSegment: infinite only for the genuinely infinite sigma_t = 0, x1 = inf.
+        const double directional =
+            directionalSegment<double>(c.cosTheta, c.x0, c.x1, c.sigma_s, c.sigma_t, c.g, c.I0);
+        if (std::isinf(directional)) {
+            EXPECT_TRUE(std::isinf(out.y));
+        } else {
+            ASSERT_TRUE(std::isfinite(out.y)) << out.y;
+            if (isNormalFloat(directional)) {
+                const double error = relativeError(out.y, directional);
+                EXPECT_LT(error, 1e-4) << "glsl " << out.y << " double " << directional;
+                worstDirectional = std::max(worstDirectional, error);
+            }
+        }
+
+        const double phase = phaseHG<double>(c.cosTheta, c.g);
+        const double phaseError = relativeError(out.z, phase);
+        EXPECT_LT(phaseError, 1e-5);
+        worstPhase = std::max(worstPhase, phaseError);
+
+        const double trans = transmittance<double>(c.sigma_t, double(float(c.x0 + 1.0)));
+        if (isNormalFloat(trans)) {
+            const double error = relativeError(out.w, trans);
+            EXPECT_LT(error, 1e-4);
+            worstTransmittance = std::max(worstTransmittance, error);
+        }
+    }
+    std::printf("  GLSL pointSegment vs double (relative error, normal-float values):\n");
+    for (const auto& [group, w] : worstPoint) {
+        std::printf("    %-20s worst %.2e  (%s)\n", group.c_str(), w.first, w.second.c_str());
+    }
+    std::printf("  GLSL directionalSegment %.2e, phaseHG %.2e, transmittance %.2e\n", worstDirectional,
+                worstPhase, worstTransmittance);
+}
+
+}  // namespace
+}  // namespace viz::airlight::test
