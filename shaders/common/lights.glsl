@@ -4,6 +4,10 @@
 #ifndef LIGHTS_GLSL
 #define LIGHTS_GLSL
 
+// Feature switches (gl::ProgramDesc defines): a technique whose plan finds no spot light, or no cookie,
+// defines LIGHTS_NO_SPOT or LIGHTS_NO_COOKIE and that code is not compiled. Without them every light
+// type is handled at run time.
+
 #include "common/host_device.glsl"
 
 // The lights as a uniform block (see host_device.glsl for why not the SSBO); count from the caller.
@@ -62,6 +66,9 @@ float spotAttenuation(GpuLight L, vec3 dirFromLight) {
 // Cookie projected over the outer cone: in the light frame (x right, y up, z axis),
 // uv = 0.5 + 0.5 (x, y) / (z tan(outer)), v = 0 at the top row; 1 without a cookie.
 vec3 spotCookie(GpuLight L, vec3 dirFromLight) {
+#ifdef LIGHTS_NO_COOKIE
+    return vec3(1.0);  // the technique's plan says no light has a cookie: not compiled
+#endif
     if (L.info.y < 0) return vec3(1.0);
     float z = dot(L.direction.xyz, dirFromLight);
     if (z <= 0.0) return vec3(0.0);  // behind the light: outside every cone (A_spot = 0 there too)
@@ -76,11 +83,13 @@ vec3 lightIntensity(GpuLight L, vec3 p) {
     int type = L.info.x;
     if (type == kLightPoint || type == kLightDirectional) return L.radiant.rgb;
     vec3 dirFromLight = normalize(p - L.position.xyz);
+#ifndef LIGHTS_NO_SPOT
     if (type == kLightSpot) {
         float a = spotAttenuation(L, dirFromLight);
         if (a == 0.0) return vec3(0.0);
         return L.radiant.rgb * a * spotCookie(L, dirFromLight);
     }
+#endif
     // VPL: cosine lobe around the emitter normal.
     return L.radiant.rgb * max(0.0, dot(L.direction.xyz, dirFromLight));
 }

@@ -7,6 +7,9 @@
 #ifndef SHADOW_MAP_GLSL
 #define SHADOW_MAP_GLSL
 
+// Feature switches: SHADOW_NO_2D (no spot or directional light) and SHADOW_NO_CUBE (no point light or
+// VPL) leave the corresponding lookup out of the compiled shader.
+
 #include "common/host_device.glsl"
 #include "common/lights.glsl"
 
@@ -53,6 +56,7 @@ float shadowVisibility(GpuLight L, vec3 p) {
     float d = shadowDepth(L, p);
     float stored;
     float footprint;
+#ifndef SHADOW_NO_2D
     if (type == kLightSpot || type == kLightDirectional) {
         vec4 clip = L.shadowMatrix * vec4(p, 1.0);
         if (clip.w <= 0.0) return 1.0;
@@ -63,13 +67,21 @@ float shadowVisibility(GpuLight L, vec3 p) {
         ivec2 texel = clamp(ivec2(floor((ndc * 0.5 + 0.5) * vec2(size))), ivec2(0), size - 1);
         stored = texelFetch(uShadow2D, ivec3(texel, layer), 0).r;
         footprint = (type == kLightSpot ? d : 1.0) / float(size.x);
-    } else {
+    } else
+#endif
+#ifndef SHADOW_NO_CUBE
+    {
         vec3 dir = p - L.position.xyz;
         if (dir == vec3(0.0)) return 1.0;
         bool vpl = type == kLightVpl;
         stored = vpl ? cubeLookup(uShadowCubeVpl, layer, dir) : cubeLookup(uShadowCube, layer, dir);
         footprint = d / float(vpl ? textureSize(uShadowCubeVpl, 0).x : textureSize(uShadowCube, 0).x);
     }
+#else
+    {
+        return 1.0;  // no cube-mapped light in the scene: not compiled
+    }
+#endif
     return d <= stored + L.shadow.w + L.shadow.z * footprint ? 1.0 : 0.0;
 }
 

@@ -1,6 +1,7 @@
 #include "techniques/raymarch/raymarch.h"
 
 #include <algorithm>
+#include <map>
 #include <cmath>
 #include <memory>
 #include <string>
@@ -118,7 +119,8 @@ public:
         p.features.push_back({"SPOT", hasSpot, hasSpot ? "spot falloff A_spot" : "no spot light in the scene"});
         p.features.push_back({"COOKIE", hasCookie, hasCookie ? "cookie texture" : "no light has a cookie"});
         p.features.push_back({"HENYEY_GREENSTEIN", scene.medium.g != 0.0,
-                              scene.medium.g != 0.0 ? "g != 0" : "g = 0: isotropic phase 1/(4 pi)"});
+                              scene.medium.g != 0.0 ? "g != 0 (run-time branch of phaseHG)"
+                                                    : "g = 0: isotropic phase 1/(4 pi) (run-time branch)"});
         const bool hasArea = anyLight(scene, scene::LightType::Area);
         p.features.push_back({"AREA_VPLS", hasArea,
                               hasArea ? "each area light -> " + std::to_string(area * area) +
@@ -222,15 +224,29 @@ private:
                                       .levels = 1, .label = kFinal});
     }
 
-    // Compiles only the features the plan enabled (shader permutations by #define), cached per set.
+    // Compiles only the features the plan enabled (shader permutations by #define), cached per set:
+    // an enabled EXACT / JITTER adds its define, a disabled light or shadow feature adds the define that
+    // leaves its code out (shaders/common/lights.glsl, shadow_map.glsl).
     const gl::Program& marchProgram(const Plan& plan) {
+        static const std::map<std::string, std::pair<const char*, const char*>> kDefines = {
+            // feature: {define when enabled, define when disabled}
+            {"EXACT", {"EXACT", nullptr}},
+            {"JITTER", {"JITTER", nullptr}},
+            {"SPOT", {nullptr, "LIGHTS_NO_SPOT"}},
+            {"COOKIE", {nullptr, "LIGHTS_NO_COOKIE"}},
+            {"SHADOW_MAPS_CUBE", {nullptr, "SHADOW_NO_CUBE"}},
+            {"SHADOW_MAPS_2D", {nullptr, "SHADOW_NO_2D"}},
+        };
         gl::ShaderDefines defines;
         std::string key;
-        for (const FeaturePlan& f : plan.features)
-            if (f.enabled) {
-                defines.push_back({f.feature, "1"});
-                key += f.feature + ";";
-            }
+        for (const FeaturePlan& f : plan.features) {
+            const auto it = kDefines.find(f.feature);
+            if (it == kDefines.end()) continue;  // a run-time branch, not a permutation
+            const char* define = f.enabled ? it->second.first : it->second.second;
+            if (!define) continue;
+            defines.push_back({define, "1"});
+            key += std::string(define) + ";";
+        }
         if (key != mProgramKey || !mMarch) {
             mMarch = gl::Program::compile(
                 {.stages = {"raymarch/march.comp"}, .defines = defines, .label = "raymarch.march"});
