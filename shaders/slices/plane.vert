@@ -1,0 +1,49 @@
+#version 450 core
+// slices/plane.vert: places sampling plane i of N (Mitchell 2004, "Positioning the Sampling Planes").
+// No vertex buffer: vertex v of plane i is gl_VertexID = 6 i + v. The plane is the view-aligned quad at
+// view depth s_i (along camera forward) spanning the view-space bounding box of the light's frustum,
+// found by interpolating within that box. Plane 0 is the farthest (drawn first: back to front).
+// Output: eye-relative world position; gl_ClipDistance[0..5] against the light frustum's six planes
+// (from the light's shadow matrix: w +- x, w +- y, w +- z >= 0), [6..7] the optional user planes. The
+// host enables only the GL_CLIP_DISTANCEi it wants, so disabled planes cost nothing.
+
+uniform mat4 uViewProj;     // eye-relative world -> camera clip space
+uniform vec3 uRight;        // camera basis, world axes
+uniform vec3 uUp;
+uniform vec3 uForward;
+uniform vec2 uBoxMinXY;     // view-space box of the light frustum (x along uRight, y along uUp)
+uniform vec2 uBoxMaxXY;
+uniform float uDepthFar;    // view depth of plane 0's slab far edge
+uniform float uSpacing;     // plane spacing in view depth, delta s
+uniform mat4 uLightMatrix;  // eye-relative world -> the light's clip space (shadow matrix)
+uniform vec4 uUserPlane0;   // user clip planes, eye-relative world: dot(plane, (p, 1)) >= 0 is kept
+uniform vec4 uUserPlane1;
+
+out vec3 vPosition;         // eye-relative world
+flat out int vPlane;
+
+out float gl_ClipDistance[8];
+
+const vec2 kCorners[6] = vec2[6](vec2(0, 0), vec2(1, 0), vec2(1, 1), vec2(0, 0), vec2(1, 1), vec2(0, 1));
+
+void main() {
+    int plane = gl_VertexID / 6;
+    vec2 c = kCorners[gl_VertexID % 6];
+    // Midpoint of slab i: s_i = far - (i + 1/2) delta s.
+    float s = uDepthFar - (float(plane) + 0.5) * uSpacing;
+    vec2 xy = mix(uBoxMinXY, uBoxMaxXY, c);
+    vec3 p = xy.x * uRight + xy.y * uUp + s * uForward;
+    vPosition = p;
+    vPlane = plane;
+    gl_Position = uViewProj * vec4(p, 1.0);
+
+    vec4 lc = uLightMatrix * vec4(p, 1.0);
+    gl_ClipDistance[0] = lc.w + lc.x;
+    gl_ClipDistance[1] = lc.w - lc.x;
+    gl_ClipDistance[2] = lc.w + lc.y;
+    gl_ClipDistance[3] = lc.w - lc.y;
+    gl_ClipDistance[4] = lc.w + lc.z;
+    gl_ClipDistance[5] = lc.w - lc.z;
+    gl_ClipDistance[6] = dot(uUserPlane0, vec4(p, 1.0));
+    gl_ClipDistance[7] = dot(uUserPlane1, vec4(p, 1.0));
+}
