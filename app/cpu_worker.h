@@ -1,0 +1,113 @@
+// Runs CPU techniques (the reference) on a worker thread in passes of growing resolution, so the window
+// never freezes while a slow technique renders.
+#pragma once
+
+#include <chrono>
+#include <cstdio>
+#include <condition_variable>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+#include <utility>
+
+#include <glm/glm.hpp>
+
+#include "debug/technique.h"
+#include "scene/scene.h"
+
+namespace airlight {
+
+struct CpuRequest {
+    std::string technique;
+    viz::scene::Camera camera;
+    viz::Settings settings;
+    int width = 0, height = 0;
+};
+
+struct CpuResult {
+    std::string technique;
+    viz::FrameOutput output;
+    int pass = 0, passCount = 1;
+    std::string error;
+};
+
+struct CpuProgress {
+    bool busy = false;
+    int pass = 0, passCount = 1;
+    glm::ivec2 size{0};
+    double elapsed = 0.0;   // seconds in this pass
+    double estimate = 0.0;  // expected seconds for this pass, 0 = unknown
+};
+
+// Runs one CPU technique at a time in passes of growing resolution. A new request supersedes the
+// pending one and stops the running one after its current pass (Technique::run cannot be
+// interrupted). The state lives in a shared_ptr so that a pass still running at exit can finish
+// on a detached thread without touching freed memory.
+class CpuWorker {
+public:
+    explicit CpuWorker(const viz::scene::Scene& scene) : mState(std::make_shared<State>()) {
+        mState->scene = scene;
+        mThread = std::thread([state = mState] { loop(*state); });
+    }
+    ~CpuWorker() {
+        bool running = false;
+        {
+            std::lock_guard lock(mState->mutex);
+            mState->quit = true;
+            mState->request.reset();
+            running = mState->progress.busy;
+        }
+        mState->wake.notify_all();
+        if (running) {
+            std::fprintf(stderr, "airlight: leaving a reference pass to finish in the background\n");
+            mThread.detach();
+        } else {
+            mThread.join();
+        }
+    }
+    CpuWorker(const CpuWorker&) = delete;
+    CpuWorker& operator=(const CpuWorker&) = delete;
+
+    void submit(CpuRequest request) {
+        {
+            std::lock_guard lock(mState->mutex);
+            mState->request = std::move(request);
+        }
+        mState->wake.notify_all();
+    }
+    std::optional<CpuResult> take() {
+        std::lock_guard lock(mState->mutex);
+        return std::exchange(mState->result, std::nullopt);
+    }
+    CpuProgress progress() const {
+        std::lock_guard lock(mState->mutex);
+        CpuProgress p = mState->progress;
+        if (p.busy) p.elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - mState->passStart).count();
+        return p;
+    }
+
+private:
+    struct State {
+        viz::scene::Scene scene;  // the worker's own copy; only the camera changes
+        std::map<std::string, std::unique_ptr<viz::Technique>> techniques;
+        mutable std::mutex mutex;
+        std::condition_variable wake;
+        std::optional<CpuRequest> request;
+        std::optional<CpuResult> result;
+        CpuProgress progress;
+        std::chrono::steady_clock::time_point passStart;
+        double secondsPerPixel = 0.0;  // from the last finished pass, for the estimate
+        bool quit = false;
+    };
+
+    static void loop(State& s);
+    static void runPasses(State& s, const CpuRequest& request);
+
+    std::shared_ptr<State> mState;
+    std::thread mThread;
+};
+
+}  // namespace airlight

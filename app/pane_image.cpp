@@ -1,0 +1,121 @@
+#include "pane_image.h"
+
+#include <algorithm>
+#include <exception>
+
+#include "core/error.h"
+#include "gl/readback.h"
+
+namespace airlight {
+
+DisplayMode displayModeFor(viz::ViewKind kind) {
+    switch (kind) {
+        case viz::ViewKind::Color: return DisplayMode::RangeColor;
+        case viz::ViewKind::Scalar: return DisplayMode::Grey;
+        case viz::ViewKind::Signed: return DisplayMode::Signed;
+        case viz::ViewKind::BitField: return DisplayMode::Bits;
+        case viz::ViewKind::Mask: return DisplayMode::Mask;
+        case viz::ViewKind::Depth: return DisplayMode::FalseColor;
+        default: return DisplayMode::Grey;
+    }
+}
+
+void uploadImage(PaneImage& pane, const viz::Image& image) {
+    if (image.empty()) {
+        pane.unavailable = "(not produced by this run)";
+        return;
+    }
+    static constexpr GLenum kFormats[] = {GL_RED, GL_RG, GL_RGB, GL_RGBA};
+    VIZ_CHECK(image.channels >= 1 && image.channels <= 4, "image channel count must be 1..4");
+    pane.owned = viz::gl::Texture::create({.target = GL_TEXTURE_2D,
+                                           .format = GL_RGBA32F,
+                                           .size = {image.width, image.height, 1},
+                                           .label = "gui.pane." + (pane.id.empty() ? std::string("final") : pane.id)});
+    pane.owned.upload(kFormats[image.channels - 1], GL_FLOAT, image.pixels.data());
+    pane.texture = pane.owned.id();
+    pane.flipY = false;
+    pane.channels = image.channels;
+    pane.size = {image.width, image.height};
+}
+
+namespace {
+
+int channelsOfFormat(GLint format) {
+    switch (format) {
+        case GL_R8: case GL_R16: case GL_R16F: case GL_R32F: return 1;
+        case GL_RG8: case GL_RG16: case GL_RG16F: case GL_RG32F: return 2;
+        case GL_RGB8: case GL_RGB16F: case GL_RGB32F: case GL_R11F_G11F_B10F: case GL_SRGB8: return 3;
+        case GL_RGBA8: case GL_RGBA16: case GL_RGBA16F: case GL_RGBA32F: case GL_SRGB8_ALPHA8: return 4;
+        default: return 0;  // integer, depth or something unusual: read it back instead
+    }
+}
+
+}  // namespace
+
+void makePane(PaneImage& pane, const viz::Intermediate& in, int layer) {
+    pane.id = in.id;
+    pane.label = in.label;
+    pane.note = in.note;
+    pane.units = in.units;
+    pane.kind = in.kind;
+    pane.mode = displayModeFor(in.kind);
+    pane.rangeMin = in.rangeMin;
+    pane.rangeMax = in.rangeMax;
+    if (in.image) {
+        uploadImage(pane, *in.image);
+        return;
+    }
+    if (in.glTexture == 0) {
+        pane.unavailable = std::string("(a ") + viz::viewKindName(in.kind) + ": no image view yet)";
+        return;
+    }
+    const GLenum target = in.glTarget ? in.glTarget : GL_TEXTURE_2D;
+    pane.layers = target == GL_TEXTURE_CUBE_MAP ? 6 : (target == GL_TEXTURE_2D ? 1 : std::max(1, in.extent.z));
+    pane.layer = std::clamp(layer, 0, pane.layers - 1);
+    GLint format = 0;
+    if (target == GL_TEXTURE_2D) {
+        glGetTextureLevelParameteriv(in.glTexture, 0, GL_TEXTURE_INTERNAL_FORMAT, &format);
+    }
+    const int channels = channelsOfFormat(format);
+    if (target == GL_TEXTURE_2D && channels > 0) {
+        pane.texture = in.glTexture;
+        pane.flipY = true;
+        pane.channels = channels;
+        GLint w = 0, h = 0;
+        glGetTextureLevelParameteriv(in.glTexture, 0, GL_TEXTURE_WIDTH, &w);
+        glGetTextureLevelParameteriv(in.glTexture, 0, GL_TEXTURE_HEIGHT, &h);
+        pane.size = {w, h};
+        return;
+    }
+    try {
+        uploadImage(pane, viz::gl::readTexture(in.glTexture, 0, pane.layer));
+    } catch (const std::exception& e) {
+        pane.unavailable = std::string("(cannot read back: ") + e.what() + ")";
+    }
+}
+
+ImageDisplay::ImageDisplay() {
+    mProgram = viz::gl::Program::compile({.stages = {"ui/image.vert", "ui/image.frag"}, .label = "ui.image"});
+    mVertexArray = viz::gl::VertexArray::create("ui.image_vao");
+    // Nearest, and no depth comparison, whatever the technique set on its own texture.
+    mSampler = viz::gl::Sampler::create({.minFilter = GL_NEAREST, .magFilter = GL_NEAREST, .label = "ui.image"});
+}
+
+void ImageDisplay::draw(const PaneImage& pane, const viz::ui::Rect& rect, glm::ivec2 framebuffer, float exposure) const {
+    if (pane.texture == 0) return;
+    mProgram.set("uRect", glm::vec4(rect.min, rect.max));
+    mProgram.set("uViewport", glm::vec2(framebuffer));
+    mProgram.set("uMode", static_cast<int>(pane.mode));
+    mProgram.set("uRange", glm::vec2(pane.rangeMin, pane.rangeMax));
+    mProgram.set("uExposure", exposure);
+    mProgram.set("uFlipY", pane.flipY);
+    mProgram.set("uChannels", pane.channels);
+    mProgram.use();
+    glBindTextureUnit(0, pane.texture);
+    mSampler.bindUnit(0);
+    mVertexArray.bind();
+    glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+    glBindSampler(0, 0);
+}
+
+}  // namespace airlight
