@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "gl/debug_output.h"
 #include "gl/readback.h"
 #include "platform/context_egl.h"
 #include "scene/scene_source.h"
@@ -31,7 +32,16 @@ RenderJob::RenderJob(const RenderRequest& request) {
     mInput.scene = &mScene;
     mInput.width = request.width;
     mInput.height = request.height;
-    if (mTechnique->needsGl()) mContext = viz::HeadlessContext::create(false);
+    if (mTechnique->needsGl()) {
+        // Debug builds ask for a debug context and log GL errors through the debug-output callback.
+#ifdef NDEBUG
+        constexpr bool kDebugContext = false;
+#else
+        constexpr bool kDebugContext = true;
+#endif
+        mContext = viz::HeadlessContext::create(kDebugContext);
+        if (kDebugContext) viz::gl::installDebugOutput();
+    }
 }
 
 RenderJob::~RenderJob() {

@@ -7,12 +7,12 @@
 #include <string>
 
 #include "gl/program.h"
-#include "gl/readback.h"
 #include "gl/stage_clock.h"
 #include "gl/texture.h"
 #include "render/compose.h"
 #include "render/gpu_lights.h"
 #include "render/gpu_scene.h"
+#include "render/intermediates.h"
 #include "render/shadow_maps.h"
 #include "render/surface_pass.h"
 #include "scene/camera.h"
@@ -35,37 +35,6 @@ enum StageIndex { kShadowMapsIndex = 0, kSurfaceIndex = 1, kMarchIndex = 2, kCom
 
 // VPL cube maps are many (area_samples^2 of them): cap their size to keep memory in check.
 constexpr int kMaxVplShadowSize = 256;
-
-bool anyLight(const scene::Scene& s, scene::LightType type) {
-    return std::any_of(s.lights.begin(), s.lights.end(), [&](const scene::Light& l) { return l.type == type; });
-}
-
-std::size_t triangleCount(const scene::Scene& s) {
-    std::size_t n = 0;
-    for (const auto& m : s.meshes) n += m.indices.size() / 3;
-    return n + s.meshes.size();
-}
-
-// RGBA readback -> RGB image (the technique outputs are RGB).
-Image dropAlpha(const Image& rgba) {
-    Image rgb(rgba.width, rgba.height, 3);
-    for (int y = 0; y < rgba.height; ++y)
-        for (int x = 0; x < rgba.width; ++x)
-            for (int c = 0; c < 3; ++c) rgb.at(x, y, c) = rgba.at(x, y, c);
-    return rgb;
-}
-
-Intermediate textureIntermediate(const std::string& id, const std::string& label, const std::string& note,
-                                 const std::string& units, ViewKind kind, float lo, float hi,
-                                 const gl::Texture& texture) {
-    Intermediate i;
-    i.id = id, i.label = label, i.note = note, i.units = units, i.kind = kind;
-    i.rangeMin = lo, i.rangeMax = hi;
-    i.glTexture = texture.id();
-    i.glTarget = texture.target();
-    i.extent = {texture.size().x, texture.size().y, texture.layers()};
-    return i;
-}
 
 class RaymarchTechnique final : public Technique {
 public:
@@ -106,7 +75,7 @@ public:
             p.stages[kMarchIndex].runs = false;
             p.stages[kMarchIndex].why = "sigma_s = 0: the medium scatters nothing, L_air = 0";
         }
-        const bool hasSpot = anyLight(scene, scene::LightType::Spot);
+        const bool hasSpot = render::hasLightOfType(scene, scene::LightType::Spot);
         const bool hasCookie = std::any_of(scene.lights.begin(), scene.lights.end(),
                                            [](const scene::Light& l) { return l.cookie >= 0; });
         const bool exact = settings.at("exact") != 0.0;
@@ -121,16 +90,16 @@ public:
         p.features.push_back({"HENYEY_GREENSTEIN", scene.medium.g != 0.0,
                               scene.medium.g != 0.0 ? "g != 0 (run-time branch of phaseHG)"
                                                     : "g = 0: isotropic phase 1/(4 pi) (run-time branch)"});
-        const bool hasArea = anyLight(scene, scene::LightType::Area);
+        const bool hasArea = render::hasLightOfType(scene, scene::LightType::Area);
         p.features.push_back({"AREA_VPLS", hasArea,
                               hasArea ? "each area light -> " + std::to_string(area * area) +
                                             " virtual point lights with cube shadow maps"
                                       : "no area light in the scene"});
-        const bool cubes = anyLight(scene, scene::LightType::Point) || hasArea;
+        const bool cubes = render::hasLightOfType(scene, scene::LightType::Point) || hasArea;
         p.features.push_back({"SHADOW_MAPS_CUBE", cubes,
                               cubes ? "point lights / VPLs need omnidirectional maps"
                                     : "no point light or area light: no cube map needed"});
-        const bool maps2D = hasSpot || anyLight(scene, scene::LightType::Directional);
+        const bool maps2D = hasSpot || render::hasLightOfType(scene, scene::LightType::Directional);
         p.features.push_back({"SHADOW_MAPS_2D", maps2D,
                               maps2D ? "spot / directional lights" : "no spot or directional light"});
         return p;
@@ -153,11 +122,11 @@ public:
             mComposer = std::make_unique<render::Composer>();
         }
         // Geometry is uploaded once per scene; a camera move (the window) reuses it.
-        const std::size_t triangles = triangleCount(scene);
-        if (mSceneSource != &scene || mSceneTriangles != triangles || !mGpuScene) {
+        const std::size_t fingerprint = render::geometryFingerprint(scene);
+        if (mSceneSource != &scene || mSceneFingerprint != fingerprint || !mGpuScene) {
             mGpuScene = std::make_unique<render::GpuScene>(scene);
             mSceneSource = &scene;
-            mSceneTriangles = triangles;
+            mSceneFingerprint = fingerprint;
         }
         mLights = std::make_unique<render::GpuLights>(scene, scene.camera.position, int(s.at("area_samples")));
         const int size = int(s.at("shadow_map"));
@@ -171,10 +140,10 @@ public:
         clock.begin();
         mSurface->run(*mGpuScene, *mLights, *mShadows, scene, input.width, input.height);
         out.timing.stages.push_back({kStageSurface, clock.endMilliseconds()});
-        out.intermediates.push_back(textureIntermediate(
+        out.intermediates.push_back(render::textureIntermediate(
             kDistance, "Distance d", "Euclidean distance to the first surface along the pixel ray (zfar: sky)",
             "scene units", ViewKind::Scalar, 0.0f, float(scene.camera.zfar), mSurface->distance()));
-        out.intermediates.push_back(textureIntermediate(
+        out.intermediates.push_back(render::textureIntermediate(
             kSurface, "Surface radiance", "emission + Lambert with shadow maps, before the medium's attenuation",
             "radiance", ViewKind::Color, 0.0f, 1.0f, mSurface->surfaceRadiance()));
         out.lastStageRun = kSurfaceIndex;
@@ -191,13 +160,13 @@ public:
             mLitFraction.clear(glm::vec4(0.0f));
         }
         out.timing.stages.push_back({kStageMarch, clock.endMilliseconds()});
-        out.intermediates.push_back(textureIntermediate(
+        out.intermediates.push_back(render::textureIntermediate(
             kAirlight, "L_air", "single-scattered light reaching the eye (the quantity every technique computes)",
             "radiance", ViewKind::Color, 0.0f, 1.0f, mAirlight));
-        out.intermediates.push_back(textureIntermediate(
+        out.intermediates.push_back(render::textureIntermediate(
             kLitFraction, "Lit fraction", "fraction of the ray samples that the shadow maps call lit", "",
             ViewKind::Scalar, 0.0f, 1.0f, mLitFraction));
-        out.airlight = dropAlpha(gl::readTexture(mAirlight));
+        out.airlight = render::readRgb(mAirlight);
         out.lastStageRun = kMarchIndex;
         if (stop == kMarchIndex) return out;
 
@@ -206,9 +175,9 @@ public:
         mComposer->run(mSurface->surfaceRadiance(), mSurface->distance(), mAirlight,
                       float(scene.medium.sigma_t()), mFinal);
         out.timing.stages.push_back({kStageCompose, clock.endMilliseconds()});
-        out.intermediates.push_back(textureIntermediate(kFinal, "Final", "surface * exp(-sigma_t d) + L_air",
+        out.intermediates.push_back(render::textureIntermediate(kFinal, "Final", "surface * exp(-sigma_t d) + L_air",
                                                         "radiance", ViewKind::Color, 0.0f, 1.0f, mFinal));
-        out.final = dropAlpha(gl::readTexture(mFinal));
+        out.final = render::readRgb(mFinal);
         out.lastStageRun = kComposeIndex;
         return out;
     }
@@ -284,7 +253,7 @@ private:
     std::vector<ParamInfo> mParams;
     std::vector<StageInfo> mStages;
     const scene::Scene* mSceneSource = nullptr;
-    std::size_t mSceneTriangles = 0;
+    std::size_t mSceneFingerprint = 0;
     std::unique_ptr<render::GpuScene> mGpuScene;
     std::unique_ptr<render::GpuLights> mLights;
     // Created at the first run(): their programs need a current GL context, listing the technique does not.
