@@ -621,7 +621,6 @@ TEST_F(RenderPipeline, DISABLED_RenderBenchmark) {
         const double t = ms([&] { pass.run(gpuScene, lights, shadows, s, r.x, r.y); });
         std::printf("surface pass %dx%d, 19 lights: %.1f ms\n", r.x, r.y, t);
     }
-    SUCCEED();
 }
 
 }  // namespace
