@@ -110,6 +110,12 @@ TEST_F(RaymarchTest, PlanLeavesOutWhatTheSceneDoesNotNeed) {
     EXPECT_FALSE(feature(grate, "AREA_VPLS").why.empty());
     EXPECT_TRUE(feature(tv, "AREA_VPLS").enabled);
     EXPECT_FALSE(feature(grate, "EXACT").enabled);
+    // A feature the scene does not use is compiled out, and the plan names the define.
+    const viz::Plan colonnade = technique->plan(viz::scene::makeBuiltinScene("colonnade"), settings);
+    EXPECT_FALSE(feature(colonnade, "SPOT").enabled);
+    EXPECT_NE(feature(colonnade, "SPOT").why.find("compiled out: LIGHTS_NO_SPOT"), std::string::npos);
+    EXPECT_NE(feature(colonnade, "SHADOW_MAPS_CUBE").why.find("SHADOW_NO_CUBE"), std::string::npos);
+    EXPECT_TRUE(feature(grate, "SPOT").enabled);
     viz::scene::Scene clear = viz::scene::makeBuiltinScene("grate");
     clear.medium.sigma_s = 0.0;
     const viz::Plan none = technique->plan(clear, settings);

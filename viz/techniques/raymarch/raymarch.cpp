@@ -36,6 +36,18 @@ enum StageIndex { kShadowMapsIndex = 0, kSurfaceIndex = 1, kMarchIndex = 2, kCom
 // VPL cube maps are many (area_samples^2 of them): cap their size to keep memory in check.
 constexpr int kMaxVplShadowSize = 256;
 
+// Shader permutations of raymarch/march.comp: feature -> {define when enabled, define when disabled}.
+// Features not listed are run-time branches.
+const std::map<std::string, std::pair<const char*, const char*>> kDefines = {
+    // feature: {define when enabled, define when disabled}
+    {"EXACT", {"EXACT", nullptr}},
+    {"JITTER", {"JITTER", nullptr}},
+    {"SPOT", {nullptr, "LIGHTS_NO_SPOT"}},
+    {"COOKIE", {nullptr, "LIGHTS_NO_COOKIE"}},
+    {"SHADOW_MAPS_CUBE", {nullptr, "SHADOW_NO_CUBE"}},
+    {"SHADOW_MAPS_2D", {nullptr, "SHADOW_NO_2D"}},
+};
+
 class RaymarchTechnique final : public Technique {
 public:
     RaymarchTechnique() {
@@ -102,6 +114,11 @@ public:
         const bool maps2D = hasSpot || render::hasLightOfType(scene, scene::LightType::Directional);
         p.features.push_back({"SHADOW_MAPS_2D", maps2D,
                               maps2D ? "spot / directional lights" : "no spot or directional light"});
+        for (FeaturePlan& f : p.features) {
+            const auto it = kDefines.find(f.feature);
+            const char* define = it == kDefines.end() ? nullptr : (f.enabled ? it->second.first : it->second.second);
+            if (define) f.why += std::string(f.enabled ? " (compiled in: " : " (compiled out: ") + define + ")";
+        }
         return p;
     }
 
@@ -197,15 +214,6 @@ private:
     // an enabled EXACT / JITTER adds its define, a disabled light or shadow feature adds the define that
     // leaves its code out (shaders/common/lights.glsl, shadow_map.glsl).
     const gl::Program& marchProgram(const Plan& plan) {
-        static const std::map<std::string, std::pair<const char*, const char*>> kDefines = {
-            // feature: {define when enabled, define when disabled}
-            {"EXACT", {"EXACT", nullptr}},
-            {"JITTER", {"JITTER", nullptr}},
-            {"SPOT", {nullptr, "LIGHTS_NO_SPOT"}},
-            {"COOKIE", {nullptr, "LIGHTS_NO_COOKIE"}},
-            {"SHADOW_MAPS_CUBE", {nullptr, "SHADOW_NO_CUBE"}},
-            {"SHADOW_MAPS_2D", {nullptr, "SHADOW_NO_2D"}},
-        };
         gl::ShaderDefines defines;
         std::string key;
         for (const FeaturePlan& f : plan.features) {
