@@ -1,10 +1,12 @@
 #include "cli_args.h"
 
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
 
 #include "core/error.h"
+#include "techniques/registry.h"
 
 namespace airlight {
 
@@ -48,7 +50,27 @@ void parseSetting(const std::string& text, viz::Settings& into) {
     if (eq == std::string::npos || eq == 0)
         throw InputError("--set expects name=value, got '" + text + "'");
     const std::string name = text.substr(0, eq);
-    into[name] = parseNumber(text.substr(eq + 1), "--set " + name);
+    const std::string value = text.substr(eq + 1);
+    // A word is a named value of a parameter of that name (ParamInfo::choices) in any technique.
+    if (!value.empty() && std::isalpha(static_cast<unsigned char>(value[0]))) {
+        std::string known;
+        for (const std::string& id : viz::techniqueIds()) {
+            const auto technique = viz::makeTechnique(id);
+            for (const viz::ParamInfo& p : technique->params()) {
+                if (p.name != name) continue;
+                for (std::size_t i = 0; i < p.choices.size(); ++i) {
+                    if (p.choices[i] == value) {
+                        into[name] = double(i);
+                        return;
+                    }
+                    known += (known.empty() ? "" : ", ") + p.choices[i];
+                }
+            }
+        }
+        if (!known.empty())
+            throw InputError("--set " + name + ": '" + value + "' is not one of " + known);
+    }
+    into[name] = parseNumber(value, "--set " + name);
 }
 
 }  // namespace airlight

@@ -1,5 +1,6 @@
 #version 450 core
-// slices/plane.frag: shades one sampling plane for one light (Mitchell 2004, "Light Shaft Pixel Shader").
+// slices/plane.frag: shades one sampling plane (Mitchell 2004, "Light Shaft Pixel Shader") for one spot
+// light, or for all unbounded lights (point, area-light VPLs, directional) at once.
 // PHYSICAL: the integrand of the project's airlight definition times the plane spacing along this
 // pixel's ray, sigma_s p(cos) E V exp(-sigma_t t) dt with dt = delta_s / dot(w, forward), so the sum over
 // planes is a midpoint rule of L_air. Otherwise the paper's artistic formula and constants.
@@ -15,17 +16,24 @@
 layout(binding = kFirstFreeTextureUnit) uniform sampler2D uDistance;  // Euclidean d per pixel
 layout(binding = kFirstFreeTextureUnit + 1) uniform sampler2D uNoise;  // tileable, r and g two noises
 
-uniform int uLight;           // index into gLights
+uniform int uLight;           // index into gLights, or -1: every unbounded light (see main)
+uniform int uLightCount;
+uniform int uBoxedDirectional;  // 1: directional lights are drawn boxed, one by one
 uniform vec3 uForward;
+uniform vec3 uRight;
+uniform vec3 uUp;
+uniform vec2 uSize;           // image size in pixels
+uniform float uTanHalf;       // tan(yfov / 2)
+uniform float uAspect;
 uniform float uSpacing;       // delta s, view depth between planes
 uniform float uSigmaS;
 uniform float uSigmaT;
 uniform float uG;
 uniform float uStoreScale;    // value -> stored value
-uniform vec3 uColor;          // artistic: the light's colour (no intensity)
 uniform float uArtisticUnits; // paper units per scene unit (the paper's constants assume its world)
 uniform float uFractionOfMaxShells;  // N / 100 (the paper's maximum of 100 planes)
 uniform float uAmbient;       // the paper's ambient term added to 1/r^2 (artistic: 0.35)
+uniform int uFalloff;         // artistic: 1 = ambient + 20000 / r^2, 0 = constant intensity
 uniform float uNoiseTiles;    // noise repeats per light-space unit square ([-1, 1]^2 -> 2 tiles)
 uniform vec4 uScroll;         // xy, zw: scroll offsets of the two noise layers (animated by time)
 uniform float uPlaneWeight;   // extra per-plane weight (distance-scaled plane count), 1 normally
@@ -33,15 +41,17 @@ uniform float uPlaneWeight;   // extra per-plane weight (distance-scaled plane c
 #ifdef COUNT_OUTSIDE
 layout(binding = 0, offset = 0) uniform atomic_uint uOutside;
 layout(binding = 0, offset = 4) uniform atomic_uint uShaded;
+uniform int uCountPass;
 #endif
 
-in vec3 vPosition;
+flat in float vDepth;  // s_i
 flat in int vPlane;
 layout(location = 0) out vec4 oColor;
 
 // Shadow term: nearest texel (the paper) or 3x3 percentage-closer filtering on the same map and bias.
 float visibility(GpuLight L, vec3 p) {
 #ifdef PCF
+    if (L.info.x != kLightSpot && L.info.x != kLightDirectional) return shadowVisibility(L, p);
     vec4 clip = L.shadowMatrix * vec4(p, 1.0);
     if (clip.w <= 0.0) return 1.0;
     vec2 ndc = clip.xy / clip.w;
@@ -63,46 +73,42 @@ float visibility(GpuLight L, vec3 p) {
 #endif
 }
 
-void main() {
-    GpuLight L = gLights[uLight];
-    vec3 p = vPosition;
-#ifdef COUNT_OUTSIDE
-    // Outside the light's frustum = outside its shadow map's clip volume.
-    vec4 lc = L.shadowMatrix * vec4(p, 1.0);
-    if (any(greaterThan(abs(lc.xyz), vec3(lc.w)))) atomicCounterIncrement(uOutside);
-    atomicCounterIncrement(uShaded);
-#endif
-    float t = length(p);
-    float d = texelFetch(uDistance, ivec2(gl_FragCoord.xy), 0).r;
-    // Beyond the first surface (or zfar) the ray has ended: the plane adds nothing there.
-    if (t > d) discard;
-    vec3 w = p / t;
-
-    bool directional = L.info.x == kLightDirectional;
+// One light's contribution at p on ray w (t along it), before the store scale.
+vec3 shade(GpuLight L, vec3 p, vec3 w, float t) {
+    int type = L.info.x;
+    bool directional = type == kLightDirectional;
+    bool spot = type == kLightSpot;
     vec3 dirFromLight = directional ? L.direction.xyz : normalize(p - L.position.xyz);
     float angular = 1.0;
 #ifdef SPOT_FALLOFF
-    if (!directional) angular = spotAttenuation(L, dirFromLight);
+    if (spot) angular = spotAttenuation(L, dirFromLight);
 #endif
     vec3 cookie = vec3(1.0);
 #ifdef COOKIE
-    if (!directional) cookie = spotCookie(L, dirFromLight);
+    if (spot) cookie = spotCookie(L, dirFromLight);
 #endif
+    // A VPL (one node of an area light) emits a cosine lobe around the emitter normal.
+    if (type == kLightVpl) angular = max(0.0, dot(L.direction.xyz, dirFromLight));
     float V = 1.0;
 #ifdef SHADOW
     V = visibility(L, p);
 #endif
-    // Noise: two tileable layers projected from the light (its clip space xy), scrolled apart.
-    float noise = 1.0;
+    // Noise: two tileable layers projected from the light (spot / directional: its shadow map's clip xy;
+    // point lights and VPLs: the eye-relative xz plane), scrolled apart.
 #ifdef NOISE
-    vec4 nc = L.shadowMatrix * vec4(p, 1.0);
-    vec2 luv = nc.xy / nc.w * (0.5 * uNoiseTiles);
+    vec2 luv;
+    if (spot || directional) {
+        vec4 nc = L.shadowMatrix * vec4(p, 1.0);
+        luv = nc.xy / nc.w * (0.5 * uNoiseTiles);
+    } else {
+        luv = p.xz * (0.1 * uNoiseTiles);
+    }
     float n1 = texture(uNoise, luv + uScroll.xy).r;
     float n2 = texture(uNoise, luv + uScroll.zw).g;
 #endif
 
-    vec3 value;
 #ifdef PHYSICAL
+    float noise = 1.0;
 #ifdef NOISE
     noise = 4.0 * n1 * n2;  // mean about 1: noise modulates the density, it does not dim the medium
 #endif
@@ -117,23 +123,70 @@ void main() {
         E = L.radiant.rgb * angular * cookie * (exp(-uSigmaT * sqrt(r2)) / max(r2, 1.0e-20));
     }
     float dt = uSpacing / dot(w, uForward);
-    value = (uSigmaS * noise * phaseHG(cosTheta, uG) * V * exp(-uSigmaT * t) * dt) * E;
+    return (uSigmaS * noise * phaseHG(cosTheta, uG) * V * exp(-uSigmaT * t) * dt) * E;
 #else
     // The paper's constants: compositeNoise 0.015 (0.05 n1 n2 with noise), atten = ambient + 20000 / r^2
-    // in the paper's units, scale = 9 / fFractionOfMaxShells; the cookie enters by its luminance.
+    // in the paper's units, scale = 9 / fFractionOfMaxShells; the cookie enters by its luminance. Colour:
+    // the light's, normalised to a maximum of 1 (no intensity).
     float compositeNoise = 0.015;
 #ifdef NOISE
     compositeNoise = n1 * n2 * 0.05;
 #endif
     float atten = 1.0;
-    if (!directional) {
+    if (!directional && uFalloff != 0) {
         vec3 ls = (p - L.position.xyz) * uArtisticUnits;
         atten = uAmbient + 20000.0 / dot(ls, ls);
     }
     float scale = 9.0 / uFractionOfMaxShells;
     float lum = dot(cookie, vec3(0.2126, 0.7152, 0.0722));
-    value = vec3(compositeNoise * lum * scale * atten * V * angular) * uColor;
+    vec3 colour = L.radiant.rgb / max(max(L.radiant.r, L.radiant.g), max(L.radiant.b, 1.0e-30));
+    return vec3(compositeNoise * lum * scale * atten * V * angular) * colour;
 #endif
+}
+
+void main() {
+    // The sample point is where this pixel's centre ray (scene::pixelRay: GL row 0 is the bottom, so
+    // ndc.y = 2 (y + 1/2) / H - 1) meets the plane dot(p, forward) = s_i. Computed per pixel rather than
+    // interpolated, so it does not depend on how clipping re-triangulated the quad.
+    vec2 ndc = 2.0 * gl_FragCoord.xy / uSize - 1.0;
+    vec3 w = normalize(uForward + (ndc.x * uTanHalf * uAspect) * uRight + (ndc.y * uTanHalf) * uUp);
+    float t = vDepth / dot(w, uForward);
+    vec3 p = t * w;
+#ifdef COUNT_OUTSIDE
+    // Outside the light's frustum = outside its shadow map's clip volume (uLight >= 0: a clipped light).
+    // Counted twice: by atomic counters in the normal pass, and by occlusion queries over extra passes
+    // with colour writes off (uCountPass 1: every fragment passes, 2: only those outside pass). p is
+    // exact, but a boundary fragment is allowed fp32 rounding (1e-4 of w) before it counts as outside.
+    bool outside = false;
+    if (uLight >= 0) {
+        vec4 lc = gLights[uLight].shadowMatrix * vec4(p, 1.0);
+        outside = lc.w <= 0.0 || any(greaterThan(abs(lc.xyz), vec3(lc.w * (1.0 + 1.0e-4))));
+    }
+    if (uCountPass == 1) { oColor = vec4(0.0); return; }
+    if (uCountPass == 2) {
+        if (!outside) discard;
+        oColor = vec4(0.0);
+        return;
+    }
+    if (outside) atomicCounterIncrement(uOutside);
+    atomicCounterIncrement(uShaded);
+#endif
+    float d = texelFetch(uDistance, ivec2(gl_FragCoord.xy), 0).r;
+    // Beyond the first surface (or zfar) the ray has ended: the plane adds nothing there.
+    if (t > d) discard;
+
+    vec3 value = vec3(0.0);
+    if (uLight >= 0) {
+        value = shade(gLights[uLight], p, w, t);
+    } else {
+        // Unbounded lights share one set of planes over the camera frustum: every light except spots
+        // (drawn clipped to their own frustum) and, with directional_box, directional lights.
+        for (int i = 0; i < uLightCount; ++i) {
+            GpuLight L = gLights[i];
+            if (L.info.x == kLightSpot || (uBoxedDirectional != 0 && L.info.x == kLightDirectional)) continue;
+            value += shade(L, p, w, t);
+        }
+    }
     value *= uPlaneWeight * uStoreScale;
 
 #ifdef CHANNEL_MASK

@@ -7,40 +7,15 @@
 #include <memory>
 #include <vector>
 
-#include "gl/gl_test_fixture.h"
+#include "technique_test_util.h"
 #include "scene/builtin_scenes.h"
 #include "techniques/registry.h"
 
 namespace {
 
-class RaymarchTest : public viz::gl::GlTest {
-protected:
-    static viz::FrameOutput render(const viz::scene::Scene& scene, const std::string& technique,
-                                   const viz::Settings& settings, int w, int h, int stopAfter = -1) {
-        auto t = viz::makeTechnique(technique);
-        viz::FrameInput in;
-        in.scene = &scene;
-        in.width = w;
-        in.height = h;
-        in.settings = viz::completeSettings(*t, settings);
-        in.stopAfterStage = stopAfter;
-        viz::FrameOutput out = t->run(in);
-        // Keep CPU copies only: GL names die with the technique.
-        for (auto& i : out.intermediates) i.glTexture = 0;
-        return out;
-    }
-};
+class RaymarchTest : public viz::testing::TechniqueTest {};
 
-// ||a - b||_2 / ||b||_2 over all pixels and channels.
-double relativeL2(const viz::Image& a, const viz::Image& b) {
-    double num = 0.0, den = 0.0;
-    for (std::size_t i = 0; i < b.pixels.size(); ++i) {
-        const double d = double(a.pixels[i]) - double(b.pixels[i]);
-        num += d * d;
-        den += double(b.pixels[i]) * double(b.pixels[i]);
-    }
-    return std::sqrt(num / den);
-}
+using viz::testing::relativeL2;
 
 }  // namespace
 

@@ -28,6 +28,8 @@ struct ParamInfo {
     double minValue = 0.0;
     double maxValue = 0.0;
     bool integer = true;
+    // Named values: choices[i] stands for the value i (e.g. weighting=physical); empty for plain numbers.
+    std::vector<std::string> choices{};
 };
 
 struct StageInfo {

@@ -3,14 +3,16 @@
 #include "core/error.h"
 #include "techniques/raymarch/raymarch.h"
 #include "techniques/reference/reference.h"
+#include "techniques/slices/slices.h"
 
 namespace viz {
 
-std::vector<std::string> techniqueIds() { return {"reference", "raymarch"}; }
+std::vector<std::string> techniqueIds() { return {"reference", "raymarch", "slices"}; }
 
 std::unique_ptr<Technique> makeTechnique(std::string_view id) {
     if (id == "reference") return makeReferenceTechnique();
     if (id == "raymarch") return makeRaymarchTechnique();
+    if (id == "slices") return makeSlicesTechnique();
     std::string known;
     for (const std::string& t : techniqueIds()) known += (known.empty() ? "" : ", ") + t;
     throw InputError("unknown technique '" + std::string(id) + "' (known: " + known + ")");

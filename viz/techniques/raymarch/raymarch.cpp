@@ -9,12 +9,9 @@
 #include "gl/program.h"
 #include "gl/stage_clock.h"
 #include "gl/texture.h"
-#include "render/compose.h"
-#include "render/gpu_lights.h"
-#include "render/gpu_scene.h"
+#include "render/host_device.h"
 #include "render/intermediates.h"
-#include "render/shadow_maps.h"
-#include "render/surface_pass.h"
+#include "render/scene_view.h"
 #include "scene/camera.h"
 
 namespace viz {
@@ -32,9 +29,6 @@ constexpr const char* kLitFraction = "raymarch.lit_fraction";
 constexpr const char* kFinal = "raymarch.final";
 
 enum StageIndex { kShadowMapsIndex = 0, kSurfaceIndex = 1, kMarchIndex = 2, kComposeIndex = 3 };
-
-// VPL cube maps are many (area_samples^2 of them): cap their size to keep memory in check.
-constexpr int kMaxVplShadowSize = 256;
 
 // Shader permutations of raymarch/march.comp: feature -> {define when enabled, define when disabled}.
 // Features not listed are run-time branches.
@@ -133,36 +127,15 @@ public:
 
         // ---- shadow maps (the scene upload is counted here: it is part of the technique's cost) ----
         clock.begin();
-        if (!mShadows) {
-            mShadows = std::make_unique<render::ShadowMaps>();
-            mSurface = std::make_unique<render::SurfacePass>();
-            mComposer = std::make_unique<render::Composer>();
-        }
-        // Geometry is uploaded once per scene; a camera move (the window) reuses it.
-        const std::size_t fingerprint = render::geometryFingerprint(scene);
-        if (mSceneSource != &scene || mSceneFingerprint != fingerprint || !mGpuScene) {
-            mGpuScene = std::make_unique<render::GpuScene>(scene);
-            mSceneSource = &scene;
-            mSceneFingerprint = fingerprint;
-        }
-        mLights = std::make_unique<render::GpuLights>(scene, scene.camera.position, int(s.at("area_samples")));
-        const int size = int(s.at("shadow_map"));
-        mShadows->build(*mGpuScene, *mLights, size, std::min(size, kMaxVplShadowSize));
+        mView.buildShadows(scene, int(s.at("shadow_map")), int(s.at("area_samples")), out.intermediates, "raymarch");
         out.timing.stages.push_back({kStageShadowMaps, clock.endMilliseconds()});
-        mShadows->publish(out.intermediates, "raymarch");
         out.lastStageRun = kShadowMapsIndex;
         if (stop == kShadowMapsIndex) return out;
 
         // ---- camera view ----
         clock.begin();
-        mSurface->run(*mGpuScene, *mLights, *mShadows, scene, input.width, input.height);
+        mView.renderSurface(scene, input.width, input.height, out.intermediates, "raymarch");
         out.timing.stages.push_back({kStageSurface, clock.endMilliseconds()});
-        out.intermediates.push_back(render::textureIntermediate(
-            kDistance, "Distance d", "Euclidean distance to the first surface along the pixel ray (zfar: sky)",
-            "scene units", ViewKind::Scalar, 0.0f, float(scene.camera.zfar), mSurface->distance()));
-        out.intermediates.push_back(render::textureIntermediate(
-            kSurface, "Surface radiance", "emission + Lambert with shadow maps, before the medium's attenuation",
-            "radiance", ViewKind::Color, 0.0f, 1.0f, mSurface->surfaceRadiance()));
         out.lastStageRun = kSurfaceIndex;
         if (stop == kSurfaceIndex) return out;
 
@@ -189,8 +162,7 @@ public:
 
         // ---- compose ----
         clock.begin();
-        mComposer->run(mSurface->surfaceRadiance(), mSurface->distance(), mAirlight,
-                      float(scene.medium.sigma_t()), mFinal);
+        mView.compose(scene, mAirlight, mFinal);
         out.timing.stages.push_back({kStageCompose, clock.endMilliseconds()});
         out.intermediates.push_back(render::textureIntermediate(kFinal, "Final", "surface * exp(-sigma_t d) + L_air",
                                                         "radiance", ViewKind::Color, 0.0f, 1.0f, mFinal));
@@ -243,14 +215,14 @@ private:
         program.set("uTanHalf", float(std::tan(cam.yfov * 0.5)));
         program.set("uAspect", float(scene::aspectOf(cam, input.width, input.height)));
         program.set("uSamples", int(s.at("samples")));
-        program.set("uLightCount", mLights->count());
+        program.set("uLightCount", mView.lights().count());
         program.set("uSigmaS", float(scene.medium.sigma_s));
         program.set("uSigmaT", float(scene.medium.sigma_t()));
         program.set("uG", float(scene.medium.g));
         program.set("uSeed", unsigned(s.at("seed")));
-        mLights->bind();
-        mShadows->bind();
-        mSurface->distance().bindUnit(render::hd::kFirstFreeTextureUnit);
+        mView.lights().bind();
+        mView.shadows().bind();
+        mView.surface().distance().bindUnit(render::hd::kFirstFreeTextureUnit);
         mAirlight.bindImage(0, GL_WRITE_ONLY);
         mLitFraction.bindImage(1, GL_WRITE_ONLY);
         const glm::ivec3 groups = gl::groupCount({input.width, input.height, 1}, program.workGroupSize());
@@ -260,14 +232,7 @@ private:
 
     std::vector<ParamInfo> mParams;
     std::vector<StageInfo> mStages;
-    const scene::Scene* mSceneSource = nullptr;
-    std::size_t mSceneFingerprint = 0;
-    std::unique_ptr<render::GpuScene> mGpuScene;
-    std::unique_ptr<render::GpuLights> mLights;
-    // Created at the first run(): their programs need a current GL context, listing the technique does not.
-    std::unique_ptr<render::ShadowMaps> mShadows;
-    std::unique_ptr<render::SurfacePass> mSurface;
-    std::unique_ptr<render::Composer> mComposer;
+    render::SceneViewPasses mView;
     gl::Program mMarch;
     std::string mProgramKey;
     gl::Texture mAirlight, mLitFraction, mFinal;

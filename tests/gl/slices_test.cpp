@@ -1,0 +1,328 @@
+// slices (Mitchell 2004) against the reference on `grate`, the precision lab, clipping, stepping plane by
+// plane, shader permutations, and a benchmark (DISABLED_: run with --gtest_also_run_disabled_tests).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "technique_test_util.h"
+#include "gl/readback.h"
+#include "scene/builtin_scenes.h"
+#include "techniques/registry.h"
+#include "techniques/slices/slice_geometry.h"
+
+namespace {
+
+class SlicesTest : public viz::testing::TechniqueTest {};
+
+using viz::testing::relativeL2;
+
+float maxValue(const viz::Image& a) { return *std::max_element(a.pixels.begin(), a.pixels.end()); }
+
+std::vector<std::string> split(const std::string& key) {
+    std::vector<std::string> out;
+    std::stringstream in(key);
+    for (std::string token; std::getline(in, token, ';');) out.push_back(token);
+    return out;
+}
+
+bool contains(const std::vector<std::string>& v, const std::string& s) {
+    return std::find(v.begin(), v.end(), s) != v.end();
+}
+
+std::string permutation(const viz::Plan& plan) {
+    for (const auto& f : plan.features)
+        if (f.feature == "PERMUTATION") return f.why;
+    ADD_FAILURE() << "plan has no PERMUTATION entry";
+    return {};
+}
+
+}  // namespace
+
+// The acceptance figure: physical weighting with float accumulation converges to the reference
+// on grate; at N = 512 the relative L2 error of L_air at 160x120 is below 5 %.
+TEST_F(SlicesTest, PhysicalWeightingConvergesToTheReferenceOnGrate) {
+    const viz::scene::Scene scene = viz::scene::makeBuiltinScene("grate");
+    const viz::FrameOutput reference = render(scene, "reference", {}, 160, 120);
+    ASSERT_FALSE(reference.airlight.empty());
+    std::vector<double> errors;
+    for (int n : {8, 32, 128, 512}) {
+        const viz::FrameOutput out =
+            render(scene, "slices", {{"planes", n}, {"weighting", 1}, {"accum", 3}, {"shadow_map", 2048}}, 160, 120);
+        ASSERT_EQ(out.airlight.pixels.size(), reference.airlight.pixels.size());
+        errors.push_back(relativeL2(out.airlight, reference.airlight));
+        std::printf("slices physical rgba32f planes=%4d: relative L2 = %.4f\n", n, errors.back());
+    }
+    for (std::size_t i = 1; i < errors.size(); ++i) EXPECT_LT(errors[i], errors[i - 1]) << "step " << i;
+    EXPECT_LT(errors.back(), 0.05);
+}
+
+// The paper's channel-mask trick: each RGBA8 channel holds a quarter of the planes, so each plane may be
+// stored 4x larger and loses less to 8-bit rounding. Measured against the reference at N = 256.
+TEST_F(SlicesTest, ChannelMaskRgba8HasALowerErrorThanPlainRgba8) {
+    const viz::scene::Scene scene = viz::scene::makeBuiltinScene("grate");
+    const viz::FrameOutput reference = render(scene, "reference", {}, 160, 120);
+    const viz::Settings base{{"planes", 256}, {"shadow_map", 2048}};
+    auto error = [&](int accum) {
+        viz::Settings s = base;
+        s["accum"] = accum;
+        return relativeL2(render(scene, "slices", s, 160, 120).airlight, reference.airlight);
+    };
+    const double e8 = error(0), eMask = error(1), e16 = error(2), e32 = error(3);
+    std::printf("planes=256 relative L2: rgba8 %.4f  rgba8-mask %.4f  rgba16f %.4f  rgba32f %.4f\n", e8, eMask,
+                e16, e32);
+    EXPECT_LT(eMask, e8);
+    EXPECT_LT(e32, eMask);
+}
+
+// With clip planes on, no shaded fragment lies outside the light frustum (atomic counter in the fragment
+// shader), fewer fragments are shaded, and the image is the same within float tolerance (the integrand is
+// zero outside the frustum anyway).
+TEST_F(SlicesTest, ClippingShadesNothingOutsideTheLightFrustum) {
+    const viz::scene::Scene scene = viz::scene::makeBuiltinScene("grate");
+    const viz::Settings base{{"planes", 64}, {"count_fragments", 1}};
+    viz::Settings on = base, off = base;
+    on["clip"] = 1;
+    off["clip"] = 0;
+    const viz::FrameOutput a = render(scene, "slices", on, 160, 120);
+    const viz::FrameOutput b = render(scene, "slices", off, 160, 120);
+    const viz::Intermediate* ca = find(a, "slices.fragments");
+    const viz::Intermediate* cb = find(b, "slices.fragments");
+    ASSERT_TRUE(ca && ca->image && cb && cb->image);
+    for (int row = 0; row < 2; ++row)
+        std::printf("fragments (%s): clip on %.0f (outside %.0f), clip off %.0f (outside %.0f)\n",
+                    row == 0 ? "occlusion query" : "atomic counters", ca->image->at(1, row), ca->image->at(0, row),
+                    cb->image->at(1, row), cb->image->at(0, row));
+    EXPECT_EQ(ca->image->at(0, 0), 0.0f);
+    EXPECT_GT(ca->image->at(1, 0), 0.0f);
+    EXPECT_GT(cb->image->at(0, 0), 0.0f) << "the unclipped planes must reach outside the frustum";
+    EXPECT_LT(ca->image->at(1, 0), cb->image->at(1, 0));
+    // Clipping re-triangulates the planes, so interpolated positions differ by fp32 rounding, which the
+    // 1/r^2 near the light amplifies: compare per value, relative.
+    const float scale = maxValue(b.airlight);
+    ASSERT_GT(scale, 0.0f);
+    double worst = 0.0;
+    for (std::size_t i = 0; i < a.airlight.pixels.size(); ++i) {
+        const double diff = std::abs(double(a.airlight.pixels[i]) - double(b.airlight.pixels[i]));
+        worst = std::max(worst, diff / std::max(double(b.airlight.pixels[i]), 1e-3 * double(scale)));
+    }
+    std::printf("clip on vs off: largest relative difference %.2e\n", worst);
+    EXPECT_LT(worst, 1e-4);
+}
+
+// Stepping: the accumulation after k planes equals the CPU sum of the single planes 1..k read back one
+// run at a time (each run draws the k farthest planes and publishes plane k alone).
+TEST_F(SlicesTest, AccumulationAfterKPlanesIsTheSumOfThePlanes) {
+    const viz::scene::Scene scene = viz::scene::makeBuiltinScene("grate");
+    constexpr int kPlanes = 24, kStep = 12;
+    const int planesStage = 2;
+    viz::Image sum;
+    for (int k = 1; k <= kStep; ++k) {
+        const viz::FrameOutput out = render(scene, "slices", {{"planes", kPlanes}, {"planes_drawn", k}}, 80, 60,
+                                            planesStage, {"slices.plane"});
+        const viz::Intermediate* plane = find(out, "slices.plane");
+        ASSERT_TRUE(plane && plane->image);
+        if (sum.empty()) sum = viz::Image(plane->image->width, plane->image->height, plane->image->channels);
+        for (std::size_t i = 0; i < sum.pixels.size(); ++i) sum.pixels[i] += plane->image->pixels[i];
+    }
+    const viz::FrameOutput out = render(scene, "slices", {{"planes", kPlanes}, {"planes_drawn", kStep}}, 80, 60,
+                                        planesStage, {"slices.accumulation"});
+    const viz::Intermediate* accum = find(out, "slices.accumulation");
+    ASSERT_TRUE(accum && accum->image);
+    ASSERT_EQ(accum->image->pixels.size(), sum.pixels.size());
+    const float scale = maxValue(sum);
+    ASSERT_GT(scale, 0.0f) << "the first planes must add light";
+    for (std::size_t i = 0; i < sum.pixels.size(); ++i)
+        ASSERT_NEAR(accum->image->pixels[i], sum.pixels[i], 1e-6f * scale) << "value " << i;
+    // And the accumulation grows with k: all N planes add more than the first kStep.
+    const viz::FrameOutput all =
+        render(scene, "slices", {{"planes", kPlanes}}, 80, 60, planesStage, {"slices.accumulation"});
+    const viz::Intermediate* full = find(all, "slices.accumulation");
+    ASSERT_TRUE(full && full->image);
+    double a = 0.0, b = 0.0;
+    for (float v : full->image->pixels) a += v;
+    for (float v : sum.pixels) b += v;
+    EXPECT_GT(a, b);
+}
+
+// A scene with no cookie and no noise compiles the plane shader without those terms; a scene with a
+// cookie and noise on compiles them in.
+TEST_F(SlicesTest, PermutationKeyLeavesOutUnusedTerms) {
+    auto technique = viz::makeTechnique("slices");
+    const viz::Settings defaults = viz::completeSettings(*technique, {});
+    const auto grate = split(permutation(technique->plan(viz::scene::makeBuiltinScene("grate"), defaults)));
+    EXPECT_FALSE(contains(grate, "COOKIE"));
+    EXPECT_FALSE(contains(grate, "NOISE"));
+    EXPECT_TRUE(contains(grate, "SPOT_FALLOFF"));
+    EXPECT_TRUE(contains(grate, "SHADOW"));
+    const viz::Settings noise = viz::completeSettings(*technique, {{"noise", 1}});
+    const auto glass = split(permutation(technique->plan(viz::scene::makeBuiltinScene("stained-glass"), noise)));
+    EXPECT_TRUE(contains(glass, "COOKIE"));
+    EXPECT_TRUE(contains(glass, "NOISE"));
+    // A directional-light scene has no spot falloff.
+    const auto colonnade = split(permutation(technique->plan(viz::scene::makeBuiltinScene("colonnade"), defaults)));
+    EXPECT_FALSE(contains(colonnade, "SPOT_FALLOFF"));
+    EXPECT_FALSE(contains(colonnade, "COOKIE"));
+}
+
+TEST_F(SlicesTest, StoppingAfterEachStagePublishesOnlyWhatExists) {
+    const viz::scene::Scene scene = viz::scene::makeBuiltinScene("grate");
+    auto technique = viz::makeTechnique("slices");
+    const auto& stages = technique->stages();
+    for (int s = 0; s < int(stages.size()); ++s) {
+        const viz::FrameOutput out = render(scene, "slices", {{"planes", 8}}, 32, 24, s);
+        EXPECT_EQ(out.lastStageRun, s);
+        EXPECT_EQ(out.timing.stages.size(), std::size_t(s + 1));
+        for (int later = s + 1; later < int(stages.size()); ++later)
+            for (const auto& id : stages[std::size_t(later)].intermediates)
+                for (const auto& i : out.intermediates) EXPECT_NE(i.id, id) << "stage " << s;
+        EXPECT_EQ(out.airlight.empty(), s < 3);
+        EXPECT_EQ(out.final.empty(), s < 4);
+    }
+}
+
+// Point lights have no frustum: they share unclipped planes over the camera frustum, and converge to the
+// reference like the spot does (grate with its spot turned into a point light at the same place).
+TEST_F(SlicesTest, PointLightsUseCameraFrustumPlanesAndConverge) {
+    viz::scene::Scene scene = viz::scene::makeBuiltinScene("grate");
+    scene.lights[0].type = viz::scene::LightType::Point;
+    auto technique = viz::makeTechnique("slices");
+    const viz::Plan plan = technique->plan(scene, viz::completeSettings(*technique, {}));
+    EXPECT_TRUE(plan.stages[2].runs);
+    const viz::FrameOutput reference = render(scene, "reference", {}, 160, 120);
+    std::vector<double> errors;
+    for (int n : {32, 128, 512}) {
+        const viz::FrameOutput out = render(scene, "slices", {{"planes", n}, {"shadow_map", 2048}}, 160, 120);
+        errors.push_back(relativeL2(out.airlight, reference.airlight));
+        std::printf("grate with a point light, slices planes=%3d: relative L2 = %.4f\n", n, errors.back());
+    }
+    for (std::size_t i = 1; i < errors.size(); ++i) EXPECT_LT(errors[i], errors[i - 1]) << "step " << i;
+}
+
+// Artistic weighting (the paper's constants), noise, cookie, PCF and blur all produce finite light.
+TEST_F(SlicesTest, ArtisticWeightingAndOptionalTermsGiveFiniteLight) {
+    const viz::scene::Scene scene = viz::scene::makeBuiltinScene("stained-glass");
+    for (const viz::Settings& s : std::vector<viz::Settings>{{{"weighting", 0}},
+                                                             {{"noise", 1}, {"time", 3}},
+                                                             {{"shadow", 2}, {"blur", 1}},
+                                                             {{"accum", 1}, {"blur", 1}}}) {
+        viz::Settings all = s;
+        all["planes"] = 32;
+        const viz::FrameOutput out = render(scene, "slices", all, 64, 48);
+        EXPECT_GT(maxValue(out.airlight), 0.0f);
+        for (float v : out.airlight.pixels) ASSERT_TRUE(std::isfinite(v));
+    }
+}
+
+// The planes' box bounds the frustum: every NDC corner maps inside [minXY, maxXY] x [near, far].
+TEST(SliceGeometry, BoxContainsTheFrustumCorners) {
+    const glm::dmat4 proj = glm::perspective(1.0, 1.0, 0.5, 10.0);
+    const glm::dmat4 view = glm::lookAt(glm::dvec3(0, 5, -3), glm::dvec3(0, 0, -3), glm::dvec3(0, 0, -1));
+    const glm::dmat4 m = proj * view;
+    const viz::CameraBasis basis{{0, 0, -1}, {1, 0, 0}, {0, 1, 0}};
+    const viz::PlaneRange r = viz::planeRange(m, basis, 0.05, 100.0, 10);
+    ASSERT_FALSE(r.empty);
+    EXPECT_NEAR(r.spacing * 10.0, r.far - r.near, 1e-12);
+    const glm::dmat4 inv = glm::inverse(m);
+    for (int c = 0; c < 8; ++c) {
+        glm::dvec4 p = inv * glm::dvec4(c & 1 ? 1 : -1, c & 2 ? 1 : -1, c & 4 ? 1 : -1, 1);
+        p /= p.w;
+        EXPECT_GE(p.x, r.minXY.x - 1e-9);
+        EXPECT_LE(p.x, r.maxXY.x + 1e-9);
+        EXPECT_GE(p.y, r.minXY.y - 1e-9);
+        EXPECT_LE(p.y, r.maxXY.y + 1e-9);
+        // Depth is cut to the camera's [znear, zfar]: the box covers the clamped corner depths.
+        const double depth = std::clamp(-p.z, 0.05, 100.0);
+        EXPECT_GE(depth, r.near - 1e-9);
+        EXPECT_LE(depth, r.far + 1e-9);
+    }
+}
+
+// Clipped plane polygons stay inside the frustum; unclipped ones reach outside it.
+TEST(SliceGeometry, ClippedPolygonsLieInsideTheFrustum) {
+    const glm::dmat4 m = glm::perspective(0.9, 1.0, 0.1, 12.0) *
+                         glm::lookAt(glm::dvec3(0, 5, -4), glm::dvec3(0, 0, -4), glm::dvec3(0, 0, -1));
+    const viz::CameraBasis basis{{0, 0, -1}, {1, 0, 0}, {0, 1, 0}};
+    const viz::PlaneRange r = viz::planeRange(m, basis, 0.05, 100.0, 16);
+    const auto planes = viz::frustumPlanes(m);
+    bool anyOutside = false;
+    for (bool clip : {true, false}) {
+        const auto polys = viz::planePolygons(r, basis, m, 16, clip);
+        ASSERT_EQ(polys.size(), 16u);
+        for (const auto& poly : polys)
+            for (const glm::dvec3& p : poly)
+                for (const glm::dvec4& pl : planes) {
+                    const double side = glm::dot(glm::dvec3(pl), p) + pl.w;
+                    if (clip) EXPECT_GE(side, -1e-9 * glm::length(glm::dvec3(pl)) * (1.0 + glm::length(p)));
+                    else anyOutside = anyOutside || side < 0.0;
+                }
+    }
+    EXPECT_TRUE(anyOutside);
+}
+
+TEST(SliceGeometry, DistanceScaledPlaneCount) {
+    EXPECT_EQ(viz::scaledPlaneCount(128, 5.0, 0.0, 8), 128);    // off
+    EXPECT_EQ(viz::scaledPlaneCount(128, 5.0, 10.0, 8), 128);   // nearer than the reference distance
+    EXPECT_EQ(viz::scaledPlaneCount(128, 20.0, 10.0, 8), 64);   // twice as far: half the planes
+    EXPECT_EQ(viz::scaledPlaneCount(128, 1e6, 10.0, 8), 8);     // floor
+    EXPECT_EQ(viz::scaledPlaneCount(4, 1e6, 10.0, 8), 4);       // never more than N
+}
+
+// Distance-scaled plane count: fewer planes, and the spacing-based weight keeps L_air of the same size.
+TEST_F(SlicesTest, DistanceScaledPlanesKeepTheLightLevel) {
+    // The camera pulled 12 m back: the light's box starts ~12 m away, so distance_scale = 3 gives ~N / 4.
+    viz::scene::Scene scene = viz::scene::makeBuiltinScene("grate");
+    scene.camera.position -= 12.0 * scene.camera.forward;
+    const viz::FrameOutput full = render(scene, "slices", {{"planes", 256}}, 80, 60);
+    const viz::FrameOutput fewer = render(scene, "slices", {{"planes", 256}, {"distance_scale", 3}}, 80, 60);
+    const viz::Intermediate* mesh = find(fewer, "slices.plane_mesh");
+    ASSERT_TRUE(mesh && mesh->image);
+    EXPECT_LT(mesh->image->height, 256);
+    double a = 0.0, b = 0.0;
+    for (float v : full.airlight.pixels) a += v;
+    for (float v : fewer.airlight.pixels) b += v;
+    std::printf("distance_scale=3: %d planes, total L_air %.4g vs %.4g with 256\n", mesh->image->height, b, a);
+    EXPECT_NEAR(b / a, 1.0, 0.1);
+}
+
+// Benchmark (never gates): time per frame and error against the reference for N = 16 .. 512 on grate
+// and colonnade, float accumulation, physical weighting. Run with --gtest_also_run_disabled_tests
+// --gtest_filter='*Benchmark*' in a RelWithDebInfo build.
+TEST_F(SlicesTest, DISABLED_Benchmark) {
+    for (const char* name : {"grate", "colonnade"}) {
+        const viz::scene::Scene scene = viz::scene::makeBuiltinScene(name);
+        const viz::FrameOutput reference = render(scene, "reference", {}, 160, 120);
+        // What the shared shadow maps allow: raymarch with many samples at the same map size.
+        const viz::FrameOutput march = render(scene, "raymarch", {{"samples", 1024}, {"shadow_map", 2048}}, 160, 120);
+        std::printf("bench %-9s raymarch samples=1024 relative L2 %.4f\n", name,
+                    relativeL2(march.airlight, reference.airlight));
+        for (int n : {16, 32, 64, 128, 256, 512}) {
+            // One technique per N: the first run compiles shaders and allocates; the best of 3 later runs counts.
+            auto t = viz::makeTechnique("slices");
+            viz::FrameInput in;
+            in.scene = &scene;
+            in.width = 160;
+            in.height = 120;
+            in.settings = viz::completeSettings(*t, {{"planes", n}, {"shadow_map", 2048}});
+            t->run(in);
+            double best = 1e30, planes = 1e30, err = 0.0;
+            for (int rep = 0; rep < 3; ++rep) {
+                const viz::FrameOutput out = t->run(in);
+                best = std::min(best, out.timing.totalMilliseconds());
+                for (const auto& st : out.timing.stages)
+                    if (st.stage == "slices.planes") planes = std::min(planes, st.milliseconds);
+                err = relativeL2(out.airlight, reference.airlight);
+            }
+            std::printf("bench %-9s planes=%3d total %7.1f ms  planes stage %7.1f ms  relative L2 %.4f\n", name, n,
+                        best, planes, err);
+        }
+    }
+}
+

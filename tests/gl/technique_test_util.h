@@ -1,0 +1,55 @@
+// Shared by the technique tests: run a technique headless to a stage and compare images.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "gl/gl_test_fixture.h"
+#include "gl/readback.h"
+#include "techniques/registry.h"
+
+namespace viz::testing {
+
+class TechniqueTest : public gl::GlTest {
+protected:
+    // Runs a technique; `keep` lists intermediates to read back before the technique (and its textures)
+    // goes away. Every other GL name in the result is cleared.
+    static FrameOutput render(const scene::Scene& scene, const std::string& technique, const Settings& settings,
+                              int w, int h, int stopAfter = -1, const std::vector<std::string>& keep = {}) {
+        auto t = makeTechnique(technique);
+        FrameInput in;
+        in.scene = &scene;
+        in.width = w;
+        in.height = h;
+        in.settings = completeSettings(*t, settings);
+        in.stopAfterStage = stopAfter;
+        FrameOutput out = t->run(in);
+        for (auto& i : out.intermediates) {
+            if (i.glTexture != 0 && std::find(keep.begin(), keep.end(), i.id) != keep.end())
+                i.image = std::make_shared<Image>(gl::readTexture(i.glTexture));
+            i.glTexture = 0;
+        }
+        return out;
+    }
+    static const Intermediate* find(const FrameOutput& out, const std::string& id) {
+        for (const auto& i : out.intermediates)
+            if (i.id == id) return &i;
+        return nullptr;
+    }
+};
+
+// ||a - b||_2 / ||b||_2 over all pixels and channels.
+inline double relativeL2(const Image& a, const Image& b) {
+    double num = 0.0, den = 0.0;
+    for (std::size_t i = 0; i < b.pixels.size(); ++i) {
+        const double d = double(a.pixels[i]) - double(b.pixels[i]);
+        num += d * d;
+        den += double(b.pixels[i]) * double(b.pixels[i]);
+    }
+    return std::sqrt(num / den);
+}
+
+}  // namespace viz::testing

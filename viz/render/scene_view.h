@@ -1,0 +1,51 @@
+// The passes every GPU technique starts and ends with: the scene on the GPU (uploaded once per scene and
+// reused when only the camera moves), its lights, their shadow maps, the camera view (distance d and the
+// surface radiance) and the final composite. A technique owns one and calls the stages it needs.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "debug/technique.h"
+#include "gl/texture.h"
+#include "render/compose.h"
+#include "render/gpu_lights.h"
+#include "render/gpu_scene.h"
+#include "render/shadow_maps.h"
+#include "render/surface_pass.h"
+#include "scene/scene.h"
+
+namespace viz::render {
+
+class SceneViewPasses {
+public:
+    // Uploads the geometry when the scene changed, lays out the lights (area lights as areaSamples^2
+    // VPLs), renders every shadow map and publishes them as prefix.shadow_map[.N].
+    void buildShadows(const scene::Scene& scene, int shadowMapSize, int areaSamples,
+                      std::vector<Intermediate>& out, const std::string& prefix);
+    // The camera view; publishes prefix.distance and prefix.surface.
+    void renderSurface(const scene::Scene& scene, int width, int height, std::vector<Intermediate>& out,
+                       const std::string& prefix);
+    // finalTarget = surface radiance * exp(-sigma_t d) + airlight.
+    void compose(const scene::Scene& scene, const gl::Texture& airlight, const gl::Texture& finalTarget);
+
+    const GpuScene& gpuScene() const { return *mGpuScene; }
+    const GpuLights& lights() const { return *mLights; }
+    const ShadowMaps& shadows() const { return *mShadows; }
+    const SurfacePass& surface() const { return *mSurface; }
+
+private:
+    void createPasses();
+
+    const scene::Scene* mSceneSource = nullptr;
+    std::size_t mSceneFingerprint = 0;
+    std::unique_ptr<GpuScene> mGpuScene;
+    std::unique_ptr<GpuLights> mLights;
+    // Created at first use: their programs need a current GL context, listing a technique does not.
+    std::unique_ptr<ShadowMaps> mShadows;
+    std::unique_ptr<SurfacePass> mSurface;
+    std::unique_ptr<Composer> mComposer;
+};
+
+}  // namespace viz::render

@@ -1,0 +1,110 @@
+// Where the sampling planes go (Mitchell 2004, "Positioning the Sampling Planes"): the view-space
+// axis-aligned bounding box of a light's frustum, cut to the camera's [znear, zfar] depth range. Plane i
+// of N sits at the midpoint of slab i, s_i = far - (i + 1/2) delta_s, delta_s = (far - near) / N.
+// View space here = eye-relative world projected on the camera basis: x along right, y along up, s (depth)
+// along forward. The light frustum is the clip volume of its shadow matrix (eye-relative world -> clip).
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace viz {
+
+struct CameraBasis {
+    glm::dvec3 forward, right, up;  // unit, world axes
+};
+
+struct PlaneRange {
+    bool empty = true;
+    glm::dvec2 minXY{0.0}, maxXY{0.0};  // box extent across the view (x: right, y: up)
+    double near = 0.0, far = 0.0;       // view depth range covered by the slabs
+    double spacing = 0.0;               // delta_s = (far - near) / N
+};
+
+// lightMatrix: eye-relative world -> the light's clip space; its inverse maps the 8 NDC cube corners to
+// the frustum's corners (a perspective frustum is the convex hull of its corners, so the box of the corners
+// bounds it).
+inline PlaneRange planeRange(const glm::dmat4& lightMatrix, const CameraBasis& basis, double znear, double zfar,
+                             int planes) {
+    const glm::dmat4 inv = glm::inverse(lightMatrix);
+    PlaneRange r;
+    glm::dvec3 lo(std::numeric_limits<double>::max()), hi(std::numeric_limits<double>::lowest());
+    for (int corner = 0; corner < 8; ++corner) {
+        const glm::dvec4 ndc((corner & 1) ? 1.0 : -1.0, (corner & 2) ? 1.0 : -1.0, (corner & 4) ? 1.0 : -1.0, 1.0);
+        glm::dvec4 p = inv * ndc;
+        p /= p.w;
+        const glm::dvec3 v(glm::dot(glm::dvec3(p), basis.right), glm::dot(glm::dvec3(p), basis.up),
+                           glm::dot(glm::dvec3(p), basis.forward));
+        lo = glm::min(lo, v);
+        hi = glm::max(hi, v);
+    }
+    // Planes nearer than znear would be clipped by the camera; beyond zfar every ray has ended (t >= s).
+    r.near = std::max(lo.z, znear);
+    r.far = std::min(hi.z, zfar);
+    if (!(r.far > r.near) || planes < 1) return r;
+    r.empty = false;
+    r.minXY = glm::dvec2(lo.x, lo.y);
+    r.maxXY = glm::dvec2(hi.x, hi.y);
+    r.spacing = (r.far - r.near) / double(planes);
+    return r;
+}
+
+// Plane count scaled down with the eye's distance from the light volume (Mitchell 2004, "Efficiency"):
+// N' = clamp(round(N * referenceDistance / distance), minPlanes, N); referenceDistance <= 0 keeps N. The
+// per-plane weight compensates by itself: the physical weight uses the spacing (far - near) / N', and the
+// artistic scale 9 / (N' / 100) uses N'.
+inline int scaledPlaneCount(int planes, double distance, double referenceDistance, int minPlanes) {
+    if (referenceDistance <= 0.0 || distance <= referenceDistance) return planes;
+    const int scaled = int(std::lround(double(planes) * referenceDistance / distance));
+    return std::clamp(scaled, std::min(minPlanes, planes), planes);
+}
+
+// The frustum's six planes in eye-relative world space as (n, c) with dot(n, p) + c >= 0 inside: the
+// rows of the clip matrix combined as w + x, w - x, w + y, w - y, w + z, w - z (the same sums the vertex
+// shader writes to gl_ClipDistance).
+inline std::array<glm::dvec4, 6> frustumPlanes(const glm::dmat4& m) {
+    const glm::dmat4 t = glm::transpose(m);  // t[i] = row i of m
+    return {t[3] + t[0], t[3] - t[0], t[3] + t[1], t[3] - t[1], t[3] + t[2], t[3] - t[2]};
+}
+
+// Sutherland-Hodgman: the part of a convex polygon with dot(plane, (p, 1)) >= 0.
+inline std::vector<glm::dvec3> clipPolygon(const std::vector<glm::dvec3>& poly, const glm::dvec4& plane) {
+    std::vector<glm::dvec3> out;
+    for (std::size_t i = 0; i < poly.size(); ++i) {
+        const glm::dvec3& a = poly[i];
+        const glm::dvec3& b = poly[(i + 1) % poly.size()];
+        const double da = glm::dot(glm::dvec3(plane), a) + plane.w;
+        const double db = glm::dot(glm::dvec3(plane), b) + plane.w;
+        if (da >= 0.0) out.push_back(a);
+        if ((da >= 0.0) != (db >= 0.0)) out.push_back(a + (b - a) * (da / (da - db)));
+    }
+    return out;
+}
+
+// The sampling planes as the debugger shows them from outside: plane i's quad (eye-relative world,
+// corners in the vertex shader's order) clipped to the frustum when `clip` is set. Empty when clipped away.
+inline std::vector<std::vector<glm::dvec3>> planePolygons(const PlaneRange& r, const CameraBasis& basis,
+                                                          const glm::dmat4& lightMatrix, int planes, bool clip) {
+    std::vector<std::vector<glm::dvec3>> out;
+    if (r.empty) return out;
+    const auto frustum = frustumPlanes(lightMatrix);
+    for (int i = 0; i < planes; ++i) {
+        const double s = r.far - (double(i) + 0.5) * r.spacing;
+        std::vector<glm::dvec3> poly;
+        for (const glm::dvec2 c : {glm::dvec2(0, 0), glm::dvec2(1, 0), glm::dvec2(1, 1), glm::dvec2(0, 1)}) {
+            const glm::dvec2 xy = r.minXY + (r.maxXY - r.minXY) * c;
+            poly.push_back(xy.x * basis.right + xy.y * basis.up + s * basis.forward);
+        }
+        if (clip)
+            for (const glm::dvec4& plane : frustum) poly = clipPolygon(poly, plane);
+        out.push_back(poly);
+    }
+    return out;
+}
+
+}  // namespace viz

@@ -1,0 +1,628 @@
+#include "techniques/slices/slices.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "gl/buffer.h"
+#include "gl/framebuffer.h"
+#include "gl/program.h"
+#include "gl/stage_clock.h"
+#include "gl/texture.h"
+#include "gl/vertex_array.h"
+#include "render/compose.h"
+#include "render/eye_space.h"
+#include "render/gpu_lights.h"
+#include "render/gpu_scene.h"
+#include "render/intermediates.h"
+#include "render/scene_view.h"
+#include "render/shadow_maps.h"
+#include "render/surface_pass.h"
+#include "scene/camera.h"
+#include "techniques/slices/slice_geometry.h"
+
+namespace viz {
+namespace {
+
+// ---- ids (stable: lessons and tests use them) ----
+constexpr const char* kStageShadowMaps = "slices.shadow_maps";
+constexpr const char* kStageSurface = "slices.surface";
+constexpr const char* kStagePlanes = "slices.planes";
+constexpr const char* kStageResolve = "slices.resolve";
+constexpr const char* kStageCompose = "slices.compose";
+constexpr const char* kDistance = "slices.distance";
+constexpr const char* kSurface = "slices.surface";
+constexpr const char* kNoise = "slices.noise";
+constexpr const char* kCookies = "slices.cookie";
+constexpr const char* kAccum = "slices.accumulation";
+constexpr const char* kPlane = "slices.plane";
+constexpr const char* kFragments = "slices.fragments";
+constexpr const char* kPlaneMesh = "slices.plane_mesh";
+constexpr const char* kAirlight = "slices.airlight";
+constexpr const char* kFinal = "slices.final";
+
+enum StageIndex { kShadowMapsIndex = 0, kSurfaceIndex, kPlanesIndex, kResolveIndex, kComposeIndex };
+
+// The paper's example draws at most 100 planes; its per-plane scale is 9 / (N / 100).
+constexpr double kPaperMaxPlanes = 100.0;
+constexpr double kPaperAmbient = 0.35;
+constexpr int kNoiseSize = 64;
+// distance_scale never goes below this many planes.
+constexpr int kMinScaledPlanes = 8;
+
+
+// Deterministic integer hash -> [0, 1).
+float hashUnit(std::uint32_t x, std::uint32_t y, std::uint32_t seed) {
+    std::uint32_t h = x * 0x8da6b343u ^ y * 0xd8163841u ^ seed * 0xcb1ab31fu;
+    h ^= h >> 13;
+    h *= 0x5bd1e995u;
+    h ^= h >> 15;
+    return float(h >> 8) * (1.0f / 16777216.0f);
+}
+
+// Tileable value noise (period = size): two octaves of smoothly interpolated lattice values on periodic
+// lattices of 8 and 16 cells. Channel r and g use different seeds (the paper's two noise maps in one texture).
+std::vector<std::uint8_t> makeNoise(int size) {
+    std::vector<std::uint8_t> rg(std::size_t(size * size * 2));
+    auto octave = [&](int x, int y, int cells, std::uint32_t seed) {
+        const float fx = float(x) * float(cells) / float(size), fy = float(y) * float(cells) / float(size);
+        const int x0 = int(std::floor(fx)), y0 = int(std::floor(fy));
+        float ax = fx - float(x0), ay = fy - float(y0);
+        ax = ax * ax * (3.0f - 2.0f * ax);
+        ay = ay * ay * (3.0f - 2.0f * ay);
+        auto v = [&](int i, int j) {
+            return hashUnit(std::uint32_t((i % cells + cells) % cells), std::uint32_t((j % cells + cells) % cells), seed);
+        };
+        const float a = v(x0, y0) + (v(x0 + 1, y0) - v(x0, y0)) * ax;
+        const float b = v(x0, y0 + 1) + (v(x0 + 1, y0 + 1) - v(x0, y0 + 1)) * ax;
+        return a + (b - a) * ay;
+    };
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x)
+            for (int c = 0; c < 2; ++c) {
+                const std::uint32_t seed = std::uint32_t(17 + 101 * c);
+                const float n = 0.65f * octave(x, y, 8, seed) + 0.35f * octave(x, y, 16, seed + 7);
+                rg[std::size_t((y * size + x) * 2 + c)] = std::uint8_t(std::clamp(n, 0.0f, 1.0f) * 255.0f + 0.5f);
+            }
+    return rg;
+}
+
+struct Terms {
+    bool physical = true;
+    bool spot = false, cookie = false, shadow = false, pcf = false, noise = false;
+    bool mask = false, blur = false, clip = true, userClip = false, count = false, cubes = false;
+};
+
+class SlicesTechnique final : public Technique {
+public:
+    SlicesTechnique() {
+        mParams = {
+            {"planes", "N, sampling planes per light (substeps of the planes stage)", 128, 1, 4096, true},
+            {"planes_drawn", "draw only the k farthest planes (stepping, 1..N); 0: all", 0, 0, 4096, true},
+            {"weighting", "artistic (0: the paper's formula and constants) or physical (1: converges to reference)",
+             1, 0, 1, true, {"artistic", "physical"}},
+            {"accum", "accumulation target: rgba8 (0), rgba8-mask (1: channel mask), rgba16f (2), rgba32f (3)", 3, 0,
+             3, true, {"rgba8", "rgba8-mask", "rgba16f", "rgba32f"}},
+            {"accum_range", "value stored as 1.0 in the 8-bit targets (rgba8-mask: per channel, x4 finer)", 2.0,
+             1e-6, 1e6, false},
+            {"shadow_map", "shadow-map size in texels per side", 1024, 16, 8192, true},
+            {"area_samples", "virtual point lights per axis of each area light (Gauss-Legendre nodes)", 4, 1, 16,
+             true},
+            {"shadow", "shadow-map test: 0 off, 1 nearest texel (the paper), 2 3x3 PCF", 1, 0, 2, true},
+            {"spot_falloff", "1: spot angular attenuation A_spot", 1, 0, 1, true},
+            {"cookie", "1: project the spot's cookie (when it has one)", 1, 0, 1, true},
+            {"noise", "1: two scrolling tiled noise layers modulate the density", 0, 0, 1, true},
+            {"noise_tiles", "noise repeats across the light's frustum", 2, 0.01, 100, false},
+            {"time", "seconds: scrolls the noise layers", 0, 0, 1e6, false},
+            {"falloff", "artistic: 1/d^2 falloff on (0: constant intensity)", 1, 0, 1, true},
+            {"ambient", "artistic: add the paper's ambient term 0.35 to 1/d^2", 1, 0, 1, true},
+            {"artistic_units", "artistic: paper units per scene unit in 20000/d^2", 100, 1e-6, 1e6, false},
+            {"blur", "1: the paper's small blur on composite (3x3 tent)", 0, 0, 1, true},
+            {"clip", "1: clip the planes to the light frustum with gl_ClipDistance", 1, 0, 1, true},
+            {"user_clip", "1: also clip with the user planes y >= clip_y_min and y <= clip_y_max (world)", 0, 0, 1,
+             true},
+            {"clip_y_min", "user floor plane height (world y)", 0, -1e6, 1e6, false},
+            {"clip_y_max", "user ceiling / window plane height (world y)", 1e6, -1e6, 1e6, false},
+            {"directional_box", "1: a directional light's planes fill and are clipped to its shadow map's box "
+             "(misses lit air outside it); 0: the camera frustum up to zfar", 0, 0, 1, true},
+            {"distance_scale", "reference distance: beyond it N shrinks as reference / distance (min 8); 0: off", 0,
+             0, 1e6, false},
+            {"count_fragments", "1: count shaded fragments and those outside the light frustum (atomic counter)",
+             0, 0, 1, true},
+        };
+        mStages = {
+            {kStageShadowMaps, "Shadow maps", "every light's shadow map (linear distance)", {"shadow_map", "area_samples"},
+             {"slices.shadow_map", kCookies, kNoise}, 1},
+            {kStageSurface, "Camera view", "distance d to the first surface and the unattenuated surface radiance",
+             {}, {kDistance, kSurface}, 1},
+            {kStagePlanes, "Sampling planes",
+             "N view-aligned planes per light, clipped to its frustum, added back to front",
+             {"planes", "planes_drawn", "weighting", "accum", "accum_range", "shadow", "spot_falloff", "cookie",
+              "noise", "noise_tiles", "time", "falloff", "ambient", "artistic_units", "clip", "user_clip",
+              "clip_y_min", "clip_y_max", "directional_box", "distance_scale", "count_fragments"},
+             {kAccum, kPlane, kPlaneMesh, kFragments}, 128},
+            {kStageResolve, "Resolve", "accumulation -> L_air: undo the 8-bit scale, sum the mask channels, blur",
+             {"blur"}, {kAirlight}, 1},
+            {kStageCompose, "Compose", "final = surface * exp(-sigma_t d) + L_air", {}, {kFinal}, 1},
+        };
+    }
+
+    std::string id() const override { return "slices"; }
+    std::string description() const override {
+        return "Mitchell 2004: view-aligned sampling planes through the light frustum, additively blended";
+    }
+    const std::vector<StageInfo>& stages() const override { return mStages; }
+    const std::vector<ParamInfo>& params() const override { return mParams; }
+    bool needsGl() const override { return true; }
+
+    Plan plan(const scene::Scene& scene, const Settings& s) const override {
+        Plan p;
+        for (const StageInfo& st : mStages) p.stages.push_back({st.id, true, ""});
+        const bool hasSpot = render::hasLightOfType(scene, scene::LightType::Spot);
+        const bool hasDir = render::hasLightOfType(scene, scene::LightType::Directional);
+        const bool hasOther = render::hasLightOfType(scene, scene::LightType::Point) || render::hasLightOfType(scene, scene::LightType::Area);
+        if (scene.medium.sigma_s == 0.0) {
+            p.stages[kPlanesIndex].runs = false;
+            p.stages[kPlanesIndex].why = "sigma_s = 0: the medium scatters nothing, L_air = 0";
+        } else if (scene.lights.empty()) {
+            p.stages[kPlanesIndex].runs = false;
+            p.stages[kPlanesIndex].why = "no light: L_air = 0";
+        }
+        const bool boxedDir = s.at("directional_box") != 0.0;
+        const bool unbounded = hasOther || (hasDir && !boxedDir);
+        p.features.push_back({"UNBOUNDED_PLANES", unbounded,
+                              unbounded ? "point / area (VPL) / directional lights share N unclipped planes over "
+                                          "the camera frustum to zfar (no light frustum bounds their light)"
+                                        : "only spot (or boxed directional) lights: planes in each light's frustum"});
+        const Terms t = terms(scene, s);
+        p.features.push_back({"PHYSICAL", t.physical,
+                              t.physical ? "weight = integrand of L_air x plane spacing along the ray"
+                                         : "weighting=0: the paper's artistic formula and constants"});
+        p.features.push_back({"SPOT_FALLOFF", t.spot,
+                              t.spot ? "A_spot (KHR angular attenuation)"
+                                     : (hasSpot ? "spot_falloff=0" : "no spot light in the scene")});
+        const bool hasCookie = std::any_of(scene.lights.begin(), scene.lights.end(), [](const scene::Light& l) {
+            return l.type == scene::LightType::Spot && l.cookie >= 0;
+        });
+        p.features.push_back({"COOKIE", t.cookie,
+                              t.cookie ? "cookie texture projected over the outer cone"
+                                       : (hasCookie ? "cookie=0" : "no spot light has a cookie")});
+        p.features.push_back({"SHADOW", t.shadow, t.shadow ? "shadow-map test per plane sample" : "shadow=0"});
+        p.features.push_back({"PCF", t.pcf, t.pcf ? "3x3 percentage-closer filtering"
+                                                  : "nearest texel (the paper's pick-nearest)"});
+        p.features.push_back({"NOISE", t.noise, t.noise ? "two scrolling tiled noise layers" : "noise=0"});
+        p.features.push_back({"CHANNEL_MASK", t.mask,
+                              t.mask ? "plane i -> channel i mod 4 of an RGBA8 target; monochrome light colour"
+                                     : "accum is not rgba8-mask"});
+        p.features.push_back({"BLUR", t.blur, t.blur ? "3x3 tent on composite" : "blur=0"});
+        p.features.push_back({"CLIP", t.clip, t.clip ? "gl_ClipDistance against the light frustum's 6 planes"
+                                                     : "clip=0: whole planes over the frustum's bounding box"});
+        if (hasDir) {
+            const bool box = s.at("directional_box") != 0.0;
+            p.features.push_back({"DIRECTIONAL_BOX", box,
+                                  box ? "directional planes fill and are clipped to the shadow map's box"
+                                      : "a directional light lights all space: planes fill the camera frustum to "
+                                        "zfar, no frustum clipping"});
+        }
+        const bool scaled = s.at("distance_scale") > 0.0;
+        p.features.push_back({"DISTANCE_SCALED_PLANES", scaled,
+                              scaled ? "N shrinks beyond distance_scale from the light volume (spacing compensates)"
+                                     : "distance_scale=0: always N planes"});
+        p.features.push_back({"USER_CLIP", t.userClip, t.userClip ? "planes y >= clip_y_min, y <= clip_y_max"
+                                                                 : "user_clip=0"});
+        p.features.push_back({"PERMUTATION", true, permutationKey(t)});
+        return p;
+    }
+
+    FrameOutput run(const FrameInput& input) override {
+        const scene::Scene& scene = *input.scene;
+        const Settings& s = input.settings;
+        FrameOutput out;
+        out.plan = plan(scene, s);
+        out.timing.clock = gl::StageClock::method();
+        const int stop = input.stopAfterStage < 0 ? kComposeIndex : input.stopAfterStage;
+        gl::StageClock clock;
+
+        // ---- shadow maps ----
+        clock.begin();
+        if (!mTriangle) {
+            mTriangle = std::make_unique<render::FullscreenTriangle>();
+            mVao = gl::VertexArray::create("slices.planes_vao");
+            mFramebuffer = gl::Framebuffer::create("slices.fbo");
+            mCounters = gl::Buffer::create({.bytes = 8, .label = "slices.fragment_counters"});
+            const std::vector<std::uint8_t> noise = makeNoise(kNoiseSize);
+            mNoise = gl::Texture::create(
+                {.target = GL_TEXTURE_2D, .format = GL_RG8, .size = {kNoiseSize, kNoiseSize, 1}, .label = kNoise});
+            mNoise.upload(GL_RG, GL_UNSIGNED_BYTE, noise.data());
+            mNoise.setFilter(GL_LINEAR, GL_LINEAR);
+            mNoise.setWrap(GL_REPEAT);
+        }
+        mView.buildShadows(scene, int(s.at("shadow_map")), int(s.at("area_samples")), out.intermediates, "slices");
+        out.timing.stages.push_back({kStageShadowMaps, clock.endMilliseconds()});
+        out.intermediates.push_back(render::textureIntermediate(kCookies, "Cookies", "spot cookie textures (sRGB bytes), one layer per cookie", "",
+                                                        ViewKind::Color, 0.0f, 1.0f, mView.lights().cookies()));
+        out.intermediates.push_back(render::textureIntermediate(
+            kNoise, "Noise", "two tileable value-noise layers (r, g), generated, projected from the light", "",
+            ViewKind::Color, 0.0f, 1.0f, mNoise));
+        out.lastStageRun = kShadowMapsIndex;
+        if (stop == kShadowMapsIndex) return out;
+
+        // ---- camera view ----
+        clock.begin();
+        mView.renderSurface(scene, input.width, input.height, out.intermediates, "slices");
+        out.timing.stages.push_back({kStageSurface, clock.endMilliseconds()});
+        out.lastStageRun = kSurfaceIndex;
+        if (stop == kSurfaceIndex) return out;
+
+        // ---- sampling planes ----
+        clock.begin();
+        const Terms t = terms(scene, s);
+        allocateTargets(input.width, input.height, SlicesAccum(int(s.at("accum"))));
+        const float zero[4] = {0, 0, 0, 0};
+        glClearTexImage(mAccum.id(), 0, GL_RGBA, GL_FLOAT, zero);
+        glClearTexImage(mPlane.id(), 0, GL_RGBA, GL_FLOAT, zero);
+        mCounters.clearZero();
+        mQueryCounts[0] = mQueryCounts[1] = 0.0;
+        mPlanesUsed.clear();
+        mPolygons.clear();
+        if (out.plan.stages[kPlanesIndex].runs) drawPlanes(scene, input, t);
+        out.timing.stages.push_back({kStagePlanes, clock.endMilliseconds()});
+        const int n = mPlanesUsed.empty() ? int(s.at("planes")) : mPlanesUsed.front();
+        const int drawn = s.at("planes_drawn") > 0 ? std::min(n, int(s.at("planes_drawn"))) : n;
+        out.intermediates.push_back(render::textureIntermediate(
+            kAccum, "Accumulation after " + std::to_string(drawn) + " of " + std::to_string(n) + " planes",
+            t.mask ? "plane i added to channel i mod 4 (r, g, b, a), times the store scale"
+                   : "sum of the planes drawn so far (back to front), times the store scale",
+            "stored value", ViewKind::Color, 0.0f, 1.0f, mAccum));
+        out.intermediates.push_back(render::textureIntermediate(
+            kPlane, "Plane " + std::to_string(drawn), "the last plane drawn alone (every light), float",
+            "stored value", ViewKind::Color, 0.0f, 0.05f, mPlane));
+        out.intermediates.push_back(polygonIntermediate());
+        if (t.count) {
+            std::uint32_t counts[2] = {0, 0};
+            mCounters.download(0, sizeof(counts), counts);
+            auto img = std::make_shared<Image>(2, 2, 1);
+            img->at(0, 0) = float(mQueryCounts[0]);
+            img->at(1, 0) = float(mQueryCounts[1]);
+            img->at(0, 1) = float(counts[0]);
+            img->at(1, 1) = float(counts[1]);
+            Intermediate i;
+            i.id = kFragments, i.label = "Fragment counts";
+            i.note = "x = 0: fragments outside the light frustum, x = 1: all fragments; row 0 by occlusion "
+                     "query, row 1 by atomic counters";
+            i.kind = ViewKind::Buffer;
+            i.image = img;
+            i.extent = {2, 2, 1};
+            out.intermediates.push_back(i);
+        }
+        out.lastStageRun = kPlanesIndex;
+        if (stop == kPlanesIndex) return out;
+
+        // ---- resolve ----
+        clock.begin();
+        resolve(t);
+        out.timing.stages.push_back({kStageResolve, clock.endMilliseconds()});
+        out.intermediates.push_back(render::textureIntermediate(
+            kAirlight, "L_air", "single-scattered light reaching the eye, decoded from the accumulation",
+            "radiance", ViewKind::Color, 0.0f, 1.0f, mAirlight));
+        out.airlight = render::readRgb(mAirlight);
+        out.lastStageRun = kResolveIndex;
+        if (stop == kResolveIndex) return out;
+
+        // ---- compose ----
+        clock.begin();
+        mView.compose(scene, mAirlight, mFinal);
+        out.timing.stages.push_back({kStageCompose, clock.endMilliseconds()});
+        out.intermediates.push_back(render::textureIntermediate(kFinal, "Final", "surface * exp(-sigma_t d) + L_air",
+                                                        "radiance", ViewKind::Color, 0.0f, 1.0f, mFinal));
+        out.final = render::readRgb(mFinal);
+        out.lastStageRun = kComposeIndex;
+        return out;
+    }
+
+private:
+    static Terms terms(const scene::Scene& scene, const Settings& s) {
+        Terms t;
+        const bool hasSpot = render::hasLightOfType(scene, scene::LightType::Spot);
+        const bool hasCookie = std::any_of(scene.lights.begin(), scene.lights.end(), [](const scene::Light& l) {
+            return l.type == scene::LightType::Spot && l.cookie >= 0;
+        });
+        t.physical = s.at("weighting") != 0.0;
+        t.spot = hasSpot && s.at("spot_falloff") != 0.0;
+        t.cookie = hasCookie && s.at("cookie") != 0.0;
+        t.shadow = s.at("shadow") != 0.0;
+        t.pcf = s.at("shadow") == 2.0;
+        t.noise = s.at("noise") != 0.0;
+        t.mask = SlicesAccum(int(s.at("accum"))) == SlicesAccum::Rgba8Mask;
+        t.blur = s.at("blur") != 0.0;
+        t.clip = s.at("clip") != 0.0;
+        t.userClip = s.at("user_clip") != 0.0;
+        t.count = s.at("count_fragments") != 0.0;
+        t.cubes = render::hasLightOfType(scene, scene::LightType::Point) ||
+                  render::hasLightOfType(scene, scene::LightType::Area);
+        return t;
+    }
+
+    // The defines of the plane shader, in a fixed order: also the cache key and what plan() reports.
+    static gl::ShaderDefines planeDefines(const Terms& t) {
+        gl::ShaderDefines d;
+        if (t.physical) d.push_back({"PHYSICAL", "1"});
+        if (t.spot) d.push_back({"SPOT_FALLOFF", "1"});
+        if (t.cookie) d.push_back({"COOKIE", "1"});
+        else d.push_back({"LIGHTS_NO_COOKIE", "1"});
+        if (t.shadow) d.push_back({"SHADOW", "1"});
+        if (t.pcf) d.push_back({"PCF", "1"});
+        if (t.noise) d.push_back({"NOISE", "1"});
+        if (t.mask) d.push_back({"CHANNEL_MASK", "1"});
+        if (t.count) d.push_back({"COUNT_OUTSIDE", "1"});
+        if (t.clip) d.push_back({"CLIP", "1"});
+        if (t.userClip) d.push_back({"USER_CLIP", "1"});
+        // Cube maps serve point lights and area-light VPLs only.
+        if (!t.cubes) d.push_back({"SHADOW_NO_CUBE", "1"});
+        return d;
+    }
+    static std::string permutationKey(const Terms& t) {
+        std::string key;
+        for (const auto& [name, value] : planeDefines(t)) key += (key.empty() ? "" : ";") + name;
+        return key;
+    }
+
+    void allocateTargets(int width, int height, SlicesAccum accum) {
+        const GLenum format = accum == SlicesAccum::Rgba32f ? GL_RGBA32F
+                              : accum == SlicesAccum::Rgba16f ? GL_RGBA16F
+                                                              : GL_RGBA8;
+        if (mAccum && mAccum.size().x == width && mAccum.size().y == height && mAccum.format() == format) return;
+        mAccum = gl::Texture::create(
+            {.target = GL_TEXTURE_2D, .format = format, .size = {width, height, 1}, .label = kAccum});
+        mPlane = gl::Texture::create(
+            {.target = GL_TEXTURE_2D, .format = GL_RGBA32F, .size = {width, height, 1}, .label = kPlane});
+        mAirlight = gl::Texture::create(
+            {.target = GL_TEXTURE_2D, .format = GL_RGBA32F, .size = {width, height, 1}, .label = kAirlight});
+        mFinal = gl::Texture::create(
+            {.target = GL_TEXTURE_2D, .format = GL_RGBA32F, .size = {width, height, 1}, .label = kFinal});
+    }
+
+    double storeScale(const Terms& t, const Settings& s) const {
+        const SlicesAccum accum = SlicesAccum(int(s.at("accum")));
+        if (accum == SlicesAccum::Rgba8) return 1.0 / s.at("accum_range");
+        if (accum == SlicesAccum::Rgba8Mask) return 4.0 / s.at("accum_range");
+        (void)t;
+        return 1.0;
+    }
+
+    const gl::Program& planeProgram(const Terms& t) {
+        const std::string key = permutationKey(t);
+        auto it = mPlanePrograms.find(key);
+        if (it == mPlanePrograms.end()) {
+            it = mPlanePrograms
+                     .emplace(key, gl::Program::compile({.stages = {"slices/plane.vert", "slices/plane.frag"},
+                                                         .defines = planeDefines(t),
+                                                         .label = "slices.plane_program"}))
+                     .first;
+        }
+        return it->second;
+    }
+
+    // The camera's view volume up to zfar as a clip matrix (eye-relative world -> clip), for planeRange.
+    static glm::dmat4 cameraVolume(const scene::Camera& cam, int width, int height) {
+        const glm::dmat4 view = glm::lookAt(glm::dvec3(0.0), cam.forward, cam.up);
+        return glm::perspective(cam.yfov, scene::aspectOf(cam, width, height), cam.znear, cam.zfar) * view;
+    }
+
+    void drawPlanes(const scene::Scene& scene, const FrameInput& input, const Terms& t) {
+        const Settings& s = input.settings;
+        const scene::Camera& cam = scene.camera;
+        const int n = int(s.at("planes"));
+        const gl::Program& program = planeProgram(t);
+        mPlanesUsed.clear();
+        mPolygons.clear();
+        const CameraBasis basis{cam.forward, scene::cameraRight(cam), cam.up};
+
+        program.use();
+        program.set("uViewProj", render::eyeRelativeViewProjection(cam, input.width, input.height));
+        program.set("uRight", glm::vec3(basis.right));
+        program.set("uUp", glm::vec3(basis.up));
+        program.set("uForward", glm::vec3(basis.forward));
+        program.set("uSize", glm::vec2(float(input.width), float(input.height)));
+        program.set("uTanHalf", float(std::tan(cam.yfov * 0.5)));
+        program.set("uAspect", float(scene::aspectOf(cam, input.width, input.height)));
+        program.set("uSigmaS", float(scene.medium.sigma_s));
+        program.set("uSigmaT", float(scene.medium.sigma_t()));
+        program.set("uG", float(scene.medium.g));
+        mLastStoreScale = storeScale(t, s);
+        program.set("uStoreScale", float(mLastStoreScale));
+        program.set("uArtisticUnits", float(s.at("artistic_units")));
+        program.set("uAmbient", float(s.at("ambient") != 0.0 ? kPaperAmbient : 0.0));
+        program.set("uFalloff", int(s.at("falloff")));
+        program.set("uNoiseTiles", float(s.at("noise_tiles")));
+        // Two layers scrolling in different directions (slowly: a few hundredths of a tile per second).
+        const float time = float(s.at("time"));
+        program.set("uScroll", glm::vec4(0.031f * time, 0.017f * time, -0.023f * time, 0.029f * time));
+        program.set("uPlaneWeight", 1.0f);
+        // User planes: world y >= clip_y_min and y <= clip_y_max, written in eye-relative space.
+        const double eyeY = cam.position.y;
+        program.set("uUserPlane0", glm::vec4(0, 1, 0, float(eyeY - s.at("clip_y_min"))));
+        program.set("uUserPlane1", glm::vec4(0, -1, 0, float(s.at("clip_y_max") - eyeY)));
+
+        mView.lights().bind();
+        mView.shadows().bind();
+        mView.surface().distance().bindUnit(render::hd::kFirstFreeTextureUnit);
+        mNoise.bindUnit(render::hd::kFirstFreeTextureUnit + 1);
+        mCounters.bindBase(GL_ATOMIC_COUNTER_BUFFER, 0);
+        mVao.bind();
+
+        glViewport(0, 0, input.width, input.height);
+        glDisable(GL_DEPTH_TEST);
+        glDisable(GL_CULL_FACE);
+        // Additive blending: dst = dst + src (the paper's accumulation; saturates in RGBA8).
+        glEnable(GL_BLEND);
+        glBlendEquation(GL_FUNC_ADD);
+        glBlendFunc(GL_ONE, GL_ONE);
+        const int clipPlanes = (t.clip ? 6 : 0) + (t.userClip ? 2 : 0);
+        for (int i = 0; i < 8; ++i)
+            i < clipPlanes ? glEnable(GLenum(GL_CLIP_DISTANCE0 + i)) : glDisable(GLenum(GL_CLIP_DISTANCE0 + i));
+
+        const auto& lights = mView.lights().lights();
+        const bool boxedDirectional = s.at("directional_box") != 0.0;
+        // Channel mask: one scalar per plane (mean of rgb); the colour ratio of the first light is put back
+        // on resolve (exact for one light colour, the paper's monochrome assumption).
+        mMaskColor = glm::vec3(1.0f);
+        if (!lights.empty()) {
+            const glm::dvec3 c = scene.lights[std::size_t(lights.front().info.w)].color;
+            const double mean = (c.r + c.g + c.b) / 3.0;
+            if (mean > 0.0) mMaskColor = glm::vec3(c / mean);
+        }
+        // Draw sets: each spot light (and, with directional_box, each directional light) gets N planes in
+        // its own frustum's box, clipped to it. Every other light (point, area-light VPL, directional) lights
+        // unbounded space: they share one set of N planes over the camera frustum up to zfar, unclipped
+        // (a directional map's box only bounds where shadows are known; outside it V = 1).
+        struct DrawSet {
+            int light;  // index into lights, or -1: the unbounded lights together
+            glm::dmat4 volume;
+        };
+        std::vector<DrawSet> sets;
+        bool unbounded = false;
+        for (std::size_t li = 0; li < lights.size(); ++li) {
+            const int type = lights[li].info.x;
+            if (type == render::hd::kLightSpot || (type == render::hd::kLightDirectional && boxedDirectional))
+                sets.push_back({int(li), glm::dmat4(lights[li].shadowMatrix)});
+            else
+                unbounded = true;
+        }
+        if (unbounded) sets.push_back({-1, cameraVolume(cam, input.width, input.height)});
+        program.set("uLightCount", mView.lights().count());
+        program.set("uBoxedDirectional", boxedDirectional ? 1 : 0);
+
+        for (const DrawSet& set : sets) {
+            const bool boxed = set.light >= 0;
+            PlaneRange range = planeRange(set.volume, basis, cam.znear, cam.zfar, n);
+            if (range.empty) continue;
+            // Fewer planes far from the light volume (eye at the origin; distance to the view-space box).
+            const glm::dvec3 lo(range.minXY, range.near), hi(range.maxXY, range.far);
+            const double distance = glm::length(glm::max(glm::max(lo, -hi), glm::dvec3(0.0)));
+            const int planes = scaledPlaneCount(n, distance, s.at("distance_scale"), kMinScaledPlanes);
+            range = planeRange(set.volume, basis, cam.znear, cam.zfar, planes);
+            const int drawn = s.at("planes_drawn") > 0 ? std::min(planes, int(s.at("planes_drawn"))) : planes;
+            mPlanesUsed.push_back(planes);
+            for (auto& poly : planePolygons(range, basis, set.volume, drawn, t.clip && boxed))
+                mPolygons.push_back(std::move(poly));
+            program.set("uClipLight", boxed ? 1 : 0);
+            program.set("uFractionOfMaxShells", float(double(planes) / kPaperMaxPlanes));
+            program.set("uLight", set.light);
+            program.set("uLightMatrix", glm::mat4(set.volume));
+            program.set("uBoxMinXY", glm::vec2(range.minXY));
+            program.set("uBoxMaxXY", glm::vec2(range.maxXY));
+            program.set("uDepthFar", float(range.far));
+            program.set("uSpacing", float(range.spacing));
+            // Back to front: plane 0 is the farthest, so the first k planes are the k farthest.
+            mFramebuffer.attachColor(0, mAccum);
+            mFramebuffer.checkComplete();
+            mFramebuffer.bind();
+            glDrawArrays(GL_TRIANGLES, 0, 6 * drawn);
+            // The last plane alone, for stepping and the per-plane readback.
+            mFramebuffer.attachColor(0, mPlane);
+            mFramebuffer.bind();
+            glDrawArrays(GL_TRIANGLES, 6 * (drawn - 1), 6);
+            if (t.count) countFragments(program, drawn);
+        }
+        glDisable(GL_BLEND);
+        for (int i = 0; i < 8; ++i) glDisable(GLenum(GL_CLIP_DISTANCE0 + i));
+        glMemoryBarrier(GL_ATOMIC_COUNTER_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+        gl::Framebuffer::bindDefault();
+    }
+
+    // The drawn planes as polygons (rows: planes back to front, light after light; columns: vertices;
+    // rgb = eye-relative world xyz; NaN pads unused vertices), for viewing the slab stack from outside.
+    Intermediate polygonIntermediate() const {
+        std::size_t width = 1;
+        for (const auto& p : mPolygons) width = std::max(width, p.size());
+        auto img = std::make_shared<Image>(int(width), int(std::max<std::size_t>(mPolygons.size(), 1)), 3);
+        std::fill(img->pixels.begin(), img->pixels.end(), std::nanf(""));
+        for (std::size_t row = 0; row < mPolygons.size(); ++row)
+            for (std::size_t v = 0; v < mPolygons[row].size(); ++v)
+                for (int c = 0; c < 3; ++c) img->at(int(v), int(row), c) = float(mPolygons[row][v][c]);
+        Intermediate i;
+        i.id = kPlaneMesh, i.label = "Sampling planes (mesh)";
+        i.note = "the drawn planes clipped to the light frustum (when clip=1): rows planes, columns vertices, "
+                 "xyz eye-relative world";
+        i.units = "scene units";
+        i.kind = ViewKind::Mesh;
+        i.image = img;
+        i.extent = {img->width, img->height, 1};
+        return i;
+    }
+
+    // Occlusion queries over the same planes with colour writes off: all fragments, then only those the
+    // shader finds outside the light frustum (it discards the rest). Adds to mQueryCounts.
+    void countFragments(const gl::Program& program, int drawn) {
+        GLuint query = 0;
+        glCreateQueries(GL_SAMPLES_PASSED, 1, &query);
+        glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+        for (int pass = 1; pass <= 2; ++pass) {
+            program.set("uCountPass", pass);
+            glBeginQuery(GL_SAMPLES_PASSED, query);
+            glDrawArrays(GL_TRIANGLES, 0, 6 * drawn);
+            glEndQuery(GL_SAMPLES_PASSED);
+            GLuint samples = 0;
+            glGetQueryObjectuiv(query, GL_QUERY_RESULT, &samples);
+            mQueryCounts[pass == 1 ? 1 : 0] += double(samples);
+        }
+        program.set("uCountPass", 0);
+        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        glDeleteQueries(1, &query);
+    }
+
+    void resolve(const Terms& t) {
+        gl::ShaderDefines defines;
+        if (t.mask) defines.push_back({"CHANNEL_MASK", "1"});
+        if (t.blur) defines.push_back({"BLUR", "1"});
+        std::string key = std::string(t.mask ? "m" : "") + (t.blur ? "b" : "");
+        auto it = mResolvePrograms.find(key);
+        if (it == mResolvePrograms.end()) {
+            it = mResolvePrograms
+                     .emplace(key, gl::Program::compile({.stages = {"render/fullscreen.vert", "slices/resolve.frag"},
+                                                         .defines = defines,
+                                                         .label = "slices.resolve_program"}))
+                     .first;
+        }
+        const gl::Program& program = it->second;
+        program.use();
+        program.set("uInvStoreScale", float(1.0 / mLastStoreScale));
+        program.set("uMaskColor", mMaskColor);
+        mFramebuffer.attachColor(0, mAirlight);
+        mFramebuffer.checkComplete();
+        mFramebuffer.bind();
+        glViewport(0, 0, mAirlight.size().x, mAirlight.size().y);
+        glDisable(GL_BLEND);
+        glDisable(GL_DEPTH_TEST);
+        mAccum.bindUnit(0);
+        mTriangle->draw();
+        gl::Framebuffer::bindDefault();
+    }
+
+    std::vector<ParamInfo> mParams;
+    std::vector<StageInfo> mStages;
+    render::SceneViewPasses mView;
+    std::unique_ptr<render::FullscreenTriangle> mTriangle;
+    std::map<std::string, gl::Program> mPlanePrograms, mResolvePrograms;
+    gl::VertexArray mVao;
+    gl::Framebuffer mFramebuffer;
+    gl::Buffer mCounters;
+    gl::Texture mNoise, mAccum, mPlane, mAirlight, mFinal;
+    double mLastStoreScale = 1.0;
+    std::vector<int> mPlanesUsed;                         // per drawn light, after distance scaling
+    std::vector<std::vector<glm::dvec3>> mPolygons;       // drawn planes, clipped (eye-relative world)
+    double mQueryCounts[2] = {0.0, 0.0};  // occlusion queries: outside the frustum, all
+    glm::vec3 mMaskColor{1.0f};
+};
+
+}  // namespace
+
+std::unique_ptr<Technique> makeSlicesTechnique() { return std::make_unique<SlicesTechnique>(); }
+
+}  // namespace viz
