@@ -27,8 +27,10 @@ public:
     // The camera view; publishes prefix.distance and prefix.surface.
     void renderSurface(const scene::Scene& scene, int width, int height, std::vector<Intermediate>& out,
                        const std::string& prefix);
-    // finalTarget = surface radiance * exp(-sigma_t d) + airlight.
-    void compose(const scene::Scene& scene, const gl::Texture& airlight, const gl::Texture& finalTarget);
+    // final = surface radiance * exp(-sigma_t d) + airlight (same size as airlight); publishes
+    // prefix.final and returns it read back as RGB.
+    Image compose(const scene::Scene& scene, const gl::Texture& airlight, std::vector<Intermediate>& out,
+                  const std::string& prefix);
 
     const GpuScene& gpuScene() const { return *mGpuScene; }
     const GpuLights& lights() const { return *mLights; }
@@ -46,6 +48,7 @@ private:
     std::unique_ptr<ShadowMaps> mShadows;
     std::unique_ptr<SurfacePass> mSurface;
     std::unique_ptr<Composer> mComposer;
+    gl::Texture mFinal;
 };
 
 }  // namespace viz::render

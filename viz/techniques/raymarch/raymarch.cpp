@@ -162,11 +162,8 @@ public:
 
         // ---- compose ----
         clock.begin();
-        mView.compose(scene, mAirlight, mFinal);
+        out.final = mView.compose(scene, mAirlight, out.intermediates, "raymarch");
         out.timing.stages.push_back({kStageCompose, clock.endMilliseconds()});
-        out.intermediates.push_back(render::textureIntermediate(kFinal, "Final", "surface * exp(-sigma_t d) + L_air",
-                                                        "radiance", ViewKind::Color, 0.0f, 1.0f, mFinal));
-        out.final = render::readRgb(mFinal);
         out.lastStageRun = kComposeIndex;
         return out;
     }
@@ -178,8 +175,6 @@ private:
                                          .levels = 1, .label = kAirlight});
         mLitFraction = gl::Texture::create({.target = GL_TEXTURE_2D, .format = GL_R32F, .size = {width, height, 1},
                                             .levels = 1, .label = kLitFraction});
-        mFinal = gl::Texture::create({.target = GL_TEXTURE_2D, .format = GL_RGBA32F, .size = {width, height, 1},
-                                      .levels = 1, .label = kFinal});
     }
 
     // Compiles only the features the plan enabled (shader permutations by #define), cached per set:
@@ -235,7 +230,7 @@ private:
     render::SceneViewPasses mView;
     gl::Program mMarch;
     std::string mProgramKey;
-    gl::Texture mAirlight, mLitFraction, mFinal;
+    gl::Texture mAirlight, mLitFraction;
 };
 
 }  // namespace

@@ -316,11 +316,8 @@ public:
 
         // ---- compose ----
         clock.begin();
-        mView.compose(scene, mAirlight, mFinal);
+        out.final = mView.compose(scene, mAirlight, out.intermediates, "slices");
         out.timing.stages.push_back({kStageCompose, clock.endMilliseconds()});
-        out.intermediates.push_back(render::textureIntermediate(kFinal, "Final", "surface * exp(-sigma_t d) + L_air",
-                                                        "radiance", ViewKind::Color, 0.0f, 1.0f, mFinal));
-        out.final = render::readRgb(mFinal);
         out.lastStageRun = kComposeIndex;
         return out;
     }
@@ -383,8 +380,6 @@ private:
             {.target = GL_TEXTURE_2D, .format = GL_RGBA32F, .size = {width, height, 1}, .label = kPlane});
         mAirlight = gl::Texture::create(
             {.target = GL_TEXTURE_2D, .format = GL_RGBA32F, .size = {width, height, 1}, .label = kAirlight});
-        mFinal = gl::Texture::create(
-            {.target = GL_TEXTURE_2D, .format = GL_RGBA32F, .size = {width, height, 1}, .label = kFinal});
     }
 
     double storeScale(const Terms& t, const Settings& s) const {
@@ -613,7 +608,7 @@ private:
     gl::VertexArray mVao;
     gl::Framebuffer mFramebuffer;
     gl::Buffer mCounters;
-    gl::Texture mNoise, mAccum, mPlane, mAirlight, mFinal;
+    gl::Texture mNoise, mAccum, mPlane, mAirlight;
     double mLastStoreScale = 1.0;
     std::vector<int> mPlanesUsed;                         // per drawn light, after distance scaling
     std::vector<std::vector<glm::dvec3>> mPolygons;       // drawn planes, clipped (eye-relative world)
