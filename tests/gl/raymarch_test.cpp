@@ -37,19 +37,7 @@ TEST_F(RaymarchTest, ConvergesToTheReferenceOnGrate) {
 }
 
 TEST_F(RaymarchTest, StoppingAfterEachStagePublishesOnlyWhatExists) {
-    const viz::scene::Scene scene = viz::scene::makeBuiltinScene("grate");
-    auto technique = viz::makeTechnique("raymarch");
-    const auto& stages = technique->stages();
-    for (int s = 0; s < int(stages.size()); ++s) {
-        const viz::FrameOutput out = render(scene, "raymarch", {{"samples", 8}}, 32, 24, s);
-        EXPECT_EQ(out.lastStageRun, s);
-        EXPECT_EQ(out.timing.stages.size(), std::size_t(s + 1));
-        for (int later = s + 1; later < int(stages.size()); ++later)
-            for (const auto& id : stages[std::size_t(later)].intermediates)
-                for (const auto& i : out.intermediates) EXPECT_NE(i.id, id) << "stage " << s;
-        EXPECT_EQ(out.airlight.empty(), s < 2);
-        EXPECT_EQ(out.final.empty(), s < 3);
-    }
+    expectEachStageStopsCleanly("raymarch", viz::scene::makeBuiltinScene("grate"), {{"samples", 8}}, 2, 3);
 }
 
 // Exact integration between samples handles the 1/r^2 glow analytically, so at equal N it is closer to

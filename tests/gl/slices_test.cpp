@@ -173,19 +173,7 @@ TEST_F(SlicesTest, PermutationKeyLeavesOutUnusedTerms) {
 }
 
 TEST_F(SlicesTest, StoppingAfterEachStagePublishesOnlyWhatExists) {
-    const viz::scene::Scene scene = viz::scene::makeBuiltinScene("grate");
-    auto technique = viz::makeTechnique("slices");
-    const auto& stages = technique->stages();
-    for (int s = 0; s < int(stages.size()); ++s) {
-        const viz::FrameOutput out = render(scene, "slices", {{"planes", 8}}, 32, 24, s);
-        EXPECT_EQ(out.lastStageRun, s);
-        EXPECT_EQ(out.timing.stages.size(), std::size_t(s + 1));
-        for (int later = s + 1; later < int(stages.size()); ++later)
-            for (const auto& id : stages[std::size_t(later)].intermediates)
-                for (const auto& i : out.intermediates) EXPECT_NE(i.id, id) << "stage " << s;
-        EXPECT_EQ(out.airlight.empty(), s < 3);
-        EXPECT_EQ(out.final.empty(), s < 4);
-    }
+    expectEachStageStopsCleanly("slices", viz::scene::makeBuiltinScene("grate"), {{"planes", 8}}, 3, 4);
 }
 
 // Point lights have no frustum: they share unclipped planes over the camera frustum, and converge to the

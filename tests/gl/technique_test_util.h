@@ -9,6 +9,7 @@
 
 #include "gl/gl_test_fixture.h"
 #include "gl/readback.h"
+#include "technique_run.h"
 #include "techniques/registry.h"
 
 namespace viz::testing {
@@ -20,19 +21,30 @@ protected:
     static FrameOutput render(const scene::Scene& scene, const std::string& technique, const Settings& settings,
                               int w, int h, int stopAfter = -1, const std::vector<std::string>& keep = {}) {
         auto t = makeTechnique(technique);
-        FrameInput in;
-        in.scene = &scene;
-        in.width = w;
-        in.height = h;
-        in.settings = completeSettings(*t, settings);
-        in.stopAfterStage = stopAfter;
-        FrameOutput out = t->run(in);
+        FrameOutput out = runTechnique(*t, scene, settings, w, h, stopAfter);
         for (auto& i : out.intermediates) {
             if (i.glTexture != 0 && std::find(keep.begin(), keep.end(), i.id) != keep.end())
                 i.image = std::make_shared<Image>(gl::readTexture(i.glTexture));
             i.glTexture = 0;
         }
         return out;
+    }
+    // Stops after every stage in turn: the run reports that stage as its last, timed every stage up to it,
+    // and published nothing a later stage declares. L_air exists from stage `airlightStage` on and the
+    // final image from `finalStage` on.
+    static void expectEachStageStopsCleanly(const std::string& technique, const scene::Scene& scene,
+                                            const Settings& settings, int airlightStage, int finalStage) {
+        const auto stages = makeTechnique(technique)->stages();
+        for (int s = 0; s < int(stages.size()); ++s) {
+            const FrameOutput out = render(scene, technique, settings, 32, 24, s);
+            EXPECT_EQ(out.lastStageRun, s);
+            EXPECT_EQ(out.timing.stages.size(), std::size_t(s + 1));
+            for (int later = s + 1; later < int(stages.size()); ++later)
+                for (const auto& id : stages[std::size_t(later)].intermediates)
+                    for (const auto& i : out.intermediates) EXPECT_NE(i.id, id) << "stage " << s;
+            EXPECT_EQ(out.airlight.empty(), s < airlightStage) << "stage " << s;
+            EXPECT_EQ(out.final.empty(), s < finalStage) << "stage " << s;
+        }
     }
     static const Intermediate* find(const FrameOutput& out, const std::string& id) {
         for (const auto& i : out.intermediates)

@@ -11,6 +11,34 @@ namespace {
 constexpr int kMaxVplShadowSize = 256;
 }  // namespace
 
+std::vector<ParamInfo> SceneViewPasses::params() {
+    return {
+        {"shadow_map", "shadow-map size in texels per side (2D maps and point-light cube faces)", 1024, 16, 8192, true},
+        {"area_samples", "virtual point lights per axis of each area light (Gauss-Legendre nodes)", 4, 1, 16, true},
+    };
+}
+
+StageInfo SceneViewPasses::shadowStage(const std::string& prefix, const std::vector<std::string>& extraIntermediates) {
+    StageInfo stage{prefix + ".shadow_maps", "Shadow maps", "render every light's shadow map (linear distance)",
+                    {"shadow_map", "area_samples"}, {prefix + ".shadow_map"}, 1};
+    stage.intermediates.insert(stage.intermediates.end(), extraIntermediates.begin(), extraIntermediates.end());
+    return stage;
+}
+
+StageInfo SceneViewPasses::surfaceStage(const std::string& prefix) {
+    return {prefix + ".surface", "Camera view", "distance d to the first surface and the unattenuated surface radiance",
+            {}, {prefix + ".distance", prefix + ".surface"}, 1};
+}
+
+StageInfo SceneViewPasses::composeStage(const std::string& prefix) {
+    return {prefix + ".compose", "Compose", "final = surface * exp(-sigma_t d) + L_air", {}, {prefix + ".final"}, 1};
+}
+
+void SceneViewPasses::buildShadows(const scene::Scene& scene, const Settings& settings, std::vector<Intermediate>& out,
+                                   const std::string& prefix) {
+    buildShadows(scene, int(settings.at("shadow_map")), int(settings.at("area_samples")), out, prefix);
+}
+
 void SceneViewPasses::createPasses() {
     if (mShadows) return;
     mShadows = std::make_unique<ShadowMaps>();

@@ -20,6 +20,19 @@ namespace viz::render {
 
 class SceneViewPasses {
 public:
+    // ---- declarations, so that a technique lists these stages and parameters exactly as they run ----
+    // `shadow_map` (texels per side, shared by every shadow-map technique) and `area_samples`.
+    static std::vector<ParamInfo> params();
+    // prefix.shadow_maps, publishing prefix.shadow_map and `extraIntermediates`.
+    static StageInfo shadowStage(const std::string& prefix, const std::vector<std::string>& extraIntermediates = {});
+    // prefix.surface, publishing prefix.distance and prefix.surface.
+    static StageInfo surfaceStage(const std::string& prefix);
+    // prefix.compose, publishing prefix.final.
+    static StageInfo composeStage(const std::string& prefix);
+
+    // buildShadows with the `shadow_map` and `area_samples` of completed settings.
+    void buildShadows(const scene::Scene& scene, const Settings& settings, std::vector<Intermediate>& out,
+                      const std::string& prefix);
     // Uploads the geometry when the scene changed, lays out the lights (area lights as areaSamples^2
     // VPLs), renders every shadow map and publishes them as prefix.shadow_map[.N].
     void buildShadows(const scene::Scene& scene, int shadowMapSize, int areaSamples,

@@ -14,6 +14,7 @@
 #include "scene/texture_sampling.h"
 #include "techniques/reference/ray_tracer.h"
 #include "techniques/reference/reference.h"
+#include "technique_run.h"
 
 namespace viz {
 namespace {
@@ -26,13 +27,7 @@ const Image* findImage(const FrameOutput& out, const std::string& id) {
 
 FrameOutput runReference(const scene::Scene& s, int w, int h, Settings given, int stopAfter = -1) {
     auto tech = makeReferenceTechnique();
-    FrameInput in;
-    in.scene = &s;
-    in.width = w;
-    in.height = h;
-    in.settings = completeSettings(*tech, given);
-    in.stopAfterStage = stopAfter;
-    return tech->run(in);
+    return viz::testing::runTechnique(*tech, s, given, w, h, stopAfter);
 }
 
 // A cache folder of its own, removed afterwards; AIRLIGHT_CACHE_DIR points at it meanwhile.

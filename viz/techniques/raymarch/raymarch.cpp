@@ -18,15 +18,9 @@ namespace viz {
 namespace {
 
 // ---- ids (stable: lessons and tests use them) ----
-constexpr const char* kStageShadowMaps = "raymarch.shadow_maps";
-constexpr const char* kStageSurface = "raymarch.surface";
 constexpr const char* kStageMarch = "raymarch.march";
-constexpr const char* kStageCompose = "raymarch.compose";
-constexpr const char* kDistance = "raymarch.distance";
-constexpr const char* kSurface = "raymarch.surface";
 constexpr const char* kAirlight = "raymarch.airlight";
 constexpr const char* kLitFraction = "raymarch.lit_fraction";
-constexpr const char* kFinal = "raymarch.final";
 
 enum StageIndex { kShadowMapsIndex = 0, kSurfaceIndex = 1, kMarchIndex = 2, kComposeIndex = 3 };
 
@@ -49,20 +43,15 @@ public:
             {"samples", "samples per pixel and light along [0, d]", 64, 1, 65536, true},
             {"jitter", "1: one stratified random offset per sample interval; 0: interval midpoints", 0, 0, 1, true},
             {"exact", "1: integrate the unshadowed airlight exactly over each sample's interval", 0, 0, 1, true},
-            {"shadow_map", "shadow-map size in texels per side (2D maps and point-light cube faces)", 1024, 16,
-             8192, true},
-            {"area_samples", "virtual point lights per axis of each area light (Gauss-Legendre nodes)", 4, 1, 16,
-             true},
             {"seed", "jitter seed", 1, 0, 1e9, true},
         };
+        for (ParamInfo& p : render::SceneViewPasses::params()) mParams.push_back(std::move(p));
         mStages = {
-            {kStageShadowMaps, "Shadow maps", "render every light's shadow map (linear distance)",
-             {"shadow_map", "area_samples"}, {"raymarch.shadow_map"}, 1},
-            {kStageSurface, "Camera view", "distance d to the first surface and the unattenuated surface radiance",
-             {}, {kDistance, kSurface}, 1},
+            render::SceneViewPasses::shadowStage("raymarch"),
+            render::SceneViewPasses::surfaceStage("raymarch"),
             {kStageMarch, "Ray march", "N shadow-map tests per ray and light, summed into L_air",
              {"samples", "jitter", "exact", "seed"}, {kAirlight, kLitFraction}, 1},
-            {kStageCompose, "Compose", "final = surface * exp(-sigma_t d) + L_air", {}, {kFinal}, 1},
+            render::SceneViewPasses::composeStage("raymarch"),
         };
     }
 
@@ -127,15 +116,15 @@ public:
 
         // ---- shadow maps (the scene upload is counted here: it is part of the technique's cost) ----
         clock.begin();
-        mView.buildShadows(scene, int(s.at("shadow_map")), int(s.at("area_samples")), out.intermediates, "raymarch");
-        out.timing.stages.push_back({kStageShadowMaps, clock.endMilliseconds()});
+        mView.buildShadows(scene, s, out.intermediates, "raymarch");
+        out.timing.stages.push_back({mStages[kShadowMapsIndex].id, clock.endMilliseconds()});
         out.lastStageRun = kShadowMapsIndex;
         if (stop == kShadowMapsIndex) return out;
 
         // ---- camera view ----
         clock.begin();
         mView.renderSurface(scene, input.width, input.height, out.intermediates, "raymarch");
-        out.timing.stages.push_back({kStageSurface, clock.endMilliseconds()});
+        out.timing.stages.push_back({mStages[kSurfaceIndex].id, clock.endMilliseconds()});
         out.lastStageRun = kSurfaceIndex;
         if (stop == kSurfaceIndex) return out;
 
@@ -163,7 +152,7 @@ public:
         // ---- compose ----
         clock.begin();
         out.final = mView.compose(scene, mAirlight, out.intermediates, "raymarch");
-        out.timing.stages.push_back({kStageCompose, clock.endMilliseconds()});
+        out.timing.stages.push_back({mStages[kComposeIndex].id, clock.endMilliseconds()});
         out.lastStageRun = kComposeIndex;
         return out;
     }

@@ -30,13 +30,8 @@ namespace viz {
 namespace {
 
 // ---- ids (stable: lessons and tests use them) ----
-constexpr const char* kStageShadowMaps = "slices.shadow_maps";
-constexpr const char* kStageSurface = "slices.surface";
 constexpr const char* kStagePlanes = "slices.planes";
 constexpr const char* kStageResolve = "slices.resolve";
-constexpr const char* kStageCompose = "slices.compose";
-constexpr const char* kDistance = "slices.distance";
-constexpr const char* kSurface = "slices.surface";
 constexpr const char* kNoise = "slices.noise";
 constexpr const char* kCookies = "slices.cookie";
 constexpr const char* kAccum = "slices.accumulation";
@@ -44,7 +39,6 @@ constexpr const char* kPlane = "slices.plane";
 constexpr const char* kFragments = "slices.fragments";
 constexpr const char* kPlaneMesh = "slices.plane_mesh";
 constexpr const char* kAirlight = "slices.airlight";
-constexpr const char* kFinal = "slices.final";
 
 enum StageIndex { kShadowMapsIndex = 0, kSurfaceIndex, kPlanesIndex, kResolveIndex, kComposeIndex };
 
@@ -110,9 +104,6 @@ public:
              3, true, {"rgba8", "rgba8-mask", "rgba16f", "rgba32f"}},
             {"accum_range", "value stored as 1.0 in the 8-bit targets (rgba8-mask: per channel, x4 finer)", 2.0,
              1e-6, 1e6, false},
-            {"shadow_map", "shadow-map size in texels per side", 1024, 16, 8192, true},
-            {"area_samples", "virtual point lights per axis of each area light (Gauss-Legendre nodes)", 4, 1, 16,
-             true},
             {"shadow", "shadow-map test: 0 off, 1 nearest texel (the paper), 2 3x3 PCF", 1, 0, 2, true},
             {"spot_falloff", "1: spot angular attenuation A_spot", 1, 0, 1, true},
             {"cookie", "1: project the spot's cookie (when it has one)", 1, 0, 1, true},
@@ -135,11 +126,10 @@ public:
             {"count_fragments", "1: count shaded fragments and those outside the light frustum (atomic counter)",
              0, 0, 1, true},
         };
+        for (ParamInfo& p : render::SceneViewPasses::params()) mParams.push_back(std::move(p));
         mStages = {
-            {kStageShadowMaps, "Shadow maps", "every light's shadow map (linear distance)", {"shadow_map", "area_samples"},
-             {"slices.shadow_map", kCookies, kNoise}, 1},
-            {kStageSurface, "Camera view", "distance d to the first surface and the unattenuated surface radiance",
-             {}, {kDistance, kSurface}, 1},
+            render::SceneViewPasses::shadowStage("slices", {kCookies, kNoise}),
+            render::SceneViewPasses::surfaceStage("slices"),
             {kStagePlanes, "Sampling planes",
              "N view-aligned planes per light, clipped to its frustum, added back to front",
              {"planes", "planes_drawn", "weighting", "accum", "accum_range", "shadow", "spot_falloff", "cookie",
@@ -148,7 +138,7 @@ public:
              {kAccum, kPlane, kPlaneMesh, kFragments}, 128},
             {kStageResolve, "Resolve", "accumulation -> L_air: undo the 8-bit scale, sum the mask channels, blur",
              {"blur"}, {kAirlight}, 1},
-            {kStageCompose, "Compose", "final = surface * exp(-sigma_t d) + L_air", {}, {kFinal}, 1},
+            render::SceneViewPasses::composeStage("slices"),
         };
     }
 
@@ -242,8 +232,8 @@ public:
             mNoise.setFilter(GL_LINEAR, GL_LINEAR);
             mNoise.setWrap(GL_REPEAT);
         }
-        mView.buildShadows(scene, int(s.at("shadow_map")), int(s.at("area_samples")), out.intermediates, "slices");
-        out.timing.stages.push_back({kStageShadowMaps, clock.endMilliseconds()});
+        mView.buildShadows(scene, s, out.intermediates, "slices");
+        out.timing.stages.push_back({mStages[kShadowMapsIndex].id, clock.endMilliseconds()});
         out.intermediates.push_back(render::textureIntermediate(kCookies, "Cookies", "spot cookie textures (sRGB bytes), one layer per cookie", "",
                                                         ViewKind::Color, 0.0f, 1.0f, mView.lights().cookies()));
         out.intermediates.push_back(render::textureIntermediate(
@@ -255,7 +245,7 @@ public:
         // ---- camera view ----
         clock.begin();
         mView.renderSurface(scene, input.width, input.height, out.intermediates, "slices");
-        out.timing.stages.push_back({kStageSurface, clock.endMilliseconds()});
+        out.timing.stages.push_back({mStages[kSurfaceIndex].id, clock.endMilliseconds()});
         out.lastStageRun = kSurfaceIndex;
         if (stop == kSurfaceIndex) return out;
 
@@ -317,7 +307,7 @@ public:
         // ---- compose ----
         clock.begin();
         out.final = mView.compose(scene, mAirlight, out.intermediates, "slices");
-        out.timing.stages.push_back({kStageCompose, clock.endMilliseconds()});
+        out.timing.stages.push_back({mStages[kComposeIndex].id, clock.endMilliseconds()});
         out.lastStageRun = kComposeIndex;
         return out;
     }

@@ -1,0 +1,21 @@
+// Running a technique in a test, with no GL of its own (the caller provides a context if it needs one).
+#pragma once
+
+#include <string>
+
+#include "techniques/registry.h"
+
+namespace viz::testing {
+
+inline FrameOutput runTechnique(Technique& technique, const scene::Scene& scene, const Settings& given, int w,
+                                int h, int stopAfter = -1) {
+    FrameInput in;
+    in.scene = &scene;
+    in.width = w;
+    in.height = h;
+    in.settings = completeSettings(technique, given);
+    in.stopAfterStage = stopAfter;
+    return technique.run(in);
+}
+
+}  // namespace viz::testing
