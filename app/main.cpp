@@ -9,6 +9,7 @@
 
 #include "cli_args.h"
 #include "commands.h"
+#include "report_command.h"
 #include "core/error.h"
 #include "gl/gl_error.h"
 
@@ -26,6 +27,7 @@ commands:
   list            list scenes | techniques | stages T | params T
   plan            show which stages and features a technique runs for a scene, and why
   export-scene    write a scene as glTF:  airlight export-scene NAME out.gltf|out.glb
+  report          error against run time of every technique on each scene (CSV, JSON, plots, HTML)
 
 Run 'airlight COMMAND --help' for the options of a command.
 )";
@@ -47,6 +49,11 @@ int main(int argc, char** argv) {
         if (command == "plan") return airlight::runPlan(args);
         if (command == "export-scene") return airlight::runExportScene(args);
         if (command == "gui") return airlight::runGuiCommand(args);
+        if (command == "report") {
+            std::string line = "airlight";
+            for (const std::string& w : words) line += " " + w;
+            return airlight::runReportCommand(args, line);
+        }
         throw viz::InputError("unknown command '" + command + "' (run 'airlight --help')");
     } catch (const viz::InputError& e) {
         std::fprintf(stderr, "airlight: error: %s\n", e.what());

@@ -7,6 +7,7 @@ cd "$(dirname "$0")/.."
 scripts/setup.sh ci
 export VIZ_REQUIRE_GL="${VIZ_REQUIRE_GL:-1}"
 export VIZ_REQUIRE_DISPLAY="${VIZ_REQUIRE_DISPLAY:-1}"
+export VIZ_REQUIRE_BROWSER="${VIZ_REQUIRE_BROWSER:-1}"
 export LP_NUM_THREADS="${LP_NUM_THREADS:-2}"
 export AIRLIGHT_CACHE_DIR="${AIRLIGHT_CACHE_DIR:-$PWD/build/ci/cache}"
 if [ -z "${DISPLAY:-}" ] && [ -z "${WAYLAND_DISPLAY:-}" ]; then

@@ -7,9 +7,9 @@
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
-#include <random>
 #include <vector>
 
+#include "core/atomic_file.h"
 #include "core/error.h"
 
 namespace viz {
@@ -27,12 +27,6 @@ static std::uint8_t encodeSrgb8(float linear) {
     return static_cast<std::uint8_t>(std::lround(std::clamp(s, 0.0f, 1.0f) * 255.0f));
 }
 
-static std::string temporaryPathFor(const std::filesystem::path& target) {
-    std::random_device rd;
-    const std::filesystem::path dir = target.has_parent_path() ? target.parent_path() : ".";
-    return (dir / ("." + target.filename().string() + ".tmp" + std::to_string(rd()) + target.extension().string()))
-        .string();
-}
 
 void writeImage(const Image& image, const std::string& path, float exposure) {
     const std::string ext = extensionOf(path);
@@ -43,7 +37,7 @@ void writeImage(const Image& image, const std::string& path, float exposure) {
     if (target.has_parent_path() && !std::filesystem::is_directory(target.parent_path()))
         throw InputError("cannot write '" + path + "': folder '" + target.parent_path().string() + "' does not exist");
 
-    const std::string tmp = temporaryPathFor(target);
+    const std::string tmp = temporaryPathFor(target).string();
     auto out = OIIO::ImageOutput::create(tmp);
     if (!out) throw InputError("cannot write '" + path + "': " + OIIO::geterror());
     bool ok = false;

@@ -74,6 +74,13 @@ struct Plan {
     std::vector<FeaturePlan> features;
 };
 
+// One point of a technique's quality sweep (`airlight report`): a short label and the settings that
+// differ from the defaults.
+struct QualitySetting {
+    std::string label;  // "N=64", "planes=128 rgba8"
+    Settings settings;
+};
+
 struct FrameInput {
     const scene::Scene* scene = nullptr;
     int width = 0;
@@ -101,6 +108,12 @@ public:
     virtual bool needsGl() const = 0;                   // GPU techniques need a current GL 4.5 context
     virtual Plan plan(const scene::Scene& scene, const Settings& settings) const = 0;
     virtual FrameOutput run(const FrameInput& input) = 0;
+    // The quality knobs `airlight report` sweeps, cheapest first; `quick` asks for a short sweep that
+    // still spans the technique's error range. A technique without knobs reports its defaults.
+    virtual std::vector<QualitySetting> qualitySweep(bool quick) const {
+        (void)quick;
+        return {{"default", {}}};
+    }
 };
 
 // Fills in defaults and rejects unknown names and out-of-range values with an InputError.

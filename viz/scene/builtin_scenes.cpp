@@ -6,6 +6,7 @@
 
 #include "core/error.h"
 #include "scene/area_light.h"
+#include "scene/scene_building.h"
 
 namespace viz::scene {
 namespace {
@@ -31,69 +32,6 @@ private:
 };
 
 glm::dvec3 unit(glm::dvec3 v) { return glm::normalize(v); }
-
-// Camera at eye looking at target, up orthogonalised from world +Y.
-Camera lookAt(const std::string& name, glm::dvec3 eye, glm::dvec3 target, double yfov, double znear, double zfar) {
-    Camera cam;
-    cam.name = name;
-    cam.position = eye;
-    cam.forward = unit(target - eye);
-    cam.up = unit(glm::dvec3(0, 1, 0) - cam.forward.y * cam.forward);
-    cam.yfov = yfov;
-    cam.znear = znear;
-    cam.zfar = zfar;
-    return cam;
-}
-
-// ---- geometry ----
-
-// Appends triangles to one Mesh (world space, flat normals per face).
-class MeshBuilder {
-public:
-    MeshBuilder(std::string name, int material) {
-        mMesh.name = std::move(name);
-        mMesh.material = material;
-    }
-
-    // Quad a, b, c, d counter-clockwise seen from the side it faces; uv (0,0) at a, (1,0) at b,
-    // (1,1) at c, (0,1) at d.
-    void quad(glm::dvec3 a, glm::dvec3 b, glm::dvec3 c, glm::dvec3 d) {
-        const glm::vec3 n(unit(glm::cross(b - a, c - a)));
-        const auto base = std::uint32_t(mMesh.positions.size());
-        const glm::dvec3 p[4] = {a, b, c, d};
-        const glm::vec2 uv[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-        for (int i = 0; i < 4; ++i) {
-            mMesh.positions.push_back(glm::vec3(p[i]));
-            mMesh.normals.push_back(n);
-            mMesh.uvs.push_back(uv[i]);
-        }
-        for (std::uint32_t i : {0u, 1u, 2u, 0u, 2u, 3u}) mMesh.indices.push_back(base + i);
-    }
-
-    // Box with half extents 'half', rotated by 'yaw' radians about +Y around its centre. Faces point
-    // outwards, or inwards for a room seen from inside.
-    void box(glm::dvec3 centre, glm::dvec3 half, double yaw = 0.0, bool inward = false) {
-        const double c = std::cos(yaw), s = std::sin(yaw);
-        auto place = [&](glm::dvec3 q) {  // local -> world: rotate about Y, then translate
-            return centre + glm::dvec3(c * q.x + s * q.z, q.y, -s * q.x + c * q.z);
-        };
-        // For each face: normal n and tangents u, v with cross(u, v) = n.
-        const glm::dvec3 X(1, 0, 0), Y(0, 1, 0), Z(0, 0, 1);
-        const glm::dvec3 faces[6][3] = {{X, Y, Z}, {-X, Z, Y}, {Y, Z, X}, {-Y, X, Z}, {Z, X, Y}, {-Z, Y, X}};
-        for (const auto& f : faces) {
-            const glm::dvec3 n = f[0] * half, u = f[1] * half, v = f[2] * half;
-            glm::dvec3 q[4] = {n - u - v, n + u - v, n + u + v, n - u + v};
-            if (inward) std::swap(q[1], q[3]);
-            quad(place(q[0]), place(q[1]), place(q[2]), place(q[3]));
-        }
-    }
-
-    Mesh take() { return std::move(mMesh); }
-    Mesh& mesh() { return mMesh; }
-
-private:
-    Mesh mMesh;
-};
 
 int addMaterial(Scene& scene, const std::string& name, glm::vec3 albedo, int texture = -1) {
     Material m;

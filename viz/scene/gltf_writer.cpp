@@ -11,6 +11,7 @@
 #include <stb_image_write.h>
 #include <tiny_gltf.h>
 
+#include "core/atomic_file.h"
 #include "core/error.h"
 
 namespace viz::scene {
@@ -288,24 +289,9 @@ void writeGltf(const Scene& scene, const std::string& path) {
     }
     const std::string bytes = out.str();
 
-    // Temporary file next to the target, renamed over it only once it is complete.
-    fs::path temp = target;
-    temp += ".tmp" + std::to_string(::getpid());
-    {
-        std::ofstream file(temp, std::ios::binary | std::ios::trunc);
-        if (!file) throw InputError("export '" + path + "': cannot write in folder '" + folder.string() + "'");
-        file.write(bytes.data(), std::streamsize(bytes.size()));
-        file.close();
-        if (!file) {
-            fs::remove(temp, ec);
-            throw InputError("export '" + path + "': writing failed (disk full?)");
-        }
-    }
-    fs::rename(temp, target, ec);
-    if (ec) {
-        fs::remove(temp, ec);
-        throw InputError("export '" + path + "': cannot replace the file");
-    }
+    // Renamed over the target only once complete: a failed export leaves no partial file.
+    const std::string error = writeFileAtomically(target, std::string_view(bytes.data(), bytes.size()));
+    if (!error.empty()) throw InputError("export '" + path + "': " + error);
 }
 
 }  // namespace viz::scene

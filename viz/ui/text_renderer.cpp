@@ -27,6 +27,21 @@ void DrawList::rect(const Rect& r, glm::vec4 color) {
     quad(r.min, r.max, uv, uv, packColor(color));
 }
 
+void DrawList::quadrilateral(glm::vec2 a, glm::vec2 b, glm::vec2 c, glm::vec2 d, glm::vec4 color) {
+    const glm::vec2 uv = mFont->whiteUv();
+    const std::uint32_t packed = packColor(color);
+    const UiVertex va{a, uv, packed}, vb{b, uv, packed}, vc{c, uv, packed}, vd{d, uv, packed};
+    mVertices.insert(mVertices.end(), {va, vb, vc, va, vc, vd});
+}
+
+void DrawList::line(glm::vec2 from, glm::vec2 to, float width, glm::vec4 color) {
+    const glm::vec2 along = to - from;
+    const float length = glm::length(along);
+    if (!(length > 0.0f)) return;
+    const glm::vec2 side = glm::vec2(-along.y, along.x) * (0.5f * width / length);
+    quadrilateral(from - side, to - side, to + side, from + side, color);
+}
+
 float DrawList::text(glm::vec2 topLeft, std::string_view utf8, glm::vec4 color) {
     mScratch.clear();
     const float end = mFont->layout(utf8, {topLeft.x, topLeft.y + mFont->ascent()}, mScratch);

@@ -1,4 +1,4 @@
-// Batched 2D drawing for the GUI shell: solid rectangles and text, collected on the CPU in a DrawList
+// Batched 2D drawing for the GUI shell and plots: solid rectangles, lines and text, collected on the CPU in a DrawList
 // and drawn by TextRenderer with one draw call over the glyph atlas (rectangles sample its opaque
 // texel). Coordinates: framebuffer pixels, origin top-left, y down. Colours are display (sRGB) values.
 #pragma once
@@ -38,6 +38,10 @@ public:
 
     void clear() { mVertices.clear(); }
     void rect(const Rect& r, glm::vec4 color);
+    // Any convex quadrilateral, corners in order (solid colour).
+    void quadrilateral(glm::vec2 a, glm::vec2 b, glm::vec2 c, glm::vec2 d, glm::vec4 color);
+    // A straight segment `width` pixels wide (a quad along it; no end caps).
+    void line(glm::vec2 from, glm::vec2 to, float width, glm::vec4 color);
     // Draws one line with its top-left corner at `topLeft` (the baseline sits ascent() below it);
     // returns the x just after the last glyph.
     float text(glm::vec2 topLeft, std::string_view utf8, glm::vec4 color);

@@ -63,6 +63,15 @@ public:
     const std::vector<ParamInfo>& params() const override { return mParams; }
     bool needsGl() const override { return true; }
 
+    // Samples per ray: the brute-force curve every other technique's speed-up is read against, so it
+    // spans errors from about 1 down to below 1e-2.
+    std::vector<QualitySetting> qualitySweep(bool quick) const override {
+        std::vector<QualitySetting> sweep;
+        for (int n = 4; n <= (quick ? 1024 : 2048); n *= quick ? 4 : 2)
+            sweep.push_back({"N=" + std::to_string(n), {{"samples", double(n)}}});
+        return sweep;
+    }
+
     Plan plan(const scene::Scene& scene, const Settings& settings) const override {
         Plan p;
         for (const StageInfo& s : mStages) p.stages.push_back({s.id, true, ""});

@@ -4,9 +4,8 @@
 #include <cstring>
 #include <fstream>
 #include <iterator>
-#include <random>
-#include <sstream>
-#include <thread>
+
+#include "core/atomic_file.h"
 
 namespace viz::reference {
 
@@ -131,27 +130,8 @@ bool writeCache(const std::filesystem::path& file, const CachedImages& images) {
 
     std::error_code ec;
     std::filesystem::create_directories(file.parent_path(), ec);
-    // A unique temporary name per writer, so concurrent runs never write into the same file; the
-    // rename is atomic within one folder, so readers see the old file or the whole new one.
-    std::ostringstream suffix;
-    suffix << ".tmp." << std::this_thread::get_id() << "." << std::random_device{}();
-    const std::filesystem::path tmp = file.string() + suffix.str();
-    {
-        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-        if (!out) return false;
-        out.write(bytes.data(), std::streamsize(bytes.size()));
-        if (!out) {
-            out.close();
-            std::filesystem::remove(tmp, ec);
-            return false;
-        }
-    }
-    std::filesystem::rename(tmp, file, ec);
-    if (ec) {
-        std::filesystem::remove(tmp, ec);
-        return false;
-    }
-    return true;
+    // Readers see the old file or the whole new one; concurrent writers never share a temporary.
+    return writeFileAtomically(file, std::string_view(bytes.data(), bytes.size())).empty();
 }
 
 }  // namespace viz::reference

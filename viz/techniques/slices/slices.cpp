@@ -150,6 +150,20 @@ public:
     const std::vector<ParamInfo>& params() const override { return mParams; }
     bool needsGl() const override { return true; }
 
+    // Plane count in float accumulation, then the precision lab's targets at one plane count.
+    std::vector<QualitySetting> qualitySweep(bool quick) const override {
+        std::vector<QualitySetting> sweep;
+        const std::vector<int> counts = quick ? std::vector<int>{32, 128, 512} : std::vector<int>{16, 32, 64, 128, 256, 512};
+        for (int n : counts) sweep.push_back({"planes=" + std::to_string(n), {{"planes", double(n)}}});
+        // accum codes as declared in params(): rgba8 0, rgba8-mask 1, rgba16f 2 (rgba32f 3 above).
+        const std::vector<std::pair<std::string, double>> accums =
+            quick ? std::vector<std::pair<std::string, double>>{{"rgba8-mask", 1}}
+                  : std::vector<std::pair<std::string, double>>{{"rgba8", 0}, {"rgba8-mask", 1}, {"rgba16f", 2}};
+        for (const auto& [name, code] : accums)
+            sweep.push_back({"planes=256 " + name, {{"planes", 256.0}, {"accum", code}}});
+        return sweep;
+    }
+
     Plan plan(const scene::Scene& scene, const Settings& s) const override {
         Plan p;
         for (const StageInfo& st : mStages) p.stages.push_back({st.id, true, ""});
@@ -190,8 +204,11 @@ public:
                               t.mask ? "plane i -> channel i mod 4 of an RGBA8 target; monochrome light colour"
                                      : "accum is not rgba8-mask"});
         p.features.push_back({"BLUR", t.blur, t.blur ? "3x3 tent on composite" : "blur=0"});
-        p.features.push_back({"CLIP", t.clip, t.clip ? "gl_ClipDistance against the light frustum's 6 planes"
-                                                     : "clip=0: whole planes over the frustum's bounding box"});
+        p.features.push_back({"CLIP", t.clip,
+                              t.clip               ? "gl_ClipDistance against the light frustum's 6 planes"
+                              : s.at("clip") == 0.0 ? "clip=0: whole planes over the frustum's bounding box"
+                                                    : "no spot light (and directional_box=0): every light's planes "
+                                                      "are unbounded, there is no light frustum to clip against"});
         if (hasDir) {
             const bool box = s.at("directional_box") != 0.0;
             p.features.push_back({"DIRECTIONAL_BOX", box,
@@ -327,7 +344,10 @@ private:
         t.noise = s.at("noise") != 0.0;
         t.mask = SlicesAccum(int(s.at("accum"))) == SlicesAccum::Rgba8Mask;
         t.blur = s.at("blur") != 0.0;
-        t.clip = s.at("clip") != 0.0;
+        // Only spot lights (and directional lights boxed by directional_box=1) have a frustum to clip to.
+        const bool boxedDirectional = render::hasLightOfType(scene, scene::LightType::Directional) &&
+                                      s.at("directional_box") != 0.0;
+        t.clip = s.at("clip") != 0.0 && (hasSpot || boxedDirectional);
         t.userClip = s.at("user_clip") != 0.0;
         t.count = s.at("count_fragments") != 0.0;
         t.cubes = render::hasLightOfType(scene, scene::LightType::Point) ||

@@ -1,0 +1,335 @@
+#include "report_command.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <thread>
+
+#include "core/error.h"
+#include "core/image_io.h"
+#include "debug/technique.h"
+#include "gl/gl.h"
+#include "platform/context_egl.h"
+#include "plot/plot.h"
+#include "report/error_images.h"
+#include "report/error_metrics.h"
+#include "report/report_table.h"
+#include "report/tradeoff.h"
+#include "scene/builtin_scenes.h"
+#include "scene/scene_source.h"
+#include "techniques/registry.h"
+#include "ui/offscreen.h"
+
+namespace airlight {
+
+using viz::InputError;
+
+namespace {
+
+constexpr const char* kReportHelp = R"(usage: airlight report [--scenes A,B,..] [--techniques T1,T2,..] [--size WxH] --out DIR [--quick] [--runs N]
+
+Sweeps each technique's quality knobs on each scene, times every setting (median of N runs after one
+warm-up; N = 5 by default) and compares its L_air with the reference (cached on disk). Writes into DIR:
+results.csv, results.json, one error-against-time plot per scene (PNG), each technique's image and error
+heat map, and index.html (static, no scripts). The headline is each technique's speed-up over
+brute-force raymarch at equal error.
+
+  --scenes      built-in scene names or glTF paths, comma-separated (default: every built-in scene)
+  --techniques  techniques to compare, comma-separated (default: every one but the reference;
+                raymarch is always added: it is the baseline of the speed-up)
+  --size        image size (default 160x120)
+  --quick       a shorter sweep per technique (all built-in scenes in a few minutes at 160x120)
+  --runs        timed runs per setting (default 5)
+)";
+
+std::vector<std::string> splitList(const std::string& text, const std::string& flag) {
+    std::vector<std::string> items;
+    std::size_t start = 0;
+    while (start <= text.size()) {
+        const std::size_t comma = std::min(text.find(',', start), text.size());
+        const std::string item = text.substr(start, comma - start);
+        if (item.empty()) throw InputError(flag + " '" + text + "' has an empty entry");
+        items.push_back(item);
+        start = comma + 1;
+    }
+    return items;
+}
+
+double median(std::vector<double> v) {
+    if (v.empty()) return 0.0;
+    std::sort(v.begin(), v.end());
+    const std::size_t n = v.size();
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+std::string settingsText(const viz::Settings& s) {
+    std::string text;
+    for (const auto& [name, value] : s) {
+        char buffer[64];
+        std::snprintf(buffer, sizeof buffer, "%g", value);
+        text += (text.empty() ? "" : " ") + name + "=" + buffer;
+    }
+    return text;
+}
+
+std::string utcNow() {
+    const std::time_t now = std::time(nullptr);
+    char buffer[32];
+    std::strftime(buffer, sizeof buffer, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
+    return buffer;
+}
+
+std::string machineDescription() {
+    char host[256] = {};
+    gethostname(host, sizeof host - 1);
+    std::string cpu = "unknown CPU";
+    std::ifstream info("/proc/cpuinfo");
+    for (std::string line; std::getline(info, line);)
+        if (line.rfind("model name", 0) == 0) {
+            cpu = line.substr(line.find(':') + 2);
+            break;
+        }
+    return std::string(host) + ", " + cpu + ", " + std::to_string(std::thread::hardware_concurrency()) + " threads";
+}
+
+// File-name friendly: letters, digits, '-' and '_' kept, anything else becomes '_'.
+std::string fileStem(const std::string& text) {
+    std::string out;
+    for (char c : text) out += (std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_') ? c : '_';
+    return out;
+}
+
+// One line on the terminal, redrawn in place when stderr is a terminal.
+class Progress {
+public:
+    explicit Progress(int total) : mTotal(total), mTty(isatty(STDERR_FILENO)) {}
+    void show(int done, const std::string& what) {
+        constexpr int kWidth = 24;
+        const int filled = mTotal > 0 ? done * kWidth / mTotal : kWidth;
+        std::string bar(std::size_t(filled), '#');
+        bar.resize(kWidth, '.');
+        std::fprintf(stderr, "%s[%s] %d/%d %s%s", mTty ? "\r\033[K" : "", bar.c_str(), done, mTotal, what.c_str(),
+                     mTty ? "" : "\n");
+        std::fflush(stderr);
+    }
+    void finish() {
+        if (mTty) std::fputc('\n', stderr);
+    }
+
+private:
+    int mTotal;
+    bool mTty;
+};
+
+struct Options {
+    std::vector<std::string> scenes, techniques;
+    int width = 160, height = 120;
+    std::string out;
+    bool quick = false;
+    int runs = 5;
+};
+
+Options parseReportOptions(Args& args) {
+    Options o;
+    while (!args.empty()) {
+        const std::string flag = args.take();
+        if (flag == "--scenes") o.scenes = splitList(args.next(flag), flag);
+        else if (flag == "--techniques") o.techniques = splitList(args.next(flag), flag);
+        else if (flag == "--size") {
+            const glm::ivec2 size = parseSize(args.next(flag));
+            o.width = size.x, o.height = size.y;
+        } else if (flag == "--out") o.out = args.next(flag);
+        else if (flag == "--quick") o.quick = true;
+        else if (flag == "--runs") {
+            const double runs = parseNumber(args.next(flag), flag);
+            if (runs < 1 || runs > 1000 || runs != std::floor(runs))
+                throw InputError("--runs must be a whole number from 1 to 1000, not '" + std::to_string(runs) + "'");
+            o.runs = int(runs);
+        } else throw InputError("unknown option '" + flag + "' for 'report' (run 'airlight report --help')");
+    }
+    if (o.out.empty()) throw InputError("report needs --out DIR (the folder to write the report into)");
+    if (o.scenes.empty()) o.scenes = viz::scene::builtinSceneNames();
+    if (o.techniques.empty())
+        for (const std::string& t : viz::techniqueIds())
+            if (t != "reference") o.techniques.push_back(t);
+    for (const std::string& t : o.techniques)
+        if (t == "reference")
+            throw InputError("--techniques: 'reference' is what the report measures against; list the others");
+    if (std::find(o.techniques.begin(), o.techniques.end(), "raymarch") == o.techniques.end())
+        o.techniques.insert(o.techniques.begin(), "raymarch");
+    return o;
+}
+
+struct SweepPoint {
+    std::string technique;
+    viz::QualitySetting setting;
+};
+
+}  // namespace
+
+int runReportCommand(Args& args, const std::string& commandLine) {
+    if (!args.empty() && isHelpFlag(args.peek())) {
+        std::fputs(kReportHelp, stdout);
+        return 0;
+    }
+    const Options o = parseReportOptions(args);
+
+    // Everything the user named is checked before any work starts.
+    std::vector<viz::scene::Scene> scenes;
+    for (const std::string& name : o.scenes) scenes.push_back(viz::scene::loadScene(name));
+    std::vector<SweepPoint> sweep;
+    for (const std::string& id : o.techniques) {
+        const auto technique = viz::makeTechnique(id);
+        for (viz::QualitySetting& q : technique->qualitySweep(o.quick)) {
+            viz::completeSettings(*technique, q.settings);  // throws if a declared sweep is invalid
+            sweep.push_back({id, std::move(q)});
+        }
+    }
+    std::error_code ec;
+    std::filesystem::create_directories(o.out, ec);
+    if (!std::filesystem::is_directory(o.out))
+        throw InputError("cannot create the report folder '" + o.out + "'");
+    const std::filesystem::path dir(o.out);
+
+    auto context = viz::HeadlessContext::create(false);
+    viz::report::ReportMeta meta;
+    meta.date = utcNow();
+    meta.command = commandLine;
+    meta.machine = machineDescription();
+    meta.renderer = std::string(reinterpret_cast<const char*>(glGetString(GL_RENDERER))) + ", OpenGL " +
+                    reinterpret_cast<const char*>(glGetString(GL_VERSION));
+    meta.width = o.width, meta.height = o.height, meta.runs = o.runs, meta.quick = o.quick;
+
+    const viz::ui::FontAtlas font = viz::ui::FontAtlas::bake(viz::ui::FontAtlas::kDefaultFontPath, 15.0f);
+    std::vector<viz::report::ReportRow> rows;
+    std::vector<viz::report::ScenePage> pages;
+    Progress progress(int(scenes.size() * (sweep.size() + 1)));
+    int done = 0;
+    for (std::size_t si = 0; si < scenes.size(); ++si) {
+        const viz::scene::Scene& scene = scenes[si];
+        const std::string& sceneName = o.scenes[si];
+        const std::string stem = fileStem(scene.name.empty() ? sceneName : scene.name);
+        progress.show(done, sceneName + " | reference");
+        viz::Image reference;
+        {
+            auto t = viz::makeTechnique("reference");
+            viz::FrameInput in{&scene, o.width, o.height, viz::completeSettings(*t, {}), -1};
+            reference = t->run(in).airlight;
+        }
+        ++done;
+        const float exposure = viz::report::exposureFor(reference);
+        viz::report::ScenePage page{sceneName, stem + "-plot.png", stem + "-reference.png"};
+        viz::writeImage(reference, (dir / page.referenceImage).string(), exposure);
+
+        // Keep the most accurate image of each technique for the page.
+        std::map<std::string, std::pair<std::size_t, viz::Image>> bestImage;
+        std::unique_ptr<viz::Technique> technique;
+        for (const SweepPoint& point : sweep) {
+            progress.show(done, sceneName + " | " + point.technique + " | " + point.setting.label);
+            if (!technique || technique->id() != point.technique) {
+                technique.reset();
+                technique = viz::makeTechnique(point.technique);
+            }
+            viz::FrameInput in{&scene, o.width, o.height, viz::completeSettings(*technique, point.setting.settings), -1};
+            viz::FrameOutput output = technique->run(in);  // warm-up: shader compiles, uploads, caches
+            std::vector<double> totals, walls;
+            std::map<std::string, std::vector<double>> stageTimes;
+            std::vector<std::string> stageOrder;
+            for (int r = 0; r < o.runs; ++r) {
+                const auto start = std::chrono::steady_clock::now();
+                output = technique->run(in);
+                walls.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+                totals.push_back(output.timing.totalMilliseconds());
+                for (const viz::StageTiming& s : output.timing.stages) {
+                    if (!stageTimes.count(s.stage)) stageOrder.push_back(s.stage);
+                    stageTimes[s.stage].push_back(s.milliseconds);
+                }
+            }
+            viz::report::ReportRow row;
+            row.scene = sceneName;
+            row.technique = point.technique;
+            row.setting = point.setting.label;
+            row.settings = settingsText(point.setting.settings);
+            row.width = o.width, row.height = o.height, row.runs = o.runs;
+            row.clock = output.timing.clock;
+            for (const std::string& s : stageOrder) row.stages.push_back({s, median(stageTimes[s])});
+            row.totalMilliseconds = median(totals);
+            row.wallMilliseconds = median(walls);
+            if (output.airlight.empty()) throw std::runtime_error(point.technique + " produced no L_air image");
+            row.error = viz::report::compareImages(output.airlight, reference);
+            // The page shows each technique's most accurate image (a finite error beats an undefined one).
+            const auto it = bestImage.find(point.technique);
+            const double e = row.error.relativeL2;
+            if (it == bestImage.end() || (std::isfinite(e) && !(rows[it->second.first].error.relativeL2 <= e)))
+                bestImage[point.technique] = {rows.size(), output.airlight};
+            rows.push_back(std::move(row));
+            ++done;
+        }
+        technique.reset();
+        for (auto& [id, best] : bestImage) {
+            viz::report::ReportRow& row = rows[best.first];
+            row.image = stem + "-" + fileStem(id) + ".png";
+            row.errorImage = stem + "-" + fileStem(id) + "-error.png";
+            viz::writeImage(best.second, (dir / row.image).string(), exposure);
+            viz::writeImage(viz::report::errorHeatMap(best.second, reference, exposure * 10.0f),
+                            (dir / row.errorImage).string());
+        }
+        pages.push_back(page);
+    }
+    progress.show(done, "writing the report");
+    progress.finish();
+    viz::report::annotateTradeoffs(rows);
+
+    // Plots: error against time per scene, one series per technique (its own Pareto front joined by a
+    // line), the scene's overall Pareto front ringed.
+    for (const viz::report::ScenePage& page : pages) {
+        viz::plot::PlotSpec spec;
+        spec.title = page.scene + ": error against time (" + std::to_string(o.width) + "x" + std::to_string(o.height) + ")";
+        spec.xLabel = "time per frame, ms (sum of stages)";
+        spec.yLabel = "relative L2 error of L_air";
+        spec.logX = spec.logY = true;
+        spec.highlightName = "Pareto front";
+        int colour = 0;
+        for (const std::string& technique : o.techniques) {
+            viz::plot::Series all{technique, viz::plot::categoricalColor(colour), {}, false, true};
+            std::vector<viz::report::TradeoffPoint> points;
+            for (const auto& r : rows)
+                if (r.scene == page.scene && r.technique == technique) {
+                    all.points.push_back({r.totalMilliseconds, r.error.relativeL2});
+                    points.push_back({r.totalMilliseconds, r.error.relativeL2});
+                }
+            viz::plot::Series front{"", all.color, {}, true, false};
+            for (int k : viz::report::paretoFront(points)) front.points.push_back(all.points[std::size_t(k)]);
+            spec.series.push_back(std::move(all));
+            spec.series.push_back(std::move(front));
+            ++colour;
+        }
+        for (const auto& r : rows)
+            if (r.scene == page.scene && r.pareto) spec.highlighted.push_back({r.totalMilliseconds, r.error.relativeL2});
+        viz::ui::DrawList list(font);
+        const glm::ivec2 size{760, 480};
+        viz::plot::drawPlot(list, {{0.0f, 0.0f}, glm::vec2(size)}, spec);
+        viz::writeImage(viz::ui::renderOffscreen(list, size, {1, 1, 1, 1}), (dir / page.plot).string());
+    }
+    viz::report::writeCsv((dir / "results.csv").string(), rows);
+    viz::report::writeJson((dir / "results.json").string(), meta, rows);
+    viz::report::writeHtml((dir / "index.html").string(), meta, rows, pages);
+
+    for (const viz::report::ScenePage& page : pages)
+        for (const std::string& t : o.techniques)
+            if (const auto* best = viz::report::bestSpeedup(rows, page.scene, t); best && t != "raymarch")
+                std::printf("%-14s %-10s %6.2fx faster than raymarch at error %.3g (%s)\n", page.scene.c_str(),
+                            t.c_str(), *best->speedup, best->error.relativeL2, best->setting.c_str());
+    std::printf("wrote %s\n", (dir / "index.html").string().c_str());
+    return 0;
+}
+
+}  // namespace airlight

@@ -1,0 +1,74 @@
+// The fixture of the command-line tests: runs the airlight binary in a fresh folder per test and checks
+// the one-line error contract.
+#pragma once
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace viz::testing {
+
+namespace fs = std::filesystem;
+
+struct RunResult {
+    int exitCode = -1;
+    std::string out;
+    std::string err;
+};
+
+inline std::string readFile(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+class CliTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+        mDir = fs::temp_directory_path() / ("airlight_cli_" + std::string(info->name()) + "_" +
+                                            std::to_string(::getpid()));
+        fs::remove_all(mDir);
+        fs::create_directories(mDir);
+    }
+    void TearDown() override { fs::remove_all(mDir); }
+
+    RunResult run(const std::string& args) {
+        const fs::path out = mDir / "stdout.txt", err = mDir / "stderr.txt";
+        const std::string cmd = std::string(AIRLIGHT_EXE) + " " + args + " >" + out.string() + " 2>" + err.string();
+        const int status = std::system(cmd.c_str());
+        RunResult r;
+        r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+        r.out = readFile(out);
+        r.err = readFile(err);
+        return r;
+    }
+
+    fs::path path(const std::string& name) const { return mDir / name; }
+
+    fs::path writeText(const std::string& name, const std::string& text) const {
+        const fs::path p = mDir / name;
+        std::ofstream(p) << text;
+        return p;
+    }
+
+    // Asserts a user error: exit code 2, exactly one line on stderr naming the problem, nothing on stdout.
+    void expectUserError(const RunResult& r, const std::string& mentions) {
+        EXPECT_EQ(r.exitCode, 2) << r.err;
+        EXPECT_EQ(r.err.rfind("airlight: error: ", 0), 0u) << r.err;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+        EXPECT_NE(r.err.find(mentions), std::string::npos) << "expected '" << mentions << "' in: " << r.err;
+    }
+
+    fs::path mDir;
+};
+
+}  // namespace viz::testing

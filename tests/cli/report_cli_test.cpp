@@ -1,0 +1,114 @@
+// `airlight report` end to end at a tiny size: the files it writes, their schema, a page that a browser
+// loads with every image present, and the one-line errors for bad input.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <set>
+#include <sstream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "cli/cli_fixture.h"
+#include "core/image_io.h"
+
+namespace viz::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Loads `page` in headless Chromium through a copy that counts the images that failed to load; returns
+// "images=N missing=M", or empty when no browser is installed.
+std::string imagesLoadedInBrowser(const fs::path& page, const fs::path& scratch) {
+    const char* browser = "/usr/bin/chromium";
+    if (!fs::exists(browser)) return {};
+    std::string html = readFile(page);
+    const std::string probe =
+        "<script>window.addEventListener('load',()=>{const i=[...document.images];"
+        "document.body.setAttribute('data-probe','images='+i.length+' missing='+"
+        "i.filter(x=>!x.complete||x.naturalWidth===0).length);});</script>";
+    html.insert(html.rfind("</body>"), probe);
+    const fs::path copy = page.parent_path() / "probe.html";
+    std::ofstream(copy) << html;
+    const fs::path dom = scratch / "dom.txt";
+    const std::string cmd = std::string(browser) +
+                            " --headless --no-sandbox --disable-gpu --disable-quic --no-first-run "
+                            "--disable-background-networking --disable-component-update --disable-sync "
+                            "--user-data-dir=" + (scratch / "profile").string() +
+                            " --virtual-time-budget=5000 --dump-dom file://" + copy.string() + " >" + dom.string() +
+                            " 2>/dev/null";
+    if (std::system(cmd.c_str()) != 0) return "browser failed";
+    const std::string text = readFile(dom);
+    const std::size_t at = text.find("data-probe=\"");
+    if (at == std::string::npos) return "no probe result";
+    const std::size_t start = at + 12;
+    return text.substr(start, text.find('"', start) - start);
+}
+
+TEST_F(CliTest, ReportWritesResultsPlotsImagesAndAPageThatLoads) {
+    const fs::path out = path("report");
+    const RunResult r = run("report --scenes grate --techniques raymarch --size 32x24 --quick --runs 1 --out " +
+                            out.string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+
+    // results.csv: the header, then one row per sweep setting with its figures filled in.
+    std::istringstream csv(readFile(out / "results.csv"));
+    std::string header, line;
+    std::getline(csv, header);
+    EXPECT_EQ(header.rfind("scene,technique,setting,settings,width,height,runs,clock,total_ms", 0), 0u) << header;
+    int rows = 0;
+    while (std::getline(csv, line)) ++rows;
+    const nlohmann::json j = nlohmann::json::parse(readFile(out / "results.json"));
+    EXPECT_EQ(int(j.at("rows").size()), rows);
+    EXPECT_GE(rows, 4);  // raymarch's quick sweep spans several sample counts
+    std::set<std::string> settings;
+    for (const auto& row : j.at("rows")) {
+        EXPECT_EQ(row.at("scene"), "grate");
+        EXPECT_EQ(row.at("width"), 32);
+        EXPECT_GT(row.at("total_ms").get<double>(), 0.0);
+        EXPECT_EQ(row.at("error").at("nan_pixels"), 0);
+        EXPECT_TRUE(row.at("error").at("relative_l2").is_number());
+        EXPECT_FALSE(row.at("stage_ms").empty());
+        settings.insert(row.at("setting").get<std::string>());
+    }
+    EXPECT_EQ(int(settings.size()), rows);
+    EXPECT_NE(j.at("meta").at("renderer").get<std::string>().find("OpenGL"), std::string::npos);
+    // The error falls as raymarch takes more samples (first and last of the sweep).
+    EXPECT_GT(j.at("rows").front().at("error").at("relative_l2").get<double>(),
+              j.at("rows").back().at("error").at("relative_l2").get<double>());
+
+    // The plot is a real picture: not one flat colour, and carries the series colour somewhere.
+    const Image plot = readImage((out / "grate-plot.png").string());
+    ASSERT_GT(plot.width, 100);
+    float lo = 1e9f, hi = -1e9f;
+    for (float v : plot.pixels) lo = std::min(lo, v), hi = std::max(hi, v);
+    EXPECT_GT(hi - lo, 0.5f);
+    for (const char* file : {"grate-reference.png", "grate-raymarch.png", "grate-raymarch-error.png"})
+        EXPECT_TRUE(fs::exists(out / file)) << file;
+
+    const std::string page = readFile(out / "index.html");
+    EXPECT_EQ(page.find("<script"), std::string::npos);
+    EXPECT_EQ(page.find("http"), std::string::npos);  // nothing fetched from anywhere
+    const std::string loaded = imagesLoadedInBrowser(out / "index.html", mDir);
+    if (loaded.empty()) {
+        if (std::getenv("VIZ_REQUIRE_BROWSER")) FAIL() << "VIZ_REQUIRE_BROWSER is set but /usr/bin/chromium is missing";
+        GTEST_SKIP() << "no /usr/bin/chromium: the page was not loaded in a browser";
+    }
+    EXPECT_EQ(loaded, "images=4 missing=0");
+}
+
+TEST_F(CliTest, ReportRejectsBadInputBeforeWritingAnything) {
+    const fs::path out = path("never");
+    expectUserError(run("report --scenes grate,nosuchscene --out " + out.string()), "nosuchscene");
+    expectUserError(run("report --techniques raymarch,nosuch --out " + out.string()), "nosuch");
+    expectUserError(run("report --techniques reference --out " + out.string()), "reference");
+    expectUserError(run("report --runs 0 --out " + out.string()), "--runs");
+    expectUserError(run("report --scenes grate"), "--out");
+    expectUserError(run("report --scenes grate, --out " + out.string()), "empty entry");
+    EXPECT_FALSE(fs::exists(out));
+}
+
+}  // namespace
+}  // namespace viz::testing

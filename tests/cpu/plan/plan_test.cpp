@@ -1,0 +1,97 @@
+// What each technique leaves out for each built-in scene: the plan is asserted scene by scene, and
+// every technique's plan is checked for the general contract (every stage listed once in order, every
+// skipped stage and disabled feature with a reason).
+#include <gtest/gtest.h>
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "scene/builtin_scenes.h"
+#include "techniques/registry.h"
+
+namespace viz {
+namespace {
+
+const FeaturePlan* feature(const Plan& plan, const std::string& name) {
+    for (const FeaturePlan& f : plan.features)
+        if (f.feature == name) return &f;
+    return nullptr;
+}
+
+Plan planFor(const std::string& technique, const std::string& sceneName, const Settings& given = {}) {
+    const auto t = makeTechnique(technique);
+    return t->plan(scene::makeBuiltinScene(sceneName), completeSettings(*t, given));
+}
+
+TEST(Plan, EveryTechniqueListsItsStagesInOrderAndExplainsEverySkip) {
+    for (const std::string& id : techniqueIds())
+        for (const std::string& sceneName : scene::builtinSceneNames()) {
+            const auto t = makeTechnique(id);
+            const Plan plan = t->plan(scene::makeBuiltinScene(sceneName), completeSettings(*t, {}));
+            ASSERT_EQ(plan.stages.size(), t->stages().size()) << id << " " << sceneName;
+            for (std::size_t i = 0; i < plan.stages.size(); ++i) {
+                EXPECT_EQ(plan.stages[i].stage, t->stages()[i].id) << id << " " << sceneName;
+                if (!plan.stages[i].runs) EXPECT_FALSE(plan.stages[i].why.empty()) << id << " " << plan.stages[i].stage;
+            }
+            for (const FeaturePlan& f : plan.features)
+                if (!f.enabled) EXPECT_FALSE(f.why.empty()) << id << " " << sceneName << " " << f.feature;
+        }
+}
+
+// Expected on/off per scene for the features a scene decides (settings at their defaults).
+using FeatureTable = std::map<std::string, std::map<std::string, bool>>;
+
+void expectFeatures(const std::string& technique, const FeatureTable& table) {
+    for (const auto& [sceneName, expected] : table) {
+        const Plan plan = planFor(technique, sceneName);
+        for (const auto& [name, on] : expected) {
+            const FeaturePlan* f = feature(plan, name);
+            ASSERT_NE(f, nullptr) << technique << " lists no feature " << name;
+            EXPECT_EQ(f->enabled, on) << technique << " on " << sceneName << ": " << name << " (" << f->why << ")";
+        }
+    }
+}
+
+TEST(Plan, RaymarchCompilesOnlyTheLightAndShadowCodeEachSceneUses) {
+    // grate and stained-glass: one spot (stained-glass's with a cookie); colonnade, forest, terrain: one
+    // sun; tv-room: one area light (VPLs with cube maps).
+    const std::map<std::string, bool> sun = {{"SPOT", false}, {"COOKIE", false}, {"AREA_VPLS", false},
+                                             {"SHADOW_MAPS_CUBE", false}, {"SHADOW_MAPS_2D", true}};
+    expectFeatures("raymarch",
+                   {{"grate", {{"SPOT", true}, {"COOKIE", false}, {"AREA_VPLS", false}, {"SHADOW_MAPS_CUBE", false},
+                               {"SHADOW_MAPS_2D", true}}},
+                    {"stained-glass", {{"SPOT", true}, {"COOKIE", true}, {"SHADOW_MAPS_CUBE", false}}},
+                    {"colonnade", sun},
+                    {"forest", sun},
+                    {"terrain", sun},
+                    {"tv-room", {{"SPOT", false}, {"COOKIE", false}, {"AREA_VPLS", true}, {"SHADOW_MAPS_CUBE", true},
+                                 {"SHADOW_MAPS_2D", false}}}});
+}
+
+TEST(Plan, SlicesClipsOnlyWhereALightFrustumExists) {
+    const std::map<std::string, bool> sun = {{"SPOT_FALLOFF", false}, {"COOKIE", false}, {"CLIP", false},
+                                             {"UNBOUNDED_PLANES", true}};
+    expectFeatures("slices", {{"grate", {{"SPOT_FALLOFF", true}, {"COOKIE", false}, {"CLIP", true},
+                                         {"UNBOUNDED_PLANES", false}}},
+                              {"stained-glass", {{"SPOT_FALLOFF", true}, {"COOKIE", true}, {"CLIP", true}}},
+                              {"colonnade", sun},
+                              {"forest", sun},
+                              {"terrain", sun},
+                              {"tv-room", {{"CLIP", false}, {"UNBOUNDED_PLANES", true}}}});
+    // A directional light boxed into its shadow map's volume is clipped to that box.
+    EXPECT_TRUE(feature(planFor("slices", "colonnade", {{"directional_box", 1}}), "CLIP")->enabled);
+}
+
+TEST(Plan, NothingScattersWithoutScattering) {
+    scene::Scene s = scene::makeBuiltinScene("grate");
+    s.medium.sigma_s = 0.0;
+    const auto t = makeTechnique("raymarch");
+    const Plan plan = t->plan(s, completeSettings(*t, {}));
+    bool skipped = false;
+    for (const StagePlan& st : plan.stages) skipped |= st.stage == "raymarch.march" && !st.runs;
+    EXPECT_TRUE(skipped);
+}
+
+}  // namespace
+}  // namespace viz

@@ -1,0 +1,217 @@
+// The report's figures and files: error metrics, the Pareto front and speed-up at equal error, and the
+// CSV / JSON / HTML writers, all on constructed inputs whose answers are known independently.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "core/error.h"
+#include "report/error_metrics.h"
+#include "report/report_table.h"
+#include "report/tradeoff.h"
+
+namespace viz::report {
+namespace {
+
+namespace fs = std::filesystem;
+
+Image constant(int w, int h, float v) {
+    Image image(w, h, 3);
+    for (float& p : image.pixels) p = v;
+    return image;
+}
+
+std::string readAll(const fs::path& p) {
+    std::ifstream in(p);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+TEST(ErrorMetrics, IdenticalImagesHaveZeroErrorAndInfinitePsnr) {
+    const Image a = constant(8, 4, 0.5f);
+    const ErrorMetrics m = compareImages(a, a);
+    EXPECT_EQ(m.relativeL2, 0.0);
+    EXPECT_EQ(m.rmse, 0.0);
+    EXPECT_EQ(m.maxAbsolute, 0.0);
+    EXPECT_EQ(m.relativeP999, 0.0);
+    EXPECT_TRUE(std::isinf(m.psnr) && m.psnr > 0);
+    EXPECT_EQ(m.pixels, 32u);
+}
+
+TEST(ErrorMetrics, ScaledImageGivesTheScaleAsRelativeError) {
+    Image ref(16, 8, 3);
+    for (std::size_t i = 0; i < ref.pixels.size(); ++i) ref.pixels[i] = 0.1f + float(i % 7);
+    Image test = ref;
+    for (float& v : test.pixels) v *= 1.25f;
+    const ErrorMetrics m = compareImages(test, ref);
+    EXPECT_NEAR(m.relativeL2, 0.25, 1e-6);
+    // Every pixel's relative error is 0.25 (no pixel is below the floor), so is its 99.9th percentile.
+    EXPECT_NEAR(m.relativeP999, 0.25, 1e-6);
+    double maxRef = 0.0, sum2 = 0.0;
+    for (float v : ref.pixels) maxRef = std::max(maxRef, double(v)), sum2 += 0.0625 * double(v) * double(v);
+    EXPECT_NEAR(m.maxAbsolute, 0.25 * maxRef, 1e-5);
+    EXPECT_NEAR(m.rmse, std::sqrt(sum2 / double(ref.pixels.size())), 1e-5);
+    EXPECT_GT(m.psnr, 0.0);
+    EXPECT_TRUE(std::isfinite(m.psnr));
+}
+
+TEST(ErrorMetrics, PercentileIgnoresTheWorstTenthOfAPercent) {
+    // 2000 pixels: one is far off, the rest exact: the 99.9th percentile (rank 1998 of 2000) is 0.
+    const Image ref = constant(100, 20, 1.0f);
+    Image test = ref;
+    test.at(3, 4, 0) = 50.0f;
+    EXPECT_EQ(compareImages(test, ref).relativeP999, 0.0);
+    test.at(5, 6, 1) = 50.0f;
+    test.at(7, 8, 2) = 50.0f;  // 3 bad pixels > 0.1 %: now the percentile sees one
+    EXPECT_GT(compareImages(test, ref).relativeP999, 10.0);
+}
+
+TEST(ErrorMetrics, NonFinitePixelsAreCountedAndMakeFiguresUndefined) {
+    const Image ref = constant(4, 4, 1.0f);
+    Image test = ref;
+    test.at(0, 0, 1) = std::numeric_limits<float>::quiet_NaN();
+    test.at(1, 0, 0) = std::numeric_limits<float>::infinity();
+    test.at(1, 0, 2) = std::numeric_limits<float>::quiet_NaN();  // same pixel: counted once per kind
+    test.at(2, 0, 0) = -0.5f;
+    const ErrorMetrics m = compareImages(test, ref);
+    EXPECT_EQ(m.nanPixels, 2u);
+    EXPECT_EQ(m.infPixels, 1u);
+    EXPECT_EQ(m.negativePixels, 1u);
+    EXPECT_FALSE(m.finite());
+    EXPECT_TRUE(std::isnan(m.relativeL2));
+    EXPECT_TRUE(std::isnan(m.psnr));
+}
+
+TEST(ErrorMetrics, PsnrUsesTheStatedToneMap) {
+    const Image ref = constant(4, 4, 2.0f);
+    const Image test = constant(4, 4, 3.0f);
+    const double k = kToneKey / 2.0;
+    const double d = toneMap(3.0, k) - toneMap(2.0, k);
+    EXPECT_NEAR(compareImages(test, ref).psnr, -10.0 * std::log10(d * d), 1e-9);
+}
+
+TEST(Tradeoff, ParetoFrontKeepsOnlyUndominatedPoints) {
+    const std::vector<TradeoffPoint> p = {{10, 0.5}, {20, 0.2}, {15, 0.6}, {40, 0.05}, {30, 0.3}, {5, 0.9},
+                                          {0, 0.1}, {50, std::numeric_limits<double>::quiet_NaN()}};
+    EXPECT_EQ(paretoFront(p), (std::vector<int>{5, 0, 1, 3}));
+}
+
+TEST(Tradeoff, SpeedupInterpolatesOnALogLogLine) {
+    // Baseline time = 100 * error^-0.5 exactly, so interpolation on log-log axes is exact in between.
+    std::vector<TradeoffPoint> base;
+    for (double e : {0.8, 0.2, 0.05, 0.0125}) base.push_back({100.0 * std::pow(e, -0.5), e});
+    const double e = 0.1;
+    const auto t = baselineTimeAtError(base, e);
+    ASSERT_TRUE(t.has_value());
+    EXPECT_NEAR(*t, 100.0 * std::pow(e, -0.5), 1e-9);
+    const auto s = speedupAtEqualError(base, {*t / 4.0, e});
+    ASSERT_TRUE(s.has_value());
+    EXPECT_NEAR(*s, 4.0, 1e-9);
+    // Outside the baseline's error range there is no extrapolation.
+    EXPECT_FALSE(baselineTimeAtError(base, 0.9).has_value());
+    EXPECT_FALSE(baselineTimeAtError(base, 0.01).has_value());
+    EXPECT_TRUE(baselineTimeAtError(base, 0.0125).has_value());
+}
+
+class ReportFiles : public ::testing::Test {
+protected:
+    void SetUp() override {
+        mDir = fs::temp_directory_path() / ("airlight_report_" + std::to_string(::getpid()));
+        fs::create_directories(mDir);
+        for (int i = 0; i < 3; ++i) {
+            ReportRow r;
+            r.scene = "grate";
+            r.technique = i < 2 ? "raymarch" : "slices";
+            r.setting = i < 2 ? "N=" + std::to_string(16 << (2 * i)) : "planes=64, \"odd\"";
+            r.settings = "samples=16";
+            r.width = 32, r.height = 24, r.runs = 5, r.clock = "glFinish+steady_clock";
+            r.stages = {{"a.shadow_maps", 1.5}, {"a.march", 2.0 + i}};
+            r.totalMilliseconds = 10.0 * (i + 1);
+            r.wallMilliseconds = r.totalMilliseconds + 1.0;
+            r.error.relativeL2 = i == 0 ? 0.5 : i == 1 ? 0.1 : 0.2;
+            r.error.psnr = std::numeric_limits<double>::infinity();
+            r.image = i == 2 ? "grate-slices.png" : "";
+            mRows.push_back(r);
+        }
+        annotateTradeoffs(mRows);
+    }
+    void TearDown() override { fs::remove_all(mDir); }
+    fs::path mDir;
+    std::vector<ReportRow> mRows;
+};
+
+TEST_F(ReportFiles, SpeedupAndFrontAreAnnotatedPerScene) {
+    ASSERT_TRUE(mRows[2].speedup.has_value());
+    // raymarch: 10 ms at 0.5, 20 ms at 0.1; at 0.2 it would take 10 * 2^(log(0.4)/log(0.2)) ms.
+    const double expected = 10.0 * std::pow(2.0, std::log(0.2 / 0.5) / std::log(0.1 / 0.5)) / 30.0;
+    EXPECT_NEAR(*mRows[2].speedup, expected, 1e-9);
+    EXPECT_TRUE(mRows[0].pareto);
+    EXPECT_TRUE(mRows[1].pareto);
+    EXPECT_FALSE(mRows[2].pareto);  // slower and worse than raymarch N=64
+}
+
+TEST_F(ReportFiles, CsvHasTheDocumentedColumnsAndOneLinePerRow) {
+    const fs::path csv = mDir / "results.csv";
+    writeCsv(csv.string(), mRows);
+    std::istringstream in(readAll(csv));
+    std::string header;
+    std::getline(in, header);
+    std::string expected;
+    for (const std::string& c : csvColumns()) expected += (expected.empty() ? "" : ",") + c;
+    EXPECT_EQ(header, expected);
+    int lines = 0;
+    for (std::string line; std::getline(in, line);) {
+        ++lines;
+        // Count fields outside quotes: the quoted setting holds a comma and doubled quotes.
+        int fields = 1;
+        bool quoted = false;
+        for (char c : line) {
+            if (c == '"') quoted = !quoted;
+            if (c == ',' && !quoted) ++fields;
+        }
+        EXPECT_EQ(fields, int(csvColumns().size())) << line;
+    }
+    EXPECT_EQ(lines, 3);
+    EXPECT_NE(readAll(csv).find("\"planes=64, \"\"odd\"\"\""), std::string::npos);
+}
+
+TEST_F(ReportFiles, JsonParsesAndPrintsUndefinedFiguresAsNull) {
+    const fs::path json = mDir / "results.json";
+    ReportMeta meta;
+    meta.width = 32, meta.height = 24, meta.runs = 5;
+    writeJson(json.string(), meta, mRows);
+    const nlohmann::json j = nlohmann::json::parse(readAll(json));
+    ASSERT_EQ(j.at("rows").size(), 3u);
+    const auto& row = j.at("rows")[2];
+    for (const char* key : {"scene", "technique", "setting", "total_ms", "wall_ms", "stage_ms", "error", "clock",
+                            "speedup_vs_raymarch", "pareto"})
+        EXPECT_TRUE(row.contains(key)) << key;
+    EXPECT_TRUE(row.at("error").at("psnr_db").is_null());
+    EXPECT_DOUBLE_EQ(row.at("stage_ms").at("a.march").get<double>(), 4.0);
+    EXPECT_EQ(j.at("meta").at("runs").get<int>(), 5);
+}
+
+TEST_F(ReportFiles, HtmlIsStaticAndReferencesItsImages) {
+    const fs::path html = mDir / "index.html";
+    writeHtml(html.string(), {}, mRows, {{"grate", "grate-plot.png", "grate-reference.png"}});
+    const std::string page = readAll(html);
+    EXPECT_EQ(page.find("<script"), std::string::npos);
+    for (const char* image : {"grate-plot.png", "grate-reference.png", "grate-slices.png"})
+        EXPECT_NE(page.find(std::string("src=\"") + image + "\""), std::string::npos) << image;
+    EXPECT_NE(page.find("&quot;odd&quot;"), std::string::npos);  // escaped
+}
+
+TEST_F(ReportFiles, UnwritableFolderIsAnInputError) {
+    EXPECT_THROW(writeCsv((mDir / "missing" / "results.csv").string(), mRows), InputError);
+    EXPECT_FALSE(fs::exists(mDir / "missing"));
+}
+
+}  // namespace
+}  // namespace viz::report

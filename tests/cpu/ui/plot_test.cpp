@@ -1,0 +1,67 @@
+// Plot layout on the CPU: tick choice and that a drawn plot stays inside its rectangle.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "plot/plot.h"
+#include "ui/font.h"
+
+namespace viz::plot {
+namespace {
+
+TEST(AxisTicks, LinearTicksAreOneTwoFiveStepsCoveringTheData) {
+    const AxisTicks t = axisTicks(0.13, 0.87, false, 5);
+    ASSERT_GE(t.values.size(), 3u);
+    EXPECT_LE(t.lo, 0.13);
+    EXPECT_GE(t.hi, 0.87);
+    const double step = t.values[1] - t.values[0];
+    EXPECT_NEAR(step, 0.2, 1e-12);
+    for (std::size_t i = 1; i < t.values.size(); ++i) EXPECT_NEAR(t.values[i] - t.values[i - 1], step, 1e-12);
+    EXPECT_EQ(t.labels.front(), "0");
+    EXPECT_EQ(t.labels[1], "0.2");
+}
+
+TEST(AxisTicks, LogTicksAreDecadesAroundTheData) {
+    const AxisTicks t = axisTicks(0.003, 0.9, true);
+    EXPECT_DOUBLE_EQ(t.lo, 1e-3);
+    EXPECT_DOUBLE_EQ(t.hi, 1.0);
+    for (double v : t.values) {
+        const double m = v / std::pow(10.0, std::floor(std::log10(v) + 1e-9));
+        EXPECT_TRUE(std::abs(m - 1) < 1e-9 || std::abs(m - 2) < 1e-9 || std::abs(m - 5) < 1e-9) << v;
+    }
+    EXPECT_TRUE(std::is_sorted(t.values.begin(), t.values.end()));
+}
+
+TEST(AxisTicks, DegenerateAndInvalidRangesStillGiveAnAxis) {
+    const AxisTicks a = axisTicks(3.0, 3.0, false);
+    EXPECT_LT(a.lo, 3.0);
+    EXPECT_GT(a.hi, 3.0);
+    const AxisTicks b = axisTicks(NAN, 1.0, true);
+    EXPECT_LT(b.lo, b.hi);
+    EXPECT_FALSE(b.values.empty());
+}
+
+TEST(DrawPlot, EverythingLandsInsideTheArea) {
+    const ui::FontAtlas font = ui::FontAtlas::bake(ui::FontAtlas::kDefaultFontPath, 14.0f);
+    ui::DrawList list(font);
+    PlotSpec spec;
+    spec.title = "error against time";
+    spec.xLabel = "ms";
+    spec.yLabel = "relative L2";
+    spec.logX = spec.logY = true;
+    spec.series.push_back({"raymarch", categoricalColor(0), {{10, 1.0}, {40, 0.1}, {160, 0.01}, {-1, 0.5}}, true, true});
+    spec.highlighted = {{10, 1.0}};
+    spec.highlightName = "front";
+    const ui::Rect area{{20, 30}, {500, 330}};
+    drawPlot(list, area, spec);
+    ASSERT_GT(list.vertices().size(), 100u);
+    for (const ui::UiVertex& v : list.vertices()) {
+        EXPECT_GE(v.position.x, area.min.x - 1e-3f);
+        EXPECT_LE(v.position.x, area.max.x + 1e-3f);
+        EXPECT_GE(v.position.y, area.min.y - 1e-3f);
+        EXPECT_LE(v.position.y, area.max.y + 1e-3f);
+    }
+}
+
+}  // namespace
+}  // namespace viz::plot

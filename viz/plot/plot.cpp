@@ -1,0 +1,218 @@
+#include "plot/plot.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+namespace viz::plot {
+
+namespace {
+
+constexpr glm::vec4 kInk{0.12f, 0.12f, 0.14f, 1.0f};
+constexpr glm::vec4 kGrid{0.86f, 0.86f, 0.88f, 1.0f};
+constexpr glm::vec4 kPaper{1.0f, 1.0f, 1.0f, 1.0f};
+
+std::string formatTick(double v, double step) {
+    char buffer[32];
+    const double magnitude = std::abs(v);
+    if (v == 0.0) return "0";
+    if (magnitude >= 1e5 || magnitude < 1e-3) {
+        std::snprintf(buffer, sizeof buffer, "%.0e", v);
+    } else {
+        // Enough decimals to tell neighbouring ticks apart.
+        const int decimals = std::clamp(int(std::ceil(-std::log10(step) - 1e-9)), 0, 6);
+        std::snprintf(buffer, sizeof buffer, "%.*f", decimals, v);
+    }
+    return buffer;
+}
+
+// Maps data to pixels along one axis.
+struct AxisMap {
+    double lo, hi;
+    bool log;
+    float p0, p1;  // pixel of lo, pixel of hi
+    float operator()(double v) const {
+        const double a = log ? std::log10(lo) : lo, b = log ? std::log10(hi) : hi;
+        const double x = log ? std::log10(v) : v;
+        return float(p0 + (p1 - p0) * (x - a) / (b - a));
+    }
+};
+
+// The outline of a square of half-size r around c (the highlight marker).
+void squareRing(ui::DrawList& list, glm::vec2 c, float r) {
+    const glm::vec2 corners[4] = {{c.x - r, c.y - r}, {c.x + r, c.y - r}, {c.x + r, c.y + r}, {c.x - r, c.y + r}};
+    for (int i = 0; i < 4; ++i) list.line(corners[i], corners[(i + 1) % 4], 1.5f, kInk);
+}
+
+bool usable(double v, bool log) { return std::isfinite(v) && (!log || v > 0.0); }
+
+}  // namespace
+
+AxisTicks axisTicks(double lo, double hi, bool logarithmic, int target) {
+    AxisTicks t;
+    if (!(lo <= hi) || !std::isfinite(lo) || !std::isfinite(hi)) lo = logarithmic ? 1.0 : 0.0, hi = lo;
+    if (logarithmic) {
+        lo = std::max(lo, std::numeric_limits<double>::min());
+        hi = std::max(hi, lo);
+        int first = int(std::floor(std::log10(lo) + 1e-9));
+        int last = int(std::ceil(std::log10(hi) - 1e-9));
+        if (last <= first) last = first + 1;
+        t.lo = std::pow(10.0, first);
+        t.hi = std::pow(10.0, last);
+        const int decades = last - first;
+        const int stride = std::max(1, decades / std::max(1, target));
+        for (int e = first; e <= last; e += stride) {
+            const double v = std::pow(10.0, e);
+            t.values.push_back(v);
+            t.labels.push_back(formatTick(v, v));
+            if (decades <= 2 && e < last)
+                for (double m : {2.0, 5.0}) {
+                    t.values.push_back(m * v);
+                    t.labels.push_back(formatTick(m * v, m * v));
+                }
+        }
+        std::vector<std::size_t> order(t.values.size());
+        for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+        std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return t.values[a] < t.values[b]; });
+        AxisTicks sorted{t.lo, t.hi, {}, {}};
+        for (std::size_t i : order) sorted.values.push_back(t.values[i]), sorted.labels.push_back(t.labels[i]);
+        return sorted;
+    }
+    if (hi - lo <= 0.0) {
+        const double pad = lo == 0.0 ? 1.0 : std::abs(lo) * 0.5;
+        lo -= pad, hi += pad;
+    }
+    const double rough = (hi - lo) / std::max(1, target);
+    const double decade = std::pow(10.0, std::floor(std::log10(rough)));
+    double step = decade;
+    for (double m : {1.0, 2.0, 5.0, 10.0})
+        if (m * decade >= rough) {
+            step = m * decade;
+            break;
+        }
+    t.lo = std::floor(lo / step + 1e-9) * step;
+    t.hi = std::ceil(hi / step - 1e-9) * step;
+    for (double v = t.lo; v <= t.hi + step * 0.5; v += step) {
+        const double snapped = std::abs(v) < step * 1e-9 ? 0.0 : v;
+        t.values.push_back(snapped);
+        t.labels.push_back(formatTick(snapped, step));
+    }
+    return t;
+}
+
+glm::vec4 categoricalColor(int i) {
+    // Distinct hues that stay apart for common colour-vision deficiencies (Okabe-Ito order).
+    static const glm::vec4 kPalette[] = {
+        {0.0f, 0.447f, 0.698f, 1.0f}, {0.835f, 0.369f, 0.0f, 1.0f}, {0.0f, 0.620f, 0.451f, 1.0f},
+        {0.800f, 0.475f, 0.655f, 1.0f}, {0.902f, 0.624f, 0.0f, 1.0f}, {0.337f, 0.706f, 0.914f, 1.0f},
+        {0.941f, 0.894f, 0.259f, 1.0f}, {0.3f, 0.3f, 0.3f, 1.0f}};
+    constexpr int n = int(sizeof kPalette / sizeof kPalette[0]);
+    return kPalette[((i % n) + n) % n];
+}
+
+void drawPlot(ui::DrawList& list, const ui::Rect& area, const PlotSpec& spec) {
+    const ui::FontAtlas& font = list.font();
+    const float line = font.lineHeight();
+    list.rect(area, kPaper);
+
+    // Data ranges over every usable point.
+    double xlo = INFINITY, xhi = -INFINITY, ylo = INFINITY, yhi = -INFINITY;
+    auto include = [&](glm::dvec2 p) {
+        if (!usable(p.x, spec.logX) || !usable(p.y, spec.logY)) return;
+        xlo = std::min(xlo, p.x), xhi = std::max(xhi, p.x), ylo = std::min(ylo, p.y), yhi = std::max(yhi, p.y);
+    };
+    for (const Series& s : spec.series)
+        for (glm::dvec2 p : s.points) include(p);
+    for (glm::dvec2 p : spec.highlighted) include(p);
+    if (!(xlo <= xhi)) xlo = xhi = spec.logX ? 1.0 : 0.0;
+    if (!(ylo <= yhi)) ylo = yhi = spec.logY ? 1.0 : 0.0;
+    const AxisTicks xt = axisTicks(xlo, xhi, spec.logX);
+    const AxisTicks yt = axisTicks(ylo, yhi, spec.logY);
+
+    // Layout: title on top, y tick labels and axis label on the left, x labels below, legend at right.
+    float yLabelWidth = 0.0f;
+    for (const std::string& l : yt.labels) yLabelWidth = std::max(yLabelWidth, font.measure(l));
+    float legendWidth = 0.0f;
+    for (const Series& s : spec.series) legendWidth = std::max(legendWidth, font.measure(s.name));  // "" adds 0
+    if (!spec.highlighted.empty()) legendWidth = std::max(legendWidth, font.measure(spec.highlightName));
+    legendWidth += legendWidth > 0.0f ? line * 2.0f : 0.0f;
+    const float pad = line * 0.5f;
+    ui::Rect frame;
+    frame.min = {area.min.x + pad + line + pad + yLabelWidth + pad,
+                 area.min.y + pad + (spec.title.empty() ? 0.0f : line + pad) + (spec.yLabel.empty() ? 0.0f : line + pad)};
+    frame.max = {area.max.x - pad - legendWidth, area.max.y - pad - line - pad - line - pad};
+    if (frame.max.x - frame.min.x < 10.0f || frame.max.y - frame.min.y < 10.0f) return;  // too small to draw
+
+    const AxisMap mx{xt.lo, xt.hi, spec.logX, frame.min.x, frame.max.x};
+    const AxisMap my{yt.lo, yt.hi, spec.logY, frame.max.y, frame.min.y};
+
+    if (!spec.title.empty())
+        list.textClipped({frame.min.x, area.min.y + pad}, spec.title, kInk, area.max.x - pad);
+    for (std::size_t i = 0; i < xt.values.size(); ++i) {
+        const float x = mx(xt.values[i]);
+        list.line({x, frame.min.y}, {x, frame.max.y}, 1.0f, kGrid);
+        list.line({x, frame.max.y}, {x, frame.max.y + pad * 0.6f}, 1.0f, kInk);
+        const float w = font.measure(xt.labels[i]);
+        list.text({x - w * 0.5f, frame.max.y + pad}, xt.labels[i], kInk);
+    }
+    for (std::size_t i = 0; i < yt.values.size(); ++i) {
+        const float y = my(yt.values[i]);
+        list.line({frame.min.x, y}, {frame.max.x, y}, 1.0f, kGrid);
+        list.line({frame.min.x - pad * 0.6f, y}, {frame.min.x, y}, 1.0f, kInk);
+        const float w = font.measure(yt.labels[i]);
+        list.text({frame.min.x - pad - w, y - line * 0.5f}, yt.labels[i], kInk);
+    }
+    // Frame.
+    list.line(frame.min, {frame.max.x, frame.min.y}, 1.0f, kInk);
+    list.line({frame.max.x, frame.min.y}, frame.max, 1.0f, kInk);
+    list.line(frame.max, {frame.min.x, frame.max.y}, 1.0f, kInk);
+    list.line({frame.min.x, frame.max.y}, frame.min, 1.0f, kInk);
+    // Axis labels: x centred below the tick labels; y horizontal, on its own line above the frame.
+    if (!spec.xLabel.empty()) {
+        const float w = font.measure(spec.xLabel);
+        list.text({(frame.min.x + frame.max.x - w) * 0.5f, frame.max.y + pad + line + pad * 0.5f}, spec.xLabel, kInk);
+    }
+    if (!spec.yLabel.empty())
+        list.textClipped({area.min.x + pad, frame.min.y - line - pad}, spec.yLabel, kInk, frame.max.x);
+
+    // Series, clipped to the frame by dropping points outside it (ranges cover every usable point).
+    const float marker = std::max(2.0f, line * 0.22f);
+    for (const Series& s : spec.series) {
+        bool havePrevious = false;
+        glm::vec2 previous{0.0f};
+        for (glm::dvec2 p : s.points) {
+            if (!usable(p.x, spec.logX) || !usable(p.y, spec.logY)) {
+                havePrevious = false;
+                continue;
+            }
+            const glm::vec2 q{mx(p.x), my(p.y)};
+            if (s.lines && havePrevious) list.line(previous, q, 1.6f, s.color);
+            if (s.markers) list.rect({q - marker, q + marker}, s.color);
+            previous = q;
+            havePrevious = true;
+        }
+    }
+    for (glm::dvec2 p : spec.highlighted) {
+        if (!usable(p.x, spec.logX) || !usable(p.y, spec.logY)) continue;
+        const glm::vec2 q{mx(p.x), my(p.y)};
+        squareRing(list, q, marker * 2.2f);
+    }
+
+    // Legend.
+    float y = frame.min.y;
+    const float x = frame.max.x + pad;
+    for (const Series& s : spec.series) {
+        if (s.name.empty()) continue;  // unnamed series (e.g. a line through another's points) stay out
+        list.rect({{x, y + line * 0.3f}, {x + line, y + line * 0.7f}}, s.color);
+        list.textClipped({x + line * 1.4f, y}, s.name, kInk, area.max.x - 2.0f);
+        y += line;
+    }
+    if (!spec.highlighted.empty()) {
+        const glm::vec2 c{x + line * 0.5f, y + line * 0.5f};
+        squareRing(list, c, marker * 2.2f);
+        list.textClipped({x + line * 1.4f, y}, spec.highlightName, kInk, area.max.x - 2.0f);
+    }
+}
+
+}  // namespace viz::plot

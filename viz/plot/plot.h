@@ -1,0 +1,49 @@
+// Line and scatter plots with axes, ticks and a legend, drawn into a ui::DrawList: the same code draws
+// plots in the window and in files (report pages, handouts) through ui::renderOffscreen.
+// Data coordinates are doubles; an axis may be logarithmic (base 10), which drops non-positive values.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "ui/text_renderer.h"
+
+namespace viz::plot {
+
+struct Series {
+    std::string name;                 // legend entry; empty: not listed
+    glm::vec4 color{0, 0, 0, 1};      // display colour
+    std::vector<glm::dvec2> points;   // drawn in the given order
+    bool lines = true;                // join consecutive points
+    bool markers = true;              // a square at each point
+};
+
+struct PlotSpec {
+    std::string title, xLabel, yLabel;
+    bool logX = false, logY = false;
+    std::vector<Series> series;
+    // Points drawn as hollow rings over the series (e.g. the Pareto front), with their own legend entry.
+    std::vector<glm::dvec2> highlighted;
+    std::string highlightName;
+};
+
+struct AxisTicks {
+    double lo = 0.0, hi = 1.0;       // the axis range (data units), covering every tick
+    std::vector<double> values;      // tick positions (data units), increasing
+    std::vector<std::string> labels; // one per value
+};
+
+// Ticks for data in [lo, hi]: linear axes get 1-2-5 steps (about `target` ticks) and a range rounded out
+// to whole steps; log axes get the decades around the data (and 2, 5 in between when they are few).
+// A degenerate range is widened around its value.
+AxisTicks axisTicks(double lo, double hi, bool logarithmic, int target = 6);
+
+// A distinct colour for series i (a fixed categorical palette that cycles).
+glm::vec4 categoricalColor(int i);
+
+// Draws the plot (background, frame, grid, ticks, labels, series, legend) inside `area`.
+void drawPlot(ui::DrawList& list, const ui::Rect& area, const PlotSpec& spec);
+
+}  // namespace viz::plot

@@ -1,0 +1,128 @@
+// index.html of `airlight report`: static HTML, inline CSS, no scripts, every resource a file next to it.
+#include <cmath>
+#include <cstdio>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "core/atomic_file.h"
+#include "core/error.h"
+#include "report/report_table.h"
+
+namespace viz::report {
+
+namespace {
+
+std::string escape(const std::string& text) {
+    std::string out;
+    for (char c : text) {
+        switch (c) {
+        case '&': out += "&amp;"; break;
+        case '<': out += "&lt;"; break;
+        case '>': out += "&gt;"; break;
+        case '"': out += "&quot;"; break;
+        default: out += c;
+        }
+    }
+    return out;
+}
+
+std::string figure(double v, const char* format = "%.3g") {
+    if (!std::isfinite(v)) return "&ndash;";
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, format, v);
+    return buffer;
+}
+
+constexpr const char* kStyle = R"(body{font-family:DejaVu Sans,sans-serif;margin:2em;color:#222;max-width:72em}
+table{border-collapse:collapse;margin:0.5em 0 1.5em}td,th{border:1px solid #ccc;padding:0.2em 0.6em;text-align:right}
+th{background:#f2f2f2}td.l,th.l{text-align:left}tr.front td{font-weight:bold}
+figure{display:inline-block;margin:0.3em;text-align:center}figure img{image-rendering:pixelated;border:1px solid #ccc}
+.bad{color:#b00}.note{color:#555;font-size:0.9em})";
+
+}  // namespace
+
+void writeHtml(const std::string& path, const ReportMeta& meta, const std::vector<ReportRow>& rows,
+               const std::vector<ScenePage>& scenes) {
+    std::set<std::string> techniqueSet;
+    std::vector<std::string> techniques;
+    for (const ReportRow& r : rows)
+        if (techniqueSet.insert(r.technique).second) techniques.push_back(r.technique);
+
+    std::ostringstream h;
+    h << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>Airlight report</title><style>"
+      << kStyle << "</style></head><body>\n<h1>Airlight report: error against run time</h1>\n";
+    h << "<p class=\"note\">" << escape(meta.date) << " &middot; " << escape(meta.machine) << " &middot; "
+      << escape(meta.renderer) << " &middot; " << meta.width << "&times;" << meta.height << " &middot; median of "
+      << meta.runs << " runs after one warm-up" << (meta.quick ? " &middot; quick sweep" : "") << "<br><code>"
+      << escape(meta.command) << "</code></p>\n";
+    h << "<p class=\"note\">Error: L_air against the reference (Embree ray tracing and adaptive quadrature, cached). "
+         "Relative L2 = ||t&minus;r||/||r|| over all pixels and channels; p99.9 = 99.9th percentile of the per-pixel "
+         "relative error (floor 1% of the mean); PSNR on the tone map v&middot;k/(1+v&middot;k), k = 0.18 / mean of "
+         "the reference, peak 1. Time: sum of the technique's stage times (the clock each row names). Speed-up: "
+         "brute-force <code>raymarch</code>'s time at the same relative L2 (log-log interpolation along its sweep, "
+         "no extrapolation) divided by the row's time. Bold rows lie on the scene's Pareto front.</p>\n";
+
+    // Headline: per scene, each technique's best speed-up at equal error.
+    h << "<h2>Speed-up over brute-force ray marching at equal error</h2>\n<table><tr><th class=\"l\">scene</th>";
+    for (const std::string& t : techniques) h << "<th>" << escape(t) << "</th>";
+    h << "</tr>\n";
+    for (const ScenePage& s : scenes) {
+        h << "<tr><td class=\"l\">" << escape(s.scene) << "</td>";
+        for (const std::string& t : techniques) {
+            const ReportRow* best = bestSpeedup(rows, s.scene, t);
+            h << "<td>";
+            if (best)
+                h << figure(*best->speedup, "%.2f") << "&times; <span class=\"note\">(" << escape(best->setting)
+                  << ", error " << figure(best->error.relativeL2) << ")</span>";
+            else
+                h << "&ndash;";
+            h << "</td>";
+        }
+        h << "</tr>\n";
+    }
+    h << "</table>\n<p class=\"note\">&ndash;: no setting of the technique has an error inside raymarch's measured "
+         "range (or it is raymarch itself).</p>\n";
+
+    for (const ScenePage& s : scenes) {
+        h << "<h2 id=\"" << escape(s.scene) << "\">" << escape(s.scene) << "</h2>\n";
+        if (!s.plot.empty())
+            h << "<figure><img src=\"" << escape(s.plot) << "\" alt=\"error against time, " << escape(s.scene)
+              << "\"><figcaption>relative L2 error against time per frame (log-log)</figcaption></figure>\n";
+        h << "<table><tr><th class=\"l\">technique</th><th class=\"l\">setting</th><th>time ms</th><th>wall ms</th>"
+             "<th>rel. L2</th><th>RMSE</th><th>max abs</th><th>p99.9 rel.</th><th>PSNR dB</th><th>NaN/Inf/neg px</th>"
+             "<th>speed-up</th></tr>\n";
+        for (const ReportRow& r : rows) {
+            if (r.scene != s.scene) continue;
+            const std::size_t bad = r.error.nanPixels + r.error.infPixels + r.error.negativePixels;
+            h << "<tr" << (r.pareto ? " class=\"front\"" : "") << "><td class=\"l\">" << escape(r.technique)
+              << "</td><td class=\"l\">" << escape(r.setting) << "</td><td>" << figure(r.totalMilliseconds, "%.1f")
+              << "</td><td>" << figure(r.wallMilliseconds, "%.1f") << "</td><td>" << figure(r.error.relativeL2)
+              << "</td><td>" << figure(r.error.rmse) << "</td><td>" << figure(r.error.maxAbsolute) << "</td><td>"
+              << figure(r.error.relativeP999) << "</td><td>" << figure(r.error.psnr, "%.1f") << "</td><td"
+              << (bad ? " class=\"bad\"" : "") << ">" << r.error.nanPixels << "/" << r.error.infPixels << "/"
+              << r.error.negativePixels << "</td><td>" << (r.speedup ? figure(*r.speedup, "%.2f") : "&ndash;")
+              << "</td></tr>\n";
+        }
+        h << "</table>\n";
+        if (!s.referenceImage.empty())
+            h << "<figure><img src=\"" << escape(s.referenceImage) << "\" alt=\"reference\"><figcaption>reference"
+              << "</figcaption></figure>\n";
+        for (const ReportRow& r : rows) {
+            if (r.scene != s.scene || r.image.empty()) continue;
+            h << "<figure><img src=\"" << escape(r.image) << "\" alt=\"" << escape(r.technique) << "\"><figcaption>"
+              << escape(r.technique) << " " << escape(r.setting) << "</figcaption></figure>\n";
+            if (!r.errorImage.empty())
+                h << "<figure><img src=\"" << escape(r.errorImage) << "\" alt=\"error of " << escape(r.technique)
+                  << "\"><figcaption>|error|, " << escape(r.technique) << "</figcaption></figure>\n";
+        }
+    }
+    h << "<p class=\"note\">Images: L_air at the reference's exposure (99.5th percentile to white). Error heat maps: "
+         "sum over channels of |t&minus;r| divided by the reference's 99.5th percentile, black 0 to yellow 0.1 and "
+         "above; NaN/Inf pixels magenta.</p>\n</body></html>\n";
+    const std::string error = writeFileAtomically(path, h.str());
+    if (!error.empty()) throw InputError("cannot write '" + path + "': " + error);
+}
+
+}  // namespace viz::report

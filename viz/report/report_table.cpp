@@ -1,0 +1,141 @@
+#include "report/report_table.h"
+
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "core/atomic_file.h"
+#include "core/error.h"
+#include "report/tradeoff.h"
+
+namespace viz::report {
+
+namespace {
+
+void writeText(const std::string& path, const std::string& text) {
+    const std::string error = writeFileAtomically(path, text);
+    if (!error.empty()) throw InputError("cannot write '" + path + "': " + error);
+}
+
+// Figures print with enough digits to compare runs; undefined ones print empty.
+std::string number(double v) {
+    if (!std::isfinite(v)) return "";
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.6g", v);
+    return buffer;
+}
+
+std::string csvField(const std::string& text) {
+    if (text.find_first_of(",\"\n") == std::string::npos) return text;
+    std::string quoted = "\"";
+    for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return quoted + "\"";
+}
+
+nlohmann::json jsonNumber(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+
+}  // namespace
+
+void annotateTradeoffs(std::vector<ReportRow>& rows, const std::string& baseline) {
+    std::set<std::string> scenes;
+    for (const ReportRow& r : rows) scenes.insert(r.scene);
+    for (const std::string& scene : scenes) {
+        std::vector<int> members;
+        std::vector<TradeoffPoint> points, baselinePoints;
+        for (int i = 0; i < int(rows.size()); ++i) {
+            const ReportRow& r = rows[std::size_t(i)];
+            if (r.scene != scene) continue;
+            members.push_back(i);
+            points.push_back({r.totalMilliseconds, r.error.relativeL2});
+            if (r.technique == baseline) baselinePoints.push_back(points.back());
+        }
+        for (int m : members) rows[std::size_t(m)].pareto = false;
+        for (int k : paretoFront(points)) rows[std::size_t(members[std::size_t(k)])].pareto = true;
+        for (std::size_t k = 0; k < members.size(); ++k)
+            rows[std::size_t(members[k])].speedup = speedupAtEqualError(baselinePoints, points[k]);
+    }
+}
+
+const ReportRow* bestSpeedup(const std::vector<ReportRow>& rows, const std::string& scene, const std::string& technique) {
+    const ReportRow* best = nullptr;
+    for (const ReportRow& r : rows)
+        if (r.scene == scene && r.technique == technique && r.speedup && (!best || *r.speedup > *best->speedup))
+            best = &r;
+    return best;
+}
+
+const std::vector<std::string>& csvColumns() {
+    static const std::vector<std::string> kColumns = {
+        "scene", "technique", "setting", "settings", "width", "height", "runs", "clock", "total_ms", "wall_ms",
+        "relative_l2", "rmse", "max_abs", "relative_p999", "psnr_db", "nan_pixels", "inf_pixels",
+        "negative_pixels", "speedup_vs_raymarch", "pareto", "stage_ms"};
+    return kColumns;
+}
+
+void writeCsv(const std::string& path, const std::vector<ReportRow>& rows) {
+    std::ostringstream out;
+    const auto& columns = csvColumns();
+    for (std::size_t i = 0; i < columns.size(); ++i) out << (i ? "," : "") << columns[i];
+    out << "\n";
+    for (const ReportRow& r : rows) {
+        std::string stages;
+        for (const StageTime& s : r.stages) stages += (stages.empty() ? "" : ";") + s.stage + "=" + number(s.milliseconds);
+        const std::vector<std::string> fields = {
+            r.scene, r.technique, r.setting, r.settings, std::to_string(r.width), std::to_string(r.height),
+            std::to_string(r.runs), r.clock, number(r.totalMilliseconds), number(r.wallMilliseconds),
+            number(r.error.relativeL2), number(r.error.rmse), number(r.error.maxAbsolute),
+            number(r.error.relativeP999), number(r.error.psnr), std::to_string(r.error.nanPixels),
+            std::to_string(r.error.infPixels), std::to_string(r.error.negativePixels),
+            r.speedup ? number(*r.speedup) : "", r.pareto ? "1" : "0", stages};
+        for (std::size_t i = 0; i < fields.size(); ++i) out << (i ? "," : "") << csvField(fields[i]);
+        out << "\n";
+    }
+    writeText(path, out.str());
+}
+
+void writeJson(const std::string& path, const ReportMeta& meta, const std::vector<ReportRow>& rows) {
+    nlohmann::json j;
+    j["meta"] = {{"date", meta.date},         {"command", meta.command}, {"machine", meta.machine},
+                 {"renderer", meta.renderer}, {"width", meta.width},     {"height", meta.height},
+                 {"runs", meta.runs},         {"quick", meta.quick},
+                 {"error_of", "L_air (RGB radiance) against the reference technique's L_air"},
+                 {"tone_map", "PSNR on v*k/(1+v*k), k = 0.18 / mean of the reference, peak 1"},
+                 {"relative_p999", "99.9th percentile of sum_c|t-r| / max(sum_c|r|, 0.01 * mean sum_c|r|)"}};
+    nlohmann::json list = nlohmann::json::array();
+    for (const ReportRow& r : rows) {
+        nlohmann::json stages = nlohmann::json::object();
+        for (const StageTime& s : r.stages) stages[s.stage] = jsonNumber(s.milliseconds);
+        list.push_back({{"scene", r.scene},
+                        {"technique", r.technique},
+                        {"setting", r.setting},
+                        {"settings", r.settings},
+                        {"width", r.width},
+                        {"height", r.height},
+                        {"runs", r.runs},
+                        {"clock", r.clock},
+                        {"total_ms", jsonNumber(r.totalMilliseconds)},
+                        {"wall_ms", jsonNumber(r.wallMilliseconds)},
+                        {"stage_ms", stages},
+                        {"error",
+                         {{"relative_l2", jsonNumber(r.error.relativeL2)},
+                          {"rmse", jsonNumber(r.error.rmse)},
+                          {"max_abs", jsonNumber(r.error.maxAbsolute)},
+                          {"relative_p999", jsonNumber(r.error.relativeP999)},
+                          {"psnr_db", jsonNumber(r.error.psnr)},
+                          {"nan_pixels", r.error.nanPixels},
+                          {"inf_pixels", r.error.infPixels},
+                          {"negative_pixels", r.error.negativePixels}}},
+                        {"speedup_vs_raymarch", r.speedup ? jsonNumber(*r.speedup) : nlohmann::json(nullptr)},
+                        {"pareto", r.pareto},
+                        {"image", r.image},
+                        {"error_image", r.errorImage}});
+    }
+    j["rows"] = list;
+    writeText(path, j.dump(2) + "\n");
+}
+
+}  // namespace viz::report

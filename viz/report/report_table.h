@@ -1,0 +1,68 @@
+// The rows of `airlight report` (one per scene x technique x setting) and the files written from them:
+// results.csv, results.json and index.html. Pure CPU; the runner that fills the rows lives in the app.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "report/error_metrics.h"
+
+namespace viz::report {
+
+struct StageTime {
+    std::string stage;  // stage id, e.g. "raymarch.march"
+    double milliseconds = 0.0;
+};
+
+struct ReportRow {
+    std::string scene, technique;
+    std::string setting;   // the sweep label, e.g. "N=64"
+    std::string settings;  // the settings that differ from the defaults, "samples=64"
+    int width = 0, height = 0;
+    int runs = 0;          // timed runs (after one warm-up)
+    std::string clock;     // how stages were timed (Timing::clock)
+    std::vector<StageTime> stages;  // medians over the runs
+    double totalMilliseconds = 0.0; // median over runs of the sum of stage times
+    double wallMilliseconds = 0.0;  // median over runs of the whole run() call, readbacks included
+    ErrorMetrics error;             // L_air against the reference's L_air
+    std::optional<double> speedup;  // over the baseline at equal error (annotateTradeoffs)
+    bool pareto = false;            // on its scene's Pareto front, all techniques together
+    std::string image;              // files next to index.html (PNG), empty when not written
+    std::string errorImage;
+};
+
+struct ReportMeta {
+    std::string date;       // ISO 8601, UTC
+    std::string command;    // the command line
+    std::string machine;    // host name, CPU model, core count
+    std::string renderer;   // GL_RENDERER and GL_VERSION
+    int width = 0, height = 0, runs = 0;
+    bool quick = false;
+};
+
+// Per scene: marks the Pareto front over all techniques (time = totalMilliseconds, error = relative L2)
+// and the speed-up of every row over the baseline technique's rows of the same scene.
+void annotateTradeoffs(std::vector<ReportRow>& rows, const std::string& baseline = "raymarch");
+
+// The row of a scene and technique with the highest speed-up (the report's headline), if any has one.
+const ReportRow* bestSpeedup(const std::vector<ReportRow>& rows, const std::string& scene, const std::string& technique);
+
+// Column names of results.csv, in order (the schema tests check against this list).
+const std::vector<std::string>& csvColumns();
+
+// Write atomically; throw InputError naming the path when the folder cannot be written.
+void writeCsv(const std::string& path, const std::vector<ReportRow>& rows);
+void writeJson(const std::string& path, const ReportMeta& meta, const std::vector<ReportRow>& rows);
+
+// The static page: headline table, per scene the plot (plotFiles[i] for scenes[i]), the rows, and for
+// each technique its image, the reference image (referenceImages[i]) and the error heat map.
+struct ScenePage {
+    std::string scene;
+    std::string plot;            // PNG file name
+    std::string referenceImage;  // PNG file name
+};
+void writeHtml(const std::string& path, const ReportMeta& meta, const std::vector<ReportRow>& rows,
+               const std::vector<ScenePage>& scenes);
+
+}  // namespace viz::report

@@ -1,0 +1,58 @@
+#include "report/tradeoff.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+namespace viz::report {
+
+namespace {
+bool usable(const TradeoffPoint& p) {
+    return std::isfinite(p.milliseconds) && std::isfinite(p.error) && p.milliseconds > 0.0 && p.error > 0.0;
+}
+}  // namespace
+
+std::vector<int> paretoFront(const std::vector<TradeoffPoint>& points) {
+    std::vector<int> order;
+    for (int i = 0; i < int(points.size()); ++i)
+        if (usable(points[std::size_t(i)])) order.push_back(i);
+    // By time, then error: a point is on the front when its error is below every faster point's.
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+        const TradeoffPoint &pa = points[std::size_t(a)], &pb = points[std::size_t(b)];
+        return pa.milliseconds != pb.milliseconds ? pa.milliseconds < pb.milliseconds : pa.error < pb.error;
+    });
+    std::vector<int> front;
+    double bestError = INFINITY;
+    for (int i : order)
+        if (points[std::size_t(i)].error < bestError) {
+            front.push_back(i);
+            bestError = points[std::size_t(i)].error;
+        }
+    return front;
+}
+
+std::optional<double> baselineTimeAtError(const std::vector<TradeoffPoint>& baseline, double error) {
+    if (!(error > 0.0) || !std::isfinite(error)) return std::nullopt;
+    const std::vector<int> front = paretoFront(baseline);  // time rising, error falling
+    if (front.empty()) return std::nullopt;
+    for (std::size_t k = 0; k < front.size(); ++k) {
+        const TradeoffPoint& p = baseline[std::size_t(front[k])];
+        if (p.error == error) return p.milliseconds;
+        if (k + 1 == front.size()) break;
+        const TradeoffPoint& q = baseline[std::size_t(front[k + 1])];
+        if (error < p.error && error > q.error) {
+            const double f = std::log(error / p.error) / std::log(q.error / p.error);
+            return std::exp(std::log(p.milliseconds) + f * std::log(q.milliseconds / p.milliseconds));
+        }
+    }
+    return std::nullopt;
+}
+
+std::optional<double> speedupAtEqualError(const std::vector<TradeoffPoint>& baseline, const TradeoffPoint& p) {
+    if (!usable(p)) return std::nullopt;
+    const auto t = baselineTimeAtError(baseline, p.error);
+    if (!t) return std::nullopt;
+    return *t / p.milliseconds;
+}
+
+}  // namespace viz::report
