@@ -22,6 +22,8 @@
 #include "report/error_images.h"
 #include "report/error_metrics.h"
 #include "report/report_table.h"
+#include "scene/stiff_scenes.h"
+#include "report/stiff_suite.h"
 #include "report/tradeoff.h"
 #include "scene/builtin_scenes.h"
 #include "scene/scene_source.h"
@@ -48,6 +50,13 @@ brute-force raymarch at equal error.
   --size        image size (default 160x120)
   --quick       a shorter sweep per technique (all built-in scenes in a few minutes at 160x120)
   --runs        timed runs per setting (default 5)
+
+airlight report --suite stiff --out DIR [--techniques T1,T2,..]
+  runs the stiff and extreme cases (extreme media, intensities and scales, rays through the light,
+  epipole cases, cameras inside things, degenerate geometry, huge depth ranges, extreme phase
+  functions) at a small size against the reference, and writes DIR/stiff.csv and DIR/stiff.html.
+  A cell passes when every pixel is finite and non-negative and the error is within the bound the
+  technique declares for the case's class. Exit code 3 when any cell fails.
 )";
 
 std::vector<std::string> splitList(const std::string& text, const std::string& flag) {
@@ -135,6 +144,7 @@ struct Options {
     std::string out;
     bool quick = false;
     int runs = 5;
+    std::string suite;  // "" or "stiff"
 };
 
 Options parseReportOptions(Args& args) {
@@ -148,6 +158,10 @@ Options parseReportOptions(Args& args) {
             o.width = size.x, o.height = size.y;
         } else if (flag == "--out") o.out = args.next(flag);
         else if (flag == "--quick") o.quick = true;
+        else if (flag == "--suite") {
+            o.suite = args.next(flag);
+            if (o.suite != "stiff") throw InputError("--suite '" + o.suite + "' is not known (known: stiff)");
+        }
         else if (flag == "--runs") {
             const double runs = parseNumber(args.next(flag), flag);
             if (runs < 1 || runs > 1000 || runs != std::floor(runs))
@@ -163,9 +177,65 @@ Options parseReportOptions(Args& args) {
     for (const std::string& t : o.techniques)
         if (t == "reference")
             throw InputError("--techniques: 'reference' is what the report measures against; list the others");
-    if (std::find(o.techniques.begin(), o.techniques.end(), "raymarch") == o.techniques.end())
+    if (o.suite.empty() && std::find(o.techniques.begin(), o.techniques.end(), "raymarch") == o.techniques.end())
         o.techniques.insert(o.techniques.begin(), "raymarch");
     return o;
+}
+
+viz::report::ReportMeta describeRun(const Options& o, const std::string& commandLine) {
+    viz::report::ReportMeta meta;
+    meta.date = utcNow();
+    meta.command = commandLine;
+    meta.machine = machineDescription();
+    meta.renderer = std::string(reinterpret_cast<const char*>(glGetString(GL_RENDERER))) + ", OpenGL " +
+                    reinterpret_cast<const char*>(glGetString(GL_VERSION));
+    meta.width = o.width, meta.height = o.height, meta.runs = o.runs, meta.quick = o.quick;
+    return meta;
+}
+
+std::filesystem::path createOutputFolder(const std::string& out) {
+    std::error_code ec;
+    std::filesystem::create_directories(out, ec);
+    if (!std::filesystem::is_directory(out)) throw InputError("cannot create the report folder '" + out + "'");
+    return out;
+}
+
+// The stiff suite: every case, the reference once per case, then each technique.
+int runStiffSuite(const Options& o, const std::string& commandLine) {
+    std::vector<std::unique_ptr<viz::Technique>> techniques;
+    for (const std::string& id : o.techniques) techniques.push_back(viz::makeTechnique(id));
+    const auto& cases = viz::scene::stiffCases();
+    const std::filesystem::path dir = createOutputFolder(o.out);
+    auto context = viz::HeadlessContext::create(false);
+    const viz::report::ReportMeta meta = describeRun(o, commandLine);
+
+    std::vector<viz::report::StiffOutcome> outcomes;
+    Progress progress(int(cases.size() * (techniques.size() + 1)));
+    int done = 0;
+    for (const viz::scene::StiffCase& c : cases) {
+        progress.show(done++, c.id + " | reference");
+        const viz::scene::Scene scene = viz::scene::buildStiffScene(c);
+        auto reference = viz::makeTechnique("reference");
+        viz::FrameInput in{&scene, c.width, c.height, viz::completeSettings(*reference, {}), -1};
+        const viz::Image referenceImage = reference->run(in).airlight;
+        for (auto& technique : techniques) {
+            progress.show(done++, c.id + " | " + technique->id());
+            outcomes.push_back(viz::report::runStiffCase(*technique, c, scene, referenceImage));
+        }
+    }
+    progress.show(done, "writing stiff.csv and stiff.html");
+    progress.finish();
+    viz::report::writeStiffFiles(dir.string(), meta, outcomes);
+    int failures = 0;
+    for (const auto& outcome : outcomes)
+        if (!outcome.passed) {
+            ++failures;
+            std::printf("FAIL %-26s %-10s %s\n", outcome.caseId.c_str(), outcome.technique.c_str(),
+                        outcome.verdict.c_str());
+        }
+    std::printf("%d of %zu cells pass; wrote %s\n", int(outcomes.size()) - failures, outcomes.size(),
+                (dir / "stiff.html").string().c_str());
+    return failures ? 3 : 0;
 }
 
 struct SweepPoint {
@@ -181,6 +251,7 @@ int runReportCommand(Args& args, const std::string& commandLine) {
         return 0;
     }
     const Options o = parseReportOptions(args);
+    if (o.suite == "stiff") return runStiffSuite(o, commandLine);
 
     // Everything the user named is checked before any work starts.
     std::vector<viz::scene::Scene> scenes;
@@ -193,20 +264,9 @@ int runReportCommand(Args& args, const std::string& commandLine) {
             sweep.push_back({id, std::move(q)});
         }
     }
-    std::error_code ec;
-    std::filesystem::create_directories(o.out, ec);
-    if (!std::filesystem::is_directory(o.out))
-        throw InputError("cannot create the report folder '" + o.out + "'");
-    const std::filesystem::path dir(o.out);
-
+    const std::filesystem::path dir = createOutputFolder(o.out);
     auto context = viz::HeadlessContext::create(false);
-    viz::report::ReportMeta meta;
-    meta.date = utcNow();
-    meta.command = commandLine;
-    meta.machine = machineDescription();
-    meta.renderer = std::string(reinterpret_cast<const char*>(glGetString(GL_RENDERER))) + ", OpenGL " +
-                    reinterpret_cast<const char*>(glGetString(GL_VERSION));
-    meta.width = o.width, meta.height = o.height, meta.runs = o.runs, meta.quick = o.quick;
+    const viz::report::ReportMeta meta = describeRun(o, commandLine);
 
     const viz::ui::FontAtlas font = viz::ui::FontAtlas::bake(viz::ui::FontAtlas::kDefaultFontPath, 15.0f);
     std::vector<viz::report::ReportRow> rows;

@@ -15,6 +15,7 @@ uniform vec2 uBoxMinXY;     // view-space box of the light frustum (x along uRig
 uniform vec2 uBoxMaxXY;
 uniform float uDepthFar;    // view depth of plane 0's slab far edge
 uniform float uSpacing;     // plane spacing in view depth, delta s
+uniform float uDrawNear;    // planes nearer than this (just beyond znear) are drawn at it
 uniform mat4 uLightMatrix;  // eye-relative world -> the light's clip space (shadow matrix)
 uniform int uClipLight;     // 1: clip to the light frustum (spot lights, or directional_box=1)
 uniform vec4 uUserPlane0;   // user clip planes, eye-relative world: dot(plane, (p, 1)) >= 0 is kept
@@ -41,7 +42,8 @@ void main() {
     int plane = gl_VertexID / 6;
     vec2 c = kCorners[gl_VertexID % 6];
     // Midpoint of slab i: s_i = far - (i + 1/2) delta s.
-    float s = uDepthFar - (float(plane) + 0.5) * uSpacing;
+    // The nearest slab may start at the eye; its plane is drawn where the camera does not clip it.
+    float s = max(uDepthFar - (float(plane) + 0.5) * uSpacing, uDrawNear);
     vec2 xy = mix(uBoxMinXY, uBoxMaxXY, c);
     vec3 p = xy.x * uRight + xy.y * uUp + s * uForward;
     vDepth = s;

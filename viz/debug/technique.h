@@ -81,6 +81,13 @@ struct QualitySetting {
     Settings settings;
 };
 
+// What a technique promises for one class of stiff case (viz/report/stiff_suite.h): its relative L2
+// error against the reference stays below `relativeL2` at its stiffSettings(), for the reason given.
+struct StiffBound {
+    double relativeL2 = 0.0;
+    std::string why;
+};
+
 struct FrameInput {
     const scene::Scene* scene = nullptr;
     int width = 0;
@@ -113,6 +120,14 @@ public:
     virtual std::vector<QualitySetting> qualitySweep(bool quick) const {
         (void)quick;
         return {{"default", {}}};
+    }
+    // The settings the stiff-case suite runs with (the accurate end of the technique's knobs), and the
+    // bound it promises per case class. No bound: the technique does not handle that class, and then it
+    // must say so in plan() and refuse (InputError) or fall back to a correct path.
+    virtual Settings stiffSettings() const { return {}; }
+    virtual std::optional<StiffBound> stiffBound(const std::string& caseClass) const {
+        (void)caseClass;
+        return std::nullopt;
     }
 };
 

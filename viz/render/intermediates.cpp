@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "gl/readback.h"
+#include "scene/scene_source.h"
 
 namespace viz::render {
 
@@ -34,9 +35,7 @@ bool hasLightOfType(const scene::Scene& scene, scene::LightType type) {
 }
 
 std::size_t geometryFingerprint(const scene::Scene& scene) {
-    std::size_t n = 0;
-    for (const auto& m : scene.meshes) n += m.indices.size() / 3;
-    return n * 1000003u + scene.meshes.size();
+    return std::size_t(scene::geometryContentHash(scene));
 }
 
 }  // namespace viz::render

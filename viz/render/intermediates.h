@@ -21,8 +21,9 @@ Image readRgb(const gl::Texture& texture);
 
 bool hasLightOfType(const scene::Scene& scene, scene::LightType type);
 
-// A cheap fingerprint of a scene's geometry (triangle and mesh counts), used with the scene's address
-// to decide whether a GpuScene can be reused when only the camera moved.
+// A hash of a scene's meshes, materials and textures (scene::geometryContentHash), used with the scene's
+// address to decide whether a GpuScene can be reused when only the camera or lights moved. Counts alone
+// are not enough: an edited or rescaled scene at the same address kept its stale upload.
 std::size_t geometryFingerprint(const scene::Scene& scene);
 
 }  // namespace viz::render

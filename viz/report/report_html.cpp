@@ -6,33 +6,17 @@
 #include <string>
 #include <vector>
 
-#include "core/atomic_file.h"
-#include "core/error.h"
 #include "report/report_table.h"
+#include "report/text_output.h"
 
 namespace viz::report {
 
 namespace {
 
-std::string escape(const std::string& text) {
-    std::string out;
-    for (char c : text) {
-        switch (c) {
-        case '&': out += "&amp;"; break;
-        case '<': out += "&lt;"; break;
-        case '>': out += "&gt;"; break;
-        case '"': out += "&quot;"; break;
-        default: out += c;
-        }
-    }
-    return out;
-}
-
+// A figure for a table cell: a dash when undefined.
 std::string figure(double v, const char* format = "%.3g") {
-    if (!std::isfinite(v)) return "&ndash;";
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, format, v);
-    return buffer;
+    const std::string text = formatFigure(v, format);
+    return text.empty() ? "&ndash;" : text;
 }
 
 constexpr const char* kStyle = R"(body{font-family:DejaVu Sans,sans-serif;margin:2em;color:#222;max-width:72em}
@@ -53,10 +37,10 @@ void writeHtml(const std::string& path, const ReportMeta& meta, const std::vecto
     std::ostringstream h;
     h << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>Airlight report</title><style>"
       << kStyle << "</style></head><body>\n<h1>Airlight report: error against run time</h1>\n";
-    h << "<p class=\"note\">" << escape(meta.date) << " &middot; " << escape(meta.machine) << " &middot; "
-      << escape(meta.renderer) << " &middot; " << meta.width << "&times;" << meta.height << " &middot; median of "
+    h << "<p class=\"note\">" << escapeHtml(meta.date) << " &middot; " << escapeHtml(meta.machine) << " &middot; "
+      << escapeHtml(meta.renderer) << " &middot; " << meta.width << "&times;" << meta.height << " &middot; median of "
       << meta.runs << " runs after one warm-up" << (meta.quick ? " &middot; quick sweep" : "") << "<br><code>"
-      << escape(meta.command) << "</code></p>\n";
+      << escapeHtml(meta.command) << "</code></p>\n";
     h << "<p class=\"note\">Error: L_air against the reference (Embree ray tracing and adaptive quadrature, cached). "
          "Relative L2 = ||t&minus;r||/||r|| over all pixels and channels; p99.9 = 99.9th percentile of the per-pixel "
          "relative error (floor 1% of the mean); PSNR on the tone map v&middot;k/(1+v&middot;k), k = 0.18 / mean of "
@@ -66,15 +50,15 @@ void writeHtml(const std::string& path, const ReportMeta& meta, const std::vecto
 
     // Headline: per scene, each technique's best speed-up at equal error.
     h << "<h2>Speed-up over brute-force ray marching at equal error</h2>\n<table><tr><th class=\"l\">scene</th>";
-    for (const std::string& t : techniques) h << "<th>" << escape(t) << "</th>";
+    for (const std::string& t : techniques) h << "<th>" << escapeHtml(t) << "</th>";
     h << "</tr>\n";
     for (const ScenePage& s : scenes) {
-        h << "<tr><td class=\"l\">" << escape(s.scene) << "</td>";
+        h << "<tr><td class=\"l\">" << escapeHtml(s.scene) << "</td>";
         for (const std::string& t : techniques) {
             const ReportRow* best = bestSpeedup(rows, s.scene, t);
             h << "<td>";
             if (best)
-                h << figure(*best->speedup, "%.2f") << "&times; <span class=\"note\">(" << escape(best->setting)
+                h << figure(*best->speedup, "%.2f") << "&times; <span class=\"note\">(" << escapeHtml(best->setting)
                   << ", error " << figure(best->error.relativeL2) << ")</span>";
             else
                 h << "&ndash;";
@@ -86,9 +70,9 @@ void writeHtml(const std::string& path, const ReportMeta& meta, const std::vecto
          "range (or it is raymarch itself).</p>\n";
 
     for (const ScenePage& s : scenes) {
-        h << "<h2 id=\"" << escape(s.scene) << "\">" << escape(s.scene) << "</h2>\n";
+        h << "<h2 id=\"" << escapeHtml(s.scene) << "\">" << escapeHtml(s.scene) << "</h2>\n";
         if (!s.plot.empty())
-            h << "<figure><img src=\"" << escape(s.plot) << "\" alt=\"error against time, " << escape(s.scene)
+            h << "<figure><img src=\"" << escapeHtml(s.plot) << "\" alt=\"error against time, " << escapeHtml(s.scene)
               << "\"><figcaption>relative L2 error against time per frame (log-log)</figcaption></figure>\n";
         h << "<table><tr><th class=\"l\">technique</th><th class=\"l\">setting</th><th>time ms</th><th>wall ms</th>"
              "<th>rel. L2</th><th>RMSE</th><th>max abs</th><th>p99.9 rel.</th><th>PSNR dB</th><th>NaN/Inf/neg px</th>"
@@ -96,8 +80,8 @@ void writeHtml(const std::string& path, const ReportMeta& meta, const std::vecto
         for (const ReportRow& r : rows) {
             if (r.scene != s.scene) continue;
             const std::size_t bad = r.error.nanPixels + r.error.infPixels + r.error.negativePixels;
-            h << "<tr" << (r.pareto ? " class=\"front\"" : "") << "><td class=\"l\">" << escape(r.technique)
-              << "</td><td class=\"l\">" << escape(r.setting) << "</td><td>" << figure(r.totalMilliseconds, "%.1f")
+            h << "<tr" << (r.pareto ? " class=\"front\"" : "") << "><td class=\"l\">" << escapeHtml(r.technique)
+              << "</td><td class=\"l\">" << escapeHtml(r.setting) << "</td><td>" << figure(r.totalMilliseconds, "%.1f")
               << "</td><td>" << figure(r.wallMilliseconds, "%.1f") << "</td><td>" << figure(r.error.relativeL2)
               << "</td><td>" << figure(r.error.rmse) << "</td><td>" << figure(r.error.maxAbsolute) << "</td><td>"
               << figure(r.error.relativeP999) << "</td><td>" << figure(r.error.psnr, "%.1f") << "</td><td"
@@ -107,22 +91,21 @@ void writeHtml(const std::string& path, const ReportMeta& meta, const std::vecto
         }
         h << "</table>\n";
         if (!s.referenceImage.empty())
-            h << "<figure><img src=\"" << escape(s.referenceImage) << "\" alt=\"reference\"><figcaption>reference"
+            h << "<figure><img src=\"" << escapeHtml(s.referenceImage) << "\" alt=\"reference\"><figcaption>reference"
               << "</figcaption></figure>\n";
         for (const ReportRow& r : rows) {
             if (r.scene != s.scene || r.image.empty()) continue;
-            h << "<figure><img src=\"" << escape(r.image) << "\" alt=\"" << escape(r.technique) << "\"><figcaption>"
-              << escape(r.technique) << " " << escape(r.setting) << "</figcaption></figure>\n";
+            h << "<figure><img src=\"" << escapeHtml(r.image) << "\" alt=\"" << escapeHtml(r.technique) << "\"><figcaption>"
+              << escapeHtml(r.technique) << " " << escapeHtml(r.setting) << "</figcaption></figure>\n";
             if (!r.errorImage.empty())
-                h << "<figure><img src=\"" << escape(r.errorImage) << "\" alt=\"error of " << escape(r.technique)
-                  << "\"><figcaption>|error|, " << escape(r.technique) << "</figcaption></figure>\n";
+                h << "<figure><img src=\"" << escapeHtml(r.errorImage) << "\" alt=\"error of " << escapeHtml(r.technique)
+                  << "\"><figcaption>|error|, " << escapeHtml(r.technique) << "</figcaption></figure>\n";
         }
     }
     h << "<p class=\"note\">Images: L_air at the reference's exposure (99.5th percentile to white). Error heat maps: "
          "sum over channels of |t&minus;r| divided by the reference's 99.5th percentile, black 0 to yellow 0.1 and "
          "above; NaN/Inf pixels magenta.</p>\n</body></html>\n";
-    const std::string error = writeFileAtomically(path, h.str());
-    if (!error.empty()) throw InputError("cannot write '" + path + "': " + error);
+    writeTextFile(path, h.str());
 }
 
 }  // namespace viz::report

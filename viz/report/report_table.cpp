@@ -8,33 +8,14 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/atomic_file.h"
-#include "core/error.h"
+#include "report/text_output.h"
 #include "report/tradeoff.h"
 
 namespace viz::report {
 
 namespace {
 
-void writeText(const std::string& path, const std::string& text) {
-    const std::string error = writeFileAtomically(path, text);
-    if (!error.empty()) throw InputError("cannot write '" + path + "': " + error);
-}
-
-// Figures print with enough digits to compare runs; undefined ones print empty.
-std::string number(double v) {
-    if (!std::isfinite(v)) return "";
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.6g", v);
-    return buffer;
-}
-
-std::string csvField(const std::string& text) {
-    if (text.find_first_of(",\"\n") == std::string::npos) return text;
-    std::string quoted = "\"";
-    for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
-    return quoted + "\"";
-}
+std::string number(double v) { return formatFigure(v); }
 
 nlohmann::json jsonNumber(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
 
@@ -94,7 +75,7 @@ void writeCsv(const std::string& path, const std::vector<ReportRow>& rows) {
         for (std::size_t i = 0; i < fields.size(); ++i) out << (i ? "," : "") << csvField(fields[i]);
         out << "\n";
     }
-    writeText(path, out.str());
+    writeTextFile(path, out.str());
 }
 
 void writeJson(const std::string& path, const ReportMeta& meta, const std::vector<ReportRow>& rows) {
@@ -135,7 +116,7 @@ void writeJson(const std::string& path, const ReportMeta& meta, const std::vecto
                         {"error_image", r.errorImage}});
     }
     j["rows"] = list;
-    writeText(path, j.dump(2) + "\n");
+    writeTextFile(path, j.dump(2) + "\n");
 }
 
 }  // namespace viz::report

@@ -8,6 +8,7 @@
 #include "core/error.h"
 #include "scene/builtin_scenes.h"
 #include "scene/gltf_loader.h"
+#include "scene/stiff_scenes.h"
 #include "scene/validate.h"
 
 namespace viz::scene {
@@ -67,20 +68,30 @@ Scene loadScene(const std::string& nameOrPath) {
     Scene scene;
     if (isBuiltinScene(nameOrPath)) {
         scene = makeBuiltinScene(nameOrPath);
+    } else if (nameOrPath.rfind("stiff/", 0) == 0) {
+        const StiffCase* c = findStiffCase(nameOrPath.substr(6));
+        if (!c) {
+            std::string known;
+            for (const StiffCase& k : stiffCases()) known += (known.empty() ? "" : ", ") + k.id;
+            throw InputError("unknown stiff case '" + nameOrPath + "' (known: " + known + ")");
+        }
+        scene = buildStiffScene(*c);
     } else if (endsWith(nameOrPath, ".gltf") || endsWith(nameOrPath, ".glb")) {
         scene = loadGltf(nameOrPath);
     } else {
         std::string known;
         for (const std::string& n : builtinSceneNames()) known += (known.empty() ? "" : ", ") + n;
         throw InputError("unknown scene '" + nameOrPath + "': not a built-in scene (" + known +
-                         ") and not a .gltf/.glb file");
+                         "), not a stiff case (stiff/ID) and not a .gltf/.glb file");
     }
     validateScene(scene);
     return scene;
 }
 
-std::string sceneContentHash(const Scene& scene) {
-    Hasher h;
+namespace {
+
+// Meshes, materials and textures: what a GPU upload of the scene depends on.
+void hashGeometry(Hasher& h, const Scene& scene) {
     h.value(std::uint64_t(scene.meshes.size()));
     for (const Mesh& m : scene.meshes) {
         h.array(m.positions);
@@ -103,6 +114,19 @@ std::string sceneContentHash(const Scene& scene) {
         h.value(t.height);
         h.array(t.rgba8);
     }
+}
+
+}  // namespace
+
+std::uint64_t geometryContentHash(const Scene& scene) {
+    Hasher h;
+    hashGeometry(h, scene);
+    return h.result();
+}
+
+std::string sceneContentHash(const Scene& scene) {
+    Hasher h;
+    hashGeometry(h, scene);
     h.value(std::uint64_t(scene.lights.size()));
     for (const Light& l : scene.lights) {
         h.value(int(l.type));

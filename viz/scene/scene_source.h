@@ -9,13 +9,17 @@
 
 namespace viz::scene {
 
-// A built-in scene name (builtin_scenes.h) or a path ending in .gltf or .glb; anything else throws
+// A built-in scene name (builtin_scenes.h), a stiff case "stiff/ID" (stiff_scenes.h) or a path ending in
+// .gltf or .glb; anything else throws
 // viz::InputError. The result has passed validateScene.
 Scene loadScene(const std::string& nameOrPath);
 
 // Stable 64-bit FNV-1a hash, as 16 hex digits, of everything that affects rendering: geometry,
 // materials, texture bytes, lights, camera and medium (not names or notes). Same value on every run.
 std::string sceneContentHash(const Scene& scene);
+
+// The same hash over meshes, materials and textures only: what a GPU upload of the scene depends on.
+std::uint64_t geometryContentHash(const Scene& scene);
 
 // 64-bit FNV-1a of size bytes, continuing from 'hash' (the FNV offset basis to start).
 constexpr std::uint64_t kFnvOffsetBasis = 0xcbf29ce484222325ULL;

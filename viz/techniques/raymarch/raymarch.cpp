@@ -72,6 +72,25 @@ public:
         return sweep;
     }
 
+    Settings stiffSettings() const override { return {{"samples", 1024.0}, {"exact", 1.0}}; }
+
+    // Measured by `airlight report --suite stiff` at 33x25 (figures in README.md), bounds about twice that.
+    std::optional<StiffBound> stiffBound(const std::string& caseClass) const override {
+        static const std::map<std::string, StiffBound> kBounds = {
+            {"medium", {0.02, "exact=1 integrates each interval's unshadowed airlight: thick media cost nothing"}},
+            {"intensity", {0.02, "linear in the intensity; float holds 1e-3 to 1e7 without clamping"}},
+            {"scale", {0.02, "eye-relative coordinates and distance-valued shadow maps are scale-free"}},
+            {"singular-ray", {0.005, "the shared closed form clamps h; the light's own pixel is left out"}},
+            {"epipole", {0.04, "no epipolar structure to break; grazing sun is the worst (shadow-map bias)"}},
+            {"camera-placement", {0.04, "rays start at the eye wherever it is"}},
+            {"geometry", {0.05, "shadow-map rasterisation drops slivers the reference still hits"}},
+            {"depth-range", {0.03, "distance-valued R32F maps keep the precision near the occluders"}},
+            {"phase", {0.03, "the HG lobe is sampled along the ray; g = 0.99 is the worst"}},
+        };
+        const auto it = kBounds.find(caseClass);
+        return it == kBounds.end() ? std::nullopt : std::optional<StiffBound>(it->second);
+    }
+
     Plan plan(const scene::Scene& scene, const Settings& settings) const override {
         Plan p;
         for (const StageInfo& s : mStages) p.stages.push_back({s.id, true, ""});

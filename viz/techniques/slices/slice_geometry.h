@@ -1,6 +1,9 @@
 // Where the sampling planes go (Mitchell 2004, "Positioning the Sampling Planes"): the view-space
-// axis-aligned bounding box of a light's frustum, cut to the camera's [znear, zfar] depth range. Plane i
-// of N sits at the midpoint of slab i, s_i = far - (i + 1/2) delta_s, delta_s = (far - near) / N.
+// axis-aligned bounding box of a light's frustum, cut to the depth range [0, zfar] in front of the eye.
+// Plane i of N sits at the midpoint of slab i, s_i = far - (i + 1/2) delta_s, delta_s = (far - near) / N,
+// but never nearer than just beyond the camera's znear, where it would be clipped: when the eye is inside
+// the box, the nearest slab still covers [0, delta_s] of the ray (a thick medium can put half of L_air
+// before znear), sampled at drawNear.
 // View space here = eye-relative world projected on the camera basis: x along right, y along up, s (depth)
 // along forward. The light frustum is the clip volume of its shadow matrix (eye-relative world -> clip).
 #pragma once
@@ -24,6 +27,7 @@ struct PlaneRange {
     glm::dvec2 minXY{0.0}, maxXY{0.0};  // box extent across the view (x: right, y: up)
     double near = 0.0, far = 0.0;       // view depth range covered by the slabs
     double spacing = 0.0;               // delta_s = (far - near) / N
+    double drawNear = 0.0;              // planes nearer than this are drawn at it (znear, with a margin)
 };
 
 // lightMatrix: eye-relative world -> the light's clip space; its inverse maps the 8 NDC cube corners to
@@ -43,8 +47,10 @@ inline PlaneRange planeRange(const glm::dmat4& lightMatrix, const CameraBasis& b
         lo = glm::min(lo, v);
         hi = glm::max(hi, v);
     }
-    // Planes nearer than znear would be clipped by the camera; beyond zfar every ray has ended (t >= s).
-    r.near = std::max(lo.z, znear);
+    // The slabs cover the rays from the eye on; beyond zfar every ray has ended (t >= s). Planes nearer
+    // than znear would be clipped by the camera, so they are drawn just beyond it.
+    r.near = std::max(lo.z, 0.0);
+    r.drawNear = znear * 1.001;
     r.far = std::min(hi.z, zfar);
     if (!(r.far > r.near) || planes < 1) return r;
     r.empty = false;
@@ -94,7 +100,7 @@ inline std::vector<std::vector<glm::dvec3>> planePolygons(const PlaneRange& r, c
     if (r.empty) return out;
     const auto frustum = frustumPlanes(lightMatrix);
     for (int i = 0; i < planes; ++i) {
-        const double s = r.far - (double(i) + 0.5) * r.spacing;
+        const double s = std::max(r.far - (double(i) + 0.5) * r.spacing, r.drawNear);
         std::vector<glm::dvec3> poly;
         for (const glm::dvec2 c : {glm::dvec2(0, 0), glm::dvec2(1, 0), glm::dvec2(1, 1), glm::dvec2(0, 1)}) {
             const glm::dvec2 xy = r.minXY + (r.maxXY - r.minXY) * c;

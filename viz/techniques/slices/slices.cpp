@@ -164,6 +164,26 @@ public:
         return sweep;
     }
 
+    Settings stiffSettings() const override { return {{"planes", 512.0}}; }
+
+    // Measured by `airlight report --suite stiff` at 33x25 (figures in README.md), bounds about twice that.
+    std::optional<StiffBound> stiffBound(const std::string& caseClass) const override {
+        static const std::map<std::string, StiffBound> kBounds = {
+            {"medium", {0.3, "a midpoint rule over planes: at sigma_t = 50 the lit near field (1/sigma_t = 0.02) "
+                             "is shorter than the plane spacing (0.012 at N = 512) plus znear; 0.21 measured"}},
+            {"intensity", {0.01, "linear in the intensity (rgba32f accumulation)"}},
+            {"scale", {0.01, "eye-relative planes and distance-valued shadow maps are scale-free"}},
+            {"singular-ray", {0.005, "no plane sample lands on the light; its own pixel is left out"}},
+            {"epipole", {0.05, "unbounded planes for the sun; grazing sun is the worst (shadow-map bias)"}},
+            {"camera-placement", {0.03, "the nearest slab reaches the eye (its plane drawn just beyond znear)"}},
+            {"geometry", {0.05, "shadow-map rasterisation drops slivers the reference still hits"}},
+            {"depth-range", {0.03, "distance-valued R32F maps keep the precision near the occluders"}},
+            {"phase", {0.05, "the HG lobe is sampled plane by plane; g = 0.99 is the worst"}},
+        };
+        const auto it = kBounds.find(caseClass);
+        return it == kBounds.end() ? std::nullopt : std::optional<StiffBound>(it->second);
+    }
+
     Plan plan(const scene::Scene& scene, const Settings& s) const override {
         Plan p;
         for (const StageInfo& st : mStages) p.stages.push_back({st.id, true, ""});
@@ -524,6 +544,7 @@ private:
             program.set("uBoxMaxXY", glm::vec2(range.maxXY));
             program.set("uDepthFar", float(range.far));
             program.set("uSpacing", float(range.spacing));
+            program.set("uDrawNear", float(range.drawNear));
             // Back to front: plane 0 is the farthest, so the first k planes are the k farthest.
             mFramebuffer.attachColor(0, mAccum);
             mFramebuffer.checkComplete();

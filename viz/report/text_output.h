@@ -1,0 +1,17 @@
+// Small text helpers shared by the report's writers: CSV fields, HTML escaping, figures, atomic writes.
+#pragma once
+
+#include <string>
+
+namespace viz::report {
+
+// A CSV field, quoted (with doubled quotes) when it holds a comma, quote or newline.
+std::string csvField(const std::string& text);
+// Text safe inside HTML elements and attribute values.
+std::string escapeHtml(const std::string& text);
+// printf-formatted figure; empty for NaN and Inf (undefined figures print as nothing).
+std::string formatFigure(double value, const char* format = "%.6g");
+// Writes the whole file atomically; throws InputError naming the path on failure.
+void writeTextFile(const std::string& path, const std::string& text);
+
+}  // namespace viz::report
