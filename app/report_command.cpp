@@ -238,6 +238,39 @@ int runStiffSuite(const Options& o, const std::string& commandLine) {
     return failures ? 3 : 0;
 }
 
+bool hasParam(const viz::Technique& t, const std::string& name) {
+    for (const viz::ParamInfo& p : t.params())
+        if (p.name == name) return true;
+    return false;
+}
+
+// The technique at its defaults, timed as planned and with force_features=1, runs interleaved so that
+// both see the same machine load.
+viz::report::PlanSaving measurePlanSaving(const std::string& id, const viz::scene::Scene& scene,
+                                          const std::string& sceneName, const Options& o) {
+    auto technique = viz::makeTechnique(id);
+    viz::report::PlanSaving saving{sceneName, id, 0.0, 0.0, {}};
+    const viz::Settings planned = viz::completeSettings(*technique, {});
+    const viz::Settings forced = viz::completeSettings(*technique, {{"force_features", 1.0}});
+    const viz::Plan a = technique->plan(scene, planned), b = technique->plan(scene, forced);
+    for (std::size_t i = 0; i < a.stages.size() && i < b.stages.size(); ++i)
+        if (!a.stages[i].runs && b.stages[i].runs) saving.skipped.push_back("stage " + a.stages[i].stage);
+    for (std::size_t i = 0; i < a.features.size() && i < b.features.size(); ++i)
+        if (!a.features[i].enabled && b.features[i].enabled) saving.skipped.push_back(a.features[i].feature);
+    viz::FrameInput in{&scene, o.width, o.height, planned, -1};
+    viz::FrameInput inForced{&scene, o.width, o.height, forced, -1};
+    technique->run(in);
+    technique->run(inForced);
+    std::vector<double> plannedTimes, forcedTimes;
+    for (int r = 0; r < o.runs; ++r) {
+        plannedTimes.push_back(technique->run(in).timing.totalMilliseconds());
+        forcedTimes.push_back(technique->run(inForced).timing.totalMilliseconds());
+    }
+    saving.plannedMilliseconds = median(plannedTimes);
+    saving.forcedMilliseconds = median(forcedTimes);
+    return saving;
+}
+
 struct SweepPoint {
     std::string technique;
     viz::QualitySetting setting;
@@ -271,7 +304,8 @@ int runReportCommand(Args& args, const std::string& commandLine) {
     const viz::ui::FontAtlas font = viz::ui::FontAtlas::bake(viz::ui::FontAtlas::kDefaultFontPath, 15.0f);
     std::vector<viz::report::ReportRow> rows;
     std::vector<viz::report::ScenePage> pages;
-    Progress progress(int(scenes.size() * (sweep.size() + 1)));
+    std::vector<viz::report::PlanSaving> savings;
+    Progress progress(int(scenes.size() * (sweep.size() + 1 + o.techniques.size())));
     int done = 0;
     for (std::size_t si = 0; si < scenes.size(); ++si) {
         const viz::scene::Scene& scene = scenes[si];
@@ -334,6 +368,11 @@ int runReportCommand(Args& args, const std::string& commandLine) {
             ++done;
         }
         technique.reset();
+        for (const std::string& id : o.techniques) {
+            progress.show(done++, sceneName + " | " + id + " | plan savings");
+            if (hasParam(*viz::makeTechnique(id), "force_features"))
+                savings.push_back(measurePlanSaving(id, scene, sceneName, o));
+        }
         for (auto& [id, best] : bestImage) {
             viz::report::ReportRow& row = rows[best.first];
             row.image = stem + "-" + fileStem(id) + ".png";
@@ -380,8 +419,8 @@ int runReportCommand(Args& args, const std::string& commandLine) {
         viz::writeImage(viz::ui::renderOffscreen(list, size, {1, 1, 1, 1}), (dir / page.plot).string());
     }
     viz::report::writeCsv((dir / "results.csv").string(), rows);
-    viz::report::writeJson((dir / "results.json").string(), meta, rows);
-    viz::report::writeHtml((dir / "index.html").string(), meta, rows, pages);
+    viz::report::writeJson((dir / "results.json").string(), meta, rows, savings);
+    viz::report::writeHtml((dir / "index.html").string(), meta, rows, pages, savings);
 
     for (const viz::report::ScenePage& page : pages)
         for (const std::string& t : o.techniques)

@@ -8,6 +8,7 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -75,6 +76,13 @@ TEST_F(CliTest, ReportWritesResultsPlotsImagesAndAPageThatLoads) {
     }
     EXPECT_EQ(int(settings.size()), rows);
     EXPECT_NE(j.at("meta").at("renderer").get<std::string>().find("OpenGL"), std::string::npos);
+    // What the plan saves: grate has no point or area light, so raymarch leaves the cube-map code out.
+    ASSERT_EQ(j.at("plan_savings").size(), 1u);
+    const auto& saving = j.at("plan_savings")[0];
+    EXPECT_GT(saving.at("planned_ms").get<double>(), 0.0);
+    EXPECT_GT(saving.at("forced_ms").get<double>(), 0.0);
+    const auto skipped = saving.at("skipped").get<std::vector<std::string>>();
+    EXPECT_NE(std::find(skipped.begin(), skipped.end(), "SHADOW_MAPS_CUBE"), skipped.end());
     // The error falls as raymarch takes more samples (first and last of the sweep).
     EXPECT_GT(j.at("rows").front().at("error").at("relative_l2").get<double>(),
               j.at("rows").back().at("error").at("relative_l2").get<double>());

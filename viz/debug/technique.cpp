@@ -1,5 +1,6 @@
 #include "debug/technique.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -51,6 +52,28 @@ Settings completeSettings(const Technique& technique, const Settings& given) {
         result[name] = value;
     }
     return result;
+}
+
+ParamInfo forceFeaturesParam() {
+    return {"force_features",
+            "1: run every stage and compile every feature the plan would leave out for this scene (to measure "
+            "what the plan saves; the image is the same)",
+            0, 0, 1, true};
+}
+
+void forcePlan(Plan& plan, bool force, const std::vector<std::string>& scenePrunedFeatures) {
+    if (!force) return;
+    for (StagePlan& s : plan.stages)
+        if (!s.runs) {
+            s.runs = true;
+            s.why = "forced on (force_features=1); the plan would skip it: " + s.why;
+        }
+    for (FeaturePlan& f : plan.features)
+        if (!f.enabled && std::find(scenePrunedFeatures.begin(), scenePrunedFeatures.end(), f.feature) !=
+                              scenePrunedFeatures.end()) {
+            f.enabled = true;
+            f.why = "forced on (force_features=1); the plan would leave it out: " + f.why;
+        }
 }
 
 }  // namespace viz

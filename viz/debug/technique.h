@@ -134,4 +134,12 @@ public:
 // Fills in defaults and rejects unknown names and out-of-range values with an InputError.
 Settings completeSettings(const Technique& technique, const Settings& given);
 
+// The `force_features` parameter every technique that prunes by scene offers: 1 runs every stage and
+// compiles in every feature its plan would leave out for the scene, so `airlight report` can measure
+// what each plan saves. The image must not change.
+ParamInfo forceFeaturesParam();
+// With force = true, turns every skipped stage on and every listed scene-pruned feature on, keeping
+// the reason it would have been skipped in `why`. Features chosen by settings are not touched.
+void forcePlan(Plan& plan, bool force, const std::vector<std::string>& scenePrunedFeatures);
+
 }  // namespace viz

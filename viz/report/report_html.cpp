@@ -28,7 +28,7 @@ figure{display:inline-block;margin:0.3em;text-align:center}figure img{image-rend
 }  // namespace
 
 void writeHtml(const std::string& path, const ReportMeta& meta, const std::vector<ReportRow>& rows,
-               const std::vector<ScenePage>& scenes) {
+               const std::vector<ScenePage>& scenes, const std::vector<PlanSaving>& savings) {
     std::set<std::string> techniqueSet;
     std::vector<std::string> techniques;
     for (const ReportRow& r : rows)
@@ -68,6 +68,24 @@ void writeHtml(const std::string& path, const ReportMeta& meta, const std::vecto
     }
     h << "</table>\n<p class=\"note\">&ndash;: no setting of the technique has an error inside raymarch's measured "
          "range (or it is raymarch itself).</p>\n";
+
+    if (!savings.empty()) {
+        h << "<h2>What each plan leaves out, and what that saves</h2>\n<p class=\"note\">Default settings, timed as "
+             "planned and with <code>force_features=1</code> (everything the plan leaves out for the scene runs "
+             "anyway; the image is the same), medians of the same runs, interleaved.</p>\n<table><tr><th class=\"l\">"
+             "scene</th><th class=\"l\">technique</th><th>planned ms</th><th>forced ms</th><th>saved</th><th "
+             "class=\"l\">left out</th></tr>\n";
+        for (const PlanSaving& p : savings) {
+            std::string skipped;
+            for (const std::string& k : p.skipped) skipped += (skipped.empty() ? "" : ", ") + k;
+            h << "<tr><td class=\"l\">" << escapeHtml(p.scene) << "</td><td class=\"l\">" << escapeHtml(p.technique)
+              << "</td><td>" << figure(p.plannedMilliseconds, "%.1f") << "</td><td>"
+              << figure(p.forcedMilliseconds, "%.1f") << "</td><td>"
+              << figure(100.0 * (1.0 - p.plannedMilliseconds / p.forcedMilliseconds), "%.0f") << "%</td><td class=\"l\">"
+              << escapeHtml(skipped.empty() ? "nothing" : skipped) << "</td></tr>\n";
+        }
+        h << "</table>\n";
+    }
 
     for (const ScenePage& s : scenes) {
         h << "<h2 id=\"" << escapeHtml(s.scene) << "\">" << escapeHtml(s.scene) << "</h2>\n";

@@ -78,7 +78,8 @@ void writeCsv(const std::string& path, const std::vector<ReportRow>& rows) {
     writeTextFile(path, out.str());
 }
 
-void writeJson(const std::string& path, const ReportMeta& meta, const std::vector<ReportRow>& rows) {
+void writeJson(const std::string& path, const ReportMeta& meta, const std::vector<ReportRow>& rows,
+               const std::vector<PlanSaving>& savings) {
     nlohmann::json j;
     j["meta"] = {{"date", meta.date},         {"command", meta.command}, {"machine", meta.machine},
                  {"renderer", meta.renderer}, {"width", meta.width},     {"height", meta.height},
@@ -116,6 +117,14 @@ void writeJson(const std::string& path, const ReportMeta& meta, const std::vecto
                         {"error_image", r.errorImage}});
     }
     j["rows"] = list;
+    nlohmann::json planList = nlohmann::json::array();
+    for (const PlanSaving& p : savings)
+        planList.push_back({{"scene", p.scene},
+                            {"technique", p.technique},
+                            {"planned_ms", jsonNumber(p.plannedMilliseconds)},
+                            {"forced_ms", jsonNumber(p.forcedMilliseconds)},
+                            {"skipped", p.skipped}});
+    j["plan_savings"] = planList;
     writeTextFile(path, j.dump(2) + "\n");
 }
 

@@ -32,6 +32,14 @@ struct ReportRow {
     std::string errorImage;
 };
 
+// What a technique's plan saves on a scene: its default setting timed as planned and with
+// force_features=1 (everything the plan leaves out for the scene run anyway), medians side by side.
+struct PlanSaving {
+    std::string scene, technique;
+    double plannedMilliseconds = 0.0, forcedMilliseconds = 0.0;
+    std::vector<std::string> skipped;  // the stages and features the plan leaves out ("stage x", "feature Y")
+};
+
 struct ReportMeta {
     std::string date;       // ISO 8601, UTC
     std::string command;    // the command line
@@ -53,7 +61,8 @@ const std::vector<std::string>& csvColumns();
 
 // Write atomically; throw InputError naming the path when the folder cannot be written.
 void writeCsv(const std::string& path, const std::vector<ReportRow>& rows);
-void writeJson(const std::string& path, const ReportMeta& meta, const std::vector<ReportRow>& rows);
+void writeJson(const std::string& path, const ReportMeta& meta, const std::vector<ReportRow>& rows,
+               const std::vector<PlanSaving>& savings = {});
 
 // The static page: headline table, per scene the plot (plotFiles[i] for scenes[i]), the rows, and for
 // each technique its image, the reference image (referenceImages[i]) and the error heat map.
@@ -63,6 +72,6 @@ struct ScenePage {
     std::string referenceImage;  // PNG file name
 };
 void writeHtml(const std::string& path, const ReportMeta& meta, const std::vector<ReportRow>& rows,
-               const std::vector<ScenePage>& scenes);
+               const std::vector<ScenePage>& scenes, const std::vector<PlanSaving>& savings = {});
 
 }  // namespace viz::report

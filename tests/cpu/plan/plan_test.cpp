@@ -71,14 +71,14 @@ TEST(Plan, RaymarchCompilesOnlyTheLightAndShadowCodeEachSceneUses) {
 
 TEST(Plan, SlicesClipsOnlyWhereALightFrustumExists) {
     const std::map<std::string, bool> sun = {{"SPOT_FALLOFF", false}, {"COOKIE", false}, {"CLIP", false},
-                                             {"UNBOUNDED_PLANES", true}};
+                                             {"UNBOUNDED_PLANES", true}, {"SHADOW_MAPS_CUBE", false}};
     expectFeatures("slices", {{"grate", {{"SPOT_FALLOFF", true}, {"COOKIE", false}, {"CLIP", true},
-                                         {"UNBOUNDED_PLANES", false}}},
+                                         {"UNBOUNDED_PLANES", false}, {"SHADOW_MAPS_CUBE", false}}},
                               {"stained-glass", {{"SPOT_FALLOFF", true}, {"COOKIE", true}, {"CLIP", true}}},
                               {"colonnade", sun},
                               {"forest", sun},
                               {"terrain", sun},
-                              {"tv-room", {{"CLIP", false}, {"UNBOUNDED_PLANES", true}}}});
+                              {"tv-room", {{"CLIP", false}, {"UNBOUNDED_PLANES", true}, {"SHADOW_MAPS_CUBE", true}}}});
     // A directional light boxed into its shadow map's volume is clipped to that box.
     EXPECT_TRUE(feature(planFor("slices", "colonnade", {{"directional_box", 1}}), "CLIP")->enabled);
 }

@@ -46,11 +46,12 @@ public:
             {"seed", "jitter seed", 1, 0, 1e9, true},
         };
         for (ParamInfo& p : render::SceneViewPasses::params()) mParams.push_back(std::move(p));
+        mParams.push_back(forceFeaturesParam());
         mStages = {
             render::SceneViewPasses::shadowStage("raymarch"),
             render::SceneViewPasses::surfaceStage("raymarch"),
             {kStageMarch, "Ray march", "N shadow-map tests per ray and light, summed into L_air",
-             {"samples", "jitter", "exact", "seed"}, {kAirlight, kLitFraction}, 1},
+             {"samples", "jitter", "exact", "seed", "force_features"}, {kAirlight, kLitFraction}, 1},
             render::SceneViewPasses::composeStage("raymarch"),
         };
     }
@@ -125,6 +126,7 @@ public:
         const bool maps2D = hasSpot || render::hasLightOfType(scene, scene::LightType::Directional);
         p.features.push_back({"SHADOW_MAPS_2D", maps2D,
                               maps2D ? "spot / directional lights" : "no spot or directional light"});
+        forcePlan(p, settings.at("force_features") != 0.0, {"SPOT", "COOKIE", "SHADOW_MAPS_CUBE", "SHADOW_MAPS_2D"});
         for (FeaturePlan& f : p.features) {
             const auto it = kDefines.find(f.feature);
             const char* define = it == kDefines.end() ? nullptr : (f.enabled ? it->second.first : it->second.second);
@@ -208,12 +210,16 @@ private:
             defines.push_back({define, "1"});
             key += std::string(define) + ";";
         }
-        if (key != mProgramKey || !mMarch) {
-            mMarch = gl::Program::compile(
-                {.stages = {"raymarch/march.comp"}, .defines = defines, .label = "raymarch.march"});
-            mProgramKey = key;
-        }
-        return mMarch;
+        // One program per permutation, kept: switching settings back and forth never recompiles (and a
+        // timing never includes a compile after the warm-up).
+        auto it = mMarchPrograms.find(key);
+        if (it == mMarchPrograms.end())
+            it = mMarchPrograms
+                     .emplace(key, gl::Program::compile({.stages = {"raymarch/march.comp"},
+                                                         .defines = defines,
+                                                         .label = "raymarch.march"}))
+                     .first;
+        return it->second;
     }
 
     void march(const gl::Program& program, const scene::Scene& scene, const FrameInput& input) {
@@ -245,8 +251,7 @@ private:
     std::vector<ParamInfo> mParams;
     std::vector<StageInfo> mStages;
     render::SceneViewPasses mView;
-    gl::Program mMarch;
-    std::string mProgramKey;
+    std::map<std::string, gl::Program> mMarchPrograms;  // by permutation key
     gl::Texture mAirlight, mLitFraction;
 };
 

@@ -125,6 +125,7 @@ public:
              0, 1e6, false},
             {"count_fragments", "1: count shaded fragments and those outside the light frustum (atomic counter)",
              0, 0, 1, true},
+            forceFeaturesParam(),
         };
         for (ParamInfo& p : render::SceneViewPasses::params()) mParams.push_back(std::move(p));
         mStages = {
@@ -134,7 +135,7 @@ public:
              "N view-aligned planes per light, clipped to its frustum, added back to front",
              {"planes", "planes_drawn", "weighting", "accum", "accum_range", "shadow", "spot_falloff", "cookie",
               "noise", "noise_tiles", "time", "falloff", "ambient", "artistic_units", "clip", "user_clip",
-              "clip_y_min", "clip_y_max", "directional_box", "distance_scale", "count_fragments"},
+              "clip_y_min", "clip_y_max", "directional_box", "distance_scale", "count_fragments", "force_features"},
              {kAccum, kPlane, kPlaneMesh, kFragments}, 128},
             {kStageResolve, "Resolve", "accumulation -> L_air: undo the 8-bit scale, sum the mask channels, blur",
              {"blur"}, {kAirlight}, 1},
@@ -242,7 +243,20 @@ public:
                                      : "distance_scale=0: always N planes"});
         p.features.push_back({"USER_CLIP", t.userClip, t.userClip ? "planes y >= clip_y_min, y <= clip_y_max"
                                                                  : "user_clip=0"});
+        p.features.push_back({"SHADOW_MAPS_CUBE", t.cubes,
+                              t.cubes ? "point lights / area-light VPLs: cube shadow maps"
+                                      : "no point or area light: cube-map code compiled out (SHADOW_NO_CUBE)"});
         p.features.push_back({"PERMUTATION", true, permutationKey(t)});
+        if (s.at("force_features") != 0.0) {
+            Settings unforced = s;
+            unforced["force_features"] = 0.0;
+            const Terms t0 = terms(scene, unforced);
+            for (FeaturePlan& f : p.features)
+                if ((f.feature == "SPOT_FALLOFF" && t.spot != t0.spot) || (f.feature == "COOKIE" && t.cookie != t0.cookie) ||
+                    (f.feature == "CLIP" && t.clip != t0.clip) || (f.feature == "SHADOW_MAPS_CUBE" && t.cubes != t0.cubes))
+                    f.why = "forced on (force_features=1); the plan would leave it out for this scene";
+            forcePlan(p, true, {});
+        }
         return p;
     }
 
@@ -356,9 +370,11 @@ private:
         const bool hasCookie = std::any_of(scene.lights.begin(), scene.lights.end(), [](const scene::Light& l) {
             return l.type == scene::LightType::Spot && l.cookie >= 0;
         });
+        // force_features=1 compiles in what this scene would not need (to measure what leaving it out saves).
+        const bool force = s.at("force_features") != 0.0;
         t.physical = s.at("weighting") != 0.0;
-        t.spot = hasSpot && s.at("spot_falloff") != 0.0;
-        t.cookie = hasCookie && s.at("cookie") != 0.0;
+        t.spot = (hasSpot || force) && s.at("spot_falloff") != 0.0;
+        t.cookie = (hasCookie || force) && s.at("cookie") != 0.0;
         t.shadow = s.at("shadow") != 0.0;
         t.pcf = s.at("shadow") == 2.0;
         t.noise = s.at("noise") != 0.0;
@@ -367,11 +383,11 @@ private:
         // Only spot lights (and directional lights boxed by directional_box=1) have a frustum to clip to.
         const bool boxedDirectional = render::hasLightOfType(scene, scene::LightType::Directional) &&
                                       s.at("directional_box") != 0.0;
-        t.clip = s.at("clip") != 0.0 && (hasSpot || boxedDirectional);
+        t.clip = s.at("clip") != 0.0 && (hasSpot || boxedDirectional || force);
         t.userClip = s.at("user_clip") != 0.0;
         t.count = s.at("count_fragments") != 0.0;
         t.cubes = render::hasLightOfType(scene, scene::LightType::Point) ||
-                  render::hasLightOfType(scene, scene::LightType::Area);
+                  render::hasLightOfType(scene, scene::LightType::Area) || force;
         return t;
     }
 

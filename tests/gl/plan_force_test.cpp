@@ -1,0 +1,46 @@
+// force_features=1 runs what each plan leaves out for a scene; the image must not change, so whatever
+// the plan skips was truly not needed (and the report can time the saving honestly).
+#include <gtest/gtest.h>
+
+#include "gl/technique_test_util.h"
+#include "scene/builtin_scenes.h"
+
+namespace viz::testing {
+namespace {
+
+class ForcedPlan : public TechniqueTest {};
+
+TEST_F(ForcedPlan, ForcingSkippedFeaturesLeavesEveryImageUnchanged) {
+    for (const std::string& technique : {"raymarch", "slices"})
+        for (const std::string& name : {"grate", "colonnade", "stained-glass", "tv-room"}) {
+            const scene::Scene s = scene::makeBuiltinScene(name);
+            const Settings fast = {{"samples", 32}, {"planes", 32}, {"area_samples", 2}, {"shadow_map", 256}};
+            Settings plain, forced;
+            const auto t = makeTechnique(technique);
+            for (const auto& [k, v] : fast)
+                for (const ParamInfo& p : t->params())
+                    if (p.name == k) plain[k] = v;
+            forced = plain;
+            forced["force_features"] = 1;
+            // The forced plan really turns something on (every scene here lacks some light kind).
+            const Plan a = t->plan(s, completeSettings(*t, plain)), b = t->plan(s, completeSettings(*t, forced));
+            int enabledA = 0, enabledB = 0;
+            for (const auto& f : a.features) enabledA += f.enabled;
+            for (const auto& f : b.features) enabledB += f.enabled;
+            EXPECT_GT(enabledB, enabledA) << technique << " " << name;
+
+            const FrameOutput x = render(s, technique, plain, 40, 30);
+            const FrameOutput y = render(s, technique, forced, 40, 30);
+            ASSERT_FALSE(x.airlight.empty());
+            double maxDiff = 0.0, maxValue = 0.0;
+            for (std::size_t i = 0; i < x.airlight.pixels.size(); ++i) {
+                maxDiff = std::max(maxDiff, double(std::abs(x.airlight.pixels[i] - y.airlight.pixels[i])));
+                maxValue = std::max(maxValue, double(std::abs(x.airlight.pixels[i])));
+            }
+            // Same arithmetic on the same data; only dead code differs. Allow float reassociation.
+            EXPECT_LE(maxDiff, 1e-5 * maxValue) << technique << " " << name;
+        }
+}
+
+}  // namespace
+}  // namespace viz::testing
