@@ -12,6 +12,7 @@
 
 #include "core/error.h"
 #include "render/gpu_scene.h"
+#include "render/light_culling.h"
 #include "scene/texture_sampling.h"
 
 namespace viz::render {
@@ -99,6 +100,8 @@ GpuLights::GpuLights(const scene::Scene& scene, glm::dvec3 eye, int areaSamples)
 
     for (std::size_t li = 0; li < scene.lights.size(); ++li) {
         const scene::Light& light = scene.lights[li];
+        // A light whose lit volume misses the view volume lights nothing visible: no entry, no shadow map.
+        if (!lightReachesView(light, scene.camera)) continue;
         GpuLightCpu g{};
         g.position = glm::vec4(glm::vec3(light.position - eye), 1.0f);
         g.direction = glm::vec4(glm::vec3(glm::normalize(light.direction)), 0.0f);

@@ -11,6 +11,7 @@
 #include "gl/texture.h"
 #include "render/host_device.h"
 #include "render/intermediates.h"
+#include "render/light_culling.h"
 #include "render/scene_view.h"
 #include "scene/camera.h"
 
@@ -126,6 +127,7 @@ public:
         const bool maps2D = hasSpot || render::hasLightOfType(scene, scene::LightType::Directional);
         p.features.push_back({"SHADOW_MAPS_2D", maps2D,
                               maps2D ? "spot / directional lights" : "no spot or directional light"});
+        render::planCulledLights(scene, p);
         forcePlan(p, settings.at("force_features") != 0.0, {"SPOT", "COOKIE", "SHADOW_MAPS_CUBE", "SHADOW_MAPS_2D"});
         for (FeaturePlan& f : p.features) {
             const auto it = kDefines.find(f.feature);

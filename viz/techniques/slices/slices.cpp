@@ -20,6 +20,7 @@
 #include "render/gpu_lights.h"
 #include "render/gpu_scene.h"
 #include "render/intermediates.h"
+#include "render/light_culling.h"
 #include "render/scene_view.h"
 #include "render/shadow_maps.h"
 #include "render/surface_pass.h"
@@ -246,6 +247,7 @@ public:
         p.features.push_back({"SHADOW_MAPS_CUBE", t.cubes,
                               t.cubes ? "point lights / area-light VPLs: cube shadow maps"
                                       : "no point or area light: cube-map code compiled out (SHADOW_NO_CUBE)"});
+        render::planCulledLights(scene, p);
         p.features.push_back({"PERMUTATION", true, permutationKey(t)});
         if (s.at("force_features") != 0.0) {
             Settings unforced = s;

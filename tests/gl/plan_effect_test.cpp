@@ -1,5 +1,5 @@
-// force_features=1 runs what each plan leaves out for a scene; the image must not change, so whatever
-// the plan skips was truly not needed (and the report can time the saving honestly).
+// What plans leave out must not change the image: force_features=1 runs everything a plan would skip,
+// and a light whose lit volume misses the view is dropped entirely.
 #include <gtest/gtest.h>
 
 #include "gl/technique_test_util.h"
@@ -40,6 +40,31 @@ TEST_F(ForcedPlan, ForcingSkippedFeaturesLeavesEveryImageUnchanged) {
             // Same arithmetic on the same data; only dead code differs. Allow float reassociation.
             EXPECT_LE(maxDiff, 1e-5 * maxValue) << technique << " " << name;
         }
+}
+
+TEST_F(ForcedPlan, ALightThatLightsNothingVisibleIsDroppedWithoutChangingTheImage) {
+    const scene::Scene plain = scene::makeBuiltinScene("grate");
+    scene::Scene extra = plain;
+    scene::Light away = plain.lights[0];
+    away.name = "behind";
+    away.position = {0.0, 1.0, 9.0};  // behind the camera (at z = 7), shining away from the scene
+    away.direction = {0.0, 0.0, 1.0};
+    extra.lights.push_back(away);
+    for (const std::string& technique : {"raymarch", "slices"}) {
+        const auto t = makeTechnique(technique);
+        const Plan p = t->plan(extra, completeSettings(*t, {}));
+        bool listed = false;
+        for (const FeaturePlan& f : p.features) listed |= f.feature == "LIGHT behind" && !f.enabled;
+        EXPECT_TRUE(listed) << technique;
+        const Settings fast = {{"shadow_map", 256}};
+        const FrameOutput a = render(plain, technique, fast, 40, 30);
+        const FrameOutput b = render(extra, technique, fast, 40, 30);
+        EXPECT_EQ(a.airlight.pixels, b.airlight.pixels) << technique;
+        EXPECT_EQ(a.final.pixels, b.final.pixels) << technique;
+        // One shadow map, not two.
+        EXPECT_NE(find(b, technique + ".shadow_map"), nullptr);
+        EXPECT_EQ(find(b, technique + ".shadow_map.1"), nullptr);
+    }
 }
 
 }  // namespace
