@@ -14,7 +14,35 @@ std::uint32_t packColor(glm::vec4 rgba) {
 
 // ---- DrawList (CPU) ----
 
+void DrawList::pushClip(const Rect& r) {
+    Rect c = r;
+    if (!mClips.empty()) {
+        c.min = glm::max(c.min, mClips.back().min);
+        c.max = glm::min(c.max, mClips.back().max);
+    }
+    mClips.push_back(c);
+}
+
+void DrawList::popClip() {
+    if (!mClips.empty()) mClips.pop_back();
+}
+
+void DrawList::append(const DrawList& other) {
+    mVertices.insert(mVertices.end(), other.mVertices.begin(), other.mVertices.end());
+}
+
 void DrawList::quad(glm::vec2 p0, glm::vec2 p1, glm::vec2 uv0, glm::vec2 uv1, std::uint32_t color) {
+    if (!mClips.empty()) {
+        // Cut the quad to the clip rectangle, moving the uvs in proportion.
+        const Rect& c = mClips.back();
+        const glm::vec2 q0 = glm::max(p0, c.min), q1 = glm::min(p1, c.max);
+        if (q0.x >= q1.x || q0.y >= q1.y) return;
+        const glm::vec2 size = p1 - p0;
+        const glm::vec2 t0 = glm::vec2(size.x > 0 ? (q0.x - p0.x) / size.x : 0, size.y > 0 ? (q0.y - p0.y) / size.y : 0);
+        const glm::vec2 t1 = glm::vec2(size.x > 0 ? (q1.x - p0.x) / size.x : 1, size.y > 0 ? (q1.y - p0.y) / size.y : 1);
+        const glm::vec2 w0 = uv0 + (uv1 - uv0) * t0, w1 = uv0 + (uv1 - uv0) * t1;
+        p0 = q0, p1 = q1, uv0 = w0, uv1 = w1;
+    }
     const UiVertex a{p0, uv0, color};
     const UiVertex b{{p1.x, p0.y}, {uv1.x, uv0.y}, color};
     const UiVertex c{p1, uv1, color};
@@ -28,6 +56,11 @@ void DrawList::rect(const Rect& r, glm::vec4 color) {
 }
 
 void DrawList::quadrilateral(glm::vec2 a, glm::vec2 b, glm::vec2 c, glm::vec2 d, glm::vec4 color) {
+    if (!mClips.empty()) {
+        const Rect& clip = mClips.back();
+        const glm::vec2 lo = glm::min(glm::min(a, b), glm::min(c, d)), hi = glm::max(glm::max(a, b), glm::max(c, d));
+        if (hi.x <= clip.min.x || hi.y <= clip.min.y || lo.x >= clip.max.x || lo.y >= clip.max.y) return;
+    }
     const glm::vec2 uv = mFont->whiteUv();
     const std::uint32_t packed = packColor(color);
     const UiVertex va{a, uv, packed}, vb{b, uv, packed}, vc{c, uv, packed}, vd{d, uv, packed};

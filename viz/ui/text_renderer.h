@@ -36,7 +36,16 @@ class DrawList {
 public:
     explicit DrawList(const FontAtlas& font) : mFont(&font) {}
 
-    void clear() { mVertices.clear(); }
+    void clear() {
+        mVertices.clear();
+        mClips.clear();
+    }
+    // Clipping: axis-aligned quads (rectangles, glyphs) are cut to the innermost clip rectangle with
+    // their uvs; other shapes are dropped when entirely outside it. Clips nest (intersected).
+    void pushClip(const Rect& r);
+    void popClip();
+    // Appends another list's vertices (drawn after this list's, e.g. popups over widgets).
+    void append(const DrawList& other);
     void rect(const Rect& r, glm::vec4 color);
     // Any convex quadrilateral, corners in order (solid colour).
     void quadrilateral(glm::vec2 a, glm::vec2 b, glm::vec2 c, glm::vec2 d, glm::vec4 color);
@@ -56,6 +65,7 @@ private:
 
     const FontAtlas* mFont;
     std::vector<UiVertex> mVertices;  // six per quad (two triangles)
+    std::vector<Rect> mClips;
     std::vector<GlyphQuad> mScratch;
 };
 
