@@ -59,9 +59,14 @@ lights as KHR_lights_punctual, area lights as emissive meshes, the medium in sce
 )";
 
 constexpr const char* kGuiHelp = R"(usage: airlight gui [--scene S] [--technique T] [--size WxH] [--set name=value]...
+                    [--screenshot OUT.png [--frames N]]
 
 Opens the window: the final frame beside one intermediate. Keys: Tab / Shift+Tab technique,
 [ and ] intermediate, C orbit/fly camera, R reset camera, + and - exposure, Esc quit.
+
+--screenshot OUT.png  after N frames (default 1; and once a CPU technique's result has arrived) write
+                      the window to OUT.png and its views' rectangles (window pixels, origin top-left)
+                      to OUT.json, then exit. Runs under xvfb-run without a monitor.
 )";
 
 struct CommonOptions {
@@ -71,6 +76,8 @@ struct CommonOptions {
     int layerIndex = -1;
     std::string exposure;
     bool quiet = false;
+    std::string screenshot;  // gui only
+    int frames = 1;
 };
 
 // Parses the options shared by render, plan and gui; `allowed` lists the flags this command takes.
@@ -97,6 +104,13 @@ CommonOptions parseOptions(Args& args, const std::string& command, const std::st
         else if (flag == "--stop-after") o.request.stopAfter = args.next(flag);
         else if (flag == "--exposure") o.exposure = args.next(flag);
         else if (flag == "--quiet") o.quiet = true;
+        else if (flag == "--screenshot") o.screenshot = args.next(flag);
+        else if (flag == "--frames") {
+            const double frames = parseNumber(args.next(flag), flag);
+            if (frames != std::floor(frames) || frames < 1 || frames > 1e6)
+                throw InputError("--frames must be a whole number from 1 to 1000000");
+            o.frames = int(frames);
+        }
     }
     return o;
 }
@@ -262,7 +276,10 @@ int runGuiCommand(Args& args) {
         std::fputs(kGuiHelp, stdout);
         return 0;
     }
-    CommonOptions o = parseOptions(args, "gui", " --scene --technique --size --set ");
+    CommonOptions o = parseOptions(args, "gui", " --scene --technique --size --set --screenshot --frames ");
+    if (!o.screenshot.empty() && viz::extensionOf(o.screenshot) != ".png")
+        throw InputError("--screenshot '" + o.screenshot + "' must end in .png");
+    if (o.frames < 1) throw InputError("--frames must be at least 1");
     if (!viz::displayAvailable())
         throw InputError("no display: set DISPLAY (or run under xvfb-run), or use 'airlight render'");
     GuiOptions g;
@@ -271,6 +288,8 @@ int runGuiCommand(Args& args) {
     g.width = o.request.width;
     g.height = o.request.height;
     g.settings = o.request.settings;
+    g.screenshot = o.screenshot;
+    g.frames = o.frames;
     return runGui(g);
 }
 

@@ -13,18 +13,25 @@
 #include <chrono>
 #include <cmath>
 #include <condition_variable>
+#include <cstdint>
 #include <cstdio>
+#include <filesystem>
 #include <functional>
 #include <map>
 #include <memory>
 #include <mutex>
 #include <optional>
 #include <thread>
+#include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "camera_controller.h"
 #include "cpu_worker.h"
 #include "pane_image.h"
+#include "core/atomic_file.h"
 #include "core/error.h"
+#include "core/image_io.h"
 #include "gl/debug_output.h"
 #include "gl/program.h"
 #include "gl/readback.h"
@@ -220,7 +227,8 @@ public:
         while (!mWindow.shouldClose()) {
             const bool flying = mController.mode() == CameraController::Mode::Fly && anyFlyKeyDown();
             const bool busy = mWorker->progress().busy;
-            if (flying || mDirty) {
+            const bool automated = !mOptions.screenshot.empty();
+            if (flying || mDirty || automated) {
                 glfwPollEvents();
             } else {
                 // Nothing animates: sleep until input arrives, waking a few times a second while the
@@ -244,9 +252,45 @@ public:
             }
             if (auto result = mWorker->take()) acceptCpuResult(std::move(*result));
             draw();
+            if (automated && ++mFramesDrawn >= mOptions.frames && mHaveOutput && !mWorker->progress().busy) {
+                writeScreenshot();
+                return 0;
+            }
             mWindow.swapBuffers();
         }
         return 0;
+    }
+
+    // The back buffer as drawn (before the swap) to the PNG, and the views' rectangles beside it.
+    void writeScreenshot() {
+        const glm::ivec2 fb = mWindow.framebufferSize();
+        std::vector<std::uint8_t> bytes(std::size_t(fb.x) * std::size_t(fb.y) * 4);
+        glReadBuffer(GL_BACK);
+        glPixelStorei(GL_PACK_ALIGNMENT, 1);
+        glReadPixels(0, 0, fb.x, fb.y, GL_RGBA, GL_UNSIGNED_BYTE, bytes.data());
+        // Display bytes, GL row 0 at the bottom -> linear floats, row 0 at the top (writeImage encodes).
+        viz::Image image(fb.x, fb.y, 3);
+        for (int y = 0; y < fb.y; ++y)
+            for (int x = 0; x < fb.x; ++x)
+                for (int c = 0; c < 3; ++c) {
+                    const float v = float(bytes[(std::size_t(fb.y - 1 - y) * std::size_t(fb.x) + std::size_t(x)) * 4 +
+                                                std::size_t(c)]) / 255.0f;
+                    image.at(x, y, c) = v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f);
+                }
+        viz::writeImage(image, mOptions.screenshot);
+        nlohmann::json views = nlohmann::json::array();
+        for (const auto& v : mViewRects)
+            views.push_back({{"name", v.name}, {"title", v.title}, {"rect", {v.rect.min.x, v.rect.min.y, v.rect.max.x, v.rect.max.y}}});
+        const nlohmann::json sidecar = {{"window", {fb.x, fb.y}},
+                                        {"scale", mScale},
+                                        {"scene", mScene.name},
+                                        {"technique", technique().id()},
+                                        {"frames", mFramesDrawn},
+                                        {"views", views}};
+        std::filesystem::path json(mOptions.screenshot);
+        json.replace_extension(".json");
+        const std::string error = viz::writeFileAtomically(json, sidecar.dump(2) + "\n");
+        if (!error.empty()) throw viz::InputError("cannot write '" + json.string() + "': " + error);
     }
 
 private:
@@ -614,6 +658,7 @@ private:
         mBackground->clear();
         mHits.clear();
         mPaneDraws.clear();
+        mViewRects.clear();
         const float s = mScale;
         const float pad = kPad * s;
         const float line = mFont->lineHeight();
@@ -684,7 +729,9 @@ private:
         const Rect left{panes.min, {panes.min.x + half, panes.max.y}};
         const Rect right{{panes.max.x - half, panes.min.y}, panes.max};
         // Camera drags are scaled by the final image's on-screen height.
-        mImageHeight = drawPane(left, mFinal, "Final image", "surface radiance * exp(-sigma_t d) + L_air   (exposure " + format("%+.1f EV)", mExposure)).size().y;
+        const Rect finalRect = drawPane(left, mFinal, "Final image", "surface radiance * exp(-sigma_t d) + L_air   (exposure " + format("%+.1f EV)", mExposure));
+        mImageHeight = finalRect.size().y;
+        mViewRects.push_back({"final", "Final image", finalRect});
         std::string rightTitle = "(no view)";
         std::string rightNote;
         if (mHaveOutput) {
@@ -698,7 +745,7 @@ private:
         } else if (!t.needsGl()) {
             rightTitle = "computing...";
         }
-        drawPane(right, mRight, rightTitle, rightNote);
+        mViewRects.push_back({mHaveOutput ? mRight.id : std::string("none"), rightTitle, drawPane(right, mRight, rightTitle, rightNote)});
 
         // Panels, then the images, then the text batch over them.
         mTextRenderer->draw(*mBackground, fb);
@@ -744,6 +791,12 @@ private:
 
     std::vector<std::pair<Rect, std::function<void()>>> mHits;  // clickable rectangles of the last frame
     std::vector<std::pair<Rect, const PaneImage*>> mPaneDraws;
+    struct ViewRect {
+        std::string name, title;
+        Rect rect;  // the image's rectangle in window pixels
+    };
+    std::vector<ViewRect> mViewRects;  // what the last frame showed where (screenshot sidecar)
+    int mFramesDrawn = 0;
     Rect mViewArea;
     float mImageHeight = 1.0f;
     glm::vec2 mHover{-1.0f};

@@ -14,6 +14,11 @@ struct GuiOptions {
     int width = 320;        // internal render resolution; the panes upscale it (nearest)
     int height = 240;
     viz::Settings settings;  // applied to every technique that has a parameter of that name
+    // Automation (tests, handouts): after `frames` frames (and once a CPU technique's result is in),
+    // write the window to `screenshot` (PNG) and its view rectangles to the same path with .json, then
+    // exit. Empty: run until closed.
+    std::string screenshot;
+    int frames = 1;
 };
 
 // Opens the window and runs until it is closed. Throws InputError for a bad scene or technique (before

@@ -1,0 +1,89 @@
+// `airlight gui --screenshot`: the window under a (virtual) display writes a screenshot and the
+// rectangles of its views, and the views hold the rendered images.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "cli/cli_fixture.h"
+#include "core/image_io.h"
+
+namespace viz::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+bool haveDisplay() {
+    const char* x = std::getenv("DISPLAY");
+    const char* w = std::getenv("WAYLAND_DISPLAY");
+    return (x && *x) || (w && *w);
+}
+
+class GuiCli : public CliTest {
+protected:
+    void SetUp() override {
+        CliTest::SetUp();
+        if (!haveDisplay()) {
+            const char* require = std::getenv("VIZ_REQUIRE_DISPLAY");
+            if (require && std::string(require) == "1") FAIL() << "VIZ_REQUIRE_DISPLAY=1 but no display";
+            GTEST_SKIP() << "no DISPLAY (run under xvfb-run -a)";
+        }
+    }
+};
+
+// Mean and spread of the pixels inside a rectangle (window pixels).
+void regionStats(const Image& image, const nlohmann::json& rect, double& mean, double& spread) {
+    const int x0 = int(std::ceil(rect[0].get<double>())), y0 = int(std::ceil(rect[1].get<double>()));
+    const int x1 = int(rect[2].get<double>()), y1 = int(rect[3].get<double>());
+    double sum = 0.0, sum2 = 0.0;
+    int n = 0;
+    for (int y = y0; y < y1; ++y)
+        for (int x = x0; x < x1; ++x) {
+            const double v = image.at(x, y, 0) + image.at(x, y, 1) + image.at(x, y, 2);
+            sum += v, sum2 += v * v, ++n;
+        }
+    mean = sum / std::max(n, 1);
+    spread = std::sqrt(std::max(0.0, sum2 / std::max(n, 1) - mean * mean));
+}
+
+TEST_F(GuiCli, ScreenshotShowsTheRenderedViewsWhereTheSidecarSays) {
+    const fs::path shot = path("window.png");
+    const RunResult r = run("gui --scene grate --technique raymarch --size 80x60 --set samples=32 --screenshot " +
+                            shot.string() + " --frames 2");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const Image image = readImage(shot.string());
+    const nlohmann::json j = nlohmann::json::parse(readFile(path("window.json")));
+    EXPECT_EQ(j.at("window")[0].get<int>(), image.width);
+    EXPECT_EQ(j.at("window")[1].get<int>(), image.height);
+    EXPECT_EQ(j.at("technique"), "raymarch");
+    EXPECT_GE(j.at("frames").get<int>(), 2);
+    ASSERT_EQ(j.at("views").size(), 2u);
+    EXPECT_EQ(j.at("views")[0].at("name"), "final");
+    EXPECT_EQ(j.at("views")[1].at("name"), "airlight");
+    // Each view holds a picture (light and shadow), not a flat fill; the gap between them is flat.
+    for (const auto& view : j.at("views")) {
+        double mean = 0.0, spread = 0.0;
+        regionStats(image, view.at("rect"), mean, spread);
+        EXPECT_GT(spread, 0.05) << view.at("name");
+        EXPECT_GT(mean, 0.01) << view.at("name");
+    }
+    const auto& a = j.at("views")[0].at("rect");
+    const auto& b = j.at("views")[1].at("rect");
+    double mean = 0.0, spread = 0.0;
+    regionStats(image, nlohmann::json::array({a[2].get<double>() + 1.0, a[1], b[0].get<double>() - 1.0, a[3]}), mean,
+                spread);
+    EXPECT_LT(spread, 1e-3);
+}
+
+TEST_F(GuiCli, ScreenshotOptionsAreChecked) {
+    expectUserError(run("gui --screenshot " + path("x.jpg").string()), ".png");
+    expectUserError(run("gui --screenshot " + path("x.png").string() + " --frames 0"), "--frames");
+    EXPECT_FALSE(fs::exists(path("x.png")));
+}
+
+}  // namespace
+}  // namespace viz::testing
