@@ -65,6 +65,14 @@ void CameraController::reset() {
     mTarget = mHomeTarget;
 }
 
+void CameraController::place(const viz::scene::Camera& camera, glm::dvec3 target) {
+    mCamera = camera;
+    mCamera.forward = glm::normalize(mCamera.forward);
+    mCamera.up = glm::normalize(mCamera.up);
+    // An orbit target on the eye would make orbiting undefined: keep it in front at the usual distance.
+    mTarget = glm::length(target - camera.position) > 1e-9 ? target : camera.position + mCamera.forward * mSpeed;
+}
+
 void CameraController::setOrientation(glm::dvec3 forward, glm::dvec3 rightHint) {
     mCamera.forward = glm::normalize(forward);
     const glm::dvec3 right = horizontalRight(mCamera.forward, rightHint);

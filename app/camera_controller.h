@@ -27,6 +27,8 @@ public:
 
     // Back to the scene camera and its target; keeps the mode.
     void reset();
+    // Places the camera (a restored session); the target keeps its distance rule only through `target`.
+    void place(const viz::scene::Camera& camera, glm::dvec3 target);
 
     // ---- orbit ----
     // Turns the eye about the target: yaw about world up, pitch about the camera's right axis

@@ -16,6 +16,7 @@
 #include "scene/builtin_scenes.h"
 #include "scene/gltf_writer.h"
 #include "scene/scene_source.h"
+#include "session_state.h"
 #include "techniques/registry.h"
 
 namespace airlight {
@@ -59,11 +60,14 @@ lights as KHR_lights_punctual, area lights as emissive meshes, the medium in sce
 )";
 
 constexpr const char* kGuiHelp = R"(usage: airlight gui [--scene S] [--technique T] [--size WxH] [--set name=value]...
-                    [--screenshot OUT.png [--frames N]]
+                    [--state FILE] [--screenshot OUT.png [--frames N]]
 
 Opens the window: the final frame beside one intermediate. Keys: Tab / Shift+Tab technique,
 [ and ] intermediate, C orbit/fly camera, R reset camera, + and - exposure, Esc quit.
 
+--state FILE          load the session (scene, camera, medium, technique, parameters, view) from FILE
+                      at start; F5 saves it there, F9 loads it again, and it is saved on exit.
+                      Without --state the file is ~/.local/state/airlight/session.json.
 --screenshot OUT.png  after N frames (default 1; and once a CPU technique's result has arrived) write
                       the window to OUT.png and its views' rectangles (window pixels, origin top-left)
                       to OUT.json, then exit. Runs under xvfb-run without a monitor.
@@ -78,6 +82,8 @@ struct CommonOptions {
     bool quiet = false;
     std::string screenshot;  // gui only
     int frames = 1;
+    std::string state;  // gui only
+    bool sceneGiven = false, techniqueGiven = false, sizeGiven = false;
 };
 
 // Parses the options shared by render, plan and gui; `allowed` lists the flags this command takes.
@@ -92,11 +98,13 @@ CommonOptions parseOptions(Args& args, const std::string& command, const std::st
         if (allowed.find(" " + flag + " ") == std::string::npos)
             throw InputError("unknown option '" + flag + "' for '" + command + "' (run 'airlight " + command +
                              " --help')");
-        if (flag == "--scene") o.request.scene = args.next(flag);
-        else if (flag == "--technique") o.request.technique = args.next(flag);
+        if (flag == "--scene") o.request.scene = args.next(flag), o.sceneGiven = true;
+        else if (flag == "--technique") o.request.technique = args.next(flag), o.techniqueGiven = true;
+        else if (flag == "--state") o.state = args.next(flag);
         else if (flag == "--size") {
             const glm::ivec2 size = parseSize(args.next(flag));
             o.request.width = size.x, o.request.height = size.y;
+            o.sizeGiven = true;
         } else if (flag == "--out") o.out = args.next(flag);
         else if (flag == "--layer") o.layer = args.next(flag);
         else if (flag == "--layer-index") o.layerIndex = int(parseNumber(args.next(flag), flag));
@@ -276,7 +284,7 @@ int runGuiCommand(Args& args) {
         std::fputs(kGuiHelp, stdout);
         return 0;
     }
-    CommonOptions o = parseOptions(args, "gui", " --scene --technique --size --set --screenshot --frames ");
+    CommonOptions o = parseOptions(args, "gui", " --scene --technique --size --set --screenshot --frames --state ");
     if (!o.screenshot.empty() && viz::extensionOf(o.screenshot) != ".png")
         throw InputError("--screenshot '" + o.screenshot + "' must end in .png");
     if (o.frames < 1) throw InputError("--frames must be at least 1");
@@ -290,6 +298,11 @@ int runGuiCommand(Args& args) {
     g.settings = o.request.settings;
     g.screenshot = o.screenshot;
     g.frames = o.frames;
+    g.statePath = o.state.empty() ? defaultSessionPath() : o.state;
+    g.loadStateAtStart = !o.state.empty();
+    g.sceneGiven = o.sceneGiven;
+    g.techniqueGiven = o.techniqueGiven;
+    g.sizeGiven = o.sizeGiven;
     return runGui(g);
 }
 

@@ -41,6 +41,7 @@
 #include "platform/window_glfw.h"
 #include "render_job.h"
 #include "scene/scene_source.h"
+#include "session_state.h"
 #include "techniques/registry.h"
 #include "ui/font.h"
 #include "ui/text_renderer.h"
@@ -168,8 +169,11 @@ double orbitDistance(const viz::scene::Scene& scene) {
 
 class GuiApp {
 public:
-    GuiApp(const GuiOptions& options, viz::scene::Scene scene, viz::Window& window)
+    GuiApp(const GuiOptions& options, viz::scene::Scene scene, viz::Window& window, SessionState session,
+           std::string notice)
         : mOptions(options)
+        , mSession(std::move(session))
+        , mNotice(std::move(notice))
         , mScene(std::move(scene))
         , mWindow(window)
         , mController(mScene.camera, orbitDistance(mScene))
@@ -184,7 +188,10 @@ public:
         mBackground = std::make_unique<DrawList>(*mFont);
         mImageDisplay = std::make_unique<ImageDisplay>();
         mWorker = std::make_unique<CpuWorker>(mScene);
-        const std::string wanted = options.technique.empty() ? mIds.front() : options.technique;
+        std::string wanted = options.technique.empty() ? mIds.front() : options.technique;
+        if (!options.techniqueGiven && !mSession.technique.empty() &&
+            std::find(mIds.begin(), mIds.end(), mSession.technique) != mIds.end())
+            wanted = mSession.technique;
         const auto it = std::find(mIds.begin(), mIds.end(), wanted);
         mCurrent = it == mIds.end() ? 0 : int(it - mIds.begin());
         mClockName = viz::gl::StageClock::method();
@@ -206,6 +213,7 @@ public:
             static_cast<GuiApp*>(glfwGetWindowUserPointer(w))->onScroll(dy);
         });
         selectTechnique(mCurrent);
+        applySessionView();
     }
 
     ~GuiApp() {
@@ -258,6 +266,7 @@ public:
             }
             mWindow.swapBuffers();
         }
+        if (mOptions.screenshot.empty()) saveSessionNow();
         return 0;
     }
 
@@ -294,6 +303,70 @@ public:
     }
 
 private:
+    // ---- the session file ----
+
+    SessionState currentSession() const {
+        SessionState s = mSession;
+        s.scene = mOptions.scene;
+        s.technique = mIds[std::size_t(mCurrent)];
+        s.width = mOptions.width;
+        s.height = mOptions.height;
+        s.camera = mController.camera();
+        s.orbitTarget = mController.target();
+        s.medium = mScene.medium;
+        // Only what differs from the technique's defaults is kept, per technique.
+        const auto defaults = viz::completeSettings(*mTechniques.at(s.technique), {});
+        viz::Settings changed;
+        for (const auto& [name, value] : mSettings)
+            if (!defaults.count(name) || defaults.at(name) != value) changed[name] = value;
+        s.settings[s.technique] = changed;
+        s.view = mViewId;
+        s.exposure = mExposure;
+        s.exposureSet = mExposureSet;
+        return s;
+    }
+
+    void saveSessionNow() {
+        try {
+            saveSession(mOptions.statePath, currentSession());
+            mNotice = "session saved to " + mOptions.statePath;
+        } catch (const viz::InputError& e) {
+            mNotice = e.what();
+            std::fprintf(stderr, "airlight: %s\n", e.what());
+        }
+    }
+
+    void loadSessionNow() {
+        std::string problem;
+        SessionState loaded = loadSession(mOptions.statePath, problem);
+        if (!problem.empty()) {
+            mNotice = problem;  // the current session stays as it is
+            return;
+        }
+        if (!loaded.scene.empty() && loaded.scene != mOptions.scene) {
+            mNotice = "the saved session is for scene '" + loaded.scene + "': restart with --state to switch scenes";
+            return;
+        }
+        mSession = std::move(loaded);
+        if (mSession.medium) {
+            mScene.medium = *mSession.medium;
+            mWorker = std::make_unique<CpuWorker>(mScene);  // the CPU worker keeps its own copy of the scene
+        }
+        const auto it = std::find(mIds.begin(), mIds.end(), mSession.technique);
+        selectTechnique(it == mIds.end() ? mCurrent : int(it - mIds.begin()));
+        applySessionView();
+        mNotice = "session loaded from " + mOptions.statePath;
+    }
+
+    // Camera, view and exposure of the session (the scene, medium and technique are applied before).
+    void applySessionView() {
+        if (mSession.camera) mController.place(*mSession.camera, mSession.orbitTarget);
+        mViewId = mSession.view;
+        mExposure = mSession.exposure;
+        mExposureSet = mSession.exposureSet;
+        mDirty = true;
+    }
+
     // ---- techniques and rendering ----
 
     viz::Technique& technique() { return *mTechniques.at(mIds[std::size_t(mCurrent)]); }
@@ -311,7 +384,10 @@ private:
         mCurrent = index;
         mError.clear();
         mSettingsError.clear();
-        mSettings = settingsFor(technique(), mOptions.settings, mSettingsError);
+        // The session's values for this technique, then the command line's on top.
+        viz::Settings given = mSession.settings.count(id) ? mSession.settings.at(id) : viz::Settings{};
+        for (const auto& [name, value] : mOptions.settings) given[name] = value;
+        mSettings = settingsFor(technique(), given, mSettingsError);
         try {
             mPlan = technique().plan(mScene, mSettings);
         } catch (const std::exception& e) {
@@ -462,6 +538,8 @@ private:
         else if (key == GLFW_KEY_LEFT_BRACKET || (key == GLFW_KEY_V && shift)) stepView(-1);
         else if (key == GLFW_KEY_PERIOD || key == GLFW_KEY_COMMA) stepLayer(key == GLFW_KEY_PERIOD ? 1 : -1);
         else if (key == GLFW_KEY_C && action == GLFW_PRESS) mController.toggleMode();
+        else if (key == GLFW_KEY_F5 && action == GLFW_PRESS) saveSessionNow();
+        else if (key == GLFW_KEY_F9 && action == GLFW_PRESS) loadSessionNow();
         else if (key == GLFW_KEY_R && action == GLFW_PRESS) {
             mController.reset();
             mDirty = true;
@@ -683,6 +761,8 @@ private:
         if (!mError.empty() || !mSettingsError.empty()) {
             third = "error: " + firstLine(mError.empty() ? mSettingsError + " (using defaults)" : mError);
             thirdColor = kError;
+        } else if (!mNotice.empty()) {
+            third = mNotice + "   |   " + third;
         }
         dl.textClipped({pad, pad + 2.0f * line}, third, thirdColor, float(fb.x) - pad);
         const float top = 3.0f * line + 3.0f * pad;
@@ -757,6 +837,8 @@ private:
     }
 
     GuiOptions mOptions;
+    SessionState mSession;  // as loaded (or defaults); settings of techniques not yet visited come from it
+    std::string mNotice;    // last session message, shown in the status line
     viz::scene::Scene mScene;  // the camera follows the controller
     viz::Window& mWindow;
     CameraController mController;
@@ -808,8 +890,33 @@ private:
 
 int runGui(const GuiOptions& options) {
     if (options.width < 1 || options.height < 1) throw viz::InputError("render size must be at least 1x1");
+    // The session: a broken file is reported and the defaults are used, never an error.
+    SessionState session;
+    std::string notice;
+    GuiOptions effective = options;
+    if (options.loadStateAtStart) {
+        session = loadSession(options.statePath, notice);
+        if (!notice.empty()) std::fprintf(stderr, "airlight: note: %s\n", notice.c_str());
+        if (!options.sceneGiven && !session.scene.empty()) effective.scene = session.scene;
+        if (notice.empty()) {
+            if (!options.sizeGiven) effective.width = session.width, effective.height = session.height;
+            notice = "session loaded from " + options.statePath;
+        }
+        // A session whose scene cannot be loaded any more falls back to the default scene.
+        if (effective.scene != options.scene) {
+            try {
+                (void)viz::scene::loadScene(effective.scene);
+            } catch (const viz::InputError& e) {
+                notice = "session scene: " + std::string(e.what()) + "; using '" + options.scene + "'";
+                std::fprintf(stderr, "airlight: note: %s\n", notice.c_str());
+                effective.scene = options.scene;
+                session = SessionState{};
+            }
+        }
+    }
     // Everything that can fail on user input fails before the window opens.
-    viz::scene::Scene scene = viz::scene::loadScene(options.scene);
+    viz::scene::Scene scene = viz::scene::loadScene(effective.scene);
+    if (session.medium && effective.scene == session.scene) scene.medium = *session.medium;
     // Each --set must name a parameter of some technique (the window switches between them), and the
     // values must suit the technique the window opens with.
     std::vector<std::unique_ptr<viz::Technique>> all;
@@ -837,7 +944,7 @@ int runGui(const GuiOptions& options) {
     if (kDebugContext) viz::gl::installDebugOutput();
     int code = 0;
     {
-        GuiApp app(options, std::move(scene), *window);
+        GuiApp app(effective, std::move(scene), *window, std::move(session), std::move(notice));
         code = app.run();
     }
     return code;

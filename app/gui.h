@@ -19,6 +19,11 @@ struct GuiOptions {
     // exit. Empty: run until closed.
     std::string screenshot;
     int frames = 1;
+    // The session file (F5 saves, F9 loads, saved on exit except in screenshot runs); loaded at start
+    // when given with --state. Command-line --scene, --technique and --set override what it holds.
+    std::string statePath;
+    bool loadStateAtStart = false;
+    bool sceneGiven = false, techniqueGiven = false, sizeGiven = false;
 };
 
 // Opens the window and runs until it is closed. Throws InputError for a bad scene or technique (before

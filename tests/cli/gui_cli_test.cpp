@@ -79,6 +79,35 @@ TEST_F(GuiCli, ScreenshotShowsTheRenderedViewsWhereTheSidecarSays) {
     EXPECT_LT(spread, 1e-3);
 }
 
+TEST_F(GuiCli, ASavedSessionIsRestoredAndABrokenOneFallsBackToTheDefaults) {
+    const fs::path state = writeText("session.json", R"({
+  "version": 1, "scene": "grate", "technique": "slices", "size": [64, 48],
+  "camera": {"position": [0.0, 1.0, 6.0], "forward": [0.0, 0.1, -1.0], "up": [0.0, 1.0, 0.0],
+             "yfov": 0.9, "znear": 0.05, "zfar": 40.0, "target": [0.0, 1.5, 0.0]},
+  "medium": {"sigma_s": 0.2, "sigma_a": 0.01, "g": 0.3},
+  "settings": {"slices": {"planes": 48}},
+  "view": "slices.shadow_map", "exposure": -1.0, "exposure_set": true
+})");
+    const RunResult r = run("gui --state " + state.string() + " --screenshot " + path("a.png").string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const nlohmann::json a = nlohmann::json::parse(readFile(path("a.json")));
+    EXPECT_EQ(a.at("scene"), "grate");
+    EXPECT_EQ(a.at("technique"), "slices");
+    EXPECT_EQ(a.at("views")[1].at("name"), "slices.shadow_map");
+    const std::string before = readFile(state);
+
+    // Truncated: a one-line note naming the file, the defaults, and the file left as it was.
+    const fs::path broken = writeText("broken.json", before.substr(0, before.size() / 3));
+    const RunResult b = run("gui --state " + broken.string() + " --screenshot " + path("b.png").string());
+    ASSERT_EQ(b.exitCode, 0) << b.err;
+    EXPECT_NE(b.err.find("broken.json"), std::string::npos) << b.err;
+    EXPECT_NE(b.err.find("using defaults"), std::string::npos) << b.err;
+    const nlohmann::json bj = nlohmann::json::parse(readFile(path("b.json")));
+    EXPECT_EQ(bj.at("scene"), "colonnade");  // the built-in default scene
+    EXPECT_EQ(bj.at("technique"), "raymarch");  // the window's default
+    EXPECT_EQ(readFile(state), before);
+}
+
 TEST_F(GuiCli, ScreenshotOptionsAreChecked) {
     expectUserError(run("gui --screenshot " + path("x.jpg").string()), ".png");
     expectUserError(run("gui --screenshot " + path("x.png").string() + " --frames 0"), "--frames");

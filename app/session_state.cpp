@@ -1,0 +1,152 @@
+#include "session_state.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "core/atomic_file.h"
+#include "core/error.h"
+
+namespace airlight {
+
+namespace {
+
+using nlohmann::json;
+
+json vec3(glm::dvec3 v) { return json::array({v.x, v.y, v.z}); }
+
+// Reads a finite 3-vector or throws with the key's name.
+glm::dvec3 readVec3(const json& j, const char* key) {
+    const json& a = j.at(key);
+    if (!a.is_array() || a.size() != 3) throw std::runtime_error(std::string(key) + " is not a 3-vector");
+    glm::dvec3 v;
+    for (int i = 0; i < 3; ++i) {
+        v[i] = a[std::size_t(i)].get<double>();
+        if (!std::isfinite(v[i])) throw std::runtime_error(std::string(key) + " is not finite");
+    }
+    return v;
+}
+
+double readNumber(const json& j, const char* key, double lo, double hi) {
+    const double v = j.at(key).get<double>();
+    if (!std::isfinite(v) || v < lo || v > hi)
+        throw std::runtime_error(std::string(key) + " is out of range");
+    return v;
+}
+
+}  // namespace
+
+std::string sessionToJson(const SessionState& s) {
+    json j;
+    j["version"] = SessionState::kVersion;
+    j["scene"] = s.scene;
+    j["technique"] = s.technique;
+    j["size"] = {s.width, s.height};
+    if (s.camera) {
+        const auto& c = *s.camera;
+        j["camera"] = {{"position", vec3(c.position)}, {"forward", vec3(c.forward)}, {"up", vec3(c.up)},
+                       {"yfov", c.yfov},           {"znear", c.znear},           {"zfar", c.zfar},
+                       {"target", vec3(s.orbitTarget)}};
+    }
+    if (s.medium) j["medium"] = {{"sigma_s", s.medium->sigma_s}, {"sigma_a", s.medium->sigma_a}, {"g", s.medium->g}};
+    json settings = json::object();
+    for (const auto& [technique, values] : s.settings) settings[technique] = values;
+    j["settings"] = settings;
+    j["view"] = s.view;
+    j["exposure"] = s.exposure;
+    j["exposure_set"] = s.exposureSet;
+    return j.dump(2) + "\n";
+}
+
+SessionState sessionFromJson(const std::string& text, std::string& problem) {
+    problem.clear();
+    SessionState s;
+    try {
+        const json j = json::parse(text);
+        if (!j.is_object()) throw std::runtime_error("not a JSON object");
+        if (j.at("version").get<int>() != SessionState::kVersion)
+            throw std::runtime_error("version " + j.at("version").dump() + " is not " +
+                                     std::to_string(SessionState::kVersion));
+        s.scene = j.at("scene").get<std::string>();
+        s.technique = j.at("technique").get<std::string>();
+        const json& size = j.at("size");
+        if (!size.is_array() || size.size() != 2) throw std::runtime_error("size is not [width, height]");
+        s.width = size[0].get<int>();
+        s.height = size[1].get<int>();
+        if (s.width < 1 || s.height < 1 || s.width > 16384 || s.height > 16384)
+            throw std::runtime_error("size is out of range");
+        if (j.contains("camera")) {
+            const json& c = j.at("camera");
+            viz::scene::Camera cam;
+            cam.position = readVec3(c, "position");
+            cam.forward = readVec3(c, "forward");
+            cam.up = readVec3(c, "up");
+            if (glm::length(cam.forward) < 1e-9 || glm::length(cam.up) < 1e-9)
+                throw std::runtime_error("camera direction is zero");
+            cam.forward = glm::normalize(cam.forward);
+            cam.up = glm::normalize(cam.up - glm::dot(cam.up, cam.forward) * cam.forward);
+            cam.yfov = readNumber(c, "yfov", 1e-3, 3.1);
+            cam.znear = readNumber(c, "znear", 1e-9, 1e12);
+            cam.zfar = readNumber(c, "zfar", cam.znear, 1e15);
+            s.camera = cam;
+            s.orbitTarget = readVec3(c, "target");
+        }
+        if (j.contains("medium")) {
+            const json& m = j.at("medium");
+            s.medium = viz::scene::Medium{readNumber(m, "sigma_s", 0, 1e6), readNumber(m, "sigma_a", 0, 1e6),
+                                          readNumber(m, "g", -0.999, 0.999)};
+        }
+        for (const auto& [technique, values] : j.at("settings").items())
+            for (const auto& [name, value] : values.items()) {
+                const double v = value.get<double>();
+                if (!std::isfinite(v)) throw std::runtime_error("setting " + technique + "." + name + " is not finite");
+                s.settings[technique][name] = v;
+            }
+        s.view = j.at("view").get<std::string>();
+        s.exposure = float(readNumber(j, "exposure", -40, 40));
+        s.exposureSet = j.at("exposure_set").get<bool>();
+    } catch (const std::exception& e) {
+        // nlohmann's messages start with "[json.exception.type_error.302] ...": keep the readable part.
+        std::string what = e.what();
+        if (what.rfind("[json.exception.", 0) == 0 && what.find("] ") != std::string::npos)
+            what = what.substr(what.find("] ") + 2);
+        problem = what;
+        return SessionState{};
+    }
+    return s;
+}
+
+std::string defaultSessionPath() {
+    namespace fs = std::filesystem;
+    if (const char* state = std::getenv("XDG_STATE_HOME"); state && *state)
+        return (fs::path(state) / "airlight" / "session.json").string();
+    const char* home = std::getenv("HOME");
+    return (fs::path(home && *home ? home : ".") / ".local" / "state" / "airlight" / "session.json").string();
+}
+
+SessionState loadSession(const std::string& path, std::string& problem) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+        problem = "state file '" + path + "' cannot be read; using defaults";
+        return SessionState{};
+    }
+    std::stringstream text;
+    text << in.rdbuf();
+    SessionState s = sessionFromJson(text.str(), problem);
+    if (!problem.empty()) problem = "state file '" + path + "': " + problem + "; using defaults";
+    return s;
+}
+
+void saveSession(const std::string& path, const SessionState& state) {
+    const std::filesystem::path target(path);
+    std::error_code ec;
+    if (target.has_parent_path()) std::filesystem::create_directories(target.parent_path(), ec);
+    const std::string error = viz::writeFileAtomically(target, sessionToJson(state));
+    if (!error.empty()) throw viz::InputError("cannot save the session to '" + path + "': " + error);
+}
+
+}  // namespace airlight

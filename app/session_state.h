@@ -1,0 +1,44 @@
+// The window's session: what the user set up, saved to a small JSON file (F5, and on exit) and loaded
+// back (F9, --state FILE, and at start). Loading never fails hard: a missing, truncated or corrupted
+// file gives the defaults and a one-line reason naming the file.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <string>
+
+#include <glm/glm.hpp>
+
+#include "debug/technique.h"
+#include "scene/scene.h"
+
+namespace airlight {
+
+struct SessionState {
+    static constexpr int kVersion = 1;
+    std::string scene;                       // built-in name, stiff/ID or glTF path; empty = default
+    std::string technique;                   // empty = default
+    int width = 320, height = 240;           // render size
+    std::optional<viz::scene::Camera> camera;  // empty = the scene's own
+    glm::dvec3 orbitTarget{0.0};
+    std::optional<viz::scene::Medium> medium;  // empty = the scene's own
+    std::map<std::string, viz::Settings> settings;  // per technique id, only values the user set
+    std::string view = "airlight";          // the intermediate shown beside the final frame
+    float exposure = 0.0f;                   // EV
+    bool exposureSet = false;
+};
+
+std::string sessionToJson(const SessionState& state);
+// Parses `text`; on any problem returns the defaults and sets `problem` to a one-line reason.
+SessionState sessionFromJson(const std::string& text, std::string& problem);
+
+// The default location: $XDG_STATE_HOME/airlight/session.json, else ~/.local/state/airlight/session.json.
+std::string defaultSessionPath();
+
+// Reads `path`; a missing or unreadable file, or bad contents, give the defaults and a reason
+// ("state file 'P': ...; using defaults"). An empty reason means the state was loaded.
+SessionState loadSession(const std::string& path, std::string& problem);
+// Writes atomically (creating the folder); throws InputError naming the path on failure.
+void saveSession(const std::string& path, const SessionState& state);
+
+}  // namespace airlight

@@ -1,0 +1,101 @@
+// The window's session file: a round trip keeps everything, and any broken file gives the defaults with
+// a one-line reason naming the file, never a crash.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "core/error.h"
+#include "session_state.h"
+
+namespace airlight {
+namespace {
+
+namespace fs = std::filesystem;
+
+SessionState sample() {
+    SessionState s;
+    s.scene = "stiff/grazing-sun";
+    s.technique = "slices";
+    s.width = 200, s.height = 150;
+    viz::scene::Camera c;
+    c.position = {1.5, 2.0, -3.25};
+    c.forward = glm::normalize(glm::dvec3(0.2, -0.1, -1.0));
+    c.up = glm::normalize(glm::dvec3(0.0, 1.0, -0.1) - glm::dot(glm::dvec3(0.0, 1.0, -0.1), c.forward) * c.forward);
+    c.yfov = 0.7, c.znear = 0.02, c.zfar = 75.0;
+    s.camera = c;
+    s.orbitTarget = {0.0, 1.0, -8.0};
+    s.medium = viz::scene::Medium{0.2, 0.03, -0.4};
+    s.settings["slices"] = {{"planes", 256}, {"accum", 1}};
+    s.settings["raymarch"] = {{"samples", 1024}};
+    s.view = "slices.accumulation";
+    s.exposure = -1.5f;
+    s.exposureSet = true;
+    return s;
+}
+
+TEST(SessionState, RoundTripKeepsEverything) {
+    const SessionState a = sample();
+    std::string problem;
+    const SessionState b = sessionFromJson(sessionToJson(a), problem);
+    EXPECT_EQ(problem, "");
+    EXPECT_EQ(b.scene, a.scene);
+    EXPECT_EQ(b.technique, a.technique);
+    EXPECT_EQ(b.width, a.width);
+    EXPECT_EQ(b.height, a.height);
+    ASSERT_TRUE(b.camera.has_value());
+    EXPECT_EQ(b.camera->position, a.camera->position);
+    EXPECT_NEAR(glm::length(b.camera->forward - a.camera->forward), 0.0, 1e-12);
+    EXPECT_NEAR(glm::length(b.camera->up - a.camera->up), 0.0, 1e-12);
+    EXPECT_EQ(b.camera->yfov, a.camera->yfov);
+    EXPECT_EQ(b.camera->zfar, a.camera->zfar);
+    EXPECT_EQ(b.orbitTarget, a.orbitTarget);
+    ASSERT_TRUE(b.medium.has_value());
+    EXPECT_EQ(b.medium->g, a.medium->g);
+    EXPECT_EQ(b.settings, a.settings);
+    EXPECT_EQ(b.view, a.view);
+    EXPECT_EQ(b.exposure, a.exposure);
+    EXPECT_TRUE(b.exposureSet);
+}
+
+TEST(SessionState, BrokenFilesGiveTheDefaultsAndAReasonNamingTheFile) {
+    const fs::path dir = fs::temp_directory_path() / ("airlight_state_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    const std::string good = sessionToJson(sample());
+    const std::vector<std::pair<std::string, std::string>> broken = {
+        {"truncated", good.substr(0, good.size() / 2)},
+        {"empty", ""},
+        {"not an object", "[1, 2, 3]"},
+        {"wrong version", std::string(good).replace(good.find("\"version\": 1"), 12, "\"version\": 9")},
+        {"wrong type", std::string(good).replace(good.find("\"yfov\": 0.7"), 11, "\"yfov\": \"x\"")},
+        {"binary", std::string("\x00\xff\xfe garbage", 11)},
+    };
+    for (const auto& [what, text] : broken) {
+        const fs::path file = dir / "session.json";
+        std::ofstream(file, std::ios::binary) << text;
+        std::string problem;
+        const SessionState s = loadSession(file.string(), problem);
+        EXPECT_NE(problem.find(file.string()), std::string::npos) << what << ": " << problem;
+        EXPECT_NE(problem.find("using defaults"), std::string::npos) << what;
+        EXPECT_EQ(problem.find('\n'), std::string::npos) << what;
+        EXPECT_EQ(s.scene, SessionState{}.scene) << what;
+        EXPECT_FALSE(s.camera.has_value()) << what;
+    }
+    std::string problem;
+    loadSession((dir / "missing.json").string(), problem);
+    EXPECT_NE(problem.find("missing.json"), std::string::npos);
+    // Saving creates the folder and replaces the file whole.
+    saveSession((dir / "deeper" / "s.json").string(), sample());
+    const SessionState back = loadSession((dir / "deeper" / "s.json").string(), problem);
+    EXPECT_EQ(problem, "");
+    EXPECT_EQ(back.technique, "slices");
+    fs::remove_all(dir);
+}
+
+TEST(SessionState, SavingWhereNothingCanBeWrittenIsAnInputError) {
+    EXPECT_THROW(saveSession("/proc/airlight/session.json", sample()), viz::InputError);
+}
+
+}  // namespace
+}  // namespace airlight
