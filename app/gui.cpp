@@ -43,6 +43,7 @@
 #include "scene/scene_source.h"
 #include "session_state.h"
 #include "techniques/registry.h"
+#include "plot/plot.h"
 #include "ui/font.h"
 #include "ui/text_renderer.h"
 
@@ -812,6 +813,16 @@ private:
         const Rect finalRect = drawPane(left, mFinal, "Final image", "surface radiance * exp(-sigma_t d) + L_air   (exposure " + format("%+.1f EV)", mExposure));
         mImageHeight = finalRect.size().y;
         mViewRects.push_back({"final", "Final image", finalRect});
+        // Per-stage timings of the last run as bars, with the clock that measured them.
+        if (mHaveOutput && !mOutput.timing.stages.empty()) {
+            viz::plot::BarChart chart;
+            chart.title = "stage times (" + timing.clock + "), total " + format("%.1f ms", timing.totalMilliseconds());
+            for (const viz::StageTiming& st : mOutput.timing.stages)
+                chart.bars.push_back({st.stage, st.milliseconds, format("%.1f ms", st.milliseconds), kAccent});
+            const float chartTop = finalRect.max.y + 2.0f * line;
+            if (chartTop + 2.0f * line < left.max.y)
+                viz::plot::drawBarChart(dl, {{left.min.x, chartTop}, {left.max.x, left.max.y}}, chart, kDim);
+        }
         std::string rightTitle = "(no view)";
         std::string rightNote;
         if (mHaveOutput) {

@@ -215,4 +215,34 @@ void drawPlot(ui::DrawList& list, const ui::Rect& area, const PlotSpec& spec) {
     }
 }
 
+float drawBarChart(ui::DrawList& list, const ui::Rect& area, const BarChart& chart, glm::vec4 textColor) {
+    const ui::FontAtlas& font = list.font();
+    const float line = font.lineHeight();
+    float y = area.min.y;
+    if (!chart.title.empty()) {
+        list.textClipped({area.min.x, y}, chart.title, textColor, area.max.x);
+        y += line;
+    }
+    double largest = chart.scaleMax;
+    float labelWidth = 0.0f, valueWidth = 0.0f;
+    for (const Bar& b : chart.bars) {
+        if (chart.scaleMax <= 0.0 && std::isfinite(b.value)) largest = std::max(largest, b.value);
+        labelWidth = std::max(labelWidth, font.measure(b.label));
+        valueWidth = std::max(valueWidth, font.measure(b.valueText));
+    }
+    const float gap = line * 0.5f;
+    labelWidth = std::min(labelWidth, (area.max.x - area.min.x) * 0.45f);
+    const float barStart = area.min.x + labelWidth + gap;
+    const float barEnd = std::max(barStart, area.max.x - valueWidth - gap);
+    for (const Bar& b : chart.bars) {
+        if (y + line > area.max.y) break;
+        list.textClipped({area.min.x, y}, b.label, textColor, area.min.x + labelWidth);
+        const double f = largest > 0.0 && std::isfinite(b.value) ? std::clamp(b.value / largest, 0.0, 1.0) : 0.0;
+        list.rect({{barStart, y + line * 0.2f}, {barStart + float(f) * (barEnd - barStart), y + line * 0.8f}}, b.color);
+        list.text({barEnd + gap, y}, b.valueText, textColor);
+        y += line;
+    }
+    return y - area.min.y;
+}
+
 }  // namespace viz::plot

@@ -46,4 +46,20 @@ glm::vec4 categoricalColor(int i);
 // Draws the plot (background, frame, grid, ticks, labels, series, legend) inside `area`.
 void drawPlot(ui::DrawList& list, const ui::Rect& area, const PlotSpec& spec);
 
+// Horizontal bars, one row each: label, bar scaled to the largest value (or `scaleMax` when > 0), value
+// text. Used for per-stage timings.
+struct Bar {
+    std::string label;
+    double value = 0.0;
+    std::string valueText;  // e.g. "12.3 ms"
+    glm::vec4 color{0.33f, 0.62f, 0.95f, 1.0f};
+};
+struct BarChart {
+    std::string title;  // e.g. "stage times (glFinish+steady_clock)"
+    std::vector<Bar> bars;
+    double scaleMax = 0.0;
+};
+// Returns the height used (title + one row per bar), so callers can stack things below.
+float drawBarChart(ui::DrawList& list, const ui::Rect& area, const BarChart& chart, glm::vec4 textColor);
+
 }  // namespace viz::plot

@@ -63,5 +63,26 @@ TEST(DrawPlot, EverythingLandsInsideTheArea) {
     }
 }
 
+TEST(DrawBarChart, BarsAreScaledToTheLargestValueAndStayInside) {
+    const ui::FontAtlas font = ui::FontAtlas::bake(ui::FontAtlas::kDefaultFontPath, 14.0f);
+    ui::DrawList list(font);
+    BarChart chart{"stage times", {{"shadow_maps", 10.0, "10 ms"}, {"march", 40.0, "40 ms"}, {"compose", 0.0, "0 ms"}}};
+    const ui::Rect area{{10, 10}, {310, 200}};
+    const float used = drawBarChart(list, area, chart, {1, 1, 1, 1});
+    EXPECT_NEAR(used, 4.0f * font.lineHeight(), 1e-3f);  // title + three rows
+    // The bar quads are the solid ones (white uv); the longest is four times the first.
+    std::vector<float> widths;
+    const auto& v = list.vertices();
+    for (std::size_t i = 0; i + 5 < v.size(); i += 6)
+        if (v[i].uv == font.whiteUv() && v[i + 2].position.x > v[i].position.x)
+            widths.push_back(v[i + 2].position.x - v[i].position.x);
+    ASSERT_EQ(widths.size(), 2u);  // the zero bar has no width
+    EXPECT_NEAR(widths[1] / widths[0], 4.0f, 1e-3f);
+    for (const ui::UiVertex& q : v) {
+        EXPECT_GE(q.position.x, area.min.x - 1e-3f);
+        EXPECT_LE(q.position.x, area.max.x + 1e-3f);
+    }
+}
+
 }  // namespace
 }  // namespace viz::plot
