@@ -288,6 +288,13 @@ int runGuiCommand(Args& args) {
     if (!o.screenshot.empty() && viz::extensionOf(o.screenshot) != ".png")
         throw InputError("--screenshot '" + o.screenshot + "' must end in .png");
     if (o.frames < 1) throw InputError("--frames must be at least 1");
+    if (!o.screenshot.empty() && !o.state.empty()) {
+        std::filesystem::path sidecar(o.screenshot);
+        sidecar.replace_extension(".json");
+        if (std::filesystem::weakly_canonical(sidecar) == std::filesystem::weakly_canonical(o.state))
+            throw InputError("--screenshot '" + o.screenshot + "' would write its view rectangles over the state file '" +
+                             o.state + "'");
+    }
     if (!viz::displayAvailable())
         throw InputError("no display: set DISPLAY (or run under xvfb-run), or use 'airlight render'");
     GuiOptions g;

@@ -322,6 +322,8 @@ private:
             if (!defaults.count(name) || defaults.at(name) != value) changed[name] = value;
         s.settings[s.technique] = changed;
         s.view = mViewId;
+        s.viewZoom = mRightView.zoom;
+        s.viewCenter = mRightView.center;
         s.exposure = mExposure;
         s.exposureSet = mExposureSet;
         return s;
@@ -363,6 +365,9 @@ private:
     void applySessionView() {
         if (mSession.camera) mController.place(*mSession.camera, mSession.orbitTarget);
         mViewId = mSession.view;
+        mRightView.zoom = mSession.viewZoom;
+        mRightView.center = mSession.viewCenter;
+        mRightView.clampCenter();
         mExposure = mSession.exposure;
         mExposureSet = mSession.exposureSet;
         mDirty = true;
@@ -540,6 +545,7 @@ private:
         else if (key == GLFW_KEY_PERIOD || key == GLFW_KEY_COMMA) stepLayer(key == GLFW_KEY_PERIOD ? 1 : -1);
         else if (key == GLFW_KEY_C && action == GLFW_PRESS) mController.toggleMode();
         else if (key == GLFW_KEY_F5 && action == GLFW_PRESS) saveSessionNow();
+        else if (key == GLFW_KEY_0 && action == GLFW_PRESS) mRightView.fit();
         else if (key == GLFW_KEY_F9 && action == GLFW_PRESS) loadSessionNow();
         else if (key == GLFW_KEY_R && action == GLFW_PRESS) {
             mController.reset();
@@ -577,9 +583,16 @@ private:
                     }
                 }
             }
+            if (mRightImage.contains(p) && mRightView.zoom > 1.0) {
+                mDragView = true;  // zoomed in: dragging pans the intermediate view, not the camera
+                mLastCursor = p;
+                return;
+            }
             if (!mViewArea.contains(p)) return;
             mDragButton = button;
             mLastCursor = p;
+        } else if (action == GLFW_RELEASE && mDragView) {
+            mDragView = false;
         } else if (action == GLFW_RELEASE && button == mDragButton) {
             mDragButton = -1;
             if (mReduced) mDirty = true;
@@ -589,6 +602,11 @@ private:
     void onCursor(double x, double y) {
         const glm::vec2 p = cursorPixels(x, y);
         mHover = p;
+        if (mDragView) {
+            mRightView.panBy(glm::dvec2((p - mLastCursor) / glm::max(mRightImage.size(), glm::vec2(1.0f))));
+            mLastCursor = p;
+            return;
+        }
         if (mDragButton < 0) return;
         const glm::dvec2 d = glm::dvec2(p - mLastCursor);
         mLastCursor = p;
@@ -610,6 +628,11 @@ private:
     }
 
     void onScroll(double dy) {
+        if (mRightImage.contains(mHover)) {
+            // The wheel over the intermediate zooms it about the cursor (the camera stays).
+            mRightView.zoomAt(glm::dvec2((mHover - mRightImage.min) / mRightImage.size()), std::pow(1.25, dy));
+            return;
+        }
         if (!mViewArea.contains(mHover)) return;
         if (mController.mode() == CameraController::Mode::Orbit) {
             mController.zoom(dy);
@@ -663,9 +686,49 @@ private:
 
     // The raw value under the cursor, written below the image. Pixel coordinates follow the image
     // convention (row 0 at the top); one texel is read back from the texture.
-    void hoverReadout(const PaneImage& pane, const Rect& image) {
-        const glm::vec2 uv = (mHover - image.min) / image.size();
-        const glm::ivec2 texel = glm::clamp(glm::ivec2(uv * glm::vec2(pane.size)), glm::ivec2(0), pane.size - 1);
+    // The texel of `pane` under a window point, through the view's pan and zoom.
+    static glm::ivec2 texelAt(const PaneImage& pane, const Rect& image, const viz::ui::ImageViewTransform& view,
+                              glm::vec2 p) {
+        const glm::dvec2 uv = view.paneToUv(glm::dvec2((p - image.min) / image.size()));
+        return glm::clamp(glm::ivec2(glm::floor(uv * glm::dvec2(pane.size))), glm::ivec2(0), pane.size - 1);
+    }
+
+    // Zoomed in until a texel is large enough to hold its value: write the value in every visible texel
+    // (one read of the visible block per frame).
+    void texelValues(const PaneImage& pane, const Rect& image, const viz::ui::ImageViewTransform& view) {
+        const float cell = float(view.texelPixels(image.size().x, std::max(1, pane.size.x)));
+        const float line = mFont->lineHeight();
+        if (cell < 4.2f * line || pane.size.x < 1 || pane.size.y < 1) return;
+        const glm::ivec2 lo = texelAt(pane, image, view, image.min), hi = texelAt(pane, image, view, image.max - 1.0f);
+        const glm::ivec2 count = hi - lo + 1;
+        if (count.x * count.y > 4096) return;
+        std::vector<glm::vec4> values(std::size_t(count.x * count.y));
+        // GL rows: flipped textures keep row 0 at the bottom.
+        const int glRow0 = pane.flipY ? pane.size.y - 1 - hi.y : lo.y;
+        glGetTextureSubImage(pane.texture, 0, lo.x, glRow0, 0, count.x, count.y, 1, GL_RGBA, GL_FLOAT,
+                             GLsizei(values.size() * sizeof(glm::vec4)), values.data());
+        const int channels = std::clamp(pane.channels, 1, 3);
+        const bool allChannels = cell >= float(channels) * line + 4.0f * mScale;
+        for (int ty = lo.y; ty <= hi.y; ++ty)
+            for (int tx = lo.x; tx <= hi.x; ++tx) {
+                const int row = pane.flipY ? hi.y - ty : ty - lo.y;
+                const glm::vec4 v = values[std::size_t(row * count.x + (tx - lo.x))];
+                const glm::vec2 corner = image.min + glm::vec2(view.uvToPane(glm::dvec2(tx, ty) / glm::dvec2(pane.size))) * image.size();
+                // The part of the texel inside the view holds the text.
+                const glm::vec2 shownMin = glm::max(corner, image.min), shownMax = glm::min(corner + cell, image.max);
+                if (shownMax.x - shownMin.x < 3.0f * line || shownMax.y - shownMin.y < line + 4.0f * mScale) continue;
+                for (int c = 0; c < (allChannels ? channels : 1); ++c) {
+                    const glm::vec2 at = shownMin + glm::vec2(3.0f * mScale, 2.0f * mScale + float(c) * line);
+                    if (at.y + line > shownMax.y) break;
+                    const std::string text = format("%.3g", v[c]);
+                    mDrawList->rect({at - 1.0f, at + glm::vec2(mFont->measure(text) + 1.0f, line)}, {0.0f, 0.0f, 0.0f, 0.55f});
+                    mDrawList->textClipped(at, text, kText, shownMax.x - 2.0f);
+                }
+            }
+    }
+
+    void hoverReadout(const PaneImage& pane, const Rect& image, const viz::ui::ImageViewTransform& view) {
+        const glm::ivec2 texel = texelAt(pane, image, view, mHover);
         const int glRow = pane.flipY ? pane.size.y - 1 - texel.y : texel.y;
         glm::vec4 v(0.0f);
         glGetTextureSubImage(pane.texture, 0, texel.x, glRow, 0, 1, 1, 1, GL_RGBA, GL_FLOAT, sizeof v, &v);
@@ -675,7 +738,8 @@ private:
     }
 
     // Returns where the image went.
-    Rect drawPane(const Rect& area, const PaneImage& pane, const std::string& title, const std::string& note) {
+    Rect drawPane(const Rect& area, const PaneImage& pane, const std::string& title, const std::string& note,
+                  const viz::ui::ImageViewTransform* view = nullptr) {
         DrawList& dl = *mDrawList;
         const float line = mFont->lineHeight();
         dl.textClipped(area.min, title, kAccent, area.max.x);
@@ -684,11 +748,14 @@ private:
         const Rect image = fitImage(imageArea, pane.size);
         // Frame behind the image: the background batch is drawn before the images.
         mBackground->rect({image.min - 1.0f, image.max + 1.0f}, kPanel);
-        mPaneDraws.push_back({image, &pane});
+        mPaneDraws.push_back({image, &pane, view});
         if (!pane.unavailable.empty()) {
             dl.textClipped({image.min.x + 8.0f * mScale, image.min.y + 8.0f * mScale}, pane.unavailable, kDim, image.max.x);
         }
-        if (pane.texture != 0 && image.contains(mHover)) hoverReadout(pane, image);
+        const viz::ui::ImageViewTransform whole;
+        const viz::ui::ImageViewTransform& v = view ? *view : whole;
+        if (pane.texture != 0 && view) texelValues(pane, image, v);
+        if (pane.texture != 0 && image.contains(mHover)) hoverReadout(pane, image, v);
         if (mRendering) {
             const std::string text = mHaveOutput ? "rendering... (last run " + format("%.1f s)", mLastRunSeconds)
                                                  : std::string("rendering...");
@@ -836,13 +903,16 @@ private:
         } else if (!t.needsGl()) {
             rightTitle = "computing...";
         }
-        mViewRects.push_back({mHaveOutput ? mRight.id : std::string("none"), rightTitle, drawPane(right, mRight, rightTitle, rightNote)});
+        if (mRightView.zoom > 1.0)
+            rightNote = format("zoom %.0fx (wheel; drag to pan; 0 fits)   ", mRightView.zoom) + rightNote;
+        mRightImage = drawPane(right, mRight, rightTitle, rightNote, &mRightView);
+        mViewRects.push_back({mHaveOutput ? mRight.id : std::string("none"), rightTitle, mRightImage});
 
         // Panels, then the images, then the text batch over them.
         mTextRenderer->draw(*mBackground, fb);
-        for (const auto& [rect, pane] : mPaneDraws) {
-            const float exposure = (pane->mode == DisplayMode::HdrColor || pane->mode == DisplayMode::RangeColor) ? mExposure : 0.0f;
-            mImageDisplay->draw(*pane, rect, fb, exposure);
+        for (const PaneDraw& d : mPaneDraws) {
+            const float exposure = (d.pane->mode == DisplayMode::HdrColor || d.pane->mode == DisplayMode::RangeColor) ? mExposure : 0.0f;
+            mImageDisplay->draw(*d.pane, d.rect, fb, exposure, d.view ? *d.view : viz::ui::ImageViewTransform{});
         }
         mTextRenderer->draw(dl, fb);
     }
@@ -883,7 +953,15 @@ private:
     bool mReduced = false;  // the last GPU run was at half size during an interaction
 
     std::vector<std::pair<Rect, std::function<void()>>> mHits;  // clickable rectangles of the last frame
-    std::vector<std::pair<Rect, const PaneImage*>> mPaneDraws;
+    struct PaneDraw {
+        Rect rect;
+        const PaneImage* pane;
+        const viz::ui::ImageViewTransform* view;  // nullptr: the whole image
+    };
+    std::vector<PaneDraw> mPaneDraws;
+    viz::ui::ImageViewTransform mRightView;  // pan and zoom of the intermediate view
+    Rect mRightImage;                        // where it was drawn last frame
+    bool mDragView = false;                  // a drag that pans the intermediate view
     struct ViewRect {
         std::string name, title;
         Rect rect;  // the image's rectangle in window pixels

@@ -101,8 +101,12 @@ ImageDisplay::ImageDisplay() {
     mSampler = viz::gl::Sampler::create({.minFilter = GL_NEAREST, .magFilter = GL_NEAREST, .label = "ui.image"});
 }
 
-void ImageDisplay::draw(const PaneImage& pane, const viz::ui::Rect& rect, glm::ivec2 framebuffer, float exposure) const {
+void ImageDisplay::draw(const PaneImage& pane, const viz::ui::Rect& rect, glm::ivec2 framebuffer, float exposure,
+                        const viz::ui::ImageViewTransform& view) const {
     if (pane.texture == 0) return;
+    mProgram.set("uView", glm::vec4(glm::vec2(view.center), float(view.zoom), 0.0f));
+    // The texel grid only where the user zoomed in (a fitted low-resolution image stays clean).
+    mProgram.set("uTexelPixels", view.zoom > 1.0 ? float(view.texelPixels(rect.size().x, std::max(1, pane.size.x))) : 0.0f);
     mProgram.set("uRect", glm::vec4(rect.min, rect.max));
     mProgram.set("uViewport", glm::vec2(framebuffer));
     mProgram.set("uMode", static_cast<int>(pane.mode));

@@ -12,6 +12,7 @@
 #include "gl/program.h"
 #include "gl/texture.h"
 #include "gl/vertex_array.h"
+#include "ui/image_view.h"
 #include "ui/text_renderer.h"
 
 namespace airlight {
@@ -47,7 +48,8 @@ void makePane(PaneImage& pane, const viz::Intermediate& in, int layer);
 class ImageDisplay {
 public:
     ImageDisplay();
-    void draw(const PaneImage& pane, const viz::ui::Rect& rect, glm::ivec2 framebuffer, float exposure) const;
+    void draw(const PaneImage& pane, const viz::ui::Rect& rect, glm::ivec2 framebuffer, float exposure,
+              const viz::ui::ImageViewTransform& view = {}) const;
 
 private:
     viz::gl::Program mProgram;

@@ -57,6 +57,8 @@ std::string sessionToJson(const SessionState& s) {
     for (const auto& [technique, values] : s.settings) settings[technique] = values;
     j["settings"] = settings;
     j["view"] = s.view;
+    j["view_zoom"] = s.viewZoom;
+    j["view_center"] = {s.viewCenter.x, s.viewCenter.y};
     j["exposure"] = s.exposure;
     j["exposure_set"] = s.exposureSet;
     return j.dump(2) + "\n";
@@ -107,6 +109,14 @@ SessionState sessionFromJson(const std::string& text, std::string& problem) {
                 s.settings[technique][name] = v;
             }
         s.view = j.at("view").get<std::string>();
+        if (j.contains("view_zoom")) {
+            s.viewZoom = readNumber(j, "view_zoom", 1.0, 4096.0);
+            const json& c = j.at("view_center");
+            if (!c.is_array() || c.size() != 2) throw std::runtime_error("view_center is not [u, v]");
+            s.viewCenter = {c[0].get<double>(), c[1].get<double>()};
+            if (!std::isfinite(s.viewCenter.x) || !std::isfinite(s.viewCenter.y))
+                throw std::runtime_error("view_center is not finite");
+        }
         s.exposure = float(readNumber(j, "exposure", -40, 40));
         s.exposureSet = j.at("exposure_set").get<bool>();
     } catch (const std::exception& e) {

@@ -24,6 +24,8 @@ struct SessionState {
     std::optional<viz::scene::Medium> medium;  // empty = the scene's own
     std::map<std::string, viz::Settings> settings;  // per technique id, only values the user set
     std::string view = "airlight";          // the intermediate shown beside the final frame
+    double viewZoom = 1.0;                   // its pan and zoom (ui/image_view.h)
+    glm::dvec2 viewCenter{0.5};
     float exposure = 0.0f;                   // EV
     bool exposureSet = false;
 };

@@ -19,6 +19,8 @@ uniform vec2 uRange;
 uniform float uExposure;  // in stops
 uniform bool uFlipY;      // GL-rendered textures keep row 0 at the bottom
 uniform int uChannels;    // meaningful channels; a single channel shows as grey in the colour modes
+uniform vec4 uView;       // pan and zoom (ui/image_view.h): image uv = uView.xy + (pane - 0.5) / uView.z
+uniform float uTexelPixels;  // screen pixels per texel: a grid is drawn between texels above 8
 
 in vec2 vPane;
 out vec4 fragColor;
@@ -45,8 +47,18 @@ vec3 hashColor(uint v) {
 
 void main() {
     ivec2 size = textureSize(uImage, 0);
-    vec2 uv = vec2(vPane.x, uFlipY ? 1.0 - vPane.y : vPane.y);
+    vec2 view = uView.xy + (vPane - 0.5) / uView.z;  // image uv, row 0 at the top
+    vec2 uv = vec2(view.x, uFlipY ? 1.0 - view.y : view.y);
     ivec2 texel = clamp(ivec2(uv * vec2(size)), ivec2(0), size - 1);
+    // Zoomed in far enough to tell texels apart: a thin dark line along each texel's edges.
+    if (uTexelPixels >= 8.0) {
+        vec2 f = fract(view * vec2(size));
+        float edge = 1.0 / uTexelPixels;
+        if (f.x < edge || f.y < edge) {
+            fragColor = vec4(0.18, 0.18, 0.2, 1.0);
+            return;
+        }
+    }
     vec4 v = texelFetch(uImage, texel, 0);
     if (any(isnan(v)) || any(isinf(v))) {
         fragColor = vec4(1.0, 0.0, 1.0, 1.0);

@@ -111,6 +111,9 @@ TEST_F(GuiCli, ASavedSessionIsRestoredAndABrokenOneFallsBackToTheDefaults) {
 TEST_F(GuiCli, ScreenshotOptionsAreChecked) {
     expectUserError(run("gui --screenshot " + path("x.jpg").string()), ".png");
     expectUserError(run("gui --screenshot " + path("x.png").string() + " --frames 0"), "--frames");
+    const fs::path state = writeText("same.json", "{}");
+    expectUserError(run("gui --state " + state.string() + " --screenshot " + path("same.png").string()), "state file");
+    EXPECT_EQ(readFile(state), "{}");
     EXPECT_FALSE(fs::exists(path("x.png")));
 }
 

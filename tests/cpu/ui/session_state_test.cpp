@@ -30,6 +30,8 @@ SessionState sample() {
     s.settings["slices"] = {{"planes", 256}, {"accum", 1}};
     s.settings["raymarch"] = {{"samples", 1024}};
     s.view = "slices.accumulation";
+    s.viewZoom = 12.5;
+    s.viewCenter = {0.25, 0.75};
     s.exposure = -1.5f;
     s.exposureSet = true;
     return s;
@@ -55,6 +57,8 @@ TEST(SessionState, RoundTripKeepsEverything) {
     EXPECT_EQ(b.medium->g, a.medium->g);
     EXPECT_EQ(b.settings, a.settings);
     EXPECT_EQ(b.view, a.view);
+    EXPECT_EQ(b.viewZoom, a.viewZoom);
+    EXPECT_EQ(b.viewCenter, a.viewCenter);
     EXPECT_EQ(b.exposure, a.exposure);
     EXPECT_TRUE(b.exposureSet);
 }
