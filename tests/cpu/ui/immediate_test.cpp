@@ -317,7 +317,12 @@ TEST_F(ImmediateTest, DISABLED_FrameCostWithManyWidgets) {
     std::vector<double> ms;
     for (int i = 0; i < 200; ++i) {
         const auto t0 = std::chrono::steady_clock::now();
-        frame(at({100.0f, 100.0f}), ui);
+        // A panel tall enough that every widget is laid out, drawn and hit-tested (none clipped away).
+        ctx.beginFrame(at({100.0f, 100.0f}), {1200.0f, 20000.0f});
+        ctx.beginPanel("All", {{0.0f, 0.0f}, {1200.0f, 20000.0f}});
+        ui(ctx);
+        ctx.endPanel();
+        ctx.endFrame();
         ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
     }
     std::sort(ms.begin(), ms.end());
