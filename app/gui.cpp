@@ -45,6 +45,7 @@
 #include "techniques/registry.h"
 #include "plot/plot.h"
 #include "ui/font.h"
+#include "ui/immediate.h"
 #include "ui/text_renderer.h"
 
 namespace airlight {
@@ -168,6 +169,23 @@ double orbitDistance(const viz::scene::Scene& scene) {
 
 // ---- the app ----
 
+// The keys the widgets use, from GLFW's; others stay with the window's own shortcuts.
+std::optional<viz::ui::Key> uiKey(int key) {
+    switch (key) {
+        case GLFW_KEY_ENTER: case GLFW_KEY_KP_ENTER: return viz::ui::Key::Enter;
+        case GLFW_KEY_SPACE: return viz::ui::Key::Space;
+        case GLFW_KEY_LEFT: return viz::ui::Key::Left;
+        case GLFW_KEY_RIGHT: return viz::ui::Key::Right;
+        case GLFW_KEY_UP: return viz::ui::Key::Up;
+        case GLFW_KEY_DOWN: return viz::ui::Key::Down;
+        case GLFW_KEY_BACKSPACE: return viz::ui::Key::Backspace;
+        case GLFW_KEY_DELETE: return viz::ui::Key::Delete;
+        case GLFW_KEY_HOME: return viz::ui::Key::Home;
+        case GLFW_KEY_END: return viz::ui::Key::End;
+        default: return std::nullopt;
+    }
+}
+
 class GuiApp {
 public:
     GuiApp(const GuiOptions& options, viz::scene::Scene scene, viz::Window& window, SessionState session,
@@ -185,6 +203,7 @@ public:
         mFont = std::make_unique<viz::ui::FontAtlas>(
             viz::ui::FontAtlas::bake(viz::ui::FontAtlas::kDefaultFontPath, kFontSize * mScale));
         mTextRenderer = std::make_unique<viz::ui::TextRenderer>(*mFont);
+        mUi = std::make_unique<viz::ui::Context>(*mFont);
         mDrawList = std::make_unique<DrawList>(*mFont);
         mBackground = std::make_unique<DrawList>(*mFont);
         mImageDisplay = std::make_unique<ImageDisplay>();
@@ -537,6 +556,12 @@ private:
     void onKey(int key, int action, int mods) {
         if (action != GLFW_PRESS && action != GLFW_REPEAT) return;
         const bool shift = (mods & GLFW_MOD_SHIFT) != 0;
+        mUiInput.shift = shift;
+        mUiInput.ctrl = (mods & GLFW_MOD_CONTROL) != 0;
+        if (const auto k = uiKey(key)) {
+            mUiInput.keys.push_back(*k);  // widgets: arrows, Enter, Space, editing keys
+            return;
+        }
         if (key == GLFW_KEY_ESCAPE) glfwSetWindowShouldClose(mWindow.handle(), GLFW_TRUE);
         else if (key == GLFW_KEY_TAB) selectTechnique(mCurrent + (shift ? -1 : 1));
         else if (key >= GLFW_KEY_1 && key <= GLFW_KEY_9 && key - GLFW_KEY_1 < int(mIds.size())) selectTechnique(key - GLFW_KEY_1);
@@ -583,6 +608,7 @@ private:
                     }
                 }
             }
+            if (mParamsRect.contains(p)) return;  // the widgets read the button state themselves
             if (mRightImage.contains(p) && mRightView.zoom > 1.0) {
                 mDragView = true;  // zoomed in: dragging pans the intermediate view, not the camera
                 mLastCursor = p;
@@ -628,6 +654,10 @@ private:
     }
 
     void onScroll(double dy) {
+        if (mParamsRect.contains(mHover)) {
+            mUiInput.wheel += float(dy);
+            return;
+        }
         if (mRightImage.contains(mHover)) {
             // The wheel over the intermediate zooms it about the cursor (the camera stays).
             mRightView.zoomAt(glm::dvec2((mHover - mRightImage.min) / mRightImage.size()), std::pow(1.25, dy));
@@ -907,6 +937,9 @@ private:
             rightNote = format("zoom %.0fx (wheel; drag to pan; 0 fits)   ", mRightView.zoom) + rightNote;
         mRightImage = drawPane(right, mRight, rightTitle, rightNote, &mRightView);
         mViewRects.push_back({mHaveOutput ? mRight.id : std::string("none"), rightTitle, mRightImage});
+        mParamsRect = {{right.min.x, mRightImage.max.y + 2.0f * line}, {right.max.x, right.max.y}};
+        if (mParamsRect.size().y < 4.0f * line) mParamsRect = {};
+        drawParameters(fb);
 
         // Panels, then the images, then the text batch over them.
         mTextRenderer->draw(*mBackground, fb);
@@ -915,6 +948,97 @@ private:
             mImageDisplay->draw(*d.pane, d.rect, fb, exposure, d.view ? *d.view : viz::ui::ImageViewTransform{});
         }
         mTextRenderer->draw(dl, fb);
+        mTextRenderer->draw(mUi->drawList(), fb);
+    }
+
+    // ---- scene and technique controls (immediate-mode widgets) ----
+
+    // Medium and light sliders and the technique's parameters, generated from its declarations.
+    void drawParameters(glm::ivec2 fb) {
+        viz::ui::Input in = mUiInput;
+        in.mouse = mHover;
+        in.mouseDown = glfwGetMouseButton(mWindow.handle(), GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
+        mUiInput = {};
+        mUi->setTime(glfwGetTime());
+        mUi->beginFrame(in, glm::vec2(fb), mScale);
+        if (mParamsRect.size().y > 0.0f) {
+            mUi->beginPanel("Scene and parameters", mParamsRect);
+            bool sceneChanged = false;
+            if (mUi->collapsingHeader("Medium", true)) {
+                float sigmaS = float(mScene.medium.sigma_s), sigmaA = float(mScene.medium.sigma_a), g = float(mScene.medium.g);
+                sceneChanged |= mUi->sliderFloat("sigma_s (scattering)", sigmaS, 1e-4f, 10.0f, true);
+                sceneChanged |= mUi->dragFloat("sigma_a (absorption)", sigmaA, 0.001f, 0.0f, 50.0f);
+                sceneChanged |= mUi->sliderFloat("g (Henyey-Greenstein)", g, -0.99f, 0.99f);
+                mUi->tooltip("phase function asymmetry: > 0 scatters forward, < 0 back");
+                mScene.medium = {double(sigmaS), double(sigmaA), double(g)};
+            }
+            if (!mScene.lights.empty() && mUi->collapsingHeader("Light: " + mScene.lights[0].name, true)) {
+                float intensity = float(mScene.lights[0].intensity);
+                if (mLightIntensity0 <= 0.0) mLightIntensity0 = mScene.lights[0].intensity;
+                const float lo = float(mLightIntensity0 * 1e-3), hi = float(mLightIntensity0 * 1e3);
+                if (mUi->sliderFloat("intensity", intensity, lo, hi, true)) {
+                    mScene.lights[0].intensity = intensity;
+                    sceneChanged = true;
+                }
+            }
+            if (mUi->collapsingHeader(technique().id() + " parameters", true)) parameterWidgets();
+            mUi->endPanel();
+            if (sceneChanged) {
+                mWorker = std::make_unique<CpuWorker>(mScene);  // the CPU worker keeps its own copy
+                replan();
+            }
+        }
+        mUi->endFrame();
+    }
+
+    void parameterWidgets() {
+        const std::string id = mIds[std::size_t(mCurrent)];
+        for (const viz::ParamInfo& p : technique().params()) {
+            double value = mSettings.count(p.name) ? mSettings.at(p.name) : p.defaultValue;
+            bool changed = false;
+            if (!p.choices.empty()) {
+                int index = int(value);
+                changed = mUi->combo(p.name, index, p.choices);
+                value = index;
+            } else if (p.integer && p.minValue == 0.0 && p.maxValue == 1.0) {
+                bool on = value != 0.0;
+                changed = mUi->checkbox(p.name, on);
+                value = on ? 1.0 : 0.0;
+            } else if (p.maxValue - p.minValue > 1e4 && !(p.minValue > 0.0)) {
+                float v = float(value);
+                changed = mUi->dragFloat(p.name, v, float(std::max(1.0, std::abs(value)) * 0.01), float(p.minValue),
+                                         float(p.maxValue));
+                value = p.integer ? std::round(v) : v;
+            } else if (p.minValue > 0.0 && p.maxValue / p.minValue >= 100.0) {
+                float v = float(value);
+                changed = mUi->sliderFloat(p.name, v, float(p.minValue), float(p.maxValue), true);
+                value = p.integer ? std::round(v) : v;
+            } else if (p.integer) {
+                int v = int(value);
+                changed = mUi->sliderInt(p.name, v, int(p.minValue), int(p.maxValue));
+                value = v;
+            } else {
+                float v = float(value);
+                changed = mUi->sliderFloat(p.name, v, float(p.minValue), float(p.maxValue));
+                value = v;
+            }
+            mUi->tooltip(p.help);
+            if (changed && value != mSettings[p.name]) {
+                mSettings[p.name] = value;
+                mSession.settings[id][p.name] = value;  // kept across technique switches and saved
+                mOptions.settings.erase(p.name);         // the user's change wins over the command line
+                replan();
+            }
+        }
+    }
+
+    void replan() {
+        try {
+            mPlan = technique().plan(mScene, mSettings);
+        } catch (const std::exception& e) {
+            mError = e.what();
+        }
+        mDirty = true;
     }
 
     GuiOptions mOptions;
@@ -960,6 +1084,10 @@ private:
     };
     std::vector<PaneDraw> mPaneDraws;
     viz::ui::ImageViewTransform mRightView;  // pan and zoom of the intermediate view
+    std::unique_ptr<viz::ui::Context> mUi;   // the widgets
+    viz::ui::Input mUiInput;                 // keys, text and wheel gathered since the last frame
+    Rect mParamsRect;                        // the widget panel's area last frame
+    double mLightIntensity0 = 0.0;           // the first light's intensity at start (slider range)
     Rect mRightImage;                        // where it was drawn last frame
     bool mDragView = false;                  // a drag that pans the intermediate view
     struct ViewRect {
