@@ -60,7 +60,7 @@ lights as KHR_lights_punctual, area lights as emissive meshes, the medium in sce
 )";
 
 constexpr const char* kGuiHelp = R"(usage: airlight gui [--scene S] [--technique T] [--size WxH] [--set name=value]...
-                    [--state FILE] [--screenshot OUT.png [--frames N]]
+                    [--state FILE] [--script FILE] [--screenshot OUT.png [--frames N]]
 
 Opens the window: the final frame beside one intermediate. Keys: Tab / Shift+Tab technique,
 [ and ] intermediate, C orbit/fly camera, R reset camera, + and - exposure, Esc quit.
@@ -68,6 +68,8 @@ Opens the window: the final frame beside one intermediate. Keys: Tab / Shift+Tab
 --state FILE          load the session (scene, camera, medium, technique, parameters, view) from FILE
                       at start; F5 saves it there, F9 loads it again, and it is saved on exit.
                       Without --state the file is ~/.local/state/airlight/session.json.
+--script FILE         replay window actions (click NAME [FX FY], key NAME, frames N, screenshot PATH;
+                      one per line), then exit (after writing --screenshot if given)
 --screenshot OUT.png  after N frames (default 1; and once a CPU technique's result has arrived) write
                       the window to OUT.png and its views' rectangles (window pixels, origin top-left)
                       to OUT.json, then exit. Runs under xvfb-run without a monitor.
@@ -83,6 +85,7 @@ struct CommonOptions {
     std::string screenshot;  // gui only
     int frames = 1;
     std::string state;  // gui only
+    std::string script;  // gui only
     bool sceneGiven = false, techniqueGiven = false, sizeGiven = false;
 };
 
@@ -101,6 +104,7 @@ CommonOptions parseOptions(Args& args, const std::string& command, const std::st
         if (flag == "--scene") o.request.scene = args.next(flag), o.sceneGiven = true;
         else if (flag == "--technique") o.request.technique = args.next(flag), o.techniqueGiven = true;
         else if (flag == "--state") o.state = args.next(flag);
+        else if (flag == "--script") o.script = args.next(flag);
         else if (flag == "--size") {
             const glm::ivec2 size = parseSize(args.next(flag));
             o.request.width = size.x, o.request.height = size.y;
@@ -284,7 +288,7 @@ int runGuiCommand(Args& args) {
         std::fputs(kGuiHelp, stdout);
         return 0;
     }
-    CommonOptions o = parseOptions(args, "gui", " --scene --technique --size --set --screenshot --frames --state ");
+    CommonOptions o = parseOptions(args, "gui", " --scene --technique --size --set --screenshot --frames --state --script ");
     if (!o.screenshot.empty() && viz::extensionOf(o.screenshot) != ".png")
         throw InputError("--screenshot '" + o.screenshot + "' must end in .png");
     if (o.frames < 1) throw InputError("--frames must be at least 1");
@@ -305,6 +309,10 @@ int runGuiCommand(Args& args) {
     g.settings = o.request.settings;
     g.screenshot = o.screenshot;
     g.frames = o.frames;
+    if (!o.script.empty()) {
+        g.script = parseScript(o.script);  // a bad script fails before the window opens
+        g.scriptPath = o.script;
+    }
     g.statePath = o.state.empty() ? defaultSessionPath() : o.state;
     g.loadStateAtStart = !o.state.empty();
     g.sceneGiven = o.sceneGiven;

@@ -255,7 +255,7 @@ public:
         while (!mWindow.shouldClose()) {
             const bool flying = mController.mode() == CameraController::Mode::Fly && anyFlyKeyDown();
             const bool busy = mWorker->progress().busy;
-            const bool automated = !mOptions.screenshot.empty();
+            const bool automated = !mOptions.screenshot.empty() || !mOptions.script.empty();
             if (flying || mDirty || automated) {
                 glfwPollEvents();
             } else {
@@ -280,18 +280,81 @@ public:
             }
             if (auto result = mWorker->take()) acceptCpuResult(std::move(*result));
             draw();
-            if (automated && ++mFramesDrawn >= mOptions.frames && mHaveOutput && !mWorker->progress().busy) {
-                writeScreenshot();
+            ++mFramesDrawn;
+            if (!mOptions.script.empty()) {
+                // Each frame runs the script's next actions; the window closes when it is done.
+                if (mHaveOutput && !mWorker->progress().busy && !stepScript()) {
+                    if (!mOptions.screenshot.empty()) writeScreenshot(mOptions.screenshot);
+                    return 0;
+                }
+            } else if (automated && mFramesDrawn >= mOptions.frames && mHaveOutput && !mWorker->progress().busy) {
+                writeScreenshot(mOptions.screenshot);
                 return 0;
             }
             mWindow.swapBuffers();
         }
-        if (mOptions.screenshot.empty()) saveSessionNow();
+        if (mOptions.screenshot.empty() && mOptions.script.empty()) saveSessionNow();
         return 0;
     }
 
+    // ---- scripted actions (ui_script.h) ----
+
+    // The rectangle of a widget, view or sidebar item drawn last frame.
+    Rect scriptTarget(const ScriptAction& a) const {
+        if (const auto it = mUi->widgetRects().find(a.target); it != mUi->widgetRects().end()) return it->second;
+        for (const auto& v : mViewRects)
+            if (v.name == a.target) return v.rect;
+        if (const auto it = mNamedRects.find(a.target); it != mNamedRects.end()) return it->second;
+        std::string known;
+        for (const auto& [name, r] : mNamedRects) known += (known.empty() ? "" : ", ") + name;
+        for (const auto& v : mViewRects) known += ", " + v.name;
+        for (const auto& [name, r] : mUi->widgetRects()) known += ", " + name;
+        throw viz::InputError(mOptions.scriptPath + ":" + std::to_string(a.line) + ": nothing named '" + a.target +
+                              "' is on screen (on screen: " + known + ")");
+    }
+
+    // Runs actions until one needs frames to pass; false when the script is done.
+    bool stepScript() {
+        while (mScriptIndex < mOptions.script.size()) {
+            const ScriptAction& a = mOptions.script[mScriptIndex];
+            switch (a.kind) {
+                case ScriptAction::Kind::Frames:
+                    if (mScriptWait == 0) mScriptWait = a.frames;
+                    if (--mScriptWait > 0) return true;
+                    ++mScriptIndex;
+                    return true;
+                case ScriptAction::Kind::Key:
+                    onKey(scriptKeyCode(a.target), GLFW_PRESS, 0);
+                    ++mScriptIndex;
+                    return true;
+                case ScriptAction::Kind::Screenshot:
+                    writeScreenshot(a.target);
+                    ++mScriptIndex;
+                    break;
+                case ScriptAction::Kind::Click: {
+                    // Frame 1: move there and press; frame 2: release (widgets click on release).
+                    if (!mSyntheticDown) {
+                        const Rect r = scriptTarget(a);
+                        mScriptPoint = r.min + a.fraction * r.size();
+                        mHover = mScriptPoint;
+                        mSyntheticDown = true;
+                        onMouseButtonAt(GLFW_MOUSE_BUTTON_LEFT, GLFW_PRESS, mScriptPoint);
+                    } else {
+                        mHover = mScriptPoint;
+                        mSyntheticDown = false;
+                        onMouseButtonAt(GLFW_MOUSE_BUTTON_LEFT, GLFW_RELEASE, mScriptPoint);
+                        mSyntheticDown.reset();
+                        ++mScriptIndex;
+                    }
+                    return true;
+                }
+            }
+        }
+        return false;
+    }
+
     // The back buffer as drawn (before the swap) to the PNG, and the views' rectangles beside it.
-    void writeScreenshot() {
+    void writeScreenshot(const std::string& path) {
         const glm::ivec2 fb = mWindow.framebufferSize();
         std::vector<std::uint8_t> bytes(std::size_t(fb.x) * std::size_t(fb.y) * 4);
         glReadBuffer(GL_BACK);
@@ -306,7 +369,7 @@ public:
                                                 std::size_t(c)]) / 255.0f;
                     image.at(x, y, c) = v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f);
                 }
-        viz::writeImage(image, mOptions.screenshot);
+        viz::writeImage(image, path);
         nlohmann::json views = nlohmann::json::array();
         for (const auto& v : mViewRects)
             views.push_back({{"name", v.name}, {"title", v.title}, {"rect", {v.rect.min.x, v.rect.min.y, v.rect.max.x, v.rect.max.y}}});
@@ -315,8 +378,11 @@ public:
                                         {"scene", mScene.name},
                                         {"technique", technique().id()},
                                         {"frames", mFramesDrawn},
+                                        {"medium", {{"sigma_s", mScene.medium.sigma_s}, {"sigma_a", mScene.medium.sigma_a},
+                                                    {"g", mScene.medium.g}}},
+                                        {"settings", mSettings},
                                         {"views", views}};
-        std::filesystem::path json(mOptions.screenshot);
+        std::filesystem::path json(path);
         json.replace_extension(".json");
         const std::string error = viz::writeFileAtomically(json, sidecar.dump(2) + "\n");
         if (!error.empty()) throw viz::InputError("cannot write '" + json.string() + "': " + error);
@@ -598,7 +664,10 @@ private:
     void onMouseButton(int button, int action) {
         double x = 0, y = 0;
         glfwGetCursorPos(mWindow.handle(), &x, &y);
-        const glm::vec2 p = cursorPixels(x, y);
+        onMouseButtonAt(button, action, cursorPixels(x, y));
+    }
+
+    void onMouseButtonAt(int button, int action, glm::vec2 p) {
         if (action == GLFW_PRESS) {
             if (button == GLFW_MOUSE_BUTTON_LEFT) {
                 for (const auto& [rect, action2] : mHits) {
@@ -835,6 +904,7 @@ private:
         mHits.clear();
         mPaneDraws.clear();
         mViewRects.clear();
+        mNamedRects.clear();
         const float s = mScale;
         const float pad = kPad * s;
         const float line = mFont->lineHeight();
@@ -884,8 +954,9 @@ private:
         y += line + 2.0f * s;
         for (int i = 0; i < int(mIds.size()); ++i) {
             const std::string name = (i < 9 ? std::to_string(i + 1) + "  " : "   ") + mIds[std::size_t(i)];
-            listItem({{pad * 0.5f, y}, {sidebarWidth - pad * 0.5f, y + line + 2.0f * s}}, name, i == mCurrent,
-                     [this, i] { selectTechnique(i); });
+            const Rect item{{pad * 0.5f, y}, {sidebarWidth - pad * 0.5f, y + line + 2.0f * s}};
+            listItem(item, name, i == mCurrent, [this, i] { selectTechnique(i); });
+            mNamedRects["technique:" + mIds[std::size_t(i)]] = item;
             y += line + 4.0f * s;
         }
         y += line;
@@ -894,8 +965,9 @@ private:
         if (mHaveOutput) {
             for (int i = 0; i < viewCount() && y + line < sidebar.max.y; ++i) {
                 const std::string name = i == 0 ? "Airlight L_air" : mOutput.intermediates[std::size_t(i - 1)].label;
-                listItem({{pad * 0.5f, y}, {sidebarWidth - pad * 0.5f, y + line + 2.0f * s}}, name, i == mView,
-                         [this, i] { selectView(i); });
+                const Rect item{{pad * 0.5f, y}, {sidebarWidth - pad * 0.5f, y + line + 2.0f * s}};
+                listItem(item, name, i == mView, [this, i] { selectView(i); });
+                mNamedRects["view:" + name] = item;
                 y += line + 4.0f * s;
             }
         }
@@ -957,7 +1029,8 @@ private:
     void drawParameters(glm::ivec2 fb) {
         viz::ui::Input in = mUiInput;
         in.mouse = mHover;
-        in.mouseDown = glfwGetMouseButton(mWindow.handle(), GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
+        in.mouseDown = mSyntheticDown ? *mSyntheticDown
+                                      : glfwGetMouseButton(mWindow.handle(), GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
         mUiInput = {};
         mUi->setTime(glfwGetTime());
         mUi->beginFrame(in, glm::vec2(fb), mScale);
@@ -965,12 +1038,14 @@ private:
             mUi->beginPanel("Scene and parameters", mParamsRect);
             bool sceneChanged = false;
             if (mUi->collapsingHeader("Medium", true)) {
+                // Values change only when a widget reports a change, so the scene keeps its exact doubles.
                 float sigmaS = float(mScene.medium.sigma_s), sigmaA = float(mScene.medium.sigma_a), g = float(mScene.medium.g);
-                sceneChanged |= mUi->sliderFloat("sigma_s (scattering)", sigmaS, 1e-4f, 10.0f, true);
-                sceneChanged |= mUi->dragFloat("sigma_a (absorption)", sigmaA, 0.001f, 0.0f, 50.0f);
-                sceneChanged |= mUi->sliderFloat("g (Henyey-Greenstein)", g, -0.99f, 0.99f);
+                if (mUi->sliderFloat("sigma_s (scattering)", sigmaS, 1e-4f, 10.0f, true))
+                    mScene.medium.sigma_s = sigmaS, sceneChanged = true;
+                if (mUi->dragFloat("sigma_a (absorption)", sigmaA, 0.001f, 0.0f, 50.0f))
+                    mScene.medium.sigma_a = sigmaA, sceneChanged = true;
+                if (mUi->sliderFloat("g (Henyey-Greenstein)", g, -0.99f, 0.99f)) mScene.medium.g = g, sceneChanged = true;
                 mUi->tooltip("phase function asymmetry: > 0 scatters forward, < 0 back");
-                mScene.medium = {double(sigmaS), double(sigmaA), double(g)};
             }
             if (!mScene.lights.empty() && mUi->collapsingHeader("Light: " + mScene.lights[0].name, true)) {
                 float intensity = float(mScene.lights[0].intensity);
@@ -1095,6 +1170,11 @@ private:
         Rect rect;  // the image's rectangle in window pixels
     };
     std::vector<ViewRect> mViewRects;  // what the last frame showed where (screenshot sidecar)
+    std::map<std::string, Rect> mNamedRects;  // sidebar items: "technique:ID", "view:LABEL"
+    std::size_t mScriptIndex = 0;
+    int mScriptWait = 0;
+    std::optional<bool> mSyntheticDown;  // the script holds the left button (down / just released)
+    glm::vec2 mScriptPoint{0.0f};
     int mFramesDrawn = 0;
     Rect mViewArea;
     float mImageHeight = 1.0f;

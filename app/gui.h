@@ -5,6 +5,7 @@
 #include <string>
 
 #include "debug/technique.h"
+#include "ui_script.h"
 
 namespace airlight {
 
@@ -19,6 +20,10 @@ struct GuiOptions {
     // exit. Empty: run until closed.
     std::string screenshot;
     int frames = 1;
+    // Actions replayed one after another (ui_script.h); the window exits when they are done, after
+    // writing `screenshot` if one is given.
+    std::vector<ScriptAction> script;
+    std::string scriptPath;
     // The session file (F5 saves, F9 loads, saved on exit except in screenshot runs); loaded at start
     // when given with --state. Command-line --scene, --technique and --set override what it holds.
     std::string statePath;

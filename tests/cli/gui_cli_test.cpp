@@ -108,6 +108,35 @@ TEST_F(GuiCli, ASavedSessionIsRestoredAndABrokenOneFallsBackToTheDefaults) {
     EXPECT_EQ(readFile(state), before);
 }
 
+TEST_F(GuiCli, AScriptClicksWidgetsAndSidebarItemsByName) {
+    const fs::path script = writeText("actions.txt", R"S(# switch technique, raise sigma_s on its log slider, show the shadow map
+click technique:slices
+frames 2
+click "sigma_s (scattering)" 0.9 0.5
+frames 2
+click "view:Spot shadow map"
+screenshot )S" + path("mid.png").string() + R"S(
+frames 1
+)S");
+    const RunResult r = run("gui --scene grate --size 80x60 --script " + script.string() + " --screenshot " +
+                            path("end.png").string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_TRUE(fs::exists(path("mid.png")));
+    const nlohmann::json j = nlohmann::json::parse(readFile(path("end.json")));
+    EXPECT_EQ(j.at("technique"), "slices");
+    // 0.9 of the way along a log slider from 1e-4 to 10: 1e-4 * 1e5^0.9 = 3.16 (pixel rounding aside).
+    EXPECT_NEAR(j.at("medium").at("sigma_s").get<double>(), 3.16, 0.1);
+    EXPECT_EQ(j.at("medium").at("g").get<double>(), 0.2);  // untouched, exactly the scene's value
+    EXPECT_EQ(j.at("views")[1].at("name"), "slices.shadow_map");
+}
+
+TEST_F(GuiCli, BadScriptsAreOneLineErrorsNamingTheLine) {
+    const fs::path unknown = writeText("unknown.txt", "frames 1\njump somewhere\n");
+    expectUserError(run("gui --script " + unknown.string()), "unknown.txt:2");
+    const fs::path missing = writeText("missing.txt", "frames 1\nclick \"no such widget\"\n");
+    expectUserError(run("gui --scene grate --size 40x30 --script " + missing.string()), "missing.txt:2");
+}
+
 TEST_F(GuiCli, ScreenshotOptionsAreChecked) {
     expectUserError(run("gui --screenshot " + path("x.jpg").string()), ".png");
     expectUserError(run("gui --screenshot " + path("x.png").string() + " --frames 0"), "--frames");

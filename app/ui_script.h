@@ -1,0 +1,35 @@
+// Scripts of window actions for end-to-end UI tests and handouts (`airlight gui --script FILE`). One
+// action per line; '#' starts a comment; names with spaces go in double quotes:
+//   click NAME [FX FY]   press and release the left button over a widget or view, at the fraction
+//                        (FX, FY) of its rectangle (default 0.5 0.5). NAME: a widget's label, a view
+//                        ("final", or an intermediate id), "technique:ID" or "view:LABEL" in the sidebar
+//   key NAME             press a key: Tab, Enter, Escape, Space, Left, Right, Up, Down, F1-F12, 0-9,
+//                        A-Z, [ and ]
+//   frames N             let N frames pass
+//   screenshot PATH      write the window (PNG) and its sidecar JSON now
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace airlight {
+
+struct ScriptAction {
+    enum class Kind { Click, Key, Frames, Screenshot };
+    Kind kind = Kind::Frames;
+    std::string target;          // widget / view name, key name or path
+    glm::vec2 fraction{0.5f};    // click position within the target's rectangle
+    int frames = 1;
+    int line = 0;                // 1-based, for messages
+};
+
+// Throws InputError "FILE:LINE: reason" for an unknown action, a missing or malformed argument, an
+// unknown key name, or a file that cannot be read.
+std::vector<ScriptAction> parseScript(const std::string& path);
+
+// GLFW key code for a script key name, or -1.
+int scriptKeyCode(const std::string& name);
+
+}  // namespace airlight
