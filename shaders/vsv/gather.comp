@@ -1,0 +1,165 @@
+#version 450 core
+// vsv/gather.comp: one light's airlight from its voxelized shadow volume, added to uAirlight.
+// Each pixel's eye ray is one (alpha, theta) of epipolar space: it reads the grid texel of its alpha
+// cell (no interpolation along alpha: visibility there changes only at the occluder) and, with
+// INTERP, the two texels of the neighbouring theta cells, blended with the weight wTheta. Phi bits
+// k = 0 .. up to phi(d) are the visibility samples along the ray: bit k covers phi in
+// [phi0 + k dPhi, phi0 + (k + 1) dPhi], i.e. t in [t(phi_k), t(phi_k+1)] by the law of sines.
+//   COMBINE_EXACT: sum over runs of bins with equal visibility v (at most uRunBins bins each) of
+//       v * pointSegment(run) * the light's angular factor averaged over the run (Simpson).
+//   otherwise (the factorisation of Dobashi et al. / Wyman and Dai 3.1.5): the phi-uniform fraction
+//       of lit bits up to phi(d) times the unshadowed airlight over the covered part of [0, d].
+//   EPIPOLE: within one alpha cell of an epipole the grid is degenerate; toward the light a point is
+//       lit when the fragment lies beyond the light (d > D), away from it when the eye itself is lit.
+// Also writes (lit fraction, interpolated visibility of the fragment's own voxel, alpha cell, theta cell
+// or -1 where the epipole case replaced the grid).
+layout(local_size_x = 8, local_size_y = 8) in;
+
+#include "common/host_device.glsl"
+#include "common/airlight.glsl"
+#include "common/lights.glsl"
+#include "common/shadow_map.glsl"
+#include "vsv/bits128.glsl"
+#include "vsv/epipolar_uniforms.glsl"
+
+layout(binding = kFirstFreeTextureUnit) uniform sampler2D uDistance;
+layout(rgba32ui, binding = 0) uniform readonly uimage2DArray uGrid;
+layout(rgba32f, binding = 1) uniform image2D uAirlight;
+layout(rgba32f, binding = 2) uniform writeonly image2D uVisibility;
+
+uniform ivec2 uSize;
+uniform vec3 uForward;
+uniform vec3 uRight;
+uniform vec3 uUp;
+uniform float uTanHalf;
+uniform float uAspect;
+uniform int uLight;
+uniform float uSigmaS;
+uniform float uSigmaT;
+uniform float uG;
+uniform int uRunBins;
+uniform int uAccumulate;     // 0: first light (overwrite), 1: add
+uniform int uEpipoleToward;  // the alpha = 0 epipole is in view and the grid starts at alpha = 0
+uniform int uEpipoleAway;
+uniform float uZfar;    // the alpha = pi epipole is in view and the grid ends at alpha = pi
+
+vec3 pixelRay(ivec2 texel) {
+    float yTop = float(uSize.y - 1 - texel.y);
+    float ndcX = 2.0 * (float(texel.x) + 0.5) / float(uSize.x) - 1.0;
+    float ndcY = 1.0 - 2.0 * (yTop + 0.5) / float(uSize.y);
+    return normalize(uForward + (ndcX * uTanHalf * uAspect) * uRight + (ndcY * uTanHalf) * uUp);
+}
+
+// Airlight of the ray over [ta, tb] for the whole bin run: the isotropic-source segment integral times
+// the light's angular factor (spot falloff, cookie) averaged by Simpson's rule over the run.
+vec3 runAirlight(GpuLight L, RayLightGeometry geo, vec3 w, float ta, float tb) {
+    if (!(tb > ta)) return vec3(0.0);
+    if (L.info.x == kLightDirectional)  // E = I colour everywhere; cos theta against the travel direction
+        return L.radiant.rgb * directionalSegment(dot(-L.direction.xyz, w), ta, tb, uSigmaS, uSigmaT, uG, 1.0);
+    vec3 ia = lightIntensity(L, ta * w);
+    vec3 im = lightIntensity(L, 0.5 * (ta + tb) * w);
+    vec3 ib = lightIntensity(L, tb * w);
+    vec3 angular = (ia + 4.0 * im + ib) / 6.0;
+    if (angular == vec3(0.0)) return vec3(0.0);
+    return angular * pointSegment(geo.tP, geo.h, ta, tb, uSigmaS, uSigmaT, uG, 1.0);
+}
+
+void main() {
+    ivec2 texel = ivec2(gl_GlobalInvocationID.xy);
+    if (any(greaterThanEqual(texel, uSize))) return;
+    GpuLight L = gLights[uLight];
+    vec3 w = pixelRay(texel);
+    float d = texelFetch(uDistance, texel, 0).r;
+    RayLightGeometry geo = rayLightGeometry(L.position.xyz, w);
+
+    EpiSpace S = epiFromUniforms();
+    float alpha = epiAlphaOf(S, w);
+    int ia = clamp(int(floor(epiAlphaCoord(S, alpha))), 0, uEpiCells.x - 1);
+    int j0, j1;
+    float wTheta;
+#ifdef INTERP
+    epiThetaCells(S, epiThetaOf(S, w), true, j0, j1, wTheta);
+#else
+    epiThetaCells(S, epiThetaOf(S, w), false, j0, j1, wTheta);
+#endif
+
+    // Fixed visibility near an epipole (section 5 of the paper), -1 = read the grid.
+    float fixedV = -1.0;
+#ifdef EPIPOLE
+    // (a directional light is at infinity: only rays that reach the sky, d = zfar, are lit)
+    if (uEpipoleToward != 0 && alpha < uEpiAlpha.x + uEpiAlpha.y)
+        fixedV = (uEpiD > 0.0 ? d > uEpiD : d >= 0.999 * uZfar) ? 1.0 : 0.0;
+    if (uEpipoleAway != 0 && alpha > uEpiAlpha.x + (float(uEpiCells.x) - 1.0) * uEpiAlpha.y)
+        fixedV = shadowVisibility(L, vec3(0.0));
+#endif
+
+    float phiD = epiPhiOnEyeRay(S, alpha, d);
+    float kEnd = (phiD - uEpiPhi.x) / uEpiPhi.y;  // continuous bin coordinate of the fragment
+    int bins = clamp(int(ceil(kEnd)), 0, uEpiCells.z);
+
+    vec3 sum = vec3(0.0);
+    vec3 unshadowed = vec3(0.0);
+    float litPhi = 0.0, totalPhi = 0.0;
+    uvec4 c0 = uvec4(0u), c1 = uvec4(0u);
+    // The open run: bins [runStart, k) with visibility runV.
+    float runV = -1.0;
+    float runTa = 0.0;
+    int runLength = 0;
+    for (int k = 0; k < bins; ++k) {
+        if ((k & 127) == 0) {
+            c0 = imageLoad(uGrid, ivec3(ia, j0, k >> 7));
+            c1 = imageLoad(uGrid, ivec3(ia, j1, k >> 7));
+        }
+        int bit = k & 127;
+        float v = fixedV >= 0.0 ? fixedV
+                                : (1.0 - wTheta) * (testBitFast(c0, bit) ? 0.0 : 1.0) +
+                                      wTheta * (testBitFast(c1, bit) ? 0.0 : 1.0);
+        float phiA = uEpiPhi.x + float(k) * uEpiPhi.y;
+        float phiB = min(phiA + uEpiPhi.y, phiD);
+        litPhi += v * (phiB - phiA);
+        totalPhi += phiB - phiA;
+        float ta = k == 0 && phiA <= 0.0 ? 0.0 : min(epiTOnEyeRay(S, alpha, phiA), d);
+        if (runLength == 0) {
+            runV = v;
+            runTa = ta;
+        } else if (v != runV || runLength >= uRunBins) {
+#ifdef COMBINE_EXACT
+            if (runV > 0.0) sum += runV * runAirlight(L, geo, w, runTa, ta);
+#else
+            unshadowed += runAirlight(L, geo, w, runTa, ta);
+#endif
+            runV = v;
+            runTa = ta;
+            runLength = 0;
+        }
+        ++runLength;
+    }
+    if (runLength > 0) {
+        float tEnd = min(epiTOnEyeRay(S, alpha, min(uEpiPhi.x + float(bins) * uEpiPhi.y, phiD)), d);
+#ifdef COMBINE_EXACT
+        if (runV > 0.0) sum += runV * runAirlight(L, geo, w, runTa, tEnd);
+#else
+        unshadowed += runAirlight(L, geo, w, runTa, tEnd);
+#endif
+    }
+    float fraction = totalPhi > 0.0 ? litPhi / totalPhi : 1.0;
+#ifndef COMBINE_EXACT
+    sum = fraction * unshadowed;
+#endif
+
+    // Visibility of the fragment's own voxel, interpolated along theta and phi (listing 2 of the paper).
+    float surfaceV = 1.0;
+    if (kEnd > 0.0 && kEnd < float(uEpiCells.z)) {
+        float kc = kEnd - 0.5;
+        int k0 = clamp(int(floor(kc)), 0, uEpiCells.z - 1);
+        float wPhi = clamp(kc - float(k0), 0.0, 1.0);
+        uvec4 s0 = imageLoad(uGrid, ivec3(ia, j0, k0 >> 7));
+        uvec4 s1 = imageLoad(uGrid, ivec3(ia, j1, k0 >> 7));
+        if ((k0 & 127) == 127) wPhi = 0.0;  // bit k0 + 1 lives in the next texel: stay at k0
+        surfaceV = litFractionFast(s0, s1, k0 & 127, wTheta, wPhi);
+    }
+
+    vec4 previous = uAccumulate != 0 ? imageLoad(uAirlight, texel) : vec4(0.0);
+    imageStore(uAirlight, texel, vec4(previous.rgb + sum, 1.0));
+    imageStore(uVisibility, texel, vec4(fraction, surfaceV, float(ia), fixedV >= 0.0 ? -1.0 : float(j0)));
+}

@@ -1,0 +1,133 @@
+#version 450 core
+// vsv/ivsv_gather.comp: airlight of many VPLs from their voxelized shadow volumes (one grid tile each,
+// 128 phi bits = one texel per eye ray). Per pixel and VPL: the eye ray's (alpha, theta) in that VPL's
+// epipolar space picks the texel(s), the phi bits up to the fragment are the visibility samples, and
+// the airlight is a midpoint quadrature in the VPL's angle phi with one node per uChunkBits bits, each
+// node weighted by the lit fraction of its bits (COMBINE_EXACT), or the lit fraction of all bits times
+// the unshadowed quadrature (the factorisation).
+// Each VPL is a cosine-lobe point light of intensity L_e dA along its normal (render/gpu_lights.h).
+// Variants: the invocation's pixel is uScale * id of the full image (uScale = 2 for the quarter-resolution
+// gather); with 3x3 interleaving (uVplStride = 9) a pixel gathers one ninth of the VPLs (the subset of
+// its place in the 3x3 pattern), scaled by 9, and a bilateral filter recombines the nine.
+layout(local_size_x = 8, local_size_y = 8) in;
+
+#include "common/airlight.glsl"
+#include "vsv/bits128.glsl"
+#include "vsv/ivsv_vpls.glsl"
+
+layout(binding = 8) uniform sampler2D uDistance;
+layout(rgba32ui, binding = 0) uniform readonly uimage2DArray uGrid;
+layout(rgba32f, binding = 1) uniform image2D uAirlight;   // at the invocation's resolution
+layout(r32f, binding = 2) uniform image2D uVisibility;    // mean lit fraction over the VPLs gathered
+layout(std430, binding = 6) buffer PickContributions { vec4 gPick[]; };
+
+uniform ivec2 uOutSize;   // invocations
+uniform ivec2 uSize;      // full image
+uniform int uScale;
+uniform vec3 uForward;
+uniform vec3 uRight;
+uniform vec3 uUp;
+uniform float uTanHalf;
+uniform float uAspect;
+uniform ivec3 uCells;
+uniform int uFirstVpl;
+uniform int uVplCount;    // VPLs [uFirstVpl, uFirstVpl + uVplCount)
+uniform int uVplStride;   // 1 or 9
+uniform float uSigmaS;
+uniform float uSigmaT;
+uniform float uG;
+uniform int uChunkBits;
+uniform float uDiscScale;  // 1: VPLs as discs of their area near the emitter (vpl_disc), 0: points  // phi bits per quadrature node
+uniform int uAccumulate;
+uniform ivec2 uPick;      // full-resolution pixel whose per-VPL contributions go to gPick (-1: none)
+
+vec3 pixelRay(ivec2 texel) {
+    float yTop = float(uSize.y - 1 - texel.y);
+    float ndcX = 2.0 * (float(texel.x) + 0.5) / float(uSize.x) - 1.0;
+    float ndcY = 1.0 - 2.0 * (yTop + 0.5) / float(uSize.y);
+    return normalize(uForward + (ndcX * uTanHalf * uAspect) * uRight + (ndcY * uTanHalf) * uUp);
+}
+
+// Lit (clear) fraction of bits [first, last) of a column.
+float litBits(uvec4 c, int first, int last) {
+    return last > first ? 1.0 - float(countBits(c, first, last)) / float(last - first) : 1.0;
+}
+
+void main() {
+    ivec2 id = ivec2(gl_GlobalInvocationID.xy);
+    if (any(greaterThanEqual(id, uOutSize))) return;
+    ivec2 pixel = min(id * uScale, uSize - 1);
+    vec3 w = pixelRay(pixel);
+    float d = texelFetch(uDistance, pixel, 0).r;
+    int phase = uVplStride == 9 ? (pixel.x % 3) + 3 * (pixel.y % 3) : 0;
+    bool picked = pixel == uPick;
+
+    vec3 total = vec3(0.0);
+    float fractionSum = 0.0;
+    float gathered = 0.0;
+    for (int n = 0; n < uVplCount; ++n) {
+        // Interleaving subset of VPL i: (i + i / 9) mod 9, not i mod 9: the base-3 Halton coordinate of
+        // i mod 9 fixes v to one ninth of the emitter, which would give every pixel one horizontal strip.
+        int vi = uFirstVpl + n;
+        if (uVplStride == 9 && (vi + vi / 9) % 9 != phase) continue;
+        IvsvVpl v = gVpls[vi];
+        EpiSpace S = vplSpace(v, uCells);
+        float alpha = epiAlphaOf(S, w);
+        int ia = clamp(int(floor(epiAlphaCoord(S, alpha))), 0, uCells.x - 1);
+        int j0, j1;
+        float wTheta;
+#ifdef INTERP
+        epiThetaCells(S, epiThetaOf(S, w), true, j0, j1, wTheta);
+#else
+        epiThetaCells(S, epiThetaOf(S, w), false, j0, j1, wTheta);
+#endif
+        uvec4 c0 = imageLoad(uGrid, ivec3(v.tile.x + ia, v.tile.y + j0, 0));
+        uvec4 c1 = imageLoad(uGrid, ivec3(v.tile.x + ia, v.tile.y + j1, 0));
+        float phiD = epiPhiOnEyeRay(S, alpha, d);
+        float kEnd = clamp((phiD - S.phi.x) / S.phi.y, 0.0, float(uCells.z));
+        int lastBit = int(ceil(kEnd));
+
+        // Quadrature in the light's angle phi: along the eye ray dt / r^2 = dphi / h (h = D sin alpha,
+        // the VPL-ray distance), so the airlight integrand is bounded and smooth in phi, and the phi bits
+        // are uniform in it. One midpoint node per uChunkBits bits; the node's visibility is the lit
+        // fraction of its bits (theta-interpolated). With the triangle (eye, VPL, point):
+        // t = D sin(phi) / sin(alpha + phi), r = D sin(alpha) / sin(alpha + phi), cos theta = cos(alpha + phi).
+        float D = v.epiB.w;
+        float sinA = sin(alpha);
+        float h = max(D * sinA, 1.0e-4 * D);
+        float sum = 0.0, unshadowed = 0.0;
+        for (int first = 0; first < lastBit; first += uChunkBits) {
+            int last = min(first + uChunkBits, lastBit);
+            float phiA = S.phi.x + float(first) * S.phi.y;
+            float phiB = min(S.phi.x + float(last) * S.phi.y, phiD);
+            if (!(phiB > phiA)) break;
+            float phiM = 0.5 * (phiA + phiB);
+            float sn = sin(alpha + phiM);
+            if (sn <= 0.0) break;
+            float t = D * sin(phiM) / sn;
+            float r = D * sinA / sn;
+            vec3 x = t * w;
+            float lobe = max(0.0, dot(v.normal.xyz, (x - v.position.xyz) / max(r, 1.0e-6)));
+            // Near the emitter a VPL stands for a disc of area dA, radius^2 eps2 = dA / pi: on its axis the disc
+            // gives the point's 1/r^2 times r^2 / (r^2 + eps2), which bounds the spike of rays grazing a VPL.
+            float disc = r * r / (r * r + uDiscScale * v.weight.w);
+            float f = uSigmaS * phaseHG(cos(alpha + phiM), uG) * exp(-uSigmaT * (t + r)) * lobe * disc / h *
+                      (phiB - phiA);
+            float vis = mix(litBits(c0, first, last), litBits(c1, first, last), wTheta);
+            sum += vis * f;
+            unshadowed += f;
+        }
+        float fraction = mix(litBits(c0, 0, lastBit), litBits(c1, 0, lastBit), wTheta);
+#ifndef COMBINE_EXACT
+        sum = fraction * unshadowed;
+#endif
+        vec3 contribution = float(uVplStride) * sum * v.weight.rgb;
+        total += contribution;
+        fractionSum += fraction;
+        gathered += 1.0;
+        if (picked) gPick[vi] = vec4(sum * v.weight.rgb, fraction);
+    }
+    vec4 previous = uAccumulate != 0 ? imageLoad(uAirlight, id) : vec4(0.0);
+    imageStore(uAirlight, id, vec4(previous.rgb + total, 1.0));
+    if (uAccumulate == 0) imageStore(uVisibility, pixel, vec4(gathered > 0.0 ? fractionSum / gathered : 1.0));
+}

@@ -1,0 +1,31 @@
+// The VPLs of ivsv and their epipolar spaces (one std430 array, filled by IvsvTechnique; every member a
+// vec4 or ivec4 so that C++ and GLSL agree, see ivsv.cpp's static_asserts).
+#ifndef VSV_IVSV_VPLS_GLSL
+#define VSV_IVSV_VPLS_GLSL
+
+#include "vsv/epipolar.glsl"
+
+struct IvsvVpl {
+    vec4 position;   // xyz eye-relative
+    vec4 normal;     // xyz emitter normal (the hemisphere's axis)
+    vec4 tangent;    // xyz hemisphere frame x
+    vec4 bitangent;  // xyz hemisphere frame y
+    vec4 weight;     // rgb L_e dA, w dA / pi (the squared radius of a disc of the VPL's area)
+    vec4 epiB;       // xyz baseline, w eye-VPL distance D
+    vec4 epiU;
+    vec4 epiV;
+    vec4 epiAlpha;   // alpha0, dAlpha
+    vec4 epiTheta;   // thetaCentre, thetaHalf, dTheta, 1 = full circle
+    vec4 epiPhi;     // phi0, dPhi
+    ivec4 tile;      // xy origin of its epipolar grid tile, zw origin of its shadow-map tile
+    ivec4 extra;     // x cube index of its shadow map (mode=naive)
+};
+
+layout(std430, binding = 4) readonly buffer IvsvVplBlock { IvsvVpl gVpls[]; };
+
+EpiSpace vplSpace(IvsvVpl v, ivec3 cells) {
+    return EpiSpace(v.epiB.xyz, v.epiU.xyz, v.epiV.xyz, v.epiB.w, cells, v.epiAlpha.xy, v.epiTheta.xyz,
+                    v.epiPhi.xy, v.epiTheta.w != 0.0);
+}
+
+#endif  // VSV_IVSV_VPLS_GLSL

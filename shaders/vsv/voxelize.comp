@@ -1,0 +1,81 @@
+#version 450 core
+// vsv/voxelize.comp: rectification of the shadow map into the epipolar grid. One invocation per light
+// ray (theta cell j, phi bit k; for a directional light a light line, see epipolar.h): the ray's first
+// occluder r (the shadow map's linear distance) becomes
+// the alpha cell of that occluder, and bit k of word k >> 5 of texel (alpha cell, j) is set (an atomic
+// OR: several light rays of one theta can land in one texel). Also writes the occluder's continuous
+// alpha coordinate (-1: no occluder in the grid) for inspection and tests.
+layout(local_size_x = 8, local_size_y = 8) in;
+
+#include "common/host_device.glsl"
+#include "common/lights.glsl"
+#include "common/shadow_map.glsl"
+#include "vsv/epipolar_uniforms.glsl"
+
+layout(r32ui, binding = 0) uniform coherent uimage2DArray uWords;  // (nAlpha, nTheta, nPhi / 32)
+layout(r32f, binding = 1) uniform writeonly image2D uOccluder;     // (nPhi, nTheta)
+
+uniform int uLight;
+uniform float uAlphaBias;  // cells; negative pushes the shadow away from the light
+uniform float uPhiBias;    // cells; the light ray of bit k is sampled at phi cell k + 0.5 + uPhiBias
+
+// Linear distance stored by the light's shadow map along direction dir from the light; a huge value
+// when nothing was rendered there or the direction leaves the map.
+float occluderDistance(GpuLight L, vec3 dir) {
+    int layer = L.info.z;
+    if (layer < 0) return 3.0e38;
+#ifndef SHADOW_NO_2D
+    if (L.info.x == kLightSpot) {
+        vec4 clip = L.shadowMatrix * vec4(L.position.xyz + dir, 1.0);
+        if (clip.w <= 0.0) return 3.0e38;
+        vec2 ndc = clip.xy / clip.w;
+        if (any(greaterThan(abs(ndc), vec2(1.0)))) return 3.0e38;
+        ivec2 size = textureSize(uShadow2D, 0).xy;
+        ivec2 texel = clamp(ivec2(floor((ndc * 0.5 + 0.5) * vec2(size))), ivec2(0), size - 1);
+        return texelFetch(uShadow2D, ivec3(texel, layer), 0).r;
+    }
+#endif
+#ifndef SHADOW_NO_CUBE
+    return cubeLookup(uShadowCube, layer, dir);
+#else
+    return 3.0e38;
+#endif
+}
+
+void main() {
+    ivec2 id = ivec2(gl_GlobalInvocationID.xy);
+    int k = id.x;
+    int j = id.y;
+    if (k >= uEpiCells.z || j >= uEpiCells.y) return;
+    GpuLight L = gLights[uLight];
+    EpiSpace S = epiFromUniforms();
+    float theta = epiThetaAtCell(S, float(j) + 0.5);
+    float phi = uEpiPhi.x + (float(k) + 0.5 + uPhiBias) * uEpiPhi.y;
+    float coord = -1.0;
+    float c = 1.0e30;
+#ifndef SHADOW_NO_2D
+    if (L.info.x == kLightDirectional) {
+        // Light line at offset y = phi from the eye's line: its points y e + x b; the orthographic map
+        // stores dot(p, travel) = -x, so the occluder sits at x = -stored, alpha = atan(y, x).
+        vec3 e = cos(theta) * S.u + sin(theta) * S.v;
+        vec4 clip = L.shadowMatrix * vec4(phi * e, 1.0);
+        vec2 ndc = clip.xy / clip.w;
+        if (phi > 0.0 && all(lessThanEqual(abs(ndc), vec2(1.0)))) {
+            ivec2 size = textureSize(uShadow2D, 0).xy;
+            ivec2 texel = clamp(ivec2(floor((ndc * 0.5 + 0.5) * vec2(size))), ivec2(0), size - 1);
+            float stored = texelFetch(uShadow2D, ivec3(texel, L.info.z), 0).r;
+            if (L.info.z >= 0 && stored < L.shadow.y) c = epiAlphaCoord(S, atan(phi, -stored)) - uAlphaBias;
+        }
+    } else
+#endif
+    if (phi > 0.0 && phi < kPi) {
+        float r = occluderDistance(L, epiLightRay(S, theta, phi));
+        if (r < L.shadow.y) c = epiAlphaCoord(S, epiAlphaOnLightRay(S, phi, r)) - uAlphaBias;
+    }
+    if (c < float(uEpiCells.x)) {
+        int cell = max(0, int(floor(c)));
+        imageAtomicOr(uWords, ivec3(cell, j, k >> 5), 1u << uint(k & 31));
+        coord = max(c, 0.0);
+    }
+    imageStore(uOccluder, ivec2(k, j), vec4(coord));
+}
