@@ -8,7 +8,8 @@
 #define SHADOW_MAP_GLSL
 
 // Feature switches: SHADOW_NO_2D (no spot or directional light) and SHADOW_NO_CUBE (no point light or
-// VPL) leave the corresponding lookup out of the compiled shader.
+// VPL) leave the corresponding lookup out of the compiled shader. SHADOW_LOOKUP_MESH adds
+// shadowVisibilityMesh (the polyvol mesh's reconstruction, for exactness comparisons).
 
 #include "common/host_device.glsl"
 #include "common/lights.glsl"
@@ -84,6 +85,72 @@ float shadowVisibility(GpuLight L, vec3 p) {
 #endif
     return d <= stored + L.shadow.w + L.shadow.z * footprint ? 1.0 : 0.0;
 }
+
+#ifdef SHADOW_LOOKUP_MESH
+// Visibility as the polygonal light volume of polyvol sees it (shaders/polyvol/volume.vert): spot and
+// directional maps are reconstructed as triangles between texel centres (two per quad of four, split
+// along (i, j) -> (i + 1, j + 1)), linear across each triangle in world space, with no bias; spot texels
+// outside the cone or under a dark cookie texel (brightest channel < 1/512) sit at the light. Point is
+// lit when it lies between the light (the map's near plane) and that surface. Points outside the spot
+// grid are unlit (the volume is closed there); cube maps keep the nearest-texel rule.
+const float SHADOW_MESH_COOKIE_MASK = 1.0 / 512.0;
+
+// Direction from the light through ndc (x, y) of a perspective shadow matrix: the intersection of the
+// planes clip.x = x clip.w and clip.y = y clip.w, which both contain the light, oriented toward w > 0.
+vec3 shadowMeshRayDirection(mat4 m, vec2 ndc) {
+    vec3 r0 = vec3(m[0][0], m[1][0], m[2][0]);
+    vec3 r1 = vec3(m[0][1], m[1][1], m[2][1]);
+    vec3 r3 = vec3(m[0][3], m[1][3], m[2][3]);
+    vec3 d = normalize(cross(r0 - ndc.x * r3, r1 - ndc.y * r3));
+    return dot(d, r3) < 0.0 ? -d : d;
+}
+
+float shadowVisibilityMesh(GpuLight L, vec3 p) {
+    int layer = L.info.z;
+    if (layer < 0) return 1.0;
+    int type = L.info.x;
+    if (type != kLightSpot && type != kLightDirectional) return shadowVisibility(L, p);
+    vec4 clip = L.shadowMatrix * vec4(p, 1.0);
+    bool spot = type == kLightSpot;
+    if (clip.w <= 0.0) return spot ? 0.0 : 1.0;
+    vec2 ndc = clip.xy / clip.w;
+    int n = textureSize(uShadow2D, 0).x;
+    vec2 f = (ndc * 0.5 + 0.5) * float(n) - 0.5;
+    ivec2 q = ivec2(floor(f));
+    if (any(lessThan(q, ivec2(0))) || any(greaterThan(q, ivec2(n - 2)))) return spot ? 0.0 : 1.0;
+    vec2 a = f - vec2(q);
+    ivec2 c1 = a.x >= a.y ? ivec2(1, 0) : ivec2(1, 1);
+    ivec2 c2 = a.x >= a.y ? ivec2(1, 1) : ivec2(0, 1);
+    ivec2 t[3] = ivec2[3](q, q + c1, q + c2);
+    float s[3];
+    for (int k = 0; k < 3; ++k) s[k] = texelFetch(uShadow2D, ivec3(t[k], layer), 0).r;
+    if (!spot) {
+        // Orthographic: world position is affine in ndc, so the surface depth is the barycentric mix.
+        vec2 b = a.x >= a.y ? vec2(a.x - a.y, a.y) : vec2(a.x, a.y - a.x);  // weights of t[1], t[2]
+        float depth = s[0] + b.x * (s[1] - s[0]) + b.y * (s[2] - s[0]);
+        return dot(p, L.direction.xyz) <= depth ? 1.0 : 0.0;
+    }
+    vec3 v[3];
+    for (int k = 0; k < 3; ++k) {
+        vec2 texelNdc = (vec2(t[k]) + 0.5) * (2.0 / float(n)) - 1.0;
+        vec3 dir = shadowMeshRayDirection(L.shadowMatrix, texelNdc);
+        bool dark = spotAttenuation(L, dir) == 0.0;
+#ifndef LIGHTS_NO_COOKIE
+        vec3 cookie = spotCookie(L, dir);
+        dark = dark || max(cookie.r, max(cookie.g, cookie.b)) < SHADOW_MESH_COOKIE_MASK;
+#endif
+        if (dark) return 0.0;  // a wall of the cone: the triangle contains the light
+        v[k] = dir * s[k];
+    }
+    vec3 u = p - L.position.xyz;
+    vec3 nrm = cross(v[1] - v[0], v[2] - v[0]);
+    float denom = dot(nrm, u);
+    if (denom == 0.0) return 0.0;
+    // u * tHit lies on the triangle's plane; lit when p is not beyond it (tHit >= 1).
+    float tHit = dot(nrm, v[0]) / denom;
+    return tHit >= 1.0 ? 1.0 : 0.0;
+}
+#endif  // SHADOW_LOOKUP_MESH
 
 // The slope part of the bias in scene units at p: L.shadow.z texel footprints (two texels' width).
 float shadowSlopeBias(GpuLight L, vec3 p) {

@@ -71,7 +71,11 @@ void main() {
 #endif
             float t = (float(i) + u) * dt;
             vec3 x = t * w;
+#ifdef SHADOW_LOOKUP_MESH
+            float V = shadowVisibilityMesh(L, x);  // depth linear across the polyvol mesh's triangles
+#else
             float V = shadowVisibility(L, x);
+#endif
             litSamples += V;
             if (V == 0.0) continue;
             // cos theta = dot(direction light->point, direction point->eye) = dot(toLight, w).

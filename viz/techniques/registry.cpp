@@ -1,6 +1,7 @@
 #include "techniques/registry.h"
 
 #include "core/error.h"
+#include "techniques/polyvol/polyvol.h"
 #include "techniques/raymarch/raymarch.h"
 #include "techniques/reference/reference.h"
 #include "techniques/slices/slices.h"
@@ -9,12 +10,13 @@
 
 namespace viz {
 
-std::vector<std::string> techniqueIds() { return {"reference", "raymarch", "slices", "vsv", "ivsv"}; }
+std::vector<std::string> techniqueIds() { return {"reference", "raymarch", "slices", "polyvol", "vsv", "ivsv"}; }
 
 std::unique_ptr<Technique> makeTechnique(std::string_view id) {
     if (id == "reference") return makeReferenceTechnique();
     if (id == "raymarch") return makeRaymarchTechnique();
     if (id == "slices") return makeSlicesTechnique();
+    if (id == "polyvol") return makePolyvolTechnique();
     if (id == "vsv") return makeVsvTechnique();
     if (id == "ivsv") return makeIvsvTechnique();
     std::string known;

@@ -35,6 +35,7 @@ const std::map<std::string, std::pair<const char*, const char*>> kDefines = {
     {"COOKIE", {nullptr, "LIGHTS_NO_COOKIE"}},
     {"SHADOW_MAPS_CUBE", {nullptr, "SHADOW_NO_CUBE"}},
     {"SHADOW_MAPS_2D", {nullptr, "SHADOW_NO_2D"}},
+    {"SHADOW_LOOKUP_MESH", {"SHADOW_LOOKUP_MESH", nullptr}},
 };
 
 class RaymarchTechnique final : public Technique {
@@ -45,6 +46,8 @@ public:
             {"jitter", "1: one stratified random offset per sample interval; 0: interval midpoints", 0, 0, 1, true},
             {"exact", "1: integrate the unshadowed airlight exactly over each sample's interval", 0, 0, 1, true},
             {"seed", "jitter seed", 1, 0, 1e9, true},
+            {"shadow_lookup", "nearest: nearest texel with bias; mesh: depth linear across polyvol's triangles",
+             0, 0, 1, true, {"nearest", "mesh"}},
         };
         for (ParamInfo& p : render::SceneViewPasses::params()) mParams.push_back(std::move(p));
         mParams.push_back(forceFeaturesParam());
@@ -52,7 +55,7 @@ public:
             render::SceneViewPasses::shadowStage("raymarch"),
             render::SceneViewPasses::surfaceStage("raymarch"),
             {kStageMarch, "Ray march", "N shadow-map tests per ray and light, summed into L_air",
-             {"samples", "jitter", "exact", "seed", "force_features"}, {kAirlight, kLitFraction}, 1},
+             {"samples", "jitter", "exact", "seed", "shadow_lookup", "force_features"}, {kAirlight, kLitFraction}, 1},
             render::SceneViewPasses::composeStage("raymarch"),
         };
     }
@@ -127,6 +130,10 @@ public:
         const bool maps2D = hasSpot || render::hasLightOfType(scene, scene::LightType::Directional);
         p.features.push_back({"SHADOW_MAPS_2D", maps2D,
                               maps2D ? "spot / directional lights" : "no spot or directional light"});
+        const bool meshLookup = settings.at("shadow_lookup") != 0.0;
+        p.features.push_back({"SHADOW_LOOKUP_MESH", meshLookup,
+                              meshLookup ? "shadow_lookup=mesh: 2D maps read as polyvol's light volume mesh"
+                                         : "shadow_lookup=nearest: nearest texel with bias"});
         render::planCulledLights(scene, p);
         forcePlan(p, settings.at("force_features") != 0.0, {"SPOT", "COOKIE", "SHADOW_MAPS_CUBE", "SHADOW_MAPS_2D"});
         for (FeaturePlan& f : p.features) {

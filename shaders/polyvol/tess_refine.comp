@@ -1,0 +1,108 @@
+#version 450 core
+// polyvol/tess_refine.comp: one refinement step from the coarse grid (Billeter et al. section 4.1, with
+// compute shaders and indirect dispatch instead of geometry shaders and transform feedback). Each
+// invocation takes one quad of level k: split quads append their four children to the next list; leaves
+// append their triangles. A leaf whose edge neighbour (same level) is split gets that edge's midpoint:
+// with the 4 edges that is 16 patterns; the polygon of corners and midpoints (CCW in texel space, i.e.
+// seen from the light, like the static grid) is fanned from its first midpoint, 2 + m <= 6 triangles,
+// or split along the (0,0)-(1,1) diagonal as in the static grid when m = 0. Keys: light_volume_mesh.h
+// with a key stride of N + 1.
+layout(local_size_x = 64) in;
+
+uniform int uLevel;
+uniform int uMapSize;
+uniform int uFromGrid;     // 1: the input is every quad of level uLevel (the coarse grid)
+uniform int uStopLevel;    // stepping: quads of this level are leaves even if flagged
+uniform uint uListCapacity;
+uniform uint uKeyCapacity;
+uniform int uWriteLevels;
+layout(binding = 11) uniform usampler2D uFlags;  // texture unit 11 (units below 10 are the scene's)
+layout(r8, binding = 1) uniform writeonly image2D uLevels;  // leaf level per finest quad, / 16
+
+layout(std430, binding = 4) buffer Counters {
+    uint inCount;
+    uint outCount;
+    uint triangles;
+    uint overflow;
+    uint dispatchArgs[3];
+    uint drawArgs[4];
+};
+layout(std430, binding = 5) readonly buffer InQuads { uint inQuads[]; };
+layout(std430, binding = 6) writeonly buffer OutQuads { uint outQuads[]; };
+layout(std430, binding = 7) writeonly buffer Keys { uint keys[]; };
+
+bool isSplit(ivec2 q, int level) {
+    int quads = uMapSize >> level;
+    if (level == 0 || any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, ivec2(quads)))) return false;
+    return (texelFetch(uFlags, q, level).r & 2u) != 0u;
+}
+
+uint vertexKey(ivec2 v) { return uint(v.y) * uint(uMapSize + 1) + uint(v.x); }
+
+void main() {
+    uint index = gl_GlobalInvocationID.x;
+    int quads = uMapSize >> uLevel;
+    ivec2 q;
+    if (uFromGrid != 0) {
+        if (index >= uint(quads * quads)) return;
+        q = ivec2(int(index) % quads, int(index) / quads);
+    } else {
+        if (index >= inCount) return;
+        uint code = inQuads[index];
+        q = ivec2(code & 0xFFFFu, code >> 16);
+    }
+    if (uLevel > uStopLevel && isSplit(q, uLevel)) {
+        uint base = atomicAdd(outCount, 4u);
+        if (base + 4u > uListCapacity) {
+            atomicAdd(overflow, 1u);
+            return;
+        }
+        for (uint c = 0u; c < 4u; ++c) {
+            ivec2 child = 2 * q + ivec2(c & 1u, c >> 1u);
+            outQuads[base + c] = uint(child.x) | (uint(child.y) << 16);
+        }
+        return;
+    }
+
+    // Leaf: polygon corners and midpoints, counter-clockwise in texel space.
+    int s = 1 << uLevel;
+    int h = s >> 1;
+    ivec2 o = q * s;
+    bool mid[4] = bool[4](isSplit(q + ivec2(0, -1), uLevel), isSplit(q + ivec2(1, 0), uLevel),
+                          isSplit(q + ivec2(0, 1), uLevel), isSplit(q + ivec2(-1, 0), uLevel));
+    const ivec2 kCorner[4] = ivec2[4](ivec2(0, 0), ivec2(1, 0), ivec2(1, 1), ivec2(0, 1));
+    uint poly[8];
+    int n = 0;
+    int firstMid = -1;
+    for (int e = 0; e < 4; ++e) {
+        poly[n++] = vertexKey(o + kCorner[e] * s);
+        if (mid[e]) {
+            if (firstMid < 0) firstMid = n;
+            poly[n++] = vertexKey(o + (kCorner[e] + kCorner[(e + 1) & 3]) * h);
+        }
+    }
+    uint count = uint(n - 2);
+    uint base = atomicAdd(triangles, count);
+    if ((base + count) * 3u > uKeyCapacity) {
+        atomicAdd(overflow, 1u);
+        return;
+    }
+    uint k = base * 3u;
+    if (firstMid < 0) {
+        keys[k + 0u] = poly[0]; keys[k + 1u] = poly[1]; keys[k + 2u] = poly[2];
+        keys[k + 3u] = poly[0]; keys[k + 4u] = poly[2]; keys[k + 5u] = poly[3];
+    } else {
+        for (int t = 0; t < n - 2; ++t) {
+            keys[k++] = poly[firstMid];
+            keys[k++] = poly[(firstMid + 1 + t) % n];
+            keys[k++] = poly[(firstMid + 2 + t) % n];
+        }
+    }
+    if (uWriteLevels != 0) {
+        for (int y = 0; y < s; ++y)
+            for (int x = 0; x < s; ++x) {
+                ivec2 t = o + ivec2(x, y);
+                if (all(lessThan(t, ivec2(uMapSize)))) imageStore(uLevels, t, vec4(float(uLevel) / 16.0));
+            }
+    }
+}

@@ -1,0 +1,47 @@
+#version 450 core
+// polyvol/volume.frag: one term of Billeter et al.'s equation 3. The fragment is where the eye ray
+// through this pixel crosses the light volume's boundary; its point x (clamped to the surface distance d)
+// contributes +L(0, x) when the ray leaves the lit volume there and -L(0, x) when it enters, so the sum
+// over all crossings is the airlight of the lit parts of [0, d].
+// uOriginAtSurface = 1 (precision mitigation, see README): each term is written relative to the surface,
+// L(0, x) = L(0, d) - L(x, d); the fragment adds -s L(x, d) and the resolve adds c L(0, d) once per pixel
+// and light, c = the signed crossing count. Crossings clamped to d then add exactly 0 instead of
+// +-L(0, d) pairs that cancel in fp32.
+// Outputs (additive blending): 0 signed total (rgb, a = signed crossing count of this light, consumed by
+// the resolve), 1 sum of the positive terms, 2 sum of the negative terms (as positive values),
+// 3 crossings (r = count, g = signed count over all lights: the crack detector's input).
+
+#include "polyvol/segment.glsl"
+
+layout(binding = kFirstFreeTextureUnit) uniform sampler2D uDistance;  // Euclidean t of the first surface
+
+uniform int uLightIndex;
+uniform int uConstant;         // 1: crack detector, the integrand is 1 so each term is +-x
+uniform int uOriginAtSurface;
+
+in vec3 vPosition;
+
+layout(location = 0) out vec4 oTotal;
+layout(location = 1) out vec4 oPositive;
+layout(location = 2) out vec4 oNegative;
+layout(location = 3) out vec4 oCrossings;
+
+void main() {
+    ivec2 texel = ivec2(gl_FragCoord.xy);
+    vec3 w = pixelRay(gl_FragCoord.xy);
+    float d = texelFetch(uDistance, texel, 0).r;
+    float x = min(length(vPosition), d);
+    // Counter-clockwise seen from inside the volume: a front-facing fragment is where the ray leaves it.
+    float s = gl_FrontFacing ? 1.0 : -1.0;
+    vec3 term;
+    if (uOriginAtSurface != 0) {
+        s = -s;
+        term = uConstant != 0 ? vec3(d - x) : segmentAirlight(gLights[uLightIndex], w, x, d);
+    } else {
+        term = uConstant != 0 ? vec3(x) : segmentAirlight(gLights[uLightIndex], w, 0.0, x);
+    }
+    oTotal = vec4(s * term, gl_FrontFacing ? 1.0 : -1.0);
+    oPositive = vec4(s > 0.0 ? term : vec3(0.0), 0.0);
+    oNegative = vec4(s < 0.0 ? term : vec3(0.0), 0.0);
+    oCrossings = vec4(1.0, gl_FrontFacing ? 1.0 : -1.0, 0.0, 0.0);
+}

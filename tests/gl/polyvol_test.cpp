@@ -1,0 +1,505 @@
+// polyvol: the light volume mesh is closed (CPU), its image against the reference and against raymarch
+// on the same shadow map, the camera inside the volume and at the near plane, the crack detector, and
+// what plan() leaves out.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/image_io.h"
+#include "scene/builtin_scenes.h"
+#include "technique_test_util.h"
+#include "techniques/polyvol/crack_check.h"
+#include "techniques/polyvol/light_volume_mesh.h"
+#include "techniques/registry.h"
+
+namespace {
+
+class PolyvolTest : public viz::testing::TechniqueTest {};
+
+using viz::testing::relativeL2;
+
+bool allFinite(const viz::Image& image) {
+    for (float v : image.pixels)
+        if (!std::isfinite(v)) return false;
+    return true;
+}
+
+// Every directed edge of a closed, consistently oriented, T-junction-free triangle mesh appears exactly
+// once, and so does its reverse. Returns the number of edges breaking that rule.
+int openEdges(const std::vector<std::uint32_t>& keys) {
+    std::map<std::pair<std::uint32_t, std::uint32_t>, int> directed;
+    for (std::size_t t = 0; t + 2 < keys.size(); t += 3)
+        for (int e = 0; e < 3; ++e) ++directed[{keys[t + std::size_t(e)], keys[t + std::size_t((e + 1) % 3)]}];
+    int bad = 0;
+    for (const auto& [edge, n] : directed) {
+        const auto it = directed.find({edge.second, edge.first});
+        if (n != 1 || it == directed.end() || it->second != 1) ++bad;
+    }
+    return bad;
+}
+
+// The procedural grid triangles of volume.vert, as keys.
+std::vector<std::uint32_t> gridKeys(int n, int faces) {
+    std::vector<std::uint32_t> keys;
+    for (int f = 0; f < faces; ++f)
+        for (int j = 0; j + 1 < n; ++j)
+            for (int i = 0; i + 1 < n; ++i) {
+                using viz::polyvol::gridKey;
+                const auto k00 = gridKey(n, f, i, j), k10 = gridKey(n, f, i + 1, j);
+                const auto k11 = gridKey(n, f, i + 1, j + 1), k01 = gridKey(n, f, i, j + 1);
+                keys.insert(keys.end(), {k00, k10, k11, k00, k11, k01});
+            }
+    return keys;
+}
+
+// grate with its spot replaced by a point light at the same place (an omni test scene).
+viz::scene::Scene omniGrate() {
+    viz::scene::Scene scene = viz::scene::makeBuiltinScene("grate");
+    for (auto& light : scene.lights)
+        if (light.type == viz::scene::LightType::Spot) light.type = viz::scene::LightType::Point;
+    return scene;
+}
+
+viz::scene::Camera lookAtCamera(const viz::scene::Camera& base, glm::dvec3 eye, glm::dvec3 target) {
+    viz::scene::Camera c = base;
+    c.position = eye;
+    c.forward = glm::normalize(target - eye);
+    const glm::dvec3 right = glm::normalize(glm::cross(c.forward, glm::dvec3(0, 1, 0)));
+    c.up = glm::cross(right, c.forward);
+    return c;
+}
+
+int crackPixels(const viz::FrameOutput& out) {
+    for (const auto& i : out.intermediates)
+        if (i.id == "polyvol.crossings" && i.image) return viz::polyvol::countCrackPixels(*i.image, 1).badPixels;
+    ADD_FAILURE() << "no polyvol.crossings image";
+    return -1;
+}
+
+}  // namespace
+
+// ---- the mesh is closed (CPU, no GL) ----
+
+TEST(PolyvolMesh, GridAndClosureOfA2DMapAreClosedAndConsistentlyOriented) {
+    for (int n : {2, 3, 8}) {
+        std::vector<std::uint32_t> keys = gridKeys(n, 1);
+        const std::vector<std::uint32_t> closure = viz::polyvol::gridClosure(n);
+        EXPECT_EQ(closure.size(), std::size_t(4 * (n - 1) * 9));
+        keys.insert(keys.end(), closure.begin(), closure.end());
+        EXPECT_EQ(openEdges(keys), 0) << "n = " << n;
+    }
+}
+
+TEST(PolyvolMesh, SixCubeGridsAndTheirSeamsAreClosedAndConsistentlyOriented) {
+    for (int n : {2, 3, 8}) {
+        std::vector<std::uint32_t> keys = gridKeys(n, 6);
+        const std::vector<std::uint32_t> seams = viz::polyvol::cubeSeams(n);
+        EXPECT_EQ(seams.size(), std::size_t(3 * (12 * 2 * (n - 1) + 8)));
+        keys.insert(keys.end(), seams.begin(), seams.end());
+        EXPECT_EQ(openEdges(keys), 0) << "n = " << n;
+    }
+}
+
+// The grid triangles are counter-clockwise seen from the light, like the seams (whose orientation is
+// chosen from the directions): checked on each face from the texel directions.
+TEST(PolyvolMesh, CubeGridTrianglesAreCounterClockwiseSeenFromTheLight) {
+    const int n = 4;
+    for (int f = 0; f < 6; ++f) {
+        const glm::dvec3 a = viz::polyvol::cubeTexelDirection(n, f, 1, 1);
+        const glm::dvec3 b = viz::polyvol::cubeTexelDirection(n, f, 2, 1);
+        const glm::dvec3 c = viz::polyvol::cubeTexelDirection(n, f, 2, 2);
+        EXPECT_LT(glm::dot(glm::cross(b - a, c - a), a + b + c), 0.0) << "face " << f;
+        const viz::polyvol::CubeTexel t = viz::polyvol::cubeTexelOf(n, a);
+        EXPECT_EQ(t.face, f);
+        EXPECT_EQ(t.i, 1);
+        EXPECT_EQ(t.j, 1);
+    }
+}
+
+TEST(PolyvolMesh, CrackCountFindsPixelsOffTheCommonCount) {
+    viz::Image counts(4, 3, 4);
+    for (int y = 0; y < 3; ++y)
+        for (int x = 0; x < 4; ++x) counts.at(x, y, 3) = 1.0f;
+    EXPECT_EQ(viz::polyvol::countCrackPixels(counts, 3).badPixels, 0);
+    EXPECT_EQ(viz::polyvol::countCrackPixels(counts, 3).expected, 1);
+    counts.at(2, 1, 3) = 0.0f;
+    counts.at(3, 2, 3) = 2.0f;
+    EXPECT_EQ(viz::polyvol::countCrackPixels(counts, 3).badPixels, 2);
+}
+
+// ---- images ----
+
+// The figure: relative L2 of L_air against the reference on grate, 160x120, 1024^2 map, < 3 %.
+TEST_F(PolyvolTest, MatchesTheReferenceOnGrate) {
+    const viz::scene::Scene scene = viz::scene::makeBuiltinScene("grate");
+    const viz::FrameOutput reference = render(scene, "reference", {}, 160, 120);
+    const viz::FrameOutput out = render(scene, "polyvol", {{"shadow_map", 1024}}, 160, 120);
+    ASSERT_EQ(out.airlight.pixels.size(), reference.airlight.pixels.size());
+    EXPECT_TRUE(allFinite(out.airlight));
+    EXPECT_TRUE(allFinite(out.final));
+    const double e = relativeL2(out.airlight, reference.airlight);
+    std::printf("polyvol grate shadow_map=1024: relative L2 of L_air = %.4f, of final = %.4f\n", e,
+                relativeL2(out.final, reference.final));
+    EXPECT_LT(e, 0.03);
+}
+
+TEST_F(PolyvolTest, StoppingAfterEachStagePublishesOnlyWhatExists) {
+    expectEachStageStopsCleanly("polyvol", viz::scene::makeBuiltinScene("grate"), {{"shadow_map", 64}}, 2, 3);
+}
+
+// The eye inside the lit cone, above the grate: the first crossing along most rays is where they leave.
+TEST_F(PolyvolTest, CameraInsideTheLightVolumeMatchesTheReference) {
+    viz::scene::Scene scene = viz::scene::makeBuiltinScene("grate");
+    scene.camera = lookAtCamera(scene.camera, {0.3, 4.0, 0.5}, {0.0, 0.0, -1.0});
+    const viz::FrameOutput reference = render(scene, "reference", {}, 160, 120);
+    const viz::FrameOutput out =
+        render(scene, "polyvol", {{"shadow_map", 1024}}, 160, 120, -1, {"polyvol.crossings"});
+    EXPECT_TRUE(allFinite(out.airlight));
+    const double e = relativeL2(out.airlight, reference.airlight);
+    std::printf("polyvol camera inside the cone: relative L2 = %.4f\n", e);
+    EXPECT_LT(e, 0.03);
+    // Every ray starts inside: the signed crossing count is 1 everywhere.
+    const viz::Intermediate* crossings = find(out, "polyvol.crossings");
+    ASSERT_TRUE(crossings && crossings->image);
+    EXPECT_EQ(viz::polyvol::countCrackPixels(*crossings->image, 1).expected, 1);
+}
+
+// The eye just outside the cone, 0.18 from the light, with the near plane 0.3 away: rays enter the cone
+// before the near plane, where the airlight is large. Depth clamping keeps those crossings (without it
+// the entering faces are clipped away and the crossing count is off for most pixels).
+TEST_F(PolyvolTest, VolumeFacesBeforeTheNearPlaneStillCount) {
+    viz::scene::Scene scene = viz::scene::makeBuiltinScene("grate");
+    scene.camera = lookAtCamera(scene.camera, {0.15, 5.9, 0.0}, {-0.5, 3.0, -0.3});
+    scene.camera.znear = 0.3;
+    const viz::FrameOutput reference = render(scene, "reference", {}, 160, 120);
+    const viz::FrameOutput out = render(scene, "polyvol", {{"shadow_map", 1024}}, 160, 120, -1, {"polyvol.crossings"});
+    EXPECT_TRUE(allFinite(out.airlight));
+    EXPECT_EQ(crackPixels(out), 0);
+    const double e = relativeL2(out.airlight, reference.airlight);
+    std::printf("polyvol cone wall before the near plane: relative L2 = %.4f\n", e);
+    EXPECT_LT(e, 0.03);
+    if (std::getenv("POLYVOL_DUMP")) {
+        viz::writeImage(out.airlight, "/tmp/pv_near.png", 1.0f);
+        viz::writeImage(reference.airlight, "/tmp/ref_near.png", 1.0f);
+    }
+}
+
+// ---- crack detector ----
+
+TEST_F(PolyvolTest, CrackDetectorFindsNoHoleOnSpotScenes) {
+    for (const char* name : {"grate", "stained-glass"}) {
+        const viz::scene::Scene scene = viz::scene::makeBuiltinScene(name);
+        const viz::FrameOutput out =
+            render(scene, "polyvol", {{"shadow_map", 256}, {"crack_check", 1}}, 160, 120, 2, {"polyvol.crossings"});
+        EXPECT_EQ(crackPixels(out), 0) << name;
+        EXPECT_TRUE(allFinite(out.airlight)) << name;
+    }
+}
+
+TEST_F(PolyvolTest, CrackDetectorFindsNoHoleOnAnOmniLightWithCubeSeams) {
+    const viz::scene::Scene scene = omniGrate();
+    for (int n : {16, 128}) {
+        const viz::FrameOutput out =
+            render(scene, "polyvol", {{"shadow_map", n}, {"crack_check", 1}}, 160, 120, 2, {"polyvol.crossings"});
+        EXPECT_EQ(crackPixels(out), 0) << "shadow_map " << n;
+    }
+    // Inside the cube volume every ray leaves it once; the second view looks at a cube corner, where
+    // three faces and three seam strips meet.
+    for (const auto& [eye, target] : {std::pair<glm::dvec3, glm::dvec3>{{0.3, 4.0, 0.5}, {1.0, 5.0, -1.0}},
+                                      std::pair<glm::dvec3, glm::dvec3>{{0.0, 6.2, 0.0}, {1.0, 7.2, 1.0}}}) {
+        viz::scene::Scene inside = scene;
+        inside.camera = lookAtCamera(scene.camera, eye, target);
+        for (int n : {16, 64}) {
+            const viz::FrameOutput out =
+                render(inside, "polyvol", {{"shadow_map", n}, {"crack_check", 1}}, 160, 120, 2, {"polyvol.crossings"});
+            EXPECT_EQ(crackPixels(out), 0) << "shadow_map " << n;
+        }
+    }
+}
+
+// The detector is not blind: leaving out part of the closure opens the volume and it reports pixels.
+TEST_F(PolyvolTest, CrackDetectorSeesAnOpenVolume) {
+    viz::scene::Scene scene = omniGrate();
+    // Looking from beside the light toward a cube corner, where three faces and their seams meet.
+    scene.camera = lookAtCamera(scene.camera, {0.0, 6.2, 0.0}, {1.0, 7.2, 1.0});
+    const std::int64_t grid = viz::polyvol::gridTriangleCount(16, 6);
+    const viz::FrameOutput out = render(
+        scene, "polyvol", {{"shadow_map", 16}, {"crack_check", 1}, {"draw_triangles", double(grid)}}, 160, 120, 2,
+        {"polyvol.crossings"});
+    EXPECT_GT(crackPixels(out), 0);
+    if (std::getenv("POLYVOL_DUMP"))
+        for (const auto& i : out.intermediates)
+            if (i.id == "polyvol.crossings" && i.image) {
+                viz::Image a(i.image->width, i.image->height, 3);
+                for (int y = 0; y < a.height; ++y)
+                    for (int x = 0; x < a.width; ++x) a.at(x, y, 0) = 0.5f + 0.25f * i.image->at(x, y, 1);
+                viz::writeImage(a, "/tmp/pv_open.png", 1.0f);
+            }
+}
+
+TEST_F(PolyvolTest, OmniLightMatchesTheReference) {
+    const viz::scene::Scene scene = omniGrate();
+    const viz::FrameOutput reference = render(scene, "reference", {}, 160, 120);
+    const viz::FrameOutput out = render(scene, "polyvol", {{"shadow_map", 512}}, 160, 120);
+    EXPECT_TRUE(allFinite(out.airlight));
+    const double e = relativeL2(out.airlight, reference.airlight);
+    std::printf("polyvol omni grate shadow_map=512: relative L2 = %.4f\n", e);
+    EXPECT_LT(e, 0.03);
+}
+
+TEST_F(PolyvolTest, PlanLeavesOutWhatTheSceneDoesNotNeed) {
+    auto technique = viz::makeTechnique("polyvol");
+    const viz::Settings settings = viz::completeSettings(*technique, {});
+    auto feature = [](const viz::Plan& p, const std::string& name) {
+        for (const auto& f : p.features)
+            if (f.feature == name) return f;
+        ADD_FAILURE() << "no feature " << name;
+        return viz::FeaturePlan{};
+    };
+    const viz::Plan grate = technique->plan(viz::scene::makeBuiltinScene("grate"), settings);
+    EXPECT_TRUE(feature(grate, "SPOT").enabled);
+    EXPECT_FALSE(feature(grate, "COOKIE").enabled);
+    EXPECT_NE(feature(grate, "COOKIE").why.find("LIGHTS_NO_COOKIE"), std::string::npos);
+    EXPECT_NE(feature(grate, "SHADOW_MAPS_CUBE").why.find("SHADOW_NO_CUBE"), std::string::npos);
+    EXPECT_FALSE(feature(grate, "AIRLIGHT_LUT").enabled);
+    const viz::Plan glass = technique->plan(viz::scene::makeBuiltinScene("stained-glass"), settings);
+    EXPECT_TRUE(feature(glass, "COOKIE").enabled);
+    const viz::Plan colonnade = technique->plan(viz::scene::makeBuiltinScene("colonnade"), settings);
+    EXPECT_FALSE(feature(colonnade, "SPOT").enabled);
+    EXPECT_NE(feature(colonnade, "SPOT").why.find("LIGHTS_NO_SPOT"), std::string::npos);
+    EXPECT_TRUE(feature(technique->plan(omniGrate(), settings), "SHADOW_MAPS_CUBE").enabled);
+}
+
+// Exactness with respect to the shadow map: raymarch with many samples, reading the same map the way
+// the mesh is built (shadow_lookup=mesh: linear across each triangle, no bias), agrees with polyvol.
+TEST_F(PolyvolTest, AgreesWithRaymarchOnTheSameMeshReconstruction) {
+    const viz::scene::Scene scene = viz::scene::makeBuiltinScene("grate");
+    const viz::FrameOutput march = render(
+        scene, "raymarch", {{"samples", 4096}, {"shadow_map", 256}, {"shadow_lookup", 1}}, 80, 60);
+    const viz::FrameOutput out = render(scene, "polyvol", {{"shadow_map", 256}, {"spot_pieces", 32}}, 80, 60);
+    EXPECT_TRUE(allFinite(out.airlight));
+    const double e = relativeL2(out.airlight, march.airlight);
+    const viz::FrameOutput nearest =
+        render(scene, "raymarch", {{"samples", 4096}, {"shadow_map", 256}}, 80, 60);
+    std::printf("polyvol vs raymarch (4096 samples, 256^2 map) relative L2: mesh lookup %.4f, nearest %.4f\n", e,
+                relativeL2(out.airlight, nearest.airlight));
+    EXPECT_LT(e, 0.01);
+}
+
+// The lookup table against the closed form it was built from, on the same mesh: the maximum relative
+// error over pixels carrying at least 1e-3 of the image's peak airlight (below that, relative errors of
+// a few ulps of a near-zero signed sum say nothing about the table).
+TEST_F(PolyvolTest, LookupTableAgreesWithTheClosedForm) {
+    for (const char* name : {"grate"}) {
+        const viz::scene::Scene scene = viz::scene::makeBuiltinScene(name);
+        const viz::FrameOutput analytic = render(scene, "polyvol", {{"shadow_map", 256}}, 80, 60);
+        const viz::FrameOutput lut =
+            render(scene, "polyvol", {{"shadow_map", 256}, {"airlight", 1}}, 80, 60, -1,
+                   {"polyvol.lut", "polyvol.lut_error"});
+        EXPECT_TRUE(allFinite(lut.airlight));
+        ASSERT_NE(find(lut, "polyvol.lut"), nullptr);
+        // The debugger's per-pixel table error of the unshadowed [0, d] (measured max 1.1e-3 on grate,
+        // 2.0e-3 on stained-glass, 2.2e-3 on tv-room at 80x60).
+        const viz::Intermediate* tableError = find(lut, "polyvol.lut_error");
+        ASSERT_TRUE(tableError && tableError->image);
+        float worstSegment = 0.0f;
+        for (float v : tableError->image->pixels) worstSegment = std::max(worstSegment, v);
+        std::printf("polyvol %s lookup table vs closed form on [0, d]: max relative %.2e\n", name, worstSegment);
+        EXPECT_LT(worstSegment, 3e-3);
+        float peak = 0.0f;
+        for (float v : analytic.airlight.pixels) peak = std::max(peak, v);
+        double maxRelative = 0.0;
+        for (std::size_t i = 0; i < analytic.airlight.pixels.size(); ++i) {
+            const double a = analytic.airlight.pixels[i];
+            if (a < 1e-3 * peak) continue;
+            maxRelative = std::max(maxRelative, std::fabs(lut.airlight.pixels[i] - a) / a);
+        }
+        const double l2 = relativeL2(lut.airlight, analytic.airlight);
+        std::printf("polyvol %s airlight=lut vs analytic: max relative %.2e, relative L2 %.2e\n", name, maxRelative,
+                    l2);
+        // Measured 2.1e-3 (grate) and 3.7e-3 (stained-glass) with the 512 x 256 table.
+        EXPECT_LT(maxRelative, 5e-3) << name;
+    }
+}
+
+namespace {
+
+std::int64_t trianglesDrawn(const viz::FrameOutput& out) {
+    const viz::Intermediate* mesh = nullptr;
+    for (const auto& i : out.intermediates)
+        if (i.id == "polyvol.mesh") mesh = &i;
+    EXPECT_NE(mesh, nullptr);
+    return mesh ? std::stoll(mesh->note) : -1;
+}
+
+}  // namespace
+
+// The figure: on colonnade with a 2048^2 map, adaptive tessellation gives the static image within
+// 1e-3 relative L2 with fewer triangles; the adaptive mesh is watertight (no T-junction cracks).
+TEST_F(PolyvolTest, AdaptiveTessellationMatchesStaticWithFewerTriangles) {
+    const viz::scene::Scene scene = viz::scene::makeBuiltinScene("colonnade");
+    const viz::FrameOutput fixed = render(scene, "polyvol", {{"shadow_map", 2048}}, 160, 120);
+    const viz::FrameOutput adaptive =
+        render(scene, "polyvol", {{"shadow_map", 2048}, {"tessellation", 1}}, 160, 120, -1, {"polyvol.crossings"});
+    EXPECT_TRUE(allFinite(adaptive.airlight));
+    const double e = relativeL2(adaptive.airlight, fixed.airlight);
+    const std::int64_t nStatic = trianglesDrawn(fixed), nAdaptive = trianglesDrawn(adaptive);
+    std::printf("colonnade 2048^2: static %lld triangles, adaptive %lld; relative L2 adaptive vs static %.2e\n",
+                (long long)nStatic, (long long)nAdaptive, e);
+    EXPECT_LT(e, 1e-3);
+    EXPECT_LT(nAdaptive, nStatic);
+    const viz::FrameOutput cracks = render(
+        scene, "polyvol", {{"shadow_map", 2048}, {"tessellation", 1}, {"crack_check", 1}}, 160, 120, 2,
+        {"polyvol.crossings"});
+    EXPECT_EQ(crackPixels(cracks), 0);
+}
+
+TEST_F(PolyvolTest, CrackDetectorFindsNoHoleWithAdaptiveTessellation) {
+    for (const char* name : {"grate", "stained-glass", "colonnade"}) {
+        const viz::scene::Scene scene = viz::scene::makeBuiltinScene(name);
+        for (double threshold : {1e-4, 1e-2}) {
+            const viz::FrameOutput out =
+                render(scene, "polyvol",
+                       {{"shadow_map", 256}, {"tessellation", 1}, {"threshold", threshold}, {"crack_check", 1}},
+                       160, 120, 2, {"polyvol.crossings"});
+            EXPECT_EQ(crackPixels(out), 0) << name << " threshold " << threshold;
+        }
+    }
+}
+
+// Benchmark (not run by CTest: DISABLED_; run with --gtest_also_run_disabled_tests in a Release build):
+// static vs adaptive tessellation on colonnade and forest, shadow maps 256^2 .. 4096^2, 160x120: volume
+// stage time, triangles drawn, relative L2 of L_air against the reference.
+TEST_F(PolyvolTest, DISABLED_BenchmarkStaticVsAdaptive) {
+    for (const char* name : {"colonnade", "forest"}) {
+        const viz::scene::Scene scene = viz::scene::makeBuiltinScene(name);
+        const viz::FrameOutput reference = render(scene, "reference", {}, 160, 120);
+        for (int n : {256, 512, 1024, 2048, 4096}) {
+            for (int adaptive : {0, 1}) {
+                const viz::FrameOutput out =
+                    render(scene, "polyvol", {{"shadow_map", n}, {"tessellation", adaptive}}, 160, 120);
+                double volumeMs = 0.0;
+                for (const auto& st : out.timing.stages)
+                    if (st.stage == "polyvol.volume") volumeMs = st.milliseconds;
+                std::printf("%-9s %4d^2 %-8s volume %9.1f ms  triangles %9lld  rel L2 vs reference %.4f\n", name, n,
+                            adaptive ? "adaptive" : "static", volumeMs, (long long)trianglesDrawn(out),
+                            relativeL2(out.airlight, reference.airlight));
+            }
+        }
+    }
+}
+
+// Precision study (DISABLED_: a measurement, run on demand): the float32 signed sum against the reference
+// in stiff cases, with the terms taken from the eye (origin=eye) or from the surface (origin=surface).
+// Cancellation ratio = (positive + negative) / |total| per pixel (its maximum over pixels with at least
+// 1e-3 of the peak airlight).
+TEST_F(PolyvolTest, DISABLED_PrecisionStudy) {
+    struct Case {
+        const char* label;
+        viz::scene::Scene scene;
+        int map;
+    };
+    std::vector<Case> cases;
+    cases.push_back({"grate", viz::scene::makeBuiltinScene("grate"), 1024});
+    viz::scene::Scene bright = viz::scene::makeBuiltinScene("grate");
+    for (auto& l : bright.lights) l.intensity *= 1e4;
+    // Above the light looking down past it: rays graze the light (large L(0, x) from its glow) and then
+    // cross the bars' shadows many times.
+    bright.camera = lookAtCamera(bright.camera, {0.02, 9.0, 0.15}, {0.0, 0.0, 0.0});
+    cases.push_back({"grate, light x1e4 grazed by the rays", bright, 1024});
+    cases.push_back({"forest", viz::scene::makeBuiltinScene("forest"), 1024});
+    for (const Case& c : cases) {
+        const viz::FrameOutput reference = render(c.scene, "reference", {}, 160, 120);
+        std::vector<viz::Image> results;
+        for (int origin : {0, 1}) {
+            const viz::FrameOutput out =
+                render(c.scene, "polyvol", {{"shadow_map", c.map}, {"origin", origin}}, 160, 120, -1,
+                       {"polyvol.positive", "polyvol.negative", "polyvol.crossings"});
+            const viz::Image& pos = *find(out, "polyvol.positive")->image;
+            const viz::Image& neg = *find(out, "polyvol.negative")->image;
+            const viz::Image& cross = *find(out, "polyvol.crossings")->image;
+            float peak = 0.0f, maxCross = 0.0f;
+            for (float v : out.airlight.pixels) peak = std::max(peak, v);
+            for (int y = 0; y < cross.height; ++y)
+                for (int x = 0; x < cross.width; ++x) maxCross = std::max(maxCross, cross.at(x, y, 0));
+            double ratio = 0.0;
+            for (int y = 0; y < pos.height; ++y)
+                for (int x = 0; x < pos.width; ++x)
+                    for (int ch = 0; ch < 3; ++ch) {
+                        const double t = out.airlight.at(x, y, ch);
+                        if (t < 1e-3 * peak) continue;
+                        ratio = std::max(ratio, (double(pos.at(x, y, ch)) + neg.at(x, y, ch)) / t);
+                    }
+            std::printf("%-34s origin=%-7s rel L2 vs reference %.5f  max cancellation %.3g  max crossings %.0f\n",
+                        c.label, origin ? "surface" : "eye", relativeL2(out.airlight, reference.airlight), ratio,
+                        maxCross);
+            results.push_back(out.airlight);
+        }
+        std::printf("%-34s eye vs surface: relative L2 %.3g\n", c.label, relativeL2(results[0], results[1]));
+    }
+}
+
+// The wireframe intermediate shows both kinds of faces (green: rays leave, red: rays enter) and the
+// mesh note starts with the triangle count the plan also predicts for a static mesh.
+TEST_F(PolyvolTest, WireframeShowsLeavingAndEnteringFaces) {
+    const viz::scene::Scene scene = viz::scene::makeBuiltinScene("grate");
+    const viz::FrameOutput out =
+        render(scene, "polyvol", {{"shadow_map", 32}, {"wireframe", 1}}, 160, 120, 2, {"polyvol.mesh"});
+    const viz::Intermediate* mesh = find(out, "polyvol.mesh");
+    ASSERT_TRUE(mesh && mesh->image);
+    int green = 0, red = 0;
+    for (int y = 0; y < mesh->image->height; ++y)
+        for (int x = 0; x < mesh->image->width; ++x) {
+            const float r = mesh->image->at(x, y, 0), g = mesh->image->at(x, y, 1);
+            green += g > 0.5f && r < 0.5f;
+            red += r > 0.5f && g < 0.5f;
+        }
+    EXPECT_GT(green, 100);
+    EXPECT_GT(red, 100);
+    const std::int64_t expected = viz::polyvol::gridTriangleCount(32, 1) + 3 * 4 * 31;
+    EXPECT_EQ(trianglesDrawn(out), expected);
+    auto technique = viz::makeTechnique("polyvol");
+    const viz::Plan plan = technique->plan(scene, viz::completeSettings(*technique, {{"shadow_map", 32}}));
+    EXPECT_EQ(plan.stages[2].why.rfind(std::to_string(expected), 0), 0u) << plan.stages[2].why;
+}
+
+// Stepping the refinement: stopping at a coarser level leaves fewer, larger quads (and the level map
+// holds no level below the stop).
+TEST_F(PolyvolTest, StoppingTheRefinementAtALevelGivesACoarserMesh) {
+    const viz::scene::Scene scene = viz::scene::makeBuiltinScene("colonnade");
+    std::vector<std::int64_t> counts;
+    for (int stop : {-1, 2, 4}) {
+        const viz::FrameOutput out =
+            render(scene, "polyvol", {{"shadow_map", 256}, {"tessellation", 1}, {"stop_level", stop}}, 64, 48, 2,
+                   {"polyvol.tess_levels"});
+        counts.push_back(trianglesDrawn(out));
+        const viz::Intermediate* levels = find(out, "polyvol.tess_levels");
+        ASSERT_TRUE(levels && levels->image);
+        float lowest = 1.0f;
+        for (int y = 1; y + 1 < levels->image->height; ++y)  // the border ring is always at level 0
+            for (int x = 1; x + 1 < levels->image->width; ++x) lowest = std::min(lowest, levels->image->at(x, y, 0));
+        if (stop > 0) {
+            EXPECT_GE(lowest * 16.0f, float(stop) - 0.5f) << "stop_level " << stop;
+        }
+    }
+    EXPECT_GT(counts[0], counts[1]);
+    EXPECT_GT(counts[1], counts[2]);
+}
+
+// A coloured cookie (stained-glass): the volume follows the cookie's dark texels and the colour is taken
+// per angular piece, about one piece per cookie texel the segment sweeps.
+TEST_F(PolyvolTest, MatchesTheReferenceUnderAColouredCookie) {
+    const viz::scene::Scene scene = viz::scene::makeBuiltinScene("stained-glass");
+    const viz::FrameOutput reference = render(scene, "reference", {}, 80, 60);
+    const viz::FrameOutput out = render(scene, "polyvol", {{"shadow_map", 512}}, 80, 60);
+    EXPECT_TRUE(allFinite(out.airlight));
+    const double e = relativeL2(out.airlight, reference.airlight);
+    std::printf("polyvol stained-glass 512^2, 80x60: relative L2 = %.4f\n", e);
+    EXPECT_LT(e, 0.03);
+}

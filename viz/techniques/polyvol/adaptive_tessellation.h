@@ -1,0 +1,56 @@
+// Adaptive tessellation of a 2D light volume grid (Billeter et al. 2010, section 4.1) on the GPU:
+//   1. Laplacian edge map of the vertex distances (tess_edges.comp);
+//   2. mip-like hierarchy of "needs subdivision" flags with the one-level balance rule (tess_levels.comp);
+//   3. refinement from a coarse grid of 16 x 16 quads, one compute step per level with indirect dispatch,
+//      leaves emitting one of 16 T-junction-free patterns (<= 6 triangles) (tess_refine.comp);
+//   4. an indirect draw of the emitted vertex keys (light_volume_mesh.h, key stride N + 1).
+// N must be a power of two. The grid is the virtual (N + 1)^2 vertex grid whose last row and column are
+// clamped onto the map's last texel (zero-area slivers), so that quads of 2^k texels tile it; the border
+// ring stays at the finest level, so gridClosure(N + 1) closes it without T-junctions.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "gl/buffer.h"
+#include "gl/program.h"
+#include "gl/texture.h"
+#include "techniques/polyvol/volume_grid.h"
+
+namespace viz::polyvol {
+
+class AdaptiveTessellation {
+public:
+    // Coarse grid: quads of 2^(log2 N - kCoarseSteps) texels (16 x 16 quads).
+    static constexpr int kCoarseSteps = 4;
+
+    // Builds the mesh of one light. The light buffer and shadow maps must be bound. threshold: Laplacian
+    // relative to the map's range above which a vertex needs the finest level; stopLevel: quads of this
+    // level are leaves (stepping; -1 = refine fully).
+    // defines: the light feature switches of the volume program (LIGHTS_NO_SPOT, ...), key: their id.
+    void build(const VolumeGrid& grid, double threshold, int stopLevel, const gl::ShaderDefines& defines,
+               const std::string& definesKey);
+
+    // The emitted keys (bind at kFirstFreeSsboBinding) and the indirect draw (GL_DRAW_INDIRECT_BUFFER at
+    // drawOffset()).
+    const gl::Buffer& keys() const { return mKeys; }
+    const gl::Buffer& counters() const { return mCounters; }
+    static std::size_t drawOffset();
+    // Read back after build(): triangles emitted and whether a buffer overflowed (the mesh is then cut).
+    std::int64_t triangles() const { return mTriangles; }
+    bool overflowed() const { return mOverflow; }
+    const gl::Texture& edgeMap() const { return mEdges; }
+    const gl::Texture& levelMap() const { return mLevels; }
+    int levels() const { return mLevelCount; }
+
+private:
+    gl::Program mEdgesProgram, mLevelsProgram, mRefineProgram, mArgsProgram;
+    std::string mEdgesKey;
+    gl::Texture mEdges, mFlags, mLevels;
+    gl::Buffer mCounters, mListA, mListB, mKeys;
+    int mSize = 0, mLevelCount = 0;
+    std::int64_t mTriangles = 0;
+    bool mOverflow = false;
+};
+
+}  // namespace viz::polyvol

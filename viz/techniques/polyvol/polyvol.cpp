@@ -1,0 +1,704 @@
+#include "techniques/polyvol/polyvol.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <memory>
+#include <string>
+
+#include "core/error.h"
+#include "gl/buffer.h"
+#include "gl/framebuffer.h"
+#include "gl/program.h"
+#include "gl/readback.h"
+#include "gl/stage_clock.h"
+#include "gl/texture.h"
+#include "gl/vertex_array.h"
+#include "render/eye_space.h"
+#include "render/host_device.h"
+#include "render/intermediates.h"
+#include "render/scene_view.h"
+#include "scene/camera.h"
+#include "techniques/polyvol/adaptive_tessellation.h"
+#include "techniques/polyvol/airlight_lut.h"
+#include "techniques/polyvol/crack_check.h"
+#include "techniques/polyvol/light_volume_mesh.h"
+#include "techniques/polyvol/volume_grid.h"
+
+namespace viz {
+namespace {
+
+// ---- ids (stable: lessons and tests use them) ----
+constexpr const char* kStageVolume = "polyvol.volume";
+constexpr const char* kMesh = "polyvol.mesh";
+constexpr const char* kCrossings = "polyvol.crossings";
+constexpr const char* kPositive = "polyvol.positive";
+constexpr const char* kNegative = "polyvol.negative";
+constexpr const char* kTotal = "polyvol.total";
+constexpr const char* kCracks = "polyvol.cracks";
+constexpr const char* kLut = "polyvol.lut";
+constexpr const char* kLutError = "polyvol.lut_error";
+constexpr const char* kEdgeMap = "polyvol.edge_map";
+constexpr const char* kTessLevels = "polyvol.tess_levels";
+
+// Lookup table size (|u| x tau_h samples), built from the double closed form at first use.
+constexpr int kLutWidth = 512, kLutHeight = 256;
+
+enum StageIndex { kShadowMapsIndex = 0, kSurfaceIndex = 1, kVolumeIndex = 2, kComposeIndex = 3 };
+
+using polyvol::kModeCube;
+using polyvol::kModeDirectional;
+using polyvol::kModeSpot;
+
+// Shader permutations: feature -> {define when enabled, define when disabled}. Others are run-time.
+const std::map<std::string, std::pair<const char*, const char*>> kDefines = {
+    {"SPOT", {nullptr, "LIGHTS_NO_SPOT"}},
+    {"COOKIE", {nullptr, "LIGHTS_NO_COOKIE"}},
+    {"SHADOW_MAPS_CUBE", {nullptr, "SHADOW_NO_CUBE"}},
+    {"SHADOW_MAPS_2D", {nullptr, "SHADOW_NO_2D"}},
+    {"AIRLIGHT_LUT", {"AIRLIGHT_LUT", nullptr}},
+};
+
+class PolyvolTechnique final : public Technique {
+public:
+    PolyvolTechnique() {
+        mParams = {
+            {"tessellation", "static: one vertex per shadow-map texel; adaptive: refined where the Laplacian is large",
+             0, 0, 1, true, {"static", "adaptive"}},
+            {"airlight", "analytic: stable closed form (common/airlight.glsl); lut: 2D lookup table (supplement)",
+             0, 0, 1, true, {"analytic", "lut"}},
+            {"threshold", "adaptive: Laplacian of the vertex distances, relative to the map's depth range, above which a "
+             "vertex needs the finest level", 1e-4, 0, 1e3, false},
+            {"spot_pieces", "spot and VPL lights: equal-angle pieces per penumbra (or lobe) part of a segment", 8, 1, 256,
+             true},
+            {"crack_check", "1: constant integrand; the signed crossing count per pixel reveals holes", 0, 0, 1, true},
+            {"draw_triangles", "stepping: draw only the first N triangles of each light volume (0: all)", 0, 0, 1e12,
+             true},
+            {"origin", "eye: each crossing adds +-L(0, x); surface: -+L(x, d), plus c L(0, d) once per pixel "
+             "(crossings clamped to d add exactly 0)", 0, 0, 1, true, {"eye", "surface"}},
+            {"wireframe", "1: also draw the volume mesh as a wireframe (polyvol.mesh): 1 from the camera, 2 from the "
+             "first 2D light", 0, 0, 2, true},
+            {"stop_level", "adaptive stepping: quads of this level are not refined further (-1: refine fully)", -1, -1,
+             13, true},
+            {"cookie_mask", "cookie texels darker than this (brightest channel, linear) close the volume", 1.0 / 512.0,
+             0, 1, false},
+        };
+        for (ParamInfo& p : render::SceneViewPasses::params()) mParams.push_back(std::move(p));
+        mStages = {
+            render::SceneViewPasses::shadowStage("polyvol"),
+            render::SceneViewPasses::surfaceStage("polyvol"),
+            {kStageVolume, "Light volume",
+             "closed mesh from the shadow map, drawn with signed additive airlight terms at each crossing",
+             {"tessellation", "airlight", "threshold", "spot_pieces", "crack_check", "draw_triangles", "origin",
+              "wireframe", "stop_level", "cookie_mask"},
+             {kEdgeMap, kTessLevels, kMesh, kCrossings, kPositive, kNegative, kTotal, kCracks, kLut, kLutError},
+             1},
+            render::SceneViewPasses::composeStage("polyvol"),
+        };
+    }
+
+    std::string id() const override { return "polyvol"; }
+    std::string description() const override {
+        return "polygonal light volumes from the shadow map, signed airlight per crossing (Billeter 2010)";
+    }
+    const std::vector<StageInfo>& stages() const override { return mStages; }
+    const std::vector<ParamInfo>& params() const override { return mParams; }
+    bool needsGl() const override { return true; }
+
+    Plan plan(const scene::Scene& scene, const Settings& settings) const override {
+        Plan p;
+        for (const StageInfo& s : mStages) p.stages.push_back({s.id, true, ""});
+        const bool constant = settings.at("crack_check") != 0.0;
+        if (scene.medium.sigma_s == 0.0 && !constant) {
+            p.stages[kVolumeIndex].runs = false;
+            p.stages[kVolumeIndex].why = "sigma_s = 0: the medium scatters nothing, L_air = 0";
+        } else {
+            const int n = int(settings.at("shadow_map"));
+            std::int64_t triangles = 0;
+            // VPL cubes are capped at 256^2 per face (render::SceneViewPasses).
+            const int vpl = std::min(n, 256);
+            const int areaSamples = int(settings.at("area_samples"));
+            auto cube = [](int m) { return gridTriangleCountFor(m, 6) + 12 * 2 * std::int64_t(m - 1) + 8; };
+            for (const scene::Light& l : scene.lights) {
+                if (l.type == scene::LightType::Point) {
+                    triangles += cube(n);
+                } else if (l.type == scene::LightType::Area) {
+                    triangles += std::int64_t(areaSamples) * areaSamples * cube(vpl);
+                } else {
+                    triangles += gridTriangleCountFor(n, 1) + 3 * 4 * std::int64_t(n - 1);
+                }
+            }
+            const bool adaptive = settings.at("tessellation") != 0.0;
+            p.stages[kVolumeIndex].why =
+                adaptive ? "adaptive tessellation: at most " + std::to_string(triangles) +
+                               " triangles (the static count; the run's count is in polyvol.mesh), " +
+                               std::to_string(n) + "^2 texels per map"
+                         : std::to_string(triangles) + " triangles (static tessellation, " + std::to_string(n) +
+                               "^2 texels per map)";
+        }
+        const bool hasSpot = render::hasLightOfType(scene, scene::LightType::Spot);
+        const bool hasCookie = std::any_of(scene.lights.begin(), scene.lights.end(), [](const scene::Light& l) {
+            return l.type == scene::LightType::Spot && l.cookie >= 0;
+        });
+        const bool hasPoint = render::hasLightOfType(scene, scene::LightType::Point);
+        const bool maps2D = hasSpot || render::hasLightOfType(scene, scene::LightType::Directional);
+        const bool lut = settings.at("airlight") != 0.0;
+        p.features.push_back({"SPOT", hasSpot,
+                              hasSpot ? "spot cone: volume follows the cone; segments clipped to the cones, " +
+                                            std::to_string(int(settings.at("spot_pieces"))) +
+                                            " equal-angle pieces per penumbra part"
+                                      : "no spot light in the scene"});
+        p.features.push_back({"COOKIE", hasCookie,
+                              hasCookie ? "cookie: dark texels close the volume; colour per angular piece, about one "
+                                          "piece per cookie texel (at most 64)"
+                                        : "no spot light has a cookie"});
+        const bool hasArea = render::hasLightOfType(scene, scene::LightType::Area);
+        p.features.push_back({"SHADOW_MAPS_CUBE", hasPoint || hasArea,
+                              hasPoint || hasArea
+                                  ? "point lights / area-light VPLs: six grids from the cube map, stitched at the seams"
+                                  : "no point or area light: no cube-map grids or seams"});
+        p.features.push_back({"SHADOW_MAPS_2D", maps2D,
+                              maps2D ? "spot / directional lights: one grid each" : "no spot or directional light"});
+        p.features.push_back({"AIRLIGHT_LUT", lut,
+                              lut ? "airlight=lut: 2D table of the unit point-light integral (supplement)"
+                                  : "airlight=analytic: closed form of common/airlight.glsl, no table"});
+        const int areaSamples = int(settings.at("area_samples"));
+        p.features.push_back({"AREA_VPLS", hasArea,
+                              hasArea ? "each area light -> " + std::to_string(areaSamples * areaSamples) +
+                                            " virtual point lights, each a cube light volume (cosine lobe over "
+                                            "equal-angle pieces)"
+                                      : "no area light in the scene"});
+        const bool adaptive = settings.at("tessellation") != 0.0;
+        // Measured (README, benchmark): adaptive paid off from 256^2 on colonnade and from 512^2 on forest.
+        const bool pays = int(settings.at("shadow_map")) >= 512;
+        const std::string payoff = pays ? "; measured to pay off at this size"
+                                        : "; below 512^2 it did not pay off on forest (measured), static may be faster";
+        p.features.push_back({"ADAPTIVE", adaptive && maps2D,
+                              adaptive ? (maps2D ? "tessellation=adaptive: edge map, flag hierarchy, refinement from 16^2 "
+                                                   "coarse quads, 16 patterns, indirect draw (2D maps; cubes stay static)" +
+                                                       payoff
+                                                 : "tessellation=adaptive but no 2D map: cubes stay static")
+                                       : "tessellation=static: one vertex per texel" +
+                                             std::string(maps2D && pays ? " (adaptive measured faster from 512^2)" : "")});
+        for (FeaturePlan& f : p.features) {
+            const auto it = kDefines.find(f.feature);
+            const char* define = it == kDefines.end() ? nullptr : (f.enabled ? it->second.first : it->second.second);
+            if (define) f.why += std::string(f.enabled ? " (compiled in: " : " (compiled out: ") + define + ")";
+        }
+        return p;
+    }
+
+    FrameOutput run(const FrameInput& input) override {
+        const scene::Scene& scene = *input.scene;
+        const Settings& s = input.settings;
+        FrameOutput out;
+        out.plan = plan(scene, s);
+        out.timing.clock = gl::StageClock::method();
+        const int stop = input.stopAfterStage < 0 ? kComposeIndex : input.stopAfterStage;
+        gl::StageClock clock;
+
+        clock.begin();
+        mView.buildShadows(scene, s, out.intermediates, "polyvol");
+        out.timing.stages.push_back({mStages[kShadowMapsIndex].id, clock.endMilliseconds()});
+        out.lastStageRun = kShadowMapsIndex;
+        if (stop == kShadowMapsIndex) return out;
+
+        clock.begin();
+        mView.renderSurface(scene, input.width, input.height, out.intermediates, "polyvol");
+        out.timing.stages.push_back({mStages[kSurfaceIndex].id, clock.endMilliseconds()});
+        out.lastStageRun = kSurfaceIndex;
+        if (stop == kSurfaceIndex) return out;
+
+        clock.begin();
+        allocateTargets(input.width, input.height);
+        const glm::vec4 zero(0.0f);
+        mTotal.clear(zero);
+        mPositive.clear(zero);
+        mNegative.clear(zero);
+        mCrossings.clear(zero);
+        std::int64_t triangles = 0;
+        const bool lut = s.at("airlight") != 0.0;
+        if (lut) ensureLut(scene.medium.g);
+        if (out.plan.stages[kVolumeIndex].runs) triangles = drawVolumes(scene, input, out.plan);
+        clampAirlight();
+        out.timing.stages.push_back({kStageVolume, clock.endMilliseconds()});
+        publishVolume(out, s, triangles);
+        if (lut) {
+            out.intermediates.push_back(render::textureIntermediate(
+                kLut, "Airlight lookup table",
+                "R: A = tau_h int_{-200}^{-|u|} f, G: B = tau_h e^{|u|+rho} int_{|u|}^inf f; x: log |u|, y: log tau_h "
+                "(1e-5 .. 200), g = " + std::to_string(scene.medium.g) + ", built in " + std::to_string(mLutMs) + " ms",
+                "", ViewKind::Color, 0.0f, 2.0f, mLut));
+            const float worst = lutError(input);
+            out.intermediates.push_back(render::textureIntermediate(
+                kLutError, "Lookup table error",
+                "|lut - analytic| / analytic of the unshadowed [0, d] per pixel (worst light); max " +
+                    std::to_string(worst),
+                "", ViewKind::Scalar, 0.0f, 0.01f, mLutError));
+        }
+        out.lastStageRun = kVolumeIndex;
+        if (stop == kVolumeIndex) return out;
+
+        clock.begin();
+        out.final = mView.compose(scene, mAirlight, out.intermediates, "polyvol");
+        out.timing.stages.push_back({mStages[kComposeIndex].id, clock.endMilliseconds()});
+        out.lastStageRun = kComposeIndex;
+        return out;
+    }
+
+private:
+    static std::int64_t gridTriangleCountFor(int n, int faces) { return polyvol::gridTriangleCount(n, faces); }
+
+    void allocateTargets(int width, int height) {
+        if (mTotal && mTotal.size().x == width && mTotal.size().y == height) return;
+        auto make = [&](GLenum format, const char* label) {
+            return gl::Texture::create(
+                {.target = GL_TEXTURE_2D, .format = format, .size = {width, height, 1}, .levels = 1, .label = label});
+        };
+        mTotal = make(GL_RGBA32F, kTotal);
+        mPositive = make(GL_RGBA32F, kPositive);
+        mNegative = make(GL_RGBA32F, kNegative);
+        mCrossings = make(GL_RG32F, kCrossings);
+        mAirlight = make(GL_RGBA32F, "polyvol.airlight");
+        mFramebuffer = gl::Framebuffer::create("polyvol.volume_fbo");
+        mFramebuffer.attachColor(0, mTotal);
+        mFramebuffer.attachColor(1, mPositive);
+        mFramebuffer.attachColor(2, mNegative);
+        mFramebuffer.attachColor(3, mCrossings);
+        mFramebuffer.checkComplete();
+    }
+
+    // The table for the medium's g, built from the double closed form when g changes.
+    void ensureLut(double g) {
+        if (mLut && mLutG == g) return;
+        // Built once per process and g (the table depends on nothing else), then uploaded per technique.
+        static std::map<double, std::pair<polyvol::AirlightLut, double>> cache;
+        auto it = cache.find(g);
+        if (it == cache.end()) {
+            const auto start = std::chrono::steady_clock::now();
+            polyvol::AirlightLut built = polyvol::buildAirlightLut(g, kLutWidth, kLutHeight);
+            const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+            it = cache.emplace(g, std::make_pair(std::move(built), ms)).first;
+        }
+        const polyvol::AirlightLut& table = it->second.first;
+        mLutMs = it->second.second;
+        mLut = gl::Texture::create({.target = GL_TEXTURE_2D, .format = GL_RG32F, .size = {kLutWidth, kLutHeight, 1},
+                                    .levels = 1, .label = kLut});
+        mLut.upload(GL_RG, GL_FLOAT, table.rg.data());
+        mLut.setFilter(GL_LINEAR, GL_LINEAR);
+        mLut.setWrap(GL_CLAMP_TO_EDGE);
+        mLutG = g;
+    }
+
+    const gl::Program& volumeProgram(const Plan& plan) {
+        gl::ShaderDefines defines;
+        std::string key;
+        for (const FeaturePlan& f : plan.features) {
+            const auto it = kDefines.find(f.feature);
+            if (it == kDefines.end()) continue;
+            const char* define = f.enabled ? it->second.first : it->second.second;
+            if (!define) continue;
+            defines.push_back({define, "1"});
+            key += std::string(define) + ";";
+        }
+        mDefines = defines;
+        if (key != mProgramKey || !mProgram) {
+            mProgram = gl::Program::compile({.stages = {"polyvol/volume.vert", "polyvol/volume.frag"},
+                                             .defines = defines,
+                                             .label = "polyvol.volume"});
+            mWireProgram = gl::Program::compile({.stages = {"polyvol/volume.vert", "polyvol/wire.frag"},
+                                                 .defines = defines,
+                                                 .label = "polyvol.wire"});
+            mProgramKey = key;
+        }
+        return mProgram;
+    }
+
+    // Extra key lists, uploaded once per kind and size: the closure of a 2D grid of `stride` texels per row
+    // (N static, N + 1 adaptive) or the seams of a cube.
+    enum class ExtraKind { Closure, Seams };
+    const gl::Buffer& extraKeys(ExtraKind kind, int stride, std::int64_t& triangles) {
+        Extra& e = mExtras[{int(kind), stride}];
+        if (!e.buffer) {
+            const bool cube = kind == ExtraKind::Seams;
+            const std::vector<std::uint32_t> keys = cube ? polyvol::cubeSeams(stride) : polyvol::gridClosure(stride);
+            e.buffer = gl::Buffer::create({.bytes = keys.size() * sizeof(std::uint32_t),
+                                           .data = keys.data(),
+                                           .flags = 0,
+                                           .label = cube ? "polyvol.cube_seams" : "polyvol.grid_closure"});
+            e.triangles = std::int64_t(keys.size() / 3);
+        }
+        triangles = e.triangles;
+        return e.buffer;
+    }
+
+    // Per light: the draw's geometry. Spot: the unit-depth view plane of the shadow matrix; directional:
+    // its near plane, the far depth of empty texels and the cap behind the scene; all from the inverse
+    // shadow matrix in double, so the mesh samples exactly the directions the map was rendered with.
+    polyvol::VolumeGrid describe(const render::GpuLightCpu& L, int index, int n, double zfar, float cookieMask) const {
+        polyvol::VolumeGrid v;
+        v.lightIndex = index;
+        v.layer = L.info.z;
+        v.mapSize = n;
+        v.keyStride = n;
+        v.cookieMask = cookieMask;
+        v.range = L.shadow.y - L.shadow.x;
+        const glm::dvec3 pos(L.position);
+        if (L.info.x == render::hd::kLightPoint || L.info.x == render::hd::kLightVpl) {
+            v.mode = kModeCube;
+            v.faces = 6;
+            v.vplCube = L.info.x == render::hd::kLightVpl;
+            if (v.vplCube) v.mapSize = v.keyStride = mView.shadows().vplSize();
+            v.noHit = float((glm::length(pos) + zfar) * 1.01);
+            return v;
+        }
+        const glm::dmat4 inv = glm::inverse(glm::dmat4(L.shadowMatrix));
+        auto unproject = [&](double x, double y, double z) {
+            const glm::dvec4 q = inv * glm::dvec4(x, y, z, 1.0);
+            return glm::dvec3(q) / q.w;
+        };
+        if (L.info.x == render::hd::kLightSpot) {
+            v.mode = kModeSpot;
+            const glm::dvec3 axis(L.direction);
+            auto plane = [&](double x, double y) {
+                const glm::dvec3 d = unproject(x, y, 0.0) - pos;
+                return d / glm::dot(d, axis);
+            };
+            const glm::dvec3 o = plane(0, 0);
+            v.planeOrigin = glm::vec3(o);
+            v.planeX = glm::vec3(plane(1, 0) - o);
+            v.planeY = glm::vec3(plane(0, 1) - o);
+            v.noHit = float((glm::length(pos) + zfar) * 1.01);
+            return v;
+        }
+        v.mode = kModeDirectional;
+        const glm::dvec3 o = unproject(0, 0, -1);
+        const glm::dvec3 x = unproject(1, 0, -1) - o, y = unproject(0, 1, -1) - o;
+        v.planeOrigin = glm::vec3(o), v.planeX = glm::vec3(x), v.planeY = glm::vec3(y);
+        // Every point the camera can see is within zfar of the eye (the origin): the border ring is
+        // pushed out far enough to cover them, empty texels reach past them, the cap lies behind them.
+        const double half = std::min(glm::length(x), glm::length(y));
+        const double reach = glm::length(o) + zfar;
+        v.skirt = float(1.0 + (reach + half) / half);
+        const double margin = 0.01 * (reach + half);
+        v.noHit = float(std::max(double(L.shadow.y), zfar) + margin);
+        v.capDepth = float(std::min(double(L.shadow.x), -zfar) - margin);
+        return v;
+    }
+
+    std::int64_t drawVolumes(const scene::Scene& scene, const FrameInput& input, const Plan& plan) {
+        const Settings& s = input.settings;
+        const scene::Camera& cam = scene.camera;
+        const gl::Program& program = volumeProgram(plan);
+        const int n = mView.shadows().size();
+        program.use();
+        program.set("uViewProj", render::eyeRelativeViewProjection(cam, input.width, input.height));
+        program.set("uSize", glm::ivec2(input.width, input.height));
+        program.set("uForward", glm::vec3(cam.forward));
+        program.set("uRight", glm::vec3(scene::cameraRight(cam)));
+        program.set("uUp", glm::vec3(cam.up));
+        program.set("uTanHalf", float(std::tan(cam.yfov * 0.5)));
+        program.set("uAspect", float(scene::aspectOf(cam, input.width, input.height)));
+        program.set("uSigmaS", float(scene.medium.sigma_s));
+        program.set("uSigmaT", float(scene.medium.sigma_t()));
+        program.set("uG", float(scene.medium.g));
+        program.set("uSpotPieces", int(s.at("spot_pieces")));
+        program.set("uConstant", int(s.at("crack_check")));
+        const bool atSurface = s.at("origin") != 0.0;
+        program.set("uOriginAtSurface", atSurface ? 1 : 0);
+        mView.lights().bind();
+        mView.shadows().bind();
+        mView.surface().distance().bindUnit(render::hd::kFirstFreeTextureUnit);
+        if (mLut) mLut.bindUnit(render::hd::kFirstFreeTextureUnit + 1);
+        if (mVao.id() == 0) mVao = gl::VertexArray::create("polyvol.vao");
+        mVao.bind();
+        mFramebuffer.bind();
+        glViewport(0, 0, input.width, input.height);
+        glDisable(GL_DEPTH_TEST);
+        glDepthMask(GL_FALSE);
+        glDisable(GL_CULL_FACE);
+        glEnable(GL_DEPTH_CLAMP);  // faces between the eye and the near plane still count (Billeter Sec. 5)
+        glEnable(GL_BLEND);
+        glBlendEquation(GL_FUNC_ADD);
+        glBlendFunc(GL_ONE, GL_ONE);
+        const std::int64_t limit = std::int64_t(s.at("draw_triangles"));
+        const bool adaptiveWanted = s.at("tessellation") != 0.0;
+        const int wire = int(s.at("wireframe"));
+        mWireDrawn = false;
+        if (wire) {
+            if (!mWire || mWire.size().x != input.width || mWire.size().y != input.height) {
+                mWire = gl::Texture::create({.target = GL_TEXTURE_2D, .format = GL_RGBA8,
+                                             .size = {input.width, input.height, 1}, .levels = 1,
+                                             .label = kMesh});
+                mWireFramebuffer = gl::Framebuffer::create("polyvol.wire_fbo");
+                mWireFramebuffer.attachColor(0, mWire);
+                mWireFramebuffer.checkComplete();
+            }
+            mWire.clear(glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+        }
+        std::int64_t drawn = 0;
+        mAdaptiveUsed = false;
+        mAdaptiveOverflow = false;
+        const auto& lights = mView.lights().lights();
+        for (int i = 0; i < int(lights.size()); ++i) {
+            const render::GpuLightCpu& L = lights[std::size_t(i)];
+            const int type = L.info.x;
+            if (L.info.z < 0) continue;
+            (void)type;
+            polyvol::VolumeGrid grid = describe(L, i, n, cam.zfar, float(s.at("cookie_mask")));
+            const bool adaptive = adaptiveWanted && grid.mode != kModeCube;
+            std::int64_t extraTriangles = 0;
+            if (adaptive) {
+                // Compute passes in between: the draw state is set again afterwards.
+                grid.keyStride = n + 1;
+                mTess.build(grid, s.at("threshold"), int(s.at("stop_level")), mDefines, mProgramKey);
+                mAdaptiveUsed = true;
+                mAdaptiveOverflow = mAdaptiveOverflow || mTess.overflowed();
+                mView.lights().bind();
+                mView.shadows().bind();
+                mFramebuffer.bind();
+                mVao.bind();
+                program.use();
+                setGridUniforms(program, grid);
+                program.set("uGridVertices", 0);
+                mTess.keys().bindBase(GL_SHADER_STORAGE_BUFFER, render::hd::kFirstFreeSsboBinding);
+                mTess.counters().bind(GL_DRAW_INDIRECT_BUFFER);
+                glDrawArraysIndirect(GL_TRIANGLES, reinterpret_cast<const void*>(polyvol::AdaptiveTessellation::drawOffset()));
+                drawn += mTess.triangles();
+                const gl::Buffer& closure = extraKeys(ExtraKind::Closure, n + 1, extraTriangles);
+                closure.bindBase(GL_SHADER_STORAGE_BUFFER, render::hd::kFirstFreeSsboBinding);
+                glDrawArrays(GL_TRIANGLES, 0, GLsizei(3 * extraTriangles));
+                drawn += extraTriangles;
+                if (wire) drawWire(input, L, grid, 0, extraTriangles, true);
+                if (atSurface) resolve(input, i);
+                continue;
+            }
+            const std::int64_t gridTriangles = polyvol::gridTriangleCount(grid.mapSize, grid.faces);
+            const gl::Buffer& keys = extraKeys(grid.mode == kModeCube ? ExtraKind::Seams : ExtraKind::Closure,
+                                               grid.mapSize, extraTriangles);
+            keys.bindBase(GL_SHADER_STORAGE_BUFFER, render::hd::kFirstFreeSsboBinding);
+            setGridUniforms(program, grid);
+            program.set("uGridVertices", int(3 * gridTriangles));
+            std::int64_t count = gridTriangles + extraTriangles;
+            if (limit > 0) count = std::min(count, limit);
+            glDrawArrays(GL_TRIANGLES, 0, GLsizei(3 * count));
+            drawn += count;
+            if (wire) drawWire(input, L, grid, gridTriangles, std::min(count, gridTriangles + extraTriangles) - gridTriangles, false);
+            if (atSurface) resolve(input, i);
+        }
+        glDisable(GL_DEPTH_CLAMP);
+        glDisable(GL_BLEND);
+        glDepthMask(GL_TRUE);
+        gl::Framebuffer::bindDefault();
+        return drawn;
+    }
+
+    // The wireframe of one light's volume into polyvol.mesh, from the camera (wireframe=1) or from the
+    // first 2D light (wireframe=2, through its shadow matrix). Restores the volume pass's state.
+    void drawWire(const FrameInput& input, const render::GpuLightCpu& L, const polyvol::VolumeGrid& grid,
+                  std::int64_t gridTriangles, std::int64_t extraTriangles, bool adaptive) {
+        const int wire = int(input.settings.at("wireframe"));
+        glm::mat4 viewProj = render::eyeRelativeViewProjection(input.scene->camera, input.width, input.height);
+        if (wire == 2) {
+            if (grid.mode == polyvol::kModeCube || mWireDrawn) return;
+            viewProj = L.shadowMatrix;
+        }
+        mWireDrawn = true;
+        mWireProgram.use();
+        setGridUniforms(mWireProgram, grid);
+        mWireProgram.set("uViewProj", viewProj);
+        mWireFramebuffer.bind();
+        glDisable(GL_BLEND);
+        glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+        if (adaptive) {
+            mWireProgram.set("uGridVertices", 0);
+            mTess.keys().bindBase(GL_SHADER_STORAGE_BUFFER, render::hd::kFirstFreeSsboBinding);
+            mTess.counters().bind(GL_DRAW_INDIRECT_BUFFER);
+            glDrawArraysIndirect(GL_TRIANGLES, reinterpret_cast<const void*>(polyvol::AdaptiveTessellation::drawOffset()));
+            std::int64_t closure = 0;
+            extraKeys(ExtraKind::Closure, grid.keyStride, closure).bindBase(GL_SHADER_STORAGE_BUFFER,
+                                                                              render::hd::kFirstFreeSsboBinding);
+            glDrawArrays(GL_TRIANGLES, 0, GLsizei(3 * closure));
+        } else {
+            mWireProgram.set("uGridVertices", int(3 * gridTriangles));
+            glDrawArrays(GL_TRIANGLES, 0, GLsizei(3 * (gridTriangles + extraTriangles)));
+        }
+        glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+        glEnable(GL_BLEND);
+        mFramebuffer.bind();
+        mProgram.use();
+    }
+
+    // origin=surface: adds c L(0, d) of light `light` per pixel and zeroes the light's signed count; the
+    // volume program and blend state are restored for the next light.
+    void resolve(const FrameInput& input, int light) {
+        const Settings& s = input.settings;
+        const scene::Scene& scene = *input.scene;
+        const scene::Camera& cam = scene.camera;
+        if (!mResolve || mResolveKey != mProgramKey) {
+            mResolve = gl::Program::compile(
+                {.stages = {"polyvol/resolve.comp"}, .defines = mDefines, .label = "polyvol.resolve"});
+            mResolveKey = mProgramKey;
+        }
+        glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
+        mResolve.use();
+        mResolve.set("uSize", glm::ivec2(input.width, input.height));
+        mResolve.set("uForward", glm::vec3(cam.forward));
+        mResolve.set("uRight", glm::vec3(scene::cameraRight(cam)));
+        mResolve.set("uUp", glm::vec3(cam.up));
+        mResolve.set("uTanHalf", float(std::tan(cam.yfov * 0.5)));
+        mResolve.set("uAspect", float(scene::aspectOf(cam, input.width, input.height)));
+        mResolve.set("uSigmaS", float(scene.medium.sigma_s));
+        mResolve.set("uSigmaT", float(scene.medium.sigma_t()));
+        mResolve.set("uG", float(scene.medium.g));
+        mResolve.set("uSpotPieces", int(s.at("spot_pieces")));
+        mResolve.set("uLightIndex", light);
+        mResolve.set("uConstant", int(s.at("crack_check")));
+        mTotal.bindImage(0, GL_READ_WRITE);
+        mPositive.bindImage(1, GL_READ_WRITE);
+        mNegative.bindImage(2, GL_READ_WRITE);
+        const glm::ivec3 groups = gl::groupCount({input.width, input.height, 1}, mResolve.workGroupSize());
+        glDispatchCompute(GLuint(groups.x), GLuint(groups.y), 1);
+        glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+        mProgram.use();
+    }
+
+    // The table against the closed form per pixel (lut_error.comp); returns the image's maximum.
+    float lutError(const FrameInput& input) {
+        const scene::Scene& scene = *input.scene;
+        const scene::Camera& cam = scene.camera;
+        if (!mLutErrorProgram) {
+            mLutErrorProgram = gl::Program::compile({.stages = {"polyvol/lut_error.comp"},
+                                                     .defines = {{"AIRLIGHT_LUT", "1"}},
+                                                     .label = "polyvol.lut_error"});
+        }
+        if (!mLutError || mLutError.size().x != input.width || mLutError.size().y != input.height) {
+            mLutError = gl::Texture::create({.target = GL_TEXTURE_2D, .format = GL_R32F,
+                                             .size = {input.width, input.height, 1}, .levels = 1, .label = kLutError});
+        }
+        const gl::Program& p = mLutErrorProgram;
+        p.use();
+        p.set("uSize", glm::ivec2(input.width, input.height));
+        p.set("uForward", glm::vec3(cam.forward));
+        p.set("uRight", glm::vec3(scene::cameraRight(cam)));
+        p.set("uUp", glm::vec3(cam.up));
+        p.set("uTanHalf", float(std::tan(cam.yfov * 0.5)));
+        p.set("uAspect", float(scene::aspectOf(cam, input.width, input.height)));
+        p.set("uSigmaS", float(scene.medium.sigma_s));
+        p.set("uSigmaT", float(scene.medium.sigma_t()));
+        p.set("uG", float(scene.medium.g));
+        p.set("uLightCount", mView.lights().count());
+        mView.lights().bind();
+        mView.surface().distance().bindUnit(render::hd::kFirstFreeTextureUnit);
+        mLut.bindUnit(render::hd::kFirstFreeTextureUnit + 1);
+        mLutError.bindImage(0, GL_WRITE_ONLY);
+        const glm::ivec3 groups = gl::groupCount({input.width, input.height, 1}, p.workGroupSize());
+        glDispatchCompute(GLuint(groups.x), GLuint(groups.y), 1);
+        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+        const Image e = gl::readTexture(mLutError);
+        float worst = 0.0f;
+        for (float v : e.pixels) worst = std::max(worst, v);
+        return worst;
+    }
+
+    // L_air = max(0, total) (clamp.comp).
+    void clampAirlight() {
+        if (!mClamp) mClamp = gl::Program::compile({.stages = {"polyvol/clamp.comp"}, .label = "polyvol.clamp"});
+        mClamp.use();
+        mClamp.set("uSize", glm::ivec2(mTotal.size().x, mTotal.size().y));
+        mTotal.bindImage(0, GL_READ_ONLY);
+        mAirlight.bindImage(1, GL_WRITE_ONLY);
+        const glm::ivec3 groups = gl::groupCount({mTotal.size().x, mTotal.size().y, 1}, mClamp.workGroupSize());
+        glDispatchCompute(GLuint(groups.x), GLuint(groups.y), 1);
+        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    }
+
+    void publishVolume(FrameOutput& out, const Settings& s, std::int64_t triangles) {
+        const bool constant = s.at("crack_check") != 0.0;
+        const std::string count = std::to_string(triangles) + " triangles drawn" +
+                                  (mAdaptiveOverflow ? " (adaptive buffers overflowed: mesh cut short)" : "");
+        mTriangles = triangles;
+        if (mAdaptiveUsed) {
+            out.intermediates.push_back(render::textureIntermediate(
+                kEdgeMap, "Edge map", "|Laplacian| of the vertex distances / the map's depth range (last 2D light)",
+                "", ViewKind::Scalar, 0.0f, float(std::max(1e-6, 10.0 * s.at("threshold"))), mTess.edgeMap()));
+            out.intermediates.push_back(render::textureIntermediate(
+                kTessLevels, "Tessellation level", "leaf level k of each texel's quad (2^k texels wide), stored k/16; " +
+                count, "", ViewKind::Scalar, 0.0f, float(mTess.levels()) / 16.0f, mTess.levelMap()));
+        }
+        Intermediate mesh;
+        if (s.at("wireframe") != 0.0 && mWire) {
+            mesh = render::textureIntermediate(kMesh, "Light volume mesh", "", "", ViewKind::Color, 0.0f, 1.0f, mWire);
+        }
+        mesh.id = kMesh;
+        mesh.label = "Light volume mesh";
+        mesh.note = count + " (grid: one vertex per shadow-map texel; closure to the light / cap; cube seams)" +
+                    (s.at("wireframe") != 0.0 ? "; wireframe: green = rays leave (+L), red = rays enter (-L)"
+                                              : "; wireframe=1|2 draws it");
+        mesh.kind = s.at("wireframe") != 0.0 ? ViewKind::Color : ViewKind::Mesh;
+        out.intermediates.push_back(mesh);
+        out.intermediates.push_back(render::textureIntermediate(
+            kCrossings, "Crossings", "r: volume faces crossed by each pixel's ray (overdraw), g: signed count; " + count, "",
+            ViewKind::Scalar, 0.0f, 16.0f, mCrossings));
+        const std::string units = constant ? "scene units (lit length)" : "radiance";
+        out.intermediates.push_back(render::textureIntermediate(
+            kPositive, "Positive terms", "sum of +L(0, x) where rays leave the lit volume", units, ViewKind::Color,
+            0.0f, 1.0f, mPositive));
+        out.intermediates.push_back(render::textureIntermediate(
+            kNegative, "Negative terms", "sum of L(0, x) where rays enter the lit volume (subtracted)", units,
+            ViewKind::Color, 0.0f, 1.0f, mNegative));
+        out.intermediates.push_back(render::textureIntermediate(
+            kTotal, "Signed total", "positive - negative (unclamped; L_air = max(0, total))", units, ViewKind::Signed,
+            -1.0f, 1.0f, mTotal));
+        const Image total = gl::readTexture(mCrossings);
+        const polyvol::CrackReport report = polyvol::countCrackPixels(total, 1);
+        auto mask = std::make_shared<Image>(total.width, total.height, 1);
+        for (int y = 0; y < total.height; ++y)
+            for (int x = 0; x < total.width; ++x)
+                mask->at(x, y) = std::fabs(total.at(x, y, 1) - float(report.expected)) < 1e-3f ? 0.0f : 1.0f;
+        Intermediate cracks;
+        cracks.id = kCracks;
+        cracks.label = "Crack pixels";
+        cracks.note = std::to_string(report.badPixels) + " bad pixels (signed crossing count != " +
+                      std::to_string(report.expected) + ", the volumes containing the eye)";
+        cracks.kind = ViewKind::Mask;
+        cracks.image = mask;
+        cracks.extent = {total.width, total.height, 1};
+        out.intermediates.push_back(cracks);
+        out.airlight = render::readRgb(mAirlight);
+    }
+
+    struct Extra {
+        std::int64_t triangles = 0;
+        gl::Buffer buffer;
+    };
+
+    std::vector<ParamInfo> mParams;
+    std::vector<StageInfo> mStages;
+    render::SceneViewPasses mView;
+    gl::Program mProgram;
+    std::string mProgramKey;
+    gl::Texture mTotal, mPositive, mNegative, mCrossings;
+    gl::Framebuffer mFramebuffer;
+    gl::VertexArray mVao;
+    std::map<std::pair<int, int>, Extra> mExtras;
+    polyvol::AdaptiveTessellation mTess;
+    bool mAdaptiveUsed = false, mAdaptiveOverflow = false, mWireDrawn = false;
+    std::int64_t mTriangles = 0;
+    gl::ShaderDefines mDefines;
+    gl::Program mResolve, mWireProgram, mClamp;
+    gl::Texture mAirlight;
+    gl::Texture mWire;
+    gl::Framebuffer mWireFramebuffer;
+    std::string mResolveKey;
+    gl::Texture mLut, mLutError;
+    gl::Program mLutErrorProgram;
+    double mLutG = 0.0, mLutMs = 0.0;
+};
+
+}  // namespace
+
+std::unique_ptr<Technique> makePolyvolTechnique() { return std::make_unique<PolyvolTechnique>(); }
+
+}  // namespace viz
