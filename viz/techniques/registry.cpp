@@ -1,18 +1,20 @@
 #include "techniques/registry.h"
 
 #include "core/error.h"
+#include "techniques/minmax/minmax.h"
 #include "techniques/raymarch/raymarch.h"
 #include "techniques/reference/reference.h"
 #include "techniques/slices/slices.h"
 
 namespace viz {
 
-std::vector<std::string> techniqueIds() { return {"reference", "raymarch", "slices"}; }
+std::vector<std::string> techniqueIds() { return {"reference", "raymarch", "slices", "minmax"}; }
 
 std::unique_ptr<Technique> makeTechnique(std::string_view id) {
     if (id == "reference") return makeReferenceTechnique();
     if (id == "raymarch") return makeRaymarchTechnique();
     if (id == "slices") return makeSlicesTechnique();
+    if (id == "minmax") return makeMinmaxTechnique();
     std::string known;
     for (const std::string& t : techniqueIds()) known += (known.empty() ? "" : ", ") + t;
     throw InputError("unknown technique '" + std::string(id) + "' (known: " + known + ")");
