@@ -1,0 +1,70 @@
+// Epipolar coordinates (Chen et al. 2011, section 3.2), eye-relative world space: the float mirror of
+// viz/techniques/minmax/epipolar.h (same names and steps; see there for the definitions of alpha, beta,
+// gamma and the rectified map S). The frame comes from uniforms set by the technique.
+#ifndef MINMAX_EPIPOLAR_GLSL
+#define MINMAX_EPIPOLAR_GLSL
+
+const int kKindSpot = 0;
+const int kKindDirectional = 1;
+const float kUnblocked = 4.0;     // S of a light ray nothing blocks: above every beta
+const float kOutsideCone = -1.0;  // S outside a spot's cone: below every beta
+const float kInfinity = 1.0 / 0.0;
+
+uniform int uKind;
+uniform vec3 uAxis;  // a: toward the light
+uniform vec3 uU;
+uniform vec3 uV;
+uniform float uLightDistance;  // D (spot)
+uniform int uSlices;
+uniform int uColumns;
+uniform bool uWrap;
+uniform float uAlphaLo;
+uniform float uAlphaSpacing;
+uniform float uGammaLo;
+uniform float uGammaHi;
+
+float columnWidth() { return (uGammaHi - uGammaLo) / float(uColumns); }
+float sliceAlpha(int row) { return uAlphaLo + float(row) * uAlphaSpacing; }
+
+float alphaOf(vec3 p) { return atan(dot(p, uV), dot(p, uU)); }
+float betaOf(vec3 p) { return atan(length(cross(p, uAxis)), dot(p, uAxis)); }
+
+float gammaOfPlane(float z, float rho) {
+    if (uKind == kKindDirectional) return rho;
+    return atan(rho, uLightDistance - z);
+}
+
+float gammaAlongRay(float beta, float t) { return gammaOfPlane(t * cos(beta), t * sin(beta)); }
+
+float distanceAtGamma(float beta, float gamma) {
+    if (uKind == kKindDirectional) {
+        float s = sin(beta);
+        return s > 0.0 ? gamma / s : kInfinity;
+    }
+    float s = sin(beta + gamma);
+    return s > 0.0 ? uLightDistance * sin(gamma) / s : kInfinity;
+}
+
+vec3 slicePerpendicular(float alpha) { return cos(alpha) * uU + sin(alpha) * uV; }
+
+vec3 lightRayPoint(float alpha, float gamma) {
+    vec3 e = slicePerpendicular(alpha);
+    if (uKind == kKindDirectional) return gamma * e;
+    return uLightDistance * uAxis + (-cos(gamma) * uAxis + sin(gamma) * e);
+}
+
+float occluderBeta(float gamma, float stored) {
+    if (uKind == kKindDirectional) return atan(gamma, -stored);
+    return atan(stored * sin(gamma), uLightDistance - stored * cos(gamma));
+}
+
+int sliceRow(float alpha) {
+    int row = int(floor((alpha - uAlphaLo) / uAlphaSpacing + 0.5));
+    if (uWrap) return ((row % uSlices) + uSlices) % uSlices;
+    return clamp(row, 0, uSlices - 1);
+}
+
+float columnOf(float gamma) { return (gamma - uGammaLo) / columnWidth(); }
+float gammaOfColumn(float column) { return uGammaLo + column * columnWidth(); }
+
+#endif  // MINMAX_EPIPOLAR_GLSL

@@ -1,0 +1,61 @@
+#version 450 core
+// minmax/prefix.comp: prefix sums of Gamma_i(gamma) T(alpha, gamma) per slice (Chen et al. 2011, sections
+// 3.2 and 3.4; `integrand=svd`). T is the light's angular emission along light ray (alpha, gamma): colour
+// * intensity * A_spot * cookie for a spot (A_spot varies with alpha too, so every slice needs its own
+// table), colour * intensity for a directional light (one row shared by all slices: uSharedRow).
+// Table row i, texel k (k = 0 .. uTexels) holds sum over texels j < k of Gamma_i(gamma_j) T(alpha_i, gamma_j)
+// dgamma at the texel centres gamma_j = gammaLo + (j + 1/2) dgamma, dgamma = (gammaHi - gammaLo) / uTexels
+// (uTexels: the table's own resolution, lower than the shadow map's). The 3 N floats of texel k (rank i,
+// channel c at q = 3 i + c) are spread over layers q / 4, component q % 4 of an RGBA32F array; the traversal
+// reads them with hardware linear filtering along gamma. One invocation scans one row (a sequential scan;
+// the paper uses log2 passes), uTexels iterations.
+layout(local_size_x = 64, local_size_y = 1) in;
+
+#include "common/host_device.glsl"
+#include "common/lights.glsl"
+#include "minmax/epipolar.glsl"
+
+layout(rgba32f, binding = 0) uniform writeonly image2DArray uPrefix;
+uniform int uLight;
+uniform int uRows;
+uniform int uTexels;
+uniform int uRank;
+uniform bool uSharedRow;
+uniform float uGammaBasis[8 * 64];  // Gamma_i at 64 gamma samples (inclusive ends), rank-major
+
+float gammaBasis(int i, float gamma) {
+    float x = clamp((gamma - uGammaLo) / (uGammaHi - uGammaLo), 0.0, 1.0) * 63.0;
+    int k = min(int(floor(x)), 62);
+    float f = x - float(k);
+    return mix(uGammaBasis[i * 64 + k], uGammaBasis[i * 64 + k + 1], f);
+}
+
+void main() {
+    int row = int(gl_GlobalInvocationID.x);
+    if (row >= uRows) return;
+    GpuLight L = gLights[uLight];
+    float alpha = sliceAlpha(row);
+    float step = (uGammaHi - uGammaLo) / float(uTexels);
+    float sums[24];
+    for (int q = 0; q < 24; ++q) sums[q] = 0.0;
+    int layers = (3 * uRank + 3) / 4;
+    for (int k = 0; k <= uTexels; ++k) {
+        for (int layer = 0; layer < layers; ++layer) {
+            vec4 v = vec4(sums[4 * layer], sums[4 * layer + 1], sums[4 * layer + 2], sums[4 * layer + 3]);
+            imageStore(uPrefix, ivec3(k, row, layer), v);
+        }
+        if (k == uTexels) break;
+        float gamma = uGammaLo + (float(k) + 0.5) * step;
+        vec3 T = L.radiant.rgb;
+        if (!uSharedRow) {
+            vec3 p = lightRayPoint(alpha, gamma);
+            T = lightIntensity(L, p);
+        }
+        for (int i = 0; i < uRank; ++i) {
+            float w = gammaBasis(i, gamma) * step;
+            sums[3 * i] += w * T.r;
+            sums[3 * i + 1] += w * T.g;
+            sums[3 * i + 2] += w * T.b;
+        }
+    }
+}

@@ -1,0 +1,49 @@
+#version 450 core
+// minmax/rectify.comp: the rectified shadow map S[alpha, gamma] (Chen et al. 2011, section 3.2). Texel
+// (column j, row i) is the light ray gamma_j = gammaLo + (j + 1/2) width in slice alpha_i; every point of a
+// light ray projects onto one shadow-map texel (spot: the ray leaves the map's centre of projection;
+// directional: the map is orthographic along the ray), so one nearest lookup gives the ray's occluder.
+// S = beta of the occluder, after the same bias as shadowVisibility (common/shadow_map.glsl), so that
+// "beta < S" and shadowVisibility agree for every point of the ray.
+layout(local_size_x = 64, local_size_y = 1) in;
+
+#include "common/host_device.glsl"
+#include "common/lights.glsl"
+#include "common/shadow_map.glsl"
+#include "minmax/epipolar.glsl"
+
+layout(r32f, binding = 0) uniform writeonly image2D uRectified;
+uniform int uLight;
+
+void main() {
+    ivec2 texel = ivec2(gl_GlobalInvocationID.xy);
+    if (texel.x >= uColumns || texel.y >= uSlices) return;
+    GpuLight L = gLights[uLight];
+    float alpha = sliceAlpha(texel.y);
+    float gamma = gammaOfColumn(float(texel.x) + 0.5);
+    float S = kUnblocked;
+    if (uKind == kKindSpot && (gamma <= 0.0 || gamma >= 3.14159265)) {
+        S = kOutsideCone;
+    } else {
+        vec3 p = lightRayPoint(alpha, gamma);
+        vec4 clip = L.shadowMatrix * vec4(p, 1.0);
+        vec2 ndc = clip.xy / clip.w;
+        bool inside = clip.w > 0.0 && all(lessThanEqual(abs(ndc), vec2(1.0)));
+        // Spot: no light leaves the cone (A_spot = 0): shadowed for the tree, nothing to integrate.
+        bool dark = uKind == kKindSpot && spotAttenuation(L, p - L.position.xyz) == 0.0;
+        if (dark) {
+            S = kOutsideCone;
+        } else if (inside) {
+            ivec2 size = textureSize(uShadow2D, 0).xy;
+            ivec2 st = clamp(ivec2(floor((ndc * 0.5 + 0.5) * vec2(size))), ivec2(0), size - 1);
+            float stored = texelFetch(uShadow2D, ivec3(st, L.info.z), 0).r;
+            // Lit when d <= stored + w + z footprint: spot footprint = d / size, so the threshold on d is
+            // (stored + w) / (1 - z / size); directional footprint = 1 / size.
+            float threshold = uKind == kKindSpot
+                ? (stored + L.shadow.w) / (1.0 - L.shadow.z / float(size.x))
+                : stored + L.shadow.w + L.shadow.z / float(size.x);
+            S = occluderBeta(gamma, threshold);
+        }
+    }
+    imageStore(uRectified, texel, vec4(S));
+}

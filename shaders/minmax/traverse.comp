@@ -1,0 +1,271 @@
+#version 450 core
+// minmax/traverse.comp: per pixel, find the camera ray's (alpha, beta) directly (camera rays are not
+// rectified), pick the nearest slice, and walk its 1D min-max tree (Chen et al. 2011, Figure 5, with both
+// section 3.5 optimisations: climb at most one level per step, and delay the integral's update until the
+// next unlit node or the end). Each lit run of columns [c0, c1) becomes a distance interval [t0, t1] of the
+// camera ray, integrated with the closed form of common/airlight.glsl (`integrand=analytic`).
+// Mirrored step by step by minmax::integratePixel (pixel_mirror.h).
+// One dispatch per light; results are added to uAirlight. uMode = 1 marches the whole image instead (a
+// light the epipolar path does not handle: point lights and area-light VPLs).
+layout(local_size_x = 8, local_size_y = 8) in;
+
+#include "common/host_device.glsl"
+#include "common/airlight.glsl"
+#include "common/lights.glsl"
+#include "common/shadow_map.glsl"
+#include "minmax/epipolar.glsl"
+
+layout(binding = kFirstFreeTextureUnit) uniform sampler2D uDistance;  // Euclidean t of the first surface
+layout(binding = kFirstFreeTextureUnit + 1) uniform sampler2D uTree;  // rg32f: (min, max), x = node, y = row
+layout(rgba32f, binding = 0) uniform image2D uAirlight;
+layout(r32f, binding = 1) uniform image2D uVisited;
+layout(r32f, binding = 2) uniform image2D uNearMask;
+layout(rgba32f, binding = 3) uniform writeonly image2D uRayCoords;
+
+uniform ivec2 uSize;
+uniform vec3 uForward;
+uniform vec3 uRight;
+uniform vec3 uUp;
+uniform float uTanHalf;
+uniform float uAspect;
+uniform int uLight;
+uniform int uMode;           // 0: epipolar traversal, 1: brute-force march of every pixel
+uniform bool uLinear;        // scan the leaves instead of walking the tree (traversal=linear)
+uniform bool uWriteCoords;   // store (row, beta, cEnd, d) for the CPU mirror
+uniform int uPieces;         // spot: gamma pieces across the cone with their own A_spot * cookie
+uniform int uMarchSamples;   // brute-force samples per ray
+uniform vec4 uEpipoles;      // xy epipole, zw anti-epipole, GL pixel coordinates (y up); far away if none
+uniform float uEpipoleRadius;
+uniform float uSigmaS;
+uniform float uSigmaT;
+uniform float uG;
+
+vec3 pixelRay(ivec2 texel) {
+    float yTop = float(uSize.y - 1 - texel.y);
+    float ndcX = 2.0 * (float(texel.x) + 0.5) / float(uSize.x) - 1.0;
+    float ndcY = 1.0 - 2.0 * (yTop + 0.5) / float(uSize.y);
+    return normalize(uForward + (ndcX * uTanHalf * uAspect) * uRight + (ndcY * uTanHalf) * uUp);
+}
+
+// Brute force for lights without an epipolar path (raymarch's midpoint rule): uMarchSamples samples
+// uniform in t, each the integrand sigma_s p E V exp(-sigma_t t) dt at its interval's middle. No loops
+// inside the loop: llvmpipe ends all loops of an invocation together after 65535 iterations.
+vec3 march(GpuLight L, vec3 w, float d) {
+    float dt = d / float(uMarchSamples);
+    vec3 sum = vec3(0.0);
+    for (int i = 0; i < uMarchSamples; ++i) {
+        float t = (float(i) + 0.5) * dt;
+        vec3 x = t * w;
+        float V = shadowVisibility(L, x);
+        if (V == 0.0) continue;
+        float cosTheta = dot(directionToLight(L, x), w);
+        sum += V * uSigmaS * phaseHG(cosTheta, uG) * unshadowedIrradiance(L, x, uSigmaT) * exp(-uSigmaT * t) * dt;
+    }
+    return sum;
+}
+
+// Brute force near the epipole: the midpoint rule in gamma instead of t. For a spot gamma is the angle at
+// the light, so samples crowd where the ray passes the light, and the Jacobian
+// dt/dgamma = D sin(beta) / sin^2(beta + gamma) = r^2 / (D sin(beta)) cancels the 1/r^2 peak: the integrand
+// in gamma is smooth. Directional: gamma = t sin(beta), dt/dgamma = 1 / sin(beta). Each sample looks up
+// the shadow map directly (no rectification).
+vec3 marchGamma(GpuLight L, vec3 w, float beta, float d) {
+    float gammaEnd = gammaAlongRay(beta, d);
+    float step = gammaEnd / float(uMarchSamples);
+    float sinBeta = sin(beta);
+    vec3 sum = vec3(0.0);
+    for (int i = 0; i < uMarchSamples; ++i) {
+        float gamma = (float(i) + 0.5) * step;
+        float t = min(distanceAtGamma(beta, gamma), d);
+        vec3 x = t * w;
+        if (shadowVisibility(L, x) == 0.0) continue;
+        float jacobian;
+        if (uKind == kKindDirectional) {
+            jacobian = 1.0 / sinBeta;
+        } else {
+            float s = sin(beta + gamma);
+            jacobian = uLightDistance * sinBeta / (s * s);
+        }
+        float cosTheta = dot(directionToLight(L, x), w);
+        sum += uSigmaS * phaseHG(cosTheta, uG) * unshadowedIrradiance(L, x, uSigmaT) * exp(-uSigmaT * t) *
+               jacobian * step;
+    }
+    return sum;
+}
+
+// The camera ray's distance at column c (c >= cEnd: the ray's end d).
+float distanceAtColumn(float beta, float c, float cEnd, float d) {
+    if (c >= cEnd) return d;
+    return min(distanceAtGamma(beta, gammaOfColumn(c)), d);
+}
+
+// L_air over the lit run of columns [c0, c1) (analytic integrand).
+vec3 integrateRunAnalytic(GpuLight L, vec3 w, RayLightGeometry g, float beta, float c0, float c1, float cEnd, float d) {
+    if (uKind == kKindDirectional) {
+        float t0 = distanceAtColumn(beta, c0, cEnd, d);
+        float t1 = distanceAtColumn(beta, c1, cEnd, d);
+        return directionalSegment(cos(beta), t0, t1, uSigmaS, uSigmaT, uG, 1.0) * L.radiant.rgb;
+    }
+    // Spot: A_spot * cookie varies across the cone; pieces on a fixed grid of uPieces cells over
+    // [gammaLo, gammaHi] each take it at their middle (uPieces / columns cells per column).
+    float cellColumns = float(uColumns) / float(uPieces);
+    vec3 sum = vec3(0.0);
+    float c = c0;
+    // Cells by integer index: c0 / cellColumns may round below a cell boundary that c0 sits on, and a
+    // boundary recomputed from c would then not advance.
+    for (int cell = int(floor(c0 / cellColumns)) + 1; c < c1; ++cell) {
+        float next = min(c1, float(cell) * cellColumns);
+        if (next <= c) continue;
+        float ta = distanceAtColumn(beta, c, cEnd, d);
+        float tb = distanceAtColumn(beta, next, cEnd, d);
+        float tm = distanceAtColumn(beta, 0.5 * (c + next), cEnd, d);
+        vec3 I = lightIntensity(L, tm * w);
+        if (tb > ta && I != vec3(0.0)) sum += pointSegment(g.tP, g.h, ta, tb, uSigmaS, uSigmaT, uG, 1.0) * I;
+        c = next;
+    }
+    return sum;
+}
+
+#ifdef INTEGRAND_SVD
+// Low-rank integrand (`integrand=svd`, low_rank.h): each lit run adds the difference of the prefix sums of
+// Gamma_i T at its ends (hardware linear filtering between the table's texels, which are coarser than the
+// columns); the sum is weighted by B_i(beta) / sin(beta) once at the end of the walk.
+layout(binding = kFirstFreeTextureUnit + 2) uniform sampler2DArray uPrefix;
+uniform int uRank;
+uniform int uPrefixTexels;
+uniform int uPrefixRows;
+uniform float uBetaLo;
+uniform float uBetaHi;
+uniform float uBetaBasis[8 * 64];  // B_i at 64 beta samples (inclusive ends), rank-major
+vec4 gAccumulated[6];
+int gPrefixRow = 0;
+
+void accumulateRun(float c0, float c1) {
+    float v = (float(gPrefixRow) + 0.5) / float(uPrefixRows);
+    float scale = float(uPrefixTexels) / float(uColumns);
+    float u0 = (c0 * scale + 0.5) / float(uPrefixTexels + 1);
+    float u1 = (c1 * scale + 0.5) / float(uPrefixTexels + 1);
+    int layers = (3 * uRank + 3) / 4;
+    for (int layer = 0; layer < layers; ++layer) {
+        gAccumulated[layer] += texture(uPrefix, vec3(u1, v, float(layer))) - texture(uPrefix, vec3(u0, v, float(layer)));
+    }
+}
+
+float betaBasis(int i, float beta) {
+    float x = clamp((beta - uBetaLo) / (uBetaHi - uBetaLo), 0.0, 1.0) * 63.0;
+    int k = min(int(floor(x)), 62);
+    return mix(uBetaBasis[i * 64 + k], uBetaBasis[i * 64 + k + 1], x - float(k));
+}
+
+vec3 lowRankResult(float beta) {
+    vec3 sum = vec3(0.0);
+    for (int i = 0; i < uRank; ++i) {
+        float b = betaBasis(i, beta);
+        for (int c = 0; c < 3; ++c) {
+            int q = 3 * i + c;
+            sum[c] += b * gAccumulated[q / 4][q % 4];
+        }
+    }
+    return sum / sin(beta);
+}
+#endif
+
+vec3 integrateRun(GpuLight L, vec3 w, RayLightGeometry g, float beta, float c0, float c1, float cEnd, float d) {
+#ifdef INTEGRAND_SVD
+    accumulateRun(c0, c1);
+    return vec3(0.0);
+#else
+    return integrateRunAnalytic(L, w, g, beta, c0, c1, cEnd, d);
+#endif
+}
+
+vec2 treeNode(int node, int row) { return texelFetch(uTree, ivec2(node, row), 0).rg; }
+
+void main() {
+    ivec2 texel = ivec2(gl_GlobalInvocationID.xy);
+    if (any(greaterThanEqual(texel, uSize))) return;
+    GpuLight L = gLights[uLight];
+    vec3 w = pixelRay(texel);
+    float d = texelFetch(uDistance, texel, 0).r;
+    vec3 sum = vec3(0.0);
+    float visited = 0.0;
+
+    bool brute = uMode == 1;
+#ifdef NEAR_EPIPOLE
+    vec2 centre = vec2(texel) + 0.5;
+    bool near = min(distance(centre, uEpipoles.xy), distance(centre, uEpipoles.zw)) < uEpipoleRadius;
+    if (uMode == 0 && near) {
+        brute = true;
+        imageStore(uNearMask, texel, vec4(1.0));
+    }
+#endif
+    if (uMode == 1) {
+        sum = march(L, w, d);
+    } else if (brute) {
+        sum = marchGamma(L, w, betaOf(w), d);
+    } else {
+        float beta = betaOf(w);
+        int row = sliceRow(alphaOf(w));
+        float cEnd = max(columnOf(gammaAlongRay(beta, d)), 0.0);
+        float end = min(cEnd, float(uColumns));
+        RayLightGeometry g = rayLightGeometry(L.position.xyz, w);
+        if (uWriteCoords) imageStore(uRayCoords, texel, vec4(float(row), beta, cEnd, d));
+#ifdef INTEGRAND_SVD
+        for (int layer = 0; layer < 6; ++layer) gAccumulated[layer] = vec4(0.0);
+        gPrefixRow = uPrefixRows == 1 ? 0 : row;
+#endif
+        float runBegin = -1.0, runEnd = -1.0;
+        if (uLinear) {
+            for (int j = 0; j < uColumns && float(j) < end; ++j) {
+                visited += 1.0;
+                if (beta < treeNode(uColumns + j, row).r) {
+                    if (runBegin < 0.0) runBegin = float(j);
+                    runEnd = min(end, float(j + 1));
+                } else if (runBegin >= 0.0) {
+                    sum += integrateRun(L, w, g, beta, runBegin, runEnd, cEnd, d);
+                    runBegin = -1.0;
+                }
+            }
+        } else if (end > 0.0) {
+            // Node k at level l = findMSB(k) covers columns [lo, lo + width), width = columns >> l.
+            int node = 1;
+            int width = uColumns;
+            int lo = 0;
+            do {
+                visited += 1.0;
+                vec2 mm = treeNode(node, row);
+                if (mm.x <= beta && beta < mm.y) {
+                    node = node * 2;  // mixed: descend to the left child
+                } else {
+                    if (beta < mm.x) {  // lit: open or extend the run (its integral is added later)
+                        if (runBegin < 0.0) runBegin = float(lo);
+                        runEnd = min(end, float(lo + width));
+                    } else if (runBegin >= 0.0) {  // shadowed: close the open run
+                        sum += integrateRun(L, w, g, beta, runBegin, runEnd, cEnd, d);
+                        runBegin = -1.0;
+                    }
+                    node = node + 1;                      // the next node at this level ...
+                    if ((node & 1) == 0) node = node / 2;  // ... or its parent: at most one level up
+                    // A power of two here is the first node of a level: the walk went past the row's end.
+                    if (bitCount(node) == 1) break;
+                }
+                int level = findMSB(node);
+                width = uColumns >> level;
+                lo = (node - (1 << level)) * width;
+            } while (end > float(lo));
+        }
+        if (runBegin >= 0.0) sum += integrateRun(L, w, g, beta, runBegin, runEnd, cEnd, d);
+#ifdef INTEGRAND_SVD
+        sum += lowRankResult(beta);
+#endif
+        // Directional: beyond gammaHi the light rays miss the shadow map, so they are lit (closed form in
+        // both integrand modes: the tables end at gammaHi).
+        if (uKind == kKindDirectional && cEnd > float(uColumns)) {
+            sum += integrateRunAnalytic(L, w, g, beta, float(uColumns), cEnd, cEnd, d);
+        }
+    }
+    vec4 previous = imageLoad(uAirlight, texel);
+    imageStore(uAirlight, texel, vec4(previous.rgb + sum, 1.0));
+    float previousVisited = imageLoad(uVisited, texel).r;
+    imageStore(uVisited, texel, vec4(previousVisited + visited));
+}

@@ -1,0 +1,369 @@
+// minmax against the reference and raymarch, its rectified map against the shadow map, the CPU mirror of
+// the traversal against the GPU, the epipole cases, stage stepping and the plan.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <memory>
+#include <numbers>
+#include <vector>
+
+#include "technique_test_util.h"
+#include "render/gpu_lights.h"
+#include "scene/builtin_scenes.h"
+#include "scene/camera.h"
+#include "techniques/minmax/epipolar_setup.h"
+#include "techniques/minmax/pixel_mirror.h"
+#include "techniques/registry.h"
+
+namespace {
+
+class MinmaxTest : public viz::testing::TechniqueTest {};
+
+using viz::testing::relativeL2;
+
+const viz::Intermediate* findIntermediate(const viz::FrameOutput& out, const std::string& id) {
+    for (const auto& i : out.intermediates)
+        if (i.id == id) return &i;
+    return nullptr;
+}
+
+bool allFinite(const viz::Image& img) {
+    for (float v : img.pixels)
+        if (!std::isfinite(v)) return false;
+    return true;
+}
+
+// The GPU's frame for light `index` of a scene: the same GpuLights and setup the technique builds.
+viz::minmax::EpipolarFrame<float> frameOf(const viz::scene::Scene& scene, int index, int w, int h, int columns,
+                                          viz::render::GpuLightCpu* light = nullptr) {
+    const viz::render::GpuLights lights(scene, scene.camera.position, 4);
+    const auto& L = lights.lights()[std::size_t(index)];
+    if (light) *light = L;
+    // The technique's default slice_oversampling.
+    auto technique = viz::makeTechnique("minmax");
+    const int oversampling = int(viz::completeSettings(*technique, {}).at("slice_oversampling"));
+    return viz::minmax::toFloat(viz::minmax::setupLight({.light = &L, .camera = &scene.camera, .width = w,
+                                                         .height = h, .slices = 0, .columns = columns,
+                                                         .oversampling = oversampling})
+                                    .frame);
+}
+
+// GL row of an Image read back by the test utilities (row 0 at the top).
+float texel(const viz::Image& img, int x, int glRow, int c = 0) { return img.at(x, img.height - 1 - glRow, c); }
+
+// The CPU mirror of pixel (x, y) (row 0 at the top) of a minmax run that kept the tree and ray coordinates.
+viz::minmax::MirrorResult mirrorPixel(const viz::scene::Scene& scene, const viz::FrameOutput& out,
+                                      const viz::minmax::EpipolarFrame<float>& f, const viz::render::GpuLightCpu& L,
+                                      int w, int h, int x, int y, int pieces) {
+    const auto* tree = findIntermediate(out, "minmax.tree");
+    const auto* coords = findIntermediate(out, "minmax.ray_coords");
+    viz::minmax::MirrorLight ml;
+    ml.kind = f.kind;
+    ml.position = glm::vec3(L.position);
+    ml.direction = glm::vec3(L.direction);
+    ml.radiant = glm::vec3(L.radiant);
+    ml.spotScale = L.spot.x;
+    ml.spotOffset = L.spot.y;
+    const viz::minmax::MirrorMedium medium{float(scene.medium.sigma_s), float(scene.medium.sigma_t()),
+                                           float(scene.medium.g)};
+    const viz::scene::Camera& cam = scene.camera;
+    const float tanHalf = float(std::tan(cam.yfov * 0.5));
+    const float aspect = float(viz::scene::aspectOf(cam, w, h));
+    // traverse.comp's pixelRay in float.
+    const float ndcX = 2.0f * (float(x) + 0.5f) / float(w) - 1.0f;
+    const float ndcY = 1.0f - 2.0f * (float(y) + 0.5f) / float(h);
+    const glm::vec3 ray = glm::normalize(glm::vec3(cam.forward) +
+                                         (ndcX * tanHalf * aspect) * glm::vec3(viz::scene::cameraRight(cam)) +
+                                         (ndcY * tanHalf) * glm::vec3(cam.up));
+    const int row = int(coords->image->at(x, y, 0));
+    std::vector<glm::vec2> nodes(std::size_t(2 * f.columns));
+    for (int k = 0; k < 2 * f.columns; ++k)
+        nodes[std::size_t(k)] = {texel(*tree->image, k, row, 0), texel(*tree->image, k, row, 1)};
+    return viz::minmax::integratePixel(f, ml, medium, ray, coords->image->at(x, y, 1), coords->image->at(x, y, 2),
+                                       coords->image->at(x, y, 3), nodes, pieces);
+}
+
+}  // namespace
+
+// The acceptance figures against the reference at 160x120: below 3 % relative L2 on grate (spot)
+// and terrain (sun), with the analytic integrand and the tree walk.
+TEST_F(MinmaxTest, MatchesTheReferenceOnGrateAndTerrain) {
+    for (const char* name : {"grate", "terrain"}) {
+        const viz::scene::Scene scene = viz::scene::makeBuiltinScene(name);
+        const viz::FrameOutput reference = render(scene, "reference", {}, 160, 120);
+        const viz::FrameOutput out = render(scene, "minmax", {{"shadow_map", 2048}}, 160, 120);
+        ASSERT_EQ(out.airlight.pixels.size(), reference.airlight.pixels.size());
+        EXPECT_TRUE(allFinite(out.airlight) && allFinite(out.final)) << name;
+        const double e = relativeL2(out.airlight, reference.airlight);
+        std::printf("minmax vs reference on %s (160x120, shadow_map 2048): relative L2 = %.4f\n", name, e);
+        EXPECT_LT(e, 0.03) << name;
+    }
+}
+
+// Against raymarch on the same shadow map with a very large sample count: within 2 %. Both see the same
+// shadow-map texels, so what is left is minmax's slice and column quantisation and raymarch's sampling.
+// raymarch's midpoint rule, not its exact mode: on llvmpipe every loop of a shader invocation together
+// stops after 65535 iterations, and 4096 exact segments (pointSegment loops inside) exceed that.
+TEST_F(MinmaxTest, MatchesRaymarchWithManySamples) {
+    for (const char* name : {"grate", "terrain"}) {
+        const viz::scene::Scene scene = viz::scene::makeBuiltinScene(name);
+        const viz::FrameOutput march =
+            render(scene, "raymarch", {{"samples", 4096}, {"shadow_map", 1024}}, 80, 60);
+        const viz::FrameOutput out = render(scene, "minmax", {{"shadow_map", 1024}}, 80, 60);
+        const double e = relativeL2(out.airlight, march.airlight);
+        std::printf("minmax vs raymarch (4096 samples) on %s (80x60): relative L2 = %.4f\n", name, e);
+        EXPECT_LT(e, 0.02) << name;
+    }
+}
+
+// integrand=svd with N = 8 singular vectors: within 2 % of raymarch with a very large sample count, and
+// the textured light (stained-glass: prefix sums of Gamma_i T per slice) within 3 %; rank 1 is worse than
+// rank 8 (the low-rank approximation is what changes).
+TEST_F(MinmaxTest, LowRankIntegrandMatchesRaymarch) {
+    for (const char* name : {"grate", "terrain", "stained-glass"}) {
+        const viz::scene::Scene scene = viz::scene::makeBuiltinScene(name);
+        const viz::FrameOutput march = render(scene, "raymarch", {{"samples", 4096}, {"shadow_map", 1024}}, 80, 60);
+        const viz::FrameOutput out = render(scene, "minmax", {{"shadow_map", 1024}, {"integrand", 1}, {"rank", 8}},
+                                            80, 60, -1, {"minmax.reconstruction_error"});
+        const viz::FrameOutput rank1 = render(scene, "minmax", {{"shadow_map", 1024}, {"integrand", 1}, {"rank", 1}},
+                                              80, 60, -1, {"minmax.reconstruction_error"});
+        EXPECT_TRUE(allFinite(out.airlight) && allFinite(out.final)) << name;
+        const double e = relativeL2(out.airlight, march.airlight);
+        const double e1 = relativeL2(rank1.airlight, march.airlight);
+        std::printf("minmax svd vs raymarch (4096 samples) on %s (80x60): rank 8 %.4f, rank 1 %.4f\n", name, e, e1);
+        EXPECT_LT(e, std::string(name) == "stained-glass" ? 0.03 : 0.02) << name;
+        EXPECT_LT(e, e1) << name;
+        // The published rank-N error of the factorisation falls from rank 1 to rank 8.
+        const auto* r8 = find(out, "minmax.reconstruction_error");
+        const auto* r1 = find(rank1, "minmax.reconstruction_error");
+        ASSERT_TRUE(r8 && r8->image && r1 && r1->image) << name;
+        std::printf("  reconstruction error of I sin(beta): rank 1 %.2e, rank 8 %.2e\n", r1->image->at(0, 0),
+                    r8->image->at(0, 0));
+        EXPECT_LT(r8->image->at(0, 0), r1->image->at(0, 0)) << name;
+    }
+}
+
+// The tree walk and the linear scan of the row find the same lit runs, so they give the same image; the
+// tree processes fewer nodes than the scan reads texels.
+TEST_F(MinmaxTest, TreeWalkEqualsLinearScan) {
+    const viz::scene::Scene scene = viz::scene::makeBuiltinScene("grate");
+    const viz::FrameOutput tree = render(scene, "minmax", {}, 80, 60, -1, {"minmax.visited"});
+    const viz::FrameOutput linear = render(scene, "minmax", {{"traversal", 1}}, 80, 60, -1, {"minmax.visited"});
+    double worst = 0.0;
+    for (std::size_t i = 0; i < tree.airlight.pixels.size(); ++i) {
+        const double a = tree.airlight.pixels[i], b = linear.airlight.pixels[i];
+        worst = std::max(worst, std::abs(a - b) / std::max(1e-6, std::abs(b)));
+    }
+    EXPECT_LT(worst, 1e-5);
+    double nodes = 0.0, texels = 0.0;
+    for (float v : find(tree, "minmax.visited")->image->pixels) nodes += v;
+    for (float v : find(linear, "minmax.visited")->image->pixels) texels += v;
+    std::printf("grate 80x60: %.0f tree nodes vs %.0f texels scanned\n", nodes, texels);
+    EXPECT_LT(nodes, texels);
+}
+
+// S[alpha, gamma] equals the occluder's beta computed on the CPU from a direct lookup of the shadow map
+// along the same light ray (texel picked with the light's shadow matrix, biased as shadowVisibility does).
+TEST_F(MinmaxTest, RectifiedMapAgreesWithShadowMapLookups) {
+    for (const char* name : {"grate", "terrain"}) {
+        const viz::scene::Scene scene = viz::scene::makeBuiltinScene(name);
+        const int w = 80, h = 60, size = 512;
+        const viz::FrameOutput out = render(scene, "minmax", {{"shadow_map", size}}, w, h, 2,
+                                            {"minmax.rectified", "minmax.shadow_map"});
+        const auto* S = find(out, "minmax.rectified");
+        const auto* map = find(out, "minmax.shadow_map");
+        ASSERT_TRUE(S && S->image && map && map->image);
+        viz::render::GpuLightCpu L{};
+        const auto f = frameOf(scene, 0, w, h, size, &L);
+        ASSERT_EQ(S->image->width, f.columns);
+        ASSERT_EQ(S->image->height, f.slices);
+        int compared = 0, agree = 0;
+        for (int row = 0; row < f.slices; row += 7) {
+            for (int col = 0; col < f.columns; col += 5) {
+                const float alpha = f.sliceAlpha(row);
+                const float gamma = viz::minmax::gammaOfColumn(f, float(col) + 0.5f);
+                const glm::vec3 p = viz::minmax::lightRayPoint(f, alpha, gamma);
+                const glm::vec4 clip = L.shadowMatrix * glm::vec4(p, 1.0f);
+                const glm::vec2 ndc = glm::vec2(clip) / clip.w;
+                if (clip.w <= 0.0f || std::abs(ndc.x) > 1.0f || std::abs(ndc.y) > 1.0f) continue;
+                const float got = texel(*S->image, col, row);
+                if (got < 0.0f) continue;  // outside the spot's cone
+                const glm::ivec2 st = glm::clamp(glm::ivec2(glm::floor((ndc * 0.5f + 0.5f) * float(size))),
+                                                 glm::ivec2(0), glm::ivec2(size - 1));
+                const float stored = texel(*map->image, st.x, st.y);
+                const float threshold = f.kind == viz::minmax::LightKind::Spot
+                                            ? (stored + L.shadow.w) / (1.0f - L.shadow.z / float(size))
+                                            : stored + L.shadow.w + L.shadow.z / float(size);
+                const float expected = viz::minmax::occluderBeta(f, gamma, threshold);
+                ++compared;
+                if (std::abs(got - expected) <= 1e-4f * (1.0f + std::abs(expected))) ++agree;
+            }
+        }
+        std::printf("%s: %d of %d rectified texels agree with the direct lookup\n", name, agree, compared);
+        EXPECT_GT(compared, 1000) << name;
+        // Float rounding may put a light ray on the neighbouring shadow texel at a texel boundary.
+        EXPECT_GE(agree, compared * 99 / 100) << name;
+    }
+}
+
+// The CPU mirror (pixel_mirror.h) walks the same nodes as the GPU for sampled pixels and integrates the
+// same runs: node counts equal, values within 5e-5 relative plus 1e-7 of the image's mean L_air (for the
+// faint pixels at the cone's edge). Not bit-exact: GLSL's float atan/sin/exp/log on llvmpipe and the C
+// library's differ in the last bits; the runs and their order are the same.
+TEST_F(MinmaxTest, CpuMirrorEqualsGpuForSampledPixels) {
+    for (const char* name : {"grate", "terrain"}) {
+        const viz::scene::Scene scene = viz::scene::makeBuiltinScene(name);
+        const int w = 80, h = 60, size = 512;
+        const viz::FrameOutput out = render(scene, "minmax", {{"shadow_map", size}}, w, h, 4,
+                                            {"minmax.tree", "minmax.ray_coords", "minmax.visited",
+                                             "minmax.near_epipole"});
+        const auto* visited = find(out, "minmax.visited");
+        const auto* near = find(out, "minmax.near_epipole");
+        viz::render::GpuLightCpu L{};
+        const auto f = frameOf(scene, 0, w, h, size, &L);
+        double mean = 0.0;
+        for (float v : out.airlight.pixels) mean += v;
+        mean /= double(out.airlight.pixels.size());
+        int compared = 0;
+        double worst = 0.0;
+        for (int y = 0; y < h; y += 3) {
+            for (int x = 0; x < w; x += 3) {
+                if (near->image->at(x, y) != 0.0f) continue;
+                const auto r = mirrorPixel(scene, out, f, L, w, h, x, y, 64);
+                EXPECT_EQ(float(r.visited), visited->image->at(x, y)) << name << " pixel " << x << "," << y;
+                for (int c = 0; c < 3; ++c) {
+                    const double gpu = out.airlight.at(x, y, c), cpu = r.airlight[c];
+                    const double diff = std::abs(cpu - gpu);
+                    worst = std::max(worst, diff / (std::abs(gpu) + 1e-3 * mean));
+                    EXPECT_LE(diff, 5e-5 * std::abs(gpu) + 1e-7 * mean)
+                        << name << " pixel " << x << "," << y << " gpu " << gpu << " cpu " << cpu;
+                }
+                ++compared;
+            }
+        }
+        std::printf("%s: CPU mirror vs GPU over %d pixels: worst |cpu - gpu| / (|gpu| + 1e-3 mean) = %.2e\n", name, compared, worst);
+        EXPECT_GT(compared, 300);
+    }
+}
+
+// Epipole on screen (looking at the spot), off screen, light behind the camera, and a sun parallel to the
+// view direction (behind and ahead): finite output within the bounds above (3 % against the reference,
+// 2 % against raymarch), at 160x120.
+TEST_F(MinmaxTest, EpipoleCasesStayFiniteAndAccurate) {
+    struct Case {
+        const char* what;
+        viz::scene::Scene scene;
+    };
+    std::vector<Case> cases;
+    {
+        viz::scene::Scene s = viz::scene::makeBuiltinScene("grate");
+        s.camera = viz::scene::Camera(s.camera);
+        s.camera.forward = glm::normalize(glm::dvec3(0.0, 6.0, 0.0) - s.camera.position);
+        s.camera.up = glm::normalize(glm::cross(glm::cross(s.camera.forward, glm::dvec3(0, 1, 0)), s.camera.forward));
+        cases.push_back({"spot on screen", s});
+    }
+    {
+        viz::scene::Scene s = viz::scene::makeBuiltinScene("grate");
+        s.camera.position = glm::dvec3(0.5, 4.5, 3.0);
+        s.camera.forward = glm::normalize(glm::dvec3(0.0, -1.0, -1.3));
+        s.camera.up = glm::normalize(glm::cross(glm::cross(s.camera.forward, glm::dvec3(0, 1, 0)), s.camera.forward));
+        cases.push_back({"spot behind the camera", s});
+    }
+    {
+        viz::scene::Scene s = viz::scene::makeBuiltinScene("grate");
+        s.camera.forward = glm::normalize(glm::dvec3(0.0, 0.0, 0.0) - s.camera.position);
+        s.camera.up = glm::normalize(glm::cross(glm::cross(s.camera.forward, glm::dvec3(0, 1, 0)), s.camera.forward));
+        cases.push_back({"spot off screen (above the view)", s});
+    }
+    for (double sign : {1.0, -1.0}) {
+        viz::scene::Scene s = viz::scene::makeBuiltinScene("terrain");
+        s.lights[0].direction = sign * s.camera.forward;
+        cases.push_back({sign > 0 ? "sun along the view (anti-epipole at the centre)"
+                                  : "sun against the view (epipole at the centre)", s});
+    }
+    for (const Case& c : cases) {
+        const viz::FrameOutput reference = render(c.scene, "reference", {}, 160, 120);
+        const viz::FrameOutput out = render(c.scene, "minmax", {{"shadow_map", 2048}}, 160, 120);
+        EXPECT_TRUE(allFinite(out.airlight) && allFinite(out.final)) << c.what;
+        const viz::FrameOutput march = render(c.scene, "raymarch", {{"samples", 4096}, {"shadow_map", 2048}}, 160, 120);
+        const double e = relativeL2(out.airlight, reference.airlight);
+        const double eMarch = relativeL2(out.airlight, march.airlight);
+        std::printf("%-50s relative L2 vs reference %.4f (raymarch's own %.4f), vs raymarch %.4f\n", c.what, e,
+                    relativeL2(march.airlight, reference.airlight), eMarch);
+        EXPECT_LT(e, 0.03) << c.what;
+        EXPECT_LT(eMarch, 0.02) << c.what;
+    }
+}
+
+// Textured light (stained-glass's cookie) against raymarch, which samples the same cookie: within 3 %.
+TEST_F(MinmaxTest, StainedGlassAgreesWithRaymarch) {
+    const viz::scene::Scene scene = viz::scene::makeBuiltinScene("stained-glass");
+    const viz::FrameOutput march =
+        render(scene, "raymarch", {{"samples", 4096}, {"shadow_map", 1024}}, 80, 60);
+    const viz::FrameOutput out = render(scene, "minmax", {{"shadow_map", 1024}}, 80, 60);
+    EXPECT_TRUE(allFinite(out.airlight));
+    const double e = relativeL2(out.airlight, march.airlight);
+    std::printf("stained-glass minmax vs raymarch (4096 samples, 80x60): relative L2 = %.4f\n", e);
+    EXPECT_LT(e, 0.03);
+}
+
+TEST_F(MinmaxTest, StoppingAfterEachStagePublishesOnlyWhatExists) {
+    expectEachStageStopsCleanly("minmax", viz::scene::makeBuiltinScene("grate"), {{"shadow_map", 256}}, 4, 5);
+}
+
+// Stepping the mipmap: with mip_levels = k the frame stops after the mipmap stage and the picked row's
+// pyramid shows k built levels above the leaves.
+TEST_F(MinmaxTest, MipLevelsStepTheMipmapConstruction) {
+    const viz::scene::Scene scene = viz::scene::makeBuiltinScene("grate");
+    const viz::FrameOutput out = render(scene, "minmax", {{"shadow_map", 64}, {"mip_levels", 2}}, 32, 24);
+    EXPECT_EQ(out.lastStageRun, 3);
+    EXPECT_TRUE(out.airlight.empty());
+    const auto* pyramid = find(out, "minmax.pyramid");
+    ASSERT_TRUE(pyramid && pyramid->image);
+    // 64 leaves: levels 0..6 in bands of 4 rows; levels 6 (leaves), 5 and 4 built, 0..3 not (blue).
+    const viz::Image& img = *pyramid->image;
+    for (int level = 0; level <= 6; ++level) {
+        const bool built = level >= 4;
+        const float r = img.at(0, level * 4, 0), b = img.at(0, level * 4, 2);
+        EXPECT_EQ(built, !(r == 0.0f && b == 0.5f)) << "level " << level;
+    }
+}
+
+// A scene with only an area light has nothing to rectify; its VPLs are marched and the output is finite.
+TEST_F(MinmaxTest, AreaLightsAreMarchedByBruteForce) {
+    const viz::scene::Scene scene = viz::scene::makeTestAreaLightScene();
+    const viz::FrameOutput out = render(scene, "minmax", {{"area_samples", 2}, {"march_samples", 64}}, 32, 24);
+    EXPECT_FALSE(out.plan.stages[2].runs);
+    EXPECT_TRUE(allFinite(out.airlight));
+    double sum = 0.0;
+    for (float v : out.airlight.pixels) sum += v;
+    EXPECT_GT(sum, 0.0);
+}
+
+TEST_F(MinmaxTest, PlanNamesFeaturesAndDefines) {
+    auto technique = viz::makeTechnique("minmax");
+    const viz::Settings settings = viz::completeSettings(*technique, {});
+    auto feature = [](const viz::Plan& p, const std::string& name) {
+        for (const auto& f : p.features)
+            if (f.feature == name) return f;
+        ADD_FAILURE() << "no feature " << name;
+        return viz::FeaturePlan{};
+    };
+    const viz::Plan grate = technique->plan(viz::scene::makeBuiltinScene("grate"), settings);
+    EXPECT_TRUE(feature(grate, "NEAR_EPIPOLE").enabled);  // the spot is in view
+    EXPECT_NE(feature(grate, "NEAR_EPIPOLE").why.find("NEAR_EPIPOLE"), std::string::npos);
+    EXPECT_FALSE(feature(grate, "COOKIE").enabled);
+    EXPECT_NE(feature(grate, "COOKIE").why.find("LIGHTS_NO_COOKIE"), std::string::npos);
+    EXPECT_FALSE(feature(grate, "INTEGRAND_SVD").enabled);
+    // The forest's sun is low and in front of the camera; the terrain's crosses the view from the side.
+    viz::scene::Scene side = viz::scene::makeBuiltinScene("terrain");
+    side.lights[0].direction = glm::normalize(glm::cross(side.camera.forward, side.camera.up));
+    const viz::Plan far = technique->plan(side, settings);
+    EXPECT_FALSE(feature(far, "NEAR_EPIPOLE").enabled);
+    EXPECT_NE(feature(far, "NEAR_EPIPOLE").why.find("far off screen"), std::string::npos);
+    viz::scene::Scene clear = viz::scene::makeBuiltinScene("grate");
+    clear.medium.sigma_s = 0.0;
+    EXPECT_FALSE(technique->plan(clear, settings).stages[4].runs);
+}

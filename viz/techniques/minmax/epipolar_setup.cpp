@@ -1,0 +1,157 @@
+#include "techniques/minmax/epipolar_setup.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <vector>
+
+#include "core/error.h"
+#include "render/host_device.h"
+#include "scene/camera.h"
+
+namespace viz::minmax {
+namespace {
+
+// NDC of a direction q in front of the camera (x right, y up, both in [-1, 1] on screen).
+bool ndcOf(const scene::Camera& cam, double aspect, glm::dvec3 q, glm::dvec2& ndc) {
+    const double z = glm::dot(q, cam.forward);
+    if (z <= 0.0) return false;
+    const double tanHalf = std::tan(cam.yfov * 0.5);
+    ndc = glm::dvec2(glm::dot(q, scene::cameraRight(cam)) / (z * tanHalf * aspect), glm::dot(q, cam.up) / (z * tanHalf));
+    return true;
+}
+
+}  // namespace
+
+Epipoles screenEpipoles(const scene::Camera& camera, int width, int height, glm::dvec3 axis) {
+    const double aspect = scene::aspectOf(camera, width, height);
+    Epipoles e;
+    glm::dvec2 ndc;
+    // pixelRay: ndcX = 2 (x + 1/2) / width - 1 with x the column; GL y counts from the bottom the same way.
+    auto toPixel = [&](glm::dvec2 n) { return glm::dvec2((n.x + 1.0) * 0.5 * width, (n.y + 1.0) * 0.5 * height); };
+    if (ndcOf(camera, aspect, axis, ndc)) e.epipole = {toPixel(ndc), true};
+    if (ndcOf(camera, aspect, -axis, ndc)) e.antiEpipole = {toPixel(ndc), true};
+    return e;
+}
+
+bool epipoleNearScreen(const scene::Camera& camera, glm::dvec3 axis, double margin) {
+    const double aspect = camera.aspectRatio > 0.0 ? camera.aspectRatio : 4.0 / 3.0;
+    for (double s : {1.0, -1.0}) {
+        glm::dvec2 ndc;
+        if (ndcOf(camera, aspect, s * axis, ndc) && std::abs(ndc.x) <= 1.0 + margin && std::abs(ndc.y) <= 1.0 + margin)
+            return true;
+    }
+    return false;
+}
+
+glm::dvec3 epipolarAxis(const scene::Light& light, glm::dvec3 eye) {
+    if (light.type == scene::LightType::Directional) return -glm::normalize(light.direction);
+    return glm::normalize(light.position - eye);
+}
+
+Setup setupLight(const SetupInput& in) {
+    VIZ_CHECK(in.light && in.camera && in.width > 0 && in.height > 0, "setupLight needs a light, a camera and a size");
+    const render::GpuLightCpu& L = *in.light;
+    const bool directional = L.info.x == render::hd::kLightDirectional;
+    const scene::Camera& cam = *in.camera;
+    Setup s;
+    EpipolarFrame<double>& f = s.frame;
+    f = makeFrame<double>(directional ? LightKind::Directional : LightKind::Spot, glm::dvec3(L.position),
+                          glm::dvec3(L.direction));
+    const glm::dvec3 centre = scene::pixelRay(cam, in.width, in.height, 0.5 * (in.width - 1), 0.5 * (in.height - 1));
+    centreAlphaOn(f, centre);
+
+    // alpha over every pixel: its range, and its smallest change per pixel (where slices are sparsest).
+    const double pi = std::numbers::pi;
+    double lo = std::numeric_limits<double>::max(), hi = std::numeric_limits<double>::lowest();
+    double minGradient = std::numeric_limits<double>::max();
+    double betaLo = pi, betaHi = 0.0;
+    std::vector<double> previousRow(std::size_t(in.width), 0.0);
+    for (int y = 0; y < in.height; ++y) {
+        double left = 0.0;
+        for (int x = 0; x < in.width; ++x) {
+            const glm::dvec3 ray = scene::pixelRay(cam, in.width, in.height, x, y);
+            const double a = alphaOf(f, ray);
+            const double b = betaOf(f, ray);
+            betaLo = std::min(betaLo, b);
+            betaHi = std::max(betaHi, b);
+            lo = std::min(lo, a);
+            hi = std::max(hi, a);
+            if (x > 0 && y > 0) {
+                const double gx = alphaStep(left, a), gy = alphaStep(previousRow[std::size_t(x)], a);
+                minGradient = std::min(minGradient, std::sqrt(gx * gx + gy * gy));
+            }
+            left = a;
+            previousRow[std::size_t(x)] = a;
+        }
+    }
+    if (!(minGradient > 1e-9) || minGradient == std::numeric_limits<double>::max()) minGradient = 1e-9;
+    s.minAlphaGradient = minGradient;
+    s.betaLo = betaLo;
+    s.betaHi = betaHi;
+    const Epipoles ep = screenEpipoles(cam, in.width, in.height, f.axis);
+    auto onScreen = [&](const ScreenPoint& p) {
+        return p.valid && p.pixel.x >= -1.0 && p.pixel.x <= in.width + 1.0 && p.pixel.y >= -1.0 &&
+               p.pixel.y <= in.height + 1.0;
+    };
+    // With the epipole on screen the slices fan all the way round; otherwise the screen sees less than pi.
+    f.wrap = onScreen(ep.epipole) || onScreen(ep.antiEpipole) || hi - lo > 0.9 * pi;
+    const double span = f.wrap ? 2.0 * pi : (hi - lo) + 2.0 * minGradient;
+    // Neighbouring slices at most one pixel apart wherever alpha changes slowest: every ray is within half
+    // a pixel of its nearest slice.
+    int slices = in.slices;
+    if (slices <= 0) slices = int(std::ceil(span * std::max(1, in.oversampling) / minGradient)) + (f.wrap ? 0 : 1);
+    f.slices = std::clamp(slices, 2, kMaxSlices);
+    if (f.wrap) {
+        f.alphaLo = -pi;
+        f.alphaSpacing = 2.0 * pi / f.slices;
+    } else {
+        f.alphaLo = lo - minGradient;
+        f.alphaSpacing = span / double(f.slices - 1);
+    }
+    s.maxSliceGap = f.alphaSpacing / minGradient;
+
+    // gamma: the spot's cone as seen from the light (angle phi between -a and the spot axis, +- outer), or
+    // the directional map's reach (its box corners' largest distance from the axis).
+    if (directional) {
+        const glm::dmat4 inv = glm::inverse(glm::dmat4(L.shadowMatrix));
+        double reach = 0.0;
+        for (int c = 0; c < 8; ++c) {
+            glm::dvec4 p = inv * glm::dvec4((c & 1) ? 1.0 : -1.0, (c & 2) ? 1.0 : -1.0, (c & 4) ? 1.0 : -1.0, 1.0);
+            const glm::dvec3 q = glm::dvec3(p) / p.w;
+            reach = std::max(reach, glm::length(glm::cross(q, f.axis)));
+        }
+        f.gammaLo = 0.0;
+        f.gammaHi = reach;
+    } else {
+        const double phi = std::acos(std::clamp(glm::dot(-f.axis, glm::dvec3(L.direction)), -1.0, 1.0));
+        const double outer = std::acos(std::clamp(double(L.spot.w), -1.0, 1.0));
+        f.gammaLo = std::max(0.0, phi - outer);
+        f.gammaHi = std::min(pi, phi + outer);
+    }
+    const int wanted = std::clamp(in.columns, 16, kMaxColumns);
+    f.columns = int(std::bit_ceil(unsigned(wanted)));
+    if (f.columns > kMaxColumns) f.columns = kMaxColumns;
+    return s;
+}
+
+EpipolarFrame<float> toFloat(const EpipolarFrame<double>& f) {
+    EpipolarFrame<float> g;
+    g.kind = f.kind;
+    g.axis = glm::vec3(f.axis);
+    g.u = glm::vec3(f.u);
+    g.v = glm::vec3(f.v);
+    g.lightDistance = float(f.lightDistance);
+    g.slices = f.slices;
+    g.columns = f.columns;
+    g.wrap = f.wrap;
+    g.alphaLo = float(f.alphaLo);
+    g.alphaSpacing = float(f.alphaSpacing);
+    g.gammaLo = float(f.gammaLo);
+    g.gammaHi = float(f.gammaHi);
+    return g;
+}
+
+}  // namespace viz::minmax

@@ -1,0 +1,56 @@
+// Per-frame epipolar setup of one light on the CPU (double): the frame of epipolar.h, the slice count that
+// keeps every camera ray within half a pixel of a slice, the alpha range the screen needs, the gamma range
+// the shadow map covers, and where the epipole falls on the screen.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include "render/host_device.h"
+#include "scene/scene.h"
+#include "techniques/minmax/epipolar.h"
+
+namespace viz::minmax {
+
+inline constexpr int kMaxSlices = 4096;
+inline constexpr int kMaxColumns = 4096;
+
+// The epipole (direction a) and the anti-epipole (-a) on the screen, in pixel coordinates with y = 0 the
+// bottom row (GL), for a width x height image; `valid` is false for a direction behind the camera.
+struct ScreenPoint {
+    glm::dvec2 pixel{0.0};
+    bool valid = false;
+};
+struct Epipoles {
+    ScreenPoint epipole, antiEpipole;
+};
+Epipoles screenEpipoles(const scene::Camera& camera, int width, int height, glm::dvec3 axis);
+
+// Whether the epipole or anti-epipole lies on the screen widened by `margin` (NDC units on each side).
+// For plan(), which has no image size: a camera without a fixed aspect ratio is taken as 4:3.
+bool epipoleNearScreen(const scene::Camera& camera, glm::dvec3 axis, double margin);
+
+// The epipolar axis of a light (toward the light), eye-relative world space.
+glm::dvec3 epipolarAxis(const scene::Light& light, glm::dvec3 eye);
+
+struct SetupInput {
+    const render::GpuLightCpu* light = nullptr;  // spot or directional, with its shadow matrix
+    const scene::Camera* camera = nullptr;
+    int width = 0, height = 0;
+    int slices = 0;   // 0: automatic
+    int columns = 0;  // gamma texels (rounded up to a power of two)
+    int oversampling = 1;  // automatic slices: every camera ray within 1 / (2 oversampling) pixel of a slice
+};
+
+struct Setup {
+    EpipolarFrame<double> frame;
+    double minAlphaGradient = 0.0;  // smallest |d alpha / d pixel| over the screen (radians per pixel)
+    double maxSliceGap = 0.0;       // the largest distance (pixels) between neighbouring slices on screen
+    double betaLo = 0.0, betaHi = 0.0;  // beta range of the pixels' rays
+};
+
+Setup setupLight(const SetupInput& in);
+
+// The float frame uploaded to the shaders (and used by the CPU mirror).
+EpipolarFrame<float> toFloat(const EpipolarFrame<double>& f);
+
+}  // namespace viz::minmax

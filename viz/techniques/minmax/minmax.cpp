@@ -1,0 +1,669 @@
+#include "techniques/minmax/minmax.h"
+
+#include <algorithm>
+#include <bit>
+#include <cstdio>
+#include <cmath>
+#include <map>
+#include <memory>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "core/error.h"
+#include "gl/program.h"
+#include "gl/stage_clock.h"
+#include "gl/texture.h"
+#include "render/host_device.h"
+#include "render/intermediates.h"
+#include "render/scene_view.h"
+#include "scene/camera.h"
+#include "techniques/minmax/epipolar_setup.h"
+#include "techniques/minmax/low_rank.h"
+#include "techniques/minmax/views.h"
+
+namespace viz {
+namespace {
+
+using minmax::LightKind;
+
+// ---- ids (stable: lessons and tests use them) ----
+constexpr const char* kStageRectify = "minmax.rectify";
+constexpr const char* kStageMipmap = "minmax.mipmap";
+constexpr const char* kStageTraverse = "minmax.traverse";
+constexpr const char* kRectified = "minmax.rectified";
+constexpr const char* kRectifiedView = "minmax.rectified_view";
+constexpr const char* kTree = "minmax.tree";
+constexpr const char* kPyramid = "minmax.pyramid";
+constexpr const char* kTrace = "minmax.trace";
+constexpr const char* kAirlight = "minmax.airlight";
+constexpr const char* kVisited = "minmax.visited";
+constexpr const char* kNearMask = "minmax.near_epipole";
+constexpr const char* kRayCoords = "minmax.ray_coords";
+constexpr const char* kSingularValues = "minmax.singular_values";
+constexpr const char* kBasis = "minmax.basis";
+constexpr const char* kPrefixSums = "minmax.prefix_sums";
+constexpr const char* kReconstructionError = "minmax.reconstruction_error";
+
+enum StageIndex {
+    kShadowMapsIndex = 0,
+    kSurfaceIndex = 1,
+    kRectifyIndex = 2,
+    kMipmapIndex = 3,
+    kTraverseIndex = 4,
+    kComposeIndex = 5
+};
+
+// Shader permutations of minmax/*.comp: feature -> {define when enabled, define when disabled}.
+const std::map<std::string, std::pair<const char*, const char*>> kDefines = {
+    {"NEAR_EPIPOLE", {"NEAR_EPIPOLE", nullptr}},
+    {"INTEGRAND_SVD", {"INTEGRAND_SVD", nullptr}},
+    {"SPOT", {nullptr, "LIGHTS_NO_SPOT"}},
+    {"COOKIE", {nullptr, "LIGHTS_NO_COOKIE"}},
+    {"SHADOW_MAPS_CUBE", {nullptr, "SHADOW_NO_CUBE"}},
+    {"SHADOW_MAPS_2D", {nullptr, "SHADOW_NO_2D"}},
+};
+
+bool epipolarLight(const scene::Light& l) {
+    return l.type == scene::LightType::Spot || l.type == scene::LightType::Directional;
+}
+
+// Everything one epipolar light needs between the stages.
+struct LightWork {
+    int gpuIndex = 0;  // into GpuLights::lights()
+    minmax::Setup setup;
+    gl::Texture rectified;  // r32f, columns x slices
+    gl::Texture tree;       // rg32f, 2 columns x slices (Ahnentafel rows)
+    int levelsBuilt = 0;
+    // integrand=svd: the rank-N factorisation and the prefix sums of Gamma_i T (prefix.comp).
+    minmax::LowRank lowRank;
+    gl::Texture prefix;  // rgba32f array: (texels + 1) x rows x ceil(3 N / 4) layers
+    int prefixRows = 0;
+};
+
+class MinmaxTechnique final : public Technique {
+public:
+    MinmaxTechnique() {
+        mParams = {
+            {"slices", "epipolar slices (rows of the rectified map); 0: automatic, every ray within half a pixel "
+                       "of a slice", 0, 0, minmax::kMaxSlices, true},
+            {"slice_oversampling", "automatic slices: k puts every camera ray within 1/(2k) pixel of a slice", 2, 1,
+             64, true},
+            {"columns", "gamma texels per slice (rounded up to a power of two); 0: the shadow map's size", 0, 0,
+             minmax::kMaxColumns, true},
+            {"integrand", "analytic: closed form per lit segment; svd: rank-N approximation with prefix sums", 0, 0,
+             1, true, {"analytic", "svd"}},
+            {"rank", "singular vectors kept by integrand=svd", 4, 1, 8, true},
+            {"texture_columns", "integrand=svd: gamma texels of the prefix-sum tables of Gamma_i T (the light "
+                                "texture's own resolution, lower than the shadow map's)", 256, 16, 4096, true},
+            {"traversal", "tree: min-max mipmap walk (Figure 5); linear: scan every texel of the row", 0, 0, 1, true,
+             {"tree", "linear"}},
+            // Each piece is one pointSegment call; llvmpipe stops every loop of a shader invocation after
+            // 65535 iterations in total (all loops together), which more pieces would exceed (README).
+            {"spot_pieces", "spot lights: pieces across the cone, each with its own A_spot * cookie", 64, 1, 128,
+             true},
+            {"epipole_radius", "pixels around the (anti-)epipole marched by brute force", 4, 0, 1000, false},
+            {"march_samples", "brute-force samples per ray (near the epipole, and lights without epipolar path)",
+             512, 1, 16384, true},
+            {"mip_levels", "mipmap passes to run (0: all); fewer stops the frame after the mipmap stage", 0, 0, 13,
+             true},
+            {"pick_x", "picked pixel (column, 0 = left) for the per-ray intermediates; -1: image centre", -1, -1,
+             16384, true},
+            {"pick_y", "picked pixel (row, 0 = top); -1: image centre", -1, -1, 16384, true},
+            {"trace_steps", "picked pixel's walk: show its first k nodes (0: all); steps the traversal node by node",
+             0, 0, 100000, true},
+        };
+        for (ParamInfo& p : render::SceneViewPasses::params()) mParams.push_back(std::move(p));
+        mStages = {
+            render::SceneViewPasses::shadowStage("minmax"),
+            render::SceneViewPasses::surfaceStage("minmax"),
+            {kStageRectify, "Rectify", "shadow map -> S[alpha, gamma] = beta of the occluder on each light ray; "
+             "integrand=svd: SVD of I(beta, gamma) and prefix sums of Gamma_i T per slice",
+             {"slices", "slice_oversampling", "columns", "integrand", "rank", "texture_columns"},
+             {kRectified, kRectifiedView, kSingularValues, kBasis, kPrefixSums, kReconstructionError}, 1},
+            {kStageMipmap, "Min-max mipmap", "per row of S: a 1D min-max tree, one pass per level",
+             {"mip_levels"}, {kTree, kPyramid}, 1},
+            {kStageTraverse, "Traverse", "per pixel: walk the slice's tree, integrate the lit segments",
+             {"integrand", "rank", "traversal", "spot_pieces", "epipole_radius", "march_samples", "pick_x", "pick_y", "trace_steps"},
+             {kAirlight, kVisited, kNearMask, kRayCoords, kTrace}, 1},
+            render::SceneViewPasses::composeStage("minmax"),
+        };
+    }
+
+    std::string id() const override { return "minmax"; }
+    std::string description() const override {
+        return "1D min-max mipmaps in epipolar space (Chen, Baran, Durand, Jarosz 2011)";
+    }
+    const std::vector<StageInfo>& stages() const override { return mStages; }
+    const std::vector<ParamInfo>& params() const override { return mParams; }
+    bool needsGl() const override { return true; }
+
+    Plan plan(const scene::Scene& scene, const Settings& settings) const override {
+        Plan p;
+        for (const StageInfo& s : mStages) p.stages.push_back({s.id, true, ""});
+        const bool anyEpipolar = std::any_of(scene.lights.begin(), scene.lights.end(), epipolarLight);
+        if (scene.medium.sigma_s == 0.0) {
+            for (int i : {kRectifyIndex, kMipmapIndex, kTraverseIndex}) {
+                p.stages[std::size_t(i)].runs = false;
+                p.stages[std::size_t(i)].why = "sigma_s = 0: the medium scatters nothing, L_air = 0";
+            }
+        } else if (!anyEpipolar) {
+            for (int i : {kRectifyIndex, kMipmapIndex}) {
+                p.stages[std::size_t(i)].runs = false;
+                p.stages[std::size_t(i)].why = "no spot or directional light: nothing to rectify (point and area "
+                                               "lights are marched by brute force in the traverse stage)";
+            }
+        }
+        const bool svd = settings.at("integrand") == 1.0;
+        p.features.push_back({"INTEGRAND_SVD", svd,
+                              svd ? "rank-" + std::to_string(int(settings.at("rank"))) +
+                                        " SVD of I(beta, gamma) with prefix sums of Gamma_i"
+                                  : "integrand=analytic: closed form (airlight.glsl pointSegment / "
+                                    "directionalSegment) per lit segment"});
+        if (svd) {
+            const bool spot = render::hasLightOfType(scene, scene::LightType::Spot);
+            const bool sun = render::hasLightOfType(scene, scene::LightType::Directional);
+            p.features.push_back(
+                {"TEXTURED_PREFIX_SUMS", spot,
+                 spot ? "spot: T = colour * I * A_spot * cookie varies with alpha: prefix sums of Gamma_i T per slice"
+                      : "no spot light: T is the constant colour * I, one prefix-sum row shared by every slice"});
+            if (sun && spot) p.features.back().why += "; directional lights share one row";
+        }
+        const bool linear = settings.at("traversal") == 1.0;
+        p.features.push_back({"TREE_TRAVERSAL", !linear,
+                              linear ? "traversal=linear: every texel of the row up to the ray's end (run-time branch)"
+                                     : "stackless walk of Figure 5, climb <= 1 level, delayed update (run-time branch)"});
+        // Near-epipole marching: only when an epipolar light's epipole or anti-epipole is on or near the
+        // screen (within a quarter of the screen beyond its edges).
+        bool near = false;
+        std::string nearWhy = "no spot or directional light";
+        for (const scene::Light& l : scene.lights) {
+            if (!epipolarLight(l)) continue;
+            const glm::dvec3 axis = minmax::epipolarAxis(l, scene.camera.position);
+            if (minmax::epipoleNearScreen(scene.camera, axis, 0.25)) {
+                near = true;
+                nearWhy = "epipole of light '" + l.name + "' on or near the screen: brute-force march within " +
+                          std::to_string(int(settings.at("epipole_radius"))) + " px of it";
+            } else if (!near) {
+                nearWhy = "epipole far off screen (more than a quarter screen beyond every edge): no pixel is "
+                          "near it";
+            }
+        }
+        if (settings.at("epipole_radius") <= 0.0 && near) {
+            near = false;
+            nearWhy = "epipole_radius = 0";
+        }
+        p.features.push_back({"NEAR_EPIPOLE", near, nearWhy});
+        const bool hasSpot = render::hasLightOfType(scene, scene::LightType::Spot);
+        const bool hasCookie = std::any_of(scene.lights.begin(), scene.lights.end(),
+                                           [](const scene::Light& l) { return l.cookie >= 0; });
+        p.features.push_back({"SPOT", hasSpot,
+                              hasSpot ? "spot A_spot per gamma piece" : "no spot light in the scene"});
+        p.features.push_back({"COOKIE", hasCookie,
+                              hasCookie ? "cookie texture sampled per gamma piece" : "no light has a cookie"});
+        const bool brute = std::any_of(scene.lights.begin(), scene.lights.end(),
+                                       [](const scene::Light& l) { return !epipolarLight(l); });
+        p.features.push_back({"BRUTE_FORCE_LIGHTS", brute,
+                              brute ? "point / area lights have no 2D shadow map to rectify: marched per pixel"
+                                    : "every light is spot or directional"});
+        const bool cubes = render::hasLightOfType(scene, scene::LightType::Point) ||
+                           render::hasLightOfType(scene, scene::LightType::Area);
+        p.features.push_back({"SHADOW_MAPS_CUBE", cubes,
+                              cubes ? "point lights / VPLs need omnidirectional maps" : "no point or area light"});
+        const bool maps2D = anyEpipolar;
+        p.features.push_back({"SHADOW_MAPS_2D", maps2D, maps2D ? "spot / directional lights" : "no spot or directional light"});
+        for (FeaturePlan& f : p.features) {
+            const auto it = kDefines.find(f.feature);
+            const char* define = it == kDefines.end() ? nullptr : (f.enabled ? it->second.first : it->second.second);
+            if (define) f.why += std::string(f.enabled ? " (compiled in: " : " (compiled out: ") + define + ")";
+        }
+        return p;
+    }
+
+    FrameOutput run(const FrameInput& input) override {
+        const scene::Scene& scene = *input.scene;
+        const Settings& s = input.settings;
+        FrameOutput out;
+        out.plan = plan(scene, s);
+        out.timing.clock = gl::StageClock::method();
+        const int stop = input.stopAfterStage < 0 ? kComposeIndex : input.stopAfterStage;
+        gl::StageClock clock;
+
+        clock.begin();
+        mView.buildShadows(scene, s, out.intermediates, "minmax");
+        out.timing.stages.push_back({mStages[kShadowMapsIndex].id, clock.endMilliseconds()});
+        out.lastStageRun = kShadowMapsIndex;
+        if (stop == kShadowMapsIndex) return out;
+
+        clock.begin();
+        mView.renderSurface(scene, input.width, input.height, out.intermediates, "minmax");
+        out.timing.stages.push_back({mStages[kSurfaceIndex].id, clock.endMilliseconds()});
+        out.lastStageRun = kSurfaceIndex;
+        if (stop == kSurfaceIndex) return out;
+
+        const bool scatters = scene.medium.sigma_s != 0.0;
+        // ---- rectify ----
+        clock.begin();
+        prepareLights(scene, input);
+        const bool svd = s.at("integrand") == 1.0;
+        if (scatters) {
+            for (LightWork& w : mWork) {
+                rectify(w);
+                if (svd) prefixSums(w, scene, input);
+            }
+        }
+        out.timing.stages.push_back({kStageRectify, clock.endMilliseconds()});
+        publishRectified(out, input);
+        if (svd && scatters) publishLowRank(out);
+        out.lastStageRun = kRectifyIndex;
+        if (stop == kRectifyIndex) return out;
+
+        // ---- mipmap ----
+        clock.begin();
+        const int wantedLevels = int(s.at("mip_levels"));
+        bool complete = true;
+        if (scatters) {
+            for (LightWork& w : mWork) {
+                buildTree(w, wantedLevels);
+                complete = complete && w.levelsBuilt == levelCount(w);
+            }
+        }
+        out.timing.stages.push_back({kStageMipmap, clock.endMilliseconds()});
+        publishTree(out, input);
+        out.lastStageRun = kMipmapIndex;
+        if (stop == kMipmapIndex || !complete) return out;
+
+        // ---- traverse ----
+        clock.begin();
+        allocateTargets(input.width, input.height);
+        mAirlight.clear(glm::vec4(0.0f));
+        mVisited.clear(glm::vec4(0.0f));
+        mNearMask.clear(glm::vec4(0.0f));
+        mRayCoords.clear(glm::vec4(0.0f));
+        if (scatters) {
+            const gl::Program& program = traverseProgram(out.plan);
+            for (std::size_t i = 0; i < mWork.size(); ++i)
+                traverse(program, scene, input, &mWork[i], mWork[i].gpuIndex, i == 0);
+            for (int li : mBruteLights) traverse(program, scene, input, nullptr, li, false);
+        }
+        out.timing.stages.push_back({kStageTraverse, clock.endMilliseconds()});
+        publishTraverse(out, input);
+        out.airlight = render::readRgb(mAirlight);
+        out.lastStageRun = kTraverseIndex;
+        if (stop == kTraverseIndex) return out;
+
+        clock.begin();
+        out.final = mView.compose(scene, mAirlight, out.intermediates, "minmax");
+        out.timing.stages.push_back({mStages[kComposeIndex].id, clock.endMilliseconds()});
+        out.lastStageRun = kComposeIndex;
+        return out;
+    }
+
+private:
+    static int levelCount(const LightWork& w) { return std::bit_width(unsigned(w.setup.frame.columns)) - 1; }
+
+    glm::ivec2 pickedPixel(const FrameInput& input) const {
+        int x = int(input.settings.at("pick_x")), y = int(input.settings.at("pick_y"));
+        if (x < 0) x = input.width / 2;
+        if (y < 0) y = input.height / 2;
+        return {std::min(x, input.width - 1), std::min(y, input.height - 1)};
+    }
+
+    // Epipolar setup of every spot and directional light; others are marched.
+    void prepareLights(const scene::Scene& scene, const FrameInput& input) {
+        const auto& lights = mView.lights().lights();
+        const int columns = int(input.settings.at("columns")) > 0 ? int(input.settings.at("columns"))
+                                                                    : int(input.settings.at("shadow_map"));
+        std::vector<LightWork> work;
+        mBruteLights.clear();
+        for (int i = 0; i < int(lights.size()); ++i) {
+            const auto& L = lights[std::size_t(i)];
+            const bool epipolar = (L.info.x == render::hd::kLightSpot || L.info.x == render::hd::kLightDirectional) &&
+                                  L.info.z >= 0;
+            if (!epipolar) {
+                mBruteLights.push_back(i);
+                continue;
+            }
+            LightWork w;
+            w.gpuIndex = i;
+            w.setup = minmax::setupLight({.light = &L, .camera = &scene.camera, .width = input.width,
+                                          .height = input.height, .slices = int(input.settings.at("slices")),
+                                          .columns = columns,
+                                          .oversampling = int(input.settings.at("slice_oversampling"))});
+            // Reuse the previous textures when the sizes agree.
+            const std::size_t k = work.size();
+            if (k < mWork.size() && mWork[k].rectified &&
+                mWork[k].rectified.size() == glm::ivec3(w.setup.frame.columns, w.setup.frame.slices, 1)) {
+                w.rectified = std::move(mWork[k].rectified);
+                w.tree = std::move(mWork[k].tree);
+            } else {
+                const int c = w.setup.frame.columns, r = w.setup.frame.slices;
+                w.rectified = gl::Texture::create({.target = GL_TEXTURE_2D, .format = GL_R32F, .size = {c, r, 1},
+                                                   .levels = 1, .label = kRectified});
+                w.tree = gl::Texture::create({.target = GL_TEXTURE_2D, .format = GL_RG32F, .size = {2 * c, r, 1},
+                                              .levels = 1, .label = kTree});
+                w.rectified.setFilter(GL_NEAREST, GL_NEAREST);
+                w.tree.setFilter(GL_NEAREST, GL_NEAREST);
+            }
+            work.push_back(std::move(w));
+        }
+        mWork = std::move(work);
+    }
+
+    void setFrameUniforms(const gl::Program& p, const minmax::EpipolarFrame<float>& f) const {
+        p.set("uKind", int(f.kind));
+        p.set("uAxis", f.axis);
+        p.set("uU", f.u);
+        p.set("uV", f.v);
+        p.set("uLightDistance", f.lightDistance);
+        p.set("uSlices", f.slices);
+        p.set("uColumns", f.columns);
+        p.set("uWrap", f.wrap);
+        p.set("uAlphaLo", f.alphaLo);
+        p.set("uAlphaSpacing", f.alphaSpacing);
+        p.set("uGammaLo", f.gammaLo);
+        p.set("uGammaHi", f.gammaHi);
+    }
+
+    void rectify(LightWork& w) {
+        if (!mRectify) mRectify = gl::Program::compile({.stages = {"minmax/rectify.comp"}, .label = kStageRectify});
+        const auto f = minmax::toFloat(w.setup.frame);
+        mRectify.use();
+        setFrameUniforms(mRectify, f);
+        mRectify.set("uLight", w.gpuIndex);
+        mView.lights().bind();
+        mView.shadows().bind();
+        w.rectified.bindImage(0, GL_WRITE_ONLY);
+        const glm::ivec3 groups = gl::groupCount({f.columns, f.slices, 1}, mRectify.workGroupSize());
+        glDispatchCompute(GLuint(groups.x), GLuint(groups.y), 1);
+        glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+    }
+
+    // integrand=svd: factorise I(beta, gamma) sin(beta) for this light's frame over the screen's betas, then
+    // fill the prefix-sum tables of Gamma_i T (one row per slice for a spot, one shared row otherwise).
+    void prefixSums(LightWork& w, const scene::Scene& scene, const FrameInput& input) {
+        const Settings& s = input.settings;
+        const auto& f = w.setup.frame;
+        const int rank = int(s.at("rank"));
+        w.lowRank = minmax::lowRankIntegrand(f, w.setup.betaLo, w.setup.betaHi, scene.medium.sigma_s,
+                                             scene.medium.sigma_t(), scene.medium.g, rank);
+        const int texels = int(s.at("texture_columns"));
+        const bool spot = f.kind == LightKind::Spot;
+        const int rows = spot ? f.slices : 1;
+        const int layers = (3 * rank + 3) / 4;
+        if (!w.prefix || w.prefix.size() != glm::ivec3(texels + 1, rows, layers)) {
+            w.prefix = gl::Texture::create({.target = GL_TEXTURE_2D_ARRAY, .format = GL_RGBA32F,
+                                            .size = {texels + 1, rows, layers}, .levels = 1, .label = kPrefixSums});
+            w.prefix.setFilter(GL_LINEAR, GL_LINEAR);
+            w.prefix.setWrap(GL_CLAMP_TO_EDGE);
+        }
+        w.prefixRows = rows;
+        if (!mPrefix) mPrefix = gl::Program::compile({.stages = {"minmax/prefix.comp"}, .label = "minmax.prefix"});
+        mPrefix.use();
+        setFrameUniforms(mPrefix, minmax::toFloat(f));
+        mPrefix.set("uLight", w.gpuIndex);
+        mPrefix.set("uRows", rows);
+        mPrefix.set("uTexels", texels);
+        mPrefix.set("uRank", rank);
+        mPrefix.set("uSharedRow", !spot);
+        glProgramUniform1fv(mPrefix.id(), mPrefix.location("uGammaBasis[0]"), GLsizei(w.lowRank.basisGamma.size()),
+                            w.lowRank.basisGamma.data());
+        mView.lights().bind();
+        w.prefix.bindImage(0, GL_WRITE_ONLY);
+        const glm::ivec3 groups = gl::groupCount({rows, 1, 1}, mPrefix.workGroupSize());
+        glDispatchCompute(GLuint(groups.x), 1, 1);
+        glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+    }
+
+    // Leaves, then levels L-1 .. 0 (one pass each); `wanted` > 0 stops after that many level passes.
+    void buildTree(LightWork& w, int wanted) {
+        if (!mMipmap) mMipmap = gl::Program::compile({.stages = {"minmax/mipmap.comp"}, .label = kStageMipmap});
+        const auto& f = w.setup.frame;
+        const int levels = levelCount(w);
+        mMipmap.use();
+        mMipmap.set("uLeaves", f.columns);
+        mMipmap.set("uSlices", f.slices);
+        w.rectified.bindImage(0, GL_READ_ONLY);
+        w.tree.bindImage(1, GL_READ_WRITE);
+        const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+        w.tree.clear(GL_RGBA, GL_FLOAT, zero);
+        auto pass = [&](int level, int count) {
+            mMipmap.set("uLevel", level);
+            const glm::ivec3 groups = gl::groupCount({count, f.slices, 1}, mMipmap.workGroupSize());
+            glDispatchCompute(GLuint(groups.x), GLuint(groups.y), 1);
+            glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+        };
+        pass(-1, f.columns);
+        w.levelsBuilt = 0;
+        for (int level = levels - 1; level >= 0; --level) {
+            if (wanted > 0 && w.levelsBuilt >= wanted) break;
+            pass(level, 1 << level);
+            ++w.levelsBuilt;
+        }
+    }
+
+    void allocateTargets(int width, int height) {
+        if (mAirlight && mAirlight.size().x == width && mAirlight.size().y == height) return;
+        auto make = [&](GLenum format, const char* label) {
+            return gl::Texture::create({.target = GL_TEXTURE_2D, .format = format, .size = {width, height, 1},
+                                        .levels = 1, .label = label});
+        };
+        mAirlight = make(GL_RGBA32F, kAirlight);
+        mVisited = make(GL_R32F, kVisited);
+        mNearMask = make(GL_R32F, kNearMask);
+        mRayCoords = make(GL_RGBA32F, kRayCoords);
+    }
+
+    const gl::Program& traverseProgram(const Plan& plan) {
+        gl::ShaderDefines defines;
+        std::string key;
+        for (const FeaturePlan& f : plan.features) {
+            const auto it = kDefines.find(f.feature);
+            if (it == kDefines.end()) continue;
+            const char* define = f.enabled ? it->second.first : it->second.second;
+            if (!define) continue;
+            defines.push_back({define, "1"});
+            key += std::string(define) + ";";
+        }
+        if (key != mProgramKey || !mTraverse) {
+            mTraverse = gl::Program::compile(
+                {.stages = {"minmax/traverse.comp"}, .defines = defines, .label = kStageTraverse});
+            mProgramKey = key;
+        }
+        return mTraverse;
+    }
+
+    // One light (index into GpuLights): the epipolar walk (work != nullptr) or the brute-force march.
+    void traverse(const gl::Program& program, const scene::Scene& scene, const FrameInput& input,
+                  const LightWork* work, int gpuIndex, bool writeCoords) {
+        const scene::Camera& cam = scene.camera;
+        const Settings& s = input.settings;
+        program.use();
+        program.set("uSize", glm::ivec2(input.width, input.height));
+        program.set("uForward", glm::vec3(cam.forward));
+        program.set("uRight", glm::vec3(scene::cameraRight(cam)));
+        program.set("uUp", glm::vec3(cam.up));
+        program.set("uTanHalf", float(std::tan(cam.yfov * 0.5)));
+        program.set("uAspect", float(scene::aspectOf(cam, input.width, input.height)));
+        program.set("uSigmaS", float(scene.medium.sigma_s));
+        program.set("uSigmaT", float(scene.medium.sigma_t()));
+        program.set("uG", float(scene.medium.g));
+        program.set("uLinear", s.at("traversal") == 1.0);
+        program.set("uPieces", int(s.at("spot_pieces")));
+        program.set("uMarchSamples", int(s.at("march_samples")));
+        program.set("uEpipoleRadius", float(s.at("epipole_radius")));
+        program.set("uWriteCoords", writeCoords);
+        glm::vec4 epipoles(-1e9f);
+        if (work) {
+            program.set("uMode", 0);
+            program.set("uLight", gpuIndex);
+            setFrameUniforms(program, minmax::toFloat(work->setup.frame));
+            const auto e = minmax::screenEpipoles(cam, input.width, input.height, work->setup.frame.axis);
+            if (e.epipole.valid) epipoles = glm::vec4(glm::vec2(e.epipole.pixel), epipoles.z, epipoles.w);
+            if (e.antiEpipole.valid) epipoles = glm::vec4(epipoles.x, epipoles.y, glm::vec2(e.antiEpipole.pixel));
+            work->tree.bindUnit(render::hd::kFirstFreeTextureUnit + 1);
+            if (s.at("integrand") == 1.0 && work->prefix) {
+                const minmax::LowRank& lr = work->lowRank;
+                program.set("uRank", lr.rank);
+                program.set("uPrefixTexels", work->prefix.size().x - 1);
+                program.set("uPrefixRows", work->prefixRows);
+                program.set("uBetaLo", float(lr.betaLo));
+                program.set("uBetaHi", float(lr.betaHi));
+                glProgramUniform1fv(program.id(), program.location("uBetaBasis[0]"), GLsizei(lr.basisB.size()),
+                                    lr.basisB.data());
+                work->prefix.bindUnit(render::hd::kFirstFreeTextureUnit + 2);
+            }
+        } else {
+            program.set("uMode", 1);
+            program.set("uLight", gpuIndex);
+            program.set("uColumns", 1);
+            program.set("uSlices", 1);
+            program.set("uGammaHi", 1.0f);
+        }
+        program.set("uEpipoles", epipoles);
+        mView.lights().bind();
+        mView.shadows().bind();
+        mView.surface().distance().bindUnit(render::hd::kFirstFreeTextureUnit);
+        mAirlight.bindImage(0, GL_READ_WRITE);
+        mVisited.bindImage(1, GL_READ_WRITE);
+        mNearMask.bindImage(2, GL_READ_WRITE);
+        mRayCoords.bindImage(3, GL_WRITE_ONLY);
+        const glm::ivec3 groups = gl::groupCount({input.width, input.height, 1}, program.workGroupSize());
+        glDispatchCompute(GLuint(groups.x), GLuint(groups.y), 1);
+        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |
+                        GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    }
+
+    // ---- intermediates ----
+
+    // Row `row` of a float texture (GL row index) as `channels` floats per texel.
+    static std::vector<float> readRow(const gl::Texture& t, int row, int channels) {
+        const int width = t.size().x;
+        std::vector<float> v(std::size_t(width * channels));
+        glGetTextureSubImage(t.id(), 0, 0, row, 0, width, 1, 1, channels == 1 ? GL_RED : GL_RG, GL_FLOAT,
+                             GLsizei(v.size() * sizeof(float)), v.data());
+        return v;
+    }
+
+    // The slice row of the picked pixel for the first epipolar light (computed on the CPU like the shader).
+    int pickedRow(const FrameInput& input) const {
+        const glm::ivec2 px = pickedPixel(input);
+        const auto f = minmax::toFloat(mWork.front().setup.frame);
+        const glm::vec3 w = glm::vec3(scene::pixelRay(input.scene->camera, input.width, input.height, px.x, px.y));
+        return minmax::sliceRow(f, minmax::alphaOf(f, w));
+    }
+
+    void publishRectified(FrameOutput& out, const FrameInput& input) const {
+        if (mWork.empty() || input.scene->medium.sigma_s == 0.0) return;
+        const LightWork& w = mWork.front();
+        out.intermediates.push_back(render::textureIntermediate(
+            kRectified, "Rectified shadow map S", "rows: slices alpha; columns: light rays gamma; value: beta of the "
+            "occluder (4 = unblocked, -1 = outside the cone)", "radians", ViewKind::Scalar, 0.0f,
+            float(std::numbers::pi), w.rectified));
+        const gl::Texture& t = w.rectified;
+        auto img = std::make_shared<Image>(minmax::rectifiedView([&](int r) { return readRow(t, r, 1); }, t.size().x,
+                                                                 t.size().y, pickedRow(input)));
+        out.intermediates.push_back(minmax::imageIntermediate(
+            kRectifiedView, "Rectified map, picked row",
+            "S / pi as grey (row 0 at the top = slice 0; nearest rows and columns when larger than 1024), the "
+            "picked pixel's slice in red", ViewKind::Color, img));
+    }
+
+    // Singular values, B_i(beta) and Gamma_i(gamma) as plots, the rank-N reconstruction error and the
+    // prefix-sum tables of the first epipolar light.
+    void publishLowRank(FrameOutput& out) const {
+        if (mWork.empty()) return;
+        const LightWork& w = mWork.front();
+        const minmax::LowRank& lr = w.lowRank;
+        char note[160];
+        std::snprintf(note, sizeof note, "log10 bars over 12 decades, kept in green; rank-%d reconstruction error of "
+                      "I sin(beta) on the 64x64 grid: %.3g", lr.rank, lr.reconstructionError);
+        out.intermediates.push_back(minmax::imageIntermediate(kSingularValues, "Singular values of I", note,
+                                                              ViewKind::Color,
+                                                              std::make_shared<Image>(minmax::singularValuesView(lr))));
+        out.intermediates.push_back(minmax::imageIntermediate(
+            kBasis, "B_i(beta) and Gamma_i(gamma)",
+            "top: B_i over the screen's beta range; bottom: Gamma_i over [gammaLo, gammaHi]; each half scaled to its "
+            "largest magnitude, zero in the middle; i = 1.. in red, green, blue, yellow, ...",
+            ViewKind::Color, std::make_shared<Image>(minmax::basisView(lr))));
+        auto error = std::make_shared<Image>(1, 1, 1);
+        error->at(0, 0) = float(lr.reconstructionError);
+        out.intermediates.push_back(minmax::imageIntermediate(
+            kReconstructionError, "Rank-N reconstruction error",
+            "||I - I_N|| / ||I|| (Frobenius) of I sin(beta) on the 64 x 64 grid, first epipolar light",
+            ViewKind::Scalar, error));
+        out.intermediates.push_back(render::textureIntermediate(
+            kPrefixSums, "Prefix sums of Gamma_i T", "x: gamma texel boundary k; y: slice (one row when shared); "
+            "layer q / 4, channel q % 4 holds rank i = q / 3, colour q % 3", "", ViewKind::Color, 0.0f, 1.0f,
+            w.prefix));
+    }
+
+    // Row `row` of a light's trees as nodes (x = min, y = max).
+    static std::vector<glm::vec2> readTreeRow(const gl::Texture& tree, int row) {
+        const std::vector<float> raw = readRow(tree, row, 2);
+        std::vector<glm::vec2> nodes(raw.size() / 2);
+        for (std::size_t k = 0; k < nodes.size(); ++k) nodes[k] = {raw[2 * k], raw[2 * k + 1]};
+        return nodes;
+    }
+
+    void publishTree(FrameOutput& out, const FrameInput& input) const {
+        if (mWork.empty() || input.scene->medium.sigma_s == 0.0) return;
+        const LightWork& w = mWork.front();
+        out.intermediates.push_back(render::textureIntermediate(
+            kTree, "Min-max mipmaps", "row = slice, x = Ahnentafel node (1 = root, leaves at columns..2 columns-1); "
+            "r = min, g = max of S below the node", "radians", ViewKind::Color, 0.0f, float(std::numbers::pi),
+            w.tree));
+        out.intermediates.push_back(minmax::imageIntermediate(
+            kPyramid, "Min-max pyramid, picked row",
+            "level 0 (root) at the top; each band: min (upper half), max (lower half) as beta / pi; blue = level "
+            "not built yet (mip_levels)", ViewKind::Color,
+            std::make_shared<Image>(minmax::pyramidView(readTreeRow(w.tree, pickedRow(input)), w.levelsBuilt))));
+    }
+
+    void publishTraverse(FrameOutput& out, const FrameInput& input) {
+        out.intermediates.push_back(render::textureIntermediate(
+            kAirlight, "L_air", "single-scattered light reaching the eye", "radiance", ViewKind::Color, 0.0f, 1.0f,
+            mAirlight));
+        out.intermediates.push_back(render::textureIntermediate(
+            kVisited, "Nodes visited", "tree nodes (or texels, traversal=linear) processed per pixel, all lights",
+            "nodes", ViewKind::Scalar, 0.0f, 64.0f, mVisited));
+        out.intermediates.push_back(render::textureIntermediate(
+            kNearMask, "Near-epipole mask", "1: marched by brute force near the epipole", "", ViewKind::Mask, 0.0f,
+            1.0f, mNearMask));
+        out.intermediates.push_back(render::textureIntermediate(
+            kRayCoords, "Ray coordinates", "first epipolar light: (slice row, beta, end column cEnd, d) per pixel",
+            "", ViewKind::Color, 0.0f, 1.0f, mRayCoords));
+        if (mWork.empty() || input.scene->medium.sigma_s == 0.0) return;
+        // The picked ray against its row's heightfield (Figure 4), from the GPU's own (row, beta, cEnd).
+        const LightWork& w = mWork.front();
+        const glm::ivec2 px = pickedPixel(input);
+        float coords[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+        glGetTextureSubImage(mRayCoords.id(), 0, px.x, input.height - 1 - px.y, 0, 1, 1, 1, GL_RGBA, GL_FLOAT,
+                             sizeof coords, coords);
+        const int row = std::clamp(int(coords[0]), 0, w.setup.frame.slices - 1);
+        out.intermediates.push_back(minmax::imageIntermediate(
+            kTrace, "Picked ray vs heightfield",
+            "top: S of the picked pixel's slice as a heightfield over columns (grey; a ray is lit where it passes "
+            "below it: beta < S; vertical range fitted to the row and the ray), the ray's beta in yellow up to its "
+            "end; below: the nodes the walk visited (CPU mirror of the shader, first trace_steps), one band per "
+            "level, green lit, red shadowed, grey mixed. A pixel marched near the epipole has no walk (row 0, "
+            "beta 0 shown)", ViewKind::Color,
+            std::make_shared<Image>(minmax::traceView(readTreeRow(w.tree, row), coords[1], coords[2],
+                                                      int(input.settings.at("trace_steps"))))));
+    }
+
+    std::vector<ParamInfo> mParams;
+    std::vector<StageInfo> mStages;
+    render::SceneViewPasses mView;
+    std::vector<LightWork> mWork;
+    std::vector<int> mBruteLights;  // GpuLights indices marched by brute force
+    gl::Program mRectify, mMipmap, mTraverse, mPrefix;
+    std::string mProgramKey;
+    gl::Texture mAirlight, mVisited, mNearMask, mRayCoords;
+};
+
+}  // namespace
+
+std::unique_ptr<Technique> makeMinmaxTechnique() { return std::make_unique<MinmaxTechnique>(); }
+
+}  // namespace viz

@@ -1,0 +1,134 @@
+#include "techniques/minmax/views.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <numbers>
+
+#include "techniques/minmax/minmax_tree.h"
+
+namespace viz::minmax {
+namespace {
+
+constexpr float kPi = std::numbers::pi_v<float>;
+
+float greyOfBeta(float beta) { return beta < 0.0f ? 0.0f : std::min(beta / kPi, 1.0f); }
+
+void setRgb(Image& img, int x, int y, glm::vec3 c) {
+    for (int ch = 0; ch < 3; ++ch) img.at(x, y, ch) = c[ch];
+}
+
+}  // namespace
+
+Intermediate imageIntermediate(const std::string& id, const std::string& label, const std::string& note,
+                               ViewKind kind, std::shared_ptr<Image> image) {
+    Intermediate i;
+    i.id = id;
+    i.label = label;
+    i.note = note;
+    i.kind = kind;
+    i.extent = {image->width, image->height, 1};
+    i.image = std::move(image);
+    return i;
+}
+
+Image rectifiedView(const std::function<std::vector<float>(int)>& readRow, int columns, int rows, int pickedRow) {
+    const int vw = std::min(columns, 1024), vh = std::min(rows, 1024);
+    Image img(vw, vh, 3);
+    const int pickedY = int(static_cast<long long>(pickedRow) * vh / rows);
+    for (int y = 0; y < vh; ++y) {
+        const bool picked = y == pickedY;
+        const int source = picked ? pickedRow : int(static_cast<long long>(y) * rows / vh);
+        const std::vector<float> values = readRow(source);
+        for (int x = 0; x < vw; ++x) {
+            const float grey = greyOfBeta(values[std::size_t(static_cast<long long>(x) * columns / vw)]);
+            setRgb(img, x, y, picked ? glm::vec3(1.0f, 0.2f * grey, 0.2f * grey) : glm::vec3(grey));
+        }
+    }
+    return img;
+}
+
+Image pyramidView(const std::vector<glm::vec2>& tree, int levelsBuilt) {
+    const int n = int(tree.size() / 2);
+    const int levels = std::bit_width(unsigned(n));  // log2(n) + 1
+    const int band = 4;
+    Image img(n, levels * band, 3);
+    for (int l = 0; l < levels; ++l) {
+        const bool built = l >= levels - 1 - levelsBuilt;  // the leaves (l = levels - 1) always are
+        for (int x = 0; x < n; ++x) {
+            const glm::vec2 mm = tree[std::size_t((1 << l) + x / (n >> l))];
+            for (int b = 0; b < band; ++b) {
+                const float grey = greyOfBeta(b < band / 2 ? mm.x : mm.y);
+                setRgb(img, x, l * band + b, built ? glm::vec3(grey) : glm::vec3(0.0f, 0.0f, 0.5f));
+            }
+        }
+    }
+    return img;
+}
+
+Image traceView(const std::vector<glm::vec2>& tree, float beta, float cEnd, int steps) {
+    const int n = int(tree.size() / 2);
+    const int levels = std::bit_width(unsigned(n));
+    const int plotH = 128, band = 3;
+    Image img(n, plotH + levels * band, 3);
+    // Vertical range: the row's finite S values and the ray's beta, padded by a tenth.
+    float lo = beta, hi = beta;
+    for (int x = 0; x < n; ++x) {
+        const float S = tree[std::size_t(n + x)].x;
+        if (S >= 0.0f && S <= kPi) lo = std::min(lo, S), hi = std::max(hi, S);
+    }
+    const float pad = 0.1f * std::max(hi - lo, 1e-3f);
+    lo = std::max(0.0f, lo - pad);
+    hi = std::min(kPi, hi + pad);
+    auto yOf = [&](float b) { return std::clamp(int((1.0f - (b - lo) / (hi - lo)) * float(plotH - 1)), 0, plotH - 1); };
+    const int yRay = yOf(beta);
+    for (int x = 0; x < n; ++x) {
+        const float S = tree[std::size_t(n + x)].x;
+        for (int y = yOf(std::max(S, 0.0f)); y < plotH; ++y) setRgb(img, x, y, glm::vec3(0.35f));
+        if (float(x) < cEnd) setRgb(img, x, yRay, glm::vec3(1.0f, 0.9f, 0.2f));
+    }
+    int step = 0;
+    traverse(tree, beta, std::min(cEnd, float(n)), [](const LitRun&) {}, [&](const VisitedNode& v) {
+        if (steps > 0 && step++ >= steps) return;
+        const int l = std::bit_width(unsigned(v.node)) - 1;
+        const NodeRange r = nodeRange(v.node, n);
+        const glm::vec3 c = v.state == NodeState::Lit        ? glm::vec3(0.2f, 0.9f, 0.2f)
+                            : v.state == NodeState::Shadowed ? glm::vec3(0.6f, 0.05f, 0.05f)
+                                                             : glm::vec3(0.6f);
+        for (int x = r.lo; x < r.hi; ++x)
+            for (int b = 0; b < band - 1; ++b) setRgb(img, x, plotH + l * band + b, c);
+    });
+    return img;
+}
+
+Image singularValuesView(const LowRank& lr) {
+    Image img(kGrid, 64, 3);
+    const double top = std::log10(std::max(lr.singularValues.front(), 1e-300));
+    for (int i = 0; i < kGrid; ++i) {
+        const double v = std::log10(std::max(lr.singularValues[std::size_t(i)], 1e-300));
+        const int height = std::clamp(int(64.0 * (1.0 - (top - v) / 12.0)), 0, 64);
+        for (int y = 64 - height; y < 64; ++y)
+            setRgb(img, i, y, i < lr.rank ? glm::vec3(0.2f, 0.9f, 0.2f) : glm::vec3(0.6f));
+    }
+    return img;
+}
+
+Image basisView(const LowRank& lr) {
+    const int h = 64;
+    Image img(kGrid, 2 * h, 3);
+    const glm::vec3 colours[kMaxRank] = {{1, 0.2f, 0.2f}, {0.2f, 1, 0.2f}, {0.3f, 0.5f, 1}, {1, 1, 0.2f},
+                                         {1, 0.2f, 1},    {0.2f, 1, 1},    {1, 0.6f, 0.2f}, {0.8f, 0.8f, 0.8f}};
+    for (int half = 0; half < 2; ++half) {
+        const std::vector<float>& v = half == 0 ? lr.basisB : lr.basisGamma;
+        float m = 1e-30f;
+        for (int k = 0; k < lr.rank * kGrid; ++k) m = std::max(m, std::abs(v[std::size_t(k)]));
+        for (int i = 0; i < lr.rank; ++i)
+            for (int k = 0; k < kGrid; ++k) {
+                const float y = v[std::size_t(i * kGrid + k)] / m;  // [-1, 1]
+                setRgb(img, k, half * h + std::clamp(int((0.5f - 0.5f * y) * float(h - 1)), 0, h - 1), colours[i]);
+            }
+    }
+    return img;
+}
+
+}  // namespace viz::minmax

@@ -1,0 +1,40 @@
+// The CPU-drawn intermediates of minmax (plain images, no GL): the rectified map with the picked row, the
+// picked row's min-max pyramid, the picked ray against its heightfield (Figure 4 of Chen et al. 2011),
+// and the plots of the low-rank factorisation.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "core/image.h"
+#include "debug/technique.h"
+#include "techniques/minmax/low_rank.h"
+
+namespace viz::minmax {
+
+// An Intermediate holding a CPU image.
+Intermediate imageIntermediate(const std::string& id, const std::string& label, const std::string& note,
+                               ViewKind kind, std::shared_ptr<Image> image);
+
+// S / pi as grey, row 0 at the top, the picked row in red; at most 1024 x 1024 (nearest rows and columns).
+// readRow(r) returns row r of S (columns floats).
+Image rectifiedView(const std::function<std::vector<float>(int)>& readRow, int columns, int rows, int pickedRow);
+
+// The 2n nodes of one row as a pyramid: level 0 (root) at the top, bands of 4 rows (min over max, beta / pi
+// as grey); levels above the last `levelsBuilt` passes (plus the leaves) in blue.
+Image pyramidView(const std::vector<glm::vec2>& tree, int levelsBuilt);
+
+// The ray at height beta ending at column cEnd against the row's heightfield (grey where beta < S), and
+// below one band per level with the nodes of the walk (minmax_tree.h traverse), the first `steps` (0: all):
+// green lit, red shadowed, grey mixed.
+Image traceView(const std::vector<glm::vec2>& tree, float beta, float cEnd, int steps);
+
+// Singular values as log10 bars over 12 decades (kept ones green), and B_i / Gamma_i as curves.
+Image singularValuesView(const LowRank& lr);
+Image basisView(const LowRank& lr);
+
+}  // namespace viz::minmax
