@@ -4,6 +4,10 @@
 // the midpoint rule of the integrand; EXACT integrates the unshadowed airlight analytically over each
 // sample's interval and weights it by the visibility at the sample. Output: L_air (rgba32f) and the lit
 // fraction of the samples. All positions are eye-relative (the eye at the origin).
+// The (light, sample) pairs are flattened to k = light * N + sample and each dispatch runs the pairs
+// [uPairBegin, uPairEnd), adding to what earlier dispatches stored: llvmpipe stops every loop of an
+// invocation after 65,535 iterations in total (all loops counted together), which a single dispatch
+// of many samples, lights and exact segments would exceed, silently cutting the ray short.
 layout(local_size_x = 8, local_size_y = 8) in;
 
 #include "common/host_device.glsl"
@@ -12,8 +16,8 @@ layout(local_size_x = 8, local_size_y = 8) in;
 #include "common/shadow_map.glsl"
 
 layout(binding = kFirstFreeTextureUnit) uniform sampler2D uDistance;  // Euclidean t of the first surface
-layout(rgba32f, binding = 0) uniform writeonly image2D uAirlight;
-layout(r32f, binding = 1) uniform writeonly image2D uLitFraction;
+layout(rgba32f, binding = 0) uniform image2D uAirlight;     // running sum over the dispatches
+layout(r32f, binding = 1) uniform image2D uLitFraction;     // running count of lit samples, then the fraction
 
 uniform ivec2 uSize;
 uniform vec3 uForward;
@@ -27,6 +31,10 @@ uniform float uSigmaS;
 uniform float uSigmaT;
 uniform float uG;
 uniform uint uSeed;
+uniform int uPairBegin;  // first (light, sample) pair of this dispatch
+uniform int uPairEnd;    // one past the last
+uniform bool uFirst;     // the first dispatch starts the sums at zero
+uniform bool uLast;      // the last dispatch turns the lit count into a fraction
 
 // PCG-style integer hash -> [0, 1): jitter that is fixed per pixel, sample and seed (deterministic).
 float hashToUnit(uvec3 v) {
@@ -54,49 +62,46 @@ void main() {
     float d = texelFetch(uDistance, texel, 0).r;
     float dt = d / float(uSamples);
 
-    vec3 sum = vec3(0.0);
-    float litSamples = 0.0;
-    for (int li = 0; li < uLightCount; ++li) {
+    vec3 sum = uFirst ? vec3(0.0) : imageLoad(uAirlight, texel).rgb;
+    float litSamples = uFirst ? 0.0 : imageLoad(uLitFraction, texel).r;
+    for (int k = uPairBegin; k < uPairEnd; ++k) {
+        int li = k / uSamples;
+        int i = k - li * uSamples;
         GpuLight L = gLights[li];
-        bool directional = L.info.x == kLightDirectional;
-#ifdef EXACT
-        // t_P and h of the ray relative to the light, once per light (NUMERICS.md section 1).
-        RayLightGeometry g = rayLightGeometry(L.position.xyz, w);
-#endif
-        for (int i = 0; i < uSamples; ++i) {
 #ifdef JITTER
-            float u = hashToUnit(uvec3(uint(texel.x) + uint(texel.y) * 65536u, uint(i), uSeed + uint(li)));
+        float u = hashToUnit(uvec3(uint(texel.x) + uint(texel.y) * 65536u, uint(i), uSeed + uint(li)));
 #else
-            float u = 0.5;
+        float u = 0.5;
 #endif
-            float t = (float(i) + u) * dt;
-            vec3 x = t * w;
+        float t = (float(i) + u) * dt;
+        vec3 x = t * w;
 #ifdef SHADOW_LOOKUP_MESH
-            float V = shadowVisibilityMesh(L, x);  // depth linear across the polyvol mesh's triangles
+        float V = shadowVisibilityMesh(L, x);  // depth linear across the polyvol mesh's triangles
 #else
-            float V = shadowVisibility(L, x);
+        float V = shadowVisibility(L, x);
 #endif
-            litSamples += V;
-            if (V == 0.0) continue;
-            // cos theta = dot(direction light->point, direction point->eye) = dot(toLight, w).
-            vec3 toLight = directionToLight(L, x);
-            float cosTheta = dot(toLight, w);
+        litSamples += V;
+        if (V == 0.0) continue;
+        // cos theta = dot(direction light->point, direction point->eye) = dot(toLight, w).
+        vec3 toLight = directionToLight(L, x);
+        float cosTheta = dot(toLight, w);
 #ifdef EXACT
-            float x0 = float(i) * dt;
-            float x1 = float(i + 1) * dt;
-            if (directional) {
-                sum += V * directionalSegment(cosTheta, x0, x1, uSigmaS, uSigmaT, uG, 1.0) * L.radiant.rgb;
-            } else {
-                // Unit-intensity isotropic segment times the light's angular factor at the sample.
-                sum += V * pointSegment(g.tP, g.h, x0, x1, uSigmaS, uSigmaT, uG, 1.0) * lightIntensity(L, x);
-            }
-#else
-            vec3 E = unshadowedIrradiance(L, x, uSigmaT);
-            sum += V * uSigmaS * phaseHG(cosTheta, uG) * E * exp(-uSigmaT * t) * dt;
-#endif
+        float x0 = float(i) * dt;
+        float x1 = float(i + 1) * dt;
+        if (L.info.x == kLightDirectional) {
+            sum += V * directionalSegment(cosTheta, x0, x1, uSigmaS, uSigmaT, uG, 1.0) * L.radiant.rgb;
+        } else {
+            // t_P and h of the ray relative to the light (NUMERICS.md section 1); the unit-intensity
+            // isotropic segment times the light's angular factor at the sample.
+            RayLightGeometry g = rayLightGeometry(L.position.xyz, w);
+            sum += V * pointSegment(g.tP, g.h, x0, x1, uSigmaS, uSigmaT, uG, 1.0) * lightIntensity(L, x);
         }
+#else
+        vec3 E = unshadowedIrradiance(L, x, uSigmaT);
+        sum += V * uSigmaS * phaseHG(cosTheta, uG) * E * exp(-uSigmaT * t) * dt;
+#endif
     }
-    float fraction = uLightCount > 0 ? litSamples / float(uLightCount * uSamples) : 0.0;
+    float lit = uLast ? (uLightCount > 0 ? litSamples / float(uLightCount * uSamples) : 0.0) : litSamples;
     imageStore(uAirlight, texel, vec4(sum, 1.0));
-    imageStore(uLitFraction, texel, vec4(fraction));
+    imageStore(uLitFraction, texel, vec4(lit));
 }

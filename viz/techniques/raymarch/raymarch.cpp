@@ -1,6 +1,7 @@
 #include "techniques/raymarch/raymarch.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <map>
 #include <cmath>
 #include <memory>
@@ -24,6 +25,13 @@ constexpr const char* kAirlight = "raymarch.airlight";
 constexpr const char* kLitFraction = "raymarch.lit_fraction";
 
 enum StageIndex { kShadowMapsIndex = 0, kSurfaceIndex = 1, kMarchIndex = 2, kComposeIndex = 3 };
+
+// llvmpipe stops all loops of one shader invocation after 65,535 iterations in total (measured: a loop
+// of 70,000 runs 65,535 times; nested loops share the count). The march splits its (light, sample)
+// pairs over dispatches so that no invocation comes near it: a plain sample costs a few iterations
+// (shadow lookup), an exact one up to ~150 (pointSegment's sort and 13 Gauss-Legendre panels).
+constexpr int kPairsPerDispatchPlain = 8192;
+constexpr int kPairsPerDispatchExact = 256;
 
 // Shader permutations of raymarch/march.comp: feature -> {define when enabled, define when disabled}.
 // Features not listed are run-time branches.
@@ -130,6 +138,19 @@ public:
         const bool maps2D = hasSpot || render::hasLightOfType(scene, scene::LightType::Directional);
         p.features.push_back({"SHADOW_MAPS_2D", maps2D,
                               maps2D ? "spot / directional lights" : "no spot or directional light"});
+        {
+            // GPU lights: every light the view can see, an area light as area_samples^2 VPLs.
+            std::int64_t lights = 0;
+            for (const scene::Light& l : scene.lights)
+                if (render::lightReachesView(l, scene.camera)) lights += l.type == scene::LightType::Area ? area * area : 1;
+            const std::int64_t pairs = lights * std::int64_t(settings.at("samples"));
+            const std::int64_t chunk = pairsPerDispatch(settings);
+            const std::int64_t dispatches = std::max<std::int64_t>(1, (pairs + chunk - 1) / chunk);
+            p.features.push_back({"SPLIT_DISPATCHES", dispatches > 1,
+                                  std::to_string(pairs) + " (light, sample) pairs per pixel in " + std::to_string(dispatches) +
+                                      " dispatch(es) of at most " + std::to_string(chunk) +
+                                      ": llvmpipe stops an invocation's loops after 65,535 iterations"});
+        }
         const bool meshLookup = settings.at("shadow_lookup") != 0.0;
         p.features.push_back({"SHADOW_LOOKUP_MESH", meshLookup,
                               meshLookup ? "shadow_lookup=mesh: 2D maps read as polyvol's light volume mesh"
@@ -250,16 +271,31 @@ private:
         mView.lights().bind();
         mView.shadows().bind();
         mView.surface().distance().bindUnit(render::hd::kFirstFreeTextureUnit);
-        mAirlight.bindImage(0, GL_WRITE_ONLY);
-        mLitFraction.bindImage(1, GL_WRITE_ONLY);
+        mAirlight.bindImage(0, GL_READ_WRITE);
+        mLitFraction.bindImage(1, GL_READ_WRITE);
         const glm::ivec3 groups = gl::groupCount({input.width, input.height, 1}, program.workGroupSize());
-        glDispatchCompute(GLuint(groups.x), GLuint(groups.y), 1);
+        const std::int64_t pairs = std::int64_t(mView.lights().count()) * std::int64_t(s.at("samples"));
+        const std::int64_t chunk = pairsPerDispatch(s);
+        for (std::int64_t begin = 0; begin == 0 || begin < pairs; begin += chunk) {
+            const std::int64_t end = std::min(pairs, begin + chunk);
+            program.set("uPairBegin", int(begin));
+            program.set("uPairEnd", int(end));
+            program.set("uFirst", begin == 0);
+            program.set("uLast", end >= pairs);
+            glDispatchCompute(GLuint(groups.x), GLuint(groups.y), 1);
+            // The next dispatch reads what this one stored.
+            glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+        }
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     }
 
     std::vector<ParamInfo> mParams;
     std::vector<StageInfo> mStages;
     render::SceneViewPasses mView;
+    static std::int64_t pairsPerDispatch(const Settings& s) {
+        return s.at("exact") != 0.0 ? kPairsPerDispatchExact : kPairsPerDispatchPlain;
+    }
+
     std::map<std::string, gl::Program> mMarchPrograms;  // by permutation key
     gl::Texture mAirlight, mLitFraction;
 };
