@@ -44,6 +44,7 @@
 #include "session_state.h"
 #include "techniques/registry.h"
 #include "plot/plot.h"
+#include "techniques/reference/ray_probe.h"
 #include "ui/font.h"
 #include "ui/immediate.h"
 #include "ui/text_renderer.h"
@@ -327,6 +328,12 @@ public:
                     onKey(scriptKeyCode(a.target), GLFW_PRESS, 0);
                     ++mScriptIndex;
                     return true;
+                case ScriptAction::Kind::Hover: {
+                    const Rect r = scriptTarget(a);
+                    mHover = r.min + a.fraction * r.size();
+                    ++mScriptIndex;
+                    return true;
+                }
                 case ScriptAction::Kind::Screenshot:
                     writeScreenshot(a.target);
                     ++mScriptIndex;
@@ -373,7 +380,7 @@ public:
         nlohmann::json views = nlohmann::json::array();
         for (const auto& v : mViewRects)
             views.push_back({{"name", v.name}, {"title", v.title}, {"rect", {v.rect.min.x, v.rect.min.y, v.rect.max.x, v.rect.max.y}}});
-        const nlohmann::json sidecar = {{"window", {fb.x, fb.y}},
+        nlohmann::json sidecar = {{"window", {fb.x, fb.y}},
                                         {"scale", mScale},
                                         {"scene", mScene.name},
                                         {"technique", technique().id()},
@@ -382,6 +389,21 @@ public:
                                                     {"g", mScene.medium.g}}},
                                         {"settings", mSettings},
                                         {"views", views}};
+        if (mProbe) {
+            const auto rgb = [](glm::dvec3 v) { return nlohmann::json::array({v.x, v.y, v.z}); };
+            nlohmann::json lights = nlohmann::json::array();
+            for (const auto& l : mProbe->lights) {
+                nlohmann::json spans = nlohmann::json::array();
+                for (const auto& iv : l.lit) spans.push_back({iv.a, iv.b});
+                lights.push_back({{"name", l.name}, {"lit", spans}, {"airlight", rgb(l.airlight)}});
+            }
+            sidecar["inspector"] = {{"pixel", {mProbe->x, mProbe->y}},
+                                    {"d", mProbe->d},
+                                    {"reference", rgb(mProbe->airlight)},
+                                    {"technique", mProbeTechnique},
+                                    {"technique_value", mProbeHasValue ? rgb(mProbeValue) : nlohmann::json(nullptr)},
+                                    {"lights", lights}};
+        }
         std::filesystem::path json(path);
         json.replace_extension(".json");
         const std::string error = viz::writeFileAtomically(json, sidecar.dump(2) + "\n");
@@ -456,6 +478,74 @@ private:
         mExposure = mSession.exposure;
         mExposureSet = mSession.exposureSet;
         mDirty = true;
+    }
+
+    // ---- ray inspector ----
+
+    // The exact ground truth along the ray of the final image's pixel under the cursor, beside the current
+    // technique's value for that pixel. The cursor elsewhere clears it.
+    void inspectPixelUnderCursor() {
+        mProbe.reset();
+        if (!mFinalRect.contains(mHover) || mOptions.width < 1) return;
+        const glm::vec2 uv = (mHover - mFinalRect.min) / mFinalRect.size();
+        const int x = std::clamp(int(uv.x * float(mOptions.width)), 0, mOptions.width - 1);
+        const int y = std::clamp(int(uv.y * float(mOptions.height)), 0, mOptions.height - 1);
+        mScene.camera = mController.camera();
+        try {
+            mProbe = viz::reference::probePixel(mScene, mOptions.width, mOptions.height, x, y);
+        } catch (const std::exception& e) {
+            mError = e.what();
+            return;
+        }
+        mProbeTechnique = technique().id();
+        const viz::Image& a = mOutput.airlight;
+        mProbeHasValue = mHaveOutput && a.width == mOptions.width && a.height == mOptions.height;
+        if (mProbeHasValue) mProbeValue = {a.at(x, y, 0), a.at(x, y, 1), a.at(x, y, 2)};
+    }
+
+    void drawInspector(DrawList& dl, const Rect& area) {
+        const float line = mFont->lineHeight();
+        const auto& p = *mProbe;
+        const double ref = p.airlight.x + p.airlight.y + p.airlight.z;
+        std::string head = "ray inspector (I): pixel (" + std::to_string(p.x) + ", " + std::to_string(p.y) +
+                           ")  d = " + format("%.3g", p.d) + "  reference L_air = " + format("%.4g", p.airlight.x) +
+                           format(" %.4g", p.airlight.y) + format(" %.4g", p.airlight.z);
+        std::string second = mProbeTechnique + ": ";
+        if (mProbeHasValue) {
+            const double v = mProbeValue.x + mProbeValue.y + mProbeValue.z;
+            second += format("%.4g", mProbeValue.x) + format(" %.4g", mProbeValue.y) + format(" %.4g", mProbeValue.z) +
+                      (ref > 0.0 ? "   relative error " + format("%+.2f%%", 100.0 * (v - ref) / ref) : "");
+        } else {
+            second += "(no value at this resolution yet)";
+        }
+        dl.textClipped(area.min, head, kText, area.max.x);
+        dl.textClipped({area.min.x, area.min.y + line}, second, kDim, area.max.x);
+        viz::plot::PlotSpec spec;
+        spec.xLabel = "t along the ray";
+        spec.yLabel = "integrand (sum of RGB), V included";
+        viz::plot::Series curve{"integrand", viz::plot::categoricalColor(0), {}, true, false};
+        for (std::size_t i = 0; i < p.t.size(); ++i) {
+            const glm::dvec3& v = p.integrand[i];
+            curve.points.push_back({p.t[i], v.x + v.y + v.z});
+        }
+        spec.series.push_back(std::move(curve));
+        for (std::size_t k = 0; k < p.lights.size(); ++k) {
+            viz::plot::Band band{"lit: " + p.lights[k].name, viz::plot::categoricalColor(int(k) + 1), {}};
+            for (const auto& iv : p.lights[k].lit) band.spans.push_back({iv.a, iv.b});
+            spec.bands.push_back(std::move(band));
+        }
+        const Rect plotArea{{area.min.x, area.min.y + 2.0f * line + 4.0f * mScale}, area.max};
+        if (plotArea.size().y > 4.0f * line) viz::plot::drawPlot(dl, plotArea, spec);
+    }
+
+    // A cross on the inspected pixel of the final image.
+    void markProbe(DrawList& dl) {
+        if (!mProbe || mOptions.width < 1) return;
+        const glm::vec2 c = mFinalRect.min + (glm::vec2(float(mProbe->x), float(mProbe->y)) + 0.5f) /
+                                                 glm::vec2(float(mOptions.width), float(mOptions.height)) * mFinalRect.size();
+        const float r = 6.0f * mScale;
+        dl.line({c.x - r, c.y}, {c.x + r, c.y}, 2.0f * mScale, {1.0f, 0.2f, 0.8f, 1.0f});
+        dl.line({c.x, c.y - r}, {c.x, c.y + r}, 2.0f * mScale, {1.0f, 0.2f, 0.8f, 1.0f});
     }
 
     // ---- techniques and rendering ----
@@ -637,6 +727,7 @@ private:
         else if (key == GLFW_KEY_C && action == GLFW_PRESS) mController.toggleMode();
         else if (key == GLFW_KEY_F5 && action == GLFW_PRESS) saveSessionNow();
         else if (key == GLFW_KEY_0 && action == GLFW_PRESS) mRightView.fit();
+        else if (key == GLFW_KEY_I && action == GLFW_PRESS) inspectPixelUnderCursor();
         else if (key == GLFW_KEY_F9 && action == GLFW_PRESS) loadSessionNow();
         else if (key == GLFW_KEY_R && action == GLFW_PRESS) {
             mController.reset();
@@ -982,8 +1073,13 @@ private:
         const Rect finalRect = drawPane(left, mFinal, "Final image", "surface radiance * exp(-sigma_t d) + L_air   (exposure " + format("%+.1f EV)", mExposure));
         mImageHeight = finalRect.size().y;
         mViewRects.push_back({"final", "Final image", finalRect});
-        // Per-stage timings of the last run as bars, with the clock that measured them.
-        if (mHaveOutput && !mOutput.timing.stages.empty()) {
+        mFinalRect = finalRect;
+        markProbe(dl);
+        if (mProbe) {
+            const float inspectorTop = finalRect.max.y + 2.0f * line;
+            if (inspectorTop + 6.0f * line < left.max.y) drawInspector(dl, {{left.min.x, inspectorTop}, left.max});
+        } else if (mHaveOutput && !mOutput.timing.stages.empty()) {
+            // Per-stage timings of the last run as bars, with the clock that measured them.
             viz::plot::BarChart chart;
             chart.title = "stage times (" + timing.clock + "), total " + format("%.1f ms", timing.totalMilliseconds());
             for (const viz::StageTiming& st : mOutput.timing.stages)
@@ -1162,6 +1258,11 @@ private:
     std::unique_ptr<viz::ui::Context> mUi;   // the widgets
     viz::ui::Input mUiInput;                 // keys, text and wheel gathered since the last frame
     Rect mParamsRect;                        // the widget panel's area last frame
+    Rect mFinalRect;                         // where the final image was drawn last frame
+    std::optional<viz::reference::RayProbe> mProbe;  // the ray inspector's pixel, if any
+    std::string mProbeTechnique;
+    bool mProbeHasValue = false;
+    glm::dvec3 mProbeValue{0.0};
     double mLightIntensity0 = 0.0;           // the first light's intensity at start (slider range)
     Rect mRightImage;                        // where it was drawn last frame
     bool mDragView = false;                  // a drag that pans the intermediate view

@@ -82,13 +82,13 @@ std::vector<ScriptAction> parseScript(const std::string& path) {
         if (w.empty()) continue;
         ScriptAction a;
         a.line = number;
-        if (w[0] == "click") {
-            if (w.size() != 2 && w.size() != 4) fail("click takes a name and optionally two fractions FX FY");
-            a.kind = ScriptAction::Kind::Click;
+        if (w[0] == "click" || w[0] == "hover") {
+            if (w.size() != 2 && w.size() != 4) fail(w[0] + " takes a name and optionally two fractions FX FY");
+            a.kind = w[0] == "click" ? ScriptAction::Kind::Click : ScriptAction::Kind::Hover;
             a.target = w[1];
             if (w.size() == 4 && (!parseFloat(w[2], a.fraction.x) || !parseFloat(w[3], a.fraction.y) ||
                                   a.fraction.x < 0.0f || a.fraction.x > 1.0f || a.fraction.y < 0.0f || a.fraction.y > 1.0f))
-                fail("click fractions must be numbers from 0 to 1");
+                fail(w[0] + " fractions must be numbers from 0 to 1");
         } else if (w[0] == "key") {
             if (w.size() != 2) fail("key takes one key name");
             if (scriptKeyCode(w[1]) < 0) fail("unknown key '" + w[1] + "'");
@@ -105,7 +105,7 @@ std::vector<ScriptAction> parseScript(const std::string& path) {
             a.kind = ScriptAction::Kind::Screenshot;
             a.target = w[1];
         } else {
-            fail("unknown action '" + w[0] + "' (known: click, key, frames, screenshot)");
+            fail("unknown action '" + w[0] + "' (known: click, hover, key, frames, screenshot)");
         }
         actions.push_back(std::move(a));
     }

@@ -3,6 +3,7 @@
 //   click NAME [FX FY]   press and release the left button over a widget or view, at the fraction
 //                        (FX, FY) of its rectangle (default 0.5 0.5). NAME: a widget's label, a view
 //                        ("final", or an intermediate id), "technique:ID" or "view:LABEL" in the sidebar
+//   hover NAME [FX FY]   move the mouse there without pressing (e.g. before `key I`, the ray inspector)
 //   key NAME             press a key: Tab, Enter, Escape, Space, Left, Right, Up, Down, F1-F12, 0-9,
 //                        A-Z, [ and ]
 //   frames N             let N frames pass
@@ -17,7 +18,7 @@
 namespace airlight {
 
 struct ScriptAction {
-    enum class Kind { Click, Key, Frames, Screenshot };
+    enum class Kind { Click, Hover, Key, Frames, Screenshot };
     Kind kind = Kind::Frames;
     std::string target;          // widget / view name, key name or path
     glm::vec2 fraction{0.5f};    // click position within the target's rectangle

@@ -130,6 +130,31 @@ frames 1
     EXPECT_EQ(j.at("views")[1].at("name"), "slices.shadow_map");
 }
 
+TEST_F(GuiCli, TheRayInspectorShowsTheValuesAirlightRenderGivesAtThatPixel) {
+    const fs::path script = writeText("inspect.txt", "hover final 0.5 0.45\nkey I\nframes 1\n");
+    const RunResult r = run("gui --scene grate --technique raymarch --size 40x30 --set samples=128 --script " +
+                            script.string() + " --screenshot " + path("inspect.png").string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const nlohmann::json j = nlohmann::json::parse(readFile(path("inspect.json")));
+    ASSERT_TRUE(j.contains("inspector"));
+    const auto& in = j.at("inspector");
+    const int x = in.at("pixel")[0].get<int>(), y = in.at("pixel")[1].get<int>();
+    EXPECT_EQ(x, 20);  // the middle column of 40
+    // The same pixel from the command line: the reference and the technique, rendered on their own.
+    ASSERT_EQ(run("render --scene grate --technique reference --size 40x30 --layer airlight --out " +
+                  path("ref.exr").string()).exitCode, 0);
+    ASSERT_EQ(run("render --scene grate --technique raymarch --size 40x30 --set samples=128 --layer airlight --out " +
+                  path("rm.exr").string()).exitCode, 0);
+    const Image ref = readImage(path("ref.exr").string()), rm = readImage(path("rm.exr").string());
+    for (int c = 0; c < 3; ++c) {
+        const double expectRef = ref.at(x, y, c), expectRm = rm.at(x, y, c);
+        EXPECT_NEAR(in.at("reference")[std::size_t(c)].get<double>(), expectRef, 1e-6 * expectRef + 1e-9);
+        EXPECT_NEAR(in.at("technique_value")[std::size_t(c)].get<double>(), expectRm, 1e-5 * expectRm + 1e-9);
+    }
+    ASSERT_EQ(in.at("lights").size(), 1u);
+    EXPECT_FALSE(in.at("lights")[0].at("lit").empty());
+}
+
 TEST_F(GuiCli, BadScriptsAreOneLineErrorsNamingTheLine) {
     const fs::path unknown = writeText("unknown.txt", "frames 1\njump somewhere\n");
     expectUserError(run("gui --script " + unknown.string()), "unknown.txt:2");

@@ -125,6 +125,9 @@ void drawPlot(ui::DrawList& list, const ui::Rect& area, const PlotSpec& spec) {
     for (const Series& s : spec.series)
         for (glm::dvec2 p : s.points) include(p);
     for (glm::dvec2 p : spec.highlighted) include(p);
+    for (const Band& b : spec.bands)
+        for (glm::dvec2 span : b.spans)
+            if (usable(span.x, spec.logX) && usable(span.y, spec.logX)) xlo = std::min(xlo, span.x), xhi = std::max(xhi, span.y);
     if (!(xlo <= xhi)) xlo = xhi = spec.logX ? 1.0 : 0.0;
     if (!(ylo <= yhi)) ylo = yhi = spec.logY ? 1.0 : 0.0;
     const AxisTicks xt = axisTicks(xlo, xhi, spec.logX);
@@ -135,6 +138,7 @@ void drawPlot(ui::DrawList& list, const ui::Rect& area, const PlotSpec& spec) {
     for (const std::string& l : yt.labels) yLabelWidth = std::max(yLabelWidth, font.measure(l));
     float legendWidth = 0.0f;
     for (const Series& s : spec.series) legendWidth = std::max(legendWidth, font.measure(s.name));  // "" adds 0
+    for (const Band& b : spec.bands) legendWidth = std::max(legendWidth, font.measure(b.name));
     if (!spec.highlighted.empty()) legendWidth = std::max(legendWidth, font.measure(spec.highlightName));
     legendWidth += legendWidth > 0.0f ? line * 2.0f : 0.0f;
     const float pad = line * 0.5f;
@@ -199,6 +203,17 @@ void drawPlot(ui::DrawList& list, const ui::Rect& area, const PlotSpec& spec) {
         squareRing(list, q, marker * 2.2f);
     }
 
+    // Bands: strips along the bottom of the frame, the first lowest.
+    const float strip = std::max(3.0f, line * 0.3f);
+    for (std::size_t k = 0; k < spec.bands.size(); ++k) {
+        const float y1 = frame.max.y - 1.0f - float(k) * (strip + 1.0f), y0 = y1 - strip;
+        for (glm::dvec2 span : spec.bands[k].spans) {
+            if (!usable(span.x, spec.logX) || !usable(span.y, spec.logX)) continue;
+            const float x0 = std::max(frame.min.x, mx(span.x)), x1 = std::min(frame.max.x, mx(span.y));
+            if (x1 > x0) list.rect({{x0, y0}, {std::max(x1, x0 + 1.0f), y1}}, spec.bands[k].color);
+        }
+    }
+
     // Legend.
     float y = frame.min.y;
     const float x = frame.max.x + pad;
@@ -206,6 +221,11 @@ void drawPlot(ui::DrawList& list, const ui::Rect& area, const PlotSpec& spec) {
         if (s.name.empty()) continue;  // unnamed series (e.g. a line through another's points) stay out
         list.rect({{x, y + line * 0.3f}, {x + line, y + line * 0.7f}}, s.color);
         list.textClipped({x + line * 1.4f, y}, s.name, kInk, area.max.x - 2.0f);
+        y += line;
+    }
+    for (const Band& b : spec.bands) {
+        list.rect({{x, y + line * 0.4f}, {x + line, y + line * 0.6f}}, b.color);
+        list.textClipped({x + line * 1.4f, y}, b.name, kInk, area.max.x - 2.0f);
         y += line;
     }
     if (!spec.highlighted.empty()) {

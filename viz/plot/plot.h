@@ -20,10 +20,19 @@ struct Series {
     bool markers = true;              // a square at each point
 };
 
+// Spans along the x axis (e.g. the lit intervals of a light along a ray), drawn as a strip along the
+// bottom of the frame, one strip per band, listed in the legend.
+struct Band {
+    std::string name;
+    glm::vec4 color{0, 0, 0, 1};
+    std::vector<glm::dvec2> spans;  // [x0, x1] in data units
+};
+
 struct PlotSpec {
     std::string title, xLabel, yLabel;
     bool logX = false, logY = false;
     std::vector<Series> series;
+    std::vector<Band> bands;
     // Points drawn as hollow rings over the series (e.g. the Pareto front), with their own legend entry.
     std::vector<glm::dvec2> highlighted;
     std::string highlightName;

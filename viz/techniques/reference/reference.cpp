@@ -9,6 +9,7 @@
 #include "scene/scene_source.h"
 #include "techniques/reference/emitters.h"
 #include "techniques/reference/parallel.h"
+#include "techniques/reference/pixel_ray.h"
 #include "techniques/reference/ray_integrals.h"
 #include "techniques/reference/ray_tracer.h"
 #include "techniques/reference/reference_cache.h"
@@ -400,43 +401,17 @@ private:
 
         // ---- stage 1: visibility transitions ----
         watch = CpuStopwatch();
-        const bool anyGeometry = !tracer.empty();
-        const std::size_t emitterCount = lights.points.size() + lights.directionals.size();
         f.lit.assign(n, {});
         f.transitions = Image(f.width, f.height, 1);
         f.litFraction = Image(f.width, f.height, 1);
         reference::parallelRows(f.height, threads, [&](int y) {
             for (int x = 0; x < f.width; ++x) {
                 const std::size_t i = f.pixel(x, y);
-                const glm::dvec3 w = eyeRay(f, x, y);
                 const double d = f.distance[i];
                 auto& list = f.lit[i];
-                list.resize(emitterCount);
+                list = reference::rayVisibility(tracer, lights, eye, eyeRay(f, x, y), d, samples);
                 int transitions = 0;
-                for (std::size_t k = 0; k < lights.points.size(); ++k) {
-                    const PointEmitter& e = lights.points[k];
-                    if (!anyGeometry) {
-                        list[k].lit = {{0.0, d}};
-                        continue;
-                    }
-                    const auto g = reference::rayEmitterGeometry(eye, w, e.position);
-                    list[k] = reference::findLitIntervals(
-                        [&](double t) { return !tracer.occludedSegment(eye + t * w, e.position); }, d, samples,
-                        g.tP, g.h);
-                    transitions += list[k].transitions;
-                }
-                for (std::size_t k = 0; k < lights.directionals.size(); ++k) {
-                    const auto& e = lights.directionals[k];
-                    auto& s = list[lights.points.size() + k];
-                    if (!anyGeometry) {
-                        s.lit = {{0.0, d}};
-                        continue;
-                    }
-                    s = reference::findLitIntervals(
-                        [&](double t) { return !tracer.occludedRay(eye + t * w, -e.direction); }, d, samples, 0.0,
-                        -1.0);
-                    transitions += s.transitions;
-                }
+                for (const VisibilitySearch& v : list) transitions += v.transitions;
                 f.transitions.at(x, y) = float(transitions);
                 f.litFraction.at(x, y) = float(litFraction(list, lights, d));
             }
@@ -452,15 +427,7 @@ private:
                 for (int x = 0; x < f.width; ++x) {
                     const std::size_t i = f.pixel(x, y);
                     const glm::dvec3 w = eyeRay(f, x, y);
-                    glm::dvec3 L(0.0);
-                    for (std::size_t k = 0; k < lights.points.size(); ++k) {
-                        for (const auto& iv : f.lit[i][k].lit)
-                            L += reference::pointEmitterSegment(lights.points[k], eye, w, iv.a, iv.b, f.medium);
-                    }
-                    for (std::size_t k = 0; k < lights.directionals.size(); ++k) {
-                        for (const auto& iv : f.lit[i][lights.points.size() + k].lit)
-                            L += reference::directionalSegment(lights.directionals[k], w, iv.a, iv.b, f.medium);
-                    }
+                    const glm::dvec3 L = reference::rayAirlight(lights, eye, w, f.lit[i], f.medium);
                     for (int c = 0; c < 3; ++c) f.airlight.at(x, y, c) = float(L[c]);
                 }
             }, &progress, kStageAirlight);

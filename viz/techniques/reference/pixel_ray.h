@@ -1,0 +1,29 @@
+// The reference's work for one eye ray, shared by the full-frame reference and the ray inspector:
+// where along [0, d] each emitter is visible, L_air over those lit intervals, and the integrand at a
+// point (for plots). o is the eye, w the unit ray direction.
+#pragma once
+
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "techniques/reference/emitters.h"
+#include "techniques/reference/ray_integrals.h"
+#include "techniques/reference/ray_tracer.h"
+
+namespace viz::reference {
+
+// One VisibilitySearch per point emitter, then one per directional emitter (PreparedLights' order).
+std::vector<VisibilitySearch> rayVisibility(const RayTracer& tracer, const PreparedLights& lights,
+                                            const glm::dvec3& o, const glm::dvec3& w, double d, int samples);
+
+// L_air = the sum over emitters of their exact in-scattered radiance over their lit intervals.
+glm::dvec3 rayAirlight(const PreparedLights& lights, const glm::dvec3& o, const glm::dvec3& w,
+                       const std::vector<VisibilitySearch>& lit, const MediumParams& medium);
+
+// The integrand sigma_s p(cos theta) E(t) V(t) exp(-sigma_t t) at distance t along the ray (RGB), V from
+// the lit intervals.
+glm::dvec3 rayIntegrand(const PreparedLights& lights, const glm::dvec3& o, const glm::dvec3& w, double t,
+                        const std::vector<VisibilitySearch>& lit, const MediumParams& medium);
+
+}  // namespace viz::reference
