@@ -325,7 +325,7 @@ public:
                     ++mScriptIndex;
                     return true;
                 case ScriptAction::Kind::Key:
-                    onKey(scriptKeyCode(a.target), GLFW_PRESS, 0);
+                    onKey(scriptKeyCode(a.target), GLFW_PRESS, a.modifiers);
                     ++mScriptIndex;
                     return true;
                 case ScriptAction::Kind::Hover: {
@@ -388,6 +388,8 @@ public:
                                         {"medium", {{"sigma_s", mScene.medium.sigma_s}, {"sigma_a", mScene.medium.sigma_a},
                                                     {"g", mScene.medium.g}}},
                                         {"settings", mSettings},
+                                        {"stage", technique().stages()[std::size_t(stageShown())].id},
+                                        {"last_stage_run", mHaveOutput ? mOutput.lastStageRun : -1},
                                         {"views", views}};
         if (mProbe) {
             const auto rgb = [](glm::dvec3 v) { return nlohmann::json::array({v.x, v.y, v.z}); };
@@ -480,6 +482,41 @@ private:
         mDirty = true;
     }
 
+    // ---- stepping ----
+
+    int stageShown() const {
+        const int n = int(mTechniques.at(mIds[std::size_t(mCurrent)])->stages().size());
+        return mStopAfter < 0 || mStopAfter >= n ? n - 1 : mStopAfter;
+    }
+
+    // S / Shift+S: run up to the next / previous stage (the last stage runs everything).
+    void stepStage(int delta) {
+        const int n = int(technique().stages().size());
+        mStopAfter = std::clamp(stageShown() + delta, 0, n - 1);
+        mDirty = true;
+    }
+
+    // The current stage's sub-step count and position (1-based; the count when it runs them all).
+    std::pair<int, int> substepState() {
+        const viz::StageInfo& st = technique().stages()[std::size_t(stageShown())];
+        if (st.substepParam.empty()) return {0, 0};
+        int count = st.substeps;
+        if (!st.substepCountParam.empty() && mSettings.count(st.substepCountParam))
+            count = int(mSettings.at(st.substepCountParam));
+        const int at = mSettings.count(st.substepParam) ? int(mSettings.at(st.substepParam)) : 0;
+        return {at <= 0 || at > count ? count : at, count};
+    }
+
+    // D / Shift+D: one sub-step more / fewer inside the current stage (planes, levels, passes, VPLs).
+    void stepSubstep(int delta) {
+        const viz::StageInfo& st = technique().stages()[std::size_t(stageShown())];
+        const auto [at, count] = substepState();
+        if (count <= 0) return;
+        const int next = std::clamp(at + delta, 1, count);
+        mSettings[st.substepParam] = next == count ? 0.0 : double(next);  // 0: all of them
+        mDirty = true;
+    }
+
     // ---- ray inspector ----
 
     // The exact ground truth along the ray of the final image's pixel under the cursor, beside the current
@@ -563,6 +600,7 @@ private:
             return;
         }
         mCurrent = index;
+        mStopAfter = -1;  // a new technique starts complete
         mError.clear();
         mSettingsError.clear();
         // The session's values for this technique, then the command line's on top.
@@ -599,6 +637,8 @@ private:
         input.width = mOptions.width;
         input.height = mOptions.height;
         input.settings = mSettings;
+        const int stageCount = int(t.stages().size());
+        input.stopAfterStage = mStopAfter >= 0 && mStopAfter < stageCount - 1 ? mStopAfter : -1;
         // While the camera is being dragged or flown, render at half size to keep up; the full size
         // follows when the interaction stops.
         mReduced = (mDragButton >= 0 || anyFlyKeyDown()) && input.width >= 64 && input.height >= 48;
@@ -668,6 +708,12 @@ private:
                 if (all[std::size_t(i)].id == mViewId) index = i + 1;
         }
         if (mViewId == "airlight" || mViewId.empty()) index = 0;
+        // Stepped to a stage before L_air exists: show what that stage published instead.
+        if (index == 0 && mOutput.airlight.empty() && mOutput.lastStageRun >= 0) {
+            const auto& declared = technique().stages()[std::size_t(mOutput.lastStageRun)].intermediates;
+            for (int i = int(all.size()) - 1; i >= 0; --i)
+                if (std::find(declared.begin(), declared.end(), all[std::size_t(i)].id) != declared.end()) index = i + 1;
+        }
         mView = index;
         if (index == 0) {
             mRight.id = "airlight";
@@ -728,6 +774,8 @@ private:
         else if (key == GLFW_KEY_F5 && action == GLFW_PRESS) saveSessionNow();
         else if (key == GLFW_KEY_0 && action == GLFW_PRESS) mRightView.fit();
         else if (key == GLFW_KEY_I && action == GLFW_PRESS) inspectPixelUnderCursor();
+        else if (key == GLFW_KEY_S) stepStage(shift ? -1 : 1);
+        else if (key == GLFW_KEY_D) stepSubstep(shift ? -1 : 1);
         else if (key == GLFW_KEY_F9 && action == GLFW_PRESS) loadSessionNow();
         else if (key == GLFW_KEY_R && action == GLFW_PRESS) {
             mController.reset();
@@ -1010,6 +1058,15 @@ private:
             head += "   (showing pass " + std::to_string(mPass) + "/" + std::to_string(mPassCount) + ": " +
                     std::to_string(mOutputSize.x) + "x" + std::to_string(mOutputSize.y) + ")";
         }
+        {
+            const auto& stages = t.stages();
+            const int shown = stageShown();
+            head += "   stage " + std::to_string(shown + 1) + "/" + std::to_string(stages.size()) + " " +
+                    stages[std::size_t(shown)].id;
+            const auto [at, count] = substepState();
+            if (count > 0) head += " step " + std::to_string(at) + "/" + std::to_string(count);
+            head += " (S, D)";
+        }
         mBackground->rect({{0.0f, 0.0f}, {float(fb.x), 3.0f * line + 2.0f * pad}}, kPanel);
         dl.textClipped({pad, pad}, head, kText, float(fb.x) - pad);
         viz::Timing timing = mOutput.timing;
@@ -1260,6 +1317,7 @@ private:
     Rect mParamsRect;                        // the widget panel's area last frame
     Rect mFinalRect;                         // where the final image was drawn last frame
     std::optional<viz::reference::RayProbe> mProbe;  // the ray inspector's pixel, if any
+    int mStopAfter = -1;                     // stepping: run up to this stage (-1: all)
     std::string mProbeTechnique;
     bool mProbeHasValue = false;
     glm::dvec3 mProbeValue{0.0};

@@ -91,9 +91,20 @@ std::vector<ScriptAction> parseScript(const std::string& path) {
                 fail(w[0] + " fractions must be numbers from 0 to 1");
         } else if (w[0] == "key") {
             if (w.size() != 2) fail("key takes one key name");
-            if (scriptKeyCode(w[1]) < 0) fail("unknown key '" + w[1] + "'");
+            std::string name = w[1];
+            for (bool more = true; more;) {
+                more = false;
+                for (const auto& [prefix, mod] : {std::pair<const char*, int>{"Shift+", GLFW_MOD_SHIFT},
+                                                  std::pair<const char*, int>{"Ctrl+", GLFW_MOD_CONTROL}})
+                    if (name.size() > std::string(prefix).size() && name.rfind(prefix, 0) == 0) {
+                        a.modifiers |= mod;
+                        name = name.substr(std::string(prefix).size());
+                        more = true;
+                    }
+            }
+            if (scriptKeyCode(name) < 0) fail("unknown key '" + w[1] + "'");
             a.kind = ScriptAction::Kind::Key;
-            a.target = w[1];
+            a.target = name;
         } else if (w[0] == "frames") {
             float n = 0.0f;
             if (w.size() != 2 || !parseFloat(w[1], n) || n < 1.0f || n > 100000.0f || n != std::floor(n))

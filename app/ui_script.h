@@ -5,7 +5,7 @@
 //                        ("final", or an intermediate id), "technique:ID" or "view:LABEL" in the sidebar
 //   hover NAME [FX FY]   move the mouse there without pressing (e.g. before `key I`, the ray inspector)
 //   key NAME             press a key: Tab, Enter, Escape, Space, Left, Right, Up, Down, F1-F12, 0-9,
-//                        A-Z, [ and ]
+//                        A-Z, [ and ], optionally after Shift+ and/or Ctrl+ (Shift+S)
 //   frames N             let N frames pass
 //   screenshot PATH      write the window (PNG) and its sidecar JSON now
 #pragma once
@@ -23,6 +23,7 @@ struct ScriptAction {
     std::string target;          // widget / view name, key name or path
     glm::vec2 fraction{0.5f};    // click position within the target's rectangle
     int frames = 1;
+    int modifiers = 0;           // key: GLFW_MOD_SHIFT | GLFW_MOD_CONTROL
     int line = 0;                // 1-based, for messages
 };
 

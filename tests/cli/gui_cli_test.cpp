@@ -155,6 +155,20 @@ TEST_F(GuiCli, TheRayInspectorShowsTheValuesAirlightRenderGivesAtThatPixel) {
     EXPECT_FALSE(in.at("lights")[0].at("lit").empty());
 }
 
+TEST_F(GuiCli, SteppingStopsAtAStageAndInsideItAtASubstep) {
+    // Back two stages from the complete run (slices: compose, resolve -> planes), then two planes fewer.
+    const fs::path script = writeText("step.txt", "key Shift+S\nkey Shift+S\nframes 1\nkey Shift+D\nkey Shift+D\nframes 1\n");
+    const RunResult r = run("gui --scene grate --technique slices --size 40x30 --set planes=16 --script " +
+                            script.string() + " --screenshot " + path("step.png").string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const nlohmann::json j = nlohmann::json::parse(readFile(path("step.json")));
+    EXPECT_EQ(j.at("stage"), "slices.planes");
+    EXPECT_EQ(j.at("last_stage_run"), 2);
+    EXPECT_EQ(j.at("settings").at("planes_drawn").get<double>(), 14.0);
+    // L_air does not exist yet: the view shows what the planes stage published.
+    EXPECT_EQ(j.at("views")[1].at("name"), "slices.accumulation");
+}
+
 TEST_F(GuiCli, BadScriptsAreOneLineErrorsNamingTheLine) {
     const fs::path unknown = writeText("unknown.txt", "frames 1\njump somewhere\n");
     expectUserError(run("gui --script " + unknown.string()), "unknown.txt:2");

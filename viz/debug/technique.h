@@ -39,6 +39,11 @@ struct StageInfo {
     std::vector<std::string> params;         // names of the ParamInfo this stage reads
     std::vector<std::string> intermediates;  // ids of what it publishes
     int substeps = 1;
+    // Stepping inside the stage: the parameter that stops it after sub-step k (planes drawn, mipmap
+    // levels, scan passes, VPLs, ...; 0 or -1 = all, as its ParamInfo says), and the parameter whose
+    // value is the number of sub-steps when that depends on the settings (else `substeps`).
+    std::string substepParam{};
+    std::string substepCountParam{};
 };
 
 // A published intermediate: either a CPU image or a GL texture owned by the technique (valid until the

@@ -137,7 +137,7 @@ public:
              {"planes", "planes_drawn", "weighting", "accum", "accum_range", "shadow", "spot_falloff", "cookie",
               "noise", "noise_tiles", "time", "falloff", "ambient", "artistic_units", "clip", "user_clip",
               "clip_y_min", "clip_y_max", "directional_box", "distance_scale", "count_fragments", "force_features"},
-             {kAccum, kPlane, kPlaneMesh, kFragments}, 128},
+             {kAccum, kPlane, kPlaneMesh, kFragments}, 128, "planes_drawn", "planes"},
             {kStageResolve, "Resolve", "accumulation -> L_air: undo the 8-bit scale, sum the mask channels, blur",
              {"blur"}, {kAirlight}, 1},
             render::SceneViewPasses::composeStage("slices"),
