@@ -11,8 +11,8 @@ namespace {
 class ForcedPlan : public TechniqueTest {};
 
 TEST_F(ForcedPlan, ForcingSkippedFeaturesLeavesEveryImageUnchanged) {
-    for (const std::string& technique : {"raymarch", "slices"})
-        for (const std::string& name : {"grate", "colonnade", "stained-glass", "tv-room"}) {
+    for (const char* technique : {"raymarch", "slices"})
+        for (const char* name : {"grate", "colonnade", "stained-glass", "tv-room"}) {
             const scene::Scene s = scene::makeBuiltinScene(name);
             const Settings fast = {{"samples", 32}, {"planes", 32}, {"area_samples", 2}, {"shadow_map", 256}};
             Settings plain, forced;
@@ -50,7 +50,7 @@ TEST_F(ForcedPlan, ALightThatLightsNothingVisibleIsDroppedWithoutChangingTheImag
     away.position = {0.0, 1.0, 9.0};  // behind the camera (at z = 7), shining away from the scene
     away.direction = {0.0, 0.0, 1.0};
     extra.lights.push_back(away);
-    for (const std::string& technique : {"raymarch", "slices"}) {
+    for (const char* technique : {"raymarch", "slices"}) {
         const auto t = makeTechnique(technique);
         const Plan p = t->plan(extra, completeSettings(*t, {}));
         bool listed = false;
@@ -62,8 +62,8 @@ TEST_F(ForcedPlan, ALightThatLightsNothingVisibleIsDroppedWithoutChangingTheImag
         EXPECT_EQ(a.airlight.pixels, b.airlight.pixels) << technique;
         EXPECT_EQ(a.final.pixels, b.final.pixels) << technique;
         // One shadow map, not two.
-        EXPECT_NE(find(b, technique + ".shadow_map"), nullptr);
-        EXPECT_EQ(find(b, technique + ".shadow_map.1"), nullptr);
+        EXPECT_NE(find(b, std::string(technique) + ".shadow_map"), nullptr);
+        EXPECT_EQ(find(b, std::string(technique) + ".shadow_map.1"), nullptr);
     }
 }
 

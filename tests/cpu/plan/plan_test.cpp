@@ -32,10 +32,14 @@ TEST(Plan, EveryTechniqueListsItsStagesInOrderAndExplainsEverySkip) {
             ASSERT_EQ(plan.stages.size(), t->stages().size()) << id << " " << sceneName;
             for (std::size_t i = 0; i < plan.stages.size(); ++i) {
                 EXPECT_EQ(plan.stages[i].stage, t->stages()[i].id) << id << " " << sceneName;
-                if (!plan.stages[i].runs) EXPECT_FALSE(plan.stages[i].why.empty()) << id << " " << plan.stages[i].stage;
+                if (!plan.stages[i].runs) {
+                    EXPECT_FALSE(plan.stages[i].why.empty()) << id << " " << plan.stages[i].stage;
+                }
             }
             for (const FeaturePlan& f : plan.features)
-                if (!f.enabled) EXPECT_FALSE(f.why.empty()) << id << " " << sceneName << " " << f.feature;
+                if (!f.enabled) {
+                    EXPECT_FALSE(f.why.empty()) << id << " " << sceneName << " " << f.feature;
+                }
         }
 }
 
