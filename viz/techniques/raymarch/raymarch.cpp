@@ -7,6 +7,7 @@
 #include <memory>
 #include <string>
 
+#include "debug/permutations.h"
 #include "gl/program.h"
 #include "gl/stage_clock.h"
 #include "gl/texture.h"
@@ -35,7 +36,7 @@ constexpr int kPairsPerDispatchExact = 256;
 
 // Shader permutations of raymarch/march.comp: feature -> {define when enabled, define when disabled}.
 // Features not listed are run-time branches.
-const std::map<std::string, std::pair<const char*, const char*>> kDefines = {
+const PermutationTable kDefines = {
     // feature: {define when enabled, define when disabled}
     {"EXACT", {"EXACT", nullptr}},
     {"JITTER", {"JITTER", nullptr}},
@@ -157,11 +158,7 @@ public:
                                          : "shadow_lookup=nearest: nearest texel with bias"});
         render::planCulledLights(scene, p);
         forcePlan(p, settings.at("force_features") != 0.0, {"SPOT", "COOKIE", "SHADOW_MAPS_CUBE", "SHADOW_MAPS_2D"});
-        for (FeaturePlan& f : p.features) {
-            const auto it = kDefines.find(f.feature);
-            const char* define = it == kDefines.end() ? nullptr : (f.enabled ? it->second.first : it->second.second);
-            if (define) f.why += std::string(f.enabled ? " (compiled in: " : " (compiled out: ") + define + ")";
-        }
+        annotatePermutations(p, kDefines);
         return p;
     }
 
@@ -230,16 +227,8 @@ private:
     // an enabled EXACT / JITTER adds its define, a disabled light or shadow feature adds the define that
     // leaves its code out (shaders/common/lights.glsl, shadow_map.glsl).
     const gl::Program& marchProgram(const Plan& plan) {
-        gl::ShaderDefines defines;
         std::string key;
-        for (const FeaturePlan& f : plan.features) {
-            const auto it = kDefines.find(f.feature);
-            if (it == kDefines.end()) continue;  // a run-time branch, not a permutation
-            const char* define = f.enabled ? it->second.first : it->second.second;
-            if (!define) continue;
-            defines.push_back({define, "1"});
-            key += std::string(define) + ";";
-        }
+        const gl::ShaderDefines defines = permutationDefines(plan, kDefines, &key);
         // One program per permutation, kept: switching settings back and forth never recompiles (and a
         // timing never includes a compile after the warm-up).
         auto it = mMarchPrograms.find(key);
