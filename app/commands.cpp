@@ -60,7 +60,7 @@ lights as KHR_lights_punctual, area lights as emissive meshes, the medium in sce
 )";
 
 constexpr const char* kGuiHelp = R"(usage: airlight gui [--scene S] [--technique T] [--size WxH] [--set name=value]...
-                    [--state FILE] [--script FILE] [--screenshot OUT.png [--frames N]]
+                    [--state FILE] [--script FILE] [--export-dir DIR] [--screenshot OUT.png [--frames N]]
 
 Opens the window: the final frame beside one intermediate. Keys: Tab / Shift+Tab technique,
 [ and ] intermediate, C orbit/fly camera, R reset camera, + and - exposure, Esc quit.
@@ -70,6 +70,8 @@ Opens the window: the final frame beside one intermediate. Keys: Tab / Shift+Tab
                       Without --state the file is ~/.local/state/airlight/session.json.
 --script FILE         replay window actions (click NAME [FX FY], key NAME, frames N, screenshot PATH;
                       one per line), then exit (after writing --screenshot if given)
+--export-dir DIR      where E (the intermediate view as EXR and PNG) and F12 (the window) write
+                      (default airlight-exports/)
 --screenshot OUT.png  after N frames (default 1; and once a CPU technique's result has arrived) write
                       the window to OUT.png and its views' rectangles (window pixels, origin top-left)
                       to OUT.json, then exit. Runs under xvfb-run without a monitor.
@@ -86,6 +88,7 @@ struct CommonOptions {
     int frames = 1;
     std::string state;  // gui only
     std::string script;  // gui only
+    std::string exportDir;  // gui only
     bool sceneGiven = false, techniqueGiven = false, sizeGiven = false;
 };
 
@@ -105,6 +108,7 @@ CommonOptions parseOptions(Args& args, const std::string& command, const std::st
         else if (flag == "--technique") o.request.technique = args.next(flag), o.techniqueGiven = true;
         else if (flag == "--state") o.state = args.next(flag);
         else if (flag == "--script") o.script = args.next(flag);
+        else if (flag == "--export-dir") o.exportDir = args.next(flag);
         else if (flag == "--size") {
             const glm::ivec2 size = parseSize(args.next(flag));
             o.request.width = size.x, o.request.height = size.y;
@@ -288,7 +292,7 @@ int runGuiCommand(Args& args) {
         std::fputs(kGuiHelp, stdout);
         return 0;
     }
-    CommonOptions o = parseOptions(args, "gui", " --scene --technique --size --set --screenshot --frames --state --script ");
+    CommonOptions o = parseOptions(args, "gui", " --scene --technique --size --set --screenshot --frames --state --script --export-dir ");
     if (!o.screenshot.empty() && viz::extensionOf(o.screenshot) != ".png")
         throw InputError("--screenshot '" + o.screenshot + "' must end in .png");
     if (o.frames < 1) throw InputError("--frames must be at least 1");
@@ -318,6 +322,7 @@ int runGuiCommand(Args& args) {
     g.sceneGiven = o.sceneGiven;
     g.techniqueGiven = o.techniqueGiven;
     g.sizeGiven = o.sizeGiven;
+    if (!o.exportDir.empty()) g.exportDir = o.exportDir;
     return runGui(g);
 }
 

@@ -10,6 +10,7 @@
 #include <GLFW/glfw3.h>
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <condition_variable>
@@ -482,6 +483,57 @@ private:
         mDirty = true;
     }
 
+    // ---- export ----
+
+    // Files go to --export-dir (default airlight-exports/ in the working folder), named after the scene,
+    // technique and view, so that successive exports of different views do not overwrite each other.
+    std::string exportStem(const std::string& what) {
+        std::string name = mScene.name + "-" + technique().id() + "-" + what;
+        for (char& c : name)
+            if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_' && c != '.') c = '_';
+        std::error_code ec;
+        std::filesystem::create_directories(mOptions.exportDir, ec);
+        return (std::filesystem::path(mOptions.exportDir) / name).string();
+    }
+
+    // E: the intermediate view as EXR (its float values) and PNG (as shown: exposure or range mapping).
+    void exportView() {
+        if (!mHaveOutput || mRight.texture == 0) {
+            mNotice = "nothing to export: the view holds no image";
+            return;
+        }
+        viz::Image values = viz::gl::readTexture(mRight.texture);  // rows flipped: GL row 0 is the bottom
+        if (!mRight.flipY) {
+            // Uploaded CPU images keep row 0 at the top in GL too: undo readTexture's flip.
+            viz::Image flipped = values;
+            for (int y = 0; y < values.height; ++y)
+                for (int x = 0; x < values.width; ++x)
+                    for (int c = 0; c < values.channels; ++c) flipped.at(x, y, c) = values.at(x, values.height - 1 - y, c);
+            values = std::move(flipped);
+        }
+        const std::string stem = exportStem(mRight.id.empty() ? "view" : mRight.id);
+        try {
+            viz::writeImage(values, stem + ".exr");
+            const bool colour = mRight.mode == DisplayMode::HdrColor || mRight.mode == DisplayMode::RangeColor;
+            if (colour) viz::writeImage(values, stem + ".png", std::exp2(mExposure));
+            else viz::writeImage(viz::toDisplay(values, mRight.rangeMin, mRight.rangeMax), stem + ".png");
+            mNotice = "exported " + stem + ".exr and .png";
+        } catch (const viz::InputError& e) {
+            mNotice = e.what();
+        }
+    }
+
+    // F12: the whole window as PNG (with its sidecar JSON of view rectangles).
+    void exportWindow() {
+        const std::string path = exportStem("window") + ".png";
+        try {
+            writeScreenshot(path);
+            mNotice = "wrote " + path;
+        } catch (const viz::InputError& e) {
+            mNotice = e.what();
+        }
+    }
+
     // ---- stepping ----
 
     int stageShown() const {
@@ -774,6 +826,8 @@ private:
         else if (key == GLFW_KEY_F5 && action == GLFW_PRESS) saveSessionNow();
         else if (key == GLFW_KEY_0 && action == GLFW_PRESS) mRightView.fit();
         else if (key == GLFW_KEY_I && action == GLFW_PRESS) inspectPixelUnderCursor();
+        else if (key == GLFW_KEY_E && action == GLFW_PRESS) exportView();
+        else if (key == GLFW_KEY_F12 && action == GLFW_PRESS) exportWindow();
         else if (key == GLFW_KEY_S) stepStage(shift ? -1 : 1);
         else if (key == GLFW_KEY_D) stepSubstep(shift ? -1 : 1);
         else if (key == GLFW_KEY_F9 && action == GLFW_PRESS) loadSessionNow();

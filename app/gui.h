@@ -27,6 +27,7 @@ struct GuiOptions {
     // The session file (F5 saves, F9 loads, saved on exit except in screenshot runs); loaded at start
     // when given with --state. Command-line --scene, --technique and --set override what it holds.
     std::string statePath;
+    std::string exportDir = "airlight-exports";  // E (view as EXR + PNG) and F12 (window) write here
     bool loadStateAtStart = false;
     bool sceneGiven = false, techniqueGiven = false, sizeGiven = false;
 };

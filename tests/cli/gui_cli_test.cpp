@@ -169,6 +169,24 @@ TEST_F(GuiCli, SteppingStopsAtAStageAndInsideItAtASubstep) {
     EXPECT_EQ(j.at("views")[1].at("name"), "slices.accumulation");
 }
 
+TEST_F(GuiCli, ExportingAViewWritesWhatRenderWrites) {
+    const fs::path script = writeText("export.txt", "key E\nkey F12\nframes 1\n");
+    const RunResult r = run("gui --scene grate --technique raymarch --size 40x30 --set samples=64 --export-dir " +
+                            path("exports").string() + " --script " + script.string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_TRUE(fs::exists(path("exports") / "grate-raymarch-airlight.png"));
+    EXPECT_TRUE(fs::exists(path("exports") / "grate-raymarch-window.png"));
+    ASSERT_EQ(run("render --scene grate --technique raymarch --size 40x30 --set samples=64 --layer airlight --out " +
+                  path("cli.exr").string()).exitCode, 0);
+    const Image gui = readImage((path("exports") / "grate-raymarch-airlight.exr").string());
+    const Image cli = readImage(path("cli.exr").string());
+    ASSERT_EQ(gui.width, cli.width);
+    ASSERT_EQ(gui.height, cli.height);
+    for (int y = 0; y < cli.height; ++y)
+        for (int x = 0; x < cli.width; ++x)
+            for (int c = 0; c < 3; ++c) ASSERT_EQ(gui.at(x, y, c), cli.at(x, y, c)) << x << "," << y;
+}
+
 TEST_F(GuiCli, BadScriptsAreOneLineErrorsNamingTheLine) {
     const fs::path unknown = writeText("unknown.txt", "frames 1\njump somewhere\n");
     expectUserError(run("gui --script " + unknown.string()), "unknown.txt:2");
