@@ -45,6 +45,7 @@
 #include "session_state.h"
 #include "techniques/registry.h"
 #include "plot/plot.h"
+#include "report/error_metrics.h"
 #include "techniques/reference/ray_probe.h"
 #include "ui/font.h"
 #include "ui/immediate.h"
@@ -248,6 +249,7 @@ public:
         // Panes may borrow the techniques' textures: drop them first.
         mFinal = {};
         mRight = {};
+        mCompare.clear();
         mOutput = {};
         mTechniques.clear();
     }
@@ -392,6 +394,17 @@ public:
                                         {"stage", technique().stages()[std::size_t(stageShown())].id},
                                         {"last_stage_run", mHaveOutput ? mOutput.lastStageRun : -1},
                                         {"views", views}};
+        if (!mCompare.empty()) {
+            nlohmann::json tiles = nlohmann::json::array();
+            for (const auto& t : mCompare)
+                tiles.push_back({{"technique", t.technique},
+                                 {"milliseconds", t.milliseconds},
+                                 {"relative_l2", std::isfinite(t.error.relativeL2) ? nlohmann::json(t.error.relativeL2)
+                                                                                   : nlohmann::json(nullptr)},
+                                 {"nan_inf_pixels", t.error.nanPixels + t.error.infPixels},
+                                 {"failure", t.failure}});
+            sidecar["comparison"] = tiles;
+        }
         if (mProbe) {
             const auto rgb = [](glm::dvec3 v) { return nlohmann::json::array({v.x, v.y, v.z}); };
             nlohmann::json lights = nlohmann::json::array();
@@ -481,6 +494,80 @@ private:
         mExposure = mSession.exposure;
         mExposureSet = mSession.exposureSet;
         mDirty = true;
+    }
+
+    // ---- comparison grid ----
+
+    // G: every technique renders the current scene and camera with its current settings; their L_air
+    // sit in a grid at one shared exposure (the reference's), each with its time and error against the
+    // reference. G again closes it. The grid is a snapshot: it does not follow later changes.
+    void toggleComparison() {
+        if (!mCompare.empty()) {
+            mCompare.clear();
+            return;
+        }
+        mScene.camera = mController.camera();
+        const int w = mOptions.width, h = mOptions.height;
+        viz::Image reference;
+        try {
+            auto r = viz::makeTechnique("reference");
+            viz::FrameInput in{&mScene, w, h, viz::completeSettings(*r, {}), -1};
+            reference = r->run(in).airlight;
+        } catch (const std::exception& e) {
+            mError = std::string("comparison: ") + e.what();
+            return;
+        }
+        const float exposure = std::log2(autoExposure(reference));
+        for (const std::string& id : mIds) {
+            CompareTile tile;
+            tile.technique = id;
+            try {
+                if (!mTechniques.count(id)) mTechniques[id] = viz::makeTechnique(id);
+                viz::Technique& t = *mTechniques.at(id);
+                viz::Settings given = mSession.settings.count(id) ? mSession.settings.at(id) : viz::Settings{};
+                for (const auto& [name, value] : mOptions.settings) given[name] = value;
+                std::string ignored;
+                viz::FrameInput in{&mScene, w, h, settingsFor(t, given, ignored), -1};
+                const viz::FrameOutput out = id == "reference" ? viz::FrameOutput{} : t.run(in);
+                glBindFramebuffer(GL_FRAMEBUFFER, 0);
+                const viz::Image& airlight = id == "reference" ? reference : out.airlight;
+                tile.milliseconds = out.timing.totalMilliseconds();
+                tile.error = viz::report::compareImages(airlight, reference);
+                tile.pane.id = id;
+                tile.pane.mode = DisplayMode::HdrColor;
+                uploadImage(tile.pane, airlight);
+            } catch (const std::exception& e) {
+                tile.failure = e.what();
+            }
+            mCompare.push_back(std::move(tile));
+        }
+        mCompareExposure = exposure;
+    }
+
+    void drawComparison(DrawList& dl, const Rect& area) {
+        const float line = mFont->lineHeight(), pad = 4.0f * mScale;
+        const int n = int(mCompare.size());
+        const int cols = int(std::ceil(std::sqrt(double(n)))), rows = (n + cols - 1) / cols;
+        const glm::vec2 cell{area.size().x / float(cols), area.size().y / float(rows)};
+        dl.textClipped({area.min.x, area.min.y - line}, "comparison (G): L_air at the reference's exposure, time and "
+                       "relative L2 against the reference", kAccent, area.max.x);
+        for (int i = 0; i < n; ++i) {
+            CompareTile& tile = mCompare[std::size_t(i)];
+            const glm::vec2 at = area.min + glm::vec2(float(i % cols), float(i / cols)) * cell;
+            const Rect box{at + pad, at + cell - glm::vec2(pad, pad + 2.0f * line)};
+            const Rect image = fitImage(box, tile.pane.size);
+            mPaneDraws.push_back({image, &tile.pane, nullptr, mCompareExposure});
+            std::string caption = tile.technique;
+            std::string figures = tile.failure.empty()
+                ? (tile.technique == "reference" ? std::string("ground truth")
+                                                 : format("%.1f ms", tile.milliseconds) + "   error " +
+                                                       format("%.3g", tile.error.relativeL2))
+                : "failed: " + firstLine(tile.failure);
+            if (tile.error.nanPixels + tile.error.infPixels > 0)
+                figures += "   " + std::to_string(tile.error.nanPixels + tile.error.infPixels) + " NaN/Inf px";
+            dl.textClipped({box.min.x, box.max.y + 2.0f}, caption, kText, at.x + cell.x - pad);
+            dl.textClipped({box.min.x, box.max.y + 2.0f + line}, figures, kDim, at.x + cell.x - pad);
+        }
     }
 
     // ---- export ----
@@ -827,6 +914,7 @@ private:
         else if (key == GLFW_KEY_0 && action == GLFW_PRESS) mRightView.fit();
         else if (key == GLFW_KEY_I && action == GLFW_PRESS) inspectPixelUnderCursor();
         else if (key == GLFW_KEY_E && action == GLFW_PRESS) exportView();
+        else if (key == GLFW_KEY_G && action == GLFW_PRESS) toggleComparison();
         else if (key == GLFW_KEY_F12 && action == GLFW_PRESS) exportWindow();
         else if (key == GLFW_KEY_S) stepStage(shift ? -1 : 1);
         else if (key == GLFW_KEY_D) stepSubstep(shift ? -1 : 1);
@@ -1040,7 +1128,7 @@ private:
         const Rect image = fitImage(imageArea, pane.size);
         // Frame behind the image: the background batch is drawn before the images.
         mBackground->rect({image.min - 1.0f, image.max + 1.0f}, kPanel);
-        mPaneDraws.push_back({image, &pane, view});
+        mPaneDraws.push_back({image, &pane, view, NAN});
         if (!pane.unavailable.empty()) {
             dl.textClipped({image.min.x + 8.0f * mScale, image.min.y + 8.0f * mScale}, pane.unavailable, kDim, image.max.x);
         }
@@ -1214,16 +1302,24 @@ private:
         }
         if (mRightView.zoom > 1.0)
             rightNote = format("zoom %.0fx (wheel; drag to pan; 0 fits)   ", mRightView.zoom) + rightNote;
-        mRightImage = drawPane(right, mRight, rightTitle, rightNote, &mRightView);
-        mViewRects.push_back({mHaveOutput ? mRight.id : std::string("none"), rightTitle, mRightImage});
+        if (!mCompare.empty()) {
+            const Rect grid{{right.min.x, right.min.y + line}, right.max};
+            drawComparison(dl, grid);
+            mRightImage = {};
+            mViewRects.push_back({"comparison", "comparison grid", grid});
+        } else {
+            mRightImage = drawPane(right, mRight, rightTitle, rightNote, &mRightView);
+            mViewRects.push_back({mHaveOutput ? mRight.id : std::string("none"), rightTitle, mRightImage});
+        }
         mParamsRect = {{right.min.x, mRightImage.max.y + 2.0f * line}, {right.max.x, right.max.y}};
-        if (mParamsRect.size().y < 4.0f * line) mParamsRect = {};
+        if (mParamsRect.size().y < 4.0f * line || !mCompare.empty()) mParamsRect = {};  // the grid fills the side
         drawParameters(fb);
 
         // Panels, then the images, then the text batch over them.
         mTextRenderer->draw(*mBackground, fb);
         for (const PaneDraw& d : mPaneDraws) {
-            const float exposure = (d.pane->mode == DisplayMode::HdrColor || d.pane->mode == DisplayMode::RangeColor) ? mExposure : 0.0f;
+            const float shared = std::isnan(d.exposure) ? mExposure : d.exposure;
+            const float exposure = (d.pane->mode == DisplayMode::HdrColor || d.pane->mode == DisplayMode::RangeColor) ? shared : 0.0f;
             mImageDisplay->draw(*d.pane, d.rect, fb, exposure, d.view ? *d.view : viz::ui::ImageViewTransform{});
         }
         mTextRenderer->draw(dl, fb);
@@ -1363,7 +1459,16 @@ private:
         Rect rect;
         const PaneImage* pane;
         const viz::ui::ImageViewTransform* view;  // nullptr: the whole image
+        float exposure = NAN;                     // NaN: the window's exposure
     };
+    struct CompareTile {
+        std::string technique, failure;
+        PaneImage pane;
+        double milliseconds = 0.0;
+        viz::report::ErrorMetrics error;
+    };
+    std::vector<CompareTile> mCompare;  // the comparison grid (G), empty when closed
+    float mCompareExposure = 0.0f;
     std::vector<PaneDraw> mPaneDraws;
     viz::ui::ImageViewTransform mRightView;  // pan and zoom of the intermediate view
     std::unique_ptr<viz::ui::Context> mUi;   // the widgets

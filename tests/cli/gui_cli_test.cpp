@@ -187,6 +187,27 @@ TEST_F(GuiCli, ExportingAViewWritesWhatRenderWrites) {
             for (int c = 0; c < 3; ++c) ASSERT_EQ(gui.at(x, y, c), cli.at(x, y, c)) << x << "," << y;
 }
 
+TEST_F(GuiCli, TheComparisonGridShowsEveryTechniqueWithItsErrorAndTime) {
+    const fs::path script = writeText("compare.txt", "key G\nframes 1\n");
+    const RunResult r = run("gui --scene grate --size 32x24 --script " + script.string() + " --screenshot " +
+                            path("compare.png").string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const nlohmann::json j = nlohmann::json::parse(readFile(path("compare.json")));
+    const RunResult list = run("list techniques");
+    int techniques = 0;
+    for (char c : list.out) techniques += c == '\n';
+    ASSERT_EQ(int(j.at("comparison").size()), techniques);
+    for (const auto& tile : j.at("comparison")) {
+        EXPECT_EQ(tile.at("failure"), "") << tile.at("technique");
+        EXPECT_TRUE(tile.at("relative_l2").is_number()) << tile.at("technique");
+        EXPECT_EQ(tile.at("nan_inf_pixels"), 0) << tile.at("technique");
+        if (tile.at("technique") != "reference") {
+            EXPECT_GT(tile.at("milliseconds").get<double>(), 0.0);
+        }
+    }
+    EXPECT_EQ(j.at("views")[1].at("name"), "comparison");
+}
+
 TEST_F(GuiCli, BadScriptsAreOneLineErrorsNamingTheLine) {
     const fs::path unknown = writeText("unknown.txt", "frames 1\njump somewhere\n");
     expectUserError(run("gui --script " + unknown.string()), "unknown.txt:2");
