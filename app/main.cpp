@@ -9,6 +9,7 @@
 
 #include "cli_args.h"
 #include "commands.h"
+#include "lesson.h"
 #include "report_command.h"
 #include "core/error.h"
 #include "gl/gl_error.h"
@@ -28,6 +29,8 @@ commands:
   plan            show which stages and features a technique runs for a scene, and why
   export-scene    write a scene as glTF:  airlight export-scene NAME out.gltf|out.glb
   report          error against run time of every technique on each scene (CSV, JSON, plots, HTML)
+  lesson          a guided walkthrough: airlight lesson NAME --export DIR [--size WxH] renders every step
+                  and writes DIR/index.html (lessons/NAME.md)
 
 Run 'airlight COMMAND --help' for the options of a command.
 )";
@@ -49,6 +52,28 @@ int main(int argc, char** argv) {
         if (command == "plan") return airlight::runPlan(args);
         if (command == "export-scene") return airlight::runExportScene(args);
         if (command == "gui") return airlight::runGuiCommand(args);
+        if (command == "lesson") {
+            if (args.empty() || airlight::isHelpFlag(args.peek())) {
+                std::fputs("usage: airlight lesson NAME --export DIR [--size WxH]\n\nRenders every step of lessons/NAME.md "
+                           "headlessly (each view it names as PNG) and writes DIR/index.html with the text and images.\n",
+                           stdout);
+                return 0;
+            }
+            const std::string name = args.take();
+            std::string folder;
+            glm::ivec2 size(0);
+            while (!args.empty()) {
+                const std::string flag = args.take();
+                if (flag == "--export") folder = args.next(flag);
+                else if (flag == "--size") size = airlight::parseSize(args.next(flag));
+                else throw viz::InputError("unknown option '" + flag + "' for 'lesson'");
+            }
+            if (folder.empty()) throw viz::InputError("lesson needs --export DIR (the window's lesson player is not built yet)");
+            const airlight::Lesson lesson = airlight::parseLesson(airlight::findLesson(name));
+            airlight::exportLesson(lesson, folder, size);
+            std::printf("wrote %s/index.html (%zu steps)\n", folder.c_str(), lesson.steps.size());
+            return 0;
+        }
         if (command == "report") {
             std::string line = "airlight";
             for (const std::string& w : words) line += " " + w;

@@ -20,34 +20,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Loads `page` in headless Chromium through a copy that counts the images that failed to load; returns
-// "images=N missing=M", or empty when no browser is installed.
-std::string imagesLoadedInBrowser(const fs::path& page, const fs::path& scratch) {
-    const char* browser = "/usr/bin/chromium";
-    if (!fs::exists(browser)) return {};
-    std::string html = readFile(page);
-    const std::string probe =
-        "<script>window.addEventListener('load',()=>{const i=[...document.images];"
-        "document.body.setAttribute('data-probe','images='+i.length+' missing='+"
-        "i.filter(x=>!x.complete||x.naturalWidth===0).length);});</script>";
-    html.insert(html.rfind("</body>"), probe);
-    const fs::path copy = page.parent_path() / "probe.html";
-    std::ofstream(copy) << html;
-    const fs::path dom = scratch / "dom.txt";
-    const std::string cmd = std::string(browser) +
-                            " --headless --no-sandbox --disable-gpu --disable-quic --no-first-run "
-                            "--disable-background-networking --disable-component-update --disable-sync "
-                            "--user-data-dir=" + (scratch / "profile").string() +
-                            " --virtual-time-budget=5000 --dump-dom file://" + copy.string() + " >" + dom.string() +
-                            " 2>/dev/null";
-    if (std::system(cmd.c_str()) != 0) return "browser failed";
-    const std::string text = readFile(dom);
-    const std::size_t at = text.find("data-probe=\"");
-    if (at == std::string::npos) return "no probe result";
-    const std::size_t start = at + 12;
-    return text.substr(start, text.find('"', start) - start);
-}
-
 TEST_F(CliTest, ReportWritesResultsPlotsImagesAndAPageThatLoads) {
     const fs::path out = path("report");
     const RunResult r = run("report --scenes grate --techniques raymarch --size 32x24 --quick --runs 1 --out " +

@@ -1,0 +1,277 @@
+#include "lesson.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "cli_args.h"
+#include "core/error.h"
+#include "core/image_io.h"
+#include "render_job.h"
+#include "report/error_images.h"
+#include "report/text_output.h"
+
+namespace airlight {
+
+using viz::InputError;
+
+namespace {
+
+std::string trim(const std::string& s) {
+    std::size_t a = 0, b = s.size();
+    while (a < b && std::isspace(static_cast<unsigned char>(s[a]))) ++a;
+    while (b > a && std::isspace(static_cast<unsigned char>(s[b - 1]))) --b;
+    return s.substr(a, b - a);
+}
+
+std::vector<std::string> splitList(const std::string& text) {
+    std::vector<std::string> out;
+    std::string item;
+    for (char c : text + ",") {
+        if (c == ',' || std::isspace(static_cast<unsigned char>(c))) {
+            if (!item.empty()) out.push_back(item);
+            item.clear();
+        } else {
+            item += c;
+        }
+    }
+    return out;
+}
+
+// **strong**, *em* and `code` inside one line of already escaped text.
+std::string inlineMarkup(const std::string& escaped) {
+    std::string out;
+    bool strong = false, em = false, code = false;
+    for (std::size_t i = 0; i < escaped.size(); ++i) {
+        const char c = escaped[i];
+        if (c == '`') {
+            out += code ? "</code>" : "<code>";
+            code = !code;
+        } else if (!code && c == '*' && i + 1 < escaped.size() && escaped[i + 1] == '*') {
+            out += strong ? "</strong>" : "<strong>";
+            strong = !strong;
+            ++i;
+        } else if (!code && c == '*') {
+            out += em ? "</em>" : "<em>";
+            em = !em;
+        } else {
+            out += c;
+        }
+    }
+    if (code) out += "</code>";
+    if (strong) out += "</strong>";
+    if (em) out += "</em>";
+    return out;
+}
+
+}  // namespace
+
+std::string markdownToHtml(const std::string& markdown) {
+    std::istringstream in(markdown);
+    std::string html, paragraph, line, pre;
+    bool list = false;
+    const auto flushPre = [&] {
+        if (!pre.empty()) html += "<pre>" + viz::report::escapeHtml(pre) + "</pre>\n";
+        pre.clear();
+    };
+    const auto flush = [&] {
+        if (!paragraph.empty()) html += "<p>" + inlineMarkup(viz::report::escapeHtml(trim(paragraph))) + "</p>\n";
+        paragraph.clear();
+    };
+    const auto closeList = [&] {
+        if (list) html += "</ul>\n";
+        list = false;
+    };
+    while (std::getline(in, line)) {
+        const std::string t = trim(line);
+        // Lines indented by four spaces are preformatted (formulas).
+        if (line.rfind("    ", 0) == 0 && !t.empty() && paragraph.empty() && !list) {
+            pre += line.substr(4) + "\n";
+            continue;
+        }
+        flushPre();
+        if (t.empty()) {
+            flush();
+            closeList();
+        } else if (t[0] == '#') {
+            flush();
+            closeList();
+            std::size_t level = 0;
+            while (level < t.size() && t[level] == '#') ++level;
+            level = std::min<std::size_t>(level + 1, 6);  // the lesson's own title is h1
+            html += "<h" + std::to_string(level) + ">" + inlineMarkup(viz::report::escapeHtml(trim(t.substr(t.find_first_not_of('#'))))) +
+                    "</h" + std::to_string(level) + ">\n";
+        } else if (t.rfind("- ", 0) == 0) {
+            flush();
+            if (!list) html += "<ul>\n";
+            list = true;
+            html += "<li>" + inlineMarkup(viz::report::escapeHtml(t.substr(2))) + "</li>\n";
+        } else {
+            closeList();
+            paragraph += t + " ";
+        }
+    }
+    flushPre();
+    flush();
+    closeList();
+    return html;
+}
+
+Lesson parseLesson(const std::string& path) {
+    std::ifstream in(path);
+    if (!in) throw InputError("cannot read lesson '" + path + "'");
+    Lesson lesson;
+    lesson.path = path;
+    std::string line;
+    int number = 0;
+    LessonStep* step = nullptr;
+    bool inBlock = false, stepHasBlock = false;
+    int blockLine = 0;
+    const auto fail = [&](int at, const std::string& why) {
+        throw InputError(path + ":" + std::to_string(at) + ": " + why);
+    };
+    std::string* prose = &lesson.intro;
+    while (std::getline(in, line)) {
+        ++number;
+        const std::string t = trim(line);
+        if (inBlock) {
+            if (t == "```") {
+                inBlock = false;
+                continue;
+            }
+            if (t.empty() || t[0] == '#') continue;
+            const std::size_t colon = t.find(':');
+            if (colon == std::string::npos) fail(number, "expected 'key: value', got '" + t + "'");
+            const std::string key = trim(t.substr(0, colon)), value = trim(t.substr(colon + 1));
+            if (value.empty()) fail(number, "'" + key + "' has no value");
+            try {
+                if (key == "scene") step->scene = value;
+                else if (key == "technique") step->technique = value;
+                else if (key == "size") {
+                    const glm::ivec2 size = parseSize(value);
+                    step->width = size.x, step->height = size.y;
+                } else if (key == "set") {
+                    for (const std::string& item : splitList(value)) parseSetting(item, step->settings);
+                } else if (key == "stage") step->stage = value;
+                else if (key == "views") step->views = splitList(value);
+                else if (key == "inspect") {
+                    std::istringstream xy(value);
+                    int x = -1, y = -1;
+                    if (!(xy >> x >> y) || x < 0 || y < 0) fail(number, "inspect takes a pixel 'x y'");
+                    step->inspect = glm::ivec2(x, y);
+                } else {
+                    fail(number, "unknown key '" + key + "' (known: scene, technique, size, set, stage, views, inspect)");
+                }
+            } catch (const InputError& e) {
+                const std::string what = e.what();
+                if (what.rfind(path + ":", 0) == 0) throw;
+                fail(number, what);
+            }
+            continue;
+        }
+        if (t.rfind("# ", 0) == 0 && lesson.title.empty() && !step) {
+            lesson.title = trim(t.substr(2));
+        } else if (t.rfind("## ", 0) == 0) {
+            // A new step inherits what the previous one showed.
+            LessonStep next;
+            if (step) {
+                next.scene = step->scene, next.technique = step->technique;
+                next.width = step->width, next.height = step->height;
+            }
+            next.title = trim(t.substr(3));
+            next.line = number;
+            lesson.steps.push_back(next);
+            step = &lesson.steps.back();
+            prose = &step->prose;
+            stepHasBlock = false;
+        } else if (t == "```airlight") {
+            if (!step) fail(number, "an airlight block belongs in a step (after a '## ' heading)");
+            if (stepHasBlock) fail(number, "a step has one airlight block");
+            step->settings.clear();  // a step's settings replace the previous step's
+            inBlock = stepHasBlock = true;
+            blockLine = number;
+        } else {
+            *prose += line + "\n";
+        }
+    }
+    if (inBlock) fail(blockLine, "the airlight block is not closed with ```");
+    if (lesson.title.empty()) fail(1, "a lesson starts with a '# Title' line");
+    if (lesson.steps.empty()) fail(number, "a lesson needs at least one step ('## ' heading with an airlight block)");
+    for (const LessonStep& s : lesson.steps) {
+        if (s.scene.empty()) fail(s.line, "step '" + s.title + "' has no scene (set 'scene:' in it or a step before)");
+        if (s.technique.empty()) fail(s.line, "step '" + s.title + "' has no technique");
+    }
+    return lesson;
+}
+
+std::string findLesson(const std::string& nameOrPath) {
+    namespace fs = std::filesystem;
+    if (nameOrPath.size() > 3 && nameOrPath.substr(nameOrPath.size() - 3) == ".md") return nameOrPath;
+    for (const fs::path& dir : {fs::path(VIZ_SOURCE_DIR) / "lessons", fs::path("lessons")}) {
+        const fs::path p = dir / (nameOrPath + ".md");
+        if (fs::exists(p)) return p.string();
+    }
+    std::string known;
+    std::error_code ec;
+    for (const auto& entry : fs::directory_iterator(fs::path(VIZ_SOURCE_DIR) / "lessons", ec))
+        if (entry.path().extension() == ".md" && entry.path().filename() != "README.md")
+            known += (known.empty() ? "" : ", ") + entry.path().stem().string();
+    throw InputError("unknown lesson '" + nameOrPath + "' (known: " + known + ")");
+}
+
+void exportLesson(const Lesson& lesson, const std::string& folder, glm::ivec2 size) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    fs::create_directories(folder, ec);
+    if (!fs::is_directory(folder)) throw InputError("cannot create the folder '" + folder + "'");
+    std::string html = "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>" +
+                       viz::report::escapeHtml(lesson.title) +
+                       "</title><style>body{font-family:DejaVu Sans,sans-serif;max-width:60em;margin:2em;color:#222}"
+                       "figure{display:inline-block;margin:0.3em;text-align:center}img{image-rendering:pixelated;"
+                       "border:1px solid #ccc;min-width:320px}code{background:#f2f2f2}.state{color:#555;font-size:0.85em}</style>"
+                       "</head><body>\n<h1>" + viz::report::escapeHtml(lesson.title) + "</h1>\n" +
+                       markdownToHtml(lesson.intro);
+    for (std::size_t k = 0; k < lesson.steps.size(); ++k) {
+        const LessonStep& s = lesson.steps[k];
+        RenderRequest request;
+        request.scene = s.scene;
+        request.technique = s.technique;
+        request.width = size.x > 0 ? size.x : s.width;
+        request.height = size.y > 0 ? size.y : s.height;
+        request.settings = s.settings;
+        request.stopAfter = s.stage;
+        RenderJob job(request);
+        const viz::FrameOutput& out = job.run();
+        html += "<h2>" + viz::report::escapeHtml(s.title) + "</h2>\n" + markdownToHtml(s.prose);
+        std::string state = s.technique + " on " + s.scene;
+        if (!s.stage.empty()) state += ", stopped after " + s.stage;
+        for (const auto& [name, value] : s.settings) state += ", " + name + "=" + viz::report::formatFigure(value, "%g");
+        html += "<p class=\"state\">" + viz::report::escapeHtml(state) + "</p>\n";
+        const std::vector<std::string> views = s.views.empty() ? std::vector<std::string>{"final", "airlight"} : s.views;
+        const float exposure = out.final.empty() ? 1.0f : viz::report::exposureFor(out.final);
+        for (const std::string& view : views) {
+            viz::Image image;
+            const viz::Intermediate* in = view == "final" || view == "airlight" ? nullptr : job.findIntermediate(view);
+            try {
+                image = job.layerImage(view);
+            } catch (const InputError& e) {
+                throw InputError(lesson.path + ":" + std::to_string(s.line) + ": step '" + s.title + "': " + e.what());
+            }
+            std::string file = "step" + std::to_string(k + 1) + "-";
+            for (char c : view) file += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+            file += ".png";
+            const bool colour = !in || in->kind == viz::ViewKind::Color;
+            if (colour) viz::writeImage(image, (fs::path(folder) / file).string(), view == "final" ? exposure : viz::report::exposureFor(image));
+            else viz::writeImage(viz::toDisplay(image, in->rangeMin, in->rangeMax), (fs::path(folder) / file).string());
+            html += "<figure><img src=\"" + file + "\" alt=\"" + viz::report::escapeHtml(view) + "\"><figcaption>" +
+                    viz::report::escapeHtml(in ? in->label : view) + "</figcaption></figure>\n";
+        }
+    }
+    html += "</body></html>\n";
+    viz::report::writeTextFile((fs::path(folder) / "index.html").string(), html);
+}
+
+}  // namespace airlight

@@ -1,0 +1,69 @@
+// Lessons: every lesson in lessons/ parses and exports (one image per view of every step, and a page a
+// browser loads with no missing image); malformed lessons are one-line errors naming file and line.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <regex>
+#include <string>
+
+#include "cli/cli_fixture.h"
+
+namespace viz::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+TEST_F(CliTest, EveryLessonExportsAPageWithAllItsImages) {
+    int lessons = 0;
+    for (const auto& entry : fs::directory_iterator(fs::path(VIZ_SOURCE_DIR) / "lessons")) {
+        if (entry.path().extension() != ".md" || entry.path().filename() == "README.md") continue;
+        ++lessons;
+        const std::string name = entry.path().stem().string();
+        const fs::path out = path(name);
+        const RunResult r = run("lesson " + name + " --export " + out.string() + " --size 32x24");
+        ASSERT_EQ(r.exitCode, 0) << name << ": " << r.err;
+        const std::string page = readFile(out / "index.html");
+        // Every image the page names exists, and there is at least one per step.
+        const std::regex img("<img src=\"([^\"]+)\"");
+        int images = 0;
+        for (auto it = std::sregex_iterator(page.begin(), page.end(), img); it != std::sregex_iterator(); ++it) {
+            ++images;
+            EXPECT_TRUE(fs::exists(out / (*it)[1].str())) << name << ": " << (*it)[1].str();
+        }
+        int steps = 0;
+        for (std::size_t at = page.find("<h2>"); at != std::string::npos; at = page.find("<h2>", at + 1)) ++steps;
+        EXPECT_GE(images, steps) << name;
+        EXPECT_GT(steps, 0) << name;
+        const std::string loaded = imagesLoadedInBrowser(out / "index.html", mDir);
+        if (loaded.empty()) {
+            if (std::getenv("VIZ_REQUIRE_BROWSER")) FAIL() << "VIZ_REQUIRE_BROWSER is set but /usr/bin/chromium is missing";
+            continue;
+        }
+        EXPECT_EQ(loaded, "images=" + std::to_string(images) + " missing=0") << name;
+    }
+    EXPECT_GE(lessons, 2);
+}
+
+TEST_F(CliTest, MalformedLessonsNameTheFileAndLine) {
+    const std::string good = "# T\n\nintro\n\n## one\n```airlight\nscene: grate\ntechnique: raymarch\n```\ntext\n";
+    const auto lesson = [&](const std::string& name, const std::string& text) { return writeText(name, text).string(); };
+    expectUserError(run("lesson " + lesson("unknown.md", good + "## two\n```airlight\ncolour: red\n```\n") +
+                        " --export " + path("o1").string()),
+                    "unknown.md:13");
+    expectUserError(run("lesson " + lesson("badsize.md", good + "## two\n```airlight\nsize: 0x10\n```\n") +
+                        " --export " + path("o2").string()),
+                    "badsize.md:13");
+    expectUserError(run("lesson " + lesson("noscene.md", "# T\n## one\n```airlight\ntechnique: raymarch\n```\n") +
+                        " --export " + path("o3").string()),
+                    "noscene.md:2");
+    expectUserError(run("lesson " + lesson("open.md", "# T\n## one\n```airlight\nscene: grate\n") + " --export " +
+                        path("o4").string()),
+                    "open.md:3");
+    expectUserError(run("lesson " + lesson("noview.md", good + "## two\n```airlight\nviews: no.such.view\n```\n") +
+                        " --export " + path("o5").string() + " --size 16x12"),
+                    "noview.md:11");
+    expectUserError(run("lesson no-such-lesson --export " + path("o6").string()), "no-such-lesson");
+}
+
+}  // namespace
+}  // namespace viz::testing
