@@ -272,6 +272,15 @@ bool Context::radio(std::string_view label, int& value, int option) {
     return false;  // clicking the chosen option keeps it chosen
 }
 
+// A numeric field's value centred in `field`, and the label right of it in the row `r`.
+void Context::drawValueAndLabel(const Rect& r, const Rect& field, float value, std::string_view label) {
+    const std::string text = format("%.4g", value);
+    const float tw = mFont->measure(text);
+    const float y = (r.min.y + r.max.y - mFont->lineHeight()) * 0.5f;
+    mDraw.text({(field.min.x + field.max.x - tw) * 0.5f, y}, text, mStyle.text);
+    mDraw.textClipped({field.max.x + kPadding * 2.0f * mScale, y}, visibleText(label), mStyle.text, r.max.x);
+}
+
 bool Context::sliderFloat(std::string_view label, float& value, float lo, float hi, bool logarithmic) {
     VIZ_CHECK(hi > lo && (!logarithmic || lo > 0.0f), "sliderFloat: bad range");
     const Rect r = row(rowHeight());
@@ -301,12 +310,7 @@ bool Context::sliderFloat(std::string_view label, float& value, float lo, float 
     const float x = track.min.x + t * (track.max.x - track.min.x);
     mDraw.rect({{track.min.x, track.min.y}, {x, track.max.y}}, mStyle.frameActive);
     mDraw.rect({{x - 2.0f * mScale, track.min.y}, {x + 2.0f * mScale, track.max.y}}, mStyle.accent);
-    const std::string text = format("%.4g", value);
-    const float tw = mFont->measure(text);
-    mDraw.text({(track.min.x + track.max.x - tw) * 0.5f, (r.min.y + r.max.y - mFont->lineHeight()) * 0.5f}, text,
-               mStyle.text);
-    mDraw.textClipped({track.max.x + kPadding * 2.0f * mScale, (r.min.y + r.max.y - mFont->lineHeight()) * 0.5f},
-                      visibleText(label), mStyle.text, r.max.x);
+    drawValueAndLabel(r, track, value, label);
     return value != old;
 }
 
@@ -345,12 +349,7 @@ bool Context::dragFloat(std::string_view label, float& value, float speed, float
         if (keyPressed(Key::Left)) value = std::clamp(value - speed * 10.0f, lo, hi);
         if (keyPressed(Key::Right)) value = std::clamp(value + speed * 10.0f, lo, hi);
     }
-    const std::string text = format("%.4g", value);
-    const float tw = mFont->measure(text);
-    mDraw.text({(field.min.x + field.max.x - tw) * 0.5f, (r.min.y + r.max.y - mFont->lineHeight()) * 0.5f}, text,
-               mStyle.text);
-    mDraw.textClipped({field.max.x + kPadding * 2.0f * mScale, (r.min.y + r.max.y - mFont->lineHeight()) * 0.5f},
-                      visibleText(label), mStyle.text, r.max.x);
+    drawValueAndLabel(r, field, value, label);
     return value != old;
 }
 

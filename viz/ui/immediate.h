@@ -127,6 +127,7 @@ private:
     bool isFocused(Id id) const { return mFocused == id; }
     void drawFrame(const Rect& rect, Id id, const Interaction& in);
     void drawFocusRing(const Rect& rect);
+    void drawValueAndLabel(const Rect& row, const Rect& field, float value, std::string_view label);
     static std::string_view visibleText(std::string_view label);
     float scroll(Id panel) const;
     bool keyPressed(Key key) const;
