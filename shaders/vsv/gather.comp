@@ -9,10 +9,15 @@
 //       v * pointSegment(run) * the light's angular factor averaged over the run (Simpson).
 //   otherwise (the factorisation of Dobashi et al. / Wyman and Dai 3.1.5): the phi-uniform fraction
 //       of lit bits up to phi(d) times the unshadowed airlight over the covered part of [0, d].
-//   EPIPOLE: within one alpha cell of an epipole the grid is degenerate; toward the light a point is
-//       lit when the fragment lies beyond the light (d > D), away from it when the eye itself is lit.
+//   Direct rays: within one alpha cell of an epipole (EPIPOLE) the grid is degenerate, and a ray that
+//       crosses fewer than uDirectBins phi bins up to its fragment (one nearly parallel to the baseline:
+//       all of it falls into a bin or two) reads too few visibility samples. Such a ray skips the grid and
+//       tests the shadow map itself (the shared lookup) at the middle of uDirectSegments segments: equal
+//       steps of phi for a point or spot light (dense near the light, where the integrand peaks), equal
+//       steps of t for a directional one. The paper's rule (compare the fragment with the light) is
+//       wrong when an occluder touches the light, and there the airlight is largest.
 // Also writes (lit fraction, interpolated visibility of the fragment's own voxel, alpha cell, theta cell
-// or -1 where the epipole case replaced the grid).
+// or -1 where a direct ray replaced the grid).
 layout(local_size_x = 8, local_size_y = 8) in;
 
 #include "common/host_device.glsl"
@@ -40,8 +45,9 @@ uniform float uG;
 uniform int uRunBins;
 uniform int uAccumulate;     // 0: first light (overwrite), 1: add
 uniform int uEpipoleToward;  // the alpha = 0 epipole is in view and the grid starts at alpha = 0
-uniform int uEpipoleAway;
-uniform float uZfar;    // the alpha = pi epipole is in view and the grid ends at alpha = pi
+uniform int uEpipoleAway;    // the alpha = pi epipole is in view and the grid ends at alpha = pi
+uniform float uDirectBins;    // rays crossing fewer phi bins skip the grid (0: only epipole rays)
+uniform int uDirectSegments;  // shadow-map tests per direct ray
 
 vec3 pixelRay(ivec2 texel) {
     float yTop = float(uSize.y - 1 - texel.y);
@@ -83,19 +89,38 @@ void main() {
     epiThetaCells(S, epiThetaOf(S, w), false, j0, j1, wTheta);
 #endif
 
-    // Fixed visibility near an epipole (section 5 of the paper), -1 = read the grid.
-    float fixedV = -1.0;
-#ifdef EPIPOLE
-    // (a directional light is at infinity: only rays that reach the sky, d = zfar, are lit)
-    if (uEpipoleToward != 0 && alpha < uEpiAlpha.x + uEpiAlpha.y)
-        fixedV = (uEpiD > 0.0 ? d > uEpiD : d >= 0.999 * uZfar) ? 1.0 : 0.0;
-    if (uEpipoleAway != 0 && alpha > uEpiAlpha.x + (float(uEpiCells.x) - 1.0) * uEpiAlpha.y)
-        fixedV = shadowVisibility(L, vec3(0.0));
-#endif
-
     float phiD = epiPhiOnEyeRay(S, alpha, d);
     float kEnd = (phiD - uEpiPhi.x) / uEpiPhi.y;  // continuous bin coordinate of the fragment
     int bins = clamp(int(ceil(kEnd)), 0, uEpiCells.z);
+
+    bool direct = d > 0.0 && phiD < uDirectBins * uEpiPhi.y;
+#ifdef EPIPOLE
+    if (uEpipoleToward != 0 && alpha < uEpiAlpha.x + uEpiAlpha.y) direct = true;
+    if (uEpipoleAway != 0 && alpha > uEpiAlpha.x + (float(uEpiCells.x) - 1.0) * uEpiAlpha.y) direct = true;
+#endif
+    if (direct) {
+        vec3 lit = vec3(0.0), unlit = vec3(0.0);
+        bool byT = L.info.x == kLightDirectional || !(phiD > 0.0);
+        float ta = 0.0;
+        for (int i = 1; i <= uDirectSegments; ++i) {
+            float u = float(i) / float(uDirectSegments);
+            float tb = i == uDirectSegments ? d : (byT ? u * d : min(epiTOnEyeRay(S, alpha, u * phiD), d));
+            if (tb > ta) {
+                vec3 a = runAirlight(L, geo, w, ta, tb);
+                unlit += a;
+                lit += shadowVisibility(L, 0.5 * (ta + tb) * w) * a;
+                ta = tb;
+            }
+        }
+        float f = dot(unlit, vec3(1.0)) > 0.0 ? dot(lit, vec3(1.0)) / dot(unlit, vec3(1.0)) : 1.0;
+#ifndef COMBINE_EXACT
+        lit = f * unlit;  // the factorisation, with the fraction weighted by airlight
+#endif
+        vec4 previous = uAccumulate != 0 ? imageLoad(uAirlight, texel) : vec4(0.0);
+        imageStore(uAirlight, texel, vec4(previous.rgb + lit, 1.0));
+        imageStore(uVisibility, texel, vec4(f, shadowVisibility(L, d * w), float(ia), -1.0));
+        return;
+    }
 
     vec3 sum = vec3(0.0);
     vec3 unshadowed = vec3(0.0);
@@ -111,9 +136,7 @@ void main() {
             c1 = imageLoad(uGrid, ivec3(ia, j1, k >> 7));
         }
         int bit = k & 127;
-        float v = fixedV >= 0.0 ? fixedV
-                                : (1.0 - wTheta) * (testBitFast(c0, bit) ? 0.0 : 1.0) +
-                                      wTheta * (testBitFast(c1, bit) ? 0.0 : 1.0);
+        float v = (1.0 - wTheta) * (testBitFast(c0, bit) ? 0.0 : 1.0) + wTheta * (testBitFast(c1, bit) ? 0.0 : 1.0);
         float phiA = uEpiPhi.x + float(k) * uEpiPhi.y;
         float phiB = min(phiA + uEpiPhi.y, phiD);
         litPhi += v * (phiB - phiA);
@@ -161,5 +184,5 @@ void main() {
 
     vec4 previous = uAccumulate != 0 ? imageLoad(uAirlight, texel) : vec4(0.0);
     imageStore(uAirlight, texel, vec4(previous.rgb + sum, 1.0));
-    imageStore(uVisibility, texel, vec4(fraction, surfaceV, float(ia), fixedV >= 0.0 ? -1.0 : float(j0)));
+    imageStore(uVisibility, texel, vec4(fraction, surfaceV, float(ia), float(j0)));
 }

@@ -19,27 +19,38 @@ uniform int uLight;
 uniform float uAlphaBias;  // cells; negative pushes the shadow away from the light
 uniform float uPhiBias;    // cells; the light ray of bit k is sampled at phi cell k + 0.5 + uPhiBias
 
-// Linear distance stored by the light's shadow map along direction dir from the light; a huge value
-// when nothing was rendered there or the direction leaves the map.
+// Distance from the light along direction dir at which the light ray counts as blocked: the stored
+// linear distance pushed back by the bias of the shared lookup (shaders/common/shadow_map.glsl: a point
+// at distance r is lit when r <= stored + shadow.w + shadow.z r / size, i.e. up to
+// r = (stored + shadow.w) / (1 - shadow.z / size)), so the grid and shadowVisibility agree on every
+// point. A huge value when nothing was rendered there or the direction leaves the map.
 float occluderDistance(GpuLight L, vec3 dir) {
     int layer = L.info.z;
     if (layer < 0) return 3.0e38;
+    float stored = 3.0e38;
+    int size = 1;
 #ifndef SHADOW_NO_2D
     if (L.info.x == kLightSpot) {
         vec4 clip = L.shadowMatrix * vec4(L.position.xyz + dir, 1.0);
         if (clip.w <= 0.0) return 3.0e38;
         vec2 ndc = clip.xy / clip.w;
         if (any(greaterThan(abs(ndc), vec2(1.0)))) return 3.0e38;
-        ivec2 size = textureSize(uShadow2D, 0).xy;
-        ivec2 texel = clamp(ivec2(floor((ndc * 0.5 + 0.5) * vec2(size))), ivec2(0), size - 1);
-        return texelFetch(uShadow2D, ivec3(texel, layer), 0).r;
-    }
+        ivec2 mapSize = textureSize(uShadow2D, 0).xy;
+        ivec2 texel = clamp(ivec2(floor((ndc * 0.5 + 0.5) * vec2(mapSize))), ivec2(0), mapSize - 1);
+        stored = texelFetch(uShadow2D, ivec3(texel, layer), 0).r;
+        size = mapSize.x;
+    } else
 #endif
+    {
 #ifndef SHADOW_NO_CUBE
-    return cubeLookup(uShadowCube, layer, dir);
+        stored = cubeLookup(uShadowCube, layer, dir);
+        size = textureSize(uShadowCube, 0).x;
 #else
-    return 3.0e38;
+        return 3.0e38;
 #endif
+    }
+    if (!(stored < L.shadow.y)) return 3.0e38;
+    return (stored + L.shadow.w) / max(1.0e-3, 1.0 - L.shadow.z / float(size));
 }
 
 void main() {
@@ -64,13 +75,16 @@ void main() {
             ivec2 size = textureSize(uShadow2D, 0).xy;
             ivec2 texel = clamp(ivec2(floor((ndc * 0.5 + 0.5) * vec2(size))), ivec2(0), size - 1);
             float stored = texelFetch(uShadow2D, ivec3(texel, L.info.z), 0).r;
-            if (L.info.z >= 0 && stored < L.shadow.y) c = epiAlphaCoord(S, atan(phi, -stored)) - uAlphaBias;
+            // The shared lookup's bias (constant for an orthographic map): depth up to
+            // stored + shadow.w + shadow.z / size is lit.
+            float blocked = stored + L.shadow.w + L.shadow.z / float(size.x);
+            if (L.info.z >= 0 && stored < L.shadow.y) c = epiAlphaCoord(S, atan(phi, -blocked)) - uAlphaBias;
         }
     } else
 #endif
     if (phi > 0.0 && phi < kPi) {
         float r = occluderDistance(L, epiLightRay(S, theta, phi));
-        if (r < L.shadow.y) c = epiAlphaCoord(S, epiAlphaOnLightRay(S, phi, r)) - uAlphaBias;
+        if (r < 1.0e38) c = epiAlphaCoord(S, epiAlphaOnLightRay(S, phi, r)) - uAlphaBias;
     }
     if (c < float(uEpiCells.x)) {
         int cell = max(0, int(floor(c)));

@@ -184,14 +184,18 @@ inline EpipolarGrid selectRanges(const EpipolarFrame& f, const CameraRays& cam, 
     }
     if (g.epipoleToward) aMin = 0.0;
     if (g.epipoleAway) aMax = pi;
+    // The camera's forward half-plane sits on a theta cell centre: in a view symmetric about it (a light
+    // straight above or ahead) the middle image column then reads one cell, as the shadow map's texel
+    // there was sampled, instead of blending two cells across a shadow edge that may lie exactly in
+    // that half-plane (an occluder face through the light and the eye).
     g.thetaFull = g.epipoleToward || g.epipoleAway || dMax - dMin > 2.0 * pi * 0.95;
     if (g.thetaFull) {
-        g.thetaCentre = 0.0;
+        g.thetaCentre = thetaCentre + pi / nTheta;
         g.thetaHalf = pi;
     } else {
-        const double da = margin * (dMax - dMin) / nTheta;
-        g.thetaCentre = thetaCentre + 0.5 * (dMin + dMax);
-        g.thetaHalf = std::min(pi, 0.5 * (dMax - dMin) + da);
+        const double half = std::max(-dMin, dMax) * (1.0 + margin / nTheta);
+        g.thetaHalf = std::min(pi, half * nTheta / std::max(1.0, nTheta - 1.0));
+        g.thetaCentre = thetaCentre + g.thetaHalf / nTheta;
         if (g.thetaHalf >= pi) g.thetaFull = true;
     }
     const double padA = margin * (aMax - aMin) / nAlpha;

@@ -5,6 +5,7 @@
 #include <map>
 #include <memory>
 #include <numbers>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,12 +16,14 @@
 #include "gl/texture.h"
 #include "render/host_device.h"
 #include "render/intermediates.h"
+#include "render/light_culling.h"
 #include "render/scene_view.h"
 #include "scene/camera.h"
 #include "techniques/vsv/add_airlight.h"
 #include "techniques/vsv/bits128.h"
 #include "techniques/vsv/epipolar_setup.h"
 #include "techniques/vsv/grid_readback.h"
+#include "techniques/vsv/stiff_bounds.h"
 #include "techniques/vsv/vpl_sampling.h"
 #include "techniques/vsv/vsv.h"
 
@@ -146,6 +149,7 @@ public:
             }
             mParams.push_back(std::move(p));
         }
+        mParams.push_back(forceFeaturesParam());
         mStages = {
             {kStageVpls, "VPLs", "Halton points on the area light: position, normal, L_e dA from the emission texture",
              {"vpls"}, {kVplImage}, 1},
@@ -162,7 +166,8 @@ public:
             {kStageScan, "Extrude (segmented scan)", "prefix OR along alpha restarting at every tile boundary",
              {"scan_passes"}, {kScanSlice}, kMaxScanPasses},
             {kStageGather, "Gather", "per pixel: sum over VPLs of visibility x airlight (full, interleaved, quarter)",
-             {"combine", "gather", "interp", "chunk_bits", "vpl_disc", "bilateral_sigma", "vpl_step", "pick_x", "pick_y"},
+             {"combine", "gather", "interp", "chunk_bits", "vpl_disc", "bilateral_sigma", "vpl_step", "pick_x", "pick_y",
+              "force_features"},
              {kColumn, kPerVpl, kInterleave, kAirlight, kVisibility}, 1},
             render::SceneViewPasses::composeStage("ivsv"),
         };
@@ -175,6 +180,25 @@ public:
     const std::vector<StageInfo>& stages() const override { return mStages; }
     const std::vector<ParamInfo>& params() const override { return mParams; }
     bool needsGl() const override { return true; }
+
+    // VPL count (the area light's sampling) and voxel resolution (each VPL grid's), issue 9's knobs:
+    // cheapest first. On a scene without an area light only `voxels` matters (the inner vsv).
+    std::vector<QualitySetting> qualitySweep(bool quick) const override {
+        const std::vector<std::pair<int, int>> steps =
+            quick ? std::vector<std::pair<int, int>>{{4, 64}, {16, 128}, {64, 128}, {256, 128}}
+                  : std::vector<std::pair<int, int>>{{4, 64}, {16, 64}, {16, 128}, {64, 128}, {256, 128}, {256, 256}};
+        std::vector<QualitySetting> sweep;
+        for (const auto& [vpls, voxels] : steps)
+            sweep.push_back({"vpls=" + std::to_string(vpls) + " voxels=" + std::to_string(voxels),
+                             {{"vpls", double(vpls)}, {"voxels", double(voxels)}}});
+        return sweep;
+    }
+
+    // The stiff cases have no area light: ivsv hands every light to its inner vsv at this resolution.
+    Settings stiffSettings() const override { return {{"voxels", 512.0}, {"vpls", 256.0}}; }
+    std::optional<StiffBound> stiffBound(const std::string& caseClass) const override {
+        return vsv::stiffBound(caseClass);
+    }
 
     Plan plan(const scene::Scene& scene, const Settings& settings) const override {
         const bool hasArea = areaLightOf(scene) != nullptr;
@@ -194,10 +218,12 @@ public:
             p.stages[kGatherIndex].runs = false;
             p.stages[kGatherIndex].why = "sigma_s = 0: the medium scatters nothing, L_air = 0";
         }
-        p.stages[kShadowsIndex].why = naive ? std::to_string(vpls) + " cube shadow maps, one per VPL"
-                                            : "one ISM atlas of " + std::to_string(vpls) + " tiles";
-        p.stages[kScanIndex].why = std::to_string(scanPassCount(int(settings.at("voxels")))) + " passes" +
-                                   (naive ? " per VPL" : " over all tiles at once");
+        if (hasArea) {
+            p.stages[kShadowsIndex].why = naive ? std::to_string(vpls) + " cube shadow maps, one per VPL"
+                                                : "one ISM atlas of " + std::to_string(vpls) + " tiles";
+            p.stages[kScanIndex].why = std::to_string(scanPassCount(int(settings.at("voxels")))) + " passes" +
+                                       (naive ? " per VPL" : " over all tiles at once");
+        }
         const bool exact = settings.at("combine") != 0.0;
         const bool interp = settings.at("interp") != 0.0;
         const int gather = int(settings.at("gather"));
@@ -222,6 +248,9 @@ public:
         p.features.push_back({"QUARTER_GATHER", gather == kGatherQuarter,
                               gather == kGatherQuarter ? "half width and height, bilateral upsampling"
                                                        : "full-resolution gather"});
+        render::planCulledLights(scene, p);
+        // Scene-pruned: the inner vsv without other lights (force_features=1 runs it on none: it adds zero).
+        forcePlan(p, settings.at("force_features") != 0.0, {"OTHER_LIGHTS_BY_VSV"});
         for (FeaturePlan& f : p.features) {
             const auto it = kDefines.find(f.feature);
             const char* define = it == kDefines.end() ? nullptr : (f.enabled ? it->second.first : it->second.second);
@@ -355,7 +384,7 @@ public:
             mVisibility.clear(glm::vec4(1.0f));
         }
         // Point, spot and directional lights: vsv, added to the VPLs' airlight.
-        if (int(scene.lights.size()) > (area ? 1 : 0) && out.plan.stages[kGatherIndex].runs) addOtherLights(input);
+        if (otherLightsOn(out.plan) && out.plan.stages[kGatherIndex].runs) addOtherLights(input);
         out.timing.stages.push_back({kStageGather, clock.endMilliseconds()});
         if (area) {
             out.intermediates.push_back(vsv::cpuIntermediate(
@@ -687,6 +716,12 @@ private:
         glDispatchCompute(GLuint(g2.x), GLuint(g2.y), 1);
         glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT |
                         GL_TEXTURE_UPDATE_BARRIER_BIT);
+    }
+
+    static bool otherLightsOn(const Plan& plan) {
+        for (const FeaturePlan& f : plan.features)
+            if (f.feature == "OTHER_LIGHTS_BY_VSV") return f.enabled;
+        return false;
     }
 
     // The scene's other lights through an inner vsv (its defaults, this run's `voxels`), its L_air added

@@ -13,6 +13,7 @@
 #include "gl/texture.h"
 #include "render/host_device.h"
 #include "render/intermediates.h"
+#include "render/light_culling.h"
 #include "render/scene_view.h"
 #include "scene/camera.h"
 #include "techniques/vsv/add_airlight.h"
@@ -20,6 +21,7 @@
 #include "techniques/vsv/epipolar_setup.h"
 #include "techniques/vsv/grid_readback.h"
 #include "techniques/vsv/ivsv.h"
+#include "techniques/vsv/stiff_bounds.h"
 
 namespace viz {
 namespace {
@@ -73,12 +75,22 @@ GridSize gridSize(const Settings& s) {
     return g;
 }
 
-// The scene lights vsv shades itself: point, spot, directional. Area lights go to an inner ivsv.
+// The scene lights vsv shades itself: point, spot, directional, except those culled because their lit
+// volume misses the view (render/light_culling.h: they have no GPU light and add nothing). Area lights
+// go to an inner ivsv.
 std::vector<int> shadedLights(const scene::Scene& scene) {
     std::vector<int> out;
-    for (int i = 0; i < int(scene.lights.size()); ++i)
-        if (scene.lights[std::size_t(i)].type != scene::LightType::Area) out.push_back(i);
+    for (int i = 0; i < int(scene.lights.size()); ++i) {
+        const scene::Light& l = scene.lights[std::size_t(i)];
+        if (l.type != scene::LightType::Area && render::lightReachesView(l, scene.camera)) out.push_back(i);
+    }
     return out;
+}
+
+bool featureOn(const Plan& plan, const std::string& name) {
+    for (const FeaturePlan& f : plan.features)
+        if (f.feature == name) return f.enabled;
+    return false;
 }
 
 scene::Scene onlyAreaLights(const scene::Scene& scene) {
@@ -117,6 +129,11 @@ public:
              true},
             {"epipole", "1: near an epipole compare the fragment with the light instead of reading the grid", 1, 0, 1,
              true},
+            {"direct_bins", "rays crossing fewer phi bins than this test the shadow map directly (0: only rays at "
+                            "an epipole)",
+             4, 0, 1024, false},
+            {"direct_segments", "shadow-map tests along a direct ray (epipole or too few phi bins)", 128, 1, 4096,
+             true},
             {"run_bins", "longest run of phi bins per airlight segment (spot falloff averaged over it)", 8, 1, 1024,
              true},
             {"scan_passes", "stop the alpha scan after this many passes (-1: all; stepping)", -1, -1, kMaxScanPasses,
@@ -128,6 +145,7 @@ public:
             {"light", "which light's grid the intermediates show (index among the scene's lights)", 0, 0, 255, true},
         };
         for (ParamInfo& p : render::SceneViewPasses::params()) mParams.push_back(std::move(p));
+        mParams.push_back(forceFeaturesParam());
         mStages = {
             render::SceneViewPasses::shadowStage("vsv"),
             render::SceneViewPasses::surfaceStage("vsv"),
@@ -141,7 +159,8 @@ public:
              {"scan_passes", "pick_theta"}, {kScanSlice}, kMaxScanPasses},
             {kStageGather, "Gather",
              "per pixel: one texel per eye ray, its phi bits up to the fragment, combined with the airlight",
-             {"combine", "interp", "epipole", "run_bins", "pick_x", "pick_y"}, {kColumn, kAirlight, kVisibility}, 1},
+             {"combine", "interp", "epipole", "direct_bins", "direct_segments", "run_bins", "pick_x", "pick_y",
+              "force_features"}, {kColumn, kAirlight, kVisibility}, 1},
             render::SceneViewPasses::composeStage("vsv"),
         };
     }
@@ -153,6 +172,21 @@ public:
     const std::vector<StageInfo>& stages() const override { return mStages; }
     const std::vector<ParamInfo>& params() const override { return mParams; }
     bool needsGl() const override { return true; }
+
+    // Voxel resolution per axis, the one quality knob (issue 9): the grid's alpha, theta and phi cells
+    // bound how finely shadow edges and the light's falloff along each ray are resolved.
+    std::vector<QualitySetting> qualitySweep(bool quick) const override {
+        std::vector<QualitySetting> sweep;
+        const std::vector<int> sizes = quick ? std::vector<int>{64, 128} : std::vector<int>{32, 64, 128, 256, 512};
+        for (int n : sizes) sweep.push_back({"voxels=" + std::to_string(n), {{"voxels", double(n)}}});
+        return sweep;
+    }
+
+    Settings stiffSettings() const override { return {{"voxels", 512.0}, {"combine", 1.0}}; }
+
+    std::optional<StiffBound> stiffBound(const std::string& caseClass) const override {
+        return vsv::stiffBound(caseClass);
+    }
 
     Plan plan(const scene::Scene& scene, const Settings& settings) const override {
         // Without an image size, the camera's aspect ratio (or 4:3) decides what is in view.
@@ -251,7 +285,7 @@ public:
                 for (std::size_t i = 0; i < lights.size(); ++i)
                     gather(program, scene, input, lights[i], grids[i], int(i));
             }
-            if (render::hasLightOfType(scene, scene::LightType::Area)) addAreaLights(input);
+            if (featureOn(out.plan, "AREA_LIGHTS_BY_IVSV")) addAreaLights(input);
         }
         out.timing.stages.push_back({kStageGather, clock.endMilliseconds()});
         if (!lights.empty())
@@ -298,8 +332,9 @@ private:
             p.stages[kGatherIndex].why = "sigma_s = 0: the medium scatters nothing, L_air = 0";
         }
         const GridSize size = gridSize(settings);
-        p.stages[kScanIndex].why = std::to_string(scanPassCount(size.alpha)) + " passes for " +
-                                   std::to_string(size.alpha) + " alpha cells";
+        if (!lights.empty())
+            p.stages[kScanIndex].why = std::to_string(scanPassCount(size.alpha)) + " passes for " +
+                                       std::to_string(size.alpha) + " alpha cells";
         const bool exact = settings.at("combine") != 0.0;
         const bool interp = settings.at("interp") != 0.0;
         bool epipoleInView = false;
@@ -309,11 +344,15 @@ private:
             epipoleInView = epipoleInView || g.epipoleToward || g.epipoleAway;
         }
         const bool epipole = epipoleInView && settings.at("epipole") != 0.0;
-        const bool hasSpot = render::hasLightOfType(scene, scene::LightType::Spot);
-        const bool hasPoint = render::hasLightOfType(scene, scene::LightType::Point);
-        const bool hasSun = render::hasLightOfType(scene, scene::LightType::Directional);
-        const bool hasCookie = std::any_of(scene.lights.begin(), scene.lights.end(),
-                                           [](const scene::Light& l) { return l.cookie >= 0; });
+        // Over the lights vsv shades (culled ones have no GPU light, no shadow map, no cookie lookup).
+        const auto shaded = [&](auto predicate) {
+            return std::any_of(lights.begin(), lights.end(),
+                               [&](int i) { return predicate(scene.lights[std::size_t(i)]); });
+        };
+        const bool hasSpot = shaded([](const scene::Light& l) { return l.type == scene::LightType::Spot; });
+        const bool hasPoint = shaded([](const scene::Light& l) { return l.type == scene::LightType::Point; });
+        const bool hasSun = shaded([](const scene::Light& l) { return l.type == scene::LightType::Directional; });
+        const bool hasCookie = shaded([](const scene::Light& l) { return l.cookie >= 0; });
         p.features.push_back({"COMBINE_EXACT", exact,
                               exact ? "combine=exact: airlight summed over lit runs of phi bins (pointSegment)"
                                     : "combine=fraction: lit fraction x unshadowed airlight (the paper's factorisation)"});
@@ -322,7 +361,7 @@ private:
                                      : "interp=0: nearest texel"});
         p.features.push_back(
             {"EPIPOLE", epipole,
-             epipole ? "an epipole is in view: rays within one alpha cell of it compare the fragment with the light"
+             epipole ? "an epipole is in view: rays within one alpha cell of it test the shadow map directly"
                      : (epipoleInView ? "epipole=0: the grid is read even at the epipole"
                                       : "no epipole in view (the light and its antipode are off screen)")});
         p.features.push_back({"DYNAMIC_RANGE", settings.at("dynamic_range") != 0.0,
@@ -342,6 +381,13 @@ private:
         p.features.push_back({"AREA_LIGHTS_BY_IVSV", hasArea,
                               hasArea ? "the area light is shaded by an inner ivsv (its defaults) in the gather stage"
                                       : "no area light"});
+        render::planCulledLights(scene, p);
+        // Scene-pruned features (force_features=1 turns them on; the image must not change): light types
+        // and cookies compiled out, the epipole rays when no epipole is in view (the grid flags then keep
+        // every ray on the grid), the inner ivsv without an area light (it adds zero).
+        std::vector<std::string> pruned = {"SPOT", "COOKIE", "SHADOW_MAPS_CUBE", "SHADOW_MAPS_2D", "AREA_LIGHTS_BY_IVSV"};
+        if (settings.at("epipole") != 0.0) pruned.push_back("EPIPOLE");
+        forcePlan(p, settings.at("force_features") != 0.0, pruned);
         for (FeaturePlan& f : p.features) {
             const auto it = kDefines.find(f.feature);
             const char* define = it == kDefines.end() ? nullptr : (f.enabled ? it->second.first : it->second.second);
@@ -508,7 +554,8 @@ private:
         program.set("uAccumulate", slot > 0 ? 1 : 0);
         program.set("uEpipoleToward", g.epipoleToward && g.alpha0 == 0.0 ? 1 : 0);
         program.set("uEpipoleAway", g.epipoleAway && g.alpha1 >= 3.141592653589793 ? 1 : 0);
-        program.set("uZfar", float(cam.zfar));
+        program.set("uDirectBins", float(input.settings.at("direct_bins")));
+        program.set("uDirectSegments", int(input.settings.at("direct_segments")));
         mView.lights().bind();
         mView.shadows().bind();
         mView.surface().distance().bindUnit(render::hd::kFirstFreeTextureUnit);
