@@ -93,6 +93,36 @@ vec3 marchGamma(GpuLight L, vec3 w, float beta, float d) {
     return sum;
 }
 
+// A ray on the epipolar axis (beta = 0 or pi to float precision) runs through a spot's position and has
+// no gamma parametrisation (marchGamma divides by sin(beta)): it is marched in t instead, each interval
+// with the closed form of the unshadowed airlight (pointSegment / directionalSegment, which keep the
+// 1/r^2 peak at the light finite and exact) times the shadow test and the angular factor at its middle.
+// At most kAxisSamples intervals: pointSegment loops about 150 times inside, and llvmpipe ends all loops
+// of an invocation together after 65535 iterations.
+const int kAxisSamples = 256;
+vec3 marchAxis(GpuLight L, vec3 w, float d) {
+    RayLightGeometry g = rayLightGeometry(L.position.xyz, w);
+    int n = min(uMarchSamples, kAxisSamples);
+    float dt = d / float(n);
+    vec3 sum = vec3(0.0);
+    for (int i = 0; i < n; ++i) {
+        float t = (float(i) + 0.5) * dt;
+        vec3 x = t * w;
+        if (shadowVisibility(L, x) == 0.0) continue;
+        float x0 = float(i) * dt;
+        float x1 = float(i + 1) * dt;
+        if (uKind == kKindDirectional) {
+            sum += directionalSegment(dot(directionToLight(L, x), w), x0, x1, uSigmaS, uSigmaT, uG, 1.0) *
+                   L.radiant.rgb;
+        } else {
+            // The angular factor needs a direction from the light: none at the light's own position.
+            vec3 I = distance(x, L.position.xyz) > 0.0 ? lightIntensity(L, x) : vec3(0.0);
+            sum += pointSegment(g.tP, g.h, x0, x1, uSigmaS, uSigmaT, uG, 1.0) * I;
+        }
+    }
+    return sum;
+}
+
 // The camera ray's distance at column c (c >= cEnd: the ray's end d).
 float distanceAtColumn(float beta, float c, float cEnd, float d) {
     if (c >= cEnd) return d;
@@ -199,8 +229,13 @@ void main() {
         imageStore(uNearMask, texel, vec4(1.0));
     }
 #endif
+    // A ray along the epipolar axis lies in every slice: it is marched wherever it falls, also with the
+    // near-epipole pass off.
+    bool onAxis = uMode == 0 && length(cross(w, uAxis)) < 1e-5;
     if (uMode == 1) {
         sum = march(L, w, d);
+    } else if (onAxis) {
+        sum = marchAxis(L, w, d);
     } else if (brute) {
         sum = marchGamma(L, w, betaOf(w), d);
     } else {

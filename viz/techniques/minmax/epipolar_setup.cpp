@@ -101,15 +101,32 @@ Setup setupLight(const SetupInput& in) {
     const double span = f.wrap ? 2.0 * pi : (hi - lo) + 2.0 * minGradient;
     // Neighbouring slices at most one pixel apart wherever alpha changes slowest: every ray is within half
     // a pixel of its nearest slice.
+    // Automatic grids also put a slice on alpha = 0, the half-plane of the image centre's ray: pixels on
+    // that screen line (the centre line through the epipole) then use their own slice instead of lying
+    // exactly halfway between two, where rounding would pick the side. An occluder whose boundary is an
+    // epipolar plane through the eye and the centre ray (a plate with one face through the light, seen
+    // from a camera in the same plane) keeps its shadow on the correct side of that line.
+    const bool automatic = in.slices <= 0;
     int slices = in.slices;
-    if (slices <= 0) slices = int(std::ceil(span * std::max(1, in.oversampling) / minGradient)) + (f.wrap ? 0 : 1);
+    if (automatic) slices = int(std::ceil(span * std::max(1, in.oversampling) / minGradient)) + (f.wrap ? 0 : 1);
     f.slices = std::clamp(slices, 2, kMaxSlices);
     if (f.wrap) {
+        // An even count has slices at -pi + k 2 pi / n, among them 0 (k = n / 2).
+        if (automatic && f.slices % 2 == 1) f.slices = std::min(f.slices + 1, kMaxSlices);
         f.alphaLo = -pi;
         f.alphaSpacing = 2.0 * pi / f.slices;
     } else {
         f.alphaLo = lo - minGradient;
         f.alphaSpacing = span / double(f.slices - 1);
+        if (automatic) {
+            // Same spacing, the grid shifted onto multiples of it (one more slice covers the shift).
+            const double first = std::floor(f.alphaLo / f.alphaSpacing);
+            const int count = int(std::ceil((hi + minGradient) / f.alphaSpacing) - first) + 1;
+            if (count <= kMaxSlices) {
+                f.alphaLo = first * f.alphaSpacing;
+                f.slices = std::max(count, 2);
+            }
+        }
     }
     s.maxSliceGap = f.alphaSpacing / minGradient;
 

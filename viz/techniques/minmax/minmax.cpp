@@ -16,6 +16,7 @@
 #include "gl/texture.h"
 #include "render/host_device.h"
 #include "render/intermediates.h"
+#include "render/light_culling.h"
 #include "render/scene_view.h"
 #include "scene/camera.h"
 #include "techniques/minmax/epipolar_setup.h"
@@ -114,6 +115,7 @@ public:
              0, 0, 100000, true},
         };
         for (ParamInfo& p : render::SceneViewPasses::params()) mParams.push_back(std::move(p));
+        mParams.push_back(forceFeaturesParam());
         mStages = {
             render::SceneViewPasses::shadowStage("minmax"),
             render::SceneViewPasses::surfaceStage("minmax"),
@@ -124,7 +126,8 @@ public:
             {kStageMipmap, "Min-max mipmap", "per row of S: a 1D min-max tree, one pass per level",
              {"mip_levels"}, {kTree, kPyramid}, 1},
             {kStageTraverse, "Traverse", "per pixel: walk the slice's tree, integrate the lit segments",
-             {"integrand", "rank", "traversal", "spot_pieces", "epipole_radius", "march_samples", "pick_x", "pick_y", "trace_steps"},
+             {"integrand", "rank", "traversal", "spot_pieces", "epipole_radius", "march_samples", "pick_x", "pick_y",
+              "trace_steps", "force_features"},
              {kAirlight, kVisited, kNearMask, kRayCoords, kTrace}, 1},
             render::SceneViewPasses::composeStage("minmax"),
         };
@@ -137,6 +140,66 @@ public:
     const std::vector<StageInfo>& stages() const override { return mStages; }
     const std::vector<ParamInfo>& params() const override { return mParams; }
     bool needsGl() const override { return true; }
+
+    // Shadow-map size, slice count and rank (issue 9), cheapest first: the analytic integrand at growing
+    // shadow maps and slice counts (with the spot pieces and brute-force samples that go with them), then
+    // the SVD integrand at growing rank. Fewer spot pieces blur a cookie and fewer samples near the
+    // epipole cost accuracy where the light is in view. The quick sweep keeps two points, a coarse grid
+    // and rank 8 on a 1024 map: its share of `airlight report --quick` stays near 40 s on two cores.
+    std::vector<QualitySetting> qualitySweep(bool quick) const override {
+        std::vector<QualitySetting> sweep;
+        auto grid = [&](int map, int slices, int pieces, int samples) {
+            sweep.push_back({"map=" + std::to_string(map) + " slices=" + (slices ? std::to_string(slices) : "auto"),
+                             {{"shadow_map", double(map)}, {"slices", double(slices)},
+                              {"spot_pieces", double(pieces)}, {"march_samples", double(samples)}}});
+        };
+        auto svd = [&](int rank, int samples) {
+            sweep.push_back({"svd rank=" + std::to_string(rank),
+                             {{"integrand", 1.0}, {"rank", double(rank)}, {"shadow_map", 1024.0},
+                              {"march_samples", double(samples)}}});
+        };
+        if (quick) {
+            grid(256, 64, 32, 128);
+            svd(8, 128);
+            return sweep;
+        }
+        grid(256, 64, 32, 128);
+        grid(512, 256, 32, 256);
+        grid(1024, 512, 64, 256);
+        grid(1024, 0, 64, 512);
+        grid(2048, 0, 64, 512);
+        grid(4096, 0, 128, 1024);
+        for (int rank : {1, 2, 4, 8}) svd(rank, 512);
+        return sweep;
+    }
+
+    // The accurate end of the knobs: every camera ray within 1/8 pixel of a slice (slice_oversampling 4),
+    // 128 spot pieces, 1024 near-epipole samples; the analytic integrand (the SVD's own error is measured
+    // by the quality sweep). Keeps the 20 cases at 33x25 within seconds.
+    Settings stiffSettings() const override {
+        return {{"slice_oversampling", 4.0}, {"spot_pieces", 128.0}, {"march_samples", 1024.0}};
+    }
+
+    // Measured by `airlight report --suite stiff` at 33x25 (table in README.md); bounds about twice the
+    // worst case of each class.
+    std::optional<StiffBound> stiffBound(const std::string& caseClass) const override {
+        static const std::map<std::string, StiffBound> kBounds = {
+            {"medium", {0.02, "closed-form segments are exact in sigma_t; thin media show only the shadow-map and "
+                              "slice sampling"}},
+            {"intensity", {0.015, "linear in the intensity: float S, trees and segments carry no absolute scale"}},
+            {"scale", {0.015, "eye-relative frame, angles alpha, beta, gamma and distance-valued maps are scale-free"}},
+            {"singular-ray", {0.0008, "point lights are marched with the closed form per interval (h clamped)"}},
+            {"epipole", {0.045, "rays within epipole_radius px of an epipole, and rays on the epipolar axis, are "
+                               "marched; grazing sun is the worst (shadow-map bias across long light rays)"}},
+            {"camera-placement", {0.008, "the frame is eye-relative; a closed box gives d small and S above beta"}},
+            {"geometry", {0.05, "slice quantisation: a shadow edge along an epipolar plane is placed to the nearest "
+                                "slice (centre line exact); slivers the rasteriser drops"}},
+            {"depth-range", {0.022, "S stores angles beta, not depths: the 1e6 range costs no precision"}},
+            {"phase", {0.04, "the HG lobe is integrated in closed form per lit segment; g = +-0.99 is the worst"}},
+        };
+        const auto it = kBounds.find(caseClass);
+        return it == kBounds.end() ? std::nullopt : std::optional<StiffBound>(it->second);
+    }
 
     Plan plan(const scene::Scene& scene, const Settings& settings) const override {
         Plan p;
@@ -212,6 +275,11 @@ public:
                               cubes ? "point lights / VPLs need omnidirectional maps" : "no point or area light"});
         const bool maps2D = anyEpipolar;
         p.features.push_back({"SHADOW_MAPS_2D", maps2D, maps2D ? "spot / directional lights" : "no spot or directional light"});
+        render::planCulledLights(scene, p);
+        // force_features=1: every stage runs and every permutation pruned by the scene is compiled in (the
+        // traverse shader then carries spot, cookie, cube-map and near-epipole code the scene does not use).
+        forcePlan(p, settings.at("force_features") != 0.0,
+                  {"NEAR_EPIPOLE", "SPOT", "COOKIE", "SHADOW_MAPS_CUBE", "SHADOW_MAPS_2D"});
         for (FeaturePlan& f : p.features) {
             const auto it = kDefines.find(f.feature);
             const char* define = it == kDefines.end() ? nullptr : (f.enabled ? it->second.first : it->second.second);
@@ -241,12 +309,13 @@ public:
         out.lastStageRun = kSurfaceIndex;
         if (stop == kSurfaceIndex) return out;
 
-        const bool scatters = scene.medium.sigma_s != 0.0;
+        // The plan decides (sigma_s = 0 skips the epipolar stages unless force_features=1 runs them).
+        const auto runs = [&](int stage) { return out.plan.stages[std::size_t(stage)].runs; };
         // ---- rectify ----
         clock.begin();
         prepareLights(scene, input);
         const bool svd = s.at("integrand") == 1.0;
-        if (scatters) {
+        if (runs(kRectifyIndex)) {
             for (LightWork& w : mWork) {
                 rectify(w);
                 if (svd) prefixSums(w, scene, input);
@@ -254,7 +323,7 @@ public:
         }
         out.timing.stages.push_back({kStageRectify, clock.endMilliseconds()});
         publishRectified(out, input);
-        if (svd && scatters) publishLowRank(out);
+        if (svd && runs(kRectifyIndex)) publishLowRank(out);
         out.lastStageRun = kRectifyIndex;
         if (stop == kRectifyIndex) return out;
 
@@ -262,7 +331,7 @@ public:
         clock.begin();
         const int wantedLevels = int(s.at("mip_levels"));
         bool complete = true;
-        if (scatters) {
+        if (runs(kMipmapIndex)) {
             for (LightWork& w : mWork) {
                 buildTree(w, wantedLevels);
                 complete = complete && w.levelsBuilt == levelCount(w);
@@ -280,7 +349,7 @@ public:
         mVisited.clear(glm::vec4(0.0f));
         mNearMask.clear(glm::vec4(0.0f));
         mRayCoords.clear(glm::vec4(0.0f));
-        if (scatters) {
+        if (runs(kTraverseIndex)) {
             const gl::Program& program = traverseProgram(out.plan);
             for (std::size_t i = 0; i < mWork.size(); ++i)
                 traverse(program, scene, input, &mWork[i], mWork[i].gpuIndex, i == 0);

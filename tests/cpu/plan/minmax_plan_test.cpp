@@ -1,0 +1,113 @@
+// minmax's plan scene by scene: which stages and shader permutations each built-in scene runs, and why;
+// force_features=1 turns every pruned one on. The expectations follow from the scenes' lights and
+// cameras (viz/scene/builtin_scenes.cpp), not from running the plan.
+#include <gtest/gtest.h>
+
+#include <map>
+#include <string>
+
+#include "scene/builtin_scenes.h"
+#include "techniques/registry.h"
+
+namespace viz {
+namespace {
+
+const FeaturePlan* findFeature(const Plan& plan, const std::string& name) {
+    for (const FeaturePlan& f : plan.features)
+        if (f.feature == name) return &f;
+    return nullptr;
+}
+
+const StagePlan* findStage(const Plan& plan, const std::string& id) {
+    for (const StagePlan& s : plan.stages)
+        if (s.stage == id) return &s;
+    return nullptr;
+}
+
+Plan minmaxPlan(const std::string& sceneName, const Settings& given = {}) {
+    const auto t = makeTechnique("minmax");
+    return t->plan(scene::makeBuiltinScene(sceneName), completeSettings(*t, given));
+}
+
+struct Expected {
+    bool nearEpipole, spot, cookie, cubes, maps2D, brute, rectify;
+};
+
+// grate: a spot seen from the side, its position in the image; stained-glass: a spot with a cookie in
+// view; colonnade and terrain: a sun whose epipoles lie far off screen; forest: a sun low in the view
+// (its epipole near the screen); tv-room: one area light, marched as VPLs with cube maps.
+const std::map<std::string, Expected> kExpected = {
+    {"grate", {true, true, false, false, true, false, true}},
+    {"stained-glass", {true, true, true, false, true, false, true}},
+    {"colonnade", {false, false, false, false, true, false, true}},
+    {"terrain", {false, false, false, false, true, false, true}},
+    {"forest", {true, false, false, false, true, false, true}},
+    {"tv-room", {false, false, false, true, false, true, false}},
+};
+
+TEST(MinmaxPlan, EachBuiltinSceneRunsWhatItsLightsAndCameraNeed) {
+    for (const auto& [sceneName, e] : kExpected) {
+        const Plan plan = minmaxPlan(sceneName);
+        const std::map<std::string, bool> features = {
+            {"NEAR_EPIPOLE", e.nearEpipole}, {"SPOT", e.spot},           {"COOKIE", e.cookie},
+            {"SHADOW_MAPS_CUBE", e.cubes},   {"SHADOW_MAPS_2D", e.maps2D}, {"BRUTE_FORCE_LIGHTS", e.brute},
+            {"INTEGRAND_SVD", false},        {"TREE_TRAVERSAL", true}};
+        for (const auto& [name, on] : features) {
+            const FeaturePlan* f = findFeature(plan, name);
+            ASSERT_NE(f, nullptr) << sceneName << " lists no feature " << name;
+            EXPECT_EQ(f->enabled, on) << sceneName << ": " << name << " (" << f->why << ")";
+            EXPECT_FALSE(f->why.empty()) << sceneName << ": " << name;
+        }
+        for (const char* stage : {"minmax.rectify", "minmax.mipmap"}) {
+            const StagePlan* s = findStage(plan, stage);
+            ASSERT_NE(s, nullptr) << stage;
+            EXPECT_EQ(s->runs, e.rectify) << sceneName << ": " << stage << " (" << s->why << ")";
+        }
+        const StagePlan* traverse = findStage(plan, "minmax.traverse");
+        ASSERT_NE(traverse, nullptr);
+        EXPECT_TRUE(traverse->runs) << sceneName << ": every scene scatters";
+        // No built-in scene has a light outside the view volume.
+        for (const FeaturePlan& f : plan.features) EXPECT_NE(f.feature.rfind("LIGHT ", 0), 0u) << f.feature;
+    }
+}
+
+TEST(MinmaxPlan, ReasonsNameTheCause) {
+    const Plan colonnade = minmaxPlan("colonnade");
+    EXPECT_NE(findFeature(colonnade, "NEAR_EPIPOLE")->why.find("far off screen"), std::string::npos);
+    EXPECT_NE(findFeature(colonnade, "SPOT")->why.find("LIGHTS_NO_SPOT"), std::string::npos);
+    const Plan tv = minmaxPlan("tv-room");
+    EXPECT_NE(findStage(tv, "minmax.rectify")->why.find("no spot or directional light"), std::string::npos);
+    const Plan grate = minmaxPlan("grate");
+    EXPECT_NE(findFeature(grate, "NEAR_EPIPOLE")->why.find("NEAR_EPIPOLE"), std::string::npos);
+}
+
+TEST(MinmaxPlan, SettingsChooseTheIntegrandAndTheNearEpipolePass) {
+    EXPECT_TRUE(findFeature(minmaxPlan("terrain", {{"integrand", 1.0}}), "INTEGRAND_SVD")->enabled);
+    const Plan svdGrate = minmaxPlan("grate", {{"integrand", 1.0}});
+    ASSERT_NE(findFeature(svdGrate, "TEXTURED_PREFIX_SUMS"), nullptr);
+    EXPECT_TRUE(findFeature(svdGrate, "TEXTURED_PREFIX_SUMS")->enabled);
+    const Plan svdTerrain = minmaxPlan("terrain", {{"integrand", 1.0}});
+    EXPECT_FALSE(findFeature(svdTerrain, "TEXTURED_PREFIX_SUMS")->enabled);
+    EXPECT_FALSE(findFeature(minmaxPlan("grate", {{"epipole_radius", 0.0}}), "NEAR_EPIPOLE")->enabled);
+    EXPECT_FALSE(findFeature(minmaxPlan("grate", {{"traversal", 1.0}}), "TREE_TRAVERSAL")->enabled);
+}
+
+TEST(MinmaxPlan, ForceFeaturesTurnsEveryScenePrunedPartOn) {
+    for (const auto& [sceneName, e] : kExpected) {
+        const Plan plan = minmaxPlan(sceneName, {{"force_features", 1.0}});
+        for (const StagePlan& s : plan.stages) EXPECT_TRUE(s.runs) << sceneName << " " << s.stage;
+        for (const char* name : {"NEAR_EPIPOLE", "SPOT", "COOKIE", "SHADOW_MAPS_CUBE", "SHADOW_MAPS_2D"}) {
+            const FeaturePlan* f = findFeature(plan, name);
+            ASSERT_NE(f, nullptr) << name;
+            EXPECT_TRUE(f->enabled) << sceneName << ": " << name << " (" << f->why << ")";
+        }
+        // Setting choices are not scene pruning: force leaves them alone.
+        EXPECT_FALSE(findFeature(plan, "INTEGRAND_SVD")->enabled) << sceneName;
+    }
+    // Forcing a feature the scene uses anyway changes nothing.
+    EXPECT_EQ(findFeature(minmaxPlan("grate", {{"force_features", 1.0}}), "SPOT")->why,
+              findFeature(minmaxPlan("grate"), "SPOT")->why);
+}
+
+}  // namespace
+}  // namespace viz
