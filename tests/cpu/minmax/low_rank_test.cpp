@@ -62,7 +62,9 @@ TEST(MinmaxLowRank, ReconstructionErrorFallsWithRank) {
             for (std::size_t i = 0; i < lr.singularValues.size(); ++i) {
                 all += lr.singularValues[i] * lr.singularValues[i];
                 if (int(i) >= rank) tail += lr.singularValues[i] * lr.singularValues[i];
-                if (i > 0) EXPECT_LE(lr.singularValues[i], lr.singularValues[i - 1]);
+                if (i > 0) {
+                    EXPECT_LE(lr.singularValues[i], lr.singularValues[i - 1]);
+                }
             }
             // float storage of B and Gamma adds ~1e-7 relative
             EXPECT_NEAR(lr.reconstructionError, std::sqrt(tail / all), 1e-6) << "rank " << rank;
