@@ -69,11 +69,17 @@ vec3 angularPieces(GpuLight L, vec3 w, RayLightGeometry g, float h, float x0, fl
 
 // Roots in (x0, x1) of f(t) = (dot(o + t w, a))^2 - c^2 |o + t w|^2 (the double cone of half-angle
 // acos(c) around axis a through the light; o = eye - light), appended to `breaks`.
+// Solved in units of the length scale S = max(|o|, x1): with t = S u the coefficients A, B / S, C / S^2
+// are all O(1) whatever the scene's units, so the near-degenerate test on A (a ray parallel to the
+// cone's surface) and the quadratic stay scale-free (a 1e4-unit scene once made A look negligible next
+// to C ~ |o|^2 and every root came from the linear fallback).
 void coneRoots(vec3 o, vec3 w, vec3 a, float c, float x0, float x1, inout float breaks[8], inout int n) {
-    float wa = dot(w, a), oa = dot(o, a);
+    float S = max(max(length(o), abs(x1)), 1.0e-30);
+    vec3 os = o / S;
+    float wa = dot(w, a), oa = dot(os, a);
     float A = wa * wa - c * c;
-    float B = 2.0 * (oa * wa - c * c * dot(o, w));
-    float C = oa * oa - c * c * dot(o, o);
+    float B = 2.0 * (oa * wa - c * c * dot(os, w));
+    float C = oa * oa - c * c * dot(os, os);
     float r[2];
     int m = 0;
     if (abs(A) < 1e-7 * (abs(B) + abs(C) + 1e-30)) {
@@ -87,8 +93,10 @@ void coneRoots(vec3 o, vec3 w, vec3 a, float c, float x0, float x1, inout float 
             if (q != 0.0) r[m++] = C / q;
         }
     }
-    for (int i = 0; i < m; ++i)
-        if (r[i] > x0 && r[i] < x1 && n < 8) breaks[n++] = r[i];
+    for (int i = 0; i < m; ++i) {
+        float t = r[i] * S;
+        if (t > x0 && t < x1 && n < 8) breaks[n++] = t;
+    }
 }
 
 // A spot light's segment. A_spot and the cookie depend on the direction from the light, which turns

@@ -18,6 +18,7 @@
 #include "render/eye_space.h"
 #include "render/host_device.h"
 #include "render/intermediates.h"
+#include "render/light_culling.h"
 #include "render/scene_view.h"
 #include "scene/camera.h"
 #include "techniques/polyvol/adaptive_tessellation.h"
@@ -85,13 +86,14 @@ public:
              0, 1, false},
         };
         for (ParamInfo& p : render::SceneViewPasses::params()) mParams.push_back(std::move(p));
+        mParams.push_back(forceFeaturesParam());
         mStages = {
             render::SceneViewPasses::shadowStage("polyvol"),
             render::SceneViewPasses::surfaceStage("polyvol"),
             {kStageVolume, "Light volume",
              "closed mesh from the shadow map, drawn with signed additive airlight terms at each crossing",
              {"tessellation", "airlight", "threshold", "spot_pieces", "crack_check", "draw_triangles", "origin",
-              "wireframe", "stop_level", "cookie_mask"},
+              "wireframe", "stop_level", "cookie_mask", "force_features"},
              {kEdgeMap, kTessLevels, kMesh, kCrossings, kPositive, kNegative, kTotal, kCracks, kLut, kLutError},
              1},
             render::SceneViewPasses::composeStage("polyvol"),
@@ -105,6 +107,52 @@ public:
     const std::vector<StageInfo>& stages() const override { return mStages; }
     const std::vector<ParamInfo>& params() const override { return mParams; }
     bool needsGl() const override { return true; }
+
+    // Issue 9's knobs: the shadow-map size (the volume's resolution, one vertex per texel) with static
+    // tessellation, then adaptive at the sizes where it was measured to pay off (README, benchmark).
+    // The quick sweep also takes area lights as one VPL (area_samples=1, label "1vpl"): tv-room's 16 VPL
+    // cube volumes cost ~6 s per run in Release on llvmpipe (every crossing integrates the cosine lobe
+    // in 8 pieces), which alone would exceed the quick report's budget; other scenes have no area light.
+    std::vector<QualitySetting> qualitySweep(bool quick) const override {
+        std::vector<QualitySetting> sweep;
+        if (quick) {
+            for (int n : {128, 256})
+                sweep.push_back({"map=" + std::to_string(n) + " 1vpl", {{"shadow_map", double(n)}, {"area_samples", 1.0}}});
+            return sweep;
+        }
+        for (int n : {256, 512, 1024, 2048})
+            sweep.push_back({"map=" + std::to_string(n) + " static", {{"shadow_map", double(n)}}});
+        for (int n : {512, 1024, 2048})
+            sweep.push_back({"map=" + std::to_string(n) + " adaptive", {{"shadow_map", double(n)}, {"tessellation", 1.0}}});
+        return sweep;
+    }
+
+    // The accurate end: 1024^2 (at 512^2 a ray passing the light within a texel of the plate's shadow
+    // boundary in occluder-touching-light is misclassified next to the 1/r^2 singularity: 0.25), adaptive
+    // (the same image, half the time), origin=surface (crossings behind d add exactly 0, so a camera
+    // inside a closed occluder gets exactly 0 instead of a 4e-9 blend-order residue).
+    Settings stiffSettings() const override {
+        return {{"shadow_map", 1024.0}, {"tessellation", 1.0}, {"origin", 1.0}};
+    }
+
+    // Measured by `airlight report --suite stiff` at 33x25 (figures in README.md), bounds about twice that.
+    std::optional<StiffBound> stiffBound(const std::string& caseClass) const override {
+        static const std::map<std::string, StiffBound> kBounds = {
+            {"medium", {0.005, "closed-form segments are exact in sigma; what is left is the shadow map's (0.0022)"}},
+            {"intensity", {0.004, "linear in the intensity; float holds 1e-3 to 1e7 (0.0017)"}},
+            {"scale", {0.004, "eye-relative vertices, distance-valued maps, cone roots solved in units of |light| "
+                              "(0.0017; 0.96 at 1e4 before the roots were scaled)"}},
+            {"singular-ray", {0.003, "the shared closed form clamps h; the segment is cut at the cones (0.0015)"}},
+            {"epipole", {0.045, "no epipolar structure; grazing sun is the worst: shadow-map edges (0.021)"}},
+            {"camera-placement", {0.008, "depth clamp keeps faces before the near plane; origin=surface makes "
+                                         "crossings behind d add exactly 0 (0.0039)"}},
+            {"geometry", {0.05, "shadow-map rasterisation drops slivers the reference still hits (0.024)"}},
+            {"depth-range", {0.02, "distance-valued R32F maps; the volume is as coarse as the 1e6-wide map (0.0099)"}},
+            {"phase", {0.016, "the HG lobe is inside the closed form of each segment; g = 0.99 is the worst (0.0079)"}},
+        };
+        const auto it = kBounds.find(caseClass);
+        return it == kBounds.end() ? std::nullopt : std::optional<StiffBound>(it->second);
+    }
 
     Plan plan(const scene::Scene& scene, const Settings& settings) const override {
         Plan p;
@@ -121,6 +169,7 @@ public:
             const int areaSamples = int(settings.at("area_samples"));
             auto cube = [](int m) { return gridTriangleCountFor(m, 6) + 12 * 2 * std::int64_t(m - 1) + 8; };
             for (const scene::Light& l : scene.lights) {
+                if (!render::lightReachesView(l, scene.camera)) continue;  // culled: no map, no volume
                 if (l.type == scene::LightType::Point) {
                     triangles += cube(n);
                 } else if (l.type == scene::LightType::Area) {
@@ -181,6 +230,8 @@ public:
                                                  : "tessellation=adaptive but no 2D map: cubes stay static")
                                        : "tessellation=static: one vertex per texel" +
                                              std::string(maps2D && pays ? " (adaptive measured faster from 512^2)" : "")});
+        render::planCulledLights(scene, p);
+        forcePlan(p, settings.at("force_features") != 0.0, {"SPOT", "COOKIE", "SHADOW_MAPS_CUBE", "SHADOW_MAPS_2D"});
         for (FeaturePlan& f : p.features) {
             const auto it = kDefines.find(f.feature);
             const char* define = it == kDefines.end() ? nullptr : (f.enabled ? it->second.first : it->second.second);

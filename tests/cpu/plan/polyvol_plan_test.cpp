@@ -1,0 +1,142 @@
+// polyvol's plan on each built-in scene: which light and shadow paths are compiled in (and by which
+// define they are compiled out), the triangle count the volume stage announces, culled lights, and what
+// force_features turns on.
+#include <gtest/gtest.h>
+
+#include <map>
+#include <string>
+
+#include "scene/builtin_scenes.h"
+#include "techniques/polyvol/light_volume_mesh.h"
+#include "techniques/registry.h"
+
+namespace viz {
+namespace {
+
+const FeaturePlan& feature(const Plan& plan, const std::string& name) {
+    for (const FeaturePlan& f : plan.features)
+        if (f.feature == name) return f;
+    ADD_FAILURE() << "polyvol lists no feature " << name;
+    static const FeaturePlan kNone;
+    return kNone;
+}
+
+Plan polyvolPlan(const scene::Scene& scene, const Settings& given = {}) {
+    const auto t = makeTechnique("polyvol");
+    return t->plan(scene, completeSettings(*t, given));
+}
+
+Plan polyvolPlan(const std::string& sceneName, const Settings& given = {}) {
+    return polyvolPlan(scene::makeBuiltinScene(sceneName), given);
+}
+
+bool mentions(const FeaturePlan& f, const std::string& text) { return f.why.find(text) != std::string::npos; }
+
+// grate: one spot without cookie; stained-glass: a spot with a colour cookie; colonnade, forest, terrain:
+// one sun (a 2D orthographic map); tv-room: one area light, 16 VPLs with cube maps. Each scene compiles
+// in only the light and shadow-map code it uses, and says which define leaves the rest out.
+TEST(PolyvolPlan, CompilesOnlyTheLightAndShadowCodeEachSceneUses) {
+    struct Row {
+        bool spot, cookie, cube, maps2D, area;
+    };
+    const std::map<std::string, Row> table = {
+        {"grate", {true, false, false, true, false}},
+        {"stained-glass", {true, true, false, true, false}},
+        {"colonnade", {false, false, false, true, false}},
+        {"forest", {false, false, false, true, false}},
+        {"terrain", {false, false, false, true, false}},
+        {"tv-room", {false, false, true, false, true}},
+    };
+    for (const auto& [name, row] : table) {
+        const Plan p = polyvolPlan(name);
+        for (const StagePlan& s : p.stages) EXPECT_TRUE(s.runs) << name << " " << s.stage;
+        EXPECT_EQ(feature(p, "SPOT").enabled, row.spot) << name;
+        EXPECT_EQ(feature(p, "COOKIE").enabled, row.cookie) << name;
+        EXPECT_EQ(feature(p, "SHADOW_MAPS_CUBE").enabled, row.cube) << name;
+        EXPECT_EQ(feature(p, "SHADOW_MAPS_2D").enabled, row.maps2D) << name;
+        EXPECT_EQ(feature(p, "AREA_VPLS").enabled, row.area) << name;
+        EXPECT_FALSE(feature(p, "AIRLIGHT_LUT").enabled) << name << ": analytic by default, no table";
+        EXPECT_FALSE(feature(p, "ADAPTIVE").enabled) << name << ": static by default";
+        // The define that leaves each unused path out is named.
+        if (!row.spot) {
+            EXPECT_TRUE(mentions(feature(p, "SPOT"), "LIGHTS_NO_SPOT")) << name;
+        }
+        if (!row.cookie) {
+            EXPECT_TRUE(mentions(feature(p, "COOKIE"), "LIGHTS_NO_COOKIE")) << name;
+        }
+        if (!row.cube) {
+            EXPECT_TRUE(mentions(feature(p, "SHADOW_MAPS_CUBE"), "SHADOW_NO_CUBE")) << name;
+        }
+        if (!row.maps2D) {
+            EXPECT_TRUE(mentions(feature(p, "SHADOW_MAPS_2D"), "SHADOW_NO_2D")) << name;
+        }
+        for (const FeaturePlan& f : p.features) EXPECT_NE(f.feature.rfind("LIGHT ", 0), 0u) << name << ": no culled light";
+    }
+}
+
+// The volume stage announces the triangle count of the mesh it draws: the static grid plus the closure
+// of a 2D map (light_volume_mesh.h builds the actual key lists), or per VPL a cube's six grids plus its
+// seams (VPL cubes are at most 256^2 per face).
+TEST(PolyvolPlan, VolumeStageAnnouncesItsTriangleCount) {
+    const Plan grate = polyvolPlan("grate", {{"shadow_map", 256}});
+    ASSERT_NE(grate.stages[2].why.find("triangles"), std::string::npos) << grate.stages[2].why;
+    EXPECT_EQ(std::stoll(grate.stages[2].why),
+              polyvol::gridTriangleCount(256, 1) + std::int64_t(polyvol::gridClosure(256).size() / 3));
+    const Plan room = polyvolPlan("tv-room", {{"shadow_map", 1024}});
+    const std::int64_t cube = polyvol::gridTriangleCount(256, 6) + std::int64_t(polyvol::cubeSeams(256).size() / 3);
+    EXPECT_EQ(std::stoll(room.stages[2].why), 16 * cube);
+}
+
+// Choices made by settings: the table and adaptive tessellation (2D maps only), and a medium that
+// scatters nothing skips the volume stage.
+TEST(PolyvolPlan, SettingsChooseTheTableAndTheTessellation) {
+    EXPECT_TRUE(feature(polyvolPlan("grate", {{"airlight", 1}}), "AIRLIGHT_LUT").enabled);
+    EXPECT_TRUE(feature(polyvolPlan("colonnade", {{"tessellation", 1}}), "ADAPTIVE").enabled);
+    const FeaturePlan cubes = feature(polyvolPlan("tv-room", {{"tessellation", 1}}), "ADAPTIVE");
+    EXPECT_FALSE(cubes.enabled);
+    EXPECT_TRUE(mentions(cubes, "cubes stay static")) << cubes.why;
+    scene::Scene clear = scene::makeBuiltinScene("grate");
+    clear.medium.sigma_s = 0.0;
+    const Plan p = polyvolPlan(clear);
+    EXPECT_FALSE(p.stages[2].runs);
+    EXPECT_TRUE(p.stages[2].why.find("sigma_s = 0") != std::string::npos);
+    // The crack detector has a constant integrand: it draws even in a clear medium.
+    EXPECT_TRUE(polyvolPlan(clear, {{"crack_check", 1}}).stages[2].runs);
+}
+
+// A light whose lit volume misses the view volume is culled (render::planCulledLights): it is listed,
+// gets no map and adds no triangles.
+TEST(PolyvolPlan, CulledLightsAreListedAndAddNoTriangles) {
+    scene::Scene scene = scene::makeBuiltinScene("grate");
+    const Plan before = polyvolPlan(scene, {{"shadow_map", 256}});
+    scene::Light behind = scene.lights[0];
+    behind.name = "behind";
+    behind.position = scene.camera.position - 2.0 * scene.camera.forward;
+    behind.direction = -scene.camera.forward;  // shines away from everything the camera sees
+    scene.lights.push_back(behind);
+    const Plan after = polyvolPlan(scene, {{"shadow_map", 256}});
+    const FeaturePlan& culled = feature(after, "LIGHT behind");
+    EXPECT_FALSE(culled.enabled);
+    EXPECT_FALSE(culled.why.empty());
+    EXPECT_EQ(std::stoll(after.stages[2].why), std::stoll(before.stages[2].why));
+}
+
+// force_features=1 turns on every scene-pruned path (the light kinds and map kinds) and runs every
+// stage, keeping the reason it would have been left out; features chosen by settings stay as set.
+TEST(PolyvolPlan, ForceFeaturesTurnsOnEverySceneChoiceOnly) {
+    for (const std::string name : {"grate", "colonnade", "tv-room"}) {
+        const Plan p = polyvolPlan(name, {{"force_features", 1}});
+        for (const char* f : {"SPOT", "COOKIE", "SHADOW_MAPS_CUBE", "SHADOW_MAPS_2D"}) {
+            EXPECT_TRUE(feature(p, f).enabled) << name << " " << f;
+            EXPECT_EQ(mentions(feature(p, f), "forced on"), !feature(polyvolPlan(name), f).enabled) << name << " " << f;
+        }
+        EXPECT_FALSE(feature(p, "AIRLIGHT_LUT").enabled) << name;
+        EXPECT_FALSE(feature(p, "ADAPTIVE").enabled) << name;
+    }
+    scene::Scene clear = scene::makeBuiltinScene("grate");
+    clear.medium.sigma_s = 0.0;
+    EXPECT_TRUE(polyvolPlan(clear, {{"force_features", 1}}).stages[2].runs);
+}
+
+}  // namespace
+}  // namespace viz
