@@ -244,14 +244,18 @@ bool hasParam(const viz::Technique& t, const std::string& name) {
     return false;
 }
 
-// The technique at its defaults, timed as planned and with force_features=1, runs interleaved so that
-// both see the same machine load.
+// The technique at its cheapest sweep setting, timed as planned and with force_features=1, runs
+// interleaved so that both see the same machine load.
 viz::report::PlanSaving measurePlanSaving(const std::string& id, const viz::scene::Scene& scene,
                                           const std::string& sceneName, const Options& o) {
     auto technique = viz::makeTechnique(id);
     viz::report::PlanSaving saving{sceneName, id, 0.0, 0.0, {}};
-    const viz::Settings planned = viz::completeSettings(*technique, {});
-    const viz::Settings forced = viz::completeSettings(*technique, {{"force_features", 1.0}});
+    // The cheapest setting of the technique's sweep (its quick sweep with --quick), so that the check
+    // costs what one row of the sweep costs; force_features on top of it for the forced runs.
+    viz::Settings base = technique->qualitySweep(o.quick).front().settings;
+    const viz::Settings planned = viz::completeSettings(*technique, base);
+    base["force_features"] = 1.0;
+    const viz::Settings forced = viz::completeSettings(*technique, base);
     const viz::Plan a = technique->plan(scene, planned), b = technique->plan(scene, forced);
     for (std::size_t i = 0; i < a.stages.size() && i < b.stages.size(); ++i)
         if (!a.stages[i].runs && b.stages[i].runs) saving.skipped.push_back("stage " + a.stages[i].stage);

@@ -70,8 +70,8 @@ void writeHtml(const std::string& path, const ReportMeta& meta, const std::vecto
          "range (or it is raymarch itself).</p>\n";
 
     if (!savings.empty()) {
-        h << "<h2>What each plan leaves out, and what that saves</h2>\n<p class=\"note\">Default settings, timed as "
-             "planned and with <code>force_features=1</code> (everything the plan leaves out for the scene runs "
+        h << "<h2>What each plan leaves out, and what that saves</h2>\n<p class=\"note\">The technique's cheapest sweep "
+             "setting, timed as planned and with <code>force_features=1</code> (everything the plan leaves out for the scene runs "
              "anyway; the image is the same), medians of the same runs, interleaved.</p>\n<table><tr><th class=\"l\">"
              "scene</th><th class=\"l\">technique</th><th>planned ms</th><th>forced ms</th><th>saved</th><th "
              "class=\"l\">left out</th></tr>\n";

@@ -32,7 +32,7 @@ struct ReportRow {
     std::string errorImage;
 };
 
-// What a technique's plan saves on a scene: its default setting timed as planned and with
+// What a technique's plan saves on a scene: its cheapest sweep setting timed as planned and with
 // force_features=1 (everything the plan leaves out for the scene run anyway), medians side by side.
 struct PlanSaving {
     std::string scene, technique;
