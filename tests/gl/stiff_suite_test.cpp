@@ -51,9 +51,9 @@ std::vector<std::string> caseIds() {
 }
 
 INSTANTIATE_TEST_SUITE_P(Cases, StiffSuite, ::testing::ValuesIn(caseIds()),
-                         [](const ::testing::TestParamInfo<std::string>& info) {
+                         [](const ::testing::TestParamInfo<std::string>& caseParam) {
                              std::string name;
-                             for (char ch : info.param) name += std::isalnum(static_cast<unsigned char>(ch)) ? ch : '_';
+                             for (char ch : caseParam.param) name += std::isalnum(static_cast<unsigned char>(ch)) ? ch : '_';
                              return name;
                          });
 
