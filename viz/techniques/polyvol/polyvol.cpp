@@ -116,8 +116,9 @@ public:
     std::vector<QualitySetting> qualitySweep(bool quick) const override {
         std::vector<QualitySetting> sweep;
         if (quick) {
-            for (int n : {128, 256})
-                sweep.push_back({"map=" + std::to_string(n) + " 1vpl", {{"shadow_map", double(n)}, {"area_samples", 1.0}}});
+            // One point: polyvol's volume stage follows cookies texel by texel, which costs seconds per
+            // frame on stained-glass, and the quick report has a 5-minute budget for everything.
+            sweep.push_back({"map=128 1vpl", {{"shadow_map", 128.0}, {"area_samples", 1.0}}});
             return sweep;
         }
         for (int n : {256, 512, 1024, 2048})

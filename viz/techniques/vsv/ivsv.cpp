@@ -185,7 +185,7 @@ public:
     // cheapest first. On a scene without an area light only `voxels` matters (the inner vsv).
     std::vector<QualitySetting> qualitySweep(bool quick) const override {
         const std::vector<std::pair<int, int>> steps =
-            quick ? std::vector<std::pair<int, int>>{{4, 64}, {16, 128}, {64, 128}, {256, 128}}
+            quick ? std::vector<std::pair<int, int>>{{4, 64}, {16, 128}, {64, 128}}
                   : std::vector<std::pair<int, int>>{{4, 64}, {16, 64}, {16, 128}, {64, 128}, {256, 128}, {256, 256}};
         std::vector<QualitySetting> sweep;
         for (const auto& [vpls, voxels] : steps)
