@@ -1,8 +1,10 @@
-// The GUI shell: one GLFW window with the final frame (left pane) beside one chosen view (right pane),
-// a clickable technique list, a view list, a status line with per-stage timings and the plan's skipped
-// stages, and an orbit/fly camera. GPU techniques run on the main thread whenever the camera or the
-// technique changes; CPU techniques (the reference) run on a worker thread in progressive passes
-// (1/4, 1/2, then full resolution) so the window never freezes.
+// The window: one GLFW window with the final frame (left pane) beside one chosen view (right pane, or
+// the comparison grid), a clickable technique list, a view list, a status line with the stage shown,
+// per-stage timings and the plan's skipped stages, the ray inspector or timing bars under the final
+// frame, the scene and parameter panel (immediate-mode widgets) under the view, and an orbit/fly
+// camera. GPU techniques run on the main thread whenever the camera, the settings or the technique
+// change; CPU techniques (the reference) run on a worker thread in progressive passes (1/4, 1/2, then
+// full resolution) so the window never freezes.
 #include "gui.h"
 
 #include <epoxy/gl.h>

@@ -1,5 +1,7 @@
-// The interactive window: the final frame beside one chosen intermediate, a technique picker, an
-// orbit/fly camera and a status line with per-stage timings. The full debugger UI comes later.
+// The interactive window: the final frame beside one chosen intermediate (zoomable to texel level), a
+// technique picker, an orbit/fly camera, stage and sub-step stepping, the ray inspector, the comparison
+// grid, a scene and parameter panel, per-stage timing bars, export, a session file, and automation
+// (screenshots with a sidecar of view rectangles, scripted actions).
 #pragma once
 
 #include <string>
