@@ -244,8 +244,7 @@ bool hasParam(const viz::Technique& t, const std::string& name) {
     return false;
 }
 
-// The technique at its cheapest sweep setting, timed as planned and with force_features=1, runs
-// interleaved so that both see the same machine load.
+// The technique at its cheapest sweep setting, timed as planned and with force_features=1.
 viz::report::PlanSaving measurePlanSaving(const std::string& id, const viz::scene::Scene& scene,
                                           const std::string& sceneName, const Options& o) {
     auto technique = viz::makeTechnique(id);
@@ -263,15 +262,14 @@ viz::report::PlanSaving measurePlanSaving(const std::string& id, const viz::scen
         if (!a.features[i].enabled && b.features[i].enabled) saving.skipped.push_back(a.features[i].feature);
     viz::FrameInput in{&scene, o.width, o.height, planned, -1};
     viz::FrameInput inForced{&scene, o.width, o.height, forced, -1};
-    technique->run(in);
-    technique->run(inForced);
-    std::vector<double> plannedTimes, forcedTimes;
-    // --quick: 3 runs of each (the sweep keeps its 5): the saving is a ratio of two medians of the same load.
+    // Two blocks, each after its own warm-up: a technique that keeps one compiled program at a time
+    // would otherwise recompile on every alternation and time its compiler. --quick: 3 runs of each.
     const int runs = o.quick ? std::min(o.runs, 3) : o.runs;
-    for (int r = 0; r < runs; ++r) {
-        plannedTimes.push_back(technique->run(in).timing.totalMilliseconds());
-        forcedTimes.push_back(technique->run(inForced).timing.totalMilliseconds());
-    }
+    std::vector<double> plannedTimes, forcedTimes;
+    technique->run(in);
+    for (int r = 0; r < runs; ++r) plannedTimes.push_back(technique->run(in).timing.totalMilliseconds());
+    technique->run(inForced);
+    for (int r = 0; r < runs; ++r) forcedTimes.push_back(technique->run(inForced).timing.totalMilliseconds());
     saving.plannedMilliseconds = median(plannedTimes);
     saving.forcedMilliseconds = median(forcedTimes);
     return saving;

@@ -72,7 +72,7 @@ void writeHtml(const std::string& path, const ReportMeta& meta, const std::vecto
     if (!savings.empty()) {
         h << "<h2>What each plan leaves out, and what that saves</h2>\n<p class=\"note\">The technique's cheapest sweep "
              "setting, timed as planned and with <code>force_features=1</code> (everything the plan leaves out for the scene runs "
-             "anyway; the image is the same), medians of the same runs, interleaved.</p>\n<table><tr><th class=\"l\">"
+             "anyway; the image is the same), medians, each after its own warm-up.</p>\n<table><tr><th class=\"l\">"
              "scene</th><th class=\"l\">technique</th><th>planned ms</th><th>forced ms</th><th>saved</th><th "
              "class=\"l\">left out</th></tr>\n";
         for (const PlanSaving& p : savings) {

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "debug/permutations.h"
 #include "gl/program.h"
 #include "gl/stage_clock.h"
 #include "gl/texture.h"
@@ -56,7 +57,7 @@ enum StageIndex {
 };
 
 // Shader permutations of minmax/*.comp: feature -> {define when enabled, define when disabled}.
-const std::map<std::string, std::pair<const char*, const char*>> kDefines = {
+const PermutationTable kDefines = {
     {"NEAR_EPIPOLE", {"NEAR_EPIPOLE", nullptr}},
     {"INTEGRAND_SVD", {"INTEGRAND_SVD", nullptr}},
     {"SPOT", {nullptr, "LIGHTS_NO_SPOT"}},
@@ -280,11 +281,7 @@ public:
         // traverse shader then carries spot, cookie, cube-map and near-epipole code the scene does not use).
         forcePlan(p, settings.at("force_features") != 0.0,
                   {"NEAR_EPIPOLE", "SPOT", "COOKIE", "SHADOW_MAPS_CUBE", "SHADOW_MAPS_2D"});
-        for (FeaturePlan& f : p.features) {
-            const auto it = kDefines.find(f.feature);
-            const char* define = it == kDefines.end() ? nullptr : (f.enabled ? it->second.first : it->second.second);
-            if (define) f.why += std::string(f.enabled ? " (compiled in: " : " (compiled out: ") + define + ")";
-        }
+        annotatePermutations(p, kDefines);
         return p;
     }
 
@@ -524,16 +521,8 @@ private:
     }
 
     const gl::Program& traverseProgram(const Plan& plan) {
-        gl::ShaderDefines defines;
         std::string key;
-        for (const FeaturePlan& f : plan.features) {
-            const auto it = kDefines.find(f.feature);
-            if (it == kDefines.end()) continue;
-            const char* define = f.enabled ? it->second.first : it->second.second;
-            if (!define) continue;
-            defines.push_back({define, "1"});
-            key += std::string(define) + ";";
-        }
+        const gl::ShaderDefines defines = permutationDefines(plan, kDefines, &key);
         if (key != mProgramKey || !mTraverse) {
             mTraverse = gl::Program::compile(
                 {.stages = {"minmax/traverse.comp"}, .defines = defines, .label = kStageTraverse});

@@ -10,6 +10,7 @@
 #include "core/error.h"
 #include "gl/buffer.h"
 #include "gl/framebuffer.h"
+#include "debug/permutations.h"
 #include "gl/program.h"
 #include "gl/readback.h"
 #include "gl/stage_clock.h"
@@ -53,7 +54,7 @@ using polyvol::kModeDirectional;
 using polyvol::kModeSpot;
 
 // Shader permutations: feature -> {define when enabled, define when disabled}. Others are run-time.
-const std::map<std::string, std::pair<const char*, const char*>> kDefines = {
+const PermutationTable kDefines = {
     {"SPOT", {nullptr, "LIGHTS_NO_SPOT"}},
     {"COOKIE", {nullptr, "LIGHTS_NO_COOKIE"}},
     {"SHADOW_MAPS_CUBE", {nullptr, "SHADOW_NO_CUBE"}},
@@ -233,11 +234,7 @@ public:
                                              std::string(maps2D && pays ? " (adaptive measured faster from 512^2)" : "")});
         render::planCulledLights(scene, p);
         forcePlan(p, settings.at("force_features") != 0.0, {"SPOT", "COOKIE", "SHADOW_MAPS_CUBE", "SHADOW_MAPS_2D"});
-        for (FeaturePlan& f : p.features) {
-            const auto it = kDefines.find(f.feature);
-            const char* define = it == kDefines.end() ? nullptr : (f.enabled ? it->second.first : it->second.second);
-            if (define) f.why += std::string(f.enabled ? " (compiled in: " : " (compiled out: ") + define + ")";
-        }
+        annotatePermutations(p, kDefines);
         return p;
     }
 
@@ -344,16 +341,8 @@ private:
     }
 
     const gl::Program& volumeProgram(const Plan& plan) {
-        gl::ShaderDefines defines;
         std::string key;
-        for (const FeaturePlan& f : plan.features) {
-            const auto it = kDefines.find(f.feature);
-            if (it == kDefines.end()) continue;
-            const char* define = f.enabled ? it->second.first : it->second.second;
-            if (!define) continue;
-            defines.push_back({define, "1"});
-            key += std::string(define) + ";";
-        }
+        const gl::ShaderDefines defines = permutationDefines(plan, kDefines, &key);
         mDefines = defines;
         if (key != mProgramKey || !mProgram) {
             mProgram = gl::Program::compile({.stages = {"polyvol/volume.vert", "polyvol/volume.frag"},
