@@ -1,5 +1,7 @@
 #include "render/scene_view.h"
 
+#include "gl/stage_clock.h"
+
 #include <algorithm>
 
 #include "render/intermediates.h"
@@ -82,6 +84,23 @@ Image SceneViewPasses::compose(const scene::Scene& scene, const gl::Texture& air
     out.push_back(textureIntermediate(prefix + ".final", "Final", "surface * exp(-sigma_t d) + L_air", "radiance",
                                       ViewKind::Color, 0.0f, 1.0f, mFinal));
     return readRgb(mFinal);
+}
+
+bool SceneViewPasses::runSharedStages(const FrameInput& input, int stop, const std::vector<StageInfo>& stages,
+                                      const std::string& prefix, FrameOutput& out) {
+    gl::StageClock clock;
+    // The scene upload is counted with the shadow maps: it is part of the technique's cost.
+    clock.begin();
+    buildShadows(*input.scene, input.settings, out.intermediates, prefix);
+    out.timing.stages.push_back({stages[0].id, clock.endMilliseconds()});
+    out.lastStageRun = 0;
+    if (stop == 0) return false;
+
+    clock.begin();
+    renderSurface(*input.scene, input.width, input.height, out.intermediates, prefix);
+    out.timing.stages.push_back({stages[1].id, clock.endMilliseconds()});
+    out.lastStageRun = 1;
+    return stop != 1;
 }
 
 }  // namespace viz::render

@@ -45,6 +45,12 @@ public:
     Image compose(const scene::Scene& scene, const gl::Texture& airlight, std::vector<Intermediate>& out,
                   const std::string& prefix);
 
+    // The two stages every GPU technique starts with, at stage indices 0 (shadow maps, settings
+    // `shadow_map` and `area_samples`) and 1 (camera view), each timed with the StageClock and recorded as
+    // the last stage run. Returns false when the run stops after one of them (`stop`: the last stage to run).
+    bool runSharedStages(const FrameInput& input, int stop, const std::vector<StageInfo>& stages,
+                         const std::string& prefix, FrameOutput& out);
+
     const GpuScene& gpuScene() const { return *mGpuScene; }
     const GpuLights& lights() const { return *mLights; }
     const ShadowMaps& shadows() const { return *mShadows; }

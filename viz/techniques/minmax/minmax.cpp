@@ -294,17 +294,8 @@ public:
         const int stop = input.stopAfterStage < 0 ? kComposeIndex : input.stopAfterStage;
         gl::StageClock clock;
 
-        clock.begin();
-        mView.buildShadows(scene, s, out.intermediates, "minmax");
-        out.timing.stages.push_back({mStages[kShadowMapsIndex].id, clock.endMilliseconds()});
-        out.lastStageRun = kShadowMapsIndex;
-        if (stop == kShadowMapsIndex) return out;
-
-        clock.begin();
-        mView.renderSurface(scene, input.width, input.height, out.intermediates, "minmax");
-        out.timing.stages.push_back({mStages[kSurfaceIndex].id, clock.endMilliseconds()});
-        out.lastStageRun = kSurfaceIndex;
-        if (stop == kSurfaceIndex) return out;
+        // ---- shadow maps and camera view ----
+        if (!mView.runSharedStages(input, stop, mStages, "minmax", out)) return out;
 
         // The plan decides (sigma_s = 0 skips the epipolar stages unless force_features=1 runs them).
         const auto runs = [&](int stage) { return out.plan.stages[std::size_t(stage)].runs; };

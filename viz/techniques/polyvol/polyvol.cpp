@@ -247,17 +247,8 @@ public:
         const int stop = input.stopAfterStage < 0 ? kComposeIndex : input.stopAfterStage;
         gl::StageClock clock;
 
-        clock.begin();
-        mView.buildShadows(scene, s, out.intermediates, "polyvol");
-        out.timing.stages.push_back({mStages[kShadowMapsIndex].id, clock.endMilliseconds()});
-        out.lastStageRun = kShadowMapsIndex;
-        if (stop == kShadowMapsIndex) return out;
-
-        clock.begin();
-        mView.renderSurface(scene, input.width, input.height, out.intermediates, "polyvol");
-        out.timing.stages.push_back({mStages[kSurfaceIndex].id, clock.endMilliseconds()});
-        out.lastStageRun = kSurfaceIndex;
-        if (stop == kSurfaceIndex) return out;
+        // ---- shadow maps and camera view ----
+        if (!mView.runSharedStages(input, stop, mStages, "polyvol", out)) return out;
 
         clock.begin();
         allocateTargets(input.width, input.height);

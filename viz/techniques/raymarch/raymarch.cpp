@@ -171,19 +171,8 @@ public:
         const int stop = input.stopAfterStage < 0 ? kComposeIndex : input.stopAfterStage;
         gl::StageClock clock;
 
-        // ---- shadow maps (the scene upload is counted here: it is part of the technique's cost) ----
-        clock.begin();
-        mView.buildShadows(scene, s, out.intermediates, "raymarch");
-        out.timing.stages.push_back({mStages[kShadowMapsIndex].id, clock.endMilliseconds()});
-        out.lastStageRun = kShadowMapsIndex;
-        if (stop == kShadowMapsIndex) return out;
-
-        // ---- camera view ----
-        clock.begin();
-        mView.renderSurface(scene, input.width, input.height, out.intermediates, "raymarch");
-        out.timing.stages.push_back({mStages[kSurfaceIndex].id, clock.endMilliseconds()});
-        out.lastStageRun = kSurfaceIndex;
-        if (stop == kSurfaceIndex) return out;
+        // ---- shadow maps and camera view ----
+        if (!mView.runSharedStages(input, stop, mStages, "raymarch", out)) return out;
 
         // ---- ray march ----
         clock.begin();

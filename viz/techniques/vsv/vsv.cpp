@@ -206,19 +206,8 @@ public:
         const GridSize size = gridSize(s);
         gl::StageClock clock;
 
-        // ---- shadow maps ----
-        clock.begin();
-        mView.buildShadows(scene, s, out.intermediates, "vsv");
-        out.timing.stages.push_back({mStages[kShadowMapsIndex].id, clock.endMilliseconds()});
-        out.lastStageRun = kShadowMapsIndex;
-        if (stop == kShadowMapsIndex) return out;
-
-        // ---- camera view ----
-        clock.begin();
-        mView.renderSurface(scene, input.width, input.height, out.intermediates, "vsv");
-        out.timing.stages.push_back({mStages[kSurfaceIndex].id, clock.endMilliseconds()});
-        out.lastStageRun = kSurfaceIndex;
-        if (stop == kSurfaceIndex) return out;
+        // ---- shadow maps and camera view ----
+        if (!mView.runSharedStages(input, stop, mStages, "vsv", out)) return out;
 
         // One grid per light; the stages below run light after light and time the sum. The intermediates
         // show the light chosen by `light`.
