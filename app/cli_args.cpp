@@ -4,6 +4,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <vector>
 
 #include "core/error.h"
 #include "techniques/registry.h"
@@ -51,6 +52,30 @@ void parseSetting(const std::string& text, viz::Settings& into) {
         throw InputError("--set expects name=value, got '" + text + "'");
     const std::string name = text.substr(0, eq);
     const std::string value = text.substr(eq + 1);
+    // AxBxC: one number per axis, for a parameter that declares its per-axis components.
+    if (value.find('x') != std::string::npos && !value.empty() && std::isdigit(static_cast<unsigned char>(value[0]))) {
+        std::vector<std::string> parts;
+        for (std::size_t start = 0;;) {
+            const std::size_t x = value.find('x', start);
+            parts.push_back(value.substr(start, x == std::string::npos ? std::string::npos : x - start));
+            if (x == std::string::npos) break;
+            start = x + 1;
+        }
+        for (const std::string& id : viz::techniqueIds()) {
+            const auto technique = viz::makeTechnique(id);
+            for (const viz::ParamInfo& p : technique->params()) {
+                if (p.name != name || p.components.empty()) continue;
+                if (p.components.size() != parts.size())
+                    throw InputError("--set " + name + ": '" + value + "' needs " + std::to_string(p.components.size()) +
+                                     " numbers separated by x");
+                for (std::size_t i = 0; i < parts.size(); ++i)
+                    into[p.components[i]] = parseNumber(parts[i], "--set " + name);
+                return;
+            }
+        }
+        throw InputError("--set " + name + ": '" + value + "' is not a number (no technique takes " + name +
+                         " per axis)");
+    }
     // A word is a named value of a parameter of that name (ParamInfo::choices) in any technique.
     if (!value.empty() && std::isalpha(static_cast<unsigned char>(value[0]))) {
         std::string known;

@@ -639,23 +639,15 @@ private:
 
     // The current stage's sub-step count and position (1-based; the count when it runs them all).
     std::pair<int, int> substepState() {
-        const viz::StageInfo& st = technique().stages()[std::size_t(stageShown())];
-        if (st.substepParam.empty()) return {0, 0};
-        int count = st.substeps;
-        if (!st.substepCountParam.empty() && mSettings.count(st.substepCountParam))
-            count = int(mSettings.at(st.substepCountParam));
-        const int at = mSettings.count(st.substepParam) ? int(mSettings.at(st.substepParam)) : 0;
-        return {at <= 0 || at > count ? count : at, count};
+        const viz::SubstepPosition pos = viz::substepPosition(technique(), stageShown(), mSettings);
+        return {pos.at, pos.count};
     }
 
     // D / Shift+D: one sub-step more / fewer inside the current stage (planes, levels, passes, VPLs).
     void stepSubstep(int delta) {
-        const viz::StageInfo& st = technique().stages()[std::size_t(stageShown())];
         const auto [at, count] = substepState();
         if (count <= 0) return;
-        const int next = std::clamp(at + delta, 1, count);
-        mSettings[st.substepParam] = next == count ? 0.0 : double(next);  // 0: all of them
-        mDirty = true;
+        if (viz::setSubstep(technique(), stageShown(), mSettings, at + delta)) mDirty = true;
     }
 
     // ---- ray inspector ----

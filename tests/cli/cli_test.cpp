@@ -131,6 +131,23 @@ TEST_F(CliTest, RenderWritesFiniteExrOfTheRightSize) {
     }
 }
 
+// `voxels=AxBxC` sets vsv's per-axis parameters in order: the same image as setting each, and a
+// different one from the cube `voxels=64` (so the axes really took effect).
+TEST_F(CliTest, PerAxisSettingSetsEachComponent) {
+    const std::string render = "render --scene grate --technique vsv --size 40x30 --layer airlight --out ";
+    const fs::path axes = path("axes.exr"), each = path("each.exr"), cube = path("cube.exr");
+    RunResult r = run(render + axes.string() + " --set voxels=64x32x96");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    r = run(render + each.string() + " --set voxels_alpha=64 --set voxels_theta=32 --set voxels_phi=96");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    r = run(render + cube.string() + " --set voxels=64");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const viz::Image a = viz::readImage(axes.string()), b = viz::readImage(each.string()),
+                     c = viz::readImage(cube.string());
+    EXPECT_EQ(a.pixels, b.pixels);
+    EXPECT_NE(a.pixels, c.pixels);
+}
+
 TEST_F(CliTest, RenderWritesPngAndIntermediates) {
     const RunResult r = run("render --scene grate --technique raymarch --size 32x24 --layer raymarch.distance --out " +
                             path("d.png").string());
@@ -288,6 +305,12 @@ TEST_F(CliTest, BadInputIsAOneLineErrorWithExitCode2AndNoOutput) {
                                               out, "bogus"});
     cases.push_back({"parameter out of range", "render --scene grate --technique raymarch --set samples=0 --size 8x8 --out " +
                                                    out, "samples"});
+    cases.push_back({"per-axis value with two axes",
+                     "render --scene grate --technique vsv --set voxels=64x32 --size 8x8 --out " + out, "3 numbers"});
+    cases.push_back({"per-axis value for a one-number parameter",
+                     "render --scene grate --technique raymarch --set samples=4x4x4 --size 8x8 --out " + out, "samples"});
+    cases.push_back({"per-axis value for a technique without those axes",
+                     "render --scene grate --technique ivsv --set voxels=64x32x96 --size 8x8 --out " + out, "voxels_alpha"});
     cases.push_back({"unknown scene", "render --scene nowhere --technique raymarch --size 8x8 --out " + out, "nowhere"});
     cases.push_back({"bad output type", "render --scene grate --technique raymarch --size 8x8 --out " +
                                             path("x.jpg").string(), "x.jpg"});

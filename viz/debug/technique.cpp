@@ -61,6 +61,12 @@ ParamInfo forceFeaturesParam() {
             0, 0, 1, true};
 }
 
+bool featureEnabled(const Plan& plan, const std::string& name) {
+    for (const FeaturePlan& f : plan.features)
+        if (f.feature == name) return f.enabled;
+    return false;
+}
+
 void forcePlan(Plan& plan, bool force, const std::vector<std::string>& scenePrunedFeatures) {
     if (!force) return;
     for (StagePlan& s : plan.stages)
@@ -74,6 +80,45 @@ void forcePlan(Plan& plan, bool force, const std::vector<std::string>& scenePrun
             f.enabled = true;
             f.why = "forced on (force_features=1); the plan would leave it out: " + f.why;
         }
+}
+
+std::vector<double> Technique::substepValues(int stage, const Settings& settings) const {
+    const StageInfo& st = stages().at(std::size_t(stage));
+    if (st.substepParam.empty()) return {};
+    int count = st.substeps;
+    if (!st.substepCountParam.empty()) {
+        const auto it = settings.find(st.substepCountParam);
+        if (it != settings.end()) count = int(it->second);
+    }
+    if (count < 1) return {};
+    double all = 0.0;
+    for (const ParamInfo& p : params())
+        if (p.name == st.substepParam) all = p.defaultValue;
+    std::vector<double> values;
+    for (int k = 1; k < count; ++k) values.push_back(double(k));
+    values.push_back(all);
+    return values;
+}
+
+SubstepPosition substepPosition(const Technique& technique, int stage, const Settings& settings) {
+    if (stage < 0 || stage >= int(technique.stages().size())) return {};
+    const Settings complete = completeSettings(technique, settings);
+    const std::vector<double> values = technique.substepValues(stage, complete);
+    if (values.empty()) return {};
+    const double current = complete.at(technique.stages()[std::size_t(stage)].substepParam);
+    const int count = int(values.size());
+    for (int k = 0; k < count; ++k)
+        if (values[std::size_t(k)] == current) return {k + 1, count};
+    return {count, count};  // a value outside the steps (e.g. set by hand): treat as the whole stage
+}
+
+bool setSubstep(const Technique& technique, int stage, Settings& settings, int k) {
+    if (stage < 0 || stage >= int(technique.stages().size())) return false;
+    const std::vector<double> values = technique.substepValues(stage, completeSettings(technique, settings));
+    if (values.empty()) return false;
+    k = std::clamp(k, 1, int(values.size()));
+    settings[technique.stages()[std::size_t(stage)].substepParam] = values[std::size_t(k - 1)];
+    return true;
 }
 
 }  // namespace viz

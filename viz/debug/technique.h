@@ -30,6 +30,9 @@ struct ParamInfo {
     bool integer = true;
     // Named values: choices[i] stands for the value i (e.g. weighting=physical); empty for plain numbers.
     std::vector<std::string> choices{};
+    // A per-axis form: `name=AxBxC` sets these parameters in order (e.g. voxels -> voxels_alpha,
+    // voxels_theta, voxels_phi); empty when the parameter takes one number only.
+    std::vector<std::string> components{};
 };
 
 struct StageInfo {
@@ -134,7 +137,25 @@ public:
         (void)caseClass;
         return std::nullopt;
     }
+    // Stepping inside stage `stage` (its StageInfo::substepParam): the parameter's value for each
+    // sub-step in order, the last one running the stage whole. Empty: no sub-steps with these (complete)
+    // settings. The default gives 1 .. count - 1 and then the parameter's default ("all"), count being
+    // the value of StageInfo::substepCountParam or else StageInfo::substeps. Techniques whose count or
+    // order depends on the scene-independent settings in another way (levels from a map size, passes
+    // from a grid size, coarse to fine) override it.
+    virtual std::vector<double> substepValues(int stage, const Settings& settings) const;
 };
+
+// Where stepping inside a stage stands: sub-step `at` of `count` (1-based; `count` when the stage runs
+// whole). {0, 0}: the stage has no sub-steps.
+struct SubstepPosition {
+    int at = 0;
+    int count = 0;
+};
+SubstepPosition substepPosition(const Technique& technique, int stage, const Settings& settings);
+// Sets the stage's sub-step parameter in `settings` for sub-step `k` (clamped to 1 .. count; count runs
+// the stage whole). Returns false (and changes nothing) when the stage has no sub-steps.
+bool setSubstep(const Technique& technique, int stage, Settings& settings, int k);
 
 // Fills in defaults and rejects unknown names and out-of-range values with an InputError.
 Settings completeSettings(const Technique& technique, const Settings& given);
@@ -146,5 +167,8 @@ ParamInfo forceFeaturesParam();
 // With force = true, turns every skipped stage on and every listed scene-pruned feature on, keeping
 // the reason it would have been skipped in `why`. Features chosen by settings are not touched.
 void forcePlan(Plan& plan, bool force, const std::vector<std::string>& scenePrunedFeatures);
+
+// Whether the plan lists feature `name` as enabled (false when it does not list it).
+bool featureEnabled(const Plan& plan, const std::string& name);
 
 }  // namespace viz

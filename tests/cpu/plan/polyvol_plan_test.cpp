@@ -92,6 +92,7 @@ TEST(PolyvolPlan, VolumeStageAnnouncesItsTriangleCount) {
 TEST(PolyvolPlan, SettingsChooseTheTableAndTheTessellation) {
     EXPECT_TRUE(feature(polyvolPlan("grate", {{"airlight", 1}}), "AIRLIGHT_LUT").enabled);
     EXPECT_TRUE(feature(polyvolPlan("colonnade", {{"tessellation", 1}}), "ADAPTIVE").enabled);
+    EXPECT_TRUE(feature(polyvolPlan("colonnade", {{"tessellation", 1}, {"shadow_map", 512}}), "ADAPTIVE").enabled);
     const FeaturePlan cubes = feature(polyvolPlan("tv-room", {{"tessellation", 1}}), "ADAPTIVE");
     EXPECT_FALSE(cubes.enabled);
     EXPECT_TRUE(mentions(cubes, "cubes stay static")) << cubes.why;
@@ -102,6 +103,22 @@ TEST(PolyvolPlan, SettingsChooseTheTableAndTheTessellation) {
     EXPECT_TRUE(p.stages[2].why.find("sigma_s = 0") != std::string::npos);
     // The crack detector has a constant integrand: it draws even in a clear medium.
     EXPECT_TRUE(polyvolPlan(clear, {{"crack_check", 1}}).stages[2].runs);
+}
+
+// Below 512^2 adaptive tessellation did not pay off (forest, README benchmark): the plan leaves it out
+// and says why, unless force_features keeps it.
+TEST(PolyvolPlan, AdaptiveTessellationIsLeftOutBelowItsBreakEvenSize) {
+    for (const std::string name : {"colonnade", "forest", "grate"}) {
+        const FeaturePlan small = feature(polyvolPlan(name, {{"tessellation", 1}, {"shadow_map", 256}}), "ADAPTIVE");
+        EXPECT_FALSE(small.enabled) << name;
+        EXPECT_TRUE(mentions(small, "did not pay off")) << small.why;
+        const FeaturePlan forced =
+            feature(polyvolPlan(name, {{"tessellation", 1}, {"shadow_map", 256}, {"force_features", 1}}), "ADAPTIVE");
+        EXPECT_TRUE(forced.enabled) << name;
+        EXPECT_TRUE(mentions(forced, "forced on")) << forced.why;
+    }
+    // Static stays static whatever the size, forced or not.
+    EXPECT_FALSE(feature(polyvolPlan("forest", {{"shadow_map", 2048}, {"force_features", 1}}), "ADAPTIVE").enabled);
 }
 
 // A light whose lit volume misses the view volume is culled (render::planCulledLights): it is listed,

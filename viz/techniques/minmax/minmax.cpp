@@ -40,6 +40,9 @@ constexpr const char* kPyramid = "minmax.pyramid";
 constexpr const char* kTrace = "minmax.trace";
 constexpr const char* kAirlight = "minmax.airlight";
 constexpr const char* kVisited = "minmax.visited";
+// Stepping the picked pixel's walk node by node: sub-steps 1 .. 63 show its first k nodes, the last the
+// whole walk (trace_steps = 0); walks are a few dozen nodes on the built-in scenes.
+constexpr int kTraceSubsteps = 64;
 constexpr const char* kNearMask = "minmax.near_epipole";
 constexpr const char* kRayCoords = "minmax.ray_coords";
 constexpr const char* kSingularValues = "minmax.singular_values";
@@ -125,13 +128,28 @@ public:
              {"slices", "slice_oversampling", "columns", "integrand", "rank", "texture_columns"},
              {kRectified, kRectifiedView, kSingularValues, kBasis, kPrefixSums, kReconstructionError}, 1},
             {kStageMipmap, "Min-max mipmap", "per row of S: a 1D min-max tree, one pass per level",
-             {"mip_levels"}, {kTree, kPyramid}, 1},
+             {"mip_levels"}, {kTree, kPyramid}, 1, "mip_levels"},
             {kStageTraverse, "Traverse", "per pixel: walk the slice's tree, integrate the lit segments",
              {"integrand", "rank", "traversal", "spot_pieces", "epipole_radius", "march_samples", "pick_x", "pick_y",
               "trace_steps", "force_features"},
-             {kAirlight, kVisited, kNearMask, kRayCoords, kTrace}, 1},
+             {kAirlight, kVisited, kNearMask, kRayCoords, kTrace}, kTraceSubsteps, "trace_steps"},
             render::SceneViewPasses::composeStage("minmax"),
         };
+    }
+
+    // Stepping the mipmap level by level: mip_levels = 1 .. log2(columns) - 1, then 0 (all levels);
+    // the traversal default (trace_steps 1 .. kTraceSubsteps - 1, then 0 = the whole walk) comes from
+    // StageInfo.
+    std::vector<double> substepValues(int stage, const Settings& s) const override {
+        if (stage != kMipmapIndex) return Technique::substepValues(stage, s);
+        const int wanted = int(s.at("columns")) > 0 ? int(s.at("columns")) : int(s.at("shadow_map"));
+        const int columns =
+            std::min(int(std::bit_ceil(unsigned(std::clamp(wanted, 16, minmax::kMaxColumns)))), minmax::kMaxColumns);
+        const int levels = std::bit_width(unsigned(columns)) - 1;
+        std::vector<double> values;
+        for (int k = 1; k < levels; ++k) values.push_back(double(k));
+        values.push_back(0.0);
+        return values;
     }
 
     std::string id() const override { return "minmax"; }

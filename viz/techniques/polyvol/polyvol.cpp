@@ -1,6 +1,7 @@
 #include "techniques/polyvol/polyvol.h"
 
 #include <algorithm>
+#include <bit>
 #include <chrono>
 #include <cmath>
 #include <map>
@@ -62,6 +63,10 @@ const PermutationTable kDefines = {
     {"AIRLIGHT_LUT", {"AIRLIGHT_LUT", nullptr}},
 };
 
+// The smallest shadow map at which adaptive tessellation paid off on every built-in scene measured
+// (README, benchmark: forest broke even between 256^2 and 512^2).
+constexpr int kAdaptivePaysFrom = 512;
+
 class PolyvolTechnique final : public Technique {
 public:
     PolyvolTechnique() {
@@ -96,9 +101,25 @@ public:
              {"tessellation", "airlight", "threshold", "spot_pieces", "crack_check", "draw_triangles", "origin",
               "wireframe", "stop_level", "cookie_mask", "force_features"},
              {kEdgeMap, kTessLevels, kMesh, kCrossings, kPositive, kNegative, kTotal, kCracks, kLut, kLutError},
-             1},
+             1, "stop_level"},
             render::SceneViewPasses::composeStage("polyvol"),
         };
+    }
+
+    // Stepping the adaptive refinement coarse to fine: stop_level = the coarse grid's level (16^2 quads),
+    // then one level finer per step, then -1 (refined fully). No sub-steps with static tessellation or
+    // when the plan leaves adaptive out below its break-even size.
+    std::vector<double> substepValues(int stage, const Settings& s) const override {
+        if (stage != kVolumeIndex) return Technique::substepValues(stage, s);
+        const int n = int(s.at("shadow_map"));
+        const bool adaptive =
+            s.at("tessellation") != 0.0 && (n >= kAdaptivePaysFrom || s.at("force_features") != 0.0);
+        if (!adaptive || n < 16 || !std::has_single_bit(unsigned(n))) return {};
+        const int coarse = std::countr_zero(unsigned(n)) - polyvol::AdaptiveTessellation::kCoarseSteps;
+        std::vector<double> values;
+        for (int level = coarse; level >= 1; --level) values.push_back(double(level));
+        values.push_back(-1.0);
+        return values;
     }
 
     std::string id() const override { return "polyvol"; }
@@ -220,18 +241,31 @@ public:
                                             " virtual point lights, each a cube light volume (cosine lobe over "
                                             "equal-angle pieces)"
                                       : "no area light in the scene"});
-        const bool adaptive = settings.at("tessellation") != 0.0;
-        // Measured (README, benchmark): adaptive paid off from 256^2 on colonnade and from 512^2 on forest.
-        const bool pays = int(settings.at("shadow_map")) >= 512;
-        const std::string payoff = pays ? "; measured to pay off at this size"
-                                        : "; below 512^2 it did not pay off on forest (measured), static may be faster";
-        p.features.push_back({"ADAPTIVE", adaptive && maps2D,
-                              adaptive ? (maps2D ? "tessellation=adaptive: edge map, flag hierarchy, refinement from 16^2 "
-                                                   "coarse quads, 16 patterns, indirect draw (2D maps; cubes stay static)" +
-                                                       payoff
-                                                 : "tessellation=adaptive but no 2D map: cubes stay static")
-                                       : "tessellation=static: one vertex per texel" +
-                                             std::string(maps2D && pays ? " (adaptive measured faster from 512^2)" : "")});
+        // Adaptive tessellation is left out below the shadow-map size where it stops paying off
+        // (measured, README "Benchmark: static vs adaptive": from 256^2 on colonnade but only from 512^2
+        // on forest, where the edge map and refinement passes cost more than the triangles they save).
+        // force_features=1 keeps it on at any size, so its steps can be shown on small maps.
+        const bool adaptiveAsked = settings.at("tessellation") != 0.0;
+        const bool forced = settings.at("force_features") != 0.0;
+        const int mapSize = int(settings.at("shadow_map"));
+        const bool pays = mapSize >= kAdaptivePaysFrom;
+        const bool adaptive = adaptiveAsked && maps2D && (pays || forced);
+        std::string why;
+        if (!adaptiveAsked)
+            why = "tessellation=static: one vertex per texel" +
+                  std::string(maps2D && pays ? " (adaptive measured faster from 512^2)" : "");
+        else if (!maps2D)
+            why = "tessellation=adaptive but no 2D map: cubes stay static";
+        else if (!pays && !forced)
+            why = "tessellation=adaptive left out: static tessellation at " + std::to_string(mapSize) + "^2 (below " +
+                  std::to_string(kAdaptivePaysFrom) +
+                  "^2 adaptive did not pay off: forest 256^2 took 1 061 ms adaptive vs 814 ms static); "
+                  "force_features=1 keeps it";
+        else
+            why = "tessellation=adaptive: edge map, flag hierarchy, refinement from 16^2 coarse quads, 16 patterns, "
+                  "indirect draw (2D maps; cubes stay static)" +
+                  std::string(pays ? "; measured to pay off at this size" : "; forced on below its break-even size");
+        p.features.push_back({"ADAPTIVE", adaptive, why});
         render::planCulledLights(scene, p);
         forcePlan(p, settings.at("force_features") != 0.0, {"SPOT", "COOKIE", "SHADOW_MAPS_CUBE", "SHADOW_MAPS_2D"});
         annotatePermutations(p, kDefines);
@@ -455,7 +489,7 @@ private:
         glBlendEquation(GL_FUNC_ADD);
         glBlendFunc(GL_ONE, GL_ONE);
         const std::int64_t limit = std::int64_t(s.at("draw_triangles"));
-        const bool adaptiveWanted = s.at("tessellation") != 0.0;
+        const bool adaptiveWanted = featureEnabled(plan, "ADAPTIVE");
         const int wire = int(s.at("wireframe"));
         mWireDrawn = false;
         if (wire) {

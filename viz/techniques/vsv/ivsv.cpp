@@ -164,13 +164,28 @@ public:
              "every VPL's shadow map resampled into its own epipolar grid tile (one pass, or one per VPL for naive)",
              {"voxels", "alpha_bias", "phi_bias", "pick_vpl", "pick_theta"}, {kVoxelSlice}, 1},
             {kStageScan, "Extrude (segmented scan)", "prefix OR along alpha restarting at every tile boundary",
-             {"scan_passes"}, {kScanSlice}, kMaxScanPasses},
+             {"scan_passes"}, {kScanSlice}, kMaxScanPasses, "scan_passes"},
             {kStageGather, "Gather", "per pixel: sum over VPLs of visibility x airlight (full, interleaved, quarter)",
              {"combine", "gather", "interp", "chunk_bits", "vpl_disc", "bilateral_sigma", "vpl_step", "pick_x", "pick_y",
               "force_features"},
-             {kColumn, kPerVpl, kInterleave, kAirlight, kVisibility}, 1},
+             {kColumn, kPerVpl, kInterleave, kAirlight, kVisibility}, 1, "vpl_step"},
             render::SceneViewPasses::composeStage("ivsv"),
         };
+    }
+
+    // Stepping: the segmented scan pass by pass (scan_passes = 0 before any pass, 1, ..., then -1 = all),
+    // and the gather VPL by VPL (vpl_step = 0 gathers VPL 0 only, 1 adds VPL 1, ..., then -1 = all).
+    std::vector<double> substepValues(int stage, const Settings& s) const override {
+        std::vector<double> values;
+        if (stage == kScanIndex) {
+            for (int k = 0; k < scanPassCount(int(s.at("voxels"))); ++k) values.push_back(double(k));
+        } else if (stage == kGatherIndex) {
+            for (int k = 0; k + 1 < int(s.at("vpls")); ++k) values.push_back(double(k));
+        } else {
+            return Technique::substepValues(stage, s);
+        }
+        values.push_back(-1.0);
+        return values;
     }
 
     std::string id() const override { return "ivsv"; }
@@ -718,11 +733,7 @@ private:
                         GL_TEXTURE_UPDATE_BARRIER_BIT);
     }
 
-    static bool otherLightsOn(const Plan& plan) {
-        for (const FeaturePlan& f : plan.features)
-            if (f.feature == "OTHER_LIGHTS_BY_VSV") return f.enabled;
-        return false;
-    }
+    static bool otherLightsOn(const Plan& plan) { return featureEnabled(plan, "OTHER_LIGHTS_BY_VSV"); }
 
     // The scene's other lights through an inner vsv (its defaults, this run's `voxels`), its L_air added
     // to mAirlight on the CPU (an upload per frame; the combination is not where the time goes).

@@ -87,12 +87,6 @@ std::vector<int> shadedLights(const scene::Scene& scene) {
     return out;
 }
 
-bool featureOn(const Plan& plan, const std::string& name) {
-    for (const FeaturePlan& f : plan.features)
-        if (f.feature == name) return f.enabled;
-    return false;
-}
-
 scene::Scene onlyAreaLights(const scene::Scene& scene) {
     scene::Scene out = scene;
     out.lights.clear();
@@ -113,7 +107,8 @@ class VsvTechnique final : public Technique {
 public:
     VsvTechnique() {
         mParams = {
-            {"voxels", "epipolar grid cells per axis (alpha, theta, phi); phi a multiple of 32", 128, 32, 1024, true},
+            {"voxels", "epipolar grid cells per axis (alpha, theta, phi), or AxBxC per axis; phi a multiple of 32",
+             128, 32, 1024, true, {}, {"voxels_alpha", "voxels_theta", "voxels_phi"}},
             {"voxels_alpha", "alpha cells (0: `voxels`)", 0, 0, 1024, true},
             {"voxels_theta", "theta cells (0: `voxels`)", 0, 0, 1024, true},
             {"voxels_phi", "phi bits (0: `voxels`; a multiple of 32)", 0, 0, 1024, true},
@@ -156,13 +151,24 @@ public:
              {kOccluder, kVoxelSlice}, 1},
             {kStageScan, "Extrude (scan)",
              "prefix OR along alpha in log2(alpha cells) ping-pong passes: occlusion extends away from the light",
-             {"scan_passes", "pick_theta"}, {kScanSlice}, kMaxScanPasses},
+             {"scan_passes", "pick_theta"}, {kScanSlice}, kMaxScanPasses, "scan_passes"},
             {kStageGather, "Gather",
              "per pixel: one texel per eye ray, its phi bits up to the fragment, combined with the airlight",
              {"combine", "interp", "epipole", "direct_bins", "direct_segments", "run_bins", "pick_x", "pick_y",
               "force_features"}, {kColumn, kAirlight, kVisibility}, 1},
             render::SceneViewPasses::composeStage("vsv"),
         };
+    }
+
+    // Stepping the scan pass by pass: scan_passes = 0 (the voxelized grid before any pass), 1, ...,
+    // then -1 (all log2(alpha cells) passes).
+    std::vector<double> substepValues(int stage, const Settings& s) const override {
+        if (stage != kScanIndex) return Technique::substepValues(stage, s);
+        const int alpha = s.at("voxels_alpha") > 0 ? int(s.at("voxels_alpha")) : int(s.at("voxels"));
+        std::vector<double> values;
+        for (int k = 0; k < scanPassCount(alpha); ++k) values.push_back(double(k));
+        values.push_back(-1.0);
+        return values;
     }
 
     std::string id() const override { return "vsv"; }
@@ -274,7 +280,7 @@ public:
                 for (std::size_t i = 0; i < lights.size(); ++i)
                     gather(program, scene, input, lights[i], grids[i], int(i));
             }
-            if (featureOn(out.plan, "AREA_LIGHTS_BY_IVSV")) addAreaLights(input);
+            if (featureEnabled(out.plan, "AREA_LIGHTS_BY_IVSV")) addAreaLights(input);
         }
         out.timing.stages.push_back({kStageGather, clock.endMilliseconds()});
         if (!lights.empty())
