@@ -9,6 +9,7 @@
 
 #include "cli_args.h"
 #include "commands.h"
+#include "compare_command.h"
 #include "lesson.h"
 #include "report_command.h"
 #include "core/error.h"
@@ -29,6 +30,7 @@ commands:
   plan            show which stages and features a technique runs for a scene, and why
   export-scene    write a scene as glTF:  airlight export-scene NAME out.gltf|out.glb
   report          error against run time of every technique on each scene (CSV, JSON, plots, HTML)
+  compare         error figures of one image against another:  airlight compare TEST.exr REFERENCE.exr
   lesson          a guided walkthrough: airlight lesson NAME --export DIR [--size WxH] renders every step
                   and writes DIR/index.html (lessons/NAME.md)
 
@@ -52,6 +54,7 @@ int main(int argc, char** argv) {
         if (command == "plan") return airlight::runPlan(args);
         if (command == "export-scene") return airlight::runExportScene(args);
         if (command == "gui") return airlight::runGuiCommand(args);
+        if (command == "compare") return airlight::runCompare(args);
         if (command == "lesson") {
             if (args.empty() || airlight::isHelpFlag(args.peek())) {
                 std::fputs("usage: airlight lesson NAME --export DIR [--size WxH]\n\nRenders every step of lessons/NAME.md "

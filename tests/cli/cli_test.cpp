@@ -16,6 +16,7 @@
 
 #include "cli/cli_fixture.h"
 #include "core/image_io.h"
+#include "report/error_metrics.h"
 
 namespace fs = std::filesystem;
 using viz::testing::CliTest;
@@ -146,6 +147,38 @@ TEST_F(CliTest, PerAxisSettingSetsEachComponent) {
                      c = viz::readImage(cube.string());
     EXPECT_EQ(a.pixels, b.pixels);
     EXPECT_NE(a.pixels, c.pixels);
+}
+
+// `compare` prints the report's figures: zero for an image against itself, the figures of
+// viz::report::compareImages for two renders; a size mismatch is a one-line error with no heat map.
+TEST_F(CliTest, CompareQuotesTheErrorOfOneImageAgainstAnother) {
+    const fs::path coarse = path("coarse.exr"), fine = path("fine.exr"), small = path("small.exr"),
+                   heat = path("heat.png");
+    const std::string render = "render --scene grate --technique raymarch --layer airlight ";
+    ASSERT_EQ(run(render + "--size 40x30 --set samples=8 --out " + coarse.string()).exitCode, 0);
+    ASSERT_EQ(run(render + "--size 40x30 --set samples=256 --out " + fine.string()).exitCode, 0);
+    ASSERT_EQ(run(render + "--size 20x15 --set samples=8 --out " + small.string()).exitCode, 0);
+
+    RunResult r = run("compare " + fine.string() + " " + fine.string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("relative L2 0 "), std::string::npos) << r.out;
+
+    r = run("compare " + coarse.string() + " " + fine.string() + " --heatmap " + heat.string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const viz::report::ErrorMetrics m =
+        viz::report::compareImages(viz::readImage(coarse.string()), viz::readImage(fine.string()));
+    ASSERT_GT(m.relativeL2, 0.0);
+    char expected[64];
+    std::snprintf(expected, sizeof expected, "relative L2 %.6g ", m.relativeL2);
+    EXPECT_NE(r.out.find(expected), std::string::npos) << r.out << " (expected " << expected << ")";
+    EXPECT_NE(r.out.find("NaN 0  Inf 0  negative 0"), std::string::npos) << r.out;
+    EXPECT_EQ(viz::readImage(heat.string()).width, 40);
+
+    const fs::path noHeat = path("noheat.png");
+    r = run("compare " + small.string() + " " + fine.string() + " --heatmap " + noHeat.string());
+    expectUserError(r, "20x15");
+    EXPECT_FALSE(fs::exists(noHeat));
+    expectUserError(run("compare " + fine.string()), "two images");
 }
 
 TEST_F(CliTest, RenderWritesPngAndIntermediates) {
