@@ -32,6 +32,7 @@
 #include "camera_controller.h"
 #include "cpu_worker.h"
 #include "pane_image.h"
+#include "ray_inspection.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/image_io.h"
@@ -421,6 +422,17 @@ public:
                                     {"technique", mProbeTechnique},
                                     {"technique_value", mProbeHasValue ? rgb(mProbeValue) : nlohmann::json(nullptr)},
                                     {"lights", lights}};
+            if (mHaveOutput && mProbeTechnique == technique().id()) {
+                const glm::ivec2 frame{mOptions.width, mOptions.height};
+                nlohmann::json readings = nlohmann::json::object();
+                for (const PixelReading& r : readingsAtPixel(mOutput, frame, {mProbe->x, mProbe->y})) {
+                    std::vector<double> values;
+                    for (int c = 0; c < r.channels; ++c) values.push_back(r.value[c]);
+                    readings[r.id] = values;
+                }
+                sidecar["inspector"]["readings"] = readings;
+                sidecar["inspector"]["ray_views"] = pickedRayViews(technique(), mOutput, frame);
+            }
         }
         std::filesystem::path json(path);
         json.replace_extension(".json");
@@ -668,6 +680,8 @@ private:
             return;
         }
         mProbeTechnique = technique().id();
+        // The technique's per-ray intermediates (a walk, a voxel column, per-VPL terms) follow the pixel.
+        if (pickPixel(technique(), mSettings, {x, y})) mDirty = true;
         const viz::Image& a = mOutput.airlight;
         mProbeHasValue = mHaveOutput && a.width == mOptions.width && a.height == mOptions.height;
         if (mProbeHasValue) mProbeValue = {a.at(x, y, 0), a.at(x, y, 1), a.at(x, y, 2)};
@@ -704,7 +718,32 @@ private:
             for (const auto& iv : p.lights[k].lit) band.spans.push_back({iv.a, iv.b});
             spec.bands.push_back(std::move(band));
         }
-        const Rect plotArea{{area.min.x, area.min.y + 2.0f * line + 4.0f * mScale}, area.max};
+        Rect plotArea{{area.min.x, area.min.y + 2.0f * line + 4.0f * mScale}, area.max};
+        // The technique's own view of the ray beside the plot: its per-pixel intermediates at this pixel
+        // and the per-ray views that follow the picked pixel.
+        if (mHaveOutput && technique().id() == mProbeTechnique && plotArea.size().x > 500.0f * mScale) {
+            const glm::ivec2 frame{mOptions.width, mOptions.height};
+            const Rect side{{plotArea.max.x - 0.42f * plotArea.size().x, plotArea.min.y}, plotArea.max};
+            plotArea.max.x = side.min.x - kPad * mScale;
+            float y = side.min.y;
+            const std::vector<std::string> perRay = pickedRayViews(technique(), mOutput, frame);
+            std::string title = mProbeTechnique + " at this pixel";
+            if (!perRay.empty()) {
+                title += " (its ray in views:";
+                for (const std::string& id : perRay) title += " " + id;
+                title += ")";
+            }
+            dl.textClipped({side.min.x, y}, title + ":", kAccent, side.max.x);
+            y += line;
+            for (const PixelReading& r : readingsAtPixel(mOutput, frame, {p.x, p.y})) {
+                if (y + line > side.max.y) break;
+                std::string text = r.label + ":";
+                for (int c = 0; c < std::min(r.channels, 3); ++c) text += format(" %.4g", r.value[c]);
+                if (!r.units.empty()) text += " " + r.units;
+                dl.textClipped({side.min.x, y}, text, kText, side.max.x);
+                y += line;
+            }
+        }
         if (plotArea.size().y > 4.0f * line) viz::plot::drawPlot(dl, plotArea, spec);
     }
 

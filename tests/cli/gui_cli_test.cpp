@@ -155,6 +155,32 @@ TEST_F(GuiCli, TheRayInspectorShowsTheValuesAirlightRenderGivesAtThatPixel) {
     EXPECT_FALSE(in.at("lights")[0].at("lit").empty());
 }
 
+// The inspector shows the technique's own view of the ray: its per-pixel intermediates at the pixel
+// (vsv: visibility fraction, L_air) and its per-ray views, which follow the inspected pixel (pick_x/y).
+TEST_F(GuiCli, TheRayInspectorShowsTheTechniquesOwnViewOfThePixel) {
+    const fs::path script = writeText("inspect_vsv.txt", "hover final 0.3 0.6\nkey I\nframes 2\n");
+    const RunResult r = run("gui --scene grate --technique vsv --size 40x30 --script " + script.string() +
+                            " --screenshot " + path("inspect_vsv.png").string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const nlohmann::json j = nlohmann::json::parse(readFile(path("inspect_vsv.json")));
+    const auto& in = j.at("inspector");
+    const int x = in.at("pixel")[0].get<int>(), y = in.at("pixel")[1].get<int>();
+    EXPECT_EQ(j.at("settings").at("pick_x").get<int>(), x);
+    EXPECT_EQ(j.at("settings").at("pick_y").get<int>(), y);
+    ASSERT_TRUE(in.contains("readings"));
+    const auto& readings = in.at("readings");
+    ASSERT_TRUE(readings.contains("vsv.airlight")) << readings.dump();
+    ASSERT_TRUE(readings.contains("vsv.visibility")) << readings.dump();
+    for (int c = 0; c < 3; ++c)
+        EXPECT_EQ(readings.at("vsv.airlight")[std::size_t(c)].get<double>(),
+                  in.at("technique_value")[std::size_t(c)].get<double>());
+    const double visible = readings.at("vsv.visibility")[0].get<double>();
+    EXPECT_GE(visible, 0.0);
+    EXPECT_LE(visible, 1.0);
+    const auto& views = in.at("ray_views");
+    EXPECT_NE(std::find(views.begin(), views.end(), "vsv.column"), views.end()) << views.dump();
+}
+
 TEST_F(GuiCli, SteppingStopsAtAStageAndInsideItAtASubstep) {
     // Back two stages from the complete run (slices: compose, resolve -> planes), then two planes fewer.
     const fs::path script = writeText("step.txt", "key Shift+S\nkey Shift+S\nframes 1\nkey Shift+D\nkey Shift+D\nframes 1\n");

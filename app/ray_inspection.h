@@ -1,0 +1,37 @@
+// The technique's own view of one camera ray, for the window's ray inspector: the value at the inspected
+// pixel of every intermediate that has one texel per pixel (crossing counts, visited tree nodes, lit
+// fraction, visibility, epipolar coordinates, ...), and the picked-pixel parameters that make the
+// per-ray intermediates (minmax's walk, vsv's voxel column, ivsv's per-VPL terms) follow that pixel.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "debug/technique.h"
+
+namespace airlight {
+
+struct PixelReading {
+    std::string id, label, units;
+    int channels = 0;
+    glm::vec4 value{0.0f};
+};
+
+// Values at `pixel` (x right, y down from the top row) of every intermediate in `out` whose size is the
+// frame's: CPU images and 2D float / normalised GL textures (rows bottom-up, as GL renders them). Other
+// intermediates (integer grids, meshes, maps in light space) are not per pixel and are left out.
+std::vector<PixelReading> readingsAtPixel(const viz::FrameOutput& out, glm::ivec2 frame, glm::ivec2 pixel);
+
+// Sets the technique's `pick_x` / `pick_y` to `pixel`; returns true when the technique has them and a
+// value changed (the technique must run again for its per-ray intermediates).
+bool pickPixel(const viz::Technique& technique, viz::Settings& settings, glm::ivec2 pixel);
+
+// The ids of the intermediates in `out` that show the picked pixel's ray: those of a stage that reads
+// pick_x whose size is not the frame's (a walk, a voxel column, per-VPL terms). The inspector names them
+// so the user can open them in a view.
+std::vector<std::string> pickedRayViews(const viz::Technique& technique, const viz::FrameOutput& out,
+                                        glm::ivec2 frame);
+
+}  // namespace airlight
