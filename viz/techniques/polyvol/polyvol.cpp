@@ -23,6 +23,7 @@
 #include "render/light_culling.h"
 #include "render/scene_view.h"
 #include "scene/camera.h"
+#include "render/mesh_view.h"
 #include "techniques/polyvol/adaptive_tessellation.h"
 #include "techniques/polyvol/airlight_lut.h"
 #include "techniques/polyvol/crack_check.h"
@@ -84,8 +85,12 @@ public:
              true},
             {"origin", "eye: each crossing adds +-L(0, x); surface: -+L(x, d), plus c L(0, d) once per pixel "
              "(crossings clamped to d add exactly 0)", 0, 0, 1, true, {"eye", "surface"}},
-            {"wireframe", "1: also draw the volume mesh as a wireframe (polyvol.mesh): 1 from the camera, 2 from the "
-             "first 2D light", 0, 0, 2, true},
+            {"wireframe", "also draw the volume mesh as a wireframe (polyvol.mesh): 1 from the camera, 2 from the "
+             "first 2D light, 3 from an orbit camera of its own (mesh_yaw, mesh_pitch, mesh_zoom) with the scene, "
+             "the camera frustum and the lights", 0, 0, 3, true},
+            {"mesh_yaw", "wireframe=3: orbit camera's angle about the vertical (degrees)", 35, -360, 360, false},
+            {"mesh_pitch", "wireframe=3: orbit camera's angle above the horizon (degrees)", 25, -89, 89, false},
+            {"mesh_zoom", "wireframe=3: orbit camera's zoom (1 fits the scene and the camera)", 1, 0.05, 50, false},
             {"stop_level", "adaptive stepping: quads of this level are not refined further (-1: refine fully)", -1, -1,
              13, true},
             {"cookie_mask", "cookie texels darker than this (brightest channel, linear) close the volume", 1.0 / 512.0,
@@ -99,7 +104,7 @@ public:
             {kStageVolume, "Light volume",
              "closed mesh from the shadow map, drawn with signed additive airlight terms at each crossing",
              {"tessellation", "airlight", "threshold", "spot_pieces", "crack_check", "draw_triangles", "origin",
-              "wireframe", "stop_level", "cookie_mask", "force_features"},
+              "wireframe", "mesh_yaw", "mesh_pitch", "mesh_zoom", "stop_level", "cookie_mask", "force_features"},
              {kEdgeMap, kTessLevels, kMesh, kCrossings, kPositive, kNegative, kTotal, kCracks, kLut, kLutError},
              1, "stop_level"},
             render::SceneViewPasses::composeStage("polyvol"),
@@ -458,6 +463,11 @@ private:
         const scene::Camera& cam = scene.camera;
         const gl::Program& program = volumeProgram(plan);
         const int n = mView.shadows().size();
+        // wireframe=3: the mesh from an orbit camera of its own, over the scene, the camera frustum and
+        // the lights (render::MeshView); set up before the volume pass's state.
+        if (int(s.at("wireframe")) == 3)
+            mMeshView.begin(scene, mView.gpuScene(),
+                            {s.at("mesh_yaw"), s.at("mesh_pitch"), s.at("mesh_zoom")}, input.width, input.height);
         program.use();
         program.set("uViewProj", render::eyeRelativeViewProjection(cam, input.width, input.height));
         program.set("uSize", glm::ivec2(input.width, input.height));
@@ -570,11 +580,13 @@ private:
             if (grid.mode == polyvol::kModeCube || mWireDrawn) return;
             viewProj = L.shadowMatrix;
         }
+        if (wire == 3) viewProj = mMeshView.viewProj();
         mWireDrawn = true;
         mWireProgram.use();
         setGridUniforms(mWireProgram, grid);
         mWireProgram.set("uViewProj", viewProj);
-        mWireFramebuffer.bind();
+        if (wire == 3) mMeshView.bindTarget();
+        else mWireFramebuffer.bind();
         glDisable(GL_BLEND);
         glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
         if (adaptive) {
@@ -694,14 +706,20 @@ private:
                 count, "", ViewKind::Scalar, 0.0f, float(mTess.levels()) / 16.0f, mTess.levelMap()));
         }
         Intermediate mesh;
-        if (s.at("wireframe") != 0.0 && mWire) {
+        if (s.at("wireframe") == 3.0) {
+            mesh = render::textureIntermediate(kMesh, "Light volume mesh", "", "", ViewKind::Color, 0.0f, 1.0f,
+                                               mMeshView.texture());
+        } else if (s.at("wireframe") != 0.0 && mWire) {
             mesh = render::textureIntermediate(kMesh, "Light volume mesh", "", "", ViewKind::Color, 0.0f, 1.0f, mWire);
         }
         mesh.id = kMesh;
         mesh.label = "Light volume mesh";
         mesh.note = count + " (grid: one vertex per shadow-map texel; closure to the light / cap; cube seams)" +
-                    (s.at("wireframe") != 0.0 ? "; wireframe: green = rays leave (+L), red = rays enter (-L)"
-                                              : "; wireframe=1|2 draws it");
+                    (s.at("wireframe") != 0.0 ? "; wireframe: green = rays leave (+L), red = rays enter (-L)" +
+                                                    std::string(s.at("wireframe") == 3.0
+                                                                    ? "; blue: camera frustum, yellow: lights"
+                                                                    : "")
+                                              : "; wireframe=1|2|3 draws it (3: orbit view)");
         mesh.kind = s.at("wireframe") != 0.0 ? ViewKind::Color : ViewKind::Mesh;
         out.intermediates.push_back(mesh);
         out.intermediates.push_back(render::textureIntermediate(
@@ -757,6 +775,7 @@ private:
     gl::Texture mAirlight;
     gl::Texture mWire;
     gl::Framebuffer mWireFramebuffer;
+    render::MeshView mMeshView;
     std::string mResolveKey;
     gl::Texture mLut, mLutError;
     gl::Program mLutErrorProgram;

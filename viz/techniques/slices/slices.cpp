@@ -15,6 +15,7 @@
 #include "gl/stage_clock.h"
 #include "gl/texture.h"
 #include "gl/vertex_array.h"
+#include "render/mesh_view.h"
 #include "render/compose.h"
 #include "render/eye_space.h"
 #include "render/gpu_lights.h"
@@ -39,6 +40,7 @@ constexpr const char* kAccum = "slices.accumulation";
 constexpr const char* kPlane = "slices.plane";
 constexpr const char* kFragments = "slices.fragments";
 constexpr const char* kPlaneMesh = "slices.plane_mesh";
+constexpr const char* kPlaneView = "slices.plane_view";
 constexpr const char* kAirlight = "slices.airlight";
 
 enum StageIndex { kShadowMapsIndex = 0, kSurfaceIndex, kPlanesIndex, kResolveIndex, kComposeIndex };
@@ -126,6 +128,11 @@ public:
              0, 1e6, false},
             {"count_fragments", "1: count shaded fragments and those outside the light frustum (atomic counter)",
              0, 0, 1, true},
+            {"mesh_view", "1: draw the planes from an orbit camera of its own, with the scene, the camera frustum "
+             "and the lights (slices.plane_view)", 0, 0, 1, true},
+            {"mesh_yaw", "mesh_view: orbit camera's angle about the vertical (degrees)", 35, -360, 360, false},
+            {"mesh_pitch", "mesh_view: orbit camera's angle above the horizon (degrees)", 25, -89, 89, false},
+            {"mesh_zoom", "mesh_view: orbit camera's zoom (1 fits the scene and the camera)", 1, 0.05, 50, false},
             forceFeaturesParam(),
         };
         for (ParamInfo& p : render::SceneViewPasses::params()) mParams.push_back(std::move(p));
@@ -136,8 +143,9 @@ public:
              "N view-aligned planes per light, clipped to its frustum, added back to front",
              {"planes", "planes_drawn", "weighting", "accum", "accum_range", "shadow", "spot_falloff", "cookie",
               "noise", "noise_tiles", "time", "falloff", "ambient", "artistic_units", "clip", "user_clip",
-              "clip_y_min", "clip_y_max", "directional_box", "distance_scale", "count_fragments", "force_features"},
-             {kAccum, kPlane, kPlaneMesh, kFragments}, 128, "planes_drawn", "planes"},
+              "clip_y_min", "clip_y_max", "directional_box", "distance_scale", "count_fragments", "mesh_view",
+              "mesh_yaw", "mesh_pitch", "mesh_zoom", "force_features"},
+             {kAccum, kPlane, kPlaneMesh, kPlaneView, kFragments}, 128, "planes_drawn", "planes"},
             {kStageResolve, "Resolve", "accumulation -> L_air: undo the 8-bit scale, sum the mask channels, blur",
              {"blur"}, {kAirlight}, 1},
             render::SceneViewPasses::composeStage("slices"),
@@ -326,6 +334,28 @@ public:
             kPlane, "Plane " + std::to_string(drawn), "the last plane drawn alone (every light), float",
             "stored value", ViewKind::Color, 0.0f, 0.05f, mPlane));
         out.intermediates.push_back(polygonIntermediate());
+        if (s.at("mesh_view") != 0.0) {
+            mMeshView.begin(scene, mView.gpuScene(), {s.at("mesh_yaw"), s.at("mesh_pitch"), s.at("mesh_zoom")},
+                            input.width, input.height);
+            // Each drawn plane's outline, far planes dim and near ones bright (the drawing order).
+            const std::size_t count = mPolygons.size();
+            for (std::size_t row = 0; row < count; ++row) {
+                const auto& polygon = mPolygons[row];
+                std::vector<glm::vec3> edges;
+                for (std::size_t v = 0; v < polygon.size(); ++v) {
+                    edges.push_back(glm::vec3(polygon[v]));
+                    edges.push_back(glm::vec3(polygon[(v + 1) % polygon.size()]));
+                }
+                const float near = count > 1 ? float(row) / float(count - 1) : 1.0f;
+                mMeshView.lines(edges, glm::vec4(0.25f + 0.75f * near, 0.45f + 0.4f * near, 0.2f, 1.0f));
+            }
+            gl::Framebuffer::bindDefault();
+            out.intermediates.push_back(render::textureIntermediate(
+                kPlaneView, "Sampling planes (orbit view)",
+                "the drawn planes' outlines (far dim, near bright) with the scene, the camera frustum (blue) and the "
+                "lights (yellow); mesh_yaw, mesh_pitch, mesh_zoom move the camera",
+                "", ViewKind::Color, 0.0f, 1.0f, mMeshView.texture()));
+        }
         if (t.count) {
             std::uint32_t counts[2] = {0, 0};
             mCounters.download(0, sizeof(counts), counts);
@@ -660,6 +690,7 @@ private:
     gl::Texture mNoise, mAccum, mPlane, mAirlight;
     double mLastStoreScale = 1.0;
     std::vector<int> mPlanesUsed;                         // per drawn light, after distance scaling
+    render::MeshView mMeshView;
     std::vector<std::vector<glm::dvec3>> mPolygons;       // drawn planes, clipped (eye-relative world)
     double mQueryCounts[2] = {0.0, 0.0};  // occlusion queries: outside the frustum, all
     glm::vec3 mMaskColor{1.0f};
