@@ -397,6 +397,15 @@ public:
                                         {"stage", technique().stages()[std::size_t(stageShown())].id},
                                         {"last_stage_run", mHaveOutput ? mOutput.lastStageRun : -1},
                                         {"views", views}};
+        {
+            nlohmann::json lights = nlohmann::json::array();
+            for (const auto& l : mScene.lights)
+                lights.push_back({{"name", l.name},
+                                  {"position", {l.position.x, l.position.y, l.position.z}},
+                                  {"direction", {l.direction.x, l.direction.y, l.direction.z}},
+                                  {"intensity", l.intensity}});
+            sidecar["lights"] = lights;
+        }
         if (!mCompare.empty()) {
             nlohmann::json tiles = nlohmann::json::array();
             for (const auto& t : mCompare)
@@ -1391,6 +1400,7 @@ private:
                     mScene.lights[0].intensity = intensity;
                     sceneChanged = true;
                 }
+                sceneChanged = lightPlacementWidgets(mScene.lights[0]) || sceneChanged;
             }
             if (mUi->collapsingHeader(technique().id() + " parameters", true)) parameterWidgets();
             mUi->endPanel();
@@ -1400,6 +1410,39 @@ private:
             }
         }
         mUi->endFrame();
+    }
+
+    // Where the light points and where it is: azimuth and elevation of the direction for spot and
+    // directional lights, position for point and spot lights (an area light's rectangle is scene
+    // geometry and stays put). Returns whether the light changed.
+    bool lightPlacementWidgets(viz::scene::Light& light) {
+        using viz::scene::LightType;
+        bool changed = false;
+        if (light.type == LightType::Spot || light.type == LightType::Directional) {
+            const glm::dvec3 d = glm::normalize(light.direction);
+            float azimuth = float(glm::degrees(std::atan2(d.x, -d.z)));
+            float elevation = float(glm::degrees(std::asin(std::clamp(d.y, -1.0, 1.0))));
+            const bool turned = mUi->sliderFloat("direction azimuth (deg)", azimuth, -180.0f, 180.0f);
+            mUi->tooltip("about the vertical axis; 0 travels along -z");
+            const bool tilted = mUi->sliderFloat("direction elevation (deg)", elevation, -90.0f, 90.0f);
+            if (turned || tilted) {
+                const double a = glm::radians(double(azimuth)), e = glm::radians(double(elevation));
+                light.direction = {std::cos(e) * std::sin(a), std::sin(e), -std::cos(e) * std::cos(a)};
+                changed = true;
+            }
+        }
+        if (light.type == LightType::Point || light.type == LightType::Spot) {
+            const float speed = float(0.004 * std::max(orbitDistance(mScene), 1e-3));
+            const char* names[3] = {"position x", "position y", "position z"};
+            for (int axis = 0; axis < 3; ++axis) {
+                float v = float(light.position[axis]);
+                if (mUi->dragFloat(names[axis], v, speed, -1e6f, 1e6f)) {
+                    light.position[axis] = v;
+                    changed = true;
+                }
+            }
+        }
+        return changed;
     }
 
     void parameterWidgets() {

@@ -130,6 +130,23 @@ frames 1
     EXPECT_EQ(j.at("views")[1].at("name"), "slices.shadow_map");
 }
 
+// The light panel moves and turns the first light: a spot's elevation slider at a quarter of its range
+// points it 45 degrees down, its position drag is there, and the technique runs with the moved light.
+TEST_F(GuiCli, TheLightPanelTurnsTheLight) {
+    // The medium section folded so the light section fits the panel at the window size of the tests.
+    const fs::path script =
+        writeText("light.txt", "frames 2\nclick Medium\nframes 1\nclick \"direction elevation (deg)\" 0.25 0.5\nframes 2\n");
+    const RunResult r = run("gui --scene grate --technique raymarch --size 40x30 --set samples=16 --script " +
+                            script.string() + " --screenshot " + path("light.png").string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const nlohmann::json j = nlohmann::json::parse(readFile(path("light.json")));
+    ASSERT_EQ(j.at("lights").size(), 1u);
+    const auto& d = j.at("lights")[0].at("direction");
+    const double x = d[0].get<double>(), y = d[1].get<double>(), z = d[2].get<double>();
+    EXPECT_NEAR(std::sqrt(x * x + y * y + z * z), 1.0, 1e-9);
+    EXPECT_NEAR(y, -std::sqrt(0.5), 0.03) << "45 degrees below the horizon (pixel rounding aside)";
+}
+
 TEST_F(GuiCli, TheRayInspectorShowsTheValuesAirlightRenderGivesAtThatPixel) {
     const fs::path script = writeText("inspect.txt", "hover final 0.5 0.45\nkey I\nframes 1\n");
     const RunResult r = run("gui --scene grate --technique raymarch --size 40x30 --set samples=128 --script " +
