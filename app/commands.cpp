@@ -11,6 +11,7 @@
 #include "core/error.h"
 #include "core/image_io.h"
 #include "gui.h"
+#include "lesson.h"
 #include "platform/window_glfw.h"
 #include "render_job.h"
 #include "scene/builtin_scenes.h"
@@ -61,6 +62,7 @@ lights as KHR_lights_punctual, area lights as emissive meshes, the medium in sce
 
 constexpr const char* kGuiHelp = R"(usage: airlight gui [--scene S] [--technique T] [--size WxH] [--set name=value]...
                     [--state FILE] [--script FILE] [--export-dir DIR] [--screenshot OUT.png [--frames N]]
+                    [--lesson NAME]
 
 Opens the window: the final frame beside one intermediate. Keys: Tab / Shift+Tab technique,
 [ and ] intermediate, C orbit/fly camera, R reset camera, + and - exposure, Esc quit.
@@ -72,6 +74,10 @@ Opens the window: the final frame beside one intermediate. Keys: Tab / Shift+Tab
                       one per line), then exit (after writing --screenshot if given)
 --export-dir DIR      where E (the intermediate view as EXR and PNG) and F12 (the window) write
                       (default airlight-exports/)
+--lesson NAME         open the lesson player beside the views: lessons/NAME.md or a path to a .md file
+                      (also 'airlight --lesson NAME' and 'airlight lesson NAME'). PageUp/PageDown step,
+                      T try it, B back to the step, Space play/pause a step's animation. --size renders
+                      every step at that size.
 --screenshot OUT.png  after N frames (default 1; and once a CPU technique's result has arrived) write
                       the window to OUT.png and its views' rectangles (window pixels, origin top-left)
                       to OUT.json, then exit. Runs under xvfb-run without a monitor.
@@ -89,6 +95,7 @@ struct CommonOptions {
     std::string state;  // gui only
     std::string script;  // gui only
     std::string exportDir;  // gui only
+    std::string lesson;     // gui only
     bool sceneGiven = false, techniqueGiven = false, sizeGiven = false;
 };
 
@@ -109,6 +116,7 @@ CommonOptions parseOptions(Args& args, const std::string& command, const std::st
         else if (flag == "--state") o.state = args.next(flag);
         else if (flag == "--script") o.script = args.next(flag);
         else if (flag == "--export-dir") o.exportDir = args.next(flag);
+        else if (flag == "--lesson") o.lesson = args.next(flag);
         else if (flag == "--size") {
             const glm::ivec2 size = parseSize(args.next(flag));
             o.request.width = size.x, o.request.height = size.y;
@@ -292,7 +300,7 @@ int runGuiCommand(Args& args) {
         std::fputs(kGuiHelp, stdout);
         return 0;
     }
-    CommonOptions o = parseOptions(args, "gui", " --scene --technique --size --set --screenshot --frames --state --script --export-dir ");
+    CommonOptions o = parseOptions(args, "gui", " --scene --technique --size --set --screenshot --frames --state --script --export-dir --lesson ");
     if (!o.screenshot.empty() && viz::extensionOf(o.screenshot) != ".png")
         throw InputError("--screenshot '" + o.screenshot + "' must end in .png");
     if (o.frames < 1) throw InputError("--frames must be at least 1");
@@ -304,7 +312,9 @@ int runGuiCommand(Args& args) {
                              o.state + "'");
     }
     if (!viz::displayAvailable())
-        throw InputError("no display: set DISPLAY (or run under xvfb-run), or use 'airlight render'");
+        throw InputError(o.lesson.empty() ? "no display: set DISPLAY (or run under xvfb-run), or use 'airlight render'"
+                                          : "no display: set DISPLAY (or run under xvfb-run), or export the lesson with "
+                                            "'airlight lesson " + o.lesson + " --export DIR'");
     GuiOptions g;
     g.scene = o.request.scene;
     g.technique = o.request.technique;
@@ -323,6 +333,8 @@ int runGuiCommand(Args& args) {
     g.techniqueGiven = o.techniqueGiven;
     g.sizeGiven = o.sizeGiven;
     if (!o.exportDir.empty()) g.exportDir = o.exportDir;
+    // An unknown lesson name fails here; a malformed lesson file opens and shows its error in the panel.
+    if (!o.lesson.empty()) g.lesson = findLesson(o.lesson);
     return runGui(g);
 }
 

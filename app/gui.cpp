@@ -31,6 +31,7 @@
 
 #include "camera_controller.h"
 #include "cpu_worker.h"
+#include "lesson_player.h"
 #include "pane_image.h"
 #include "ray_inspection.h"
 #include "core/atomic_file.h"
@@ -192,7 +193,7 @@ std::optional<viz::ui::Key> uiKey(int key) {
     }
 }
 
-class GuiApp {
+class GuiApp : public LessonHost {
 public:
     GuiApp(const GuiOptions& options, viz::scene::Scene scene, viz::Window& window, SessionState session,
            std::string notice)
@@ -240,6 +241,12 @@ public:
         });
         selectTechnique(mCurrent);
         applySessionView();
+        const std::string lesson = !options.lesson.empty() ? options.lesson : mSession.lesson;
+        if (options.sizeGiven) mLessonSize = {options.width, options.height};
+        if (!lesson.empty()) {
+            mLesson = std::make_unique<LessonPlayer>(lesson, mLessonSize);
+            if (lesson == mSession.lesson) mLesson->restore(mSession.lessonStep, mSession.lessonTryIt);
+        }
     }
 
     ~GuiApp() {
@@ -263,7 +270,7 @@ public:
             const bool flying = mController.mode() == CameraController::Mode::Fly && anyFlyKeyDown();
             const bool busy = mWorker->progress().busy;
             const bool automated = !mOptions.screenshot.empty() || !mOptions.script.empty();
-            if (flying || mDirty || automated) {
+            if (flying || mDirty || automated || (mLesson && mLesson->animating())) {
                 glfwPollEvents();
             } else {
                 // Nothing animates: sleep until input arrives, waking a few times a second while the
@@ -274,6 +281,8 @@ public:
             const double dt = std::min(0.1, std::chrono::duration<double>(now - last).count());
             last = now;
             if (mController.mode() == CameraController::Mode::Fly) fly(dt);
+            // Automation advances animations by a fixed 1/30 s per frame, so runs repeat exactly.
+            if (mLesson) mLesson->update(*this, automated ? 1.0 / 30.0 : dt);
             if (mReduced && mDragButton < 0 && !anyFlyKeyDown()) mDirty = true;
             if (mDirty) {
                 // A slow GPU run blocks this thread: first show a frame that says so.
@@ -286,6 +295,11 @@ public:
                 render();
             }
             if (auto result = mWorker->take()) acceptCpuResult(std::move(*result));
+            // A lesson step's pixel: inspected once its full-size result is in (the value beside the truth).
+            if (mPendingInspect && mHaveOutput && mPass == mPassCount && !mWorker->progress().busy) {
+                inspectPixel(mPendingInspect->x, mPendingInspect->y);
+                mPendingInspect.reset();
+            }
             draw();
             ++mFramesDrawn;
             if (!mOptions.script.empty()) {
@@ -443,6 +457,7 @@ public:
                 sidecar["inspector"]["ray_views"] = pickedRayViews(technique(), mOutput, frame);
             }
         }
+        if (mLesson) sidecar["lesson"] = mLesson->sidecar(*this);
         std::filesystem::path json(path);
         json.replace_extension(".json");
         const std::string error = viz::writeFileAtomically(json, sidecar.dump(2) + "\n");
@@ -472,6 +487,8 @@ private:
         s.viewCenter = mRightView.center;
         s.exposure = mExposure;
         s.exposureSet = mExposureSet;
+        s.lesson.clear();
+        if (mLesson) mLesson->saveTo(s);
         return s;
     }
 
@@ -492,11 +509,26 @@ private:
             mNotice = problem;  // the current session stays as it is
             return;
         }
+        if (!loaded.lesson.empty()) {
+            // A lesson position: the step is applied (loading its scene), try-it changes go on top.
+            mSession = std::move(loaded);
+            mLesson = std::make_unique<LessonPlayer>(mSession.lesson, mLessonSize);
+            mLesson->restore(mSession.lessonStep, mSession.lessonTryIt);
+            mNotice = "session loaded from " + mOptions.statePath;
+            return;
+        }
         if (!loaded.scene.empty() && loaded.scene != mOptions.scene) {
             mNotice = "the saved session is for scene '" + loaded.scene + "': restart with --state to switch scenes";
             return;
         }
+        mLesson.reset();  // a session without a lesson closes the one open
         mSession = std::move(loaded);
+        restoreSessionOverStep();
+        mNotice = "session loaded from " + mOptions.statePath;
+    }
+
+    // The session's medium, technique (with its settings), camera, view and exposure over the scene.
+    void restoreSessionOverStep() override {
         if (mSession.medium) {
             mScene.medium = *mSession.medium;
             mWorker = std::make_unique<CpuWorker>(mScene);  // the CPU worker keeps its own copy of the scene
@@ -504,7 +536,87 @@ private:
         const auto it = std::find(mIds.begin(), mIds.end(), mSession.technique);
         selectTechnique(it == mIds.end() ? mCurrent : int(it - mIds.begin()));
         applySessionView();
-        mNotice = "session loaded from " + mOptions.statePath;
+    }
+
+    // ---- the lesson player's hooks (lesson_player.h): the window's own state changes ----
+
+    void loadLessonScene(const std::string& name) override {
+        viz::scene::Scene scene = viz::scene::loadScene(name);  // InputError: the window keeps its scene
+        mScene = std::move(scene);
+        mOptions.scene = name;
+        mController = CameraController(mScene.camera, orbitDistance(mScene));
+        mWorker = std::make_unique<CpuWorker>(mScene);
+        mLightIntensity0 = 0.0;
+        mCompare.clear();
+        mProbe.reset();
+        mDirty = true;
+    }
+
+    LessonWindowState lessonWindowState() const override {
+        LessonWindowState s;
+        s.scene = mOptions.scene;
+        s.technique = mIds[std::size_t(mCurrent)];
+        s.size = {mOptions.width, mOptions.height};
+        s.settings = mSettings;
+        s.stage = stageShown();
+        s.view = mViewId;
+        s.inspect = mPendingInspect;
+        if (mProbe) s.inspect = glm::ivec2(mProbe->x, mProbe->y);
+        s.camera = mController.camera();
+        s.orbitTarget = mController.target();
+        s.medium = mScene.medium;
+        s.lights = mScene.lights;
+        return s;
+    }
+
+    void applyLessonWindowState(const LessonWindowState& s) override {
+        bool lighting = s.medium.sigma_s != mScene.medium.sigma_s || s.medium.sigma_a != mScene.medium.sigma_a ||
+                        s.medium.g != mScene.medium.g || s.lights.size() != mScene.lights.size();
+        for (std::size_t i = 0; !lighting && i < s.lights.size(); ++i) {
+            const auto& a = s.lights[i];
+            const auto& b = mScene.lights[i];
+            lighting = a.position != b.position || a.direction != b.direction || a.intensity != b.intensity || a.color != b.color;
+        }
+        mScene.medium = s.medium;
+        mScene.lights = s.lights;
+        if (lighting) mWorker = std::make_unique<CpuWorker>(mScene);  // it keeps its own copy of the scene
+        mController.place(s.camera, s.orbitTarget);
+        mOptions.width = s.size.x;
+        mOptions.height = s.size.y;
+        const auto it = std::find(mIds.begin(), mIds.end(), s.technique);
+        if (it == mIds.end()) throw viz::InputError("unknown technique '" + s.technique + "'");
+        selectTechnique(int(it - mIds.begin()));  // also drops the last frame: the step's pixel waits for its own
+        mSettings = s.settings;
+        mSettingsError.clear();
+        mStopAfter = s.stage;
+        replan();
+        mViewId = s.view;
+        mLayer = 0;
+        mRightView.fit();
+        mProbe.reset();
+        mPendingInspect = s.inspect;
+        mExposureSet = false;
+        mCompare.clear();
+    }
+
+    void showLessonView(const std::string& id) override {
+        mViewId = id;
+        mLayer = 0;
+        refreshPanes();
+    }
+
+    void setLessonSetting(const std::string& name, double value) override {
+        if (mSettings.count(name) && mSettings.at(name) == value) return;
+        mSettings[name] = value;
+        mDirty = true;
+    }
+
+    void setLessonLight(const viz::scene::Light& light) override {
+        // GPU techniques read the scene at every run; the reference (its worker holds a copy of the scene,
+        // seconds per frame) keeps the light where it is.
+        if (mScene.lights.empty() || !technique().needsGl()) return;
+        mScene.lights[0] = light;
+        mDirty = true;
     }
 
     // Camera, view and exposure of the session (the scene, medium and technique are applied before).
@@ -677,10 +789,15 @@ private:
     // technique's value for that pixel. The cursor elsewhere clears it.
     void inspectPixelUnderCursor() {
         mProbe.reset();
+        mPendingInspect.reset();
         if (!mFinalRect.contains(mHover) || mOptions.width < 1) return;
         const glm::vec2 uv = (mHover - mFinalRect.min) / mFinalRect.size();
-        const int x = std::clamp(int(uv.x * float(mOptions.width)), 0, mOptions.width - 1);
-        const int y = std::clamp(int(uv.y * float(mOptions.height)), 0, mOptions.height - 1);
+        inspectPixel(std::clamp(int(uv.x * float(mOptions.width)), 0, mOptions.width - 1),
+                     std::clamp(int(uv.y * float(mOptions.height)), 0, mOptions.height - 1));
+    }
+
+    void inspectPixel(int x, int y) {
+        mProbe.reset();
         mScene.camera = mController.camera();
         try {
             mProbe = viz::reference::probePixel(mScene, mOptions.width, mOptions.height, x, y);
@@ -938,6 +1055,7 @@ private:
 
     void onKey(int key, int action, int mods) {
         if (action != GLFW_PRESS && action != GLFW_REPEAT) return;
+        if (mLesson && mLesson->onKey(key, action == GLFW_REPEAT)) return;
         const bool shift = (mods & GLFW_MOD_SHIFT) != 0;
         mUiInput.shift = shift;
         mUiInput.ctrl = (mods & GLFW_MOD_CONTROL) != 0;
@@ -1046,6 +1164,10 @@ private:
     }
 
     void onScroll(double dy) {
+        if (mLesson && mLesson->area().contains(mHover)) {
+            mLesson->scroll(float(dy));
+            return;
+        }
         if (mParamsRect.contains(mHover)) {
             mUiInput.wheel += float(dy);
             return;
@@ -1304,8 +1426,10 @@ private:
             }
         }
 
-        // Two panes side by side.
-        const Rect panes{{sidebarWidth + pad, top}, {float(fb.x) - pad, bottom - pad}};
+        // Two panes side by side, and the lesson panel (if a lesson is open) at the right edge.
+        const float lessonWidth = mLesson ? LessonPlayer::panelWidth(float(fb.x), s) : 0.0f;
+        if (mLesson) mLesson->place({{float(fb.x) - lessonWidth, top - pad}, {float(fb.x), bottom - pad}});
+        const Rect panes{{sidebarWidth + pad, top}, {float(fb.x) - pad - lessonWidth, bottom - pad}};
         mViewArea = panes;
         const float half = 0.5f * (panes.size().x - pad);
         const Rect left{panes.min, {panes.min.x + half, panes.max.y}};
@@ -1409,6 +1533,7 @@ private:
                 replan();
             }
         }
+        if (mLesson) mLesson->draw(*mUi, *mDrawList, *mBackground, mScale);
         mUi->endFrame();
     }
 
@@ -1552,6 +1677,9 @@ private:
     Rect mParamsRect;                        // the widget panel's area last frame
     Rect mFinalRect;                         // where the final image was drawn last frame
     std::optional<viz::reference::RayProbe> mProbe;  // the ray inspector's pixel, if any
+    std::optional<glm::ivec2> mPendingInspect;  // a lesson step's pixel, inspected when its result is in
+    std::unique_ptr<LessonPlayer> mLesson;      // the lesson panel, when a lesson is open
+    glm::ivec2 mLessonSize{0};                  // --size given with a lesson: every step at that size
     int mStopAfter = -1;                     // stepping: run up to this stage (-1: all)
     std::string mProbeTechnique;
     bool mProbeHasValue = false;

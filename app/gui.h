@@ -30,6 +30,9 @@ struct GuiOptions {
     // when given with --state. Command-line --scene, --technique and --set override what it holds.
     std::string statePath;
     std::string exportDir = "airlight-exports";  // E (view as EXR + PNG) and F12 (window) write here
+    // A lesson's .md file: the lesson player's panel opens beside the views (lesson_player.h). With
+    // sizeGiven, every step renders at width x height.
+    std::string lesson;
     bool loadStateAtStart = false;
     bool sceneGiven = false, techniqueGiven = false, sizeGiven = false;
 };

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <sstream>
 
 #include "cli_args.h"
@@ -13,6 +14,7 @@
 #include "render_job.h"
 #include "report/error_images.h"
 #include "report/text_output.h"
+#include "techniques/registry.h"
 
 namespace airlight {
 
@@ -67,7 +69,49 @@ std::string inlineMarkup(const std::string& escaped) {
     return out;
 }
 
+// "2s", "2 s", "2.5" (seconds): the duration of an animation.
+double parseSeconds(const std::string& text) {
+    std::string number = trim(text);
+    if (!number.empty() && number.back() == 's') number = trim(number.substr(0, number.size() - 1));
+    double seconds = 0.0;
+    try {
+        seconds = parseNumber(number, "animation duration");
+    } catch (const InputError&) {
+        seconds = -1.0;
+    }
+    if (!(seconds >= 0.1 && seconds <= 600.0))
+        throw InputError("animation duration '" + text + "' must be seconds from 0.1 to 600, e.g. 2s");
+    return seconds;
+}
+
+// `animate: substeps 2s` or `animate: light orbit 4s`.
+LessonAnimation parseAnimation(const std::string& value, int line) {
+    const std::vector<std::string> words = splitList(value);
+    LessonAnimation a;
+    a.line = line;
+    if (words.size() == 2 && words[0] == "substeps") {
+        a.kind = LessonAnimation::Kind::Substeps;
+        a.seconds = parseSeconds(words[1]);
+    } else if (words.size() == 3 && words[0] == "light" && words[1] == "orbit") {
+        a.kind = LessonAnimation::Kind::LightOrbit;
+        a.seconds = parseSeconds(words[2]);
+    } else {
+        throw InputError("animate takes 'substeps DURATION' or 'light orbit DURATION' (e.g. 'substeps 2s'), got '" +
+                         value + "'");
+    }
+    return a;
+}
+
 }  // namespace
+
+std::string describeAnimation(const LessonAnimation& animation) {
+    switch (animation.kind) {
+        case LessonAnimation::Kind::Substeps: return "substeps over " + viz::report::formatFigure(animation.seconds, "%g") + " s";
+        case LessonAnimation::Kind::LightOrbit: return "light orbit over " + viz::report::formatFigure(animation.seconds, "%g") + " s";
+        case LessonAnimation::Kind::None: break;
+    }
+    return {};
+}
 
 std::string markdownToHtml(const std::string& markdown) {
     std::istringstream in(markdown);
@@ -155,7 +199,8 @@ Lesson parseLesson(const std::string& path) {
                     step->width = size.x, step->height = size.y;
                 } else if (key == "set") {
                     for (const std::string& item : splitList(value)) parseSetting(item, step->settings);
-                } else if (key == "stage") step->stage = value;
+                } else if (key == "animate") step->animation = parseAnimation(value, number);
+                else if (key == "stage") step->stage = value;
                 else if (key == "views") step->views = splitList(value);
                 else if (key == "inspect") {
                     std::istringstream xy(value);
@@ -163,7 +208,7 @@ Lesson parseLesson(const std::string& path) {
                     if (!(xy >> x >> y) || x < 0 || y < 0) fail(number, "inspect takes a pixel 'x y'");
                     step->inspect = glm::ivec2(x, y);
                 } else {
-                    fail(number, "unknown key '" + key + "' (known: scene, technique, size, set, stage, views, inspect)");
+                    fail(number, "unknown key '" + key + "' (known: scene, technique, size, set, stage, views, inspect, animate)");
                 }
             } catch (const InputError& e) {
                 const std::string what = e.what();
@@ -200,9 +245,44 @@ Lesson parseLesson(const std::string& path) {
     if (inBlock) fail(blockLine, "the airlight block is not closed with ```");
     if (lesson.title.empty()) fail(1, "a lesson starts with a '# Title' line");
     if (lesson.steps.empty()) fail(number, "a lesson needs at least one step ('## ' heading with an airlight block)");
+    const std::vector<std::string> ids = viz::techniqueIds();
     for (const LessonStep& s : lesson.steps) {
+        const std::string where = "step '" + s.title + "': ";
         if (s.scene.empty()) fail(s.line, "step '" + s.title + "' has no scene (set 'scene:' in it or a step before)");
         if (s.technique.empty()) fail(s.line, "step '" + s.title + "' has no technique");
+        if (std::find(ids.begin(), ids.end(), s.technique) == ids.end()) {
+            std::string known;
+            for (const std::string& id : ids) known += (known.empty() ? "" : ", ") + id;
+            fail(s.line, where + "unknown technique '" + s.technique + "' (known: " + known + ")");
+        }
+        // What the window and the export would reject later is reported here, at the step.
+        const std::unique_ptr<viz::Technique> technique = viz::makeTechnique(s.technique);
+        try {
+            (void)viz::completeSettings(*technique, s.settings);
+        } catch (const InputError& e) {
+            fail(s.line, where + e.what());
+        }
+        const auto& stages = technique->stages();
+        const viz::StageInfo* stage = stages.empty() ? nullptr : &stages.back();
+        if (!s.stage.empty()) {
+            stage = nullptr;
+            std::string known;
+            for (const viz::StageInfo& st : stages) {
+                if (st.id == s.stage) stage = &st;
+                known += (known.empty() ? "" : ", ") + st.id;
+            }
+            if (!stage) fail(s.line, where + s.technique + " has no stage '" + s.stage + "' (its stages: " + known + ")");
+        }
+        if (s.animation.kind == LessonAnimation::Kind::Substeps && (!stage || stage->substepParam.empty())) {
+            std::string with;
+            for (const viz::StageInfo& st : stages)
+                if (!st.substepParam.empty()) with += (with.empty() ? "" : ", ") + st.id;
+            fail(s.animation.line, "stage '" + (stage ? stage->id : std::string("?")) + "' of " + s.technique +
+                                       " has no sub-steps to animate (" +
+                                       (with.empty() ? std::string("none of its stages has any") : "stages with sub-steps: " + with) + ")");
+        }
+        if (s.animation.kind == LessonAnimation::Kind::LightOrbit && !technique->needsGl())
+            fail(s.animation.line, s.technique + " renders on the CPU in seconds per frame: animate the light with a GPU technique");
     }
     return lesson;
 }
@@ -249,6 +329,10 @@ void exportLesson(const Lesson& lesson, const std::string& folder, glm::ivec2 si
         std::string state = s.technique + " on " + s.scene;
         if (!s.stage.empty()) state += ", stopped after " + s.stage;
         for (const auto& [name, value] : s.settings) state += ", " + name + "=" + viz::report::formatFigure(value, "%g");
+        // Both animations end on the static step's state (every sub-step; the light back where it was):
+        // the image is the animation's last frame.
+        if (s.animation.kind != LessonAnimation::Kind::None)
+            state += "; animated in the window: " + describeAnimation(s.animation) + " (shown: its last frame)";
         html += "<p class=\"state\">" + viz::report::escapeHtml(state) + "</p>\n";
         const std::vector<std::string> views = s.views.empty() ? std::vector<std::string>{"final", "airlight"} : s.views;
         const float exposure = out.final.empty() ? 1.0f : viz::report::exposureFor(out.final);

@@ -11,10 +11,17 @@
 //   stage: raymarch.march     stop after this stage (default: run everything)
 //   views: final, raymarch.airlight   what to show (final, airlight or intermediate ids)
 //   inspect: 80 60            a pixel for the ray inspector
+//   animate: substeps 2s      optional: in the window, run the stage's sub-steps 1..N over 2 seconds
+//                             (the stage must declare them, StageInfo::substepParam), or
+//   animate: light orbit 4s   move the first light once round a cone about its aim point (GPU
+//                             techniques; point, spot and directional lights)
 //   ```
 //   Prose: paragraphs, `code`, *emphasis*, **strong**, and formulas as plain text.
 //
-// A step inherits scene, technique and size from the step before when it does not name them.
+// A step inherits scene, technique and size from the step before when it does not name them; settings
+// and the animation belong to the step that names them. An animation ends where it started or where the
+// static step stands (all sub-steps; the light back at its place), so the export renders that state: the
+// animation's last frame.
 #pragma once
 
 #include <optional>
@@ -27,6 +34,14 @@
 
 namespace airlight {
 
+// A short animation a step plays in the window (Space pauses and replays it).
+struct LessonAnimation {
+    enum class Kind { None, Substeps, LightOrbit };
+    Kind kind = Kind::None;
+    double seconds = 0.0;  // duration of one run
+    int line = 0;          // of the `animate:` line, for messages
+};
+
 struct LessonStep {
     std::string title;
     std::string prose;  // Markdown
@@ -37,6 +52,7 @@ struct LessonStep {
     std::string stage;               // empty: run everything
     std::vector<std::string> views;  // empty: final and airlight
     std::optional<glm::ivec2> inspect;
+    LessonAnimation animation;
 };
 
 struct Lesson {
@@ -44,8 +60,9 @@ struct Lesson {
     std::vector<LessonStep> steps;
 };
 
-// Throws InputError "FILE:LINE: reason" for an unknown key, a bad value, a step without a scene, a
-// second block in one step, an unclosed block or a lesson without steps.
+// Throws InputError "FILE:LINE: reason" for an unknown key, a bad value, a step without a scene, an
+// unknown technique, a stage or setting the step's technique does not have, an animation the step cannot
+// play, a second block in one step, an unclosed block or a lesson without steps.
 Lesson parseLesson(const std::string& path);
 
 // A lesson by name: lessons/NAME.md in the source tree or the working folder, or a path to a .md file.
@@ -58,5 +75,8 @@ void exportLesson(const Lesson& lesson, const std::string& folder, glm::ivec2 si
 // Minimal Markdown to HTML for lesson prose: paragraphs, #/##/### headings, `code`, *em*, **strong**,
 // "- " lists and four-space indented lines as preformatted text; everything else is escaped text.
 std::string markdownToHtml(const std::string& markdown);
+
+// "substeps over 2 s", "light orbit over 4 s", or empty.
+std::string describeAnimation(const LessonAnimation& animation);
 
 }  // namespace airlight

@@ -1,5 +1,6 @@
 // airlight: command-line entry point. Every user error prints one line "airlight: error: ..." and exits
 // with code 2; an internal failure exits with 1.
+#include <algorithm>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
@@ -25,14 +26,17 @@ commands:
   (none)          open the window on the default scene; without a display, render it
                   headlessly into out/ (final frame and every intermediate as PNG)
   gui             open the window (options as for render: --scene, --technique, --size, --set)
+  --lesson NAME   open the window with the lesson player (lessons/NAME.md or a .md path; PageUp/
+                  PageDown step, T try it, B back to the step, Space play/pause an animation)
   render          render one image:  airlight render --scene S --technique T --size WxH --out F.exr|F.png
   list            list scenes | techniques | stages T | params T
   plan            show which stages and features a technique runs for a scene, and why
   export-scene    write a scene as glTF:  airlight export-scene NAME out.gltf|out.glb
   report          error against run time of every technique on each scene (CSV, JSON, plots, HTML)
   compare         error figures of one image against another:  airlight compare TEST.exr REFERENCE.exr
-  lesson          a guided walkthrough: airlight lesson NAME --export DIR [--size WxH] renders every step
-                  and writes DIR/index.html (lessons/NAME.md)
+  lesson          a guided walkthrough: airlight lesson NAME opens it in the window (as --lesson NAME);
+                  airlight lesson NAME --export DIR [--size WxH] renders every step and writes
+                  DIR/index.html (lessons/NAME.md)
 
 Run 'airlight COMMAND --help' for the options of a command.
 )";
@@ -55,14 +59,28 @@ int main(int argc, char** argv) {
         if (command == "export-scene") return airlight::runExportScene(args);
         if (command == "gui") return airlight::runGuiCommand(args);
         if (command == "compare") return airlight::runCompare(args);
+        if (command == "--lesson") {
+            airlight::Args all(words);  // --lesson NAME and any window options
+            return airlight::runGuiCommand(all);
+        }
         if (command == "lesson") {
             if (args.empty() || airlight::isHelpFlag(args.peek())) {
-                std::fputs("usage: airlight lesson NAME --export DIR [--size WxH]\n\nRenders every step of lessons/NAME.md "
-                           "headlessly (each view it names as PNG) and writes DIR/index.html with the text and images.\n",
+                std::fputs("usage: airlight lesson NAME [--size WxH] [window options]\n"
+                           "       airlight lesson NAME --export DIR [--size WxH]\n\n"
+                           "Opens lessons/NAME.md (or a .md path) in the window's lesson player, or with --export renders\n"
+                           "every step headlessly (each view it names as PNG) and writes DIR/index.html with the text and\n"
+                           "images.\n",
                            stdout);
                 return 0;
             }
             const std::string name = args.take();
+            if (std::find(words.begin(), words.end(), "--export") == words.end()) {
+                // No export: the lesson player in the window, with the window's options.
+                std::vector<std::string> gui = {"--lesson", name};
+                while (!args.empty()) gui.push_back(args.take());
+                airlight::Args forward(gui);
+                return airlight::runGuiCommand(forward);
+            }
             std::string folder;
             glm::ivec2 size(0);
             while (!args.empty()) {
@@ -71,7 +89,6 @@ int main(int argc, char** argv) {
                 else if (flag == "--size") size = airlight::parseSize(args.next(flag));
                 else throw viz::InputError("unknown option '" + flag + "' for 'lesson'");
             }
-            if (folder.empty()) throw viz::InputError("lesson needs --export DIR (the window's lesson player is not built yet)");
             const airlight::Lesson lesson = airlight::parseLesson(airlight::findLesson(name));
             airlight::exportLesson(lesson, folder, size);
             std::printf("wrote %s/index.html (%zu steps)\n", folder.c_str(), lesson.steps.size());

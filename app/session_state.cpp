@@ -61,6 +61,7 @@ std::string sessionToJson(const SessionState& s) {
     j["view_center"] = {s.viewCenter.x, s.viewCenter.y};
     j["exposure"] = s.exposure;
     j["exposure_set"] = s.exposureSet;
+    if (!s.lesson.empty()) j["lesson"] = {{"path", s.lesson}, {"step", s.lessonStep}, {"try_it", s.lessonTryIt}};
     return j.dump(2) + "\n";
 }
 
@@ -119,6 +120,14 @@ SessionState sessionFromJson(const std::string& text, std::string& problem) {
         }
         s.exposure = float(readNumber(j, "exposure", -40, 40));
         s.exposureSet = j.at("exposure_set").get<bool>();
+        if (j.contains("lesson")) {  // optional: files written before the lesson player have none
+            const json& l = j.at("lesson");
+            s.lesson = l.at("path").get<std::string>();
+            s.lessonStep = l.at("step").get<int>();
+            if (s.lesson.empty()) throw std::runtime_error("lesson path is empty");
+            if (s.lessonStep < 0 || s.lessonStep > 100000) throw std::runtime_error("lesson step is out of range");
+            s.lessonTryIt = l.at("try_it").get<bool>();
+        }
     } catch (const std::exception& e) {
         // nlohmann's messages start with "[json.exception.type_error.302] ...": keep the readable part.
         std::string what = e.what();

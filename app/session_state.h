@@ -28,6 +28,11 @@ struct SessionState {
     glm::dvec2 viewCenter{0.5};
     float exposure = 0.0f;                   // EV
     bool exposureSet = false;
+    // The lesson player's position (empty lesson: no lesson open). With tryIt the fields above hold what
+    // the student changed from the step; without it the step's own state is shown.
+    std::string lesson;                      // path of the lesson's .md file
+    int lessonStep = 0;                      // 0-based
+    bool lessonTryIt = false;
 };
 
 std::string sessionToJson(const SessionState& state);

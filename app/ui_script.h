@@ -4,7 +4,8 @@
 //                        (FX, FY) of its rectangle (default 0.5 0.5). NAME: a widget's label, a view
 //                        ("final", or an intermediate id), "technique:ID" or "view:LABEL" in the sidebar
 //   hover NAME [FX FY]   move the mouse there without pressing (e.g. before `key I`, the ray inspector)
-//   key NAME             press a key: Tab, Enter, Escape, Space, Left, Right, Up, Down, F1-F12, 0-9,
+//   key NAME             press a key: Tab, Enter, Escape, Space, Left, Right, Up, Down, PageUp,
+//                        PageDown, F1-F12, 0-9,
 //                        A-Z, [ and ], optionally after Shift+ and/or Ctrl+ (Shift+S)
 //   frames N             let N frames pass
 //   screenshot PATH      write the window (PNG) and its sidecar JSON now

@@ -63,6 +63,31 @@ TEST(SessionState, RoundTripKeepsEverything) {
     EXPECT_TRUE(b.exposureSet);
 }
 
+TEST(SessionState, TheLessonPositionRoundTripsAndABadOneGivesTheDefaults) {
+    SessionState a = sample();
+    a.lesson = "lessons/02-ray-marching.md";
+    a.lessonStep = 3;
+    a.lessonTryIt = true;
+    std::string problem;
+    const SessionState b = sessionFromJson(sessionToJson(a), problem);
+    EXPECT_EQ(problem, "");
+    EXPECT_EQ(b.lesson, a.lesson);
+    EXPECT_EQ(b.lessonStep, 3);
+    EXPECT_TRUE(b.lessonTryIt);
+    // Without a lesson the file holds none, and reads back without one.
+    const SessionState c = sessionFromJson(sessionToJson(sample()), problem);
+    EXPECT_EQ(problem, "");
+    EXPECT_TRUE(c.lesson.empty());
+    EXPECT_EQ(sessionToJson(sample()).find("lesson"), std::string::npos);
+    // A negative step: the defaults and a reason.
+    std::string text = sessionToJson(a);
+    const std::string step = "\"step\": 3";
+    text.replace(text.find(step), step.size(), "\"step\": -1");
+    const SessionState d = sessionFromJson(text, problem);
+    EXPECT_NE(problem.find("lesson step"), std::string::npos) << problem;
+    EXPECT_TRUE(d.lesson.empty());
+}
+
 TEST(SessionState, BrokenFilesGiveTheDefaultsAndAReasonNamingTheFile) {
     const fs::path dir = fs::temp_directory_path() / ("airlight_state_" + std::to_string(::getpid()));
     fs::create_directories(dir);

@@ -1,0 +1,143 @@
+// The lesson player: a side panel in the window with a lesson's text (our minimal Markdown, word-wrapped
+// and scrollable), a step counter, Previous / Next, a "Try it" mode and the step's animation. It owns the
+// lesson position and the try-it bookkeeping; the window applies a step through its own state changes
+// (LessonHost, implemented by the window), so a step shows exactly what the same clicks would show.
+//
+// Keys (while a lesson is open): PageUp / PageDown previous / next step, T try it on/off, B back to the
+// step, Space play/pause the step's animation (only when the step has one; otherwise Space stays with
+// the widgets).
+//
+// Try it: outside try-it mode any change the student makes (a parameter, the camera, the technique, the
+// inspected pixel, the view) switches try-it on; the panel then says "changed from the step", and
+// "Back to the step" (or leaving try-it mode) applies the step's state again exactly.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+#include <nlohmann/json.hpp>
+
+#include "debug/technique.h"
+#include "lesson.h"
+#include "scene/scene.h"
+#include "session_state.h"
+#include "ui/immediate.h"
+#include "ui/text_renderer.h"
+
+namespace airlight {
+
+// What a step sets in the window, and what the window reports back to compare with it.
+struct LessonWindowState {
+    std::string scene;       // as named in the lesson (built-in, stiff/ID or glTF path)
+    std::string technique;
+    glm::ivec2 size{0};      // render size
+    viz::Settings settings;  // complete: every parameter of the technique
+    int stage = -1;          // index of the last stage run (the last index: everything runs)
+    std::string view;        // the right-hand view: "airlight" or an intermediate id
+    std::optional<glm::ivec2> inspect;  // the ray inspector's pixel (image convention, row 0 at the top)
+    viz::scene::Camera camera;
+    glm::dvec3 orbitTarget{0.0};
+    viz::scene::Medium medium;
+    std::vector<viz::scene::Light> lights;
+};
+
+// The window's side of the player.
+class LessonHost {
+public:
+    virtual ~LessonHost() = default;
+    // Loads a scene; its camera, medium and lights become the window's. Throws InputError when the scene
+    // cannot be loaded (the window keeps the scene it had).
+    virtual void loadLessonScene(const std::string& name) = 0;
+    virtual LessonWindowState lessonWindowState() const = 0;
+    // Technique, size, settings, stage, right-hand view, inspected pixel, camera, medium and lights
+    // (the scene is the one loaded last).
+    virtual void applyLessonWindowState(const LessonWindowState& state) = 0;
+    // The right-hand pane shows another of the step's views.
+    virtual void showLessonView(const std::string& id) = 0;
+    // One frame of an animation: a setting (the sub-step parameter) or the first light.
+    virtual void setLessonSetting(const std::string& name, double value) = 0;
+    virtual void setLessonLight(const viz::scene::Light& light) = 0;
+    // A session restored in try-it mode: its technique, settings, medium, camera and view over the step.
+    virtual void restoreSessionOverStep() = 0;
+};
+
+// The first light of a step's `animate: light orbit` at `turn` (0..1, one full turn): it circles its aim
+// point on a cone of half-angle kOrbitTilt whose surface holds its own position, so turn 0 and 1 are
+// where it started. A spot keeps pointing at the aim point (on its axis, as far from the light as
+// `centre`); a point light circles `centre`; a directional light's direction sweeps the same cone.
+// Throws InputError for an area light (its emitter is geometry).
+constexpr double kOrbitTilt = 0.2617993877991494;  // 15 degrees
+viz::scene::Light orbitLight(const viz::scene::Light& light, glm::dvec3 centre, double turn);
+
+class LessonPlayer {
+public:
+    // `path`: the lesson's .md file. A malformed lesson does not throw: the panel shows the error
+    // (FILE:LINE: reason) and a Reload button. sizeOverride (non-zero): every step renders at that size
+    // (its inspected pixel scaled along).
+    LessonPlayer(std::string path, glm::ivec2 sizeOverride);
+
+    // Once per frame, before the window renders: runs what the buttons and keys asked for, applies the
+    // step when it is due, advances the animation by dt seconds and compares the window with the step.
+    void update(LessonHost& host, double dt);
+    // Keys (GLFW codes); true when the player used the key. Auto-repeat steps on, but toggles nothing.
+    bool onKey(int key, bool repeat);
+    // The wheel over the panel scrolls its text (lines, + = towards the top).
+    void scroll(float lines);
+
+    // Layout: the panel's width for a window `windowWidth` pixels wide, and where it goes this frame.
+    static float panelWidth(float windowWidth, float scale);
+    void place(const viz::ui::Rect& area) { mArea = area; }
+    const viz::ui::Rect& area() const { return mArea; }
+    // Draws the panel: backgrounds into `background`, text into `text`, buttons with `ui` (inside its
+    // frame). Clicks are queued and run at the next update().
+    void draw(viz::ui::Context& ui, viz::ui::DrawList& text, viz::ui::DrawList& background, float scale);
+
+    bool animating() const { return mPlaying; }
+    // Position in the session file, and back.
+    void saveTo(SessionState& session) const;
+    void restore(int step, bool tryIt);
+    // The "lesson" object of the screenshot sidecar.
+    nlohmann::json sidecar(const LessonHost& host) const;
+
+private:
+    enum class Action { Previous, Next, Back, ToggleTryIt, PlayPause, Reload, ShowView };
+    void open();
+    void applyStep(LessonHost& host);
+    void animate(LessonHost& host);
+    bool matches(const LessonWindowState& now) const;
+    std::vector<std::string> rightViews() const;  // the step's views the right-hand pane may show
+    const LessonStep* step() const { return mLesson && mStep < int(mLesson->steps.size()) ? &mLesson->steps[std::size_t(mStep)] : nullptr; }
+    float drawProse(viz::ui::DrawList& dl, const std::string& markdown, glm::vec2 at, float width, float scale) const;
+
+    std::string mPath;
+    glm::ivec2 mSizeOverride{0};
+    std::optional<Lesson> mLesson;
+    std::string mLoadError;  // the lesson file's problem (FILE:LINE: reason)
+    std::string mStepError;  // the current step's problem when applying it
+    int mStep = 0;
+    bool mTryIt = false;
+    bool mDue = true;          // apply the step at the next update
+    bool mRestoreTryIt = false;  // after that, put the session's try-it state back on top
+    std::vector<std::pair<Action, std::string>> mActions;
+
+    // The step as applied, and whether the window still shows it (checked every update).
+    std::optional<LessonWindowState> mWanted;
+    bool mMatches = false;
+    std::string mShownView;  // the window's right-hand view at the last update
+    // The scene's own camera, medium and lights, captured when the player loaded it.
+    std::optional<LessonWindowState> mBase;
+    std::string mSubstepParam;  // a substeps animation: the parameter and the sub-step count
+    int mSubstepCount = 0;
+    glm::dvec3 mOrbitCentre{0.0};
+
+    bool mPlaying = false;
+    double mTime = 0.0;  // seconds into the animation
+
+    viz::ui::Rect mArea;
+    float mScroll = 0.0f, mContentHeight = 0.0f;
+    float mLine = 18.0f;  // the font's line height (scrolling by lines)
+};
+
+}  // namespace airlight
