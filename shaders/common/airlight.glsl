@@ -207,6 +207,51 @@ float pointSegment(float tP, float h, float x0, float x1, float sigma_s, float s
     return exp(logL);
 }
 
+#ifdef AIRLIGHT_NAIVE_CLOSED_FORM
+// ---- Teaching only: Sun et al. 2005's closed form evaluated as printed (NUMERICS.md 2.2) -------------
+// Compiled in only by a shader that defines AIRLIGHT_NAIVE_CLOSED_FORM (raymarch's closed_form=naive),
+// to show why pointSegment exists; no technique's result uses it. No CPU mirror in airlight.h.
+
+// F(u, v) = int_0^v exp(-u tan xi) dxi (Sun et al. tabulate it): 8-point Gauss-Legendre on 8 panels
+// [v/2^(k+1), v/2^k], the last one [0, v/128], so that the decay near 0 for large u is resolved. F itself
+// is accurate to float rounding here; what fails below is the formula around it.
+float naiveSunF(float u, float v) {
+    float sum = 0.0;
+    float b = v;
+    for (int panel = 0; panel < 8; ++panel) {
+        float a = panel == 7 ? 0.0 : 0.5 * b;
+        float half_ = 0.5 * (b - a);
+        float mid = 0.5 * (a + b);
+        for (int k = 0; k < AIRLIGHT_NODES / 2; ++k) {
+            float dx = half_ * AIRLIGHT_GL_X[k];
+            sum += AIRLIGHT_GL_W[k] * half_ * (exp(-u * tan(mid - dx)) + exp(-u * tan(mid + dx)));
+        }
+        b = a;
+    }
+    return sum;
+}
+
+// Isotropic L(x0, x1) for a unit-intensity point light at D (camera-relative), ray direction w, the
+// textbook way: gamma = acos(cos gamma), Tsv = sigma_t |D|,
+//   A0 = sigma_s sigma_t I0 exp(-Tsv cos gamma) / (2 pi Tsv sin gamma),   A1 = Tsv sin gamma,
+//   xi(x) = pi/4 + atan((sigma_t x - Tsv cos gamma) / A1) / 2,   L = A0 [F(A1, xi1) - F(A1, xi0)].
+// The bracket is a difference of two O(1/A1) values whose true difference carries e^{-sigma_t (|D| - tP)}
+// while A0 carries e^{+sigma_t (|D| - tP)}: float rounding of F is amplified by that factor (thick media),
+// exp(-Tsv cos gamma) overflows for a light far behind the ray, and gamma = 0 (a ray through the light)
+// gives inf * 0. The phase function is isotropic whatever g is: the closed form has no HG version.
+float pointSegmentNaive(vec3 D, vec3 w, float x0, float x1, float sigma_s, float sigma_t, float I0) {
+    const float pi = 3.14159265358979323846;
+    float Dsv = length(D);
+    float gamma = acos(clamp(dot(D, w) / Dsv, -1.0, 1.0));
+    float Tsv = sigma_t * Dsv;
+    float A0 = sigma_s * sigma_t * I0 * exp(-Tsv * cos(gamma)) / (2.0 * pi * Tsv * sin(gamma));
+    float A1 = Tsv * sin(gamma);
+    float xi0 = 0.25 * pi + 0.5 * atan((sigma_t * x0 - Tsv * cos(gamma)) / A1);
+    float xi1 = 0.25 * pi + 0.5 * atan((sigma_t * x1 - Tsv * cos(gamma)) / A1);
+    return A0 * (naiveSunF(A1, xi1) - naiveSunF(A1, xi0));
+}
+#endif  // AIRLIGHT_NAIVE_CLOSED_FORM
+
 // ---- Directional light ----------------------------------------------------------------------------
 
 // int_x0^x1 sigma_s p(cosTheta) E exp(-sigma_t x) dx; sigma_t -> 0 and x1 = +inf via expm1.

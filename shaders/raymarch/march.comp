@@ -2,7 +2,8 @@
 // raymarch/march.comp: brute-force single scattering. For each pixel and light, N samples along the eye
 // ray over [0, d] (d from the surface pass), each tested against the light's shadow map. Plain mode is
 // the midpoint rule of the integrand; EXACT integrates the unshadowed airlight analytically over each
-// sample's interval and weights it by the visibility at the sample. Output: L_air (rgba32f) and the lit
+// sample's interval and weights it by the visibility at the sample (NAIVE_CLOSED_FORM, a teaching mode:
+// with Sun et al.'s textbook formula instead of the stable pointSegment). Output: L_air (rgba32f) and the lit
 // fraction of the samples. All positions are eye-relative (the eye at the origin).
 // The (light, sample) pairs are flattened to k = light * N + sample and each dispatch runs the pairs
 // [uPairBegin, uPairEnd), adding to what earlier dispatches stored: llvmpipe stops every loop of an
@@ -11,6 +12,9 @@
 layout(local_size_x = 8, local_size_y = 8) in;
 
 #include "common/host_device.glsl"
+#ifdef NAIVE_CLOSED_FORM
+#define AIRLIGHT_NAIVE_CLOSED_FORM
+#endif
 #include "common/airlight.glsl"
 #include "common/lights.glsl"
 #include "common/shadow_map.glsl"
@@ -93,8 +97,13 @@ void main() {
         } else {
             // t_P and h of the ray relative to the light (NUMERICS.md section 1); the unit-intensity
             // isotropic segment times the light's angular factor at the sample.
+#ifdef NAIVE_CLOSED_FORM
+            // Teaching mode (closed_form=naive): the textbook evaluation that fails in the stiff cases.
+            sum += V * pointSegmentNaive(L.position.xyz, w, x0, x1, uSigmaS, uSigmaT, 1.0) * lightIntensity(L, x);
+#else
             RayLightGeometry g = rayLightGeometry(L.position.xyz, w);
             sum += V * pointSegment(g.tP, g.h, x0, x1, uSigmaS, uSigmaT, uG, 1.0) * lightIntensity(L, x);
+#endif
         }
 #else
         vec3 E = unshadowedIrradiance(L, x, uSigmaT);

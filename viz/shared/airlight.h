@@ -1,7 +1,9 @@
 // Airlight math shared by the CPU reference (double), its float mirror and the GPU techniques: the
 // single-scattering integral from a point or directional light in a homogeneous medium along one
 // segment of an eye ray. shaders/common/airlight.glsl holds the same functions with the same names and
-// argument order; keep the two files line-by-line comparable when editing either.
+// argument order; keep the two files line-by-line comparable when editing either. The one exception is
+// the GLSL file's pointSegmentNaive (Sun et al.'s closed form as printed, compiled only under
+// AIRLIGHT_NAIVE_CLOSED_FORM for raymarch's closed_form=naive teaching mode), which has no mirror here.
 //
 // Notation (NUMERICS.md section 1; Sun et al. 2005): D = light - eye (camera-relative), w the unit ray
 // direction, tP = dot(D, w) the signed distance to the light's foot point P on the ray, h = |D x w| the

@@ -39,6 +39,7 @@ constexpr int kPairsPerDispatchExact = 256;
 const PermutationTable kDefines = {
     // feature: {define when enabled, define when disabled}
     {"EXACT", {"EXACT", nullptr}},
+    {"NAIVE_CLOSED_FORM", {"NAIVE_CLOSED_FORM", nullptr}},
     {"JITTER", {"JITTER", nullptr}},
     {"SPOT", {nullptr, "LIGHTS_NO_SPOT"}},
     {"COOKIE", {nullptr, "LIGHTS_NO_COOKIE"}},
@@ -54,6 +55,10 @@ public:
             {"samples", "samples per pixel and light along [0, d]", 64, 1, 65536, true},
             {"jitter", "1: one stratified random offset per sample interval; 0: interval midpoints", 0, 0, 1, true},
             {"exact", "1: integrate the unshadowed airlight exactly over each sample's interval", 0, 0, 1, true},
+            {"closed_form",
+             "exact=1, point and spot lights: stable (pointSegment) or naive (teaching only: Sun et al.'s textbook "
+             "A0 [F(A1, xi1) - F(A1, xi0)], isotropic, fails in thick media)",
+             0, 0, 1, true, {"stable", "naive"}},
             {"seed", "jitter seed", 1, 0, 1e9, true},
             {"shadow_lookup", "nearest: nearest texel with bias; mesh: depth linear across polyvol's triangles",
              0, 0, 1, true, {"nearest", "mesh"}},
@@ -64,7 +69,7 @@ public:
             render::SceneViewPasses::shadowStage("raymarch"),
             render::SceneViewPasses::surfaceStage("raymarch"),
             {kStageMarch, "Ray march", "N shadow-map tests per ray and light, summed into L_air",
-             {"samples", "jitter", "exact", "seed", "shadow_lookup", "force_features"}, {kAirlight, kLitFraction}, 1},
+             {"samples", "jitter", "exact", "closed_form", "seed", "shadow_lookup", "force_features"}, {kAirlight, kLitFraction}, 1},
             render::SceneViewPasses::composeStage("raymarch"),
         };
     }
@@ -121,6 +126,12 @@ public:
         p.features.push_back({"EXACT", exact,
                               exact ? "analytic unshadowed segment per sample interval (airlight.glsl pointSegment)"
                                     : "exact=0: midpoint rule of the integrand"});
+        // Teaching mode only (lesson 1): never in qualitySweep() or stiffSettings(), off by default.
+        const bool naive = exact && settings.at("closed_form") != 0.0;
+        p.features.push_back({"NAIVE_CLOSED_FORM", naive,
+                              naive ? "TEACHING MODE, wrong on purpose: Sun et al.'s closed form evaluated as printed "
+                                      "(isotropic; cancels and overflows in thick media, NaN on a ray through the light)"
+                                    : "closed_form=stable (or exact=0): the stable anchored form of airlight.glsl"});
         p.features.push_back({"JITTER", jitter, jitter ? "stratified offsets" : "jitter=0: interval midpoints"});
         p.features.push_back({"SPOT", hasSpot, hasSpot ? "spot falloff A_spot" : "no spot light in the scene"});
         p.features.push_back({"COOKIE", hasCookie, hasCookie ? "cookie texture" : "no light has a cookie"});
