@@ -46,7 +46,9 @@ void writeImage(const Image& image, const std::string& path, float exposure) {
         spec.attribute("compression", "zip");
         ok = out->open(tmp, spec) && out->write_image(OIIO::TypeDesc::FLOAT, image.pixels.data());
     } else {
-        const int channels = image.channels == 2 ? 1 : image.channels;
+        // PNG is for looking at: the first channel alone (grey) or RGB. A fourth channel is data in our
+        // images (a mask channel, a count), not opacity: written as alpha it made pixels transparent.
+        const int channels = image.channels < 3 ? 1 : 3;
         std::vector<std::uint8_t> bytes(static_cast<std::size_t>(image.width) * std::size_t(image.height) *
                                         std::size_t(channels));
         for (int y = 0; y < image.height; ++y)
@@ -54,8 +56,7 @@ void writeImage(const Image& image, const std::string& path, float exposure) {
                 for (int c = 0; c < channels; ++c) {
                     const float v = image.at(x, y, c);
                     bytes[(std::size_t(y) * std::size_t(image.width) + std::size_t(x)) * std::size_t(channels) +
-                          std::size_t(c)] = c == 3 ? static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f))
-                                                   : encodeSrgb8(v * exposure);
+                          std::size_t(c)] = encodeSrgb8(v * exposure);
                 }
         OIIO::ImageSpec spec(image.width, image.height, channels, OIIO::TypeDesc::UINT8);
         ok = out->open(tmp, spec) && out->write_image(OIIO::TypeDesc::UINT8, bytes.data());

@@ -9,7 +9,8 @@
 namespace viz {
 
 // EXR: 32-bit float, linear, the image's channels (RGB for 3). PNG: 8-bit sRGB after `exposure`
-// (a scale on linear values) and clamping; one channel images are written grey. Throws InputError on an
+// (a scale on linear values) and clamping, RGB (a fourth channel is dropped: it is data, not opacity);
+// one- and two-channel images are written grey from their first channel. Throws InputError on an
 // unsupported extension or an unwritable path.
 void writeImage(const Image& image, const std::string& path, float exposure = 1.0f);
 
