@@ -1524,6 +1524,9 @@ private:
                     mScene.lights[0].intensity = intensity;
                     sceneChanged = true;
                 }
+            }
+            // Folded by default: the technique's parameters stay in view on small windows.
+            if (!mScene.lights.empty() && mUi->collapsingHeader("Light placement", false)) {
                 sceneChanged = lightPlacementWidgets(mScene.lights[0]) || sceneChanged;
             }
             if (mUi->collapsingHeader(technique().id() + " parameters", true)) parameterWidgets();

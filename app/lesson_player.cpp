@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "ray_inspection.h"
 #include "techniques/registry.h"
 
 namespace airlight {
@@ -279,12 +280,11 @@ void LessonPlayer::applyStep(LessonHost& host) {
         if (w.inspect && (w.inspect->x >= w.size.x || w.inspect->y >= w.size.y))
             throw viz::InputError("inspect (" + std::to_string(w.inspect->x) + ", " + std::to_string(w.inspect->y) +
                                   ") is outside the " + std::to_string(w.size.x) + "x" + std::to_string(w.size.y) + " image");
+        // Inspecting a pixel points the technique's per-ray views at it (pick_x, pick_y): part of the step.
+        if (w.inspect) (void)pickPixel(*technique, w.settings, *w.inspect);
         if (s->animation.kind == LessonAnimation::Kind::Substeps) {
-            const viz::StageInfo& st = stages[std::size_t(w.stage)];
-            mSubstepParam = st.substepParam;
-            mSubstepCount = st.substeps;
-            if (!st.substepCountParam.empty() && w.settings.count(st.substepCountParam))
-                mSubstepCount = int(w.settings.at(st.substepCountParam));
+            mSubstepParam = stages[std::size_t(w.stage)].substepParam;
+            mSubstepValues = technique->substepValues(w.stage, w.settings);
         }
         if (s->animation.kind == LessonAnimation::Kind::LightOrbit) {
             if (w.lights.empty()) throw viz::InputError("light orbit: the scene has no light");
@@ -311,10 +311,11 @@ void LessonPlayer::animate(LessonHost& host) {
     const LessonStep* s = step();
     if (!s || !mWanted || s->animation.kind == LessonAnimation::Kind::None) return;
     const double t = std::clamp(mTime / s->animation.seconds, 0.0, 1.0);
-    if (s->animation.kind == LessonAnimation::Kind::Substeps && !mSubstepParam.empty() && mSubstepCount > 0) {
-        // Sub-step k of N for the k-th Nth of the time; the end shows them all (the parameter's 0).
-        const int k = std::clamp(1 + int(t * double(mSubstepCount)), 1, mSubstepCount);
-        host.setLessonSetting(mSubstepParam, t >= 1.0 || k == mSubstepCount ? 0.0 : double(k));
+    if (s->animation.kind == LessonAnimation::Kind::Substeps && !mSubstepParam.empty() && !mSubstepValues.empty()) {
+        // Sub-step k of N for the k-th Nth of the time; the end shows them all (the last value).
+        const int count = int(mSubstepValues.size());
+        const int k = t >= 1.0 ? count : std::clamp(1 + int(t * double(count)), 1, count);
+        host.setLessonSetting(mSubstepParam, mSubstepValues[std::size_t(k - 1)]);
     } else if (s->animation.kind == LessonAnimation::Kind::LightOrbit && !mWanted->lights.empty()) {
         host.setLessonLight(orbitLight(mWanted->lights[0], mOrbitCentre, t));
     }
@@ -552,9 +553,10 @@ void LessonPlayer::draw(viz::ui::Context& ui, DrawList& dl, DrawList& background
         const float fraction = float(std::clamp(mTime / s.animation.seconds, 0.0, 1.0));
         std::string progress = "animation: " + describeAnimation(s.animation);
         if (!mMatches) progress = "the animation plays on the step's state (B)";
-        if (!mSubstepParam.empty() && mSubstepCount > 0)
-            progress += ", " + std::to_string(std::clamp(1 + int(fraction * float(mSubstepCount)), 1, mSubstepCount)) + "/" +
-                        std::to_string(mSubstepCount);
+        const int count = int(mSubstepValues.size());
+        if (!mSubstepParam.empty() && count > 0)
+            progress += ", " + std::to_string(fraction >= 1.0f ? count : std::clamp(1 + int(fraction * float(count)), 1, count)) +
+                        "/" + std::to_string(count);
         dl.textClipped({left, y}, progress, kDim, area.max.x - pad);
         y += line;
         dl.rect({{left, y + scale}, {left + width, y + 4.0f * scale}}, kRule);

@@ -128,8 +128,8 @@ private:
     std::string mShownView;  // the window's right-hand view at the last update
     // The scene's own camera, medium and lights, captured when the player loaded it.
     std::optional<LessonWindowState> mBase;
-    std::string mSubstepParam;  // a substeps animation: the parameter and the sub-step count
-    int mSubstepCount = 0;
+    std::string mSubstepParam;          // a substeps animation: the parameter and its value per sub-step
+    std::vector<double> mSubstepValues;  // (Technique::substepValues; the last one runs the stage whole)
     glm::dvec3 mOrbitCentre{0.0};
 
     bool mPlaying = false;

@@ -31,9 +31,15 @@ layout(std430, binding = 5) readonly buffer InQuads { uint inQuads[]; };
 layout(std430, binding = 6) writeonly buffer OutQuads { uint outQuads[]; };
 layout(std430, binding = 7) writeonly buffer Keys { uint keys[]; };
 
+// Whether quad q of `level` is split in this run: flagged, and above the stepping stop (a quad at or
+// below uStopLevel stays a leaf, so its neighbours must not add midpoints on their shared edge). The
+// ring on the grid border is refined to the finest level whatever the stop: the closure to the light
+// (or the cap) meets the grid at every border texel, and a coarser border would leave T-junctions.
 bool isSplit(ivec2 q, int level) {
     int quads = uMapSize >> level;
     if (level == 0 || any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, ivec2(quads)))) return false;
+    bool border = q.x == 0 || q.y == 0 || q.x == quads - 1 || q.y == quads - 1;
+    if (level <= uStopLevel && !border) return false;
     return (texelFetch(uFlags, q, level).r & 2u) != 0u;
 }
 
@@ -51,7 +57,7 @@ void main() {
         uint code = inQuads[index];
         q = ivec2(code & 0xFFFFu, code >> 16);
     }
-    if (uLevel > uStopLevel && isSplit(q, uLevel)) {
+    if (isSplit(q, uLevel)) {
         uint base = atomicAdd(outCount, 4u);
         if (base + 4u > uListCapacity) {
             atomicAdd(overflow, 1u);

@@ -133,9 +133,11 @@ frames 1
 // The light panel moves and turns the first light: a spot's elevation slider at a quarter of its range
 // points it 45 degrees down, its position drag is there, and the technique runs with the moved light.
 TEST_F(GuiCli, TheLightPanelTurnsTheLight) {
-    // The medium section folded so the light section fits the panel at the window size of the tests.
+    // The medium and light sections folded so the placement section fits the panel at the tests' window size.
     const fs::path script =
-        writeText("light.txt", "frames 2\nclick Medium\nframes 1\nclick \"direction elevation (deg)\" 0.25 0.5\nframes 2\n");
+        writeText("light.txt", "frames 2\nclick Medium\nframes 1\nclick \"Light: spot\"\nframes 1\n"
+                               "click \"Light placement\"\nframes 1\n"
+                               "click \"direction elevation (deg)\" 0.25 0.5\nframes 2\n");
     const RunResult r = run("gui --scene grate --technique raymarch --size 40x30 --set samples=16 --script " +
                             script.string() + " --screenshot " + path("light.png").string());
     ASSERT_EQ(r.exitCode, 0) << r.err;
