@@ -46,6 +46,8 @@
 #include "platform/window_glfw.h"
 #include "render_job.h"
 #include "scene/scene_source.h"
+#include "scene/stiff_scenes.h"
+#include "scene/builtin_scenes.h"
 #include "session_state.h"
 #include "techniques/registry.h"
 #include "plot/plot.h"
@@ -335,6 +337,16 @@ public:
     }
 
     // Runs actions until one needs frames to pass; false when the script is done.
+    // A widget named by a script action is scrolled into view first, as a user would: the request is
+    // served on the next frame and the new rectangle known the frame after. Returns true while waiting.
+    bool revealScriptTarget(const ScriptAction& a) {
+        if (mScriptRevealFrames > 0) return --mScriptRevealFrames > 0;  // 0: revealed, go on
+        if (!mUi->widgetRects().count(a.target)) return false;
+        mUi->reveal(a.target);
+        mScriptRevealFrames = 2;
+        return true;
+    }
+
     bool stepScript() {
         while (mScriptIndex < mOptions.script.size()) {
             const ScriptAction& a = mOptions.script[mScriptIndex];
@@ -349,6 +361,7 @@ public:
                     ++mScriptIndex;
                     return true;
                 case ScriptAction::Kind::Hover: {
+                    if (revealScriptTarget(a)) return true;
                     const Rect r = scriptTarget(a);
                     mHover = r.min + a.fraction * r.size();
                     ++mScriptIndex;
@@ -361,6 +374,7 @@ public:
                 case ScriptAction::Kind::Click: {
                     // Frame 1: move there and press; frame 2: release (widgets click on release).
                     if (!mSyntheticDown) {
+                        if (revealScriptTarget(a)) return true;
                         const Rect r = scriptTarget(a);
                         mScriptPoint = r.min + a.fraction * r.size();
                         mHover = mScriptPoint;
@@ -1505,6 +1519,7 @@ private:
         mUi->beginFrame(in, glm::vec2(fb), mScale);
         if (mParamsRect.size().y > 0.0f) {
             mUi->beginPanel("Scene and parameters", mParamsRect);
+            scenePicker();
             bool sceneChanged = false;
             if (mUi->collapsingHeader("Medium", true)) {
                 // Values change only when a widget reports a change, so the scene keeps its exact doubles.
@@ -1538,6 +1553,41 @@ private:
         }
         if (mLesson) mLesson->draw(*mUi, *mDrawList, *mBackground, mScale);
         mUi->endFrame();
+    }
+
+    // The scene pickers: the built-in scenes (and the file given on the command line, if any) in one
+    // list, the stiff cases of `airlight report --suite stiff` in another (one long list would not fit
+    // the window). Picking one loads it with its own camera, medium and lights; a scene that fails to
+    // load leaves the current one and shows the error.
+    void scenePicker() {
+        if (mSceneChoices.empty()) {
+            mSceneChoices = viz::scene::builtinSceneNames();
+            mStiffChoices = {"(none)"};
+            for (const auto& c : viz::scene::stiffCases()) mStiffChoices.push_back("stiff/" + c.id);
+        }
+        const bool stiff = mOptions.scene.rfind("stiff/", 0) == 0;
+        std::vector<std::string> scenes = mSceneChoices;
+        if (!stiff && std::find(scenes.begin(), scenes.end(), mOptions.scene) == scenes.end())
+            scenes.push_back(mOptions.scene);
+        int sceneIndex = stiff ? -1 : int(std::find(scenes.begin(), scenes.end(), mOptions.scene) - scenes.begin());
+        std::string picked;
+        if (mUi->combo("scene", sceneIndex, scenes)) picked = scenes[std::size_t(sceneIndex)];
+        mUi->tooltip("the built-in scenes (and a glTF file given with --scene)");
+        int stiffIndex = 0;
+        if (stiff) {
+            const auto at = std::find(mStiffChoices.begin(), mStiffChoices.end(), mOptions.scene);
+            stiffIndex = at == mStiffChoices.end() ? 0 : int(at - mStiffChoices.begin());
+        }
+        if (mUi->combo("stiff case", stiffIndex, mStiffChoices) && stiffIndex > 0)
+            picked = mStiffChoices[std::size_t(stiffIndex)];
+        mUi->tooltip("the stiff and extreme cases (README: Stiff and extreme cases)");
+        if (picked.empty() || picked == mOptions.scene) return;
+        try {
+            loadLessonScene(picked);
+            replan();
+        } catch (const std::exception& e) {
+            mError = e.what();
+        }
     }
 
     // Where the light points and where it is: azimuth and elevation of the direction for spot and
@@ -1624,6 +1674,8 @@ private:
     }
 
     GuiOptions mOptions;
+    int mScriptRevealFrames = 0;  // frames left until a script action's widget is scrolled into view
+    std::vector<std::string> mSceneChoices, mStiffChoices;  // the scene pickers' lists (built lazily)
     SessionState mSession;  // as loaded (or defaults); settings of techniques not yet visited come from it
     std::string mNotice;    // last session message, shown in the status line
     viz::scene::Scene mScene;  // the camera follows the controller

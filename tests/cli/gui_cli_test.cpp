@@ -133,10 +133,9 @@ frames 1
 // The light panel moves and turns the first light: a spot's elevation slider at a quarter of its range
 // points it 45 degrees down, its position drag is there, and the technique runs with the moved light.
 TEST_F(GuiCli, TheLightPanelTurnsTheLight) {
-    // The medium and light sections folded so the placement section fits the panel at the tests' window size.
+    // (A script scrolls the panel to the widget it clicks, as a user would.)
     const fs::path script =
-        writeText("light.txt", "frames 2\nclick Medium\nframes 1\nclick \"Light: spot\"\nframes 1\n"
-                               "click \"Light placement\"\nframes 1\n"
+        writeText("light.txt", "frames 2\nclick \"Light placement\"\nframes 1\n"
                                "click \"direction elevation (deg)\" 0.25 0.5\nframes 2\n");
     const RunResult r = run("gui --scene grate --technique raymarch --size 40x30 --set samples=16 --script " +
                             script.string() + " --screenshot " + path("light.png").string());
@@ -147,6 +146,22 @@ TEST_F(GuiCli, TheLightPanelTurnsTheLight) {
     const double x = d[0].get<double>(), y = d[1].get<double>(), z = d[2].get<double>();
     EXPECT_NEAR(std::sqrt(x * x + y * y + z * z), 1.0, 1e-9);
     EXPECT_NEAR(y, -std::sqrt(0.5), 0.03) << "45 degrees below the horizon (pixel rounding aside)";
+}
+
+// The scene pickers load a built-in scene or a stiff case with its own camera and medium.
+TEST_F(GuiCli, TheScenePickersLoadABuiltinSceneAndAStiffCase) {
+    const fs::path script = writeText("pick.txt", "frames 1\nclick scene\nframes 1\nclick \"scene/colonnade\"\nframes 2\n"
+                                                  "screenshot " + path("picked.png").string() + "\n"
+                                                  "click \"stiff case\"\nframes 1\nclick \"stiff case/stiff/extinction-50\"\n"
+                                                  "frames 2\n");
+    const RunResult r = run("gui --scene grate --technique raymarch --size 40x30 --set samples=16 --script " +
+                            script.string() + " --screenshot " + path("stiff.png").string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const nlohmann::json picked = nlohmann::json::parse(readFile(path("picked.json")));
+    EXPECT_EQ(picked.at("scene"), "colonnade");
+    const nlohmann::json stiff = nlohmann::json::parse(readFile(path("stiff.json")));
+    EXPECT_EQ(stiff.at("medium").at("sigma_s").get<double>() + stiff.at("medium").at("sigma_a").get<double>(), 50.0)
+        << "extinction 50 per unit";
 }
 
 TEST_F(GuiCli, TheRayInspectorShowsTheValuesAirlightRenderGivesAtThatPixel) {

@@ -140,6 +140,10 @@ void Context::endPanel() {
     const float maxScroll = std::max(0.0f, content - visible);
     float s = scroll(p.id);
     if (contains(p.area, mInput.mouse) && mInput.wheel != 0.0f) s -= mInput.wheel * rowHeight() * 3.0f;
+    if (const auto it = mRevealBy.find(p.id); it != mRevealBy.end()) {
+        s += it->second;
+        mRevealBy.erase(it);
+    }
     mScroll[p.id] = std::clamp(s, 0.0f, maxScroll);
     if (maxScroll > 0.0f) {
         // A thin bar shows where the view is in the content.
@@ -176,6 +180,14 @@ Context::Interaction Context::interact(Id id, const Rect& rect, std::string_view
     mLastRect = rect;
     mLastId = id;
     if (!label.empty()) mRects[std::string(label)] = rect;
+    if (!mReveal.empty() && label == mReveal && !mInPopup) {  // a popup list is placed, not scrolled
+        if (!mPanels.empty()) {
+            const Panel& p = mPanels.back();
+            if (rect.min.y < p.contentTop) mRevealBy[p.id] = rect.min.y - p.contentTop;
+            else if (rect.max.y > p.area.max.y) mRevealBy[p.id] = rect.max.y - p.area.max.y;
+        }
+        mReveal.clear();
+    }
     if (focusable) mFocusOrder.push_back(id);
     // Hidden by scrolling (outside the panel's clip) or under last frame's open popup: not hoverable.
     bool visible = true;

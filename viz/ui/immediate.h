@@ -101,6 +101,9 @@ public:
     Id lastId() const { return mLastId; }
     // The rectangle of every widget drawn this frame, by its full label (automation clicks at names).
     const std::map<std::string, Rect>& widgetRects() const { return mRects; }
+    // Scrolls the panel holding the widget `label` so the widget is in view (on the next frame's pass;
+    // its new rectangle is known the frame after). For automation and keyboard focus.
+    void reveal(std::string label) { mReveal = std::move(label); }
     const Style& style() const { return mStyle; }
     Style& style() { return mStyle; }
     // Seconds since beginFrame was first called with time (tooltips); tests advance it explicitly.
@@ -158,6 +161,8 @@ private:
 
     std::map<Id, bool> mOpen;         // collapsing headers and combo popups
     std::map<Id, float> mScroll;      // panels
+    std::string mReveal;              // a widget to scroll into view (reveal)
+    std::map<Id, float> mRevealBy;    // scroll change a panel owes to reveal, applied at endPanel
     std::map<Id, std::size_t> mCaret; // text inputs: caret byte position
     Id mHoverId = 0;                  // tooltip: widget hovered and since when
     double mHoverSince = 0.0;
