@@ -1,10 +1,11 @@
-// The window: one GLFW window with the final frame (left pane) beside one chosen view (right pane, or
-// the comparison grid), a clickable technique list, a view list, a status line with the stage shown,
-// per-stage timings and the plan's skipped stages, the ray inspector or timing bars under the final
-// frame, the scene and parameter panel (immediate-mode widgets) under the view, and an orbit/fly
-// camera. GPU techniques run on the main thread whenever the camera, the settings or the technique
-// change; CPU techniques (the reference) run on a worker thread in progressive passes (1/4, 1/2, then
-// full resolution) so the window never freezes.
+// The window: one GLFW window with a grid of views the user arranges (the final frame, L_air and any
+// intermediate; split, close, swap, maximise; linked cursors; per-view display strips and difference
+// views; app/view_layout.h, view_state.h) or the comparison grid, a clickable technique list, a views
+// list (what the focused view shows), a status line with the stage shown, per-stage timings and the
+// plan's skipped stages, the ray inspector or timing bars under the grid, the scene and parameter panel
+// (immediate-mode widgets) beside them, and an orbit/fly camera. GPU techniques run on the main thread
+// whenever the camera, the settings or the technique change; CPU techniques (the reference) run on a
+// worker thread in progressive passes (1/4, 1/2, then full resolution) so the window never freezes.
 #include "gui.h"
 
 #include <epoxy/gl.h>
@@ -49,6 +50,9 @@
 #include "scene/stiff_scenes.h"
 #include "scene/builtin_scenes.h"
 #include "session_state.h"
+#include "view_layout.h"
+#include "view_state.h"
+#include "view_stats.h"
 #include "techniques/registry.h"
 #include "plot/plot.h"
 #include "report/error_metrics.h"
@@ -81,6 +85,8 @@ constexpr float kExposureStep = 0.5f;  // stops per +/- key press
 constexpr double kOrbitRadiansPerPixel = 0.008;
 constexpr double kLookRadiansPerPixel = 0.004;
 constexpr double kFlySpeed = 0.6;  // target distances per second
+constexpr float kStripSideBySide = 460.0f;  // a view at least this wide has its histogram beside the widgets
+constexpr float kHistogramHeight = 110.0f;
 
 // ---- settings ----
 
@@ -259,8 +265,7 @@ public:
         glfwSetCursorPosCallback(mWindow.handle(), nullptr);
         glfwSetScrollCallback(mWindow.handle(), nullptr);
         // Panes may borrow the techniques' textures: drop them first.
-        mFinal = {};
-        mRight = {};
+        mViews.clear();
         mCompare.clear();
         mOutput = {};
         mTechniques.clear();
@@ -270,7 +275,7 @@ public:
         auto last = Clock::now();
         while (!mWindow.shouldClose()) {
             const bool flying = mController.mode() == CameraController::Mode::Fly && anyFlyKeyDown();
-            const bool busy = mWorker->progress().busy;
+            const bool busy = mWorker->progress().busy || otherPending();
             const bool automated = !mOptions.screenshot.empty() || !mOptions.script.empty();
             if (flying || mDirty || automated || (mLesson && mLesson->animating())) {
                 glfwPollEvents();
@@ -302,15 +307,17 @@ public:
                 inspectPixel(mPendingInspect->x, mPendingInspect->y);
                 mPendingInspect.reset();
             }
+            pollOtherWorker();
             draw();
             ++mFramesDrawn;
             if (!mOptions.script.empty()) {
                 // Each frame runs the script's next actions; the window closes when it is done.
-                if (mHaveOutput && !mWorker->progress().busy && !stepScript()) {
+                if (mHaveOutput && !mWorker->progress().busy && !otherPending() && !stepScript()) {
                     if (!mOptions.screenshot.empty()) writeScreenshot(mOptions.screenshot);
                     return 0;
                 }
-            } else if (automated && mFramesDrawn >= mOptions.frames && mHaveOutput && !mWorker->progress().busy) {
+            } else if (automated && mFramesDrawn >= mOptions.frames && mHaveOutput && !mWorker->progress().busy &&
+                       !otherPending()) {
                 writeScreenshot(mOptions.screenshot);
                 return 0;
             }
@@ -412,8 +419,12 @@ public:
                 }
         viz::writeImage(image, path);
         nlohmann::json views = nlohmann::json::array();
-        for (const auto& v : mViewRects)
-            views.push_back({{"name", v.name}, {"title", v.title}, {"rect", {v.rect.min.x, v.rect.min.y, v.rect.max.x, v.rect.max.y}}});
+        for (const auto& v : mViewRects) {
+            nlohmann::json entry = {{"name", v.name}, {"title", v.title},
+                                    {"rect", {v.rect.min.x, v.rect.min.y, v.rect.max.x, v.rect.max.y}}};
+            if (v.cell >= 0 && mViews.count(v.cell)) entry.update(viewSidecar(v.cell, mViews.at(v.cell)));
+            views.push_back(entry);
+        }
         nlohmann::json sidecar = {{"window", {fb.x, fb.y}},
                                         {"scale", mScale},
                                         {"scene", mScene.name},
@@ -434,6 +445,12 @@ public:
                                   {"intensity", l.intensity}});
             sidecar["lights"] = lights;
         }
+        sidecar["view_grid"] = {{"layout", mLayout.toText()}, {"focused", mFocused},
+                                {"maximised", mLayout.maximised()},
+                                {"cpu_ms_last_frame", mGridMilliseconds},
+                                {"ui_cpu_ms_last_frame", mUiMilliseconds},
+                                {"linked_pixel", mLinkedPixel ? nlohmann::json::array({mLinkedPixel->x, mLinkedPixel->y})
+                                                              : nlohmann::json(nullptr)}};
         if (!mCompare.empty()) {
             nlohmann::json tiles = nlohmann::json::array();
             for (const auto& t : mCompare)
@@ -496,9 +513,26 @@ private:
         for (const auto& [name, value] : mSettings)
             if (!defaults.count(name) || defaults.at(name) != value) changed[name] = value;
         s.settings[s.technique] = changed;
-        s.view = mViewId;
-        s.viewZoom = mRightView.zoom;
-        s.viewCenter = mRightView.center;
+        // The first view in reading order that is not the final frame, for files read by older builds.
+        s.view = "airlight";
+        for (int id : mLayout.views())
+            if (mViews.at(id).content != "final") {
+                s.view = mViews.at(id).content;
+                s.viewZoom = mViews.at(id).transform.zoom;
+                s.viewCenter = mViews.at(id).transform.center;
+                break;
+            }
+        s.layout = mLayout.toText();
+        s.focusedView = mFocused;
+        s.maximisedView = mLayout.maximised();
+        s.gridViews.clear();
+        for (int id : mLayout.views()) {
+            const ViewState& v = mViews.at(id);
+            const DisplaySettings& d = v.display;
+            s.gridViews.push_back({id, v.content, v.layer, v.transform.zoom, v.transform.center, int(d.channel),
+                                   int(d.range), int(d.colourMap), int(d.difference), d.manualMin, d.manualMax,
+                                   d.markNegative, d.logScale, d.stripOpen, d.against});
+        }
         s.exposure = mExposure;
         s.exposureSet = mExposureSet;
         s.lesson.clear();
@@ -573,7 +607,7 @@ private:
         s.size = {mOptions.width, mOptions.height};
         s.settings = mSettings;
         s.stage = stageShown();
-        s.view = mViewId;
+        s.view = mViews.count(mFocused) ? mViews.at(mFocused).content : std::string("airlight");
         s.inspect = mPendingInspect;
         if (mProbe) s.inspect = glm::ivec2(mProbe->x, mProbe->y);
         s.camera = mController.camera();
@@ -604,19 +638,22 @@ private:
         mSettingsError.clear();
         mStopAfter = s.stage;
         replan();
-        mViewId = s.view;
-        mLayer = 0;
-        mRightView.fit();
+        showInFocusedView(s.view);
         mProbe.reset();
         mPendingInspect = s.inspect;
         mExposureSet = false;
         mCompare.clear();
     }
 
-    void showLessonView(const std::string& id) override {
-        mViewId = id;
-        mLayer = 0;
-        refreshPanes();
+    void showLessonView(const std::string& id) override { showInFocusedView(id); }
+
+    // A lesson's view goes to the focused view of the grid (the right-hand one by default).
+    void showInFocusedView(const std::string& id) {
+        ViewState& v = focusedView();
+        v.content = id;
+        v.layer = 0;
+        v.transform.fit();
+        refreshView(v);
     }
 
     void setLessonSetting(const std::string& name, double value) override {
@@ -636,10 +673,7 @@ private:
     // Camera, view and exposure of the session (the scene, medium and technique are applied before).
     void applySessionView() {
         if (mSession.camera) mController.place(*mSession.camera, mSession.orbitTarget);
-        mViewId = mSession.view;
-        mRightView.zoom = mSession.viewZoom;
-        mRightView.center = mSession.viewCenter;
-        mRightView.clampCenter();
+        applySessionGrid();
         mExposure = mSession.exposure;
         mExposureSet = mSession.exposureSet;
         mDirty = true;
@@ -705,7 +739,9 @@ private:
             const glm::vec2 at = area.min + glm::vec2(float(i % cols), float(i / cols)) * cell;
             const Rect box{at + pad, at + cell - glm::vec2(pad, pad + 2.0f * line)};
             const Rect image = fitImage(box, tile.pane.size);
-            mPaneDraws.push_back({image, &tile.pane, nullptr, mCompareExposure});
+            DisplayMapping shared;
+            shared.exposure = mCompareExposure;
+            mPaneDraws.push_back({image, &tile.pane, nullptr, shared});
             std::string caption = tile.technique;
             std::string figures = tile.failure.empty()
                 ? (tile.technique == "reference" ? std::string("ground truth")
@@ -734,12 +770,13 @@ private:
 
     // E: the intermediate view as EXR (its float values) and PNG (as shown: exposure or range mapping).
     void exportView() {
-        if (!mHaveOutput || mRight.texture == 0) {
+        const PaneImage& pane = focusedView().pane;
+        if (!mHaveOutput || pane.texture == 0) {
             mNotice = "nothing to export: the view holds no image";
             return;
         }
-        viz::Image values = viz::gl::readTexture(mRight.texture);  // rows flipped: GL row 0 is the bottom
-        if (!mRight.flipY) {
+        viz::Image values = viz::gl::readTexture(pane.texture);  // rows flipped: GL row 0 is the bottom
+        if (!pane.flipY) {
             // Uploaded CPU images keep row 0 at the top in GL too: undo readTexture's flip.
             viz::Image flipped = values;
             for (int y = 0; y < values.height; ++y)
@@ -747,12 +784,13 @@ private:
                     for (int c = 0; c < values.channels; ++c) flipped.at(x, y, c) = values.at(x, values.height - 1 - y, c);
             values = std::move(flipped);
         }
-        const std::string stem = exportStem(mRight.id.empty() ? "view" : mRight.id);
+        const std::string stem = exportStem(pane.id.empty() ? "view" : pane.id);
         try {
             viz::writeImage(values, stem + ".exr");
-            const bool colour = mRight.mode == DisplayMode::HdrColor || mRight.mode == DisplayMode::RangeColor;
-            if (colour) viz::writeImage(values, stem + ".png", std::exp2(mExposure));
-            else viz::writeImage(viz::toDisplay(values, mRight.rangeMin, mRight.rangeMax), stem + ".png");
+            const DisplayMapping m = resolveMapping(pane, focusedView().display, mExposure, focusedView().measured);
+            const bool colour = m.mode == DisplayMode::HdrColor || m.mode == DisplayMode::RangeColor;
+            if (colour) viz::writeImage(values, stem + ".png", std::exp2(m.exposure));
+            else viz::writeImage(viz::toDisplay(values, m.lo, m.hi), stem + ".png");
             mNotice = "exported " + stem + ".exr and .png";
         } catch (const viz::InputError& e) {
             mNotice = e.what();
@@ -804,10 +842,14 @@ private:
     void inspectPixelUnderCursor() {
         mProbe.reset();
         mPendingInspect.reset();
-        if (!mFinalRect.contains(mHover) || mOptions.width < 1) return;
-        const glm::vec2 uv = (mHover - mFinalRect.min) / mFinalRect.size();
-        inspectPixel(std::clamp(int(uv.x * float(mOptions.width)), 0, mOptions.width - 1),
-                     std::clamp(int(uv.y * float(mOptions.height)), 0, mOptions.height - 1));
+        // The cursor over any screen-space view (final, L_air, a frame-sized intermediate) picks the pixel.
+        if (mHoveredView < 0 || !mViews.count(mHoveredView) || mOptions.width < 1) return;
+        const ViewState& hovered = mViews.at(mHoveredView);
+        if (!isScreenSpace(hovered) || !hovered.image.contains(mHover)) return;
+        const glm::dvec2 uv = hovered.transform.paneToUv(glm::dvec2((mHover - hovered.image.min) / hovered.image.size()));
+        const int x = std::clamp(int(uv.x * double(mOptions.width)), 0, mOptions.width - 1);
+        const int y = std::clamp(int(uv.y * double(mOptions.height)), 0, mOptions.height - 1);
+        inspectPixel(x, y);
     }
 
     void inspectPixel(int x, int y) {
@@ -887,11 +929,12 @@ private:
         if (plotArea.size().y > 4.0f * line) viz::plot::drawPlot(dl, plotArea, spec);
     }
 
-    // A cross on the inspected pixel of the final image.
-    void markProbe(DrawList& dl) {
-        if (!mProbe || mOptions.width < 1) return;
-        const glm::vec2 c = mFinalRect.min + (glm::vec2(float(mProbe->x), float(mProbe->y)) + 0.5f) /
-                                                 glm::vec2(float(mOptions.width), float(mOptions.height)) * mFinalRect.size();
+    // A cross on the inspected pixel in a screen-space view.
+    void markProbe(DrawList& dl, const ViewState& v) {
+        if (!mProbe || mOptions.width < 1 || !isScreenSpace(v)) return;
+        const glm::dvec2 uv = (glm::dvec2(mProbe->x, mProbe->y) + 0.5) / glm::dvec2(mOptions.width, mOptions.height);
+        const glm::vec2 c = v.image.min + glm::vec2(v.transform.uvToPane(uv)) * v.image.size();
+        if (!v.image.contains(c)) return;
         const float r = 6.0f * mScale;
         dl.line({c.x - r, c.y}, {c.x + r, c.y}, 2.0f * mScale, {1.0f, 0.2f, 0.8f, 1.0f});
         dl.line({c.x, c.y - r}, {c.x, c.y + r}, 2.0f * mScale, {1.0f, 0.2f, 0.8f, 1.0f});
@@ -900,6 +943,7 @@ private:
     // ---- techniques and rendering ----
 
     viz::Technique& technique() { return *mTechniques.at(mIds[std::size_t(mCurrent)]); }
+    const viz::Technique& technique() const { return *mTechniques.at(mIds[std::size_t(mCurrent)]); }
 
     void selectTechnique(int index) {
         const int n = int(mIds.size());
@@ -926,8 +970,7 @@ private:
             mError = e.what();
         }
         // The previous technique's frame does not belong to this one.
-        mFinal = {};
-        mRight = {};
+        clearPanes();
         mOutput = {};
         mHaveOutput = false;
         mPass = 0;
@@ -959,7 +1002,7 @@ private:
             input.height /= 2;
         }
         // Panes borrow textures the run is about to replace.
-        mRight = {};
+        clearPanes();
         const auto start = Clock::now();
         try {
             mOutput = t.run(input);
@@ -994,68 +1037,383 @@ private:
         refreshPanes();
     }
 
-    // Number of views the right pane cycles through: the airlight image, then every intermediate.
-    int viewCount() const { return 1 + int(mOutput.intermediates.size()); }
+    // ---- the view grid: what each view shows ----
+
+    // The other side of a difference view: one technique's images for one scene, camera and size.
+    struct OtherRun {
+        std::string key;  // scene, camera, size and settings it was run for
+        viz::Image airlight, final;
+        std::string failure;
+        std::string pending;  // a CPU technique: the key of the run the worker computes
+    };
+
+    // Contents in the views list: the final frame, L_air, then every intermediate of the run.
+    int contentCount() const { return 2 + int(mOutput.intermediates.size()); }
+    std::string contentId(int index) const {
+        return index == 0 ? "final" : index == 1 ? "airlight" : mOutput.intermediates[std::size_t(index - 2)].id;
+    }
+    std::string contentLabel(int index) const {
+        return index == 0 ? "Final image" : index == 1 ? "Airlight L_air" : mOutput.intermediates[std::size_t(index - 2)].label;
+    }
+
+    ViewState& focusedView() {
+        if (!mViews.count(mFocused)) mFocused = mLayout.views().front();
+        return mViews[mFocused];
+    }
+
+    void clearPanes() {
+        mMarkerCache.clear();
+        for (auto& [id, v] : mViews) {
+            v.pane = {};
+            v.values = {};
+            updateStatistics(v);
+        }
+    }
+
+    // The default grid: the final frame on the left, `content` on the right (focused).
+    void resetLayout(const std::string& content) {
+        mLayout = ViewLayout(0);
+        mLayout.split(0, SplitAxis::X, 1);
+        mViews.clear();
+        mViews[0].content = "final";
+        mViews[1].content = content.empty() ? "airlight" : content;
+        mFocused = 1;
+        mNextView = 2;
+    }
+
+    // The session's grid, or the default one around its `view`.
+    void applySessionGrid() {
+        resetLayout(mSession.view);
+        mViews[1].transform.zoom = mSession.viewZoom;
+        mViews[1].transform.center = mSession.viewCenter;
+        mViews[1].transform.clampCenter();
+        if (mSession.layout.empty()) return;
+        try {
+            ViewLayout layout = ViewLayout::fromText(mSession.layout);
+            std::map<int, ViewState> views;
+            for (int id : layout.views()) views[id];
+            for (const SessionState::GridView& g : mSession.gridViews) {
+                if (!views.count(g.id)) continue;
+                ViewState& v = views[g.id];
+                v.content = g.content;
+                v.layer = std::max(0, g.layer);
+                v.transform.zoom = g.zoom;
+                v.transform.center = g.center;
+                v.transform.clampCenter();
+                DisplaySettings& d = v.display;
+                d.channel = Channel(g.channel);
+                d.range = RangeMode(g.range);
+                d.colourMap = ColourMap(g.colourMap);
+                d.difference = DifferenceMode(g.difference);
+                d.manualMin = g.manualMin;
+                d.manualMax = g.manualMax;
+                d.logScale = g.logScale;
+                d.markNegative = g.markNegative;
+                d.stripOpen = g.stripOpen;
+                d.against = g.against;
+            }
+            mLayout = std::move(layout);
+            mViews = std::move(views);
+            mFocused = mLayout.contains(mSession.focusedView) ? mSession.focusedView : mLayout.views().front();
+            if (mSession.maximisedView >= 0 && mLayout.contains(mSession.maximisedView))
+                mLayout.toggleMaximise(mSession.maximisedView);
+            mNextView = 0;
+            for (int id : mLayout.views()) mNextView = std::max(mNextView, id + 1);
+        } catch (const std::exception& e) {
+            mNotice = std::string("session view grid: ") + e.what() + "; using the default grid";
+        }
+    }
+
+    // A view of the final frame, L_air or an intermediate the size of the frame: its texels are the
+    // frame's pixels, so cursors link across such views.
+    bool isScreenSpace(const ViewState& v) const {
+        return v.pane.texture != 0 && mOutputSize.x > 0 && v.pane.size == mOutputSize;
+    }
+
+    // Builds the view's pane from the last run (and its difference image in difference mode).
+    void buildPane(ViewState& v) {
+        v.pane = {};
+        v.error.reset();
+        v.differenceNote.clear();
+        v.shown = -1;
+        if (!mHaveOutput) return;
+        const auto& all = mOutput.intermediates;
+        std::string content = v.content;
+        int index = -1;
+        if (content != "final" && content != "airlight") {
+            // Ids may repeat (one shadow map per light): prefer the same position, then the first match.
+            if (v.index >= 0 && v.index < int(all.size()) && all[std::size_t(v.index)].id == content) {
+                index = v.index;
+            } else {
+                for (int i = int(all.size()) - 1; i >= 0; --i)
+                    if (all[std::size_t(i)].id == content) index = i;
+            }
+            if (index < 0) content = "airlight";  // not in this run: L_air (the choice is kept for later runs)
+        }
+        // Stepped to a stage before L_air exists: show what that stage published instead.
+        if (content == "airlight" && mOutput.airlight.empty() && mOutput.lastStageRun >= 0) {
+            const auto& declared = technique().stages()[std::size_t(mOutput.lastStageRun)].intermediates;
+            for (int i = int(all.size()) - 1; i >= 0; --i)
+                if (std::find(declared.begin(), declared.end(), all[std::size_t(i)].id) != declared.end()) index = i;
+            if (index >= 0) content = all[std::size_t(index)].id;
+        }
+        if (index >= 0) v.index = index;
+        if (content == "final") {
+            v.shown = 0;
+            v.pane.id = "final";
+            v.pane.label = "Final image";
+            v.pane.note = "surface radiance * exp(-sigma_t d) + L_air";
+            v.pane.units = "radiance";
+            v.pane.kind = viz::ViewKind::Color;
+            v.pane.mode = DisplayMode::HdrColor;
+            uploadImage(v.pane, mOutput.final);
+        } else if (content == "airlight") {
+            v.shown = 1;
+            v.pane.id = "airlight";
+            v.pane.label = "Airlight L_air";
+            v.pane.note = "in-scattered radiance along each eye ray, before the surface term";
+            v.pane.units = "radiance";
+            v.pane.kind = viz::ViewKind::Color;
+            v.pane.mode = DisplayMode::HdrColor;
+            uploadImage(v.pane, mOutput.airlight);
+        } else {
+            v.shown = index + 2;
+            makePane(v.pane, all[std::size_t(index)], v.layer);
+            v.layer = v.pane.layer;
+        }
+        if (v.display.difference != DifferenceMode::Off && (content == "final" || content == "airlight"))
+            makeDifference(v, content);
+    }
+
+    // Difference mode: this technique's image against the same image of `against` (same scene, camera,
+    // size; that technique's own settings), as a heat map (or blue-white-red when signed), with the
+    // report's error figures in the title.
+    void makeDifference(ViewState& v, const std::string& content) {
+        const DisplaySettings& d = v.display;
+        const viz::Image& mine = content == "final" ? mOutput.final : mOutput.airlight;
+        const OtherRun* other = otherRun(d.against);
+        if (!other) {
+            v.differenceNote = mReduced ? "difference to " + d.against + ": after the interaction"
+                                        : "difference to " + d.against + ": computing it...";
+            return;
+        }
+        if (!other->failure.empty()) {
+            v.differenceNote = d.against + " failed: " + firstLine(other->failure);
+            return;
+        }
+        const viz::Image& theirs = content == "final" ? other->final : other->airlight;
+        if (mine.empty() || theirs.empty() || mine.width != theirs.width || mine.height != theirs.height ||
+            mine.channels != theirs.channels) {
+            v.differenceNote = "difference to " + d.against + ": no image of the same size yet";
+            return;
+        }
+        v.error = viz::report::compareImages(mine, theirs);
+        const viz::Image diff = differenceImage(mine, theirs, d.difference);
+        PaneImage pane;
+        pane.id = v.pane.id;
+        pane.label = v.pane.label + ": " + differenceModeNames()[std::size_t(d.difference)] + ", b = " + d.against;
+        pane.note = d.difference == DifferenceMode::Signed
+            ? "sum over RGB of (a - b): blue where a is darker, red where brighter"
+            : d.difference == DifferenceMode::Relative
+                ? "sum_c |a - b| / max(sum_c |b|, 1% of its mean): the report's per-pixel relative error"
+                : "sum over RGB of |a - b|, a = " + technique().id();
+        pane.units = d.difference == DifferenceMode::Relative ? "" : "radiance";
+        pane.kind = d.difference == DifferenceMode::Signed ? viz::ViewKind::Signed : viz::ViewKind::Scalar;
+        pane.mode = d.difference == DifferenceMode::Signed ? DisplayMode::Signed : DisplayMode::Heat;
+        // Suggested range: up to the 99.9th percentile, so a few outliers do not wash out the map.
+        const ValueRange r = percentileRange(diff.pixels, 0.001, 0.999);
+        const float top = r.valid ? std::max({std::abs(r.lo), std::abs(r.hi), 1e-12f}) : 1.0f;
+        pane.rangeMin = d.difference == DifferenceMode::Signed ? -top : 0.0f;
+        pane.rangeMax = top;
+        uploadImage(pane, diff);
+        v.pane = std::move(pane);
+    }
+
+    // The other side of difference views: `id`'s images for the current scene, camera and size, kept
+    // until any of those change. GPU techniques run here on the main thread; CPU ones (the reference,
+    // from its on-disk cache when it has the frame) on a worker thread of their own, so that the window
+    // stays responsive: null until its full-size pass arrives (pollOtherWorker). The current technique
+    // is its own last output.
+    const OtherRun* otherRun(const std::string& id) {
+        if (mReduced) return nullptr;
+        if (id == technique().id()) {
+            mSelfRun = {"", mOutput.airlight, mOutput.final, "", ""};
+            return &mSelfRun;
+        }
+        std::string key = id + " " + std::to_string(mOutputSize.x) + "x" + std::to_string(mOutputSize.y);
+        const viz::scene::Camera c = mController.camera();
+        char buf[512];
+        std::snprintf(buf, sizeof buf, " %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g",
+                      c.position.x, c.position.y, c.position.z, c.forward.x, c.forward.y, c.forward.z, c.up.x, c.up.y,
+                      c.up.z, c.yfov, mScene.medium.sigma_s, mScene.medium.sigma_a, mScene.medium.g);
+        key += buf;
+        for (const auto& l : mScene.lights) key += " " + format("%.17g", l.intensity);
+        viz::Settings given = mSession.settings.count(id) ? mSession.settings.at(id) : viz::Settings{};
+        for (const auto& [name, value] : mOptions.settings) given[name] = value;
+        for (const auto& [name, value] : given) key += " " + name + "=" + format("%.17g", value);
+        OtherRun& run = mOtherRuns[id];
+        if (run.key == key) return &run;
+        try {
+            if (!mTechniques.count(id)) mTechniques[id] = viz::makeTechnique(id);
+        } catch (const std::exception& e) {
+            run = OtherRun{key, {}, {}, e.what(), ""};
+            return &run;
+        }
+        if (!mTechniques.at(id)->needsGl()) {
+            if (run.pending != key) {
+                // The worker keeps its own copy of the scene: a new one when the medium or lights changed.
+                if (!mOtherWorker || mOtherSceneKey != sceneOnlyKey()) {
+                    mOtherWorker = std::make_unique<CpuWorker>(mScene);
+                    mOtherSceneKey = sceneOnlyKey();
+                }
+                std::string ignored;
+                mOtherWorker->submit({id, c, settingsFor(*mTechniques.at(id), given, ignored), mOutputSize.x, mOutputSize.y});
+                run.pending = key;
+            }
+            return nullptr;
+        }
+        run = OtherRun{key, {}, {}, "", ""};
+        try {
+            // The reference gets a fresh instance, as in the comparison grid; others keep theirs.
+            std::unique_ptr<viz::Technique> fresh;
+            if (id == "reference") fresh = viz::makeTechnique(id);
+            else if (!mTechniques.count(id)) mTechniques[id] = viz::makeTechnique(id);
+            viz::Technique& t = fresh ? *fresh : *mTechniques.at(id);
+            std::string ignored;
+            viz::scene::Scene scene = mScene;
+            scene.camera = c;
+            viz::FrameInput in{&scene, mOutputSize.x, mOutputSize.y, settingsFor(t, given, ignored), -1};
+            viz::FrameOutput out = t.run(in);
+            glBindFramebuffer(GL_FRAMEBUFFER, 0);
+            run.airlight = std::move(out.airlight);
+            run.final = std::move(out.final);
+        } catch (const std::exception& e) {
+            run.failure = e.what();
+        }
+        return &run;
+    }
+
+    // The medium and lights: what a CPU worker's scene copy depends on besides the camera.
+    std::string sceneOnlyKey() const {
+        char buf[96];
+        std::snprintf(buf, sizeof buf, "%.17g %.17g %.17g", mScene.medium.sigma_s, mScene.medium.sigma_a,
+                      mScene.medium.g);
+        std::string key = buf;
+        for (const auto& l : mScene.lights) {
+            key += ' ';
+            key += format("%.17g", l.intensity);
+        }
+        return key;
+    }
+
+    // The difference worker's full-size pass: the other side of the difference views it was asked for.
+    void pollOtherWorker() {
+        if (!mOtherWorker) return;
+        std::optional<CpuResult> result = mOtherWorker->take();
+        if (!result || (result->error.empty() && result->pass < result->passCount)) return;
+        auto it = mOtherRuns.find(result->technique);
+        if (it == mOtherRuns.end() || it->second.pending.empty()) return;
+        OtherRun& run = it->second;
+        run.key = std::exchange(run.pending, std::string());
+        run.failure = result->error;
+        run.airlight = std::move(result->output.airlight);
+        run.final = std::move(result->output.final);
+        for (auto& [id, v] : mViews)
+            if (v.display.difference != DifferenceMode::Off && v.display.against == result->technique) refreshView(v);
+    }
+
+    bool otherPending() const {
+        for (const auto& [id, run] : mOtherRuns)
+            if (!run.pending.empty()) return true;
+        return false;
+    }
+
+    void refreshView(ViewState& v) {
+        buildPane(v);
+        if (mReduced) {
+            // During an interaction the frames are smaller and short-lived: no readback.
+            v.values = {};
+            updateStatistics(v);
+        } else {
+            readBackValues(v);
+        }
+    }
 
     void refreshPanes() {
-        mFinal = {};
-        mRight = {};
-        if (!mHaveOutput) return;
-        mFinal.label = "Final image";
-        mFinal.note = "surface * exp(-sigma_t d) + L_air";
-        mFinal.mode = DisplayMode::HdrColor;
-        uploadImage(mFinal, mOutput.final);
-        if (!mExposureSet && !mOutput.final.empty()) {
+        mMarkerCache.clear();
+        if (mHaveOutput && !mExposureSet && !mOutput.final.empty()) {
             mExposure = std::round(std::log2(autoExposure(mOutput.final)) / kExposureStep) * kExposureStep;
             mExposureSet = true;
         }
-        // Keep showing the same view id across runs and techniques when it still exists.
-        // Ids may repeat (one shadow map per light): prefer the same position, then the first match.
-        int index = 0;
-        const auto& all = mOutput.intermediates;
-        if (mView >= 1 && mView <= int(all.size()) && all[std::size_t(mView - 1)].id == mViewId) {
-            index = mView;
-        } else {
-            for (int i = int(all.size()) - 1; i >= 0; --i)
-                if (all[std::size_t(i)].id == mViewId) index = i + 1;
-        }
-        if (mViewId == "airlight" || mViewId.empty()) index = 0;
-        // Stepped to a stage before L_air exists: show what that stage published instead.
-        if (index == 0 && mOutput.airlight.empty() && mOutput.lastStageRun >= 0) {
-            const auto& declared = technique().stages()[std::size_t(mOutput.lastStageRun)].intermediates;
-            for (int i = int(all.size()) - 1; i >= 0; --i)
-                if (std::find(declared.begin(), declared.end(), all[std::size_t(i)].id) != declared.end()) index = i + 1;
-        }
-        mView = index;
-        if (index == 0) {
-            mRight.id = "airlight";
-            mRight.label = "Airlight L_air";
-            mRight.note = "in-scattered radiance along each eye ray, before the surface term";
-            mRight.units = "radiance";
-            mRight.kind = viz::ViewKind::Color;
-            mRight.mode = DisplayMode::HdrColor;
-            uploadImage(mRight, mOutput.airlight);
-        } else {
-            makePane(mRight, mOutput.intermediates[std::size_t(index - 1)], mLayer);
-        }
+        for (auto& [id, v] : mViews) refreshView(v);
     }
 
+    // [ ] and the views list: what the focused view shows.
     void stepView(int delta) {
         if (!mHaveOutput) return;
-        const int n = viewCount();
-        const int next = ((mView + delta) % n + n) % n;
-        mViewId = next == 0 ? "airlight" : mOutput.intermediates[std::size_t(next - 1)].id;
-        mView = next;
-        mLayer = 0;
-        refreshPanes();
+        ViewState& v = focusedView();
+        const int n = contentCount();
+        selectView((((v.shown < 0 ? 1 : v.shown) + delta) % n + n) % n);
     }
 
     void selectView(int index) {
-        if (!mHaveOutput || index < 0 || index >= viewCount()) return;
-        mViewId = index == 0 ? "airlight" : mOutput.intermediates[std::size_t(index - 1)].id;
-        mView = index;
-        mLayer = 0;
-        refreshPanes();
+        if (!mHaveOutput || index < 0 || index >= contentCount()) return;
+        ViewState& v = focusedView();
+        v.content = contentId(index);
+        v.index = index - 2;
+        v.layer = 0;
+        v.transform.fit();
+        refreshView(v);
+    }
+
+    void stepLayer(int delta) {
+        ViewState& v = focusedView();
+        if (v.pane.layers <= 1) return;
+        v.layer = (v.pane.layer + delta + v.pane.layers) % v.pane.layers;
+        refreshView(v);
+    }
+
+    // H / J: a new view beside / below the focused one, showing the content after the focused one's.
+    void splitFocused(SplitAxis axis) {
+        mLayout.restore();
+        const int id = mNextView++;
+        if (!mLayout.split(mFocused, axis, id)) return;
+        ViewState& v = mViews[id];
+        const int shown = mViews.at(mFocused).shown;
+        if (mHaveOutput) {
+            const int next = (shown < 0 ? 1 : shown + 1) % contentCount();
+            v.content = contentId(next);
+            v.index = next - 2;
+        }
+        mFocused = id;
+        refreshView(v);
+    }
+
+    // K: closes the focused view (not the last one).
+    void closeFocused() {
+        if (!mLayout.close(mFocused)) {
+            mNotice = "the last view stays open";
+            return;
+        }
+        mViews.erase(mFocused);
+        mFocused = mLayout.views().front();
+    }
+
+    // O / Shift+O: the focused view trades places with the next / previous one (it keeps the focus).
+    void swapFocused(int step) {
+        mLayout.restore();
+        mLayout.swap(mFocused, mLayout.next(mFocused, step));
+    }
+
+    // F: the focused view's difference to the reference on or off (final frame and L_air views).
+    void toggleDifference() {
+        ViewState& v = focusedView();
+        if (v.pane.id != "final" && v.pane.id != "airlight" && v.display.difference == DifferenceMode::Off) {
+            mNotice = "difference views are for the final frame and L_air";
+            return;
+        }
+        v.display.difference = v.display.difference == DifferenceMode::Off ? DifferenceMode::Absolute : DifferenceMode::Off;
+        refreshView(v);
     }
 
     // ---- input ----
@@ -1085,7 +1443,14 @@ private:
         else if (key == GLFW_KEY_PERIOD || key == GLFW_KEY_COMMA) stepLayer(key == GLFW_KEY_PERIOD ? 1 : -1);
         else if (key == GLFW_KEY_C && action == GLFW_PRESS) mController.toggleMode();
         else if (key == GLFW_KEY_F5 && action == GLFW_PRESS) saveSessionNow();
-        else if (key == GLFW_KEY_0 && action == GLFW_PRESS) mRightView.fit();
+        else if (key == GLFW_KEY_0 && action == GLFW_PRESS) focusedView().transform.fit();
+        else if (key == GLFW_KEY_H && action == GLFW_PRESS) splitFocused(SplitAxis::X);
+        else if (key == GLFW_KEY_J && action == GLFW_PRESS) splitFocused(SplitAxis::Y);
+        else if (key == GLFW_KEY_K && action == GLFW_PRESS) closeFocused();
+        else if (key == GLFW_KEY_M && action == GLFW_PRESS) mLayout.toggleMaximise(mFocused);
+        else if (key == GLFW_KEY_O && action == GLFW_PRESS) swapFocused(shift ? -1 : 1);
+        else if (key == GLFW_KEY_N && action == GLFW_PRESS) mFocused = mLayout.next(mFocused, shift ? -1 : 1);
+        else if (key == GLFW_KEY_F && action == GLFW_PRESS) toggleDifference();
         else if (key == GLFW_KEY_I && action == GLFW_PRESS) inspectPixelUnderCursor();
         else if (key == GLFW_KEY_E && action == GLFW_PRESS) exportView();
         else if (key == GLFW_KEY_G && action == GLFW_PRESS) toggleComparison();
@@ -1110,12 +1475,6 @@ private:
         if (codepoint == '-' || codepoint == '_') mExposure -= kExposureStep;
     }
 
-    void stepLayer(int delta) {
-        if (mRight.layers <= 1) return;
-        mLayer = (mRight.layer + delta + mRight.layers) % mRight.layers;
-        refreshPanes();
-    }
-
     void onMouseButton(int button, int action) {
         double x = 0, y = 0;
         glfwGetCursorPos(mWindow.handle(), &x, &y);
@@ -1133,16 +1492,33 @@ private:
                 }
             }
             if (mParamsRect.contains(p)) return;  // the widgets read the button state themselves
-            if (mRightImage.contains(p) && mRightView.zoom > 1.0) {
-                mDragView = true;  // zoomed in: dragging pans the intermediate view, not the camera
-                mLastCursor = p;
-                return;
+            // A widget (or an open list hanging over a view) was under this very point last frame.
+            if (mUi->hot() != 0 && p == mHoverDrawn) return;
+            for (const Rect& r : mStripRects)
+                if (r.contains(p)) return;
+            const int view = ViewLayout::hit(mCells, p);
+            if (view >= 0 && mViews.count(view)) {
+                mFocused = view;  // any click in a view focuses it
+                const ViewState& v = mViews.at(view);
+                if (button == GLFW_MOUSE_BUTTON_LEFT && v.title.contains(p)) {
+                    mDragTitle = view;  // dropped on another view: the two swap places
+                    return;
+                }
+                if (v.image.contains(p) && v.transform.zoom > 1.0) {
+                    mDragView = view;  // zoomed in: dragging pans the view, not the camera
+                    mLastCursor = p;
+                    return;
+                }
             }
             if (!mViewArea.contains(p)) return;
             mDragButton = button;
             mLastCursor = p;
-        } else if (action == GLFW_RELEASE && mDragView) {
-            mDragView = false;
+        } else if (action == GLFW_RELEASE && mDragTitle >= 0) {
+            const int target = ViewLayout::hit(mCells, p);
+            if (target >= 0 && target != mDragTitle) mLayout.swap(mDragTitle, target);
+            mDragTitle = -1;
+        } else if (action == GLFW_RELEASE && mDragView >= 0) {
+            mDragView = -1;
         } else if (action == GLFW_RELEASE && button == mDragButton) {
             mDragButton = -1;
             if (mReduced) mDirty = true;
@@ -1152,8 +1528,9 @@ private:
     void onCursor(double x, double y) {
         const glm::vec2 p = cursorPixels(x, y);
         mHover = p;
-        if (mDragView) {
-            mRightView.panBy(glm::dvec2((p - mLastCursor) / glm::max(mRightImage.size(), glm::vec2(1.0f))));
+        if (mDragView >= 0 && mViews.count(mDragView)) {
+            ViewState& v = mViews.at(mDragView);
+            v.transform.panBy(glm::dvec2((p - mLastCursor) / glm::max(v.image.size(), glm::vec2(1.0f))));
             mLastCursor = p;
             return;
         }
@@ -1182,15 +1559,22 @@ private:
             mLesson->scroll(float(dy));
             return;
         }
-        if (mParamsRect.contains(mHover)) {
+        bool overWidgets = mParamsRect.contains(mHover);
+        for (const Rect& r : mStripRects) overWidgets = overWidgets || r.contains(mHover);
+        if (overWidgets) {
             mUiInput.wheel += float(dy);
             return;
         }
-        if (mRightImage.contains(mHover)) {
-            // The wheel over the intermediate zooms it about the cursor (the camera stays).
-            mRightView.zoomAt(glm::dvec2((mHover - mRightImage.min) / mRightImage.size()), std::pow(1.25, dy));
+        const int view = ViewLayout::hit(mCells, mHover);
+        if (view >= 0 && mViews.count(view) && mViews.at(view).content != "final" && mViews.at(view).image.contains(mHover)) {
+            // The wheel over a view zooms it about the cursor (the camera stays); over the final frame
+            // it moves the camera.
+            ViewState& v = mViews.at(view);
+            v.transform.zoomAt(glm::dvec2((mHover - v.image.min) / v.image.size()), std::pow(1.25, dy));
             return;
         }
+        // Titles, readouts and histograms do not move the camera.
+        if (view >= 0 && mViews.count(view) && !mViews.at(view).image.contains(mHover)) return;
         if (!mViewArea.contains(mHover)) return;
         if (mController.mode() == CameraController::Mode::Orbit) {
             mController.zoom(dy);
@@ -1242,9 +1626,8 @@ private:
         mHits.push_back({r, std::move(onClick)});
     }
 
-    // The raw value under the cursor, written below the image. Pixel coordinates follow the image
-    // convention (row 0 at the top); one texel is read back from the texture.
-    // The texel of `pane` under a window point, through the view's pan and zoom.
+    // The texel of `pane` under a window point, through the view's pan and zoom; row 0 is the row shown
+    // at the top (the image convention: for a frame-sized view, the frame's pixel).
     static glm::ivec2 texelAt(const PaneImage& pane, const Rect& image, const viz::ui::ImageViewTransform& view,
                               glm::vec2 p) {
         const glm::dvec2 uv = view.paneToUv(glm::dvec2((p - image.min) / image.size()));
@@ -1285,35 +1668,227 @@ private:
             }
     }
 
-    void hoverReadout(const PaneImage& pane, const Rect& image, const viz::ui::ImageViewTransform& view) {
-        const glm::ivec2 texel = texelAt(pane, image, view, mHover);
-        const int glRow = pane.flipY ? pane.size.y - 1 - texel.y : texel.y;
-        glm::vec4 v(0.0f);
-        glGetTextureSubImage(pane.texture, 0, texel.x, glRow, 0, 1, 1, 1, GL_RGBA, GL_FLOAT, sizeof v, &v);
-        std::string text = "pixel (" + std::to_string(texel.x) + ", " + std::to_string(texel.y) + ")  =";
-        for (int c = 0; c < std::clamp(pane.channels, 1, 3); ++c) text += format("  %.4g", v[c]);
-        mDrawList->textClipped({image.min.x, image.max.y + 4.0f * mScale}, text, kText, image.max.x);
+    // ---- the view grid: drawing ----
+
+    // Title (two lines), image, value readout and, when open, the display strip inside one cell.
+    void layoutCell(ViewState& v, const Rect& cell) {
+        const float line = mFont->lineHeight(), s = mScale;
+        v.cell = cell;
+        v.title = {cell.min, {cell.max.x, cell.min.y + 2.0f * line + 4.0f * s}};
+        const float readout = line + 6.0f * s;
+        float stripHeight = 0.0f;
+        if (v.display.stripOpen) {
+            const float rows = (v.display.range == RangeMode::Manual ? 8.0f : 6.0f) +
+                               (v.display.difference != DifferenceMode::Off ? 1.0f : 0.0f);
+            float wanted = rows * (mUi->rowHeight() + 4.0f * s) + 8.0f * s;
+            // A narrow view stacks the histogram under the widgets instead of beside them.
+            if (cell.size().x < kStripSideBySide * s) wanted += kHistogramHeight * s;
+            stripHeight = std::min(wanted, 0.6f * (cell.size().y - v.title.size().y - readout));
+        }
+        const Rect imageArea{{cell.min.x, v.title.max.y}, {cell.max.x, cell.max.y - readout - stripHeight}};
+        v.image = fitImage(imageArea, v.pane.size);
+        v.strip = stripHeight > 0.0f ? Rect{{cell.min.x, cell.max.y - stripHeight}, cell.max} : Rect{};
     }
 
-    // Returns where the image went.
-    Rect drawPane(const Rect& area, const PaneImage& pane, const std::string& title, const std::string& note,
-                  const viz::ui::ImageViewTransform* view = nullptr) {
-        DrawList& dl = *mDrawList;
-        const float line = mFont->lineHeight();
-        dl.textClipped(area.min, title, kAccent, area.max.x);
-        dl.textClipped({area.min.x, area.min.y + line}, note, kDim, area.max.x);
-        const Rect imageArea{{area.min.x, area.min.y + 2.0f * line + 4.0f * mScale}, area.max};
-        const Rect image = fitImage(imageArea, pane.size);
-        // Frame behind the image: the background batch is drawn before the images.
-        mBackground->rect({image.min - 1.0f, image.max + 1.0f}, kPanel);
-        mPaneDraws.push_back({image, &pane, view, NAN});
-        if (!pane.unavailable.empty()) {
-            dl.textClipped({image.min.x + 8.0f * mScale, image.min.y + 8.0f * mScale}, pane.unavailable, kDim, image.max.x);
+    void drawViewGrid(const Rect& area) {
+        mStripRects.clear();
+        // The comparison grid takes the right half; the first view keeps the left.
+        const float half = 0.5f * (area.size().x - kPad * mScale);
+        if (mCompare.empty()) mCells = mLayout.arrange(area, kPad * mScale);
+        else mCells = {{mLayout.views().front(), {area.min, {area.min.x + half, area.max.y}}}};
+        for (const ViewCellRect& c : mCells) layoutCell(mViews[c.view], c.rect);
+        // The frame pixel under the cursor, if the cursor is over a screen-space view.
+        mHoveredView = ViewLayout::hit(mCells, mHover);
+        mLinkedPixel.reset();
+        if (mHoveredView >= 0) {
+            const ViewState& h = mViews.at(mHoveredView);
+            if (isScreenSpace(h) && h.image.contains(mHover)) mLinkedPixel = texelAt(h.pane, h.image, h.transform, mHover);
         }
-        const viz::ui::ImageViewTransform whole;
-        const viz::ui::ImageViewTransform& v = view ? *view : whole;
-        if (pane.texture != 0 && view) texelValues(pane, image, v);
-        if (pane.texture != 0 && image.contains(mHover)) hoverReadout(pane, image, v);
+        // Camera drags are scaled by the tallest frame-shaped view (the last one when none is shown).
+        float frameHeight = 0.0f;
+        for (const ViewCellRect& c : mCells) {
+            ViewState& v = mViews.at(c.view);
+            if (isScreenSpace(v)) frameHeight = std::max(frameHeight, v.image.size().y);
+            drawView(c.view, v);
+        }
+        if (frameHeight > 1.0f) mImageHeight = frameHeight;
+        if (!mCompare.empty()) {
+            const Rect grid{{area.max.x - half, area.min.y + mFont->lineHeight()}, area.max};
+            drawComparison(*mDrawList, grid);
+            mViewRects.push_back({"comparison", "comparison grid", grid, -1});
+        }
+    }
+
+    // "name  [i/n]  id  layer k/n  |  3 negative px" and the note with the range or the error figures.
+    std::pair<std::string, std::string> viewTitle(const ViewState& v) const {
+        if (!mHaveOutput) return {technique().needsGl() ? "(no view)" : "computing...", ""};
+        std::string title = v.pane.label.empty() ? v.content : v.pane.label;
+        if (v.shown >= 0) title += "   [" + std::to_string(v.shown + 1) + "/" + std::to_string(contentCount()) + "]";
+        if (v.pane.id != "final" && v.pane.id != "airlight") {
+            title += "  " + v.pane.id;
+            // The stage that publishes it (stepping shows it from that stage on).
+            for (const viz::StageInfo& st : technique().stages())
+                if (std::find(st.intermediates.begin(), st.intermediates.end(), v.pane.id) != st.intermediates.end()) {
+                    title += "  (stage " + st.id + ")";
+                    break;
+                }
+        }
+        if (v.pane.layers > 1) title += "   layer " + std::to_string(v.pane.layer + 1) + "/" + std::to_string(v.pane.layers);
+        std::string note = v.pane.note;
+        if (v.pane.id == "final" && v.display.difference == DifferenceMode::Off)
+            note = "surface radiance * exp(-sigma_t d) + L_air   (exposure " + format("%+.1f EV)", mExposure);
+        const DisplayMapping m = resolveMapping(v.pane, v.display, mExposure, v.measured);
+        if (m.mode != DisplayMode::HdrColor) {
+            note += "   [" + format("%.4g", m.lo) + ", " + format("%.4g", m.hi) + "]" + (v.display.logScale ? " log" : "") +
+                    (v.pane.units.empty() ? "" : " " + v.pane.units) + ", " + viz::viewKindName(v.pane.kind);
+        }
+        if (v.error) {
+            const auto figure = [](double x) { return std::isfinite(x) ? format("%.3g", x) : std::string("n/a"); };
+            note = "relative L2 " + figure(v.error->relativeL2) + "   max |a - b| " + figure(v.error->maxAbsolute) +
+                   "   RMSE " + figure(v.error->rmse) + "   |   " + note;
+        } else if (!v.differenceNote.empty()) {
+            note = v.differenceNote + "   |   " + note;
+        }
+        if (v.transform.zoom > 1.0) note = format("zoom %.0fx (wheel; drag to pan; 0 fits)   ", v.transform.zoom) + note;
+        return {title, note};
+    }
+
+    void drawView(int id, ViewState& v) {
+        DrawList& dl = *mDrawList;
+        const float line = mFont->lineHeight(), s = mScale;
+        const bool focused = id == mFocused;
+        const auto [title, note] = viewTitle(v);
+        // Title bar: highlighted when focused (keys and the views list act on it); drag it onto another
+        // view to swap the two.
+        mBackground->rect(v.title, focused ? kHighlight : kPanel);
+        const std::string toggle = v.display.stripOpen ? "display -" : "display +";
+        const float toggleWidth = mFont->measure(toggle) + 16.0f * s;
+        const Rect toggleRect{{v.title.max.x - toggleWidth, v.title.min.y + 1.0f * s},
+                              {v.title.max.x - 2.0f * s, v.title.min.y + line + 2.0f * s}};
+        const float x = dl.textClipped({v.title.min.x + 4.0f * s, v.title.min.y + 2.0f * s}, title, kAccent,
+                                 toggleRect.min.x - 4.0f * s);
+        const SpecialCounts& n = v.counts;
+        std::string counts;
+        if (n.nan + n.inf + n.negative > 0) {
+            counts = " ";
+            if (n.negative) counts += " " + std::to_string(n.negative) + " negative";
+            if (n.nan) counts += " " + std::to_string(n.nan) + " NaN";
+            if (n.inf) counts += " " + std::to_string(n.inf) + " Inf";
+            counts += " px";
+            dl.textClipped({x, v.title.min.y + 2.0f * s}, counts, kError, toggleRect.min.x - 4.0f * s);
+        }
+        dl.textClipped({v.title.min.x + 4.0f * s, v.title.min.y + 2.0f * s + line}, note, kDim, v.title.max.x - 4.0f * s);
+        listItem(toggleRect, toggle, v.display.stripOpen, [this, id] {
+            ViewState& w = mViews.at(id);
+            w.display.stripOpen = !w.display.stripOpen;
+            mFocused = id;
+        });
+        mNamedRects["strip:" + std::to_string(id)] = toggleRect;
+        mNamedRects["title:" + std::to_string(id)] = v.title;
+        mNamedRects["cell:" + std::to_string(id)] = v.image;
+
+        // The image, framed; the background batch is drawn before the images.
+        mBackground->rect({v.image.min - 1.0f, v.image.max + 1.0f}, focused ? kHighlight : kPanel);
+        mPaneDraws.push_back({v.image, &v.pane, &v.transform, resolveMapping(v.pane, v.display, mExposure, v.measured)});
+        mViewRects.push_back({mHaveOutput ? (v.pane.id.empty() ? v.content : v.pane.id) : std::string("none"),
+                              title + counts, v.image, id});
+        if (!v.pane.unavailable.empty())
+            dl.textClipped({v.image.min.x + 8.0f * s, v.image.min.y + 8.0f * s}, v.pane.unavailable, kDim, v.image.max.x);
+        if (v.pane.texture != 0) texelValues(v.pane, v.image, v.transform);
+
+        // Linked cursors: the hovered frame pixel in every other screen-space view; what the technique
+        // can map of it in algorithm-space views (the epipolar row in minmax's rectified map, ...).
+        std::optional<glm::ivec2> readAt;
+        if (v.pane.texture != 0 && id == mHoveredView && v.image.contains(mHover))
+            readAt = texelAt(v.pane, v.image, v.transform, mHover);
+        if (mLinkedPixel && isScreenSpace(v)) {
+            // The hovered view marks its own pixel too (the cross leaves the pixel's centre free), so
+            // that screenshots and a projector show which pixel the others follow.
+            if (id != mHoveredView) readAt = *mLinkedPixel;
+            const glm::dvec2 uv = (glm::dvec2(*mLinkedPixel) + 0.5) / glm::dvec2(v.pane.size);
+            crosshair(dl, v.image.min + glm::vec2(v.transform.uvToPane(uv)) * v.image.size(), v.image);
+        }
+        if (mLinkedPixel && !isScreenSpace(v) && v.pane.texture != 0) drawMarkers(dl, v, markersFor(v));
+        markProbe(dl, v);
+
+        // The value under the cursor (or at the linked pixel), from the view's CPU copy.
+        const glm::vec2 readoutAt{v.image.min.x, v.image.max.y + 3.0f * s};
+        if (readAt) {
+            glm::vec4 value(0.0f);
+            if (!valueAt(v, *readAt, value)) {
+                const int glRow = v.pane.flipY ? v.pane.size.y - 1 - readAt->y : readAt->y;
+                glGetTextureSubImage(v.pane.texture, 0, readAt->x, glRow, 0, 1, 1, 1, GL_RGBA, GL_FLOAT, sizeof value,
+                                     &value);
+            }
+            std::string text = (id == mHoveredView ? "pixel (" : "linked (") + std::to_string(readAt->x) + ", " +
+                               std::to_string(readAt->y) + ")  =";
+            for (int c = 0; c < std::clamp(v.pane.channels, 1, 3); ++c) text += format("  %.4g", value[c]);
+            dl.textClipped(readoutAt, text, kText, v.cell.max.x);
+        }
+        drawStatusBands(dl, v.image);
+        if (v.display.stripOpen && v.strip.size().y > 0.0f) drawStrip(id, v);
+    }
+
+    // The technique's marks for the linked pixel, asked once per pixel and run (a GPU technique may
+    // read a texel back for them).
+    std::vector<viz::ViewMarker> markersFor(const ViewState& v) {
+        if (!mLinkedPixel || !mHaveOutput) return {};
+        auto& cached = mMarkerCache[v.pane.id];
+        if (cached.first == *mLinkedPixel && cached.second) return *cached.second;
+        try {
+            cached = {*mLinkedPixel, technique().markersFor(*mLinkedPixel, v.pane.id)};
+            return *cached.second;
+        } catch (const std::exception& e) {
+            mError = e.what();
+            return {};
+        }
+    }
+
+    // A small cross with a dark outline, so that it shows on bright and dark images alike.
+    void crosshair(DrawList& dl, glm::vec2 c, const Rect& clip) {
+        if (!clip.contains(c)) return;
+        const float r = 7.0f * mScale, w = 1.5f * mScale;
+        for (int pass = 0; pass < 2; ++pass) {
+            const float width = pass == 0 ? w + 2.0f * mScale : w;
+            const glm::vec4 colour = pass == 0 ? glm::vec4(0.0f, 0.0f, 0.0f, 0.8f) : glm::vec4(0.2f, 1.0f, 1.0f, 1.0f);
+            dl.line({c.x - r, c.y}, {c.x - 2.0f * mScale, c.y}, width, colour);
+            dl.line({c.x + 2.0f * mScale, c.y}, {c.x + r, c.y}, width, colour);
+            dl.line({c.x, c.y - r}, {c.x, c.y - 2.0f * mScale}, width, colour);
+            dl.line({c.x, c.y + 2.0f * mScale}, {c.x, c.y + r}, width, colour);
+        }
+    }
+
+    // Technique markers: data uv (row 0 = the first row stored) -> the view's image uv -> window.
+    void drawMarkers(DrawList& dl, const ViewState& v, const std::vector<viz::ViewMarker>& marks) {
+        const auto toWindow = [&](glm::vec2 data) {
+            const glm::dvec2 uv{data.x, v.pane.flipY ? 1.0 - double(data.y) : double(data.y)};
+            return v.image.min + glm::vec2(v.transform.uvToPane(uv)) * v.image.size();
+        };
+        dl.pushClip(v.image);
+        for (std::size_t i = 0; i < marks.size(); ++i) {
+            const glm::vec2 a = toWindow(marks[i].from), b = toWindow(marks[i].to);
+            const glm::vec4 colour = i == 0 ? glm::vec4(0.2f, 1.0f, 1.0f, 0.9f) : glm::vec4(1.0f, 0.85f, 0.2f, 1.0f);
+            if (a == b) {
+                crosshair(dl, a, v.image);
+            } else {
+                dl.line(a, b, 3.0f * mScale, {0.0f, 0.0f, 0.0f, 0.6f});
+                dl.line(a, b, (i == 0 ? 1.0f : 2.0f) * mScale, colour);
+            }
+            const float line = mFont->lineHeight();
+            const glm::vec2 at{std::max(std::min(a.x, b.x), v.image.min.x) + 4.0f * mScale,
+                               std::min(a.y, b.y) - line - 2.0f * mScale + float(i) * 0.0f};
+            const glm::vec2 labelAt{i == 0 ? at.x : std::max(a.x, b.x) + 4.0f * mScale,
+                                    std::clamp(i == 0 ? at.y : std::max(a.y, b.y) + 2.0f * mScale, v.image.min.y,
+                                               v.image.max.y - line)};
+            dl.rect({labelAt - 1.0f, labelAt + glm::vec2(mFont->measure(marks[i].label) + 2.0f, line)}, {0.0f, 0.0f, 0.0f, 0.6f});
+            dl.textClipped(labelAt, marks[i].label, colour, v.image.max.x);
+        }
+        dl.popClip();
+    }
+
+    // "rendering..." while a slow GPU run blocks, the CPU worker's progress while it computes.
+    void drawStatusBands(DrawList& dl, const Rect& image) {
+        const float line = mFont->lineHeight();
         if (mRendering) {
             const std::string text = mHaveOutput ? "rendering... (last run " + format("%.1f s)", mLastRunSeconds)
                                                  : std::string("rendering...");
@@ -1341,7 +1916,154 @@ private:
             }
             dl.textClipped({band.min.x + 6.0f * mScale, band.min.y + 3.0f * mScale}, text, kText, band.max.x);
         }
-        return image;
+    }
+
+    // The display strip: channel, range (auto or manual), log scale, colour map, negative overlay and
+    // difference mode as widgets on the left; the histogram of the shown values on the right.
+    void drawStrip(int id, ViewState& v) {
+        const float s = mScale;
+        const Rect& strip = v.strip;
+        Rect widgets = strip, plot = strip;
+        if (strip.size().x >= kStripSideBySide * s) {
+            const float split = strip.min.x + std::max(0.5f * strip.size().x, std::min(0.62f * strip.size().x, 360.0f * s));
+            widgets.max.x = split - 2.0f * s;
+            plot.min.x = split + 2.0f * s;
+        } else {
+            const float h = std::min(kHistogramHeight * s, 0.45f * strip.size().y);
+            widgets.max.y = strip.max.y - h - 2.0f * s;
+            plot.min.y = strip.max.y - h;
+        }
+        mStripRects.push_back(widgets);
+        const std::string tag = "##v" + std::to_string(id);
+        DisplaySettings& d = v.display;
+        const DisplaySettings before = d;
+        mUi->beginPanel(tag, widgets);
+        int channel = int(d.channel), range = int(d.range), map = int(d.colourMap), difference = int(d.difference);
+        if (mUi->combo("channel" + tag, channel, channelNames())) d.channel = Channel(channel);
+        if (mUi->combo("range" + tag, range, rangeModeNames())) {
+            if (RangeMode(range) == RangeMode::Manual) {
+                // Manual starts from what is shown now.
+                const DisplayMapping m = resolveMapping(v.pane, d, mExposure, v.measured);
+                d.manualMin = m.lo;
+                d.manualMax = m.hi;
+            }
+            d.range = RangeMode(range);
+        }
+        if (d.range == RangeMode::Manual) {
+            const float span = v.finite.valid ? std::max(v.finite.hi - v.finite.lo, 1e-6f) : 1.0f;
+            mUi->dragFloat("min" + tag, d.manualMin, 0.004f * span, -1e30f, 1e30f);
+            mUi->dragFloat("max" + tag, d.manualMax, 0.004f * span, -1e30f, 1e30f);
+        }
+        mUi->checkbox("log scale" + tag, d.logScale);
+        if (mUi->combo("colour map" + tag, map, colourMapNames())) d.colourMap = ColourMap(map);
+        bool negative = resolveMapping(v.pane, d, mExposure, v.measured).markNegative;
+        if (mUi->checkbox("mark negative (green)" + tag, negative)) d.markNegative = negative ? 1 : 0;
+        mUi->tooltip("NaN shows magenta and Inf cyan always; negative values green unless the map is diverging");
+        const bool frameImage = v.content == "final" || v.content == "airlight";
+        if (frameImage && mUi->combo("difference" + tag, difference, differenceModeNames()))
+            d.difference = DifferenceMode(difference);
+        if (frameImage && d.difference != DifferenceMode::Off) {
+            int against = int(std::find(mIds.begin(), mIds.end(), d.against) - mIds.begin());
+            if (against >= int(mIds.size())) against = 0;
+            if (mUi->combo("against" + tag, against, mIds)) d.against = mIds[std::size_t(against)];
+        }
+        mUi->endPanel();
+        if (d.difference != before.difference || d.against != before.against) {
+            refreshView(v);
+        } else if (d.channel != before.channel || d.range != before.range || d.logScale != before.logScale) {
+            updateStatistics(v);
+        }
+        drawHistogram(v, plot);
+    }
+
+    // Counts of the shown channel's finite values over their range, with the display range marked.
+    void drawHistogram(const ViewState& v, const Rect& area) {
+        if (area.size().x < 80.0f * mScale || area.size().y < 4.0f * mFont->lineHeight()) return;
+        const Histogram& h = v.histogram;
+        viz::plot::PlotSpec spec;
+        spec.title = "histogram, " + channelNames()[std::size_t(v.display.channel)] +
+                     (v.values.empty() ? " (no values)" : ", % of values per bin");
+        spec.logX = h.logarithmic;
+        const auto edge = [&](std::size_t i) {
+            const double t = double(i) / double(std::max<std::size_t>(1, h.bins.size()));
+            return h.logarithmic ? std::pow(10.0, std::log10(h.lo) + t * (std::log10(h.hi) - std::log10(h.lo)))
+                                 : h.lo + t * (double(h.hi) - double(h.lo));
+        };
+        viz::plot::Series counts{"", {0.85f, 0.45f, 0.05f, 1.0f}, {}, true, false};
+        std::size_t total = h.below + h.above;
+        for (std::size_t c : h.bins) total += c;
+        const double percent = 100.0 / double(std::max<std::size_t>(total, 1));
+        double top = 1.0;
+        for (std::size_t i = 0; i < h.bins.size(); ++i) {
+            counts.points.push_back({edge(i), double(h.bins[i]) * percent});
+            counts.points.push_back({edge(i + 1), double(h.bins[i]) * percent});
+            top = std::max(top, double(h.bins[i]) * percent);
+        }
+        spec.series.push_back(std::move(counts));
+        const DisplayMapping m = resolveMapping(v.pane, v.display, mExposure, v.measured);
+        if (m.mode != DisplayMode::HdrColor && !h.bins.empty()) {
+            viz::plot::Series shown{"range", {0.3f, 0.85f, 1.0f, 1.0f}, {}, true, false};
+            for (double x : {double(m.lo), double(m.hi)}) {
+                if (x < h.lo || x > h.hi) continue;  // outside the data: the axis would stretch to it
+                viz::plot::Series mark{"", shown.color, {{x, 0.0}, {x, top}}, true, false};
+                spec.series.push_back(std::move(mark));
+            }
+        }
+        viz::plot::drawPlot(*mDrawList, area, spec);
+    }
+
+    // What the sidecar says of a view (tests assert on it).
+    nlohmann::json viewSidecar(int id, const ViewState& v) {
+        const DisplaySettings& d = v.display;
+        const DisplayMapping m = resolveMapping(v.pane, d, mExposure, v.measured);
+        nlohmann::json j = {{"cell", id},
+                            {"content", v.content},
+                            {"cell_rect", {v.cell.min.x, v.cell.min.y, v.cell.max.x, v.cell.max.y}},
+                            {"focused", id == mFocused},
+                            {"layer", v.pane.layer},
+                            {"zoom", v.transform.zoom},
+                            {"center", {v.transform.center.x, v.transform.center.y}},
+                            {"size", {v.pane.size.x, v.pane.size.y}},
+                            {"screen_space", isScreenSpace(v)},
+                            {"display", {{"channel", channelNames()[std::size_t(d.channel)]},
+                                         {"range", rangeModeNames()[std::size_t(d.range)]},
+                                         {"lo", m.lo}, {"hi", m.hi}, {"log", d.logScale},
+                                         {"colour_map", colourMapNames()[std::size_t(d.colourMap)]},
+                                         {"mode", int(m.mode)}, {"mark_negative", m.markNegative},
+                                         {"strip_open", d.stripOpen}}},
+                            {"negative_pixels", v.counts.negative},
+                            {"nan_pixels", v.counts.nan},
+                            {"inf_pixels", v.counts.inf}};
+        if (d.difference != DifferenceMode::Off) {
+            const auto figure = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
+            j["difference"] = {{"mode", differenceModeNames()[std::size_t(d.difference)]},
+                               {"against", d.against},
+                               {"relative_l2", v.error ? figure(v.error->relativeL2) : nlohmann::json(nullptr)},
+                               {"max_abs", v.error ? figure(v.error->maxAbsolute) : nlohmann::json(nullptr)},
+                               {"note", v.differenceNote}};
+        }
+        // The linked cursor as this view marks it: the pixel itself in screen-space views.
+        std::optional<glm::ivec2> at;
+        if (mLinkedPixel && isScreenSpace(v)) at = *mLinkedPixel;
+        if (at) {
+            glm::vec4 value(0.0f);
+            j["cursor"] = {at->x, at->y};
+            if (valueAt(v, *at, value)) {
+                nlohmann::json values = nlohmann::json::array();
+                for (int c = 0; c < std::clamp(v.meaningful, 1, 4); ++c)
+                    values.push_back(std::isfinite(value[c]) ? nlohmann::json(value[c]) : nlohmann::json(nullptr));
+                j["cursor_value"] = values;
+            }
+        } else {
+            j["cursor"] = nullptr;
+        }
+        if (mLinkedPixel && !isScreenSpace(v) && v.pane.texture != 0) {
+            nlohmann::json marks = nlohmann::json::array();
+            for (const viz::ViewMarker& mk : markersFor(v))
+                marks.push_back({{"from", {mk.from.x, mk.from.y}}, {"to", {mk.to.x, mk.to.y}}, {"label", mk.label}});
+            j["markers"] = marks;
+        }
+        return j;
     }
 
     void draw() {
@@ -1356,6 +2078,7 @@ private:
         glDisable(GL_CULL_FACE);
         glClearColor(kBackground.r, kBackground.g, kBackground.b, 1.0f);
         glClear(GL_COLOR_BUFFER_BIT);
+        const auto frameStart = Clock::now();
 
         DrawList& dl = *mDrawList;
         dl.clear();
@@ -1409,8 +2132,12 @@ private:
               "left drag orbit, wheel zoom, right/middle drag pan   Esc quit"
             : "camera: FLY   Tab/Shift+Tab or 1-9 technique   [ ] view   , . layer   +/- exposure (X auto)   C orbit   R reset   "
               "right drag look, WASD move, Q/E down/up, Shift faster, middle drag pan   Esc quit";
-        const float bottom = float(fb.y) - line - pad;
+        const float bottom = float(fb.y) - 2.0f * line - pad;
         dl.textClipped({pad, bottom}, help, kDim, float(fb.x) - pad);
+        dl.textClipped({pad, bottom + line},
+                       "views: click to focus   H / J split beside / below   K close   M maximise   O swap (or drag a "
+                       "title)   N next   F difference to the reference   0 fit   'display +': controls",
+                       kDim, float(fb.x) - pad);
 
         // Sidebar: techniques, then views.
         float sidebarWidth = kSidebarMin * s;
@@ -1431,77 +2158,58 @@ private:
         dl.text({pad, y}, "Views ([ ])", kAccent);
         y += line + 2.0f * s;
         if (mHaveOutput) {
-            for (int i = 0; i < viewCount() && y + line < sidebar.max.y; ++i) {
-                const std::string name = i == 0 ? "Airlight L_air" : mOutput.intermediates[std::size_t(i - 1)].label;
+            // Clicking an entry shows it in the focused view.
+            const int shown = focusedView().shown;
+            for (int i = 0; i < contentCount() && y + line < sidebar.max.y; ++i) {
+                const std::string name = contentLabel(i);
                 const Rect item{{pad * 0.5f, y}, {sidebarWidth - pad * 0.5f, y + line + 2.0f * s}};
-                listItem(item, name, i == mView, [this, i] { selectView(i); });
+                listItem(item, name, i == shown, [this, i] { selectView(i); });
                 mNamedRects["view:" + name] = item;
                 y += line + 4.0f * s;
             }
         }
 
-        // Two panes side by side, and the lesson panel (if a lesson is open) at the right edge.
+        // The view grid on top; under it the ray inspector or the stage times (left) and the widgets (right);
+        // the lesson panel (if a lesson is open) at the right edge.
         const float lessonWidth = mLesson ? LessonPlayer::panelWidth(float(fb.x), s) : 0.0f;
         if (mLesson) mLesson->place({{float(fb.x) - lessonWidth, top - pad}, {float(fb.x), bottom - pad}});
         const Rect panes{{sidebarWidth + pad, top}, {float(fb.x) - pad - lessonWidth, bottom - pad}};
         mViewArea = panes;
         const float half = 0.5f * (panes.size().x - pad);
-        const Rect left{panes.min, {panes.min.x + half, panes.max.y}};
-        const Rect right{{panes.max.x - half, panes.min.y}, panes.max};
-        // Camera drags are scaled by the final image's on-screen height.
-        const Rect finalRect = drawPane(left, mFinal, "Final image", "surface radiance * exp(-sigma_t d) + L_air   (exposure " + format("%+.1f EV)", mExposure));
-        mImageHeight = finalRect.size().y;
-        mViewRects.push_back({"final", "Final image", finalRect});
-        mFinalRect = finalRect;
-        markProbe(dl);
+        // As tall as two frame-shaped views side by side need, leaving room for the panels below.
+        const float chrome = 3.0f * line + 10.0f * s;
+        const float aspect = float(mOptions.height) / float(std::max(1, mOptions.width));
+        const float gridHeight = std::clamp(half * aspect + chrome, 0.5f * panes.size().y, 0.74f * panes.size().y);
+        const Rect gridArea{panes.min, {panes.max.x, panes.min.y + gridHeight}};
+        mViewArea = gridArea;
+        beginWidgets(fb);
+        {
+            // CPU cost of the view grid (layout, titles, readouts, markers, strips), for the sidecar.
+            const auto start = Clock::now();
+            drawViewGrid(gridArea);
+            mGridMilliseconds = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+        }
+        const Rect left{{panes.min.x, gridArea.max.y + pad}, {panes.min.x + half, panes.max.y}};
+        const Rect right{{panes.max.x - half, gridArea.max.y + pad}, panes.max};
         if (mProbe) {
-            const float inspectorTop = finalRect.max.y + 2.0f * line;
-            if (inspectorTop + 6.0f * line < left.max.y) drawInspector(dl, {{left.min.x, inspectorTop}, left.max});
+            if (left.size().y > 6.0f * line) drawInspector(dl, left);
         } else if (mHaveOutput && !mOutput.timing.stages.empty()) {
             // Per-stage timings of the last run as bars, with the clock that measured them.
             viz::plot::BarChart chart;
             chart.title = "stage times (" + timing.clock + "), total " + format("%.1f ms", timing.totalMilliseconds());
             for (const viz::StageTiming& st : mOutput.timing.stages)
                 chart.bars.push_back({st.stage, st.milliseconds, format("%.1f ms", st.milliseconds), kAccent});
-            const float chartTop = finalRect.max.y + 2.0f * line;
-            if (chartTop + 2.0f * line < left.max.y)
-                viz::plot::drawBarChart(dl, {{left.min.x, chartTop}, {left.max.x, left.max.y}}, chart, kDim);
+            if (left.size().y > 2.0f * line) viz::plot::drawBarChart(dl, left, chart, kDim);
         }
-        std::string rightTitle = "(no view)";
-        std::string rightNote;
-        if (mHaveOutput) {
-            rightTitle = mRight.label + "   [" + std::to_string(mView + 1) + "/" + std::to_string(viewCount()) + "]  " + mRight.id;
-            if (mRight.layers > 1) rightTitle += "   layer " + std::to_string(mRight.layer + 1) + "/" + std::to_string(mRight.layers);
-            rightNote = mRight.note;
-            if (mRight.mode != DisplayMode::HdrColor) {
-                rightNote += "   [" + format("%g", mRight.rangeMin) + ", " + format("%g", mRight.rangeMax) + "]" +
-                             (mRight.units.empty() ? "" : " " + mRight.units) + ", " + viz::viewKindName(mRight.kind);
-            }
-        } else if (!t.needsGl()) {
-            rightTitle = "computing...";
-        }
-        if (mRightView.zoom > 1.0)
-            rightNote = format("zoom %.0fx (wheel; drag to pan; 0 fits)   ", mRightView.zoom) + rightNote;
-        if (!mCompare.empty()) {
-            const Rect grid{{right.min.x, right.min.y + line}, right.max};
-            drawComparison(dl, grid);
-            mRightImage = {};
-            mViewRects.push_back({"comparison", "comparison grid", grid});
-        } else {
-            mRightImage = drawPane(right, mRight, rightTitle, rightNote, &mRightView);
-            mViewRects.push_back({mHaveOutput ? mRight.id : std::string("none"), rightTitle, mRightImage});
-        }
-        mParamsRect = {{right.min.x, mRightImage.max.y + 2.0f * line}, {right.max.x, right.max.y}};
-        if (mParamsRect.size().y < 4.0f * line || !mCompare.empty()) mParamsRect = {};  // the grid fills the side
+        mParamsRect = right;
+        if (mParamsRect.size().y < 4.0f * line) mParamsRect = {};
         drawParameters(fb);
 
+        mUiMilliseconds = std::chrono::duration<double, std::milli>(Clock::now() - frameStart).count();
         // Panels, then the images, then the text batch over them.
         mTextRenderer->draw(*mBackground, fb);
-        for (const PaneDraw& d : mPaneDraws) {
-            const float shared = std::isnan(d.exposure) ? mExposure : d.exposure;
-            const float exposure = (d.pane->mode == DisplayMode::HdrColor || d.pane->mode == DisplayMode::RangeColor) ? shared : 0.0f;
-            mImageDisplay->draw(*d.pane, d.rect, fb, exposure, d.view ? *d.view : viz::ui::ImageViewTransform{});
-        }
+        for (const PaneDraw& d : mPaneDraws)
+            mImageDisplay->draw(*d.pane, d.rect, fb, d.mapping, d.view ? *d.view : viz::ui::ImageViewTransform{});
         mTextRenderer->draw(dl, fb);
         mTextRenderer->draw(mUi->drawList(), fb);
     }
@@ -1509,14 +2217,20 @@ private:
     // ---- scene and technique controls (immediate-mode widgets) ----
 
     // Medium and light sliders and the technique's parameters, generated from its declarations.
-    void drawParameters(glm::ivec2 fb) {
+    // The widgets' frame starts before the view grid (its display strips) and ends after this panel.
+    void beginWidgets(glm::ivec2 fb) {
         viz::ui::Input in = mUiInput;
         in.mouse = mHover;
+        mHoverDrawn = mHover;
         in.mouseDown = mSyntheticDown ? *mSyntheticDown
                                       : glfwGetMouseButton(mWindow.handle(), GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
         mUiInput = {};
         mUi->setTime(glfwGetTime());
         mUi->beginFrame(in, glm::vec2(fb), mScale);
+    }
+
+    void drawParameters(glm::ivec2 fb) {
+        (void)fb;
         if (mParamsRect.size().y > 0.0f) {
             mUi->beginPanel("Scene and parameters", mParamsRect);
             scenePicker();
@@ -1700,9 +2414,25 @@ private:
     bool mHaveOutput = false;
     glm::ivec2 mOutputSize{0};
     int mPass = 0, mPassCount = 1;
-    PaneImage mFinal, mRight;
-    std::string mViewId = "airlight";
-    int mView = 0, mLayer = 0;
+    // ---- the view grid ----
+    ViewLayout mLayout{0};
+    std::map<int, ViewState> mViews;  // by the layout's view number
+    int mFocused = 1;                 // keys, the views list and exports act on it
+    int mNextView = 2;
+    std::vector<ViewCellRect> mCells;        // where the last frame put each view
+    std::optional<glm::ivec2> mLinkedPixel;  // frame pixel under the cursor (a screen-space view)
+    int mHoveredView = -1;
+    int mDragTitle = -1;                     // a title dragged onto another view swaps the two
+    std::vector<Rect> mStripRects;           // open display strips' widget panels last frame
+    std::map<std::string, OtherRun> mOtherRuns;  // difference views' other side, by technique id
+    OtherRun mSelfRun;
+    std::unique_ptr<CpuWorker> mOtherWorker;  // CPU techniques on the other side of difference views
+    std::string mOtherSceneKey;
+    double mGridMilliseconds = 0.0;  // CPU time drawViewGrid took last frame
+    double mUiMilliseconds = 0.0;    // CPU time of building the whole frame's UI (before its draw calls)
+    glm::vec2 mHoverDrawn{-1.0f};    // the mouse position the widgets saw last frame
+    // markersFor answers by intermediate id, for one pixel of the current run.
+    std::map<std::string, std::pair<glm::ivec2, std::optional<std::vector<viz::ViewMarker>>>> mMarkerCache;
     float mExposure = 0.0f;
     bool mExposureSet = false;
     bool mDirty = true;
@@ -1715,7 +2445,7 @@ private:
         Rect rect;
         const PaneImage* pane;
         const viz::ui::ImageViewTransform* view;  // nullptr: the whole image
-        float exposure = NAN;                     // NaN: the window's exposure
+        DisplayMapping mapping;
     };
     struct CompareTile {
         std::string technique, failure;
@@ -1726,11 +2456,9 @@ private:
     std::vector<CompareTile> mCompare;  // the comparison grid (G), empty when closed
     float mCompareExposure = 0.0f;
     std::vector<PaneDraw> mPaneDraws;
-    viz::ui::ImageViewTransform mRightView;  // pan and zoom of the intermediate view
     std::unique_ptr<viz::ui::Context> mUi;   // the widgets
     viz::ui::Input mUiInput;                 // keys, text and wheel gathered since the last frame
     Rect mParamsRect;                        // the widget panel's area last frame
-    Rect mFinalRect;                         // where the final image was drawn last frame
     std::optional<viz::reference::RayProbe> mProbe;  // the ray inspector's pixel, if any
     std::optional<glm::ivec2> mPendingInspect;  // a lesson step's pixel, inspected when its result is in
     std::unique_ptr<LessonPlayer> mLesson;      // the lesson panel, when a lesson is open
@@ -1740,14 +2468,16 @@ private:
     bool mProbeHasValue = false;
     glm::dvec3 mProbeValue{0.0};
     double mLightIntensity0 = 0.0;           // the first light's intensity at start (slider range)
-    Rect mRightImage;                        // where it was drawn last frame
-    bool mDragView = false;                  // a drag that pans the intermediate view
+    int mDragView = -1;                      // the view a drag pans
     struct ViewRect {
         std::string name, title;
-        Rect rect;  // the image's rectangle in window pixels
+        Rect rect;      // the image's rectangle in window pixels
+        int cell = -1;  // the grid's view number (-1: the comparison grid)
     };
     std::vector<ViewRect> mViewRects;  // what the last frame showed where (screenshot sidecar)
-    std::map<std::string, Rect> mNamedRects;  // sidebar items: "technique:ID", "view:LABEL"
+    // Sidebar items "technique:ID", "view:LABEL"; per grid view N: "cell:N" (image), "title:N", "strip:N"
+    // (the display strip's toggle).
+    std::map<std::string, Rect> mNamedRects;
     std::size_t mScriptIndex = 0;
     int mScriptWait = 0;
     std::optional<bool> mSyntheticDown;  // the script holds the left button (down / just released)

@@ -1,7 +1,8 @@
-// The interactive window: the final frame beside one chosen intermediate (zoomable to texel level), a
-// technique picker, an orbit/fly camera, stage and sub-step stepping, the ray inspector, the comparison
-// grid, a scene and parameter panel, per-stage timing bars, export, a session file, and automation
-// (screenshots with a sidecar of view rectangles, scripted actions).
+// The interactive window: a grid of views (the final frame, L_air, intermediates; each zoomable to
+// texel level, with linked cursors, display controls and difference views), a technique picker, an
+// orbit/fly camera, stage and sub-step stepping, the ray inspector, the comparison grid, a scene and
+// parameter panel, per-stage timing bars, export, a session file, and automation (screenshots with a
+// sidecar of view rectangles, scripted actions).
 #pragma once
 
 #include <string>

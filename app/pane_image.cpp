@@ -1,6 +1,7 @@
 #include "pane_image.h"
 
 #include <algorithm>
+#include <cmath>
 #include <exception>
 
 #include "core/error.h"
@@ -18,6 +19,58 @@ DisplayMode displayModeFor(viz::ViewKind kind) {
         case viz::ViewKind::Depth: return DisplayMode::FalseColor;
         default: return DisplayMode::Grey;
     }
+}
+
+const std::vector<std::string>& rangeModeNames() {
+    static const std::vector<std::string> names = {"suggested", "min / max", "0.1 - 99.9 %", "manual"};
+    return names;
+}
+
+const std::vector<std::string>& colourMapNames() {
+    static const std::vector<std::string> names = {"auto (by kind)", "grey", "sequential (heat)", "ramp",
+                                                   "diverging (signed)", "bits", "categorical"};
+    return names;
+}
+
+DisplayMapping resolveMapping(const PaneImage& pane, const DisplaySettings& settings, float exposure,
+                              const std::optional<ValueRange>& autoRange) {
+    DisplayMapping m;
+    m.channel = settings.channel;
+    m.logScale = settings.logScale;
+    switch (settings.colourMap) {
+        case ColourMap::Auto: m.mode = pane.mode; break;
+        case ColourMap::Grey: m.mode = DisplayMode::Grey; break;
+        case ColourMap::Sequential: m.mode = DisplayMode::Heat; break;
+        case ColourMap::Ramp: m.mode = DisplayMode::FalseColor; break;
+        case ColourMap::Diverging: m.mode = DisplayMode::Signed; break;
+        case ColourMap::Bits: m.mode = DisplayMode::Bits; break;
+        case ColourMap::Categorical: m.mode = DisplayMode::Categorical; break;
+    }
+    m.lo = pane.rangeMin;
+    m.hi = pane.rangeMax;
+    const bool measured = settings.range == RangeMode::MinMax || settings.range == RangeMode::Percentiles;
+    if (settings.range == RangeMode::Manual) {
+        m.lo = settings.manualMin;
+        m.hi = settings.manualMax;
+    } else if (measured && autoRange && autoRange->valid) {
+        m.lo = autoRange->lo;
+        m.hi = autoRange->hi;
+    }
+    // HDR colour has no range, only an exposure: a range (or a log scale) maps it like a data image.
+    if (m.mode == DisplayMode::HdrColor && (settings.range != RangeMode::Suggested || settings.logScale)) {
+        m.mode = DisplayMode::RangeColor;
+        if (settings.range == RangeMode::Suggested && autoRange && autoRange->valid) m.lo = autoRange->lo, m.hi = autoRange->hi;
+        m.exposure = 0.0f;
+    } else {
+        m.exposure = m.mode == DisplayMode::HdrColor || m.mode == DisplayMode::RangeColor ? exposure : 0.0f;
+    }
+    if (m.mode == DisplayMode::RangeColor && settings.range != RangeMode::Suggested) m.exposure = 0.0f;
+    // Negative values are the point of a diverging map: they are not overlaid there.
+    // Auto: radiance images only (a negative radiance is a bug; in data, -1 may mean "outside the cone").
+    const bool radiance = pane.id == "final" || pane.id == "airlight" || pane.units == "radiance";
+    const bool wanted = settings.markNegative < 0 ? radiance : settings.markNegative != 0;
+    m.markNegative = wanted && m.mode != DisplayMode::Signed;
+    return m;
 }
 
 void uploadImage(PaneImage& pane, const viz::Image& image) {
@@ -101,17 +154,25 @@ ImageDisplay::ImageDisplay() {
     mSampler = viz::gl::Sampler::create({.minFilter = GL_NEAREST, .magFilter = GL_NEAREST, .label = "ui.image"});
 }
 
-void ImageDisplay::draw(const PaneImage& pane, const viz::ui::Rect& rect, glm::ivec2 framebuffer, float exposure,
-                        const viz::ui::ImageViewTransform& view) const {
+void ImageDisplay::draw(const PaneImage& pane, const viz::ui::Rect& rect, glm::ivec2 framebuffer,
+                        const DisplayMapping& mapping, const viz::ui::ImageViewTransform& view) const {
     if (pane.texture == 0) return;
     mProgram.set("uView", glm::vec4(glm::vec2(view.center), float(view.zoom), 0.0f));
     // The texel grid only where the user zoomed in (a fitted low-resolution image stays clean).
     mProgram.set("uTexelPixels", view.zoom > 1.0 ? float(view.texelPixels(rect.size().x, std::max(1, pane.size.x))) : 0.0f);
     mProgram.set("uRect", glm::vec4(rect.min, rect.max));
     mProgram.set("uViewport", glm::vec2(framebuffer));
-    mProgram.set("uMode", static_cast<int>(pane.mode));
-    mProgram.set("uRange", glm::vec2(pane.rangeMin, pane.rangeMax));
-    mProgram.set("uExposure", exposure);
+    mProgram.set("uMode", static_cast<int>(mapping.mode));
+    glm::vec2 range(mapping.lo, mapping.hi);
+    if (mapping.logScale) {
+        const ValueRange r = logSafeRange(mapping.lo, mapping.hi);
+        range = {std::log10(r.lo), std::log10(r.hi)};
+    }
+    mProgram.set("uRange", range);
+    mProgram.set("uLog", mapping.logScale);
+    mProgram.set("uChannel", static_cast<int>(mapping.channel));
+    mProgram.set("uMarkNegative", mapping.markNegative);
+    mProgram.set("uExposure", mapping.exposure);
     mProgram.set("uFlipY", pane.flipY);
     mProgram.set("uChannels", pane.channels);
     mProgram.use();

@@ -2,7 +2,9 @@
 // range, colour map by the intermediate's kind), made from a technique's CPU image or GL texture.
 #pragma once
 
+#include <optional>
 #include <string>
+#include <vector>
 
 #include <epoxy/gl.h>
 #include <glm/glm.hpp>
@@ -14,11 +16,14 @@
 #include "gl/vertex_array.h"
 #include "ui/image_view.h"
 #include "ui/text_renderer.h"
+#include "view_stats.h"
 
 namespace airlight {
 
 // Mirrors the modes of shaders/ui/image.frag.
-enum class DisplayMode : int { HdrColor = 0, RangeColor = 1, Grey = 2, Signed = 3, FalseColor = 4, Bits = 5, Mask = 6 };
+enum class DisplayMode : int {
+    HdrColor = 0, RangeColor = 1, Grey = 2, Signed = 3, FalseColor = 4, Bits = 5, Mask = 6, Categorical = 7, Heat = 8
+};
 
 DisplayMode displayModeFor(viz::ViewKind kind);
 
@@ -37,6 +42,42 @@ struct PaneImage {
     std::string unavailable;  // non-empty: nothing to draw, and why
 };
 
+// Where a view's value range comes from: the technique's suggestion (or the window's exposure for HDR
+// colour), the finite min/max, the 0.1 and 99.9 percentiles of the finite values, or two numbers.
+enum class RangeMode : int { Suggested = 0, MinMax = 1, Percentiles = 2, Manual = 3 };
+const std::vector<std::string>& rangeModeNames();
+// A colour map chosen over the one the intermediate's kind suggests.
+enum class ColourMap : int { Auto = 0, Grey = 1, Sequential = 2, Ramp = 3, Diverging = 4, Bits = 5, Categorical = 6 };
+const std::vector<std::string>& colourMapNames();
+
+// One view's display controls (the strip under its title); each view keeps its own.
+struct DisplaySettings {
+    Channel channel = Channel::Rgb;
+    RangeMode range = RangeMode::Suggested;
+    float manualMin = 0.0f, manualMax = 1.0f;
+    bool logScale = false;
+    ColourMap colourMap = ColourMap::Auto;
+    // Negative values in green (NaN and Inf are always marked): -1 = auto, on for radiance images (where
+    // a negative value is a bug) and off for data (where -1 may mean "outside the cone"); 0 off; 1 on.
+    int markNegative = -1;
+    DifferenceMode difference = DifferenceMode::Off;
+    std::string against = "reference";  // the technique the difference is taken to
+    bool stripOpen = false;
+};
+
+// What the shader is given for one draw: the settings resolved against the pane and its statistics.
+struct DisplayMapping {
+    DisplayMode mode = DisplayMode::HdrColor;
+    float lo = 0.0f, hi = 1.0f;  // linear range (the shader takes log10 of a log-safe range itself)
+    float exposure = 0.0f;       // stops, colour modes only
+    Channel channel = Channel::Rgb;
+    bool logScale = false, markNegative = false;
+};
+
+// `autoRange`: the view's finite min/max or percentiles (per the settings), when known.
+DisplayMapping resolveMapping(const PaneImage& pane, const DisplaySettings& settings, float exposure,
+                              const std::optional<ValueRange>& autoRange);
+
 // Uploads a CPU image (row 0 at the top) as RGBA32F; its rows stay top-first, so no flip on display.
 void uploadImage(PaneImage& pane, const viz::Image& image);
 
@@ -48,7 +89,7 @@ void makePane(PaneImage& pane, const viz::Intermediate& in, int layer);
 class ImageDisplay {
 public:
     ImageDisplay();
-    void draw(const PaneImage& pane, const viz::ui::Rect& rect, glm::ivec2 framebuffer, float exposure,
+    void draw(const PaneImage& pane, const viz::ui::Rect& rect, glm::ivec2 framebuffer, const DisplayMapping& mapping,
               const viz::ui::ImageViewTransform& view = {}) const;
 
 private:

@@ -10,6 +10,7 @@
 
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "view_layout.h"
 
 namespace airlight {
 
@@ -62,6 +63,17 @@ std::string sessionToJson(const SessionState& s) {
     j["exposure"] = s.exposure;
     j["exposure_set"] = s.exposureSet;
     if (!s.lesson.empty()) j["lesson"] = {{"path", s.lesson}, {"step", s.lessonStep}, {"try_it", s.lessonTryIt}};
+    if (!s.layout.empty()) {
+        json views = json::array();
+        for (const auto& v : s.gridViews)
+            views.push_back({{"id", v.id}, {"content", v.content}, {"layer", v.layer}, {"zoom", v.zoom},
+                             {"center", {v.center.x, v.center.y}}, {"channel", v.channel}, {"range", v.range},
+                             {"manual", {v.manualMin, v.manualMax}}, {"log", v.logScale}, {"colour_map", v.colourMap},
+                             {"mark_negative", v.markNegative}, {"difference", v.difference},
+                             {"against", v.against}, {"strip_open", v.stripOpen}});
+        j["view_grid"] = {{"layout", s.layout}, {"focused", s.focusedView}, {"maximised", s.maximisedView},
+                          {"views", views}};
+    }
     return j.dump(2) + "\n";
 }
 
@@ -127,6 +139,41 @@ SessionState sessionFromJson(const std::string& text, std::string& problem) {
             if (s.lesson.empty()) throw std::runtime_error("lesson path is empty");
             if (s.lessonStep < 0 || s.lessonStep > 100000) throw std::runtime_error("lesson step is out of range");
             s.lessonTryIt = l.at("try_it").get<bool>();
+        }
+        if (j.contains("view_grid")) {
+            const json& g = j.at("view_grid");
+            s.layout = g.at("layout").get<std::string>();
+            const ViewLayout layout = ViewLayout::fromText(s.layout);  // throws naming the problem
+            s.focusedView = g.at("focused").get<int>();
+            s.maximisedView = g.at("maximised").get<int>();
+            for (const json& v : g.at("views")) {
+                SessionState::GridView e;
+                e.id = v.at("id").get<int>();
+                if (!layout.contains(e.id)) throw std::runtime_error("view_grid: view " + std::to_string(e.id) + " is not in the layout");
+                e.content = v.at("content").get<std::string>();
+                e.layer = v.at("layer").get<int>();
+                e.zoom = readNumber(v, "zoom", 1.0, 4096.0);
+                const json& c = v.at("center");
+                if (!c.is_array() || c.size() != 2) throw std::runtime_error("view_grid: center is not [u, v]");
+                e.center = {c[0].get<double>(), c[1].get<double>()};
+                if (!std::isfinite(e.center.x) || !std::isfinite(e.center.y))
+                    throw std::runtime_error("view_grid: center is not finite");
+                e.channel = int(readNumber(v, "channel", 0, 5));
+                e.range = int(readNumber(v, "range", 0, 3));
+                e.colourMap = int(readNumber(v, "colour_map", 0, 6));
+                e.difference = int(readNumber(v, "difference", 0, 3));
+                const json& m = v.at("manual");
+                if (!m.is_array() || m.size() != 2) throw std::runtime_error("view_grid: manual is not [min, max]");
+                e.manualMin = m[0].get<float>();
+                e.manualMax = m[1].get<float>();
+                if (!std::isfinite(e.manualMin) || !std::isfinite(e.manualMax))
+                    throw std::runtime_error("view_grid: manual range is not finite");
+                e.logScale = v.at("log").get<bool>();
+                e.markNegative = int(readNumber(v, "mark_negative", -1, 1));
+                e.against = v.at("against").get<std::string>();
+                e.stripOpen = v.at("strip_open").get<bool>();
+                s.gridViews.push_back(e);
+            }
         }
     } catch (const std::exception& e) {
         // nlohmann's messages start with "[json.exception.type_error.302] ...": keep the readable part.

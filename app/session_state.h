@@ -6,6 +6,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -33,6 +34,24 @@ struct SessionState {
     std::string lesson;                      // path of the lesson's .md file
     int lessonStep = 0;                      // 0-based
     bool lessonTryIt = false;
+
+    // ---- the view grid (app/view_layout.h); empty layout = the default, the final frame beside `view` ----
+    struct GridView {
+        int id = 0;                          // the layout's view number
+        std::string content = "airlight";    // "final", "airlight" or an intermediate id
+        int layer = 0;
+        double zoom = 1.0;
+        glm::dvec2 center{0.5};
+        // Display settings (app/pane_image.h DisplaySettings), as their enum values.
+        int channel = 0, range = 0, colourMap = 0, difference = 0;
+        float manualMin = 0.0f, manualMax = 1.0f;
+        int markNegative = -1;  // -1 auto, 0 off, 1 on
+        bool logScale = false, stripOpen = false;
+        std::string against = "reference";
+    };
+    std::string layout;            // ViewLayout::toText()
+    int focusedView = -1, maximisedView = -1;
+    std::vector<GridView> gridViews;
 };
 
 std::string sessionToJson(const SessionState& state);

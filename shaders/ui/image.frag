@@ -1,21 +1,28 @@
 #version 450 core
 // Displays one image of a technique: linear HDR colour through exposure and sRGB encoding, or a data
-// intermediate mapped from its suggested range [uRange.x, uRange.y] to grey or false colour.
+// intermediate mapped from the range [uRange.x, uRange.y] (linear or log10) to grey or a colour map.
 // Texels are fetched without filtering, so the internal resolution is upscaled nearest-neighbour.
-// NaN and Inf show as magenta. Integer and depth textures arrive here converted to float.
+// NaN shows magenta, +-Inf cyan, and (when asked) negative values green, so that each stands out on
+// every colour map. Integer and depth textures arrive here converted to float.
 layout(binding = 0) uniform sampler2D uImage;
 
-// Display modes, mirrored by DisplayMode in app/gui.cpp.
-const int kHdrColor = 0;   // c * 2^exposure, clamp, sRGB
-const int kRangeColor = 1; // (c - min) / (max - min) * 2^exposure, clamp, sRGB
-const int kGrey = 2;       // (r - min) / (max - min) as grey
-const int kSigned = 3;     // r / max(|min|, |max|): blue < 0, white at 0, red > 0
-const int kFalse = 4;      // (r - min) / (max - min) through a blue-green-yellow-red ramp
-const int kBits = 5;       // each distinct integer value a different colour, 0 black
-const int kMask = 6;       // r above the middle of the range: white, else black
+// Display modes, mirrored by DisplayMode in app/pane_image.h.
+const int kHdrColor = 0;    // c * 2^exposure, clamp, sRGB
+const int kRangeColor = 1;  // (c - min) / (max - min) * 2^exposure, clamp, sRGB
+const int kGrey = 2;        // (r - min) / (max - min) as grey
+const int kSigned = 3;      // r / max(|min|, |max|): blue < 0, white at 0, red > 0
+const int kFalse = 4;       // (r - min) / (max - min) through a blue-green-yellow-red ramp
+const int kBits = 5;        // each distinct integer value a different colour, 0 black
+const int kMask = 6;        // r above the middle of the range: white, else black
+const int kCategorical = 7; // floor(r) through a fixed palette of 10 distinct colours (levels, classes)
+const int kHeat = 8;        // (r - min) / (max - min): black, purple, orange, pale yellow (error heat maps)
 
+// Channels, mirrored by Channel in app/view_stats.h: 0 RGB, 1-4 R G B A alone, 5 luminance (Rec. 709).
+uniform int uChannel;
 uniform int uMode;
-uniform vec2 uRange;
+uniform vec2 uRange;      // linear range, or (with uLog) the log10 of a positive range
+uniform bool uLog;        // map log10(value) instead of value (colour and sequential modes)
+uniform bool uMarkNegative;
 uniform float uExposure;  // in stops
 uniform bool uFlipY;      // GL-rendered textures keep row 0 at the bottom
 uniform int uChannels;    // meaningful channels; a single channel shows as grey in the colour modes
@@ -39,10 +46,36 @@ vec3 falseColor(float t) {
     return mix(stops[i], stops[i + 1], x - float(i));
 }
 
+// The report's error ramp (viz/report/error_images.cpp), display values; t in [0,1].
+vec3 heatColor(float t) {
+    const vec3 stops[5] = vec3[5](vec3(0.0), vec3(0.34, 0.06, 0.42), vec3(0.73, 0.21, 0.33),
+                                  vec3(0.98, 0.55, 0.04), vec3(0.99, 0.98, 0.55));
+    float x = clamp(t, 0.0, 1.0) * 4.0;
+    int i = min(int(x), 3);
+    return mix(stops[i], stops[i + 1], x - float(i));
+}
+
+vec3 categoricalColor(int k) {
+    const vec3 palette[10] = vec3[10](vec3(0.12, 0.47, 0.71), vec3(1.0, 0.50, 0.05), vec3(0.17, 0.63, 0.17),
+                                      vec3(0.84, 0.15, 0.16), vec3(0.58, 0.40, 0.74), vec3(0.55, 0.34, 0.29),
+                                      vec3(0.89, 0.47, 0.76), vec3(0.50, 0.50, 0.50), vec3(0.74, 0.74, 0.13),
+                                      vec3(0.09, 0.75, 0.81));
+    return palette[((k % 10) + 10) % 10];
+}
+
 // Integer hash to a saturated colour, so neighbouring bit patterns look different.
 vec3 hashColor(uint v) {
     v ^= v >> 16; v *= 0x7feb352du; v ^= v >> 15; v *= 0x846ca68bu; v ^= v >> 16;
     return vec3(float(v & 255u), float((v >> 8) & 255u), float((v >> 16) & 255u)) / 255.0 * 0.8 + 0.2;
+}
+
+bool anyOf(bvec4 a, bvec4 mask) { return any(bvec4(uvec4(a) & uvec4(mask))); }
+
+// Position of x in the range, unclamped (mirrors mapToUnit in app/view_stats.cpp).
+float unit(float x) {
+    float span = max(uRange.y - uRange.x, 1e-30);
+    float v = uLog ? log(max(x, 1e-30)) / log(10.0) : x;
+    return (v - uRange.x) / span;
 }
 
 void main() {
@@ -60,19 +93,33 @@ void main() {
         }
     }
     vec4 v = texelFetch(uImage, texel, 0);
-    if (any(isnan(v)) || any(isinf(v))) {
+    // Only the meaningful channels count (a one-channel texture reads back g = b = 0, a = 1).
+    bvec4 meaningful = bvec4(true, uChannels > 1, uChannels > 2, uChannels > 3);
+    if (anyOf(isnan(v), meaningful)) {
         fragColor = vec4(1.0, 0.0, 1.0, 1.0);
         return;
     }
-    uvec4 raw = uvec4(max(v, 0.0));
+    if (anyOf(isinf(v), meaningful)) {
+        fragColor = vec4(0.0, 1.0, 1.0, 1.0);
+        return;
+    }
+    if (uMarkNegative && anyOf(lessThan(v, vec4(0.0)), meaningful)) {
+        fragColor = vec4(0.3, 1.0, 0.2, 1.0);
+        return;
+    }
     if (uChannels == 1) v.rgb = v.rrr;
-    float span = max(uRange.y - uRange.x, 1e-30);
-    float t = (v.r - uRange.x) / span;
+    if (uChannel >= 1 && uChannel <= 4) {
+        v.rgb = vec3(v[uChannel - 1]);
+    } else if (uChannel == 5) {
+        v.rgb = vec3(dot(v.rgb, vec3(0.2126, 0.7152, 0.0722)));
+    }
+    uvec4 raw = uvec4(max(v, 0.0));
+    float t = unit(v.r);
     vec3 c;
     if (uMode == kHdrColor) {
         c = srgbEncode(v.rgb * exp2(uExposure));
     } else if (uMode == kRangeColor) {
-        c = srgbEncode((v.rgb - uRange.x) / span * exp2(uExposure));
+        c = srgbEncode(vec3(unit(v.r), unit(v.g), unit(v.b)) * exp2(uExposure));
     } else if (uMode == kGrey) {
         c = vec3(clamp(t, 0.0, 1.0));
     } else if (uMode == kSigned) {
@@ -82,6 +129,10 @@ void main() {
         c = falseColor(t);
     } else if (uMode == kBits) {
         c = raw.r == 0u ? vec3(0.0) : hashColor(raw.r);
+    } else if (uMode == kCategorical) {
+        c = categoricalColor(int(floor(v.r)));
+    } else if (uMode == kHeat) {
+        c = heatColor(t);
     } else {
         c = vec3(t > 0.5 ? 1.0 : 0.0);
     }

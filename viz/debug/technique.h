@@ -66,6 +66,15 @@ struct Intermediate {
 
 using Settings = std::map<std::string, double>;
 
+// A mark a technique can draw in one of its algorithm-space intermediates for a screen pixel (the
+// window's linked cursors: the epipolar row of the pixel in a rectified map, say). A segment from
+// `from` to `to` (equal: a point) in the intermediate's data uv: [0,1]^2 over its columns and its rows
+// as stored (row 0 = the first row; a GL texture shows it at the bottom).
+struct ViewMarker {
+    glm::vec2 from{0.0f}, to{0.0f};
+    std::string label;  // short, e.g. "slice 37"
+};
+
 // Which stages run for a scene and settings, and for each one left out, why.
 struct StagePlan {
     std::string stage;
@@ -133,6 +142,14 @@ public:
     // bound it promises per case class. No bound: the technique does not handle that class, and then it
     // must say so in plan() and refuse (InputError) or fall back to a correct path.
     virtual Settings stiffSettings() const { return {}; }
+    // Marks for the screen pixel `pixel` (column, row 0 at the top, of the last run's frame) in the
+    // intermediate `intermediateId` of the last run; empty when the technique cannot map it there. GPU
+    // techniques may read their textures (the GL context is current).
+    virtual std::vector<ViewMarker> markersFor(glm::ivec2 pixel, const std::string& intermediateId) const {
+        (void)pixel;
+        (void)intermediateId;
+        return {};
+    }
     virtual std::optional<StiffBound> stiffBound(const std::string& caseClass) const {
         (void)caseClass;
         return std::nullopt;

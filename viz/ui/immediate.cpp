@@ -191,7 +191,8 @@ Context::Interaction Context::interact(Id id, const Rect& rect, std::string_view
     if (focusable) mFocusOrder.push_back(id);
     // Hidden by scrolling (outside the panel's clip) or under last frame's open popup: not hoverable.
     bool visible = true;
-    if (!mPanels.empty()) {
+    // A popup's items are drawn over everything (the overlay): they may hang below their panel.
+    if (!mPanels.empty() && !mInPopup) {
         const Panel& p = mPanels.back();
         visible = mInput.mouse.y >= p.contentTop && contains(p.area, mInput.mouse);
     }

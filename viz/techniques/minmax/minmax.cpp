@@ -306,6 +306,9 @@ public:
     FrameOutput run(const FrameInput& input) override {
         const scene::Scene& scene = *input.scene;
         const Settings& s = input.settings;
+        mMarkCamera = scene.camera;
+        mMarkSize = {input.width, input.height};
+        mMarkTraversed = false;
         FrameOutput out;
         out.plan = plan(scene, s);
         out.timing.clock = gl::StageClock::method();
@@ -363,6 +366,7 @@ public:
         }
         out.timing.stages.push_back({kStageTraverse, clock.endMilliseconds()});
         publishTraverse(out, input);
+        mMarkTraversed = runs(kTraverseIndex) && !mWork.empty();
         out.airlight = render::readRgb(mAirlight);
         out.lastStageRun = kTraverseIndex;
         if (stop == kTraverseIndex) return out;
@@ -372,6 +376,35 @@ public:
         out.timing.stages.push_back({mStages[kComposeIndex].id, clock.endMilliseconds()});
         out.lastStageRun = kComposeIndex;
         return out;
+    }
+
+    // The pixel's epipolar slice (first epipolar light) as a row of the rectified map, its view and the
+    // min-max tree; after the traversal also the columns the camera ray covers (gamma from the eye up to
+    // its end column cEnd, the GPU's own value) as a segment on that row.
+    std::vector<ViewMarker> markersFor(glm::ivec2 pixel, const std::string& id) const override {
+        const bool rectified = id == kRectified || id == kRectifiedView;
+        if (mWork.empty() || (!rectified && id != kTree)) return {};
+        if (pixel.x < 0 || pixel.y < 0 || pixel.x >= mMarkSize.x || pixel.y >= mMarkSize.y) return {};
+        const auto f = minmax::toFloat(mWork.front().setup.frame);
+        const glm::vec3 w = glm::vec3(scene::pixelRay(mMarkCamera, mMarkSize.x, mMarkSize.y, pixel.x, pixel.y));
+        const int row = minmax::sliceRow(f, minmax::alphaOf(f, w));
+        const float v = (float(row) + 0.5f) / float(std::max(1, f.slices));
+        // Tree texels: leaves at columns .. 2 columns - 1 (Ahnentafel order) of a row 2 columns wide.
+        const float x0 = rectified ? 0.0f : 0.5f, width = rectified ? 1.0f : 0.5f;
+        const std::string label = "slice " + std::to_string(row);
+        std::vector<ViewMarker> marks = {{{0.0f, v}, {1.0f, v}, label}};
+        if (mMarkTraversed && mRayCoords && mRayCoords.size().x == mMarkSize.x && mRayCoords.size().y == mMarkSize.y) {
+            float coords[4] = {0.0f, 0.0f, 0.0f, 0.0f}, near = 0.0f;
+            const int glRow = mMarkSize.y - 1 - pixel.y;
+            glGetTextureSubImage(mRayCoords.id(), 0, pixel.x, glRow, 0, 1, 1, 1, GL_RGBA, GL_FLOAT, sizeof coords, coords);
+            glGetTextureSubImage(mNearMask.id(), 0, pixel.x, glRow, 0, 1, 1, 1, GL_RED, GL_FLOAT, sizeof near, &near);
+            // Near the epipole the pixel is marched by brute force: there is no walk along the row.
+            if (near < 0.5f && std::isfinite(coords[2])) {
+                const float end = std::clamp(coords[2] / float(std::max(1, f.columns)), 0.0f, 1.0f);
+                marks.push_back({{x0, v}, {x0 + width * end, v}, "ray: columns 0.." + std::to_string(int(coords[2]))});
+            }
+        }
+        return marks;
     }
 
 private:
@@ -727,6 +760,10 @@ private:
     gl::Program mRectify, mMipmap, mTraverse, mPrefix;
     std::string mProgramKey;
     gl::Texture mAirlight, mVisited, mNearMask, mRayCoords;
+    // What markersFor needs of the last run.
+    scene::Camera mMarkCamera;
+    glm::ivec2 mMarkSize{0};
+    bool mMarkTraversed = false;
 };
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -211,6 +212,7 @@ public:
         const std::vector<int> lights = shadedLights(scene);
         const GridSize size = gridSize(s);
         gl::StageClock clock;
+        mMark.reset();
 
         // ---- shadow maps and camera view ----
         if (!mView.runSharedStages(input, stop, mStages, "vsv", out)) return out;
@@ -234,6 +236,7 @@ public:
             const glm::dvec3 ray = scene::pixelRay(scene.camera, input.width, input.height, pickX, pickY);
             pickTheta = std::clamp(int(std::floor(vsv::thetaCoord(g, vsv::thetaOf(f, ray)))), 0, g.nTheta - 1);
             if (s.at("pick_theta") >= 0) pickTheta = std::min(int(s.at("pick_theta")), g.nTheta - 1);
+            mMark = MarkState{f, g, scene.camera, {input.width, input.height}, pickTheta};
         }
 
         // ---- voxelize ----
@@ -310,7 +313,37 @@ public:
         return out;
     }
 
+    // A screen pixel in the grid of the shown light: its eye ray's theta cell as a row of the occluder
+    // map (x = phi bit, y = theta cell), and in the alpha x phi voxel slices, when the slice shown is
+    // the pixel's (theta cell = pick_theta's), its eye ray as the column at its alpha.
+    std::vector<ViewMarker> markersFor(glm::ivec2 pixel, const std::string& id) const override {
+        if (!mMark || (id != kOccluder && id != kVoxelSlice && id != kScanSlice)) return {};
+        const MarkState& m = *mMark;
+        if (pixel.x < 0 || pixel.y < 0 || pixel.x >= m.size.x || pixel.y >= m.size.y) return {};
+        const glm::dvec3 ray = scene::pixelRay(m.camera, m.size.x, m.size.y, pixel.x, pixel.y);
+        const int theta = int(std::floor(vsv::thetaCoord(m.grid, vsv::thetaOf(m.frame, ray))));
+        if (theta < 0 || theta >= m.grid.nTheta) return {};  // outside the grid (near the epipole)
+        if (id == kOccluder) {
+            const float v = (float(theta) + 0.5f) / float(m.grid.nTheta);
+            return {{{0.0f, v}, {1.0f, v}, "theta cell " + std::to_string(theta)}};
+        }
+        if (theta != m.pickTheta) return {};
+        const double alpha = vsv::alphaCoord(m.grid, vsv::alphaOf(m.frame, ray));
+        if (alpha < 0.0 || alpha >= double(m.grid.nAlpha)) return {};
+        const float u = float(alpha) / float(m.grid.nAlpha);
+        return {{{u, 0.0f}, {u, 1.0f}, "eye ray, alpha cell " + std::to_string(int(alpha))}};
+    }
+
 private:
+    struct MarkState {
+        vsv::EpipolarFrame frame;
+        vsv::EpipolarGrid grid;
+        scene::Camera camera;
+        glm::ivec2 size{0};
+        int pickTheta = 0;
+    };
+    std::optional<MarkState> mMark;  // the shown light's grid in the last run, for markersFor
+
     Plan planFor(const scene::Scene& scene, const Settings& settings, int width, int height) const {
         Plan p;
         for (const StageInfo& st : mStages) p.stages.push_back({st.id, true, ""});

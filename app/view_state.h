@@ -1,0 +1,52 @@
+// One cell of the window's view grid: what it shows (the final frame, L_air or an intermediate, which
+// layer), its pan and zoom, its display settings, the pane built from the last run, and a CPU copy of
+// the pane's values with the statistics the display strip shows (refreshed after each run).
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "core/image.h"
+#include "pane_image.h"
+#include "report/error_metrics.h"
+#include "ui/image_view.h"
+#include "ui/text_renderer.h"
+#include "view_stats.h"
+
+namespace airlight {
+
+struct ViewState {
+    std::string content = "airlight";  // "final", "airlight" or an intermediate id
+    int index = 0;   // which intermediate of that id (ids repeat: one shadow map per light)
+    int layer = 0;   // array layer, cube face or 3D slice
+    int shown = -1;  // what the last run gave it, as a views-list index (0 final, 1 L_air, 2.. intermediates)
+    viz::ui::ImageViewTransform transform;
+    DisplaySettings display;
+
+    PaneImage pane;  // rebuilt after each run
+
+    // CPU copy of the pane's texels (row 0 = the row shown at the top, the pane's channel count up to 4)
+    // and what the display strip shows of it; empty until read back.
+    viz::Image values;
+    int meaningful = 0;  // channels of `values` that carry data
+    SpecialCounts counts;
+    ValueRange finite;                 // of the chosen channel
+    std::optional<ValueRange> measured;  // min/max or percentiles per display.range, when measured
+    Histogram histogram;               // of the chosen channel over `finite`
+    // Difference mode: the figures against the other technique, and why there is no difference image.
+    std::optional<viz::report::ErrorMetrics> error;
+    std::string differenceNote;
+
+    // Where the last frame drew it (window pixels).
+    viz::ui::Rect cell, title, image, strip;
+};
+
+// Reads the pane's texture back into `values` (rows flipped so row 0 is the top row shown) and
+// recomputes the statistics. A pane without a texture clears them.
+void readBackValues(ViewState& view);
+// Recomputes the statistics from `values` for the current display settings (channel, range, log).
+void updateStatistics(ViewState& view);
+// The value of texel (x, y) (row 0 at the top) from the CPU copy; false when there is none.
+bool valueAt(const ViewState& view, glm::ivec2 texel, glm::vec4& out);
+
+}  // namespace airlight

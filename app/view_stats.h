@@ -1,0 +1,68 @@
+// Numbers behind a view's display controls, computed on the CPU from a readback of the view's image:
+// the values of the chosen channel, their finite range (min/max or percentiles), a histogram, the
+// counts of NaN, Inf and negative pixels, the mapping to [0, 1] the shader applies (linear or log), and
+// the difference of two images shown by a view in difference mode. Pure functions, no GL.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "core/image.h"
+
+namespace airlight {
+
+// Mirrored by uChannel in shaders/ui/image.frag.
+enum class Channel : int { Rgb = 0, R = 1, G = 2, B = 3, A = 4, Luminance = 5 };
+const std::vector<std::string>& channelNames();  // "RGB", "R", ..., index = Channel
+
+// Rec. 709 luminance weights, the ones the shader uses.
+inline constexpr float kLuminance[3] = {0.2126f, 0.7152f, 0.0722f};
+
+// The values the view shows of `image` for `channel`, considering only its first `meaningful` channels
+// (a GL texture read back as RGBA may hold fewer): Rgb gives every meaningful colour channel (at most
+// 3) of every pixel; R, G, B, A one value per pixel (none when the image lacks that channel); Luminance
+// one value per pixel (a single-channel image gives its value). NaN and Inf are kept.
+std::vector<float> channelValues(const viz::Image& image, Channel channel, int meaningful);
+
+// Pixels with at least one NaN / Inf / negative value among their first `meaningful` channels.
+struct SpecialCounts {
+    std::size_t nan = 0, inf = 0, negative = 0;
+};
+SpecialCounts countSpecial(const viz::Image& image, int meaningful);
+
+struct ValueRange {
+    float lo = 0.0f, hi = 1.0f;
+    bool valid = false;  // false: no finite value
+};
+// Smallest and largest finite value.
+ValueRange finiteRange(const std::vector<float>& values);
+// The `lower` and `upper` quantiles (in [0, 1]) of the finite values, nearest rank.
+ValueRange percentileRange(std::vector<float> values, double lower, double upper);
+
+// The range the shader maps from on a log scale: [lo, hi] with a non-positive lo replaced by hi * 1e-6
+// (and hi <= 0 by [1e-6, 1]), so that log10 is defined at both ends.
+ValueRange logSafeRange(float lo, float hi);
+// Where the shader puts v in [0, 1] for the range [lo, hi], linear or log10 (through logSafeRange);
+// not clamped; a degenerate range maps everything to 0.
+float mapToUnit(float v, float lo, float hi, bool logarithmic);
+
+// Counts of finite values in `bins` equal bins over [lo, hi] (log10-spaced when `logarithmic`); values
+// outside are counted in `below` / `above` (non-positive values are below a log histogram).
+struct Histogram {
+    std::vector<std::size_t> bins;
+    std::size_t below = 0, above = 0;
+    float lo = 0.0f, hi = 1.0f;
+    bool logarithmic = false;
+};
+Histogram histogram(const std::vector<float>& values, float lo, float hi, int bins, bool logarithmic);
+
+// The difference a view shows between `test` and `other` (same size; colour channels summed):
+//   Absolute: sum_c |test - other|;  Signed: sum_c (test - other);
+//   Relative: sum_c |test - other| / max(sum_c |other|, kRelativeFloor * mean over pixels of sum_c |other|)
+// (the per-pixel relative error of viz/report/error_metrics.h). One channel.
+enum class DifferenceMode : int { Off = 0, Absolute = 1, Signed = 2, Relative = 3 };
+const std::vector<std::string>& differenceModeNames();  // index = DifferenceMode
+viz::Image differenceImage(const viz::Image& test, const viz::Image& other, DifferenceMode mode);
+
+}  // namespace airlight
