@@ -215,7 +215,7 @@ TEST(ReferencePieces, AreaLightMatchesMidpointAndConverges) {
     auto referenceWith = [&](int n) {
         const auto lights = reference::PreparedLights::build(s, n);
         glm::dvec3 sum(0.0);
-        for (const auto& e : lights.points) sum += reference::pointEmitterSegment(e, o, w, a, b, kMedium);
+        for (const auto& e : lights.points) sum += reference::emitterSegment(e, o, w, a, b, kMedium);
         return sum;
     };
     // Midpoint over 96 x 96 emitter cells and 2000 steps in t: O(h^2) errors of about 1e-5 relative

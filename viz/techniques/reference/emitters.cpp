@@ -4,40 +4,8 @@
 #include <cmath>
 
 #include "core/error.h"
-#include "scene/texture_sampling.h"
-#include "shared/gauss_legendre.h"
-#include "techniques/reference/quadrature.h"
 
 namespace viz::reference {
-
-// ---- textures ----
-
-LinearTexture::LinearTexture(const scene::Texture& texture) : mWidth(texture.width), mHeight(texture.height) {
-    VIZ_CHECK(texture.rgba8.size() == std::size_t(mWidth) * std::size_t(mHeight) * 4u,
-              "texture '" + texture.name + "' has the wrong byte count");
-    // Decode once: 256-entry table.
-    double table[256];
-    for (int i = 0; i < 256; ++i) table[i] = scene::srgbToLinearExact(i / 255.0);
-    mTexels.resize(std::size_t(mWidth) * std::size_t(mHeight));
-    for (std::size_t i = 0; i < mTexels.size(); ++i) {
-        mTexels[i] = glm::dvec3(table[texture.rgba8[4 * i + 0]], table[texture.rgba8[4 * i + 1]],
-                                table[texture.rgba8[4 * i + 2]]);
-    }
-}
-
-glm::dvec3 LinearTexture::sample(glm::dvec2 uv) const {
-    if (mWidth == 0) return glm::dvec3(1.0);
-    // Texel space: texel (i, j) has its centre at (i + 0.5, j + 0.5); uv outside [0,1] clamps.
-    const double fx = std::clamp(uv.x, 0.0, 1.0) * mWidth - 0.5;
-    const double fy = std::clamp(uv.y, 0.0, 1.0) * mHeight - 0.5;
-    const double x0f = std::floor(fx), y0f = std::floor(fy);
-    const double ax = fx - x0f, ay = fy - y0f;
-    const int x0 = std::clamp(int(x0f), 0, mWidth - 1), x1 = std::clamp(int(x0f) + 1, 0, mWidth - 1);
-    const int y0 = std::clamp(int(y0f), 0, mHeight - 1), y1 = std::clamp(int(y0f) + 1, 0, mHeight - 1);
-    const glm::dvec3 top = (1.0 - ax) * texel(x0, y0) + ax * texel(x1, y0);
-    const glm::dvec3 bottom = (1.0 - ax) * texel(x0, y1) + ax * texel(x1, y1);
-    return (1.0 - ay) * top + ay * bottom;
-}
 
 // ---- spot lights ----
 
@@ -104,9 +72,14 @@ PreparedLights PreparedLights::build(const scene::Scene& scene, int areaSamples)
     out.lightCount = int(scene.lights.size());
     out.textures.reserve(scene.textures.size());
     for (const auto& t : scene.textures) out.textures.emplace_back(t);
-    // Reserve so that the pointers PointEmitter::spot keeps stay valid.
+    // Reserve so that the pointers PointEmitter::spot, PointEmitter::cell and AreaCell::emitter keep stay
+    // valid (moving the vectors later keeps their elements in place).
+    const int n = std::max(1, areaSamples);
+    std::size_t areaLights = 0;
+    for (const auto& light : scene.lights) areaLights += light.type == scene::LightType::Area ? 1u : 0u;
     out.spots.reserve(scene.lights.size());
-    const QuadratureRule rule = gaussLegendreRuleUnit(std::max(1, areaSamples));
+    out.areaEmitters.reserve(areaLights);
+    out.cells.reserve(areaLights * std::size_t(n) * std::size_t(n));
     for (std::size_t li = 0; li < scene.lights.size(); ++li) {
         const scene::Light& light = scene.lights[li];
         switch (light.type) {
@@ -133,22 +106,29 @@ PreparedLights PreparedLights::build(const scene::Scene& scene, int areaSamples)
                 break;
             }
             case scene::LightType::Area: {
-                // Product Gauss-Legendre rule over the rectangle: node (i, j) at uv = (x_i, x_j) stands for
-                // the emitter patch of area w_i w_j |2 halfU x 2 halfV|.
-                const double area = 4.0 * glm::length(glm::cross(light.halfU, light.halfV));
-                const glm::dvec3 n = glm::normalize(light.direction);
+                // N x N equal cells of the rectangle; each is one emitter for visibility (from its centre)
+                // and integrates its kernel over its area (area_cells.h).
+                out.areaEmitters.push_back(AreaEmitter::fromLight(light, int(li), out.textures));
+                const AreaEmitter& emitter = out.areaEmitters.back();
                 AreaRange range{int(li), out.points.size(), 0};
-                for (std::size_t j = 0; j < rule.nodes.size(); ++j) {
-                    for (std::size_t i = 0; i < rule.nodes.size(); ++i) {
-                        const glm::dvec2 uv(rule.nodes[i], rule.nodes[j]);
+                for (int j = 0; j < n; ++j) {
+                    for (int i = 0; i < n; ++i) {
+                        AreaCell cell;
+                        cell.emitter = &emitter;
+                        cell.uv0 = glm::dvec2(double(i), double(j)) / double(n);
+                        cell.uv1 = glm::dvec2(double(i + 1), double(j + 1)) / double(n);
+                        cell.farNodes = leafNodes(emitter, cell.uv0, cell.uv1, kLeafOrderFar);
+                        cell.nearNodes = leafNodes(emitter, cell.uv0, cell.uv1, kLeafOrderNear);
+                        out.cells.push_back(std::move(cell));
+                        const AreaCell& stored = out.cells.back();
                         PointEmitter e;
-                        e.position = light.position + (2.0 * uv.x - 1.0) * light.halfU + (2.0 * uv.y - 1.0) * light.halfV;
-                        const double dA = rule.weights[i] * rule.weights[j] * area;
-                        e.intensity = areaRadiance(light, out.textures, uv) * dA;
+                        e.position = emitter.position(0.5 * (stored.uv0 + stored.uv1));
+                        for (const CellNode& node : stored.farNodes) e.intensity += node.weight;
                         e.kind = ProfileKind::Lambertian;
-                        e.normal = n;
+                        e.normal = emitter.normal;
                         e.light = int(li);
-                        e.nodeWeight = rule.weights[i] * rule.weights[j];
+                        e.nodeWeight = 1.0 / (double(n) * double(n));
+                        e.cell = &stored;
                         out.points.push_back(e);
                         ++range.count;
                     }

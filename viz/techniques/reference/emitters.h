@@ -1,6 +1,7 @@
 // The lights of a scene prepared for the reference, in world space and double precision:
-// point-like emitters (point lights, spot lights, and the Gauss-Legendre nodes of area lights, each
-// a point source with its own angular profile) and directional lights.
+// point-like emitters (point lights, spot lights, and the cells of area lights, each with its own
+// visibility and angular profile; a cell integrates its kernel over its area, see area_cells.h) and
+// directional lights.
 //
 // Notation: P the emitter position, s the spot direction, x a point in the medium, r = |x - P|.
 #pragma once
@@ -10,26 +11,10 @@
 #include <glm/glm.hpp>
 
 #include "scene/scene.h"
+#include "techniques/reference/area_cells.h"
+#include "techniques/reference/linear_texture.h"
 
 namespace viz::reference {
-
-// RGB texture decoded from sRGB to linear once, sampled bilinearly with texel centres at
-// ((i + 0.5) / width, (j + 0.5) / height), row 0 = v near 0 = the top row of the file.
-class LinearTexture {
-public:
-    LinearTexture() = default;
-    explicit LinearTexture(const scene::Texture& texture);
-    bool empty() const { return mWidth == 0; }
-    int width() const { return mWidth; }
-    int height() const { return mHeight; }
-    // Bilinear, clamp to edge (the convention of scene/texture_sampling.h, in double precision).
-    glm::dvec3 sample(glm::dvec2 uv) const;
-
-private:
-    glm::dvec3 texel(int i, int j) const { return mTexels[std::size_t(j) * std::size_t(mWidth) + std::size_t(i)]; }
-    int mWidth = 0, mHeight = 0;
-    std::vector<glm::dvec3> mTexels;
-};
 
 // KHR_lights_punctual spot cone plus an optional cookie projected over the outer cone.
 struct SpotProfile {
@@ -58,12 +43,13 @@ enum class ProfileKind { Isotropic, Spot, Lambertian };
 // A point source: radiant intensity I(x) = intensity * profile(direction P -> x).
 struct PointEmitter {
     glm::dvec3 position{0.0};
-    glm::dvec3 intensity{0.0};  // point/spot: I * color; area node: L_e(uv) * dA (RGB)
+    glm::dvec3 intensity{0.0};  // point/spot: I * color; area cell: int_cell L_e dA (RGB)
     ProfileKind kind = ProfileKind::Isotropic;
     const SpotProfile* spot = nullptr;  // kind == Spot
     glm::dvec3 normal{0.0};             // kind == Lambertian: emitter normal, profile = max(0, cos)
     int light = -1;                     // index into Scene::lights
-    double nodeWeight = 1.0;            // share of the light this emitter stands for (1, or GL weight)
+    double nodeWeight = 1.0;            // share of the light this emitter stands for (1, or cell area / area)
+    const AreaCell* cell = nullptr;     // area cells: the cell (position = its centre, for visibility)
 
     // profile(direction P -> x) for unit dir (RGB because of cookies).
     glm::dvec3 profile(const glm::dvec3& dirFromLight) const;
@@ -79,9 +65,11 @@ struct DirectionalEmitter {
 struct PreparedLights {
     std::vector<LinearTexture> textures;  // Scene::textures decoded, same indices
     std::vector<SpotProfile> spots;       // one per spot light (PointEmitter::spot points here)
-    std::vector<PointEmitter> points;     // point, spot, and area-light nodes
+    std::vector<AreaEmitter> areaEmitters;  // one per area light (AreaCell::emitter points here)
+    std::vector<AreaCell> cells;            // every area light's cells (PointEmitter::cell points here)
+    std::vector<PointEmitter> points;     // point, spot, and area-light cells
     std::vector<DirectionalEmitter> directionals;
-    // For each area light: its index and the range of its nodes in points.
+    // For each area light: its index and the range of its cells in points.
     struct AreaRange {
         int light = -1;
         std::size_t first = 0, count = 0;
@@ -89,7 +77,7 @@ struct PreparedLights {
     std::vector<AreaRange> areas;
     int lightCount = 0;
 
-    // areaSamples: Gauss-Legendre nodes per rectangle axis.
+    // areaSamples: cells per rectangle axis (areaSamples^2 cells per area light).
     static PreparedLights build(const scene::Scene& scene, int areaSamples);
     PreparedLights() = default;
     PreparedLights(const PreparedLights&) = delete;

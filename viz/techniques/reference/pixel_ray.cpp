@@ -47,7 +47,7 @@ glm::dvec3 rayAirlight(const PreparedLights& lights, const glm::dvec3& o, const 
                        const std::vector<VisibilitySearch>& lit, const MediumParams& medium) {
     glm::dvec3 L(0.0);
     for (std::size_t k = 0; k < lights.points.size(); ++k)
-        for (const Interval& iv : lit[k].lit) L += pointEmitterSegment(lights.points[k], o, w, iv.a, iv.b, medium);
+        for (const Interval& iv : lit[k].lit) L += emitterSegment(lights.points[k], o, w, iv.a, iv.b, medium);
     for (std::size_t k = 0; k < lights.directionals.size(); ++k)
         for (const Interval& iv : lit[lights.points.size() + k].lit)
             L += directionalSegment(lights.directionals[k], w, iv.a, iv.b, medium);
@@ -61,6 +61,10 @@ glm::dvec3 rayIntegrand(const PreparedLights& lights, const glm::dvec3& o, const
     for (std::size_t k = 0; k < lights.points.size(); ++k) {
         if (!insideLit(lit[k], t)) continue;
         const PointEmitter& e = lights.points[k];
+        if (e.cell) {
+            sum += medium.sigma_s * std::exp(-medium.sigma_t * t) * cellInScatter(*e.cell, x, w, medium);
+            continue;
+        }
         const glm::dvec3 toX = x - e.position;
         const double r = glm::length(toX);
         if (!(r > 0.0)) continue;

@@ -148,7 +148,7 @@ std::vector<double> profileKinks(const PointEmitter& e, const RayEmitterGeometry
 }
 
 glm::dvec3 pointEmitterSegment(const PointEmitter& e, const glm::dvec3& o, const glm::dvec3& w, double a,
-                               double b, const MediumParams& m, SegmentStats* stats) {
+                               double b, const MediumParams& m, SegmentStats* stats, double relTol) {
     if (!(b > a) || m.sigma_s == 0.0) return glm::dvec3(0.0);
     const RayEmitterGeometry g = rayEmitterGeometry(o, w, e.position);
     if (e.kind == ProfileKind::Isotropic) {
@@ -182,7 +182,7 @@ glm::dvec3 pointEmitterSegment(const PointEmitter& e, const glm::dvec3& o, const
         const bool dark = e.kind == ProfileKind::Spot ? e.spot->attenuation(midDir) == 0.0
                                                       : glm::dot(e.normal, midDir) <= 0.0;
         if (dark) continue;
-        const QuadratureResult q = integrateAdaptive(integrand, lo, hi, kSegmentRelTol, 0.0);
+        const QuadratureResult q = integrateAdaptive(integrand, lo, hi, relTol, 0.0);
         sum += q.value;
         if (stats) {
             ++stats->pieces;
@@ -192,6 +192,53 @@ glm::dvec3 pointEmitterSegment(const PointEmitter& e, const glm::dvec3& o, const
         }
     }
     return e.intensity * sum;
+}
+
+// ---- area cells ----
+
+glm::dvec3 cellSegment(const AreaCell& cell, const glm::dvec3& o, const glm::dvec3& w, double a, double b,
+                       const MediumParams& m) {
+    if (!(b > a) || m.sigma_s == 0.0) return glm::dvec3(0.0);
+    const AreaEmitter& e = *cell.emitter;
+    // Keep the part of [a, b] in front of the emitter's plane (s = signed height above it, linear in t):
+    // behind it cos(theta_e) <= 0 for every node, and a near-miss there must not refine the cell.
+    const double s0 = glm::dot(o + a * w - e.corner, e.normal), s1 = glm::dot(o + b * w - e.corner, e.normal);
+    if (s0 <= 0.0 && s1 <= 0.0) return glm::dvec3(0.0);
+    if (s0 < 0.0) a += (b - a) * (-s0 / (s1 - s0));
+    if (s1 < 0.0) b = a + (b - a) * (s0 / (s0 - s1));
+    if (!(b > a)) return glm::dvec3(0.0);
+    glm::dvec3 sum(0.0);
+    for (const CellNode& node : cellNodes(cell, o + a * w, o + b * w)) {
+        PointEmitter p;
+        p.position = node.position;
+        p.intensity = node.weight;
+        p.kind = ProfileKind::Lambertian;
+        p.normal = e.normal;
+        sum += pointEmitterSegment(p, o, w, a, b, m, nullptr, kCellNodeRelTol);
+    }
+    return sum;
+}
+
+glm::dvec3 cellInScatter(const AreaCell& cell, const glm::dvec3& x, const glm::dvec3& w, const MediumParams& m) {
+    const glm::dvec3 normal = cell.emitter->normal;
+    glm::dvec3 sum(0.0);
+    for (const CellNode& node : cellNodes(cell, x, x)) {
+        const glm::dvec3 toX = x - node.position;
+        const double r = glm::length(toX);
+        if (!(r > 0.0)) continue;
+        const glm::dvec3 dir = toX / r;
+        const double cosE = glm::dot(normal, dir);
+        if (cosE <= 0.0) continue;
+        // cos(phase angle) = dot(direction node -> x, direction x -> eye) = dot(dir, -w).
+        const double p = airlight::phaseHG(glm::dot(dir, -w), m.g);
+        sum += node.weight * (cosE * p * std::exp(-m.sigma_t * r) / (r * r));
+    }
+    return sum;
+}
+
+glm::dvec3 emitterSegment(const PointEmitter& e, const glm::dvec3& o, const glm::dvec3& w, double a, double b,
+                          const MediumParams& m) {
+    return e.cell ? cellSegment(*e.cell, o, w, a, b, m) : pointEmitterSegment(e, o, w, a, b, m);
 }
 
 glm::dvec3 directionalSegment(const DirectionalEmitter& e, const glm::dvec3& w, double a, double b,

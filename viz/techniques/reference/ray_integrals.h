@@ -57,13 +57,31 @@ struct SegmentStats {
 
 // Relative tolerance asked of the adaptive Gauss-Kronrod quadrature of spot, cookie and area pieces.
 constexpr double kSegmentRelTol = 1e-11;
+// The same for each node of an area cell's rule: the rule itself is accurate to ~1e-5 (area_cells.h),
+// so resolving each node's t-integral further only costs time.
+constexpr double kCellNodeRelTol = 1e-6;
 
 // int_a^b sigma_s p(cos theta) I(x) exp(-sigma_t (t + r)) / r^2 dt for one point-like emitter
 // (the lit interval [a, b] is assumed fully visible). Isotropic emitters use the closed anchored
 // quadrature of airlight::pointSegment; spot and Lambertian profiles are integrated in the angle
 // theta = atan((t - tP) / h), where dt / r^2 = dtheta / h, split at every kink of the profile.
+// relTol: asked of the adaptive quadrature (area-cell nodes ask less: see kCellNodeRelTol).
 glm::dvec3 pointEmitterSegment(const PointEmitter& e, const glm::dvec3& o, const glm::dvec3& w, double a,
-                               double b, const MediumParams& m, SegmentStats* stats = nullptr);
+                               double b, const MediumParams& m, SegmentStats* stats = nullptr,
+                               double relTol = kSegmentRelTol);
+
+// int_a^b sigma_s p E_cell(t) exp(-sigma_t t) dt on the ray o + t w, the cell assumed visible over
+// [a, b]; E_cell is the cell's emitter integral (each leaf node integrated in t by pointEmitterSegment).
+glm::dvec3 cellSegment(const AreaCell& cell, const glm::dvec3& o, const glm::dvec3& w, double a, double b,
+                       const MediumParams& m);
+
+// The cell's emitter integral at x: int_cell L_e cos(theta_e) p(cos theta) exp(-sigma_t r) / r^2 dA
+// with cos(theta) = dot(dir cell -> x, -w) (the airlight integrand without sigma_s and exp(-sigma_t t)).
+glm::dvec3 cellInScatter(const AreaCell& cell, const glm::dvec3& x, const glm::dvec3& w, const MediumParams& m);
+
+// Any point-like emitter over a lit interval: pointEmitterSegment, or cellSegment for an area cell.
+glm::dvec3 emitterSegment(const PointEmitter& e, const glm::dvec3& o, const glm::dvec3& w, double a, double b,
+                          const MediumParams& m);
 
 // The same for a directional light: int_a^b sigma_s p(cos) E exp(-sigma_t t) dt.
 glm::dvec3 directionalSegment(const DirectionalEmitter& e, const glm::dvec3& w, double a, double b,

@@ -54,7 +54,7 @@ RayProbe probePixel(const scene::Scene& scene, int width, int height, int x, int
     for (std::size_t k = 0; k < lights.points.size(); ++k) {
         glm::dvec3 share(0.0);
         if (medium.sigma_s != 0.0)
-            for (const Interval& iv : lit[k].lit) share += pointEmitterSegment(lights.points[k], eye, w, iv.a, iv.b, medium);
+            for (const Interval& iv : lit[k].lit) share += emitterSegment(lights.points[k], eye, w, iv.a, iv.b, medium);
         account(lights.points[k].light, lit[k], share);
     }
     for (std::size_t k = 0; k < lights.directionals.size(); ++k) {

@@ -16,7 +16,7 @@ namespace viz::reference {
 struct ProbeLight {
     int light = -1;            // index into Scene::lights
     std::string name;
-    std::vector<Interval> lit;  // area lights: where any of their nodes is visible
+    std::vector<Interval> lit;  // area lights: where any of their cells is visible
     glm::dvec3 airlight{0.0};   // this light's share of L_air
 };
 

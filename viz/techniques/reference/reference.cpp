@@ -25,7 +25,8 @@ using reference::RayTracer;
 using reference::VisibilitySearch;
 
 // Bump whenever a change to the algorithm changes any output pixel: it is part of the cache key.
-constexpr int kReferenceVersion = 1;
+// 2: area lights as cells integrated over their area (area_cells.h) instead of Gauss-Legendre point nodes.
+constexpr int kReferenceVersion = 2;
 
 constexpr const char* kStageTrace = "reference.trace";
 constexpr const char* kStageVisibility = "reference.visibility";
@@ -130,6 +131,13 @@ glm::dvec3 shadeSurface(const scene::Scene& scene, const PreparedLights& lights,
     const glm::dvec3 start = sp.position + tracer.rayEpsilon() * sp.offsetNormal;
     glm::dvec3 irradianceSum(0.0);  // sum over lights of E_surface * max(0, n.l) * V
     for (const PointEmitter& e : lights.points) {
+        if (e.cell) {
+            // Area cell: its irradiance integral over the cell (area_cells.h), visibility from its centre.
+            if (glm::dot(e.normal, sp.position - e.position) <= 0.0) continue;  // behind the emitter
+            if (tracer.occludedSegment(start, e.position)) continue;
+            irradianceSum += reference::cellIrradiance(*e.cell, sp.position, sp.normal, m.sigma_t);
+            continue;
+        }
         const glm::dvec3 toLight = e.position - sp.position;
         const double r = glm::length(toLight);
         if (!(r > 0.0)) continue;
@@ -167,7 +175,7 @@ public:
     ReferenceTechnique() {
         mParams = {
             {kParamTransitionSamples, "visibility samples per ray and light before bisection", 256, 2, 1 << 20, true},
-            {kParamAreaSamples, "Gauss-Legendre nodes per axis of each area light", 8, 1, 64, true},
+            {kParamAreaSamples, "cells per axis of each area light (one visibility search per cell)", 8, 1, 64, true},
             {kParamThreads, "worker threads (0 = all cores); the result does not depend on it", 0, 0, 1024, true},
             {kParamCache, "1 = reuse and store results in the on-disk cache, 0 = always compute", 1, 0, 1, true},
         };
@@ -175,7 +183,8 @@ public:
             {kStageTrace, "Trace primary rays", "first hit of each pixel ray with Embree; d = min(hit, zfar)",
              {}, {kDistance}, 1},
             {kStageVisibility, "Find shadow transitions",
-             "sample V along [0, d] with occlusion rays to each light, bisect each change to 1e-9 d",
+             "sample V along [0, d] with occlusion rays to each light (area lights: to each cell centre), "
+             "bisect each change to 1e-9 d",
              {kParamTransitionSamples, kParamAreaSamples}, {kTransitions, kLitFraction}, 1},
             {kStageAirlight, "Integrate airlight",
              "integrate sigma_s p E exp(-sigma_t t) over each lit interval (closed form or adaptive Gauss-Kronrod)",
@@ -237,7 +246,7 @@ public:
                                           : "no spot light with a cookie"});
         p.features.push_back({"emitter quadrature", areas > 0,
                               areas > 0 ? std::to_string(areaSamples) + "x" + std::to_string(areaSamples) +
-                                              " Gauss-Legendre nodes per area light"
+                                              " cells per area light, each integrated over its area"
                                         : "no area light in the scene"});
         p.features.push_back({"directional closed form", directionals > 0,
                               directionals > 0 ? "airlight::directionalSegment" : "no directional light in the scene"});
@@ -321,7 +330,7 @@ private:
             add(kDistance, "Distance d", "distance along the pixel ray to the first surface, zfar for sky",
                 "scene units", ViewKind::Depth, f.distanceImage, 0.0f, float(scene.camera.zfar));
         if (stopAfter >= kVisibility) {
-            add(kTransitions, "Shadow transitions", "lit/unlit changes along [0, d], summed over lights and area nodes",
+            add(kTransitions, "Shadow transitions", "lit/unlit changes along [0, d], summed over lights and area cells",
                 "count", ViewKind::Scalar, f.transitions, 0.0f, maxOf(f.transitions));
             add(kLitFraction, "Lit fraction", "lit length / d, averaged over lights", "fraction", ViewKind::Scalar,
                 f.litFraction, 0.0f, 1.0f);
@@ -471,8 +480,8 @@ private:
         return out;
     }
 
-    // Lit length / d per light, averaged over lights; an area light averages its nodes with their
-    // Gauss-Legendre weights (which sum to 1).
+    // Lit length / d per light, averaged over lights; an area light averages its cells (equal weights
+    // summing to 1).
     static double litFraction(const std::vector<VisibilitySearch>& list, const PreparedLights& lights, double d) {
         if (lights.lightCount == 0 || !(d > 0.0)) return 0.0;
         std::vector<double> perLight(std::size_t(lights.lightCount), 0.0);
