@@ -6,6 +6,7 @@
 
 const int kKindSpot = 0;
 const int kKindDirectional = 1;
+const int kKindPoint = 2;  // the spot's formulas; per-row gamma ranges (EPIPOLAR_POINT below)
 const float kUnblocked = 4.0;     // S of a light ray nothing blocks: above every beta
 const float kOutsideCone = -1.0;  // S outside a spot's cone: below every beta
 const float kInfinity = 1.0 / 0.0;
@@ -23,7 +24,34 @@ uniform float uAlphaSpacing;
 uniform float uGammaLo;
 uniform float uGammaHi;
 
-float columnWidth() { return (uGammaHi - uGammaLo) / float(uColumns); }
+#ifdef EPIPOLAR_POINT
+// A point light shines in every direction, so its rows are not cut to a cone: row i covers
+// gamma in [0, gRowGammaHi[i]], the largest gamma its pixels' rays reach at their distance d (written by
+// minmax/gamma_range.comp as float bits with atomicMax: non-negative floats order like their bits).
+// selectRow() loads a row's range before any column arithmetic; spot and directional lights keep the
+// uniforms (the define is off when the scene has no point light: those programs are unchanged).
+layout(std430, binding = kFirstFreeSsboBinding) buffer RowGammaBlock { uint gRowGammaHi[]; };
+const float kMinRowGamma = 1.0e-6;  // an empty row (no pixel) keeps a positive column width
+float gGammaLo = 0.0;
+float gGammaHi = 1.0;
+void selectRow(int row) {
+    if (uKind == kKindPoint) {
+        gGammaLo = 0.0;
+        gGammaHi = max(uintBitsToFloat(gRowGammaHi[row]), kMinRowGamma);
+    } else {
+        gGammaLo = uGammaLo;
+        gGammaHi = uGammaHi;
+    }
+}
+#define MINMAX_GAMMA_LO gGammaLo
+#define MINMAX_GAMMA_HI gGammaHi
+#else
+void selectRow(int row) {}
+#define MINMAX_GAMMA_LO uGammaLo
+#define MINMAX_GAMMA_HI uGammaHi
+#endif
+
+float columnWidth() { return (MINMAX_GAMMA_HI - MINMAX_GAMMA_LO) / float(uColumns); }
 float sliceAlpha(int row) { return uAlphaLo + float(row) * uAlphaSpacing; }
 
 float alphaOf(vec3 p) { return atan(dot(p, uV), dot(p, uU)); }
@@ -64,7 +92,7 @@ int sliceRow(float alpha) {
     return clamp(row, 0, uSlices - 1);
 }
 
-float columnOf(float gamma) { return (gamma - uGammaLo) / columnWidth(); }
-float gammaOfColumn(float column) { return uGammaLo + column * columnWidth(); }
+float columnOf(float gamma) { return (gamma - MINMAX_GAMMA_LO) / columnWidth(); }
+float gammaOfColumn(float column) { return MINMAX_GAMMA_LO + column * columnWidth(); }
 
 #endif  // MINMAX_EPIPOLAR_GLSL

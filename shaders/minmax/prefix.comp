@@ -8,7 +8,9 @@
 // (uTexels: the table's own resolution, lower than the shadow map's). The 3 N floats of texel k (rank i,
 // channel c at q = 3 i + c) are spread over layers q / 4, component q % 4 of an RGBA32F array; the traversal
 // reads them with hardware linear filtering along gamma. One invocation scans one row (a sequential scan;
-// the paper uses log2 passes), uTexels iterations.
+// the paper uses log2 passes), uTexels iterations. Point lights (EPIPOLAR_POINT): T is the constant
+// colour * intensity, but every row covers its own gamma range [0, gRowGammaHi[row]] (selectRow), so each
+// row has its own table; Gamma_i is still sampled over the SVD's range [uGammaLo, uGammaHi] = [0, pi].
 layout(local_size_x = 64, local_size_y = 1) in;
 
 #include "common/host_device.glsl"
@@ -34,8 +36,9 @@ void main() {
     int row = int(gl_GlobalInvocationID.x);
     if (row >= uRows) return;
     GpuLight L = gLights[uLight];
+    selectRow(row);
     float alpha = sliceAlpha(row);
-    float step = (uGammaHi - uGammaLo) / float(uTexels);
+    float step = (MINMAX_GAMMA_HI - MINMAX_GAMMA_LO) / float(uTexels);
     float sums[24];
     for (int q = 0; q < 24; ++q) sums[q] = 0.0;
     int layers = (3 * uRank + 3) / 4;
@@ -45,7 +48,7 @@ void main() {
             imageStore(uPrefix, ivec3(k, row, layer), v);
         }
         if (k == uTexels) break;
-        float gamma = uGammaLo + (float(k) + 0.5) * step;
+        float gamma = MINMAX_GAMMA_LO + (float(k) + 0.5) * step;
         vec3 T = L.radiant.rgb;
         if (!uSharedRow) {
             vec3 p = lightRayPoint(alpha, gamma);

@@ -2,7 +2,9 @@
 // minmax/rectify.comp: the rectified shadow map S[alpha, gamma] (Chen et al. 2011, section 3.2). Texel
 // (column j, row i) is the light ray gamma_j = gammaLo + (j + 1/2) width in slice alpha_i; every point of a
 // light ray projects onto one shadow-map texel (spot: the ray leaves the map's centre of projection;
-// directional: the map is orthographic along the ray), so one nearest lookup gives the ray's occluder.
+// directional: the map is orthographic along the ray; point: the ray's direction picks one cube texel),
+// so one nearest lookup gives the ray's occluder. Point lights (EPIPOLAR_POINT) read their row's own
+// gamma range (minmax/gamma_range.comp).
 // S = beta of the occluder, after the same bias as shadowVisibility (common/shadow_map.glsl), so that
 // "beta < S" and shadowVisibility agree for every point of the ray.
 layout(local_size_x = 64, local_size_y = 1) in;
@@ -19,9 +21,22 @@ void main() {
     ivec2 texel = ivec2(gl_GlobalInvocationID.xy);
     if (texel.x >= uColumns || texel.y >= uSlices) return;
     GpuLight L = gLights[uLight];
+    selectRow(texel.y);
     float alpha = sliceAlpha(texel.y);
     float gamma = gammaOfColumn(float(texel.x) + 0.5);
     float S = kUnblocked;
+#ifdef EPIPOLAR_POINT
+    if (uKind == kKindPoint) {
+        // The light ray's direction picks one texel of the cube (every point of the ray projects onto it);
+        // the same bias as shadowVisibility for a cube: footprint d / size, so lit when
+        // d <= (stored + w) / (1 - z / size).
+        vec3 dir = -cos(gamma) * uAxis + sin(gamma) * slicePerpendicular(alpha);
+        float stored = cubeLookup(uShadowCube, L.info.z, dir);
+        float threshold = (stored + L.shadow.w) / (1.0 - L.shadow.z / float(textureSize(uShadowCube, 0).x));
+        imageStore(uRectified, texel, vec4(occluderBeta(gamma, threshold)));
+        return;
+    }
+#endif
     if (uKind == kKindSpot && (gamma <= 0.0 || gamma >= 3.14159265)) {
         S = kOutsideCone;
     } else {

@@ -6,7 +6,8 @@
 // camera ray, integrated with the closed form of common/airlight.glsl (`integrand=analytic`).
 // Mirrored step by step by minmax::integratePixel (pixel_mirror.h).
 // One dispatch per light; results are added to uAirlight. uMode = 1 marches the whole image instead (a
-// light the epipolar path does not handle: point lights and area-light VPLs).
+// light the epipolar path does not handle: area-light VPLs, and point lights with point_lights=march).
+// EPIPOLAR_POINT (a point light in the scene): a point light's row has its own gamma range (selectRow).
 layout(local_size_x = 8, local_size_y = 8) in;
 
 #include "common/host_device.glsl"
@@ -14,6 +15,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 #include "common/lights.glsl"
 #include "common/shadow_map.glsl"
 #include "minmax/epipolar.glsl"
+#include "minmax/camera_ray.glsl"
 
 layout(binding = kFirstFreeTextureUnit) uniform sampler2D uDistance;  // Euclidean t of the first surface
 layout(binding = kFirstFreeTextureUnit + 1) uniform sampler2D uTree;  // rg32f: (min, max), x = node, y = row
@@ -22,12 +24,6 @@ layout(r32f, binding = 1) uniform image2D uVisited;
 layout(r32f, binding = 2) uniform image2D uNearMask;
 layout(rgba32f, binding = 3) uniform writeonly image2D uRayCoords;
 
-uniform ivec2 uSize;
-uniform vec3 uForward;
-uniform vec3 uRight;
-uniform vec3 uUp;
-uniform float uTanHalf;
-uniform float uAspect;
 uniform int uLight;
 uniform int uMode;           // 0: epipolar traversal, 1: brute-force march of every pixel
 uniform bool uLinear;        // scan the leaves instead of walking the tree (traversal=linear)
@@ -39,13 +35,6 @@ uniform float uEpipoleRadius;
 uniform float uSigmaS;
 uniform float uSigmaT;
 uniform float uG;
-
-vec3 pixelRay(ivec2 texel) {
-    float yTop = float(uSize.y - 1 - texel.y);
-    float ndcX = 2.0 * (float(texel.x) + 0.5) / float(uSize.x) - 1.0;
-    float ndcY = 1.0 - 2.0 * (yTop + 0.5) / float(uSize.y);
-    return normalize(uForward + (ndcX * uTanHalf * uAspect) * uRight + (ndcY * uTanHalf) * uUp);
-}
 
 // Brute force for lights without an epipolar path (raymarch's midpoint rule): uMarchSamples samples
 // uniform in t, each the integrand sigma_s p E V exp(-sigma_t t) dt at its interval's middle. No loops
@@ -136,6 +125,15 @@ vec3 integrateRunAnalytic(GpuLight L, vec3 w, RayLightGeometry g, float beta, fl
         float t1 = distanceAtColumn(beta, c1, cEnd, d);
         return directionalSegment(cos(beta), t0, t1, uSigmaS, uSigmaT, uG, 1.0) * L.radiant.rgb;
     }
+#ifdef EPIPOLAR_POINT
+    if (uKind == kKindPoint) {
+        // Point: the emission colour * I is the same in every direction: one closed-form segment.
+        float t0 = distanceAtColumn(beta, c0, cEnd, d);
+        float t1 = distanceAtColumn(beta, c1, cEnd, d);
+        if (t1 <= t0) return vec3(0.0);
+        return pointSegment(g.tP, g.h, t0, t1, uSigmaS, uSigmaT, uG, 1.0) * L.radiant.rgb;
+    }
+#endif
     // Spot: A_spot * cookie varies across the cone; pieces on a fixed grid of uPieces cells over
     // [gammaLo, gammaHi] each take it at their middle (uPieces / columns cells per column).
     float cellColumns = float(uColumns) / float(uPieces);
@@ -231,7 +229,7 @@ void main() {
 #endif
     // A ray along the epipolar axis lies in every slice: it is marched wherever it falls, also with the
     // near-epipole pass off.
-    bool onAxis = uMode == 0 && length(cross(w, uAxis)) < 1e-5;
+    bool onAxis = uMode == 0 && onEpipolarAxis(w, uAxis);
     if (uMode == 1) {
         sum = march(L, w, d);
     } else if (onAxis) {
@@ -241,6 +239,7 @@ void main() {
     } else {
         float beta = betaOf(w);
         int row = sliceRow(alphaOf(w));
+        selectRow(row);
         float cEnd = max(columnOf(gammaAlongRay(beta, d)), 0.0);
         float end = min(cEnd, float(uColumns));
         RayLightGeometry g = rayLightGeometry(L.position.xyz, w);

@@ -20,12 +20,12 @@ glm::dvec3 randomUnit(std::mt19937& rng) {
     return glm::normalize(glm::dvec3(n(rng), n(rng), n(rng)));
 }
 
-// A world point goes to (alpha, beta, gamma) and back to itself, for spot and directional lights in every
+// A world point goes to (alpha, beta, gamma) and back to itself, for spot, point and directional lights in every
 // direction (the light behind the camera included: the frame does not depend on the camera).
 TEST(MinmaxEpipolar, RoundTripOfRandomPoints) {
     std::mt19937 rng(7);
     std::uniform_real_distribution<double> u(-10.0, 10.0);
-    for (LightKind kind : {LightKind::Spot, LightKind::Directional}) {
+    for (LightKind kind : {LightKind::Spot, LightKind::Directional, LightKind::Point}) {
         for (int light = 0; light < 20; ++light) {
             const glm::dvec3 position = 8.0 * randomUnit(rng);
             const auto f = viz::minmax::makeFrame<double>(kind, position, randomUnit(rng));
@@ -47,17 +47,18 @@ TEST(MinmaxEpipolar, RoundTripOfRandomPoints) {
 TEST(MinmaxEpipolar, OccluderBetaSeparatesLitFromShadowed) {
     std::mt19937 rng(11);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
-    for (LightKind kind : {LightKind::Spot, LightKind::Directional}) {
+    for (LightKind kind : {LightKind::Spot, LightKind::Directional, LightKind::Point}) {
         const auto f = viz::minmax::makeFrame<double>(kind, glm::dvec3(1.0, 6.0, -2.0), glm::dvec3(0.3, -1.0, 0.2));
         for (int i = 0; i < 2000; ++i) {
             const double alpha = 2.0 * std::numbers::pi * unit(rng) - std::numbers::pi;
-            const double gamma = kind == LightKind::Spot ? 0.05 + 3.0 * unit(rng) : 20.0 * unit(rng);
+            const bool fromLight = kind != LightKind::Directional;
+            const double gamma = fromLight ? 0.05 + 3.0 * unit(rng) : 20.0 * unit(rng);
             // Occluder and a test point on the light ray: spot, distances from the light; directional, depths
             // along the travel direction (-a) of the points gamma e + z a.
-            const double occluder = kind == LightKind::Spot ? 30.0 * unit(rng) : 40.0 * unit(rng) - 20.0;
-            const double point = kind == LightKind::Spot ? 30.0 * unit(rng) : 40.0 * unit(rng) - 20.0;
+            const double occluder = fromLight ? 30.0 * unit(rng) : 40.0 * unit(rng) - 20.0;
+            const double point = fromLight ? 30.0 * unit(rng) : 40.0 * unit(rng) - 20.0;
             const glm::dvec3 e = viz::minmax::slicePerpendicular(f, alpha);
-            const glm::dvec3 p = kind == LightKind::Spot
+            const glm::dvec3 p = fromLight
                                      ? f.lightDistance * f.axis + point * (-std::cos(gamma) * f.axis + std::sin(gamma) * e)
                                      : gamma * e - point * f.axis;
             const bool lit = point <= occluder;
@@ -73,7 +74,7 @@ TEST(MinmaxEpipolar, OccluderBetaSeparatesLitFromShadowed) {
 
 // distanceAtGamma inverts gammaAlongRay over the ray's reach.
 TEST(MinmaxEpipolar, DistanceAtGammaInvertsGammaAlongRay) {
-    for (LightKind kind : {LightKind::Spot, LightKind::Directional}) {
+    for (LightKind kind : {LightKind::Spot, LightKind::Directional, LightKind::Point}) {
         const auto f = viz::minmax::makeFrame<double>(kind, glm::dvec3(0.0, 5.0, 1.0), glm::dvec3(0.0, -1.0, 0.0));
         for (double beta : {0.01, 0.3, 1.0, 2.0, 3.1}) {
             for (double t : {0.01, 0.5, 3.0, 40.0}) {
@@ -115,6 +116,55 @@ TEST(MinmaxEpipolar, AutomaticSlicesKeepEveryRayWithinHalfAPixel) {
                 const double off = viz::minmax::alphaStep(a, f.sliceAlpha(row));
                 EXPECT_LE(off / perPixel, 0.5 + 1e-6) << "pixel " << x << "," << y << " light " << light.x;
             }
+        }
+    }
+}
+
+// Point lights: random world points in front of the camera map to (alpha, beta, gamma) and back, the
+// point's slice row and column (in a row range covering its gamma) map back to within one slice and one
+// column of it, and the light ray (alpha, gamma) leaves the light exactly toward the point: that direction
+// is the cube-map lookup rectify.comp makes for S[alpha, gamma]. Light on screen, off screen (to the side)
+// and behind the camera.
+TEST(MinmaxEpipolar, PointLightRoundTripAndCubeDirection) {
+    viz::scene::Camera cam;
+    cam.position = glm::dvec3(0.0);
+    cam.forward = glm::dvec3(0.0, 0.0, -1.0);
+    cam.up = glm::dvec3(0.0, 1.0, 0.0);
+    cam.yfov = 0.9;
+    const int w = 64, h = 48;
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (glm::vec3 light : {glm::vec3(0.5f, 0.3f, -6.0f), glm::vec3(9.0f, 2.0f, -3.0f), glm::vec3(0.4f, 1.0f, 5.0f)}) {
+        viz::render::GpuLightCpu L{};
+        L.info = glm::ivec4(viz::render::hd::kLightPoint, -1, 0, 0);
+        L.position = glm::vec4(light, 1.0f);
+        const auto s = viz::minmax::setupLight({.light = &L, .camera = &cam, .width = w, .height = h, .slices = 0,
+                                                .columns = 256});
+        EXPECT_EQ(s.frame.kind, LightKind::Point);
+        EXPECT_NEAR(s.frame.lightDistance, glm::length(glm::dvec3(light)), 1e-6);
+        // Every row's range starts at the eye (gamma = 0) and lies within [0, pi].
+        EXPECT_EQ(s.frame.gammaLo, 0.0);
+        EXPECT_LE(s.frame.gammaHi, std::numbers::pi);
+        for (int i = 0; i < 500; ++i) {
+            // A pixel's ray, at a random distance up to 30.
+            const glm::dvec3 ray = viz::scene::pixelRay(cam, w, h, w * unit(rng), h * unit(rng));
+            const glm::dvec3 p = (0.05 + 30.0 * unit(rng)) * ray;
+            const double alpha = viz::minmax::alphaOf(s.frame, p), beta = viz::minmax::betaOf(s.frame, p);
+            const double gamma = viz::minmax::gammaOf(s.frame, p);
+            ASSERT_GE(gamma, 0.0);
+            ASSERT_LE(gamma, std::numbers::pi - beta + 1e-12);
+            const glm::dvec3 point = viz::minmax::pointOf(s.frame, alpha, beta, gamma);
+            EXPECT_LT(glm::length(point - p), 1e-9 * (1.0 + glm::length(p)));
+            const glm::dvec3 fromLight = glm::normalize(p - glm::dvec3(light));
+            EXPECT_LT(glm::length(viz::minmax::lightRayDirection(s.frame, alpha, gamma) - fromLight), 1e-9);
+            // A row range that reaches just past the point: its column maps back within one column.
+            const auto row = s.frame.withGammaRange(0.0, std::min(std::numbers::pi, gamma * (1.0 + unit(rng))));
+            const double column = viz::minmax::columnOf(row, gamma);
+            ASSERT_LE(column, double(row.columns) + 1e-9);
+            const double back = viz::minmax::gammaOfColumn(row, std::floor(column) + 0.5);
+            EXPECT_LE(std::abs(back - gamma), 0.5 * row.columnWidth() + 1e-12);
+            const int r = viz::minmax::sliceRow(s.frame, alpha);
+            EXPECT_LE(viz::minmax::alphaStep(alpha, s.frame.sliceAlpha(r)), 0.5 * s.frame.alphaSpacing + 1e-12);
         }
     }
 }

@@ -3,13 +3,17 @@
 //
 // Every slice is a half-plane bounded by the epipolar axis: the line through the eye toward the light
 // (spot/point: a = normalize(light position); directional: a = -travel direction, the light at infinity).
+// Point lights use the spot's formulas throughout (gamma is the angle at the light); they differ only in
+// the gamma range of the rectified map, which is the cone for a spot and, for a point light shining in
+// every direction, per slice the range its camera rays reach (EpipolarFrame::withGammaRange).
 //   alpha in (-pi, pi]: the half-plane, the angle of its in-plane perpendicular e(alpha) = cos(alpha) u +
 //         sin(alpha) v around a ((u, v, a) right-handed; u is turned toward the screen centre's slice, so
 //         the slices that cross the screen form one interval of alpha unless the epipole is on screen).
 //   beta in [0, pi]:   the camera ray within the slice, its angle to a.
-//   gamma:             the light ray within the slice. Spot: the angle at the light between the direction
-//         light -> eye (-a) and light -> point, in [0, pi]. Directional: the distance rho of the light ray
-//         from the axis (light rays are parallel to a).
+//   gamma:             the light ray within the slice. Spot, point: the angle at the light between the
+//         direction light -> eye (-a) and light -> point, in [0, pi] (a half-plane sees the light's
+//         directions from -a round to +a; the other half of the plane is the slice alpha + pi).
+//         Directional: the distance rho of the light ray from the axis (light rays are parallel to a).
 // A light behind the camera needs no special case: a points backward and visible rays have beta > pi/2.
 // Along a camera ray (alpha, beta fixed) gamma grows monotonically from 0 with the distance t:
 //   spot:        gamma = atan2(t sin(beta), D - t cos(beta)),  t = D sin(gamma) / sin(beta + gamma)
@@ -28,7 +32,8 @@
 
 namespace viz::minmax {
 
-enum class LightKind { Spot = 0, Directional = 1 };
+// Values shared with shaders/minmax/epipolar.glsl (kKindSpot, kKindDirectional, kKindPoint).
+enum class LightKind { Spot = 0, Directional = 1, Point = 2 };
 
 // S for a light ray that nothing blocks (or that leaves the shadow map): above every beta.
 inline constexpr float kUnblocked = 4.0f;
@@ -41,7 +46,7 @@ struct EpipolarFrame {
     LightKind kind = LightKind::Spot;
     Vec3 axis{0, 0, 1};  // a
     Vec3 u{1, 0, 0}, v{0, 1, 0};
-    Real lightDistance = 1;  // D = |light - eye| (spot); unused for directional
+    Real lightDistance = 1;  // D = |light - eye| (spot, point); unused for directional
     // Rectified map: `slices` rows at alpha_i = alphaLo + i alphaSpacing (wrapping around the circle when
     // the epipole is on screen), `columns` texels over gamma in [gammaLo, gammaHi].
     int slices = 1, columns = 1;
@@ -51,15 +56,23 @@ struct EpipolarFrame {
 
     Real columnWidth() const { return (gammaHi - gammaLo) / Real(columns); }
     Real sliceAlpha(int row) const { return alphaLo + Real(row) * alphaSpacing; }
+    // The same frame with the gamma range of one row: a point light's rows each cover their own range
+    // (minmax.row_gamma), so column arithmetic for a row uses that row's frame.
+    EpipolarFrame withGammaRange(Real lo, Real hi) const {
+        EpipolarFrame f = *this;
+        f.gammaLo = lo;
+        f.gammaHi = hi;
+        return f;
+    }
 };
 
-// The frame of a light given eye-relative position (spot) or travel direction (directional).
+// The frame of a light given eye-relative position (spot, point) or travel direction (directional).
 template <typename Real>
 EpipolarFrame<Real> makeFrame(LightKind kind, glm::vec<3, Real> lightPosition, glm::vec<3, Real> travelDirection) {
     using Vec3 = glm::vec<3, Real>;
     EpipolarFrame<Real> f;
     f.kind = kind;
-    if (kind == LightKind::Spot) {
+    if (kind != LightKind::Directional) {
         f.lightDistance = glm::length(lightPosition);
         f.axis = lightPosition / f.lightDistance;
     } else {
@@ -136,7 +149,13 @@ glm::vec<3, Real> pointOf(const EpipolarFrame<Real>& f, Real alpha, Real beta, R
     return t * (std::cos(beta) * f.axis + std::sin(beta) * slicePerpendicular(f, alpha));
 }
 
-// A point on light ray (alpha, gamma): spot: the unit step from the light; directional: the point of the
+// Unit direction light -> point of light ray (alpha, gamma) (spot, point): the cube-map lookup direction.
+template <typename Real>
+glm::vec<3, Real> lightRayDirection(const EpipolarFrame<Real>& f, Real alpha, Real gamma) {
+    return -std::cos(gamma) * f.axis + std::sin(gamma) * slicePerpendicular(f, alpha);
+}
+
+// A point on light ray (alpha, gamma): spot, point: the unit step from the light; directional: the point of the
 // ray in the plane through the eye perpendicular to a. Either projects onto the light ray's shadow texel
 // (every point of a light ray does).
 template <typename Real>
@@ -146,7 +165,7 @@ glm::vec<3, Real> lightRayPoint(const EpipolarFrame<Real>& f, Real alpha, Real g
     return f.lightDistance * f.axis + (-std::cos(gamma) * f.axis + std::sin(gamma) * e);
 }
 
-// beta of the occluder on light ray gamma. `stored` is the shadow map's biased threshold: spot: the
+// beta of the occluder on light ray gamma. `stored` is the shadow map's biased threshold: spot, point: the
 // distance from the light up to which points are lit; directional: the depth dot(p, travel) up to which
 // points are lit.
 template <typename Real>

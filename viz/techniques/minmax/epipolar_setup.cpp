@@ -55,11 +55,12 @@ Setup setupLight(const SetupInput& in) {
     VIZ_CHECK(in.light && in.camera && in.width > 0 && in.height > 0, "setupLight needs a light, a camera and a size");
     const render::GpuLightCpu& L = *in.light;
     const bool directional = L.info.x == render::hd::kLightDirectional;
+    const bool point = L.info.x == render::hd::kLightPoint;
     const scene::Camera& cam = *in.camera;
     Setup s;
     EpipolarFrame<double>& f = s.frame;
-    f = makeFrame<double>(directional ? LightKind::Directional : LightKind::Spot, glm::dvec3(L.position),
-                          glm::dvec3(L.direction));
+    f = makeFrame<double>(directional ? LightKind::Directional : point ? LightKind::Point : LightKind::Spot,
+                          glm::dvec3(L.position), glm::dvec3(L.direction));
     const glm::dvec3 centre = scene::pixelRay(cam, in.width, in.height, 0.5 * (in.width - 1), 0.5 * (in.height - 1));
     centreAlphaOn(f, centre);
 
@@ -131,8 +132,13 @@ Setup setupLight(const SetupInput& in) {
     s.maxSliceGap = f.alphaSpacing / minGradient;
 
     // gamma: the spot's cone as seen from the light (angle phi between -a and the spot axis, +- outer), or
-    // the directional map's reach (its box corners' largest distance from the axis).
-    if (directional) {
+    // the directional map's reach (its box corners' largest distance from the axis). A point light's rows
+    // each get the range their pixels' rays reach, [0, gamma(beta, d)], measured on the GPU from the
+    // distance buffer (shaders/minmax/gamma_range.comp); [0, pi] here bounds every row.
+    if (point) {
+        f.gammaLo = 0.0;
+        f.gammaHi = pi;
+    } else if (directional) {
         const glm::dmat4 inv = glm::inverse(glm::dmat4(L.shadowMatrix));
         double reach = 0.0;
         for (int c = 0; c < 8; ++c) {

@@ -33,7 +33,7 @@ bool epipoleNearScreen(const scene::Camera& camera, glm::dvec3 axis, double marg
 glm::dvec3 epipolarAxis(const scene::Light& light, glm::dvec3 eye);
 
 struct SetupInput {
-    const render::GpuLightCpu* light = nullptr;  // spot or directional, with its shadow matrix
+    const render::GpuLightCpu* light = nullptr;  // spot, point or directional, with its shadow matrix
     const scene::Camera* camera = nullptr;
     int width = 0, height = 0;
     int slices = 0;   // 0: automatic

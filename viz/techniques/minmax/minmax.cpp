@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <cstdint>
 #include <cstdio>
 #include <cmath>
 #include <map>
@@ -12,6 +13,7 @@
 
 #include "core/error.h"
 #include "debug/permutations.h"
+#include "gl/buffer.h"
 #include "gl/program.h"
 #include "gl/stage_clock.h"
 #include "gl/texture.h"
@@ -49,6 +51,7 @@ constexpr const char* kSingularValues = "minmax.singular_values";
 constexpr const char* kBasis = "minmax.basis";
 constexpr const char* kPrefixSums = "minmax.prefix_sums";
 constexpr const char* kReconstructionError = "minmax.reconstruction_error";
+constexpr const char* kRowGamma = "minmax.row_gamma";
 
 enum StageIndex {
     kShadowMapsIndex = 0,
@@ -62,6 +65,7 @@ enum StageIndex {
 // Shader permutations of minmax/*.comp: feature -> {define when enabled, define when disabled}.
 const PermutationTable kDefines = {
     {"NEAR_EPIPOLE", {"NEAR_EPIPOLE", nullptr}},
+    {"EPIPOLAR_POINT", {"EPIPOLAR_POINT", nullptr}},
     {"INTEGRAND_SVD", {"INTEGRAND_SVD", nullptr}},
     {"SPOT", {nullptr, "LIGHTS_NO_SPOT"}},
     {"COOKIE", {nullptr, "LIGHTS_NO_COOKIE"}},
@@ -69,14 +73,21 @@ const PermutationTable kDefines = {
     {"SHADOW_MAPS_2D", {nullptr, "SHADOW_NO_2D"}},
 };
 
+// Lights with an epipolar path: spot and directional (2D maps), point (cube maps, per-row gamma ranges).
+// Area lights (VPLs) are marched.
 bool epipolarLight(const scene::Light& l) {
-    return l.type == scene::LightType::Spot || l.type == scene::LightType::Directional;
+    return l.type == scene::LightType::Spot || l.type == scene::LightType::Directional ||
+           l.type == scene::LightType::Point;
 }
 
 // Everything one epipolar light needs between the stages.
 struct LightWork {
     int gpuIndex = 0;  // into GpuLights::lights()
     minmax::Setup setup;
+    // Point light: the gamma range of each row, [0, hi_i], one float per row stored as its uint bits
+    // (gamma_range.comp); read back only to publish minmax.row_gamma.
+    gl::Buffer rowGamma;
+    bool point() const { return setup.frame.kind == LightKind::Point; }
     gl::Texture rectified;  // r32f, columns x slices
     gl::Texture tree;       // rg32f, 2 columns x slices (Ahnentafel rows)
     int levelsBuilt = 0;
@@ -103,6 +114,9 @@ public:
                                 "texture's own resolution, lower than the shadow map's)", 256, 16, 4096, true},
             {"traversal", "tree: min-max mipmap walk (Figure 5); linear: scan every texel of the row", 0, 0, 1, true,
              {"tree", "linear"}},
+            {"point_lights", "epipolar: point lights rectified from their cube maps; march: marched per pixel "
+                             "(the fallback before point lights had an epipolar path, for comparison)", 0, 0, 1, true,
+             {"epipolar", "march"}},
             // Each piece is one pointSegment call; llvmpipe stops every loop of a shader invocation after
             // 65535 iterations in total (all loops together), which more pieces would exceed (README).
             {"spot_pieces", "spot lights: pieces across the cone, each with its own A_spot * cookie", 64, 1, 128,
@@ -123,15 +137,16 @@ public:
         mStages = {
             render::SceneViewPasses::shadowStage("minmax"),
             render::SceneViewPasses::surfaceStage("minmax"),
-            {kStageRectify, "Rectify", "shadow map -> S[alpha, gamma] = beta of the occluder on each light ray; "
-             "integrand=svd: SVD of I(beta, gamma) and prefix sums of Gamma_i T per slice",
-             {"slices", "slice_oversampling", "columns", "integrand", "rank", "texture_columns"},
-             {kRectified, kRectifiedView, kSingularValues, kBasis, kPrefixSums, kReconstructionError}, 1},
+            {kStageRectify, "Rectify", "shadow map -> S[alpha, gamma] = beta of the occluder on each light ray "
+             "(point lights: each slice's gamma range first, then their cube map); integrand=svd: SVD of "
+             "I(beta, gamma) and prefix sums of Gamma_i T per slice",
+             {"slices", "slice_oversampling", "columns", "integrand", "rank", "texture_columns", "point_lights"},
+             {kRectified, kRectifiedView, kRowGamma, kSingularValues, kBasis, kPrefixSums, kReconstructionError}, 1},
             {kStageMipmap, "Min-max mipmap", "per row of S: a 1D min-max tree, one pass per level",
              {"mip_levels"}, {kTree, kPyramid}, 1, "mip_levels"},
             {kStageTraverse, "Traverse", "per pixel: walk the slice's tree, integrate the lit segments",
-             {"integrand", "rank", "traversal", "spot_pieces", "epipole_radius", "march_samples", "pick_x", "pick_y",
-              "trace_steps", "force_features"},
+             {"integrand", "rank", "traversal", "point_lights", "spot_pieces", "epipole_radius", "march_samples",
+              "pick_x", "pick_y", "trace_steps", "force_features"},
              {kAirlight, kVisited, kNearMask, kRayCoords, kTrace}, kTraceSubsteps, "trace_steps"},
             render::SceneViewPasses::composeStage("minmax"),
         };
@@ -207,7 +222,11 @@ public:
                               "slice sampling"}},
             {"intensity", {0.015, "linear in the intensity: float S, trees and segments carry no absolute scale"}},
             {"scale", {0.015, "eye-relative frame, angles alpha, beta, gamma and distance-valued maps are scale-free"}},
-            {"singular-ray", {0.0008, "point lights are marched with the closed form per interval (h clamped)"}},
+            {"singular-ray", {0.03, "the light's own pixel and the rays within epipole_radius px are marched with the "
+                                    "closed form per interval; elsewhere point lights take the epipolar path, and the "
+                                    "grate's bars run parallel to the view axis, so their shadow edges are epipolar "
+                                    "planes: four pixels whose rays lie within 1/8 px of such an edge take the slice "
+                                    "on its other side (0.0148, was 0.00034 marched)"}},
             {"epipole", {0.045, "rays within epipole_radius px of an epipole, and rays on the epipolar axis, are "
                                "marched; grazing sun is the worst (shadow-map bias across long light rays)"}},
             {"camera-placement", {0.008, "the frame is eye-relative; a closed box gives d small and S above beta"}},
@@ -223,7 +242,11 @@ public:
     Plan plan(const scene::Scene& scene, const Settings& settings) const override {
         Plan p;
         for (const StageInfo& s : mStages) p.stages.push_back({s.id, true, ""});
-        const bool anyEpipolar = std::any_of(scene.lights.begin(), scene.lights.end(), epipolarLight);
+        const bool marchPoints = settings.at("point_lights") == 1.0;
+        const auto epipolar = [&](const scene::Light& l) {
+            return epipolarLight(l) && !(marchPoints && l.type == scene::LightType::Point);
+        };
+        const bool anyEpipolar = std::any_of(scene.lights.begin(), scene.lights.end(), epipolar);
         if (scene.medium.sigma_s == 0.0) {
             for (int i : {kRectifyIndex, kMipmapIndex, kTraverseIndex}) {
                 p.stages[std::size_t(i)].runs = false;
@@ -232,8 +255,9 @@ public:
         } else if (!anyEpipolar) {
             for (int i : {kRectifyIndex, kMipmapIndex}) {
                 p.stages[std::size_t(i)].runs = false;
-                p.stages[std::size_t(i)].why = "no spot or directional light: nothing to rectify (point and area "
-                                               "lights are marched by brute force in the traverse stage)";
+                p.stages[std::size_t(i)].why = "no spot or directional light and no point light: nothing to "
+                                               "rectify (area lights' VPLs are marched by brute force in the "
+                                               "traverse stage)";
             }
         }
         const bool svd = settings.at("integrand") == 1.0;
@@ -250,6 +274,9 @@ public:
                  spot ? "spot: T = colour * I * A_spot * cookie varies with alpha: prefix sums of Gamma_i T per slice"
                       : "no spot light: T is the constant colour * I, one prefix-sum row shared by every slice"});
             if (sun && spot) p.features.back().why += "; directional lights share one row";
+            if (render::hasLightOfType(scene, scene::LightType::Point) && !marchPoints)
+                p.features.back().why += "; point lights: T is constant, but each slice has its own gamma range, "
+                                         "so each has its own table too";
         }
         const bool linear = settings.at("traversal") == 1.0;
         p.features.push_back({"TREE_TRAVERSAL", !linear,
@@ -258,9 +285,9 @@ public:
         // Near-epipole marching: only when an epipolar light's epipole or anti-epipole is on or near the
         // screen (within a quarter of the screen beyond its edges).
         bool near = false;
-        std::string nearWhy = "no spot or directional light";
+        std::string nearWhy = "no spot, directional or point light";
         for (const scene::Light& l : scene.lights) {
-            if (!epipolarLight(l)) continue;
+            if (!epipolar(l)) continue;
             const glm::dvec3 axis = minmax::epipolarAxis(l, scene.camera.position);
             if (minmax::epipoleNearScreen(scene.camera, axis, 0.25)) {
                 near = true;
@@ -283,22 +310,38 @@ public:
                               hasSpot ? "spot A_spot per gamma piece" : "no spot light in the scene"});
         p.features.push_back({"COOKIE", hasCookie,
                               hasCookie ? "cookie texture sampled per gamma piece" : "no light has a cookie"});
-        const bool brute = std::any_of(scene.lights.begin(), scene.lights.end(),
-                                       [](const scene::Light& l) { return !epipolarLight(l); });
-        p.features.push_back({"BRUTE_FORCE_LIGHTS", brute,
-                              brute ? "point / area lights have no 2D shadow map to rectify: marched per pixel"
-                                    : "every light is spot or directional"});
+        const bool hasPoint = render::hasLightOfType(scene, scene::LightType::Point);
+        std::string pointWhy = "no point light in the scene";
+        if (hasPoint && marchPoints) {
+            pointWhy = "point_lights=march: point lights are marched per pixel";
+        } else if (hasPoint) {
+            const auto it = std::find_if(scene.lights.begin(), scene.lights.end(),
+                                         [](const scene::Light& l) { return l.type == scene::LightType::Point; });
+            pointWhy = "point light '" + it->name + "': rectified from its cube map, each slice over the gamma "
+                       "range [0, gamma(beta, d)] its pixels' rays reach (gamma_range.comp)";
+        }
+        p.features.push_back({"EPIPOLAR_POINT", hasPoint && !marchPoints, pointWhy});
+        // Area lights are integrated over their emitter as VPLs (cube maps of their own, a different light
+        // position per VPL): marched per pixel.
+        const bool area = render::hasLightOfType(scene, scene::LightType::Area);
+        const bool brute = area || (hasPoint && marchPoints);
+        std::string bruteWhy = "every light has an epipolar path (spot, directional, point)";
+        if (area)
+            bruteWhy = "area lights: each VPL (a cube-mapped point-like light of its own) is marched per pixel, not "
+                       "rectified";
+        if (hasPoint && marchPoints) bruteWhy = (area ? bruteWhy + "; " : std::string()) + pointWhy;
+        p.features.push_back({"BRUTE_FORCE_LIGHTS", brute, bruteWhy});
         const bool cubes = render::hasLightOfType(scene, scene::LightType::Point) ||
                            render::hasLightOfType(scene, scene::LightType::Area);
         p.features.push_back({"SHADOW_MAPS_CUBE", cubes,
                               cubes ? "point lights / VPLs need omnidirectional maps" : "no point or area light"});
-        const bool maps2D = anyEpipolar;
+        const bool maps2D = hasSpot || render::hasLightOfType(scene, scene::LightType::Directional);
         p.features.push_back({"SHADOW_MAPS_2D", maps2D, maps2D ? "spot / directional lights" : "no spot or directional light"});
         render::planCulledLights(scene, p);
         // force_features=1: every stage runs and every permutation pruned by the scene is compiled in (the
         // traverse shader then carries spot, cookie, cube-map and near-epipole code the scene does not use).
         forcePlan(p, settings.at("force_features") != 0.0,
-                  {"NEAR_EPIPOLE", "SPOT", "COOKIE", "SHADOW_MAPS_CUBE", "SHADOW_MAPS_2D"});
+                  {"NEAR_EPIPOLE", "EPIPOLAR_POINT", "SPOT", "COOKIE", "SHADOW_MAPS_CUBE", "SHADOW_MAPS_2D"});
         annotatePermutations(p, kDefines);
         return p;
     }
@@ -326,12 +369,14 @@ public:
         const bool svd = s.at("integrand") == 1.0;
         if (runs(kRectifyIndex)) {
             for (LightWork& w : mWork) {
+                if (w.point()) measureRowGamma(w, scene, input);
                 rectify(w);
                 if (svd) prefixSums(w, scene, input);
             }
         }
         out.timing.stages.push_back({kStageRectify, clock.endMilliseconds()});
         publishRectified(out, input);
+        if (runs(kRectifyIndex)) publishRowGamma(out);
         if (svd && runs(kRectifyIndex)) publishLowRank(out);
         out.lastStageRun = kRectifyIndex;
         if (stop == kRectifyIndex) return out;
@@ -417,7 +462,7 @@ private:
         return {std::min(x, input.width - 1), std::min(y, input.height - 1)};
     }
 
-    // Epipolar setup of every spot and directional light; others are marched.
+    // Epipolar setup of every spot, directional and point light with a shadow map; others are marched.
     void prepareLights(const scene::Scene& scene, const FrameInput& input) {
         const auto& lights = mView.lights().lights();
         const int columns = int(input.settings.at("columns")) > 0 ? int(input.settings.at("columns"))
@@ -426,7 +471,9 @@ private:
         mBruteLights.clear();
         for (int i = 0; i < int(lights.size()); ++i) {
             const auto& L = lights[std::size_t(i)];
-            const bool epipolar = (L.info.x == render::hd::kLightSpot || L.info.x == render::hd::kLightDirectional) &&
+            const bool point = L.info.x == render::hd::kLightPoint && input.settings.at("point_lights") == 0.0;
+            const bool epipolar = (L.info.x == render::hd::kLightSpot || L.info.x == render::hd::kLightDirectional ||
+                                   point) &&
                                   L.info.z >= 0;
             if (!epipolar) {
                 mBruteLights.push_back(i);
@@ -444,6 +491,7 @@ private:
                 mWork[k].rectified.size() == glm::ivec3(w.setup.frame.columns, w.setup.frame.slices, 1)) {
                 w.rectified = std::move(mWork[k].rectified);
                 w.tree = std::move(mWork[k].tree);
+                w.rowGamma = std::move(mWork[k].rowGamma);
             } else {
                 const int c = w.setup.frame.columns, r = w.setup.frame.slices;
                 w.rectified = gl::Texture::create({.target = GL_TEXTURE_2D, .format = GL_R32F, .size = {c, r, 1},
@@ -453,6 +501,9 @@ private:
                 w.rectified.setFilter(GL_NEAREST, GL_NEAREST);
                 w.tree.setFilter(GL_NEAREST, GL_NEAREST);
             }
+            const std::size_t rowGammaBytes = sizeof(std::uint32_t) * std::size_t(sliceCount(w));
+            if (w.point() && (!w.rowGamma || w.rowGamma.bytes() != rowGammaBytes))
+                w.rowGamma = gl::Buffer::create({.bytes = rowGammaBytes, .label = kRowGamma});
             work.push_back(std::move(w));
         }
         mWork = std::move(work);
@@ -473,16 +524,50 @@ private:
         p.set("uGammaHi", f.gammaHi);
     }
 
+    static int sliceCount(const LightWork& w) { return w.setup.frame.slices; }
+
+    void setCameraUniforms(const gl::Program& p, const scene::Camera& cam, int width, int height) const {
+        p.set("uSize", glm::ivec2(width, height));
+        p.set("uForward", glm::vec3(cam.forward));
+        p.set("uRight", glm::vec3(scene::cameraRight(cam)));
+        p.set("uUp", glm::vec3(cam.up));
+        p.set("uTanHalf", float(std::tan(cam.yfov * 0.5)));
+        p.set("uAspect", float(scene::aspectOf(cam, width, height)));
+    }
+
+    // Point light: each row's largest gamma over its pixels' rays at their distance d (gamma_range.comp).
+    void measureRowGamma(LightWork& w, const scene::Scene& scene, const FrameInput& input) {
+        if (!mGammaRange)
+            mGammaRange = gl::Program::compile({.stages = {"minmax/gamma_range.comp"},
+                                                .defines = {{"EPIPOLAR_POINT", "1"}},
+                                                .label = "minmax.gamma_range"});
+        w.rowGamma.clearZero();
+        mGammaRange.use();
+        setFrameUniforms(mGammaRange, minmax::toFloat(w.setup.frame));
+        setCameraUniforms(mGammaRange, scene.camera, input.width, input.height);
+        w.rowGamma.bindBase(GL_SHADER_STORAGE_BUFFER, render::hd::kFirstFreeSsboBinding);
+        mView.surface().distance().bindUnit(render::hd::kFirstFreeTextureUnit);
+        const glm::ivec3 groups = gl::groupCount({input.width, input.height, 1}, mGammaRange.workGroupSize());
+        glDispatchCompute(GLuint(groups.x), GLuint(groups.y), 1);
+        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    }
+
     void rectify(LightWork& w) {
         if (!mRectify) mRectify = gl::Program::compile({.stages = {"minmax/rectify.comp"}, .label = kStageRectify});
+        if (w.point() && !mRectifyPoint)
+            mRectifyPoint = gl::Program::compile({.stages = {"minmax/rectify.comp"},
+                                                  .defines = {{"EPIPOLAR_POINT", "1"}},
+                                                  .label = kStageRectify});
+        const gl::Program& program = w.point() ? mRectifyPoint : mRectify;
         const auto f = minmax::toFloat(w.setup.frame);
-        mRectify.use();
-        setFrameUniforms(mRectify, f);
-        mRectify.set("uLight", w.gpuIndex);
+        program.use();
+        setFrameUniforms(program, f);
+        program.set("uLight", w.gpuIndex);
         mView.lights().bind();
         mView.shadows().bind();
+        if (w.point()) w.rowGamma.bindBase(GL_SHADER_STORAGE_BUFFER, render::hd::kFirstFreeSsboBinding);
         w.rectified.bindImage(0, GL_WRITE_ONLY);
-        const glm::ivec3 groups = gl::groupCount({f.columns, f.slices, 1}, mRectify.workGroupSize());
+        const glm::ivec3 groups = gl::groupCount({f.columns, f.slices, 1}, program.workGroupSize());
         glDispatchCompute(GLuint(groups.x), GLuint(groups.y), 1);
         glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
     }
@@ -496,8 +581,9 @@ private:
         w.lowRank = minmax::lowRankIntegrand(f, w.setup.betaLo, w.setup.betaHi, scene.medium.sigma_s,
                                              scene.medium.sigma_t(), scene.medium.g, rank);
         const int texels = int(s.at("texture_columns"));
-        const bool spot = f.kind == LightKind::Spot;
-        const int rows = spot ? f.slices : 1;
+        // Spot: T varies with alpha; point: every row has its own gamma range. Both need a table per slice.
+        const bool perRow = f.kind != LightKind::Directional;
+        const int rows = perRow ? f.slices : 1;
         const int layers = (3 * rank + 3) / 4;
         if (!w.prefix || w.prefix.size() != glm::ivec3(texels + 1, rows, layers)) {
             w.prefix = gl::Texture::create({.target = GL_TEXTURE_2D_ARRAY, .format = GL_RGBA32F,
@@ -507,18 +593,24 @@ private:
         }
         w.prefixRows = rows;
         if (!mPrefix) mPrefix = gl::Program::compile({.stages = {"minmax/prefix.comp"}, .label = "minmax.prefix"});
-        mPrefix.use();
-        setFrameUniforms(mPrefix, minmax::toFloat(f));
-        mPrefix.set("uLight", w.gpuIndex);
-        mPrefix.set("uRows", rows);
-        mPrefix.set("uTexels", texels);
-        mPrefix.set("uRank", rank);
-        mPrefix.set("uSharedRow", !spot);
-        glProgramUniform1fv(mPrefix.id(), mPrefix.location("uGammaBasis[0]"), GLsizei(w.lowRank.basisGamma.size()),
+        if (w.point() && !mPrefixPoint)
+            mPrefixPoint = gl::Program::compile({.stages = {"minmax/prefix.comp"},
+                                                 .defines = {{"EPIPOLAR_POINT", "1"}},
+                                                 .label = "minmax.prefix"});
+        const gl::Program& program = w.point() ? mPrefixPoint : mPrefix;
+        program.use();
+        setFrameUniforms(program, minmax::toFloat(f));
+        program.set("uLight", w.gpuIndex);
+        program.set("uRows", rows);
+        program.set("uTexels", texels);
+        program.set("uRank", rank);
+        program.set("uSharedRow", !perRow);
+        glProgramUniform1fv(program.id(), program.location("uGammaBasis[0]"), GLsizei(w.lowRank.basisGamma.size()),
                             w.lowRank.basisGamma.data());
         mView.lights().bind();
+        if (w.point()) w.rowGamma.bindBase(GL_SHADER_STORAGE_BUFFER, render::hd::kFirstFreeSsboBinding);
         w.prefix.bindImage(0, GL_WRITE_ONLY);
-        const glm::ivec3 groups = gl::groupCount({rows, 1, 1}, mPrefix.workGroupSize());
+        const glm::ivec3 groups = gl::groupCount({rows, 1, 1}, program.workGroupSize());
         glDispatchCompute(GLuint(groups.x), 1, 1);
         glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
     }
@@ -579,12 +671,7 @@ private:
         const scene::Camera& cam = scene.camera;
         const Settings& s = input.settings;
         program.use();
-        program.set("uSize", glm::ivec2(input.width, input.height));
-        program.set("uForward", glm::vec3(cam.forward));
-        program.set("uRight", glm::vec3(scene::cameraRight(cam)));
-        program.set("uUp", glm::vec3(cam.up));
-        program.set("uTanHalf", float(std::tan(cam.yfov * 0.5)));
-        program.set("uAspect", float(scene::aspectOf(cam, input.width, input.height)));
+        setCameraUniforms(program, cam, input.width, input.height);
         program.set("uSigmaS", float(scene.medium.sigma_s));
         program.set("uSigmaT", float(scene.medium.sigma_t()));
         program.set("uG", float(scene.medium.g));
@@ -602,6 +689,7 @@ private:
             if (e.epipole.valid) epipoles = glm::vec4(glm::vec2(e.epipole.pixel), epipoles.z, epipoles.w);
             if (e.antiEpipole.valid) epipoles = glm::vec4(epipoles.x, epipoles.y, glm::vec2(e.antiEpipole.pixel));
             work->tree.bindUnit(render::hd::kFirstFreeTextureUnit + 1);
+            if (work->point()) work->rowGamma.bindBase(GL_SHADER_STORAGE_BUFFER, render::hd::kFirstFreeSsboBinding);
             if (s.at("integrand") == 1.0 && work->prefix) {
                 const minmax::LowRank& lr = work->lowRank;
                 program.set("uRank", lr.rank);
@@ -698,6 +786,20 @@ private:
             w.prefix));
     }
 
+    // The gamma range of every row of the first point light, as a 1 x slices image (image row i = slice i).
+    void publishRowGamma(FrameOutput& out) const {
+        const auto it = std::find_if(mWork.begin(), mWork.end(), [](const LightWork& w) { return w.point(); });
+        if (it == mWork.end()) return;
+        const std::vector<std::uint32_t> bits = it->rowGamma.download<std::uint32_t>();
+        auto img = std::make_shared<Image>(1, int(bits.size()), 1);
+        for (std::size_t i = 0; i < bits.size(); ++i) img->at(0, int(i), 0) = std::bit_cast<float>(bits[i]);
+        out.intermediates.push_back(minmax::imageIntermediate(
+            kRowGamma, "Gamma range per slice (point light)",
+            "row i = slice i: gamma_hi, the largest angle at the light (between light->eye and light->point) that "
+            "the slice's pixels' rays reach at their distance d; the row's columns cover [0, gamma_hi] (0: no "
+            "pixel in the slice)", ViewKind::Scalar, img));
+    }
+
     // Row `row` of a light's trees as nodes (x = min, y = max).
     static std::vector<glm::vec2> readTreeRow(const gl::Texture& tree, int row) {
         const std::vector<float> raw = readRow(tree, row, 2);
@@ -757,7 +859,7 @@ private:
     render::SceneViewPasses mView;
     std::vector<LightWork> mWork;
     std::vector<int> mBruteLights;  // GpuLights indices marched by brute force
-    gl::Program mRectify, mMipmap, mTraverse, mPrefix;
+    gl::Program mRectify, mRectifyPoint, mGammaRange, mMipmap, mTraverse, mPrefix, mPrefixPoint;
     std::string mProgramKey;
     gl::Texture mAirlight, mVisited, mNearMask, mRayCoords;
     // What markersFor needs of the last run.

@@ -19,7 +19,7 @@ namespace viz::minmax {
 
 struct MirrorLight {
     LightKind kind = LightKind::Spot;
-    glm::vec3 position{0.0f};   // eye-relative (spot)
+    glm::vec3 position{0.0f};   // eye-relative (spot, point)
     glm::vec3 direction{0.0f};  // spot axis / directional travel direction
     glm::vec3 radiant{0.0f};    // colour * intensity
     float spotScale = 1.0f, spotOffset = 0.0f;  // KHR angular attenuation (GpuLight::spot.xy)
@@ -36,9 +36,10 @@ struct MirrorResult {
     int visited = 0;
 };
 
-// lights.glsl lightIntensity for a spot without cookie (the mirror does not sample cookies).
+// lights.glsl lightIntensity for a spot without cookie (the mirror does not sample cookies), a point or a
+// directional light.
 inline glm::vec3 mirrorIntensity(const MirrorLight& L, glm::vec3 p) {
-    if (L.kind == LightKind::Directional) return L.radiant;
+    if (L.kind != LightKind::Spot) return L.radiant;
     const glm::vec3 dir = glm::normalize(p - L.position);
     const float a = std::clamp(glm::dot(L.direction, dir) * L.spotScale + L.spotOffset, 0.0f, 1.0f);
     const float A = a * a;
@@ -60,6 +61,12 @@ inline glm::vec3 mirrorRun(const EpipolarFrame<float>& f, const MirrorLight& L, 
         const float t1 = mirrorDistanceAtColumn(f, beta, c1, cEnd, d);
         return airlight::directionalSegment(std::cos(beta), t0, t1, m.sigmaS, m.sigmaT, m.g, 1.0f) * L.radiant;
     }
+    if (f.kind == LightKind::Point) {
+        const float t0 = mirrorDistanceAtColumn(f, beta, c0, cEnd, d);
+        const float t1 = mirrorDistanceAtColumn(f, beta, c1, cEnd, d);
+        if (t1 <= t0) return glm::vec3(0.0f);
+        return airlight::pointSegment<float>(g.tP, g.h, t0, t1, m.sigmaS, m.sigmaT, m.g, 1.0f) * L.radiant;
+    }
     const float cellColumns = float(f.columns) / float(pieces);
     glm::vec3 sum(0.0f);
     float c = c0;
@@ -78,6 +85,7 @@ inline glm::vec3 mirrorRun(const EpipolarFrame<float>& f, const MirrorLight& L, 
 }
 
 // One pixel: w its ray, (beta, cEnd, d) from minmax.ray_coords, `tree` the 2n nodes of its slice's row.
+// A point light's f is its row's frame (EpipolarFrame::withGammaRange with minmax.row_gamma).
 inline MirrorResult integratePixel(const EpipolarFrame<float>& f, const MirrorLight& L, const MirrorMedium& m,
                                    glm::vec3 w, float beta, float cEnd, float d,
                                    const std::vector<glm::vec2>& tree, int pieces) {
