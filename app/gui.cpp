@@ -277,7 +277,7 @@ public:
             const bool flying = mController.mode() == CameraController::Mode::Fly && anyFlyKeyDown();
             const bool busy = mWorker->progress().busy || otherPending();
             const bool automated = !mOptions.screenshot.empty() || !mOptions.script.empty();
-            if (flying || mDirty || automated || (mLesson && mLesson->animating())) {
+            if (flying || mDirty || automated || mPlaying || (mLesson && mLesson->animating())) {
                 glfwPollEvents();
             } else {
                 // Nothing animates: sleep until input arrives, waking a few times a second while the
@@ -290,6 +290,7 @@ public:
             if (mController.mode() == CameraController::Mode::Fly) fly(dt);
             // Automation advances animations by a fixed 1/30 s per frame, so runs repeat exactly.
             if (mLesson) mLesson->update(*this, automated ? 1.0 / 30.0 : dt);
+            if (mPlaying) advanceAnimation(automated ? 1.0 / 30.0 : dt);
             if (mReduced && mDragButton < 0 && !anyFlyKeyDown()) mDirty = true;
             if (mDirty) {
                 // A slow GPU run blocks this thread: first show a frame that says so.
@@ -445,6 +446,7 @@ public:
                                   {"intensity", l.intensity}});
             sidecar["lights"] = lights;
         }
+        sidecar["animation"] = {{"playing", mPlaying}, {"seconds", mPlayClock}, {"light_turn", mPlayTurn}};
         sidecar["view_grid"] = {{"layout", mLayout.toText()}, {"focused", mFocused},
                                 {"maximised", mLayout.maximised()},
                                 {"cpu_ms_last_frame", mGridMilliseconds},
@@ -660,6 +662,36 @@ private:
         if (mSettings.count(name) && mSettings.at(name) == value) return;
         mSettings[name] = value;
         mDirty = true;
+    }
+
+    // ---- animation (P): the first light circles its aim point, and a technique with a `time`
+    // parameter (slices' scrolling noise) follows the clock. GPU techniques run every frame while it plays;
+    // the reference (seconds per frame on its worker) keeps the light where it is. Pausing keeps the
+    // state where it is; playing again continues from there.
+    static constexpr double kLightTurnSeconds = 8.0;
+
+    void togglePlaying() {
+        mPlaying = !mPlaying;
+        if (!mPlaying) return;
+        mPlayLight.reset();
+        if (!mScene.lights.empty() && mScene.lights[0].type != viz::scene::LightType::Area) {
+            mPlayLight = mScene.lights[0];
+            mPlayCentre = mController.target();
+            mPlayTurn = 0.0;
+        }
+    }
+
+    void advanceAnimation(double dt) {
+        mPlayClock += dt;
+        if (mSettings.count("time")) {
+            mSettings["time"] = mPlayClock;
+            mDirty = true;
+        }
+        if (mPlayLight && technique().needsGl() && !mScene.lights.empty()) {
+            mPlayTurn = std::fmod(mPlayTurn + dt / kLightTurnSeconds, 1.0);
+            mScene.lights[0] = orbitLight(*mPlayLight, mPlayCentre, mPlayTurn);
+            mDirty = true;
+        }
     }
 
     void setLessonLight(const viz::scene::Light& light) override {
@@ -1452,6 +1484,7 @@ private:
         else if (key == GLFW_KEY_N && action == GLFW_PRESS) mFocused = mLayout.next(mFocused, shift ? -1 : 1);
         else if (key == GLFW_KEY_F && action == GLFW_PRESS) toggleDifference();
         else if (key == GLFW_KEY_I && action == GLFW_PRESS) inspectPixelUnderCursor();
+        else if (key == GLFW_KEY_P && action == GLFW_PRESS) togglePlaying();
         else if (key == GLFW_KEY_E && action == GLFW_PRESS) exportView();
         else if (key == GLFW_KEY_G && action == GLFW_PRESS) toggleComparison();
         else if (key == GLFW_KEY_F12 && action == GLFW_PRESS) exportWindow();
@@ -2128,9 +2161,9 @@ private:
 
         // Help line at the bottom.
         const std::string help = mode == CameraController::Mode::Orbit
-            ? "camera: ORBIT (target " + format("%.2f", mController.targetDistance()) + ")   Tab/Shift+Tab or 1-9 technique   [ ] view   , . layer   +/- exposure (X auto)   C fly   R reset   "
+            ? "camera: ORBIT (target " + format("%.2f", mController.targetDistance()) + ")   Tab/Shift+Tab or 1-9 technique   [ ] view   , . layer   +/- exposure (X auto)   C fly   R reset   P play/pause   "
               "left drag orbit, wheel zoom, right/middle drag pan   Esc quit"
-            : "camera: FLY   Tab/Shift+Tab or 1-9 technique   [ ] view   , . layer   +/- exposure (X auto)   C orbit   R reset   "
+            : "camera: FLY   Tab/Shift+Tab or 1-9 technique   [ ] view   , . layer   +/- exposure (X auto)   C orbit   R reset   P play/pause   "
               "right drag look, WASD move, Q/E down/up, Shift faster, middle drag pan   Esc quit";
         const float bottom = float(fb.y) - 2.0f * line - pad;
         dl.textClipped({pad, bottom}, help, kDim, float(fb.x) - pad);
@@ -2388,7 +2421,11 @@ private:
     }
 
     GuiOptions mOptions;
-    int mScriptRevealFrames = 0;  // frames left until a script action's widget is scrolled into view
+    int mScriptRevealFrames = 0;
+    bool mPlaying = false;                        // P: the animation runs
+    double mPlayClock = 0.0, mPlayTurn = 0.0;     // seconds played; the light's turn (0..1)
+    std::optional<viz::scene::Light> mPlayLight;  // the first light as it was when play started
+    glm::dvec3 mPlayCentre{0.0};  // frames left until a script action's widget is scrolled into view
     std::vector<std::string> mSceneChoices, mStiffChoices;  // the scene pickers' lists (built lazily)
     SessionState mSession;  // as loaded (or defaults); settings of techniques not yet visited come from it
     std::string mNotice;    // last session message, shown in the status line

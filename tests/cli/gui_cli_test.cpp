@@ -164,6 +164,29 @@ TEST_F(GuiCli, TheScenePickersLoadABuiltinSceneAndAStiffCase) {
         << "extinction 50 per unit";
 }
 
+// P plays the animation: the first light circles its aim point (a spot keeps aiming at it) and slices'
+// `time` (its scrolling noise) follows the clock, 1/30 s per frame under automation; P again pauses.
+TEST_F(GuiCli, PlayMovesTheLightAndScrollsTheNoiseAndPauseStopsThem) {
+    const fs::path script = writeText("play.txt", "frames 1\nkey P\nframes 30\nscreenshot " + path("playing.png").string() +
+                                                      "\nkey P\nframes 1\nscreenshot " + path("paused.png").string() +
+                                                      "\nframes 5\n");
+    const RunResult r = run("gui --scene grate --technique slices --size 40x30 --set planes=16 --script " +
+                            script.string() + " --screenshot " + path("end.png").string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const nlohmann::json playing = nlohmann::json::parse(readFile(path("playing.json")));
+    const nlohmann::json paused = nlohmann::json::parse(readFile(path("paused.json")));
+    const nlohmann::json end = nlohmann::json::parse(readFile(path("end.json")));
+    EXPECT_TRUE(playing.at("animation").at("playing").get<bool>());
+    const double seconds = playing.at("animation").at("seconds").get<double>();
+    EXPECT_NEAR(seconds, 1.0, 0.15) << "about 30 frames of 1/30 s";
+    EXPECT_EQ(playing.at("settings").at("time").get<double>(), seconds);
+    const auto& p = playing.at("lights")[0].at("position");
+    EXPECT_GT(std::abs(p[0].get<double>()) + std::abs(p[2].get<double>()), 1e-3) << "the spot moved off its axis";
+    EXPECT_FALSE(end.at("animation").at("playing").get<bool>());
+    EXPECT_EQ(end.at("lights")[0].at("position"), paused.at("lights")[0].at("position")) << "paused: the light stays";
+    EXPECT_EQ(end.at("settings").at("time"), paused.at("settings").at("time"));
+}
+
 TEST_F(GuiCli, TheRayInspectorShowsTheValuesAirlightRenderGivesAtThatPixel) {
     const fs::path script = writeText("inspect.txt", "hover final 0.5 0.45\nkey I\nframes 1\n");
     const RunResult r = run("gui --scene grate --technique raymarch --size 40x30 --set samples=128 --script " +

@@ -39,7 +39,9 @@ void writeHtml(const std::string& path, const ReportMeta& meta, const std::vecto
       << kStyle << "</style></head><body>\n<h1>Airlight report: error against run time</h1>\n";
     h << "<p class=\"note\">" << escapeHtml(meta.date) << " &middot; " << escapeHtml(meta.machine) << " &middot; "
       << escapeHtml(meta.renderer) << " &middot; " << meta.width << "&times;" << meta.height << " &middot; median of "
-      << meta.runs << " runs after one warm-up" << (meta.quick ? " &middot; quick sweep" : "") << "<br><code>"
+      << meta.runs << " runs after one warm-up" << (meta.quick ? " &middot; quick sweep" : "")
+      << (meta.referenceSettings.empty() ? std::string() : " &middot; reference with " + escapeHtml(meta.referenceSettings))
+      << "<br><code>"
       << escapeHtml(meta.command) << "</code></p>\n";
     h << "<p class=\"note\">Error: L_air against the reference (Embree ray tracing and adaptive quadrature, cached). "
          "Relative L2 = ||t&minus;r||/||r|| over all pixels and channels; p99.9 = 99.9th percentile of the per-pixel "

@@ -47,6 +47,7 @@ struct ReportMeta {
     std::string renderer;   // GL_RENDERER and GL_VERSION
     int width = 0, height = 0, runs = 0;
     bool quick = false;
+    std::string referenceSettings;  // the reference's settings that differ from its defaults ("" = none)
 };
 
 // Per scene: marks the Pareto front over all techniques (time = totalMilliseconds, error = relative L2)
