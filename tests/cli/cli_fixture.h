@@ -73,6 +73,22 @@ protected:
 
 // Loads `page` in headless Chromium through a copy that counts the images that failed to load; returns
 // "images=N missing=M", or empty when no browser is installed.
+// A CliTest that opens the window: skipped without a display (X11 or Wayland), a failure instead when
+// VIZ_REQUIRE_DISPLAY=1 (CI runs these under xvfb-run).
+class WindowCliTest : public CliTest {
+protected:
+    void SetUp() override {
+        CliTest::SetUp();
+        const char* x = std::getenv("DISPLAY");
+        const char* w = std::getenv("WAYLAND_DISPLAY");
+        if (!((x && *x) || (w && *w))) {
+            const char* require = std::getenv("VIZ_REQUIRE_DISPLAY");
+            if (require && std::string(require) == "1") FAIL() << "VIZ_REQUIRE_DISPLAY=1 but no display";
+            GTEST_SKIP() << "no DISPLAY (run under xvfb-run -a)";
+        }
+    }
+};
+
 inline std::string imagesLoadedInBrowser(const fs::path& page, const fs::path& scratch) {
     const char* browser = "/usr/bin/chromium";
     if (!fs::exists(browser)) return {};

@@ -17,23 +17,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-bool haveDisplay() {
-    const char* x = std::getenv("DISPLAY");
-    const char* w = std::getenv("WAYLAND_DISPLAY");
-    return (x && *x) || (w && *w);
-}
-
-class GuiCli : public CliTest {
-protected:
-    void SetUp() override {
-        CliTest::SetUp();
-        if (!haveDisplay()) {
-            const char* require = std::getenv("VIZ_REQUIRE_DISPLAY");
-            if (require && std::string(require) == "1") FAIL() << "VIZ_REQUIRE_DISPLAY=1 but no display";
-            GTEST_SKIP() << "no DISPLAY (run under xvfb-run -a)";
-        }
-    }
-};
+class GuiCli : public WindowCliTest {};
 
 // Mean and spread of the pixels inside a rectangle (window pixels).
 void regionStats(const Image& image, const nlohmann::json& rect, double& mean, double& spread) {

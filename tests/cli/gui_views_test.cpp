@@ -21,17 +21,8 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-class GuiViews : public CliTest {
+class GuiViews : public WindowCliTest {
 protected:
-    void SetUp() override {
-        CliTest::SetUp();
-        const char* x = std::getenv("DISPLAY");
-        if (!(x && *x)) {
-            const char* require = std::getenv("VIZ_REQUIRE_DISPLAY");
-            if (require && std::string(require) == "1") FAIL() << "VIZ_REQUIRE_DISPLAY=1 but no display";
-            GTEST_SKIP() << "no DISPLAY (run under xvfb-run -a)";
-        }
-    }
     json sidecar(const std::string& png) { return json::parse(readFile(path(png).replace_extension(".json"))); }
 };
 

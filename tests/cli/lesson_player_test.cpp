@@ -22,22 +22,8 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-bool haveDisplay() {
-    const char* x = std::getenv("DISPLAY");
-    const char* w = std::getenv("WAYLAND_DISPLAY");
-    return (x && *x) || (w && *w);
-}
-
-class LessonPlayer : public CliTest {
+class LessonPlayer : public WindowCliTest {
 protected:
-    void SetUp() override {
-        CliTest::SetUp();
-        if (!haveDisplay()) {
-            const char* require = std::getenv("VIZ_REQUIRE_DISPLAY");
-            if (require && std::string(require) == "1") FAIL() << "VIZ_REQUIRE_DISPLAY=1 but no display";
-            GTEST_SKIP() << "no DISPLAY (run under xvfb-run -a)";
-        }
-    }
 
     json sidecar(const std::string& png) { return json::parse(readFile(path(png.substr(0, png.size() - 4) + ".json"))); }
 
