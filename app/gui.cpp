@@ -952,7 +952,7 @@ private:
             for (const PixelReading& r : readingsAtPixel(mOutput, frame, {p.x, p.y})) {
                 if (y + line > side.max.y) break;
                 std::string text = r.label + ":";
-                for (int c = 0; c < std::min(r.channels, 3); ++c) text += format(" %.4g", r.value[c]);
+                for (int c = 0; c < std::min(r.channels, 4); ++c) text += format(" %.4g", r.value[c]);
                 if (!r.units.empty()) text += " " + r.units;
                 dl.textClipped({side.min.x, y}, text, kText, side.max.x);
                 y += line;

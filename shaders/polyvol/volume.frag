@@ -9,7 +9,8 @@
 // +-L(0, d) pairs that cancel in fp32.
 // Outputs (additive blending): 0 signed total (rgb, a = signed crossing count of this light, consumed by
 // the resolve), 1 sum of the positive terms, 2 sum of the negative terms (as positive values),
-// 3 crossings (r = count, g = signed count over all lights: the crack detector's input).
+// 3 crossings (r = count, g = signed count over all lights: the crack detector's input; b = in front of the
+// near plane, a = beyond the surface).
 
 #include "polyvol/segment.glsl"
 
@@ -18,6 +19,7 @@ layout(binding = kFirstFreeTextureUnit) uniform sampler2D uDistance;  // Euclide
 uniform int uLightIndex;
 uniform int uConstant;         // 1: crack detector, the integrand is 1 so each term is +-x
 uniform int uOriginAtSurface;
+uniform float uNear;           // the camera's znear: crossings nearer along the view exist only by the depth clamp
 
 in vec3 vPosition;
 
@@ -43,5 +45,8 @@ void main() {
     oTotal = vec4(s * term, gl_FrontFacing ? 1.0 : -1.0);
     oPositive = vec4(s > 0.0 ? term : vec3(0.0), 0.0);
     oNegative = vec4(s < 0.0 ? term : vec3(0.0), 0.0);
-    oCrossings = vec4(1.0, gl_FrontFacing ? 1.0 : -1.0, 0.0, 0.0);
+    // b: the crossing lies in front of the near plane (without the depth clamp it would be clipped and
+    // its term lost); a: it lies beyond the surface (its distance clamped to d).
+    oCrossings = vec4(1.0, gl_FrontFacing ? 1.0 : -1.0, dot(vPosition, uForward) < uNear ? 1.0 : 0.0,
+                      length(vPosition) > d ? 1.0 : 0.0);
 }

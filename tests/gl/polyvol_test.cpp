@@ -13,6 +13,7 @@
 
 #include "core/image_io.h"
 #include "scene/builtin_scenes.h"
+#include "scene/scene_source.h"
 #include "scene/stiff_scenes.h"
 #include "technique_test_util.h"
 #include "techniques/polyvol/crack_check.h"
@@ -498,6 +499,34 @@ TEST_F(PolyvolTest, StoppingTheRefinementAtALevelGivesACoarserMesh) {
     }
     EXPECT_GT(counts[0], counts[1]);
     EXPECT_GT(counts[1], counts[2]);
+}
+
+// The crossings view says where the depth clamp kept a face (b: crossings in front of the near plane):
+// none on grate; with the camera inside the lit volume and a near plane 1 unit out, the bars' shadow
+// faces within that unit are kept, and L_air is the same as with the usual 0.05 (what the clamp is for).
+TEST_F(PolyvolTest, CrossingsCountTheFacesTheDepthClampKeeps) {
+    const auto clamped = [](const viz::FrameOutput& out) {
+        const viz::Intermediate* c = find(out, "polyvol.crossings");
+        EXPECT_TRUE(c && c->image && c->image->channels == 4);
+        double n = 0.0;
+        if (c && c->image && c->image->channels == 4)
+            for (int y = 0; y < c->image->height; ++y)
+                for (int x = 0; x < c->image->width; ++x) n += c->image->at(x, y, 2);
+        return n;
+    };
+    const viz::FrameOutput outside =
+        render(viz::scene::makeBuiltinScene("grate"), "polyvol", {{"shadow_map", 256}}, 80, 60, -1, {"polyvol.crossings"});
+    EXPECT_EQ(clamped(outside), 0.0);
+    viz::scene::Scene scene = viz::scene::loadScene("stiff/camera-in-lit-volume");
+    const viz::FrameOutput usual = render(scene, "polyvol", {{"shadow_map", 256}}, 33, 25);
+    scene.camera.znear = 1.0;
+    const viz::FrameOutput inside = render(scene, "polyvol", {{"shadow_map", 256}}, 33, 25, -1, {"polyvol.crossings"});
+    EXPECT_GT(clamped(inside), 0.0);
+    EXPECT_TRUE(std::all_of(inside.airlight.pixels.begin(), inside.airlight.pixels.end(),
+                            [](float v) { return std::isfinite(v); }));
+    const double e = relativeL2(inside.airlight, usual.airlight);
+    std::printf("camera in the lit volume: znear 1 vs 0.05, relative L2 %.2e\n", e);
+    EXPECT_LT(e, 1e-3);
 }
 
 // Stopped refinement is a coarser mesh, still closed: no crack at any stop level (the border ring stays

@@ -338,7 +338,7 @@ private:
         mTotal = make(GL_RGBA32F, kTotal);
         mPositive = make(GL_RGBA32F, kPositive);
         mNegative = make(GL_RGBA32F, kNegative);
-        mCrossings = make(GL_RG32F, kCrossings);
+        mCrossings = make(GL_RGBA32F, kCrossings);
         mAirlight = make(GL_RGBA32F, "polyvol.airlight");
         mFramebuffer = gl::Framebuffer::create("polyvol.volume_fbo");
         mFramebuffer.attachColor(0, mTotal);
@@ -472,6 +472,7 @@ private:
         program.set("uViewProj", render::eyeRelativeViewProjection(cam, input.width, input.height));
         program.set("uSize", glm::ivec2(input.width, input.height));
         program.set("uForward", glm::vec3(cam.forward));
+        program.set("uNear", float(cam.znear));
         program.set("uRight", glm::vec3(scene::cameraRight(cam)));
         program.set("uUp", glm::vec3(cam.up));
         program.set("uTanHalf", float(std::tan(cam.yfov * 0.5)));
@@ -723,7 +724,9 @@ private:
         mesh.kind = s.at("wireframe") != 0.0 ? ViewKind::Color : ViewKind::Mesh;
         out.intermediates.push_back(mesh);
         out.intermediates.push_back(render::textureIntermediate(
-            kCrossings, "Crossings", "r: volume faces crossed by each pixel's ray (overdraw), g: signed count; " + count, "",
+            kCrossings, "Crossings",
+            "r: volume faces crossed by each pixel's ray (overdraw), g: signed count, b: crossings in front of the "
+            "near plane (kept by the depth clamp), a: crossings beyond the surface (clamped to d); " + count, "",
             ViewKind::Scalar, 0.0f, 16.0f, mCrossings));
         const std::string units = constant ? "scene units (lit length)" : "radiance";
         out.intermediates.push_back(render::textureIntermediate(
