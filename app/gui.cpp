@@ -379,6 +379,25 @@ public:
                     writeScreenshot(a.target);
                     ++mScriptIndex;
                     break;
+                case ScriptAction::Kind::Drag: {
+                    // Frame 1: press at the start; frames 2-5: move a quarter of the way each; then release.
+                    const Rect r = scriptTarget(a);
+                    const glm::vec2 from = r.min + a.fraction * r.size(), to = r.min + a.to * r.size();
+                    if (mScriptDragStep == 0) {
+                        mHover = from;
+                        onMouseButtonAt(GLFW_MOUSE_BUTTON_LEFT, GLFW_PRESS, from);
+                        mScriptDragStep = 1;
+                    } else if (mScriptDragStep <= 4) {
+                        const glm::vec2 p = from + (to - from) * (float(mScriptDragStep) / 4.0f);
+                        onCursorPixels(p);
+                        ++mScriptDragStep;
+                    } else {
+                        onMouseButtonAt(GLFW_MOUSE_BUTTON_LEFT, GLFW_RELEASE, to);
+                        mScriptDragStep = 0;
+                        ++mScriptIndex;
+                    }
+                    return true;
+                }
                 case ScriptAction::Kind::Click: {
                     // Frame 1: move there and press; frame 2: release (widgets click on release).
                     if (!mSyntheticDown) {
@@ -1158,8 +1177,9 @@ private:
 
     // A view of the final frame, L_air or an intermediate the size of the frame: its texels are the
     // frame's pixels, so cursors link across such views.
+    // A view with one texel per frame pixel (an orbit view is frame-sized but seen from elsewhere).
     bool isScreenSpace(const ViewState& v) const {
-        return v.pane.texture != 0 && mOutputSize.x > 0 && v.pane.size == mOutputSize;
+        return v.pane.texture != 0 && mOutputSize.x > 0 && v.pane.size == mOutputSize && !isOrbitView(v);
     }
 
     // Builds the view's pane from the last run (and its difference image in difference mode).
@@ -1537,6 +1557,11 @@ private:
                     mDragTitle = view;  // dropped on another view: the two swap places
                     return;
                 }
+                if (button == GLFW_MOUSE_BUTTON_LEFT && v.image.contains(p) && isOrbitView(v)) {
+                    mDragOrbit = view;  // an orbit view: dragging turns its camera
+                    mLastCursor = p;
+                    return;
+                }
                 if (v.image.contains(p) && v.transform.zoom > 1.0) {
                     mDragView = view;  // zoomed in: dragging pans the view, not the camera
                     mLastCursor = p;
@@ -1550,6 +1575,8 @@ private:
             const int target = ViewLayout::hit(mCells, p);
             if (target >= 0 && target != mDragTitle) mLayout.swap(mDragTitle, target);
             mDragTitle = -1;
+        } else if (action == GLFW_RELEASE && mDragOrbit >= 0) {
+            mDragOrbit = -1;
         } else if (action == GLFW_RELEASE && mDragView >= 0) {
             mDragView = -1;
         } else if (action == GLFW_RELEASE && button == mDragButton) {
@@ -1558,9 +1585,31 @@ private:
         }
     }
 
-    void onCursor(double x, double y) {
-        const glm::vec2 p = cursorPixels(x, y);
+    void onCursor(double x, double y) { onCursorPixels(cursorPixels(x, y)); }
+
+    // Orbit views (render::MeshView: polyvol's light volume, slices' planes) turn with a left drag:
+    // their mesh_yaw / mesh_pitch parameters, 0.4 degrees per pixel.
+    bool isOrbitView(const ViewState& v) const {
+        const auto& all = mOutput.intermediates;
+        return mHaveOutput && v.index >= 0 && v.index < int(all.size()) && all[std::size_t(v.index)].id == v.content &&
+               all[std::size_t(v.index)].orbit && mSettings.count("mesh_yaw") && mSettings.count("mesh_pitch");
+    }
+
+    void turnOrbitView(glm::vec2 d) {
+        double yaw = mSettings.at("mesh_yaw") - 0.4 * double(d.x);
+        yaw = std::remainder(yaw, 360.0);
+        mSettings["mesh_yaw"] = yaw;
+        mSettings["mesh_pitch"] = std::clamp(mSettings.at("mesh_pitch") + 0.4 * double(d.y), -89.0, 89.0);
+        mDirty = true;
+    }
+
+    void onCursorPixels(glm::vec2 p) {
         mHover = p;
+        if (mDragOrbit >= 0) {
+            turnOrbitView(p - mLastCursor);
+            mLastCursor = p;
+            return;
+        }
         if (mDragView >= 0 && mViews.count(mDragView)) {
             ViewState& v = mViews.at(mDragView);
             v.transform.panBy(glm::dvec2((p - mLastCursor) / glm::max(v.image.size(), glm::vec2(1.0f))));
@@ -2506,6 +2555,8 @@ private:
     glm::dvec3 mProbeValue{0.0};
     double mLightIntensity0 = 0.0;           // the first light's intensity at start (slider range)
     int mDragView = -1;                      // the view a drag pans
+    int mDragOrbit = -1;                     // the orbit view a drag turns
+    int mScriptDragStep = 0;                 // a script's drag: 0 before the press, 1-4 moving, 5 release
     struct ViewRect {
         std::string name, title;
         Rect rect;      // the image's rectangle in window pixels

@@ -42,6 +42,7 @@ std::vector<PixelReading> readingsAtPixel(const viz::FrameOutput& out, glm::ivec
     std::vector<PixelReading> readings;
     if (pixel.x < 0 || pixel.y < 0 || pixel.x >= frame.x || pixel.y >= frame.y) return readings;
     for (const viz::Intermediate& in : out.intermediates) {
+        if (in.orbit) continue;  // frame-sized, but seen from another camera
         PixelReading r{in.id, in.label, in.units, 0, glm::vec4(0.0f)};
         if (in.image) {
             const viz::Image& image = *in.image;

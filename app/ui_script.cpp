@@ -90,6 +90,16 @@ std::vector<ScriptAction> parseScript(const std::string& path) {
             if (w.size() == 4 && (!parseFloat(w[2], a.fraction.x) || !parseFloat(w[3], a.fraction.y) ||
                                   a.fraction.x < 0.0f || a.fraction.x > 1.0f || a.fraction.y < 0.0f || a.fraction.y > 1.0f))
                 fail(w[0] + " fractions must be numbers from 0 to 1");
+        } else if (w[0] == "drag") {
+            if (w.size() != 6) fail("drag takes a name and four fractions FX FY TX TY");
+            a.kind = ScriptAction::Kind::Drag;
+            a.target = w[1];
+            float f[4];
+            for (int i = 0; i < 4; ++i)
+                if (!parseFloat(w[std::size_t(2 + i)], f[i]) || f[i] < 0.0f || f[i] > 1.0f)
+                    fail("drag fractions must be numbers from 0 to 1");
+            a.fraction = {f[0], f[1]};
+            a.to = {f[2], f[3]};
         } else if (w[0] == "key") {
             if (w.size() != 2) fail("key takes one key name");
             std::string name = w[1];
@@ -117,7 +127,7 @@ std::vector<ScriptAction> parseScript(const std::string& path) {
             a.kind = ScriptAction::Kind::Screenshot;
             a.target = w[1];
         } else {
-            fail("unknown action '" + w[0] + "' (known: click, hover, key, frames, screenshot)");
+            fail("unknown action '" + w[0] + "' (known: click, hover, drag, key, frames, screenshot)");
         }
         actions.push_back(std::move(a));
     }

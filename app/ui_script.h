@@ -4,6 +4,8 @@
 //                        (FX, FY) of its rectangle (default 0.5 0.5). NAME: a widget's label, a view
 //                        ("final", or an intermediate id), "technique:ID" or "view:LABEL" in the sidebar
 //   hover NAME [FX FY]   move the mouse there without pressing (e.g. before `key I`, the ray inspector)
+//   drag NAME FX FY TX TY  press the left button at fraction (FX, FY) of the target, move to (TX, TY)
+//                        over a few frames, release (pans a zoomed view, turns an orbit view, ...)
 //   key NAME             press a key: Tab, Enter, Escape, Space, Left, Right, Up, Down, PageUp,
 //                        PageDown, F1-F12, 0-9,
 //                        A-Z, [ and ], optionally after Shift+ and/or Ctrl+ (Shift+S)
@@ -19,10 +21,11 @@
 namespace airlight {
 
 struct ScriptAction {
-    enum class Kind { Click, Hover, Key, Frames, Screenshot };
+    enum class Kind { Click, Hover, Drag, Key, Frames, Screenshot };
     Kind kind = Kind::Frames;
     std::string target;          // widget / view name, key name or path
     glm::vec2 fraction{0.5f};    // click position within the target's rectangle
+    glm::vec2 to{0.5f};          // drag: where the button is released, within the same rectangle
     int frames = 1;
     int modifiers = 0;           // key: GLFW_MOD_SHIFT | GLFW_MOD_CONTROL
     int line = 0;                // 1-based, for messages

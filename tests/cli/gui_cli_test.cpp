@@ -171,6 +171,26 @@ TEST_F(GuiCli, PlayMovesTheLightAndScrollsTheNoiseAndPauseStopsThem) {
     EXPECT_EQ(end.at("settings").at("time"), paused.at("settings").at("time"));
 }
 
+// Dragging an orbit view (polyvol's light volume with wireframe=3) turns its own camera: mesh_yaw and
+// mesh_pitch change by 0.4 degrees per pixel dragged, the main camera stays.
+TEST_F(GuiCli, DraggingAnOrbitViewTurnsItsCamera) {
+    const fs::path script = writeText("orbit.txt", "frames 1\nclick \"view:Light volume mesh\"\nframes 2\n"
+                                                   "screenshot " + path("before.png").string() + "\n"
+                                                   "drag polyvol.mesh 0.3 0.5 0.7 0.6\nframes 2\n");
+    const RunResult r = run("gui --scene grate --technique polyvol --size 40x30 --set wireframe=3 --set shadow_map=64 "
+                            "--script " + script.string() + " --screenshot " + path("after.png").string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const nlohmann::json before = nlohmann::json::parse(readFile(path("before.json")));
+    const nlohmann::json after = nlohmann::json::parse(readFile(path("after.json")));
+    const double yaw0 = before.at("settings").at("mesh_yaw").get<double>(),
+                 yaw1 = after.at("settings").at("mesh_yaw").get<double>();
+    const double pitch0 = before.at("settings").at("mesh_pitch").get<double>(),
+                 pitch1 = after.at("settings").at("mesh_pitch").get<double>();
+    EXPECT_LT(yaw1, yaw0 - 5.0) << "dragged right: the orbit turns the other way";
+    EXPECT_GT(pitch1, pitch0 + 1.0) << "dragged down: the orbit camera rises";
+    EXPECT_EQ(after.at("views").size(), before.at("views").size());
+}
+
 TEST_F(GuiCli, TheRayInspectorShowsTheValuesAirlightRenderGivesAtThatPixel) {
     const fs::path script = writeText("inspect.txt", "hover final 0.5 0.45\nkey I\nframes 1\n");
     const RunResult r = run("gui --scene grate --technique raymarch --size 40x30 --set samples=128 --script " +

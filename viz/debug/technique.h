@@ -62,6 +62,9 @@ struct Intermediate {
     unsigned glTexture = 0;                  // GL texture name (GL_TEXTURE_2D, or a cube map/array: layers)
     unsigned glTarget = 0;
     glm::ivec3 extent{0};
+    // An orbit view (render::MeshView): the window turns it by dragging (the technique's mesh_yaw and
+    // mesh_pitch parameters).
+    bool orbit = false;
 };
 
 using Settings = std::map<std::string, double>;

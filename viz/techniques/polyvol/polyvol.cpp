@@ -722,6 +722,7 @@ private:
                                                                     : "")
                                               : "; wireframe=1|2|3 draws it (3: orbit view)");
         mesh.kind = s.at("wireframe") != 0.0 ? ViewKind::Color : ViewKind::Mesh;
+        mesh.orbit = s.at("wireframe") == 3.0;
         out.intermediates.push_back(mesh);
         out.intermediates.push_back(render::textureIntermediate(
             kCrossings, "Crossings",

@@ -350,11 +350,13 @@ public:
                 mMeshView.lines(edges, glm::vec4(0.25f + 0.75f * near, 0.45f + 0.4f * near, 0.2f, 1.0f));
             }
             gl::Framebuffer::bindDefault();
-            out.intermediates.push_back(render::textureIntermediate(
+            Intermediate view = render::textureIntermediate(
                 kPlaneView, "Sampling planes (orbit view)",
                 "the drawn planes' outlines (far dim, near bright) with the scene, the camera frustum (blue) and the "
                 "lights (yellow); mesh_yaw, mesh_pitch, mesh_zoom move the camera",
-                "", ViewKind::Color, 0.0f, 1.0f, mMeshView.texture()));
+                "", ViewKind::Color, 0.0f, 1.0f, mMeshView.texture());
+            view.orbit = true;  // the window turns it by dragging
+            out.intermediates.push_back(std::move(view));
         }
         if (t.count) {
             std::uint32_t counts[2] = {0, 0};
