@@ -91,8 +91,6 @@ void uploadImage(PaneImage& pane, const viz::Image& image) {
     pane.size = {image.width, image.height};
 }
 
-namespace {
-
 int channelsOfFormat(GLint format) {
     switch (format) {
         case GL_R8: case GL_R16: case GL_R16F: case GL_R32F: return 1;
@@ -102,8 +100,6 @@ int channelsOfFormat(GLint format) {
         default: return 0;  // integer, depth or something unusual: read it back instead
     }
 }
-
-}  // namespace
 
 void makePane(PaneImage& pane, const viz::Intermediate& in, int layer) {
     pane.id = in.id;

@@ -78,6 +78,10 @@ struct DisplayMapping {
 DisplayMapping resolveMapping(const PaneImage& pane, const DisplaySettings& settings, float exposure,
                               const std::optional<ValueRange>& autoRange);
 
+// Channels of a 2D texture format that reads as floats (normalised or float formats); 0 for integer,
+// depth and other formats, which must be read back another way.
+int channelsOfFormat(GLint format);
+
 // Uploads a CPU image (row 0 at the top) as RGBA32F; its rows stay top-first, so no flip on display.
 void uploadImage(PaneImage& pane, const viz::Image& image);
 

@@ -4,20 +4,11 @@
 
 #include <algorithm>
 
+#include "pane_image.h"
+
 namespace airlight {
 
 namespace {
-
-// Channels of the 2D texture formats a pixel can be read from as floats; 0 for the others.
-int floatChannels(GLint format) {
-    switch (format) {
-        case GL_R8: case GL_R16: case GL_R16F: case GL_R32F: return 1;
-        case GL_RG8: case GL_RG16: case GL_RG16F: case GL_RG32F: return 2;
-        case GL_RGB8: case GL_RGB16F: case GL_RGB32F: case GL_R11F_G11F_B10F: return 3;
-        case GL_RGBA8: case GL_RGBA16: case GL_RGBA16F: case GL_RGBA32F: return 4;
-        default: return 0;
-    }
-}
 
 bool hasParam(const viz::Technique& technique, const std::string& name) {
     return std::any_of(technique.params().begin(), technique.params().end(),
@@ -52,7 +43,7 @@ std::vector<PixelReading> readingsAtPixel(const viz::FrameOutput& out, glm::ivec
         } else if (in.glTexture != 0 && (in.glTarget == 0 || in.glTarget == GL_TEXTURE_2D)) {
             GLint format = 0;
             glGetTextureLevelParameteriv(in.glTexture, 0, GL_TEXTURE_INTERNAL_FORMAT, &format);
-            r.channels = floatChannels(format);
+            r.channels = channelsOfFormat(format);
             if (sizeOf(in) != frame || r.channels == 0) continue;
             const int glRow = frame.y - 1 - pixel.y;
             glGetTextureSubImage(in.glTexture, 0, pixel.x, glRow, 0, 1, 1, 1, GL_RGBA, GL_FLOAT, sizeof r.value,

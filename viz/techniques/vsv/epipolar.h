@@ -232,4 +232,11 @@ inline int occluderCell(const EpipolarFrame& f, const EpipolarGrid& g, double ph
     return std::max(0, int(std::floor(c)));
 }
 
+// Passes of the prefix-OR scan along alpha (each pass doubles the reach): ceil(log2(alpha cells)).
+inline int scanPassCount(int alphaCells) {
+    int passes = 0;
+    while ((1 << passes) < alphaCells) ++passes;
+    return passes;
+}
+
 }  // namespace viz::vsv

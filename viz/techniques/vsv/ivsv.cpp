@@ -79,11 +79,7 @@ const std::map<std::string, std::pair<const char*, const char*>> kDefines = {
     {"INTERP", {"INTERP", nullptr}},
 };
 
-int scanPassCount(int n) {
-    int p = 0;
-    while ((1 << p) < n) ++p;
-    return p;
-}
+using vsv::scanPassCount;
 
 // The scene's area light (ivsv shades one), or nullptr; every other light goes to an inner vsv.
 const scene::Light* areaLightOf(const scene::Scene& scene) {

@@ -96,11 +96,7 @@ scene::Scene onlyAreaLights(const scene::Scene& scene) {
     return out;
 }
 
-int scanPassCount(int nAlpha) {
-    int passes = 0;
-    while ((1 << passes) < nAlpha) ++passes;
-    return passes;
-}
+using vsv::scanPassCount;
 
 using vsv::cpuIntermediate;
 
