@@ -498,15 +498,14 @@ public:
                                     {"technique_value", mProbeHasValue ? rgb(mProbeValue) : nlohmann::json(nullptr)},
                                     {"lights", lights}};
             if (mHaveOutput && mProbeTechnique == technique().id()) {
-                const glm::ivec2 frame{mOptions.width, mOptions.height};
                 nlohmann::json readings = nlohmann::json::object();
-                for (const PixelReading& r : readingsAtPixel(mOutput, frame, {mProbe->x, mProbe->y})) {
+                for (const PixelReading& r : probeInspection().readings) {
                     std::vector<double> values;
                     for (int c = 0; c < r.channels; ++c) values.push_back(r.value[c]);
                     readings[r.id] = values;
                 }
                 sidecar["inspector"]["readings"] = readings;
-                sidecar["inspector"]["ray_views"] = pickedRayViews(technique(), mOutput, frame);
+                sidecar["inspector"]["ray_views"] = probeInspection().rayViews;
             }
         }
         if (mLesson) sidecar["lesson"] = mLesson->sidecar(*this);
@@ -905,6 +904,7 @@ private:
 
     void inspectPixel(int x, int y) {
         mProbe.reset();
+        mProbeInspection.reset();
         mScene.camera = mController.camera();
         try {
             mProbe = viz::reference::probePixel(mScene, mOptions.width, mOptions.height, x, y);
@@ -955,11 +955,11 @@ private:
         // The technique's own view of the ray beside the plot: its per-pixel intermediates at this pixel
         // and the per-ray views that follow the picked pixel.
         if (mHaveOutput && technique().id() == mProbeTechnique && plotArea.size().x > 500.0f * mScale) {
-            const glm::ivec2 frame{mOptions.width, mOptions.height};
             const Rect side{{plotArea.max.x - 0.42f * plotArea.size().x, plotArea.min.y}, plotArea.max};
             plotArea.max.x = side.min.x - kPad * mScale;
             float y = side.min.y;
-            const std::vector<std::string> perRay = pickedRayViews(technique(), mOutput, frame);
+            const PixelInspection& seen = probeInspection();
+            const std::vector<std::string>& perRay = seen.rayViews;
             std::string title = mProbeTechnique + " at this pixel";
             if (!perRay.empty()) {
                 title += " (its ray in views:";
@@ -968,7 +968,7 @@ private:
             }
             dl.textClipped({side.min.x, y}, title + ":", kAccent, side.max.x);
             y += line;
-            for (const PixelReading& r : readingsAtPixel(mOutput, frame, {p.x, p.y})) {
+            for (const PixelReading& r : seen.readings) {
                 if (y + line > side.max.y) break;
                 std::string text = r.label + ":";
                 for (int c = 0; c < std::min(r.channels, 4); ++c) text += format(" %.4g", r.value[c]);
@@ -1210,24 +1210,22 @@ private:
             if (index >= 0) content = all[std::size_t(index)].id;
         }
         if (index >= 0) v.index = index;
+        // The two radiance images every run has: contents 0 (final) and 1 (L_air).
+        const auto radiancePane = [&](int shown, const char* id, const char* note, const viz::Image& image) {
+            v.shown = shown;
+            v.pane.id = id;
+            v.pane.label = contentLabel(shown);
+            v.pane.note = note;
+            v.pane.units = "radiance";
+            v.pane.kind = viz::ViewKind::Color;
+            v.pane.mode = DisplayMode::HdrColor;
+            uploadImage(v.pane, image);
+        };
         if (content == "final") {
-            v.shown = 0;
-            v.pane.id = "final";
-            v.pane.label = "Final image";
-            v.pane.note = "surface radiance * exp(-sigma_t d) + L_air";
-            v.pane.units = "radiance";
-            v.pane.kind = viz::ViewKind::Color;
-            v.pane.mode = DisplayMode::HdrColor;
-            uploadImage(v.pane, mOutput.final);
+            radiancePane(0, "final", "surface radiance * exp(-sigma_t d) + L_air", mOutput.final);
         } else if (content == "airlight") {
-            v.shown = 1;
-            v.pane.id = "airlight";
-            v.pane.label = "Airlight L_air";
-            v.pane.note = "in-scattered radiance along each eye ray, before the surface term";
-            v.pane.units = "radiance";
-            v.pane.kind = viz::ViewKind::Color;
-            v.pane.mode = DisplayMode::HdrColor;
-            uploadImage(v.pane, mOutput.airlight);
+            radiancePane(1, "airlight", "in-scattered radiance along each eye ray, before the surface term",
+                         mOutput.airlight);
         } else {
             v.shown = index + 2;
             makePane(v.pane, all[std::size_t(index)], v.layer);
@@ -1391,8 +1389,16 @@ private:
         }
     }
 
+    // The technique's view of the inspected pixel in the last run, read back once per run and pixel.
+    const PixelInspection& probeInspection() {
+        if (!mProbeInspection)
+            mProbeInspection = inspectRun(technique(), mOutput, {mOptions.width, mOptions.height}, {mProbe->x, mProbe->y});
+        return *mProbeInspection;
+    }
+
     void refreshPanes() {
         mMarkerCache.clear();
+        mProbeInspection.reset();
         if (mHaveOutput && !mExposureSet && !mOutput.final.empty()) {
             mExposure = std::round(std::log2(autoExposure(mOutput.final)) / kExposureStep) * kExposureStep;
             mExposureSet = true;
@@ -2556,6 +2562,7 @@ private:
     double mLightIntensity0 = 0.0;           // the first light's intensity at start (slider range)
     int mDragView = -1;                      // the view a drag pans
     int mDragOrbit = -1;                     // the orbit view a drag turns
+    std::optional<PixelInspection> mProbeInspection;  // cache of probeInspection()
     int mScriptDragStep = 0;                 // a script's drag: 0 before the press, 1-4 moving, 5 release
     struct ViewRect {
         std::string name, title;

@@ -80,4 +80,9 @@ std::vector<std::string> pickedRayViews(const viz::Technique& technique, const v
     return ids;
 }
 
+PixelInspection inspectRun(const viz::Technique& technique, const viz::FrameOutput& out, glm::ivec2 frame,
+                           glm::ivec2 pixel) {
+    return {readingsAtPixel(out, frame, pixel), pickedRayViews(technique, out, frame)};
+}
+
 }  // namespace airlight

@@ -24,6 +24,15 @@ struct PixelReading {
 // intermediates (integer grids, meshes, maps in light space) are not per pixel and are left out.
 std::vector<PixelReading> readingsAtPixel(const viz::FrameOutput& out, glm::ivec2 frame, glm::ivec2 pixel);
 
+// Both of the above for one pixel of one run. The window reads it once per run and pixel (each reading
+// is a GL readback), not once per frame.
+struct PixelInspection {
+    std::vector<PixelReading> readings;
+    std::vector<std::string> rayViews;
+};
+PixelInspection inspectRun(const viz::Technique& technique, const viz::FrameOutput& out, glm::ivec2 frame,
+                           glm::ivec2 pixel);
+
 // Sets the technique's `pick_x` / `pick_y` to `pixel`; returns true when the technique has them and a
 // value changed (the technique must run again for its per-ray intermediates).
 bool pickPixel(const viz::Technique& technique, viz::Settings& settings, glm::ivec2 pixel);

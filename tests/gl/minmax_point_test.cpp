@@ -261,9 +261,6 @@ TEST_F(MinmaxPointTest, CpuMirrorEqualsGpuForSampledPixels) {
     ml.radiant = glm::vec3(L.radiant);
     const viz::minmax::MirrorMedium medium{float(scene.medium.sigma_s), float(scene.medium.sigma_t()),
                                            float(scene.medium.g)};
-    const viz::scene::Camera& cam = scene.camera;
-    const float tanHalf = float(std::tan(cam.yfov * 0.5));
-    const float aspect = float(viz::scene::aspectOf(cam, w, h));
     double mean = 0.0;
     for (float v : out.airlight.pixels) mean += v;
     mean /= double(out.airlight.pixels.size());
@@ -271,11 +268,7 @@ TEST_F(MinmaxPointTest, CpuMirrorEqualsGpuForSampledPixels) {
     for (int y = 0; y < h; y += 3) {
         for (int x = 0; x < w; x += 3) {
             if (near->image->at(x, y) != 0.0f) continue;
-            const float ndcX = 2.0f * (float(x) + 0.5f) / float(w) - 1.0f;
-            const float ndcY = 1.0f - 2.0f * (float(y) + 0.5f) / float(h);
-            const glm::vec3 ray = glm::normalize(glm::vec3(cam.forward) +
-                                                 (ndcX * tanHalf * aspect) * glm::vec3(viz::scene::cameraRight(cam)) +
-                                                 (ndcY * tanHalf) * glm::vec3(cam.up));
+            const glm::vec3 ray = viz::testing::shaderPixelRay(scene.camera, w, h, x, y);
             const int row = int(coords->image->at(x, y, 0));
             std::vector<glm::vec2> nodes(std::size_t(2 * f.columns));
             const int glRow = tree->image->height - 1 - row;

@@ -69,15 +69,7 @@ viz::minmax::MirrorResult mirrorPixel(const viz::scene::Scene& scene, const viz:
     ml.spotOffset = L.spot.y;
     const viz::minmax::MirrorMedium medium{float(scene.medium.sigma_s), float(scene.medium.sigma_t()),
                                            float(scene.medium.g)};
-    const viz::scene::Camera& cam = scene.camera;
-    const float tanHalf = float(std::tan(cam.yfov * 0.5));
-    const float aspect = float(viz::scene::aspectOf(cam, w, h));
-    // traverse.comp's pixelRay in float.
-    const float ndcX = 2.0f * (float(x) + 0.5f) / float(w) - 1.0f;
-    const float ndcY = 1.0f - 2.0f * (float(y) + 0.5f) / float(h);
-    const glm::vec3 ray = glm::normalize(glm::vec3(cam.forward) +
-                                         (ndcX * tanHalf * aspect) * glm::vec3(viz::scene::cameraRight(cam)) +
-                                         (ndcY * tanHalf) * glm::vec3(cam.up));
+    const glm::vec3 ray = viz::testing::shaderPixelRay(scene.camera, w, h, x, y);  // traverse.comp's
     const int row = int(coords->image->at(x, y, 0));
     std::vector<glm::vec2> nodes(std::size_t(2 * f.columns));
     for (int k = 0; k < 2 * f.columns; ++k)

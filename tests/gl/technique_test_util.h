@@ -7,9 +7,12 @@
 #include <string>
 #include <vector>
 
+#include <glm/glm.hpp>
+
 #include "gl/gl_test_fixture.h"
 #include "gl/readback.h"
 #include "technique_run.h"
+#include "scene/camera.h"
 #include "techniques/registry.h"
 
 namespace viz::testing {
@@ -54,6 +57,17 @@ protected:
 };
 
 // ||a - b||_2 / ||b||_2 over all pixels and channels.
+// The shaders' pixelRay (pixel centre, row 0 at the top) in float, as the GPU computes it, for CPU mirrors
+// that must follow the GPU's rounding.
+inline glm::vec3 shaderPixelRay(const scene::Camera& cam, int w, int h, int x, int y) {
+    const float tanHalf = float(std::tan(cam.yfov * 0.5));
+    const float aspect = float(scene::aspectOf(cam, w, h));
+    const float ndcX = 2.0f * (float(x) + 0.5f) / float(w) - 1.0f;
+    const float ndcY = 1.0f - 2.0f * (float(y) + 0.5f) / float(h);
+    return glm::normalize(glm::vec3(cam.forward) + (ndcX * tanHalf * aspect) * glm::vec3(scene::cameraRight(cam)) +
+                          (ndcY * tanHalf) * glm::vec3(cam.up));
+}
+
 inline double relativeL2(const Image& a, const Image& b) {
     double num = 0.0, den = 0.0;
     for (std::size_t i = 0; i < b.pixels.size(); ++i) {

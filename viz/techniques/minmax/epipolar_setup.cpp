@@ -154,9 +154,7 @@ Setup setupLight(const SetupInput& in) {
         f.gammaLo = std::max(0.0, phi - outer);
         f.gammaHi = std::min(pi, phi + outer);
     }
-    const int wanted = std::clamp(in.columns, 16, kMaxColumns);
-    f.columns = int(std::bit_ceil(unsigned(wanted)));
-    if (f.columns > kMaxColumns) f.columns = kMaxColumns;
+    f.columns = rectifiedColumns(in.columns);
     return s;
 }
 

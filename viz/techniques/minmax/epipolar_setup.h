@@ -3,6 +3,9 @@
 // the shadow map covers, and where the epipole falls on the screen.
 #pragma once
 
+#include <algorithm>
+#include <bit>
+
 #include <glm/glm.hpp>
 
 #include "render/host_device.h"
@@ -13,6 +16,12 @@ namespace viz::minmax {
 
 inline constexpr int kMaxSlices = 4096;
 inline constexpr int kMaxColumns = 4096;
+
+// Gamma texels per slice for a wanted count: a power of two in [16, kMaxColumns] (the min-max tree's
+// leaves; the tree has log2 of it levels).
+inline int rectifiedColumns(int wanted) {
+    return std::min(int(std::bit_ceil(unsigned(std::clamp(wanted, 16, kMaxColumns)))), kMaxColumns);
+}
 
 // The epipole (direction a) and the anti-epipole (-a) on the screen, in pixel coordinates with y = 0 the
 // bottom row (GL), for a width x height image; `valid` is false for a direction behind the camera.

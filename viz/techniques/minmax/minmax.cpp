@@ -158,8 +158,7 @@ public:
     std::vector<double> substepValues(int stage, const Settings& s) const override {
         if (stage != kMipmapIndex) return Technique::substepValues(stage, s);
         const int wanted = int(s.at("columns")) > 0 ? int(s.at("columns")) : int(s.at("shadow_map"));
-        const int columns =
-            std::min(int(std::bit_ceil(unsigned(std::clamp(wanted, 16, minmax::kMaxColumns)))), minmax::kMaxColumns);
+        const int columns = minmax::rectifiedColumns(wanted);
         const int levels = std::bit_width(unsigned(columns)) - 1;
         std::vector<double> values;
         for (int k = 1; k < levels; ++k) values.push_back(double(k));

@@ -68,6 +68,13 @@ const PermutationTable kDefines = {
 // (README, benchmark: forest broke even between 256^2 and 512^2).
 constexpr int kAdaptivePaysFrom = 512;
 
+// Whether the settings ask for adaptive tessellation at a size where the plan keeps it (or force it);
+// the plan also needs a 2D map in the scene.
+bool adaptiveBySettings(const Settings& s) {
+    return s.at("tessellation") != 0.0 &&
+           (int(s.at("shadow_map")) >= kAdaptivePaysFrom || s.at("force_features") != 0.0);
+}
+
 class PolyvolTechnique final : public Technique {
 public:
     PolyvolTechnique() {
@@ -117,9 +124,7 @@ public:
     std::vector<double> substepValues(int stage, const Settings& s) const override {
         if (stage != kVolumeIndex) return Technique::substepValues(stage, s);
         const int n = int(s.at("shadow_map"));
-        const bool adaptive =
-            s.at("tessellation") != 0.0 && (n >= kAdaptivePaysFrom || s.at("force_features") != 0.0);
-        if (!adaptive || n < 16 || !std::has_single_bit(unsigned(n))) return {};
+        if (!adaptiveBySettings(s) || n < 16 || !std::has_single_bit(unsigned(n))) return {};
         const int coarse = std::countr_zero(unsigned(n)) - polyvol::AdaptiveTessellation::kCoarseSteps;
         std::vector<double> values;
         for (int level = coarse; level >= 1; --level) values.push_back(double(level));
@@ -254,7 +259,7 @@ public:
         const bool forced = settings.at("force_features") != 0.0;
         const int mapSize = int(settings.at("shadow_map"));
         const bool pays = mapSize >= kAdaptivePaysFrom;
-        const bool adaptive = adaptiveAsked && maps2D && (pays || forced);
+        const bool adaptive = maps2D && adaptiveBySettings(settings);
         std::string why;
         if (!adaptiveAsked)
             why = "tessellation=static: one vertex per texel" +
