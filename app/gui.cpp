@@ -50,6 +50,7 @@
 #include "scene/stiff_scenes.h"
 #include "scene/builtin_scenes.h"
 #include "session_state.h"
+#include "light_gizmo.h"
 #include "view_layout.h"
 #include "view_state.h"
 #include "view_stats.h"
@@ -80,6 +81,7 @@ constexpr glm::vec4 kHover{0.22f, 0.22f, 0.26f, 1.0f};
 constexpr glm::vec4 kError{1.0f, 0.45f, 0.40f, 1.0f};
 constexpr float kFontSize = 15.0f;
 constexpr float kPad = 8.0f;
+constexpr double kGizmoArm = 0.25;  // the light gizmo's direction arm, in orbit distances of the scene camera
 constexpr float kSidebarMin = 170.0f;
 constexpr float kExposureStep = 0.5f;  // stops per +/- key press
 constexpr double kOrbitRadiansPerPixel = 0.008;
@@ -201,6 +203,14 @@ std::optional<viz::ui::Key> uiKey(int key) {
     }
 }
 
+// A light gizmo handle being dragged (GuiApp::mGizmoDrag).
+struct GizmoDrag {
+    int view = -1;
+    bool direction = false;  // the direction handle (else the position handle)
+    glm::dvec2 offset{0.0};  // from the cursor to the handle at the press, in frame uv (drags render at
+                             // half size): the handle keeps it
+};
+
 class GuiApp : public LessonHost {
 public:
     GuiApp(const GuiOptions& options, viz::scene::Scene scene, viz::Window& window, SessionState session,
@@ -211,6 +221,7 @@ public:
         , mScene(std::move(scene))
         , mWindow(window)
         , mController(mScene.camera, orbitDistance(mScene))
+        , mGizmoArm(kGizmoArm * mController.targetDistance())
         , mIds(viz::techniqueIds()) {
         float sx = 1.0f, sy = 1.0f;
         glfwGetWindowContentScale(mWindow.handle(), &sx, &sy);
@@ -264,6 +275,9 @@ public:
         glfwSetMouseButtonCallback(mWindow.handle(), nullptr);
         glfwSetCursorPosCallback(mWindow.handle(), nullptr);
         glfwSetScrollCallback(mWindow.handle(), nullptr);
+        glfwSetCursor(mWindow.handle(), nullptr);
+        for (GLFWcursor* cursor : {mColumnCursor, mRowCursor})
+            if (cursor) glfwDestroyCursor(cursor);
         // Panes may borrow the techniques' textures: drop them first.
         mViews.clear();
         mCompare.clear();
@@ -277,7 +291,7 @@ public:
             const bool flying = mController.mode() == CameraController::Mode::Fly && anyFlyKeyDown();
             const bool busy = mWorker->progress().busy || otherPending();
             const bool automated = !mOptions.screenshot.empty() || !mOptions.script.empty();
-            if (flying || mDirty || automated || mPlaying || (mLesson && mLesson->animating())) {
+            if (flying || mDirty || automated || mPlaying || mGpuOthersDue || (mLesson && mLesson->animating())) {
                 glfwPollEvents();
             } else {
                 // Nothing animates: sleep until input arrives, waking a few times a second while the
@@ -287,11 +301,12 @@ public:
             const auto now = Clock::now();
             const double dt = std::min(0.1, std::chrono::duration<double>(now - last).count());
             last = now;
+            if (mGpuOthersDue) runDueGpuOthers();  // after a frame that said "computing it..."
             if (mController.mode() == CameraController::Mode::Fly) fly(dt);
             // Automation advances animations by a fixed 1/30 s per frame, so runs repeat exactly.
             if (mLesson) mLesson->update(*this, automated ? 1.0 / 30.0 : dt);
             if (mPlaying) advanceAnimation(automated ? 1.0 / 30.0 : dt);
-            if (mReduced && mDragButton < 0 && !anyFlyKeyDown()) mDirty = true;
+            if (mReduced && mDragButton < 0 && !mGizmoDrag && !anyFlyKeyDown()) mDirty = true;
             if (mDirty) {
                 // A slow GPU run blocks this thread: first show a frame that says so.
                 if (technique().needsGl() && (!mHaveOutput || mLastRunSeconds > 0.3)) {
@@ -381,18 +396,26 @@ public:
                     break;
                 case ScriptAction::Kind::Drag: {
                     // Frame 1: press at the start; frames 2-5: move a quarter of the way each; then release.
-                    const Rect r = scriptTarget(a);
-                    const glm::vec2 from = r.min + a.fraction * r.size(), to = r.min + a.to * r.size();
+                    // Both ends are fixed at the press: what is dragged (a divider, a handle) moves.
                     if (mScriptDragStep == 0) {
-                        mHover = from;
-                        onMouseButtonAt(GLFW_MOUSE_BUTTON_LEFT, GLFW_PRESS, from);
+                        const Rect r = scriptTarget(a);
+                        Rect onto = r;
+                        if (!a.onto.empty()) {
+                            ScriptAction other = a;
+                            other.target = a.onto;
+                            onto = scriptTarget(other);
+                        }
+                        mScriptDragFrom = r.min + a.fraction * r.size();
+                        mScriptDragTo = onto.min + a.to * onto.size();
+                        mHover = mScriptDragFrom;
+                        onMouseButtonAt(GLFW_MOUSE_BUTTON_LEFT, GLFW_PRESS, mScriptDragFrom);
                         mScriptDragStep = 1;
                     } else if (mScriptDragStep <= 4) {
-                        const glm::vec2 p = from + (to - from) * (float(mScriptDragStep) / 4.0f);
+                        const glm::vec2 p = mScriptDragFrom + (mScriptDragTo - mScriptDragFrom) * (float(mScriptDragStep) / 4.0f);
                         onCursorPixels(p);
                         ++mScriptDragStep;
                     } else {
-                        onMouseButtonAt(GLFW_MOUSE_BUTTON_LEFT, GLFW_RELEASE, to);
+                        onMouseButtonAt(GLFW_MOUSE_BUTTON_LEFT, GLFW_RELEASE, mScriptDragTo);
                         mScriptDragStep = 0;
                         ++mScriptIndex;
                     }
@@ -465,6 +488,27 @@ public:
                                   {"intensity", l.intensity}});
             sidecar["lights"] = lights;
         }
+        // The light gizmo in the first view that shows it: its handles in that view's frame pixels.
+        sidecar["gizmo"] = nullptr;
+        for (const ViewCellRect& c : mCells) {
+            const auto gizmo = gizmoFor(mViews.at(c.view));
+            if (!gizmo) continue;
+            const GizmoHandles h = gizmo->handles(mScene.lights[0]);
+            const auto point = [](const std::optional<glm::dvec2>& p) {
+                return p ? nlohmann::json::array({p->x, p->y}) : nlohmann::json(nullptr);
+            };
+            // Where each handle is grabbed in the window (off the view: at its edge).
+            const auto grab = [&](const std::optional<glm::dvec2>& p) {
+                bool inside = true;
+                if (!p) return nlohmann::json(nullptr);
+                const glm::vec2 w = handlePoint(mViews.at(c.view), *p, inside);
+                return nlohmann::json::array({w.x, w.y});
+            };
+            sidecar["gizmo"] = {{"cell", c.view},           {"position", point(h.position)}, {"tip", point(h.tip)},
+                                {"root", point(h.root)},    {"arm", mGizmoArm},
+                                {"position_grab", grab(h.position)}, {"tip_grab", grab(h.tip)}};
+            break;
+        }
         sidecar["animation"] = {{"playing", mPlaying}, {"seconds", mPlayClock}, {"light_turn", mPlayTurn}};
         sidecar["view_grid"] = {{"layout", mLayout.toText()}, {"focused", mFocused},
                                 {"maximised", mLayout.maximised()},
@@ -527,6 +571,7 @@ private:
         s.camera = mController.camera();
         s.orbitTarget = mController.target();
         s.medium = mScene.medium;
+        s.lights = lightPlacements(mScene);
         // Only what differs from the technique's defaults is kept, per technique.
         const auto defaults = viz::completeSettings(*mTechniques.at(s.technique), {});
         viz::Settings changed;
@@ -597,10 +642,10 @@ private:
 
     // The session's medium, technique (with its settings), camera, view and exposure over the scene.
     void restoreSessionOverStep() override {
-        if (mSession.medium) {
-            mScene.medium = *mSession.medium;
+        const bool lights = applyLightPlacements(mSession.lights, mScene);
+        if (mSession.medium) mScene.medium = *mSession.medium;
+        if (mSession.medium || lights)
             mWorker = std::make_unique<CpuWorker>(mScene);  // the CPU worker keeps its own copy of the scene
-        }
         const auto it = std::find(mIds.begin(), mIds.end(), mSession.technique);
         selectTechnique(it == mIds.end() ? mCurrent : int(it - mIds.begin()));
         applySessionView();
@@ -613,6 +658,7 @@ private:
         mScene = std::move(scene);
         mOptions.scene = name;
         mController = CameraController(mScene.camera, orbitDistance(mScene));
+        mGizmoArm = kGizmoArm * mController.targetDistance();
         mWorker = std::make_unique<CpuWorker>(mScene);
         mLightIntensity0 = 0.0;
         mCompare.clear();
@@ -1047,7 +1093,7 @@ private:
         input.stopAfterStage = mStopAfter >= 0 && mStopAfter < stageCount - 1 ? mStopAfter : -1;
         // While the camera is being dragged or flown, render at half size to keep up; the full size
         // follows when the interaction stops.
-        mReduced = (mDragButton >= 0 || anyFlyKeyDown()) && input.width >= 64 && input.height >= 48;
+        mReduced = (mDragButton >= 0 || mGizmoDrag || anyFlyKeyDown()) && input.width >= 64 && input.height >= 48;
         if (mReduced) {
             input.width /= 2;
             input.height /= 2;
@@ -1280,27 +1326,18 @@ private:
     }
 
     // The other side of difference views: `id`'s images for the current scene, camera and size, kept
-    // until any of those change. GPU techniques run here on the main thread; CPU ones (the reference,
-    // from its on-disk cache when it has the frame) on a worker thread of their own, so that the window
-    // stays responsive: null until its full-size pass arrives (pollOtherWorker). The current technique
-    // is its own last output.
+    // until any of those change. CPU techniques (the reference, from its on-disk cache when it has the
+    // frame) run on a worker thread of their own, so that the window stays responsive: null until its
+    // full-size pass arrives (pollOtherWorker). GPU techniques need this thread's GL context: they are
+    // queued and run at the start of the next frame (runDueGpuOthers), after a frame that says so, as
+    // the window does for a slow run of its own technique. The current technique is its own last output.
     const OtherRun* otherRun(const std::string& id) {
         if (mReduced) return nullptr;
         if (id == technique().id()) {
             mSelfRun = {"", mOutput.airlight, mOutput.final, "", ""};
             return &mSelfRun;
         }
-        std::string key = id + " " + std::to_string(mOutputSize.x) + "x" + std::to_string(mOutputSize.y);
-        const viz::scene::Camera c = mController.camera();
-        char buf[512];
-        std::snprintf(buf, sizeof buf, " %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g",
-                      c.position.x, c.position.y, c.position.z, c.forward.x, c.forward.y, c.forward.z, c.up.x, c.up.y,
-                      c.up.z, c.yfov, mScene.medium.sigma_s, mScene.medium.sigma_a, mScene.medium.g);
-        key += buf;
-        for (const auto& l : mScene.lights) key += " " + format("%.17g", l.intensity);
-        viz::Settings given = mSession.settings.count(id) ? mSession.settings.at(id) : viz::Settings{};
-        for (const auto& [name, value] : mOptions.settings) given[name] = value;
-        for (const auto& [name, value] : given) key += " " + name + "=" + format("%.17g", value);
+        const std::string key = otherRunKey(id);
         OtherRun& run = mOtherRuns[id];
         if (run.key == key) return &run;
         try {
@@ -1309,38 +1346,68 @@ private:
             run = OtherRun{key, {}, {}, e.what(), ""};
             return &run;
         }
-        if (!mTechniques.at(id)->needsGl()) {
-            if (run.pending != key) {
-                // The worker keeps its own copy of the scene: a new one when the medium or lights changed.
-                if (!mOtherWorker || mOtherSceneKey != sceneOnlyKey()) {
-                    mOtherWorker = std::make_unique<CpuWorker>(mScene);
-                    mOtherSceneKey = sceneOnlyKey();
-                }
-                std::string ignored;
-                mOtherWorker->submit({id, c, settingsFor(*mTechniques.at(id), given, ignored), mOutputSize.x, mOutputSize.y});
-                run.pending = key;
-            }
+        if (run.pending == key) return nullptr;
+        run.pending = key;
+        if (mTechniques.at(id)->needsGl()) {
+            mGpuOthersDue = true;
             return nullptr;
         }
-        run = OtherRun{key, {}, {}, "", ""};
-        try {
-            // The reference gets a fresh instance, as in the comparison grid; others keep theirs.
-            std::unique_ptr<viz::Technique> fresh;
-            if (id == "reference") fresh = viz::makeTechnique(id);
-            else if (!mTechniques.count(id)) mTechniques[id] = viz::makeTechnique(id);
-            viz::Technique& t = fresh ? *fresh : *mTechniques.at(id);
-            std::string ignored;
-            viz::scene::Scene scene = mScene;
-            scene.camera = c;
-            viz::FrameInput in{&scene, mOutputSize.x, mOutputSize.y, settingsFor(t, given, ignored), -1};
-            viz::FrameOutput out = t.run(in);
-            glBindFramebuffer(GL_FRAMEBUFFER, 0);
-            run.airlight = std::move(out.airlight);
-            run.final = std::move(out.final);
-        } catch (const std::exception& e) {
-            run.failure = e.what();
+        // The worker keeps its own copy of the scene: a new one when the medium or lights changed.
+        if (!mOtherWorker || mOtherSceneKey != sceneOnlyKey()) {
+            mOtherWorker = std::make_unique<CpuWorker>(mScene);
+            mOtherSceneKey = sceneOnlyKey();
         }
-        return &run;
+        std::string ignored;
+        mOtherWorker->submit({id, mController.camera(), settingsFor(*mTechniques.at(id), otherSettings(id), ignored),
+                              mOutputSize.x, mOutputSize.y});
+        return nullptr;
+    }
+
+    // The settings `id` runs with on the other side: the session's for it, then the command line's.
+    viz::Settings otherSettings(const std::string& id) const {
+        viz::Settings given = mSession.settings.count(id) ? mSession.settings.at(id) : viz::Settings{};
+        for (const auto& [name, value] : mOptions.settings) given[name] = value;
+        return given;
+    }
+
+    // What the other side's images depend on: technique, size, camera, scene (medium, lights), settings.
+    std::string otherRunKey(const std::string& id) const {
+        std::string key = id + " " + std::to_string(mOutputSize.x) + "x" + std::to_string(mOutputSize.y);
+        const viz::scene::Camera c = mController.camera();
+        char buf[512];
+        std::snprintf(buf, sizeof buf, " %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g", c.position.x,
+                      c.position.y, c.position.z, c.forward.x, c.forward.y, c.forward.z, c.up.x, c.up.y, c.up.z, c.yfov);
+        key += buf;
+        key += " " + sceneOnlyKey();
+        for (const auto& [name, value] : otherSettings(id)) key += " " + name + "=" + format("%.17g", value);
+        return key;
+    }
+
+    // The GPU techniques queued by otherRun: run now (this blocks the thread; the frame before said
+    // "computing it..."), unless the scene, camera or size moved on since they were asked for.
+    void runDueGpuOthers() {
+        mGpuOthersDue = false;
+        for (auto& [id, run] : mOtherRuns) {
+            if (run.pending.empty() || !mTechniques.count(id) || !mTechniques.at(id)->needsGl()) continue;
+            const std::string key = std::exchange(run.pending, std::string());
+            if (key != otherRunKey(id)) continue;  // stale: the next refresh asks again
+            run = OtherRun{key, {}, {}, "", ""};
+            try {
+                viz::Technique& t = *mTechniques.at(id);
+                std::string ignored;
+                viz::scene::Scene scene = mScene;
+                scene.camera = mController.camera();
+                viz::FrameInput in{&scene, mOutputSize.x, mOutputSize.y, settingsFor(t, otherSettings(id), ignored), -1};
+                viz::FrameOutput out = t.run(in);
+                glBindFramebuffer(GL_FRAMEBUFFER, 0);
+                run.airlight = std::move(out.airlight);
+                run.final = std::move(out.final);
+            } catch (const std::exception& e) {
+                run.failure = e.what();
+            }
+            for (auto& [vid, v] : mViews)
+                if (v.display.difference != DifferenceMode::Off && v.display.against == id) refreshView(v);
+        }
     }
 
     // The medium and lights: what a CPU worker's scene copy depends on besides the camera.
@@ -1349,10 +1416,10 @@ private:
         std::snprintf(buf, sizeof buf, "%.17g %.17g %.17g", mScene.medium.sigma_s, mScene.medium.sigma_a,
                       mScene.medium.g);
         std::string key = buf;
-        for (const auto& l : mScene.lights) {
-            key += ' ';
-            key += format("%.17g", l.intensity);
-        }
+        for (const auto& l : mScene.lights)
+            for (const double x : {l.position.x, l.position.y, l.position.z, l.direction.x, l.direction.y,
+                                   l.direction.z, l.intensity, l.color.x, l.color.y, l.color.z})
+                key += " " + format("%.17g", x);
         return key;
     }
 
@@ -1511,6 +1578,7 @@ private:
         else if (key == GLFW_KEY_F && action == GLFW_PRESS) toggleDifference();
         else if (key == GLFW_KEY_I && action == GLFW_PRESS) inspectPixelUnderCursor();
         else if (key == GLFW_KEY_P && action == GLFW_PRESS) togglePlaying();
+        else if (key == GLFW_KEY_L && action == GLFW_PRESS) mShowGizmo = !mShowGizmo;
         else if (key == GLFW_KEY_E && action == GLFW_PRESS) exportView();
         else if (key == GLFW_KEY_G && action == GLFW_PRESS) toggleComparison();
         else if (key == GLFW_KEY_F12 && action == GLFW_PRESS) exportWindow();
@@ -1555,6 +1623,17 @@ private:
             if (mUi->hot() != 0 && p == mHoverDrawn) return;
             for (const Rect& r : mStripRects)
                 if (r.contains(p)) return;
+            if (button == GLFW_MOUSE_BUTTON_LEFT) {
+                if (auto d = dividerAt(p)) {
+                    mDragDivider = std::move(d);
+                    return;
+                }
+                if (auto handle = gizmoHandleAt(p)) {
+                    mGizmoDrag = handle;
+                    mFocused = handle->view;
+                    return;
+                }
+            }
             const int view = ViewLayout::hit(mCells, p);
             if (view >= 0 && mViews.count(view)) {
                 mFocused = view;  // any click in a view focuses it
@@ -1581,6 +1660,11 @@ private:
             const int target = ViewLayout::hit(mCells, p);
             if (target >= 0 && target != mDragTitle) mLayout.swap(mDragTitle, target);
             mDragTitle = -1;
+        } else if (action == GLFW_RELEASE && mDragDivider) {
+            mDragDivider.reset();
+        } else if (action == GLFW_RELEASE && mGizmoDrag) {
+            mGizmoDrag.reset();
+            if (mReduced) mDirty = true;  // the full size follows
         } else if (action == GLFW_RELEASE && mDragOrbit >= 0) {
             mDragOrbit = -1;
         } else if (action == GLFW_RELEASE && mDragView >= 0) {
@@ -1611,6 +1695,14 @@ private:
 
     void onCursorPixels(glm::vec2 p) {
         mHover = p;
+        if (mDragDivider) {
+            mLayout.moveDivider(*mDragDivider, p, kPad * mScale);
+            return;
+        }
+        if (mGizmoDrag) {
+            dragGizmo(p);
+            return;
+        }
         if (mDragOrbit >= 0) {
             turnOrbitView(p - mLastCursor);
             mLastCursor = p;
@@ -1654,6 +1746,16 @@ private:
             return;
         }
         const int view = ViewLayout::hit(mCells, mHover);
+        if (view >= 0 && mViews.count(view) && isOrbitView(mViews.at(view)) && mSettings.count("mesh_zoom") &&
+            mViews.at(view).image.contains(mHover)) {
+            // An orbit view: the wheel moves its own camera in (mesh_zoom, 1.25x a notch), not the texture.
+            const auto& params = technique().params();
+            const auto zoom = std::find_if(params.begin(), params.end(), [](const auto& p) { return p.name == "mesh_zoom"; });
+            if (zoom == params.end()) return;
+            mSettings["mesh_zoom"] = std::clamp(mSettings.at("mesh_zoom") * std::pow(1.25, dy), zoom->minValue, zoom->maxValue);
+            mDirty = true;
+            return;
+        }
         if (view >= 0 && mViews.count(view) && mViews.at(view).content != "final" && mViews.at(view).image.contains(mHover)) {
             // The wheel over a view zooms it about the cursor (the camera stays); over the final frame
             // it moves the camera.
@@ -1778,12 +1880,167 @@ private:
         v.strip = stripHeight > 0.0f ? Rect{{cell.min.x, cell.max.y - stripHeight}, cell.max} : Rect{};
     }
 
+    // ---- the light gizmo (light_gizmo.h): the first light's handles over the frame views ----
+
+    std::optional<LightGizmo> gizmoFor(const ViewState& v) const {
+        if (!mShowGizmo || !mHaveOutput || mScene.lights.empty() || !LightGizmo::hasHandles(mScene.lights[0])) return {};
+        if ((v.content != "final" && v.content != "airlight") || !isScreenSpace(v)) return {};
+        return LightGizmo(mController.camera(), v.pane.size, mGizmoArm, mController.target());
+    }
+
+    // Frame pixels (continuous, y down) <-> window pixels, through the view's pan and zoom.
+    static glm::vec2 frameToWindow(const ViewState& v, glm::dvec2 px) {
+        return v.image.min + glm::vec2(v.transform.uvToPane(px / glm::dvec2(v.pane.size))) * v.image.size();
+    }
+    static glm::dvec2 windowToFrame(const ViewState& v, glm::vec2 p) {
+        return v.transform.paneToUv(glm::dvec2((p - v.image.min) / v.image.size())) * glm::dvec2(v.pane.size);
+    }
+
+    // Where a handle is drawn and grabbed: its window point, or (off the view) the nearest point just
+    // inside the image's edge; `inside` says which.
+    glm::vec2 handlePoint(const ViewState& v, glm::dvec2 px, bool& inside) const {
+        const glm::vec2 p = frameToWindow(v, px);
+        const float inset = 7.0f * mScale;
+        const glm::vec2 q = glm::clamp(p, v.image.min + inset, v.image.max - inset);
+        inside = q == p;
+        return q;
+    }
+
+    // The handle under `p` (the direction handle first: it is the smaller target), within 8 pixels.
+    // Drags are relative: a handle off the view is grabbed at the view's edge and follows the cursor.
+    std::optional<GizmoDrag> gizmoHandleAt(glm::vec2 p) const {
+        const float grab = 8.0f * mScale;
+        for (const ViewCellRect& c : mCells) {
+            const ViewState& v = mViews.at(c.view);
+            const auto gizmo = gizmoFor(v);
+            if (!gizmo || !v.image.contains(p)) continue;
+            const GizmoHandles h = gizmo->handles(mScene.lights[0]);
+            bool inside = true;
+            const glm::dvec2 cursor = windowToFrame(v, p), size(v.pane.size);
+            if (h.tip && glm::length(handlePoint(v, *h.tip, inside) - p) <= grab)
+                return GizmoDrag{c.view, true, (*h.tip - cursor) / size};
+            if (h.position && glm::length(handlePoint(v, *h.position, inside) - p) <= grab)
+                return GizmoDrag{c.view, false, (*h.position - cursor) / size};
+        }
+        return std::nullopt;
+    }
+
+    void dragGizmo(glm::vec2 p) {
+        if (!mViews.count(mGizmoDrag->view) || mScene.lights.empty()) return;
+        const ViewState& v = mViews.at(mGizmoDrag->view);
+        const auto gizmo = gizmoFor(v);
+        if (!gizmo) return;
+        viz::scene::Light& light = mScene.lights[0];
+        const glm::dvec2 px = windowToFrame(v, p) + mGizmoDrag->offset * glm::dvec2(v.pane.size);
+        if (mGizmoDrag->direction ? gizmo->dragDirection(light, px) : gizmo->dragPosition(light, px)) sceneEdited();
+    }
+
+    // The first light's handles: a square at its position (point, spot), a diamond at the end of its
+    // direction arm (spot: where the light goes; directional: where it comes from, the arm ending at
+    // the orbit target). Scripts name them "gizmo:position" and "gizmo:direction" (in the first view
+    // that shows them).
+    void drawGizmo(DrawList& dl, int id, const ViewState& v) {
+        const auto gizmo = gizmoFor(v);
+        if (!gizmo) return;
+        const GizmoHandles h = gizmo->handles(mScene.lights[0]);
+        const float r = 5.0f * mScale, w = 1.5f * mScale;
+        const glm::vec4 shadow{0.0f, 0.0f, 0.0f, 0.8f}, yellow{1.0f, 0.9f, 0.25f, 1.0f};
+        dl.pushClip(v.image);
+        const auto lit = [&](bool direction) {
+            return (mGizmoDrag && mGizmoDrag->view == id && mGizmoDrag->direction == direction) ? kText : yellow;
+        };
+        bool inside = true;
+        if (h.tip && h.root) {
+            const glm::vec2 a = frameToWindow(v, *h.root), tip = frameToWindow(v, *h.tip);
+            dl.line(a, tip, w + 2.0f * mScale, shadow);
+            dl.line(a, tip, w, yellow);
+            const glm::vec2 b = handlePoint(v, *h.tip, inside);
+            const glm::vec2 corners[4] = {{b.x, b.y - r - 1.0f}, {b.x + r + 1.0f, b.y}, {b.x, b.y + r + 1.0f}, {b.x - r - 1.0f, b.y}};
+            for (int pass = 0; pass < 2; ++pass)
+                for (int i = 0; i < 4; ++i)
+                    dl.line(corners[i], corners[(i + 1) % 4], pass == 0 ? w + 2.0f * mScale : w, pass == 0 ? shadow : lit(true));
+            if (!mNamedRects.count("gizmo:direction")) mNamedRects["gizmo:direction"] = {b - r, b + r};
+        }
+        if (h.position) {
+            const glm::vec2 c = handlePoint(v, *h.position, inside);
+            dl.rect({c - r - 1.0f * mScale, c + r + 1.0f * mScale}, shadow);
+            // Off the view: a hollow square at the edge nearest the light.
+            dl.rect({c - r, c + r}, lit(false));
+            if (!inside) dl.rect({c - r + 2.0f * mScale, c + r - 2.0f * mScale}, shadow);
+            const std::string name = (mScene.lights[0].name.empty() ? std::string("light") : mScene.lights[0].name) +
+                                     (inside ? "" : " (off view)");
+            const float tx = c.x + r + 4.0f * mScale + mFont->measure(name) < v.image.max.x
+                                 ? c.x + r + 4.0f * mScale
+                                 : c.x - r - 4.0f * mScale - mFont->measure(name);
+            dl.textClipped({tx, c.y - 0.5f * mFont->lineHeight()}, name, yellow, v.image.max.x);
+            if (!mNamedRects.count("gizmo:position")) mNamedRects["gizmo:position"] = {c - r, c + r};
+        }
+        dl.popClip();
+    }
+
+    // The scene's medium or lights changed (panel, gizmo): the CPU worker keeps its own copy of the
+    // scene, and the plan may change.
+    void sceneEdited() {
+        mWorker = std::make_unique<CpuWorker>(mScene);
+        replan();
+    }
+
+    // The gaps between views: drag one to move its split (scripts name them "divider:root",
+    // "divider:1", ... by the split's path). Lit while hovered or dragged.
+    void drawDividers(const Rect& area) {
+        mDividers = mCompare.empty() ? mLayout.dividers(area, kPad * mScale) : std::vector<ViewDivider>{};
+        bool over = false;
+        for (const ViewDivider& d : mDividers) {
+            const Rect grip = dividerGrip(d);
+            mNamedRects["divider:" + (d.path.empty() ? std::string("root") : d.path)] = grip;
+            const bool dragged = mDragDivider && mDragDivider->path == d.path;
+            const bool hovered = grip.contains(mHover) && mDragButton < 0 && mDragTitle < 0;
+            over = over || hovered || dragged;
+            if (!hovered && !dragged) continue;
+            const glm::vec2 c = 0.5f * (d.strip.min + d.strip.max);
+            const float w = 2.0f * mScale;
+            mDrawList->rect(d.axis == SplitAxis::X ? Rect{{c.x - w, d.strip.min.y}, {c.x + w, d.strip.max.y}}
+                                                   : Rect{{d.strip.min.x, c.y - w}, {d.strip.max.x, c.y + w}},
+                            dragged ? kAccent : kHighlight);
+        }
+        setResizeCursor(over ? (mDragDivider ? mDragDivider->axis : dividerAt(mHover)->axis) : std::optional<SplitAxis>{});
+    }
+
+    // A divider's grab area: its gap, widened to at least 8 pixels across.
+    Rect dividerGrip(const ViewDivider& d) const {
+        Rect r = d.strip;
+        const float half = 4.0f * mScale;
+        const glm::vec2 c = 0.5f * (r.min + r.max);
+        if (d.axis == SplitAxis::X) r.min.x = std::min(r.min.x, c.x - half), r.max.x = std::max(r.max.x, c.x + half);
+        else r.min.y = std::min(r.min.y, c.y - half), r.max.y = std::max(r.max.y, c.y + half);
+        return r;
+    }
+
+    // The innermost divider under `p` (nested splits are listed after their parents).
+    std::optional<ViewDivider> dividerAt(glm::vec2 p) const {
+        std::optional<ViewDivider> found;
+        for (const ViewDivider& d : mDividers)
+            if (dividerGrip(d).contains(p)) found = d;
+        return found;
+    }
+
+    // The window's cursor shows a divider can be dragged (no change under automation or a headless run).
+    void setResizeCursor(std::optional<SplitAxis> axis) {
+        if (axis == mCursorAxis) return;
+        mCursorAxis = axis;
+        GLFWcursor*& cursor = !axis ? mArrowCursor : *axis == SplitAxis::X ? mColumnCursor : mRowCursor;
+        if (!cursor && axis)
+            cursor = glfwCreateStandardCursor(*axis == SplitAxis::X ? GLFW_HRESIZE_CURSOR : GLFW_VRESIZE_CURSOR);
+        glfwSetCursor(mWindow.handle(), cursor);  // nullptr: the default arrow
+    }
+
     void drawViewGrid(const Rect& area) {
         mStripRects.clear();
         // The comparison grid takes the right half; the first view keeps the left.
         const float half = 0.5f * (area.size().x - kPad * mScale);
         if (mCompare.empty()) mCells = mLayout.arrange(area, kPad * mScale);
         else mCells = {{mLayout.views().front(), {area.min, {area.min.x + half, area.max.y}}}};
+        drawDividers(area);
         for (const ViewCellRect& c : mCells) layoutCell(mViews[c.view], c.rect);
         // The frame pixel under the cursor, if the cursor is over a screen-space view.
         mHoveredView = ViewLayout::hit(mCells, mHover);
@@ -1898,6 +2155,7 @@ private:
         }
         if (mLinkedPixel && !isScreenSpace(v) && v.pane.texture != 0) drawMarkers(dl, v, markersFor(v));
         markProbe(dl, v);
+        drawGizmo(dl, id, v);
 
         // The value under the cursor (or at the linked pixel), from the view's CPU copy.
         const glm::vec2 readoutAt{v.image.min.x, v.image.max.y + 3.0f * s};
@@ -2348,10 +2606,7 @@ private:
             }
             if (mUi->collapsingHeader(technique().id() + " parameters", true)) parameterWidgets();
             mUi->endPanel();
-            if (sceneChanged) {
-                mWorker = std::make_unique<CpuWorker>(mScene);  // the CPU worker keeps its own copy
-                replan();
-            }
+            if (sceneChanged) sceneEdited();
         }
         if (mLesson) mLesson->draw(*mUi, *mDrawList, *mBackground, mScale);
         mUi->endFrame();
@@ -2487,6 +2742,7 @@ private:
     viz::scene::Scene mScene;  // the camera follows the controller
     viz::Window& mWindow;
     CameraController mController;
+    double mGizmoArm = 1.0;  // scene units (kGizmoArm of the scene camera's orbit distance)
     std::vector<std::string> mIds;
     std::map<std::string, std::unique_ptr<viz::Technique>> mTechniques;  // main-thread instances
     int mCurrent = 0;
@@ -2519,6 +2775,7 @@ private:
     std::map<std::string, OtherRun> mOtherRuns;  // difference views' other side, by technique id
     OtherRun mSelfRun;
     std::unique_ptr<CpuWorker> mOtherWorker;  // CPU techniques on the other side of difference views
+    bool mGpuOthersDue = false;               // GPU techniques queued for difference views (next frame)
     std::string mOtherSceneKey;
     double mGridMilliseconds = 0.0;  // CPU time drawViewGrid took last frame
     double mUiMilliseconds = 0.0;    // CPU time of building the whole frame's UI (before its draw calls)
@@ -2562,8 +2819,17 @@ private:
     double mLightIntensity0 = 0.0;           // the first light's intensity at start (slider range)
     int mDragView = -1;                      // the view a drag pans
     int mDragOrbit = -1;                     // the orbit view a drag turns
+    std::vector<ViewDivider> mDividers;      // the grid's dividers last frame
+    std::optional<ViewDivider> mDragDivider;  // the divider being dragged
+    bool mShowGizmo = true;                   // L: the light gizmo over the frame views
+    std::optional<GizmoDrag> mGizmoDrag;       // the light handle being dragged
+    std::optional<SplitAxis> mCursorAxis;     // the resize cursor shown (none: the arrow)
+    GLFWcursor* mArrowCursor = nullptr;       // stays null: the default cursor
+    GLFWcursor* mColumnCursor = nullptr;      // created on first use, destroyed with the app
+    GLFWcursor* mRowCursor = nullptr;
     std::optional<PixelInspection> mProbeInspection;  // cache of probeInspection()
     int mScriptDragStep = 0;                 // a script's drag: 0 before the press, 1-4 moving, 5 release
+    glm::vec2 mScriptDragFrom{0.0f}, mScriptDragTo{0.0f};  // its ends, fixed at the press
     struct ViewRect {
         std::string name, title;
         Rect rect;      // the image's rectangle in window pixels
@@ -2616,6 +2882,7 @@ int runGui(const GuiOptions& options) {
     // Everything that can fail on user input fails before the window opens.
     viz::scene::Scene scene = viz::scene::loadScene(effective.scene);
     if (session.medium && effective.scene == session.scene) scene.medium = *session.medium;
+    if (effective.scene == session.scene) applyLightPlacements(session.lights, scene);
     // Each --set must name a parameter of some technique (the window switches between them), and the
     // values must suit the technique the window opens with.
     std::vector<std::unique_ptr<viz::Technique>> all;

@@ -41,6 +41,22 @@ double readNumber(const json& j, const char* key, double lo, double hi) {
 
 }  // namespace
 
+std::vector<SessionState::LightPlacement> lightPlacements(const viz::scene::Scene& scene) {
+    std::vector<SessionState::LightPlacement> out;
+    for (const auto& l : scene.lights) out.push_back({l.position, l.direction, l.intensity});
+    return out;
+}
+
+bool applyLightPlacements(const std::vector<SessionState::LightPlacement>& placements, viz::scene::Scene& scene) {
+    if (placements.size() != scene.lights.size()) return false;
+    for (std::size_t i = 0; i < placements.size(); ++i) {
+        scene.lights[i].position = placements[i].position;
+        scene.lights[i].direction = placements[i].direction;
+        scene.lights[i].intensity = placements[i].intensity;
+    }
+    return true;
+}
+
 std::string sessionToJson(const SessionState& s) {
     json j;
     j["version"] = SessionState::kVersion;
@@ -54,6 +70,12 @@ std::string sessionToJson(const SessionState& s) {
                        {"target", vec3(s.orbitTarget)}};
     }
     if (s.medium) j["medium"] = {{"sigma_s", s.medium->sigma_s}, {"sigma_a", s.medium->sigma_a}, {"g", s.medium->g}};
+    if (!s.lights.empty()) {
+        json lights = json::array();
+        for (const auto& l : s.lights)
+            lights.push_back({{"position", vec3(l.position)}, {"direction", vec3(l.direction)}, {"intensity", l.intensity}});
+        j["lights"] = lights;
+    }
     json settings = json::object();
     for (const auto& [technique, values] : s.settings) settings[technique] = values;
     j["settings"] = settings;
@@ -114,6 +136,19 @@ SessionState sessionFromJson(const std::string& text, std::string& problem) {
             const json& m = j.at("medium");
             s.medium = viz::scene::Medium{readNumber(m, "sigma_s", 0, 1e6), readNumber(m, "sigma_a", 0, 1e6),
                                           readNumber(m, "g", -0.999, 0.999)};
+        }
+        if (j.contains("lights")) {  // optional: files written before the light gizmo have none
+            const json& lights = j.at("lights");
+            if (!lights.is_array()) throw std::runtime_error("lights is not an array");
+            for (const json& l : lights) {
+                SessionState::LightPlacement p;
+                p.position = readVec3(l, "position");
+                p.direction = readVec3(l, "direction");
+                if (glm::length(p.direction) < 1e-9) throw std::runtime_error("a light's direction is zero");
+                p.direction = glm::normalize(p.direction);
+                p.intensity = readNumber(l, "intensity", 0.0, 1e30);
+                s.lights.push_back(p);
+            }
         }
         for (const auto& [technique, values] : j.at("settings").items())
             for (const auto& [name, value] : values.items()) {

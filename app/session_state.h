@@ -23,6 +23,14 @@ struct SessionState {
     std::optional<viz::scene::Camera> camera;  // empty = the scene's own
     glm::dvec3 orbitTarget{0.0};
     std::optional<viz::scene::Medium> medium;  // empty = the scene's own
+    // Where the user put the scene's lights and how bright (panel or gizmo), in the scene's order; empty =
+    // the scene's own. Applied only to the same scene with as many lights.
+    struct LightPlacement {
+        glm::dvec3 position{0.0};
+        glm::dvec3 direction{0.0, 0.0, -1.0};  // unit
+        double intensity = 1.0;
+    };
+    std::vector<LightPlacement> lights;
     std::map<std::string, viz::Settings> settings;  // per technique id, only values the user set
     std::string view = "airlight";          // the intermediate shown beside the final frame
     double viewZoom = 1.0;                   // its pan and zoom (ui/image_view.h)
@@ -55,6 +63,10 @@ struct SessionState {
 };
 
 std::string sessionToJson(const SessionState& state);
+// The lights' placements of `scene`, and applying saved ones to it (false, scene unchanged, when the
+// number of lights differs).
+std::vector<SessionState::LightPlacement> lightPlacements(const viz::scene::Scene& scene);
+bool applyLightPlacements(const std::vector<SessionState::LightPlacement>& placements, viz::scene::Scene& scene);
 // Parses `text`; on any problem returns the defaults and sets `problem` to a one-line reason.
 SessionState sessionFromJson(const std::string& text, std::string& problem);
 

@@ -91,7 +91,7 @@ std::vector<ScriptAction> parseScript(const std::string& path) {
                                   a.fraction.x < 0.0f || a.fraction.x > 1.0f || a.fraction.y < 0.0f || a.fraction.y > 1.0f))
                 fail(w[0] + " fractions must be numbers from 0 to 1");
         } else if (w[0] == "drag") {
-            if (w.size() != 6) fail("drag takes a name and four fractions FX FY TX TY");
+            if (w.size() != 6 && w.size() != 7) fail("drag takes a name, four fractions FX FY TX TY and optionally ONTO");
             a.kind = ScriptAction::Kind::Drag;
             a.target = w[1];
             float f[4];
@@ -100,6 +100,7 @@ std::vector<ScriptAction> parseScript(const std::string& path) {
                     fail("drag fractions must be numbers from 0 to 1");
             a.fraction = {f[0], f[1]};
             a.to = {f[2], f[3]};
+            if (w.size() == 7) a.onto = w[6];
         } else if (w[0] == "key") {
             if (w.size() != 2) fail("key takes one key name");
             std::string name = w[1];

@@ -4,8 +4,9 @@
 //                        (FX, FY) of its rectangle (default 0.5 0.5). NAME: a widget's label, a view
 //                        ("final", or an intermediate id), "technique:ID" or "view:LABEL" in the sidebar
 //   hover NAME [FX FY]   move the mouse there without pressing (e.g. before `key I`, the ray inspector)
-//   drag NAME FX FY TX TY  press the left button at fraction (FX, FY) of the target, move to (TX, TY)
-//                        over a few frames, release (pans a zoomed view, turns an orbit view, ...)
+//   drag NAME FX FY TX TY [ONTO]  press the left button at fraction (FX, FY) of the target, move to
+//                        (TX, TY) of the same rectangle (or of ONTO's) over a few frames, release (pans
+//                        a zoomed view, turns an orbit view, moves a divider or a light handle, ...)
 //   key NAME             press a key: Tab, Enter, Escape, Space, Left, Right, Up, Down, PageUp,
 //                        PageDown, F1-F12, 0-9,
 //                        A-Z, [ and ], optionally after Shift+ and/or Ctrl+ (Shift+S)
@@ -25,7 +26,8 @@ struct ScriptAction {
     Kind kind = Kind::Frames;
     std::string target;          // widget / view name, key name or path
     glm::vec2 fraction{0.5f};    // click position within the target's rectangle
-    glm::vec2 to{0.5f};          // drag: where the button is released, within the same rectangle
+    glm::vec2 to{0.5f};          // drag: where the button is released, within the same rectangle or
+    std::string onto;            // within this one's (drag ... ONTO), when not empty
     int frames = 1;
     int modifiers = 0;           // key: GLFW_MOD_SHIFT | GLFW_MOD_CONTROL
     int line = 0;                // 1-based, for messages

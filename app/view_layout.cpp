@@ -93,11 +93,7 @@ int ViewLayout::next(int view, int step) const {
     return all[std::size_t(((i + step) % n + n) % n)];
 }
 
-void ViewLayout::place(const Node& n, const viz::ui::Rect& r, float gap, std::vector<ViewCellRect>& out) {
-    if (n.kids.empty()) {
-        out.push_back({n.view, r});
-        return;
-    }
+std::pair<viz::ui::Rect, viz::ui::Rect> ViewLayout::sides(const Node& n, const viz::ui::Rect& r, float gap) {
     viz::ui::Rect a = r, b = r;
     if (n.axis == SplitAxis::X) {
         const float w = std::max(0.0f, r.size().x - gap);
@@ -108,8 +104,50 @@ void ViewLayout::place(const Node& n, const viz::ui::Rect& r, float gap, std::ve
         a.max.y = r.min.y + h * n.fraction;
         b.min.y = a.max.y + gap;
     }
+    return {a, b};
+}
+
+void ViewLayout::place(const Node& n, const viz::ui::Rect& r, float gap, std::vector<ViewCellRect>& out) {
+    if (n.kids.empty()) {
+        out.push_back({n.view, r});
+        return;
+    }
+    const auto [a, b] = sides(n, r, gap);
     place(n.kids[0], a, gap, out);
     place(n.kids[1], b, gap, out);
+}
+
+void ViewLayout::collectDividers(const Node& n, const viz::ui::Rect& r, float gap, const std::string& path,
+                                 std::vector<ViewDivider>& out) {
+    if (n.kids.empty()) return;
+    const auto [a, b] = sides(n, r, gap);
+    viz::ui::Rect strip = r;
+    if (n.axis == SplitAxis::X) strip.min.x = a.max.x, strip.max.x = b.min.x;
+    else strip.min.y = a.max.y, strip.max.y = b.min.y;
+    out.push_back({path, n.axis, strip, r});
+    collectDividers(n.kids[0], a, gap, path + "0", out);
+    collectDividers(n.kids[1], b, gap, path + "1", out);
+}
+
+std::vector<ViewDivider> ViewLayout::dividers(const viz::ui::Rect& area, float gap) const {
+    std::vector<ViewDivider> out;
+    if (mMaximised >= 0 && contains(mMaximised)) return out;
+    collectDividers(mRoot, area, gap, "", out);
+    return out;
+}
+
+bool ViewLayout::moveDivider(const ViewDivider& divider, glm::vec2 p, float gap) {
+    Node* n = &mRoot;
+    for (const char c : divider.path) {
+        if (n->kids.size() != 2 || (c != '0' && c != '1')) return false;
+        n = &n->kids[std::size_t(c - '0')];
+    }
+    if (n->kids.size() != 2 || n->axis != divider.axis) return false;
+    const bool x = divider.axis == SplitAxis::X;
+    const float extent = std::max(1.0f, (x ? divider.span.size().x : divider.span.size().y) - gap);
+    const float offset = (x ? p.x - divider.span.min.x : p.y - divider.span.min.y) - 0.5f * gap;
+    n->fraction = std::clamp(offset / extent, 0.05f, 0.95f);
+    return true;
 }
 
 std::vector<ViewCellRect> ViewLayout::arrange(const viz::ui::Rect& area, float gap) const {

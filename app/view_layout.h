@@ -10,6 +10,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "ui/text_renderer.h"
@@ -21,6 +22,14 @@ enum class SplitAxis { X, Y };  // X: side by side (divided along x); Y: stacked
 struct ViewCellRect {
     int view = -1;
     viz::ui::Rect rect;  // window pixels, the cell's whole area (title, image, readout)
+};
+
+// The gap between the two sides of one split, which the user drags to move the split.
+struct ViewDivider {
+    std::string path;      // the split: kid indices from the root ("" = the root, "10" = first kid of its second kid)
+    SplitAxis axis = SplitAxis::X;
+    viz::ui::Rect strip;   // the gap, window pixels
+    viz::ui::Rect span;    // the split's whole area
 };
 
 class ViewLayout {
@@ -50,6 +59,12 @@ public:
     // Cell rectangles inside `area`, in reading order, `gap` pixels apart. Only the maximised view when
     // one is.
     std::vector<ViewCellRect> arrange(const viz::ui::Rect& area, float gap) const;
+    // The dividers of every split inside `area` (none while a view is maximised), outer splits first.
+    std::vector<ViewDivider> dividers(const viz::ui::Rect& area, float gap) const;
+    // Moves the split of `divider` so that its gap is centred on `p` (x for side by side, y for
+    // stacked); each side keeps at least 5 % of the split's area. False when the split is gone.
+    bool moveDivider(const ViewDivider& divider, glm::vec2 p, float gap);
+
     // The view whose cell holds `p`, or -1.
     static int hit(const std::vector<ViewCellRect>& cells, glm::vec2 p);
 
@@ -69,6 +84,10 @@ private:
     static bool removeLeaf(Node& n, int view);
     static void collect(const Node& n, std::vector<int>& out);
     static void place(const Node& n, const viz::ui::Rect& r, float gap, std::vector<ViewCellRect>& out);
+    // The two sides of split `n` over `r`.
+    static std::pair<viz::ui::Rect, viz::ui::Rect> sides(const Node& n, const viz::ui::Rect& r, float gap);
+    static void collectDividers(const Node& n, const viz::ui::Rect& r, float gap, const std::string& path,
+                                std::vector<ViewDivider>& out);
     static void write(const Node& n, std::string& out);
 
     Node mRoot;

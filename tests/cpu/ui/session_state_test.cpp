@@ -88,6 +88,43 @@ TEST(SessionState, TheLessonPositionRoundTripsAndABadOneGivesTheDefaults) {
     EXPECT_TRUE(d.lesson.empty());
 }
 
+TEST(SessionState, LightPlacementsRoundTripAndApplyOnlyToAsManyLights) {
+    SessionState a = sample();
+    a.lights = {{{1.0, 2.5, -3.0}, glm::normalize(glm::dvec3(0.1, -1.0, 0.2)), 250.0},
+                {{0.0, 0.0, 0.0}, {0.0, -1.0, 0.0}, 3.5}};
+    std::string problem;
+    const SessionState b = sessionFromJson(sessionToJson(a), problem);
+    EXPECT_EQ(problem, "");
+    ASSERT_EQ(b.lights.size(), 2u);
+    EXPECT_EQ(b.lights[0].position, a.lights[0].position);
+    EXPECT_NEAR(glm::length(b.lights[0].direction - a.lights[0].direction), 0.0, 1e-15);
+    EXPECT_EQ(b.lights[1].intensity, 3.5);
+    // Older files have no lights: none come back, and the scene's own stay.
+    EXPECT_EQ(sessionToJson(sample()).find("\"lights\""), std::string::npos);
+
+    viz::scene::Scene scene;
+    scene.lights.resize(2);
+    scene.lights[0].name = "key";
+    ASSERT_TRUE(applyLightPlacements(b.lights, scene));
+    EXPECT_EQ(scene.lights[0].position, a.lights[0].position);
+    EXPECT_EQ(scene.lights[1].intensity, 3.5);
+    EXPECT_EQ(scene.lights[0].name, "key");  // only the placement and brightness change
+    EXPECT_EQ(lightPlacements(scene)[0].position, a.lights[0].position);
+    viz::scene::Scene other;
+    other.lights.resize(1);
+    const glm::dvec3 before = other.lights[0].position;
+    EXPECT_FALSE(applyLightPlacements(b.lights, other));
+    EXPECT_EQ(other.lights[0].position, before);
+
+    // A zero direction or a negative intensity: the defaults and a reason.
+    std::string text = sessionToJson(a);
+    const std::string intensity = "\"intensity\": 3.5";
+    text.replace(text.find(intensity), intensity.size(), "\"intensity\": -1");
+    const SessionState c = sessionFromJson(text, problem);
+    EXPECT_NE(problem.find("intensity"), std::string::npos) << problem;
+    EXPECT_TRUE(c.lights.empty());
+}
+
 TEST(SessionState, BrokenFilesGiveTheDefaultsAndAReasonNamingTheFile) {
     const fs::path dir = fs::temp_directory_path() / ("airlight_state_" + std::to_string(::getpid()));
     fs::create_directories(dir);

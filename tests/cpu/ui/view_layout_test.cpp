@@ -90,6 +90,50 @@ TEST(ViewLayout, MaximisingShowsOneViewAndTogglesBack) {
     EXPECT_EQ(layout.maximised(), -1);
 }
 
+TEST(ViewLayout, DividersLieInTheGapsAndMovingOneMovesItsSplit) {
+    ViewLayout layout(0);
+    layout.split(0, SplitAxis::X, 1);
+    layout.split(1, SplitAxis::Y, 2);
+    const float gap = 4.0f;
+    const auto dividers = layout.dividers(kArea, gap);
+    ASSERT_EQ(dividers.size(), 2u);
+    const auto cells = layout.arrange(kArea, gap);
+    // The root divider is the strip between view 0 and the right column; the nested one between 1 and 2.
+    EXPECT_EQ(dividers[0].path, "");
+    EXPECT_EQ(dividers[0].strip.min.x, cells[0].rect.max.x);
+    EXPECT_EQ(dividers[0].strip.max.x, cells[1].rect.min.x);
+    EXPECT_EQ(dividers[0].strip.size().y, 100.0f);
+    EXPECT_EQ(dividers[1].path, "1");
+    EXPECT_EQ(dividers[1].axis, SplitAxis::Y);
+    EXPECT_EQ(dividers[1].strip.min.y, cells[1].rect.max.y);
+    EXPECT_EQ(dividers[1].strip.max.y, cells[2].rect.min.y);
+
+    // Dragging the root divider to x = 60: its gap is centred there, the right column follows.
+    ASSERT_TRUE(layout.moveDivider(dividers[0], {60.0f, 10.0f}, gap));
+    auto moved = layout.arrange(kArea, gap);
+    EXPECT_NEAR(0.5f * (moved[0].rect.max.x + moved[1].rect.min.x), 60.0f, 1e-4f);
+    EXPECT_EQ(moved[2].rect.min.x, moved[1].rect.min.x);
+    // The nested one to y = 80 inside the right column.
+    ASSERT_TRUE(layout.moveDivider(layout.dividers(kArea, gap)[1], {150.0f, 80.0f}, gap));
+    moved = layout.arrange(kArea, gap);
+    EXPECT_NEAR(0.5f * (moved[1].rect.max.y + moved[2].rect.min.y), 80.0f, 1e-4f);
+    // Far past the edge: each side keeps 5 %.
+    ASSERT_TRUE(layout.moveDivider(layout.dividers(kArea, gap)[0], {-500.0f, 0.0f}, gap));
+    moved = layout.arrange(kArea, gap);
+    EXPECT_NEAR(moved[0].rect.size().x, 0.05f * (200.0f - gap), 1e-3f);
+    // The fraction is what the session keeps.
+    EXPECT_EQ(ViewLayout::fromText(layout.toText()).toText(), layout.toText());
+    EXPECT_NE(layout.toText().find("x(0.05,"), std::string::npos) << layout.toText();
+
+    // A divider whose split was closed no longer moves anything.
+    const ViewDivider nested = layout.dividers(kArea, gap)[1];
+    layout.close(2);
+    EXPECT_FALSE(layout.moveDivider(nested, {150.0f, 30.0f}, gap));
+    // Maximised: no dividers.
+    layout.toggleMaximise(0);
+    EXPECT_TRUE(layout.dividers(kArea, gap).empty());
+}
+
 TEST(ViewLayout, HitTestingFindsTheCellUnderAPoint) {
     ViewLayout layout(0);
     layout.split(0, SplitAxis::Y, 1);
