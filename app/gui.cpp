@@ -807,6 +807,9 @@ private:
                 for (const auto& [name, value] : mOptions.settings) given[name] = value;
                 std::string ignored;
                 viz::FrameInput in{&mScene, w, h, settingsFor(t, given, ignored), -1};
+                // Timed warm: the first run compiles shaders and allocates (polyvol's first run at 80x60
+                // takes several times its second), so the second run's time is the one shown.
+                if (id != "reference") (void)t.run(in);
                 const viz::FrameOutput out = id == "reference" ? viz::FrameOutput{} : t.run(in);
                 glBindFramebuffer(GL_FRAMEBUFFER, 0);
                 const viz::Image& airlight = id == "reference" ? reference : out.airlight;
@@ -826,10 +829,19 @@ private:
     void drawComparison(DrawList& dl, const Rect& area) {
         const float line = mFont->lineHeight(), pad = 4.0f * mScale;
         const int n = int(mCompare.size());
-        const int cols = int(std::ceil(std::sqrt(double(n)))), rows = (n + cols - 1) / cols;
+        // One more cell for the plot of error against time.
+        const int cells = n + 1;
+        const int cols = int(std::ceil(std::sqrt(double(cells)))), rows = (cells + cols - 1) / cols;
         const glm::vec2 cell{area.size().x / float(cols), area.size().y / float(rows)};
-        dl.textClipped({area.min.x, area.min.y - line}, "comparison (G): L_air at the reference's exposure, time and "
-                       "relative L2 against the reference", kAccent, area.max.x);
+        dl.textClipped({area.min.x, area.min.y - line}, "comparison (G): L_air at the reference's exposure, time of a "
+                       "warm run and relative L2 against the reference", kAccent, area.max.x);
+        {
+            // The plot takes the rest of the last row.
+            const glm::vec2 at = area.min + glm::vec2(float(n % cols), float(n / cols)) * cell;
+            const Rect box{at + pad, at + glm::vec2(float(cols - n % cols), 1.0f) * cell - pad};
+            viz::plot::drawPlot(dl, box, errorAgainstTimePlot());
+            mViewRects.push_back({"comparison.error_vs_time", "relative L2 against time", box, -1});
+        }
         for (int i = 0; i < n; ++i) {
             CompareTile& tile = mCompare[std::size_t(i)];
             const glm::vec2 at = area.min + glm::vec2(float(i % cols), float(i / cols)) * cell;
@@ -849,6 +861,24 @@ private:
             dl.textClipped({box.min.x, box.max.y + 2.0f}, caption, kText, at.x + cell.x - pad);
             dl.textClipped({box.min.x, box.max.y + 2.0f + line}, figures, kDim, at.x + cell.x - pad);
         }
+    }
+
+    // Each technique of the comparison grid as a point: its run time and its relative L2 against the
+    // reference, both on log axes (the report's error-against-time plot, for this scene and view).
+    viz::plot::PlotSpec errorAgainstTimePlot() const {
+        viz::plot::PlotSpec spec;
+        spec.xLabel = "run time (ms)";
+        spec.yLabel = "relative L2";
+        spec.logX = spec.logY = true;
+        for (std::size_t i = 0; i < mCompare.size(); ++i) {
+            const CompareTile& t = mCompare[i];
+            if (t.technique == "reference" || !t.failure.empty() || !(t.milliseconds > 0.0) ||
+                !(t.error.relativeL2 > 0.0) || !std::isfinite(t.error.relativeL2))
+                continue;
+            spec.series.push_back({t.technique, viz::plot::categoricalColor(int(i)), {{t.milliseconds, t.error.relativeL2}},
+                                   false, true});
+        }
+        return spec;
     }
 
     // ---- export ----
@@ -1876,7 +1906,7 @@ private:
             stripHeight = std::min(wanted, 0.6f * (cell.size().y - v.title.size().y - readout));
         }
         const Rect imageArea{{cell.min.x, v.title.max.y}, {cell.max.x, cell.max.y - readout - stripHeight}};
-        v.image = fitImage(imageArea, v.pane.size);
+        v.image = v.pane.plots.empty() ? fitImage(imageArea, v.pane.size) : imageArea;  // plots take the whole area
         v.strip = stripHeight > 0.0f ? Rect{{cell.min.x, cell.max.y - stripHeight}, cell.max} : Rect{};
     }
 
@@ -2134,6 +2164,14 @@ private:
 
         // The image, framed; the background batch is drawn before the images.
         mBackground->rect({v.image.min - 1.0f, v.image.max + 1.0f}, focused ? kHighlight : kPanel);
+        if (!v.pane.plots.empty()) {
+            // The technique's plots of this intermediate, stacked (its image is what `render --layer` writes).
+            drawPlots(v);
+            mViewRects.push_back({v.pane.id, title + counts, v.image, id});
+            drawStatusBands(dl, v.image);
+            if (v.display.stripOpen && v.strip.size().y > 0.0f) drawStrip(id, v);
+            return;
+        }
         mPaneDraws.push_back({v.image, &v.pane, &v.transform, resolveMapping(v.pane, v.display, mExposure, v.measured)});
         mViewRects.push_back({mHaveOutput ? (v.pane.id.empty() ? v.content : v.pane.id) : std::string("none"),
                               title + counts, v.image, id});
@@ -2173,6 +2211,17 @@ private:
         }
         drawStatusBands(dl, v.image);
         if (v.display.stripOpen && v.strip.size().y > 0.0f) drawStrip(id, v);
+    }
+
+    void drawPlots(const ViewState& v) {
+        const float gap = 4.0f * mScale;
+        const int n = int(v.pane.plots.size());
+        const float h = (v.image.size().y - gap * float(n - 1)) / float(n);
+        for (int i = 0; i < n; ++i) {
+            const float top = v.image.min.y + float(i) * (h + gap);
+            viz::plot::drawPlot(*mDrawList, {{v.image.min.x, top}, {v.image.max.x, top + h}},
+                                plotSpecOf(v.pane.plots[std::size_t(i)]));
+        }
     }
 
     // The technique's marks for the linked pixel, asked once per pixel and run (a GPU technique may

@@ -101,8 +101,24 @@ int channelsOfFormat(GLint format) {
     }
 }
 
+viz::plot::PlotSpec plotSpecOf(const viz::PlotData& data) {
+    viz::plot::PlotSpec spec;
+    spec.title = data.title;
+    spec.xLabel = data.xLabel;
+    spec.yLabel = data.yLabel;
+    spec.logX = data.logX;
+    spec.logY = data.logY;
+    for (std::size_t i = 0; i < data.curves.size(); ++i) {
+        const viz::PlotCurve& c = data.curves[i];
+        spec.series.push_back({c.name, viz::plot::categoricalColor(c.colour >= 0 ? c.colour : int(i)), c.points, c.lines,
+                               c.markers});
+    }
+    return spec;
+}
+
 void makePane(PaneImage& pane, const viz::Intermediate& in, int layer) {
     pane.id = in.id;
+    pane.plots = in.plots;
     pane.label = in.label;
     pane.note = in.note;
     pane.units = in.units;
@@ -160,7 +176,7 @@ void ImageDisplay::draw(const PaneImage& pane, const viz::ui::Rect& rect, glm::i
     mProgram.set("uViewport", glm::vec2(framebuffer));
     mProgram.set("uMode", static_cast<int>(mapping.mode));
     glm::vec2 range(mapping.lo, mapping.hi);
-    if (mapping.logScale) {
+    if (mapping.logScale && mapping.mode != DisplayMode::Signed) {  // the diverging map takes its own log
         const ValueRange r = logSafeRange(mapping.lo, mapping.hi);
         range = {std::log10(r.lo), std::log10(r.hi)};
     }

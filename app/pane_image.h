@@ -14,6 +14,7 @@
 #include "gl/program.h"
 #include "gl/texture.h"
 #include "gl/vertex_array.h"
+#include "plot/plot.h"
 #include "ui/image_view.h"
 #include "ui/text_renderer.h"
 #include "view_stats.h"
@@ -40,7 +41,11 @@ struct PaneImage {
     glm::ivec2 size{0};
     int layer = 0, layers = 1;
     std::string unavailable;  // non-empty: nothing to draw, and why
+    std::vector<viz::PlotData> plots;  // drawn instead of the texture when not empty (the technique's plots)
 };
+
+// A technique's plot as the plot module draws it (colours from the categorical palette).
+viz::plot::PlotSpec plotSpecOf(const viz::PlotData& data);
 
 // Where a view's value range comes from: the technique's suggestion (or the window's exposure for HDR
 // colour), the finite min/max, the 0.1 and 99.9 percentiles of the finite values, or two numbers.

@@ -110,6 +110,13 @@ float mapToUnit(float v, float lo, float hi, bool logarithmic) {
     return (v - lo) / (hi - lo);
 }
 
+float signedUnit(float v, float lo, float hi, bool logarithmic) {
+    const float top = std::max({std::abs(lo), std::abs(hi), 1e-30f});
+    float s = v / top;
+    if (logarithmic) s = std::copysign(std::log1p(std::abs(s) * 1e4f) / std::log1p(1e4f), s);
+    return std::clamp(s, -1.0f, 1.0f);
+}
+
 Histogram histogram(const std::vector<float>& values, float lo, float hi, int bins, bool logarithmic) {
     VIZ_CHECK(bins >= 1, "histogram needs at least one bin");
     Histogram h;

@@ -46,6 +46,10 @@ ValueRange logSafeRange(float lo, float hi);
 // Where the shader puts v in [0, 1] for the range [lo, hi], linear or log10 (through logSafeRange);
 // not clamped; a degenerate range maps everything to 0.
 float mapToUnit(float v, float lo, float hi, bool logarithmic);
+// Where the diverging map puts a signed v for the range [lo, hi], in [-1, 1] (0 white, -1 full blue, 1 full
+// red): v / max(|lo|, |hi|), or on a log scale the symmetric log sign(v) log(1 + |v| / l) / log(1 + top / l)
+// with l = 1e-4 top, which spreads the four decades below the top evenly and keeps 0 at 0.
+float signedUnit(float v, float lo, float hi, bool logarithmic);
 
 // Counts of finite values in `bins` equal bins over [lo, hi] (log10-spaced when `logarithmic`); values
 // outside are counted in `below` / `above` (non-positive values are below a log histogram).

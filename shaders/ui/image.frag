@@ -21,7 +21,7 @@ const int kHeat = 8;        // (r - min) / (max - min): black, purple, orange, p
 uniform int uChannel;
 uniform int uMode;
 uniform vec2 uRange;      // linear range, or (with uLog) the log10 of a positive range
-uniform bool uLog;        // map log10(value) instead of value (colour and sequential modes)
+uniform bool uLog;        // map log10(value) instead of value (colour and sequential modes); signed: symmetric log
 uniform bool uMarkNegative;
 uniform float uExposure;  // in stops
 uniform bool uFlipY;      // GL-rendered textures keep row 0 at the bottom
@@ -123,7 +123,10 @@ void main() {
     } else if (uMode == kGrey) {
         c = vec3(clamp(t, 0.0, 1.0));
     } else if (uMode == kSigned) {
-        float s = clamp(v.r / max(max(abs(uRange.x), abs(uRange.y)), 1e-30), -1.0, 1.0);
+        // Mirrors signedUnit in app/view_stats.cpp (the log scale is a symmetric log over four decades).
+        float s = v.r / max(max(abs(uRange.x), abs(uRange.y)), 1e-30);
+        if (uLog) s = sign(s) * log(1.0 + abs(s) * 1e4) / log(1.0 + 1e4);
+        s = clamp(s, -1.0, 1.0);
         c = s < 0.0 ? mix(vec3(1.0), vec3(0.1, 0.3, 0.9), -s) : mix(vec3(1.0), vec3(0.9, 0.15, 0.1), s);
     } else if (uMode == kFalse) {
         c = falseColor(t);

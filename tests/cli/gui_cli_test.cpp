@@ -292,7 +292,21 @@ TEST_F(GuiCli, TheComparisonGridShowsEveryTechniqueWithItsErrorAndTime) {
             EXPECT_GT(tile.at("milliseconds").get<double>(), 0.0);
         }
     }
-    EXPECT_EQ(j.at("views")[1].at("name"), "comparison");
+    // The grid and, inside it after the tiles, the plot of error against time.
+    const nlohmann::json* grid = nullptr;
+    const nlohmann::json* plot = nullptr;
+    for (const auto& v : j.at("views")) {
+        if (v.at("name") == "comparison") grid = &v;
+        if (v.at("name") == "comparison.error_vs_time") plot = &v;
+    }
+    ASSERT_TRUE(grid && plot);
+    const auto& g = grid->at("rect");
+    const auto& p = plot->at("rect");
+    EXPECT_GE(p[0].get<double>(), g[0].get<double>());
+    EXPECT_LE(p[2].get<double>(), g[2].get<double>() + 1.0);
+    EXPECT_GE(p[1].get<double>(), g[1].get<double>());
+    EXPECT_LE(p[3].get<double>(), g[3].get<double>() + 1.0);
+    EXPECT_GT(p[2].get<double>() - p[0].get<double>(), 100.0);
 }
 
 TEST_F(GuiCli, BadScriptsAreOneLineErrorsNamingTheLine) {

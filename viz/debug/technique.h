@@ -49,6 +49,21 @@ struct StageInfo {
     std::string substepCountParam{};
 };
 
+// A plot a technique publishes with an intermediate (singular values, basis functions, per-plane values
+// along a ray, ...): the window draws it with axes, ticks and a legend (viz/plot) in place of the
+// intermediate's image, which stays what `airlight render --layer` writes.
+struct PlotCurve {
+    std::string name;                // legend entry
+    std::vector<glm::dvec2> points;  // data units, drawn in order
+    bool lines = true, markers = false;
+    int colour = -1;                 // index into the categorical palette; -1: the curve's own index
+};
+struct PlotData {
+    std::string title, xLabel, yLabel;
+    bool logX = false, logY = false;
+    std::vector<PlotCurve> curves;
+};
+
 // A published intermediate: either a CPU image or a GL texture owned by the technique (valid until the
 // next run()). Meshes and buffers carry a GL name and a short description of their layout.
 struct Intermediate {
@@ -65,6 +80,8 @@ struct Intermediate {
     // An orbit view (render::MeshView): the window turns it by dragging (the technique's mesh_yaw and
     // mesh_pitch parameters).
     bool orbit = false;
+    // Plots of the same data, stacked top to bottom in the window's view (empty: the image is shown).
+    std::vector<PlotData> plots{};
 };
 
 using Settings = std::map<std::string, double>;

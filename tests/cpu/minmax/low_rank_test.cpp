@@ -8,6 +8,7 @@
 
 #include "shared/airlight.h"
 #include "techniques/minmax/low_rank.h"
+#include "techniques/minmax/views.h"
 
 namespace {
 
@@ -75,3 +76,44 @@ TEST(MinmaxLowRank, ReconstructionErrorFallsWithRank) {
 }
 
 }  // namespace
+
+// The plots the window shows for the low-rank integrand (views.h) carry its numbers: every positive
+// singular value once (kept ones first, the dropped curve starting at the last kept value), and each
+// kept B_i / Gamma_i at its grid abscissa, in degrees, or for a directional light gamma = rho in scene units.
+TEST(MinmaxLowRank, ThePlotsCarryTheSingularValuesAndBasisFunctions) {
+    for (LightKind kind : {LightKind::Spot, LightKind::Directional}) {
+        auto f = viz::minmax::makeFrame<double>(kind, glm::dvec3(0.0, 6.0, -7.0), glm::dvec3(0.1, -1.0, 0.0));
+        f.gammaLo = kind == LightKind::Spot ? 0.3 : 0.0;
+        f.gammaHi = kind == LightKind::Spot ? 1.4 : 12.0;
+        const auto lr = viz::minmax::lowRankIntegrand(f, 0.3, 1.9, 0.12, 0.13, 0.2, 3);
+        const viz::PlotData s = viz::minmax::singularValuesPlot(lr);
+        EXPECT_TRUE(s.logY);
+        ASSERT_EQ(s.curves.size(), 2u);
+        ASSERT_EQ(s.curves[0].points.size(), 3u);
+        for (int i = 0; i < 3; ++i) {
+            EXPECT_EQ(s.curves[0].points[std::size_t(i)], glm::dvec2(i + 1, lr.singularValues[std::size_t(i)]));
+        }
+        int positive = 0;
+        for (double v : lr.singularValues) positive += v > 0.0;
+        EXPECT_EQ(s.curves[0].points.size() + s.curves[1].points.size(), std::size_t(positive) + 1);
+        EXPECT_EQ(s.curves[1].points.front(), s.curves[0].points.back());
+
+        const auto b = viz::minmax::basisPlots(lr, kind == LightKind::Directional);
+        ASSERT_EQ(b.size(), 2u);
+        ASSERT_EQ(b[0].curves.size(), 3u);
+        ASSERT_EQ(b[1].curves.size(), 3u);
+        const double toDegrees = 180.0 / std::numbers::pi;
+        for (int i = 0; i < 3; ++i) {
+            const auto& bi = b[0].curves[std::size_t(i)].points;
+            const auto& gi = b[1].curves[std::size_t(i)].points;
+            ASSERT_EQ(bi.size(), std::size_t(viz::minmax::kGrid));
+            EXPECT_NEAR(bi.front().x, 0.3 * toDegrees, 1e-12);
+            EXPECT_NEAR(bi.back().x, 1.9 * toDegrees, 1e-12);
+            EXPECT_EQ(bi[10].y, double(lr.basisB[std::size_t(i * viz::minmax::kGrid + 10)]));
+            EXPECT_EQ(gi[20].y, double(lr.basisGamma[std::size_t(i * viz::minmax::kGrid + 20)]));
+            const double scale = kind == LightKind::Directional ? 1.0 : toDegrees;
+            EXPECT_NEAR(gi.back().x, lr.gammaHi * scale, 1e-9 * scale);
+        }
+        EXPECT_NE(b[1].xLabel.find(kind == LightKind::Directional ? "scene units" : "degrees"), std::string::npos);
+    }
+}

@@ -85,6 +85,26 @@ TEST(ViewStats, TheLogMappingIsDefinedAtBothEnds) {
     EXPECT_EQ(mapToUnit(5.0f, 1.0f, 1.0f, false), 0.0f);  // degenerate range
 }
 
+TEST(ViewStats, TheDivergingMapIsOddAndItsLogScaleSpreadsFourDecades) {
+    // Linear: v over the larger end of the range, clamped.
+    EXPECT_FLOAT_EQ(signedUnit(0.5f, -2.0f, 1.0f, false), 0.25f);
+    EXPECT_FLOAT_EQ(signedUnit(-3.0f, -2.0f, 1.0f, false), -1.0f);
+    // Log: 0 stays white, the ends stay full, and it is odd and increasing.
+    EXPECT_FLOAT_EQ(signedUnit(0.0f, -1.0f, 1.0f, true), 0.0f);
+    EXPECT_NEAR(signedUnit(1.0f, -1.0f, 1.0f, true), 1.0f, 1e-6f);
+    float previous = -2.0f;
+    for (float v = -1.0f; v <= 1.0f; v += 0.01f) {
+        const float s = signedUnit(v, -1.0f, 1.0f, true);
+        EXPECT_GT(s, previous) << v;
+        EXPECT_NEAR(s, -signedUnit(-v, -1.0f, 1.0f, true), 1e-6f) << v;
+        previous = s;
+    }
+    // Each decade below the top takes about a quarter of the half-scale: 1e-2 of the top is near 1/2
+    // (log(101) / log(10001) = 0.501), where the linear map shows 0.01.
+    EXPECT_NEAR(signedUnit(0.01f, -1.0f, 1.0f, true), std::log(101.0f) / std::log(10001.0f), 1e-5f);
+    EXPECT_NEAR(signedUnit(-0.001f, -1.0f, 1.0f, true), -std::log(11.0f) / std::log(10001.0f), 1e-5f);
+}
+
 TEST(ViewStats, HistogramsCountEveryFiniteValueOnce) {
     const std::vector<float> values = {0.0f, 0.1f, 0.26f, 0.5f, 0.99f, 1.0f, -1.0f, 2.0f, kNaN, kInf};
     const Histogram h = histogram(values, 0.0f, 1.0f, 4, false);

@@ -768,11 +768,13 @@ private:
         out.intermediates.push_back(minmax::imageIntermediate(kSingularValues, "Singular values of I", note,
                                                               ViewKind::Color,
                                                               std::make_shared<Image>(minmax::singularValuesView(lr))));
+        out.intermediates.back().plots = {minmax::singularValuesPlot(lr)};
         out.intermediates.push_back(minmax::imageIntermediate(
             kBasis, "B_i(beta) and Gamma_i(gamma)",
             "top: B_i over the screen's beta range; bottom: Gamma_i over [gammaLo, gammaHi]; each half scaled to its "
             "largest magnitude, zero in the middle; i = 1.. in red, green, blue, yellow, ...",
             ViewKind::Color, std::make_shared<Image>(minmax::basisView(lr))));
+        out.intermediates.back().plots = minmax::basisPlots(lr, w.setup.frame.kind == minmax::LightKind::Directional);
         auto error = std::make_shared<Image>(1, 1, 1);
         error->at(0, 0) = float(lr.reconstructionError);
         out.intermediates.push_back(minmax::imageIntermediate(

@@ -131,4 +131,43 @@ Image basisView(const LowRank& lr) {
     return img;
 }
 
+PlotData singularValuesPlot(const LowRank& lr) {
+    PlotData p;
+    p.title = "singular values of I sin(beta), rank " + std::to_string(lr.rank) + " kept";
+    p.xLabel = "i";
+    p.yLabel = "sigma_i";
+    p.logY = true;
+    PlotCurve kept{"kept", {}, true, true, 2}, dropped{"dropped", {}, true, true, 7};
+    for (int i = 0; i < int(lr.singularValues.size()); ++i) {
+        const double s = lr.singularValues[std::size_t(i)];
+        if (!(s > 0.0)) continue;  // a log axis has no place for zero
+        (i < lr.rank ? kept : dropped).points.push_back({double(i + 1), s});
+    }
+    // The two curves meet: the first dropped value continues the kept line.
+    if (!kept.points.empty() && !dropped.points.empty()) dropped.points.insert(dropped.points.begin(), kept.points.back());
+    p.curves = {kept, dropped};
+    return p;
+}
+
+std::vector<PlotData> basisPlots(const LowRank& lr, bool directional) {
+    const auto degrees = [](double radians) { return radians * 180.0 / std::numbers::pi; };
+    PlotData b, g;
+    b.title = "B_i(beta) = s_i u_i";
+    b.xLabel = "beta (degrees)";
+    g.title = "Gamma_i(gamma) = v_i";
+    g.xLabel = directional ? "gamma = rho (scene units)" : "gamma (degrees)";
+    const auto gammaAxis = [&](double gamma) { return directional ? gamma : degrees(gamma); };
+    for (int i = 0; i < lr.rank; ++i) {
+        PlotCurve cb{"B_" + std::to_string(i + 1), {}, true, false, i}, cg{"Gamma_" + std::to_string(i + 1), {}, true, false, i};
+        for (int k = 0; k < kGrid; ++k) {
+            const double t = double(k) / double(kGrid - 1);
+            cb.points.push_back({degrees(lr.betaLo + t * (lr.betaHi - lr.betaLo)), lr.basisB[std::size_t(i * kGrid + k)]});
+            cg.points.push_back({gammaAxis(lr.gammaLo + t * (lr.gammaHi - lr.gammaLo)), lr.basisGamma[std::size_t(i * kGrid + k)]});
+        }
+        b.curves.push_back(std::move(cb));
+        g.curves.push_back(std::move(cg));
+    }
+    return {b, g};
+}
+
 }  // namespace viz::minmax

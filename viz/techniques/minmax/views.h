@@ -36,5 +36,10 @@ Image traceView(const std::vector<glm::vec2>& tree, float beta, float cEnd, int 
 // Singular values as log10 bars over 12 decades (kept ones green), and B_i / Gamma_i as curves.
 Image singularValuesView(const LowRank& lr);
 Image basisView(const LowRank& lr);
+// The same as plots with axes: sigma_i against i (log scale; kept and dropped ones as two curves), and
+// B_i over beta (degrees) and Gamma_i over gamma (degrees; for a directional light gamma is the light
+// ray's distance rho from the axis, in scene units), one curve per kept rank.
+PlotData singularValuesPlot(const LowRank& lr);
+std::vector<PlotData> basisPlots(const LowRank& lr, bool directional);
 
 }  // namespace viz::minmax
