@@ -2530,8 +2530,8 @@ private:
         const float bottom = float(fb.y) - 2.0f * line - pad;
         dl.textClipped({pad, bottom}, help, kDim, float(fb.x) - pad);
         dl.textClipped({pad, bottom + line},
-                       "views: click to focus   H / J split beside / below   K close   M maximise   O swap (or drag a "
-                       "title)   N next   F difference to the reference   0 fit   'display +': controls",
+                       "views: click to focus   H / J split   drag a gap: resize   K close   M maximise   O swap (or drag a "
+                       "title)   N next   F difference   0 fit   L light gizmo   'display +': controls",
                        kDim, float(fb.x) - pad);
 
         // Sidebar: techniques, then views.
