@@ -408,6 +408,7 @@ public:
                         mScriptDragFrom = r.min + a.fraction * r.size();
                         mScriptDragTo = onto.min + a.to * onto.size();
                         mHover = mScriptDragFrom;
+                        mSyntheticDown = true;  // widgets (a splitter, a slider) see the button held
                         onMouseButtonAt(GLFW_MOUSE_BUTTON_LEFT, GLFW_PRESS, mScriptDragFrom);
                         mScriptDragStep = 1;
                     } else if (mScriptDragStep <= 4) {
@@ -415,6 +416,7 @@ public:
                         onCursorPixels(p);
                         ++mScriptDragStep;
                     } else {
+                        mSyntheticDown.reset();
                         onMouseButtonAt(GLFW_MOUSE_BUTTON_LEFT, GLFW_RELEASE, mScriptDragTo);
                         mScriptDragStep = 0;
                         ++mScriptIndex;
@@ -1653,11 +1655,9 @@ private:
             if (mUi->hot() != 0 && p == mHoverDrawn) return;
             for (const Rect& r : mStripRects)
                 if (r.contains(p)) return;
+            for (const Rect& r : mDividerRects)  // the splitter widget takes the drag
+                if (r.contains(p)) return;
             if (button == GLFW_MOUSE_BUTTON_LEFT) {
-                if (auto d = dividerAt(p)) {
-                    mDragDivider = std::move(d);
-                    return;
-                }
                 if (auto handle = gizmoHandleAt(p)) {
                     mGizmoDrag = handle;
                     mFocused = handle->view;
@@ -1690,8 +1690,6 @@ private:
             const int target = ViewLayout::hit(mCells, p);
             if (target >= 0 && target != mDragTitle) mLayout.swap(mDragTitle, target);
             mDragTitle = -1;
-        } else if (action == GLFW_RELEASE && mDragDivider) {
-            mDragDivider.reset();
         } else if (action == GLFW_RELEASE && mGizmoDrag) {
             mGizmoDrag.reset();
             if (mReduced) mDirty = true;  // the full size follows
@@ -1725,10 +1723,6 @@ private:
 
     void onCursorPixels(glm::vec2 p) {
         mHover = p;
-        if (mDragDivider) {
-            mLayout.moveDivider(*mDragDivider, p, kPad * mScale);
-            return;
-        }
         if (mGizmoDrag) {
             dragGizmo(p);
             return;
@@ -2015,46 +2009,25 @@ private:
         replan();
     }
 
-    // The gaps between views: drag one to move its split (scripts name them "divider:root",
-    // "divider:1", ... by the split's path). Lit while hovered or dragged.
+    // The gaps between views: each is the toolkit's splitter over its split (scripts name them
+    // "divider:root", "divider:1", ... by the split's path).
     void drawDividers(const Rect& area) {
-        mDividers = mCompare.empty() ? mLayout.dividers(area, kPad * mScale) : std::vector<ViewDivider>{};
-        bool over = false;
-        for (const ViewDivider& d : mDividers) {
-            const Rect grip = dividerGrip(d);
-            mNamedRects["divider:" + (d.path.empty() ? std::string("root") : d.path)] = grip;
-            const bool dragged = mDragDivider && mDragDivider->path == d.path;
-            const bool hovered = grip.contains(mHover) && mDragButton < 0 && mDragTitle < 0;
-            over = over || hovered || dragged;
-            if (!hovered && !dragged) continue;
-            const glm::vec2 c = 0.5f * (d.strip.min + d.strip.max);
-            const float w = 2.0f * mScale;
-            mDrawList->rect(d.axis == SplitAxis::X ? Rect{{c.x - w, d.strip.min.y}, {c.x + w, d.strip.max.y}}
-                                                   : Rect{{d.strip.min.x, c.y - w}, {d.strip.max.x, c.y + w}},
-                            dragged ? kAccent : kHighlight);
+        const auto dividers = mCompare.empty() ? mLayout.dividers(area, kPad * mScale) : std::vector<ViewDivider>{};
+        std::optional<SplitAxis> over;
+        mDividerRects.clear();
+        for (const ViewDivider& d : dividers) {
+            const std::string name = "divider:" + (d.path.empty() ? std::string("root") : d.path);
+            float fraction = d.fraction;
+            if (mUi->splitter(name, d.track, d.axis == SplitAxis::X, fraction)) mLayout.setFraction(d.path, fraction);
+            if (const auto it = mUi->widgetRects().find(name); it != mUi->widgetRects().end()) {
+                mDividerRects.push_back(it->second);
+                if (it->second.contains(mHover)) over = d.axis;
+            }
         }
-        setResizeCursor(over ? (mDragDivider ? mDragDivider->axis : dividerAt(mHover)->axis) : std::optional<SplitAxis>{});
+        setResizeCursor(over);
     }
 
-    // A divider's grab area: its gap, widened to at least 8 pixels across.
-    Rect dividerGrip(const ViewDivider& d) const {
-        Rect r = d.strip;
-        const float half = 4.0f * mScale;
-        const glm::vec2 c = 0.5f * (r.min + r.max);
-        if (d.axis == SplitAxis::X) r.min.x = std::min(r.min.x, c.x - half), r.max.x = std::max(r.max.x, c.x + half);
-        else r.min.y = std::min(r.min.y, c.y - half), r.max.y = std::max(r.max.y, c.y + half);
-        return r;
-    }
-
-    // The innermost divider under `p` (nested splits are listed after their parents).
-    std::optional<ViewDivider> dividerAt(glm::vec2 p) const {
-        std::optional<ViewDivider> found;
-        for (const ViewDivider& d : mDividers)
-            if (dividerGrip(d).contains(p)) found = d;
-        return found;
-    }
-
-    // The window's cursor shows a divider can be dragged (no change under automation or a headless run).
+    // The window's cursor shows a divider can be dragged.
     void setResizeCursor(std::optional<SplitAxis> axis) {
         if (axis == mCursorAxis) return;
         mCursorAxis = axis;
@@ -2868,10 +2841,9 @@ private:
     double mLightIntensity0 = 0.0;           // the first light's intensity at start (slider range)
     int mDragView = -1;                      // the view a drag pans
     int mDragOrbit = -1;                     // the orbit view a drag turns
-    std::vector<ViewDivider> mDividers;      // the grid's dividers last frame
-    std::optional<ViewDivider> mDragDivider;  // the divider being dragged
     bool mShowGizmo = true;                   // L: the light gizmo over the frame views
     std::optional<GizmoDrag> mGizmoDrag;       // the light handle being dragged
+    std::vector<Rect> mDividerRects;          // the grid's splitters last frame
     std::optional<SplitAxis> mCursorAxis;     // the resize cursor shown (none: the arrow)
     GLFWcursor* mArrowCursor = nullptr;       // stays null: the default cursor
     GLFWcursor* mColumnCursor = nullptr;      // created on first use, destroyed with the app

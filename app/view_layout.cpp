@@ -1,6 +1,7 @@
 #include "view_layout.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <functional>
@@ -121,10 +122,15 @@ void ViewLayout::collectDividers(const Node& n, const viz::ui::Rect& r, float ga
                                  std::vector<ViewDivider>& out) {
     if (n.kids.empty()) return;
     const auto [a, b] = sides(n, r, gap);
-    viz::ui::Rect strip = r;
-    if (n.axis == SplitAxis::X) strip.min.x = a.max.x, strip.max.x = b.min.x;
-    else strip.min.y = a.max.y, strip.max.y = b.min.y;
-    out.push_back({path, n.axis, strip, r});
+    viz::ui::Rect strip = r, track = r;
+    if (n.axis == SplitAxis::X) {
+        strip.min.x = a.max.x, strip.max.x = b.min.x;
+        track.min.x += 0.5f * gap, track.max.x -= 0.5f * gap;
+    } else {
+        strip.min.y = a.max.y, strip.max.y = b.min.y;
+        track.min.y += 0.5f * gap, track.max.y -= 0.5f * gap;
+    }
+    out.push_back({path, n.axis, n.fraction, strip, track});
     collectDividers(n.kids[0], a, gap, path + "0", out);
     collectDividers(n.kids[1], b, gap, path + "1", out);
 }
@@ -136,17 +142,14 @@ std::vector<ViewDivider> ViewLayout::dividers(const viz::ui::Rect& area, float g
     return out;
 }
 
-bool ViewLayout::moveDivider(const ViewDivider& divider, glm::vec2 p, float gap) {
+bool ViewLayout::setFraction(const std::string& path, float fraction) {
     Node* n = &mRoot;
-    for (const char c : divider.path) {
+    for (const char c : path) {
         if (n->kids.size() != 2 || (c != '0' && c != '1')) return false;
         n = &n->kids[std::size_t(c - '0')];
     }
-    if (n->kids.size() != 2 || n->axis != divider.axis) return false;
-    const bool x = divider.axis == SplitAxis::X;
-    const float extent = std::max(1.0f, (x ? divider.span.size().x : divider.span.size().y) - gap);
-    const float offset = (x ? p.x - divider.span.min.x : p.y - divider.span.min.y) - 0.5f * gap;
-    n->fraction = std::clamp(offset / extent, 0.05f, 0.95f);
+    if (n->kids.size() != 2 || !std::isfinite(fraction)) return false;
+    n->fraction = std::clamp(fraction, 0.05f, 0.95f);
     return true;
 }
 

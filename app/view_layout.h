@@ -28,8 +28,11 @@ struct ViewCellRect {
 struct ViewDivider {
     std::string path;      // the split: kid indices from the root ("" = the root, "10" = first kid of its second kid)
     SplitAxis axis = SplitAxis::X;
+    float fraction = 0.5f;  // the split's
     viz::ui::Rect strip;   // the gap, window pixels
-    viz::ui::Rect span;    // the split's whole area
+    // The split's area less half a gap at each end along the axis: the gap's centre is at `fraction`
+    // of it (what a ui::Context::splitter over it draws and sets).
+    viz::ui::Rect track;
 };
 
 class ViewLayout {
@@ -61,9 +64,9 @@ public:
     std::vector<ViewCellRect> arrange(const viz::ui::Rect& area, float gap) const;
     // The dividers of every split inside `area` (none while a view is maximised), outer splits first.
     std::vector<ViewDivider> dividers(const viz::ui::Rect& area, float gap) const;
-    // Moves the split of `divider` so that its gap is centred on `p` (x for side by side, y for
-    // stacked); each side keeps at least 5 % of the split's area. False when the split is gone.
-    bool moveDivider(const ViewDivider& divider, glm::vec2 p, float gap);
+    // Sets the fraction of the split at `path` (clamped so that each side keeps 5 %). False when there is
+    // no split there.
+    bool setFraction(const std::string& path, float fraction);
 
     // The view whose cell holds `p`, or -1.
     static int hit(const std::vector<ViewCellRect>& cells, glm::vec2 p);

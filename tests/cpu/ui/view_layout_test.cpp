@@ -90,9 +90,9 @@ TEST(ViewLayout, MaximisingShowsOneViewAndTogglesBack) {
     EXPECT_EQ(layout.maximised(), -1);
 }
 
-TEST(ViewLayout, DividersLieInTheGapsAndMovingOneMovesItsSplit) {
+TEST(ViewLayout, DividersLieInTheGapsAndTheirTracksPlaceTheGapAtTheFraction) {
     ViewLayout layout(0);
-    layout.split(0, SplitAxis::X, 1);
+    layout.split(0, SplitAxis::X, 1, 0.3f);
     layout.split(1, SplitAxis::Y, 2);
     const float gap = 4.0f;
     const auto dividers = layout.dividers(kArea, gap);
@@ -107,28 +107,28 @@ TEST(ViewLayout, DividersLieInTheGapsAndMovingOneMovesItsSplit) {
     EXPECT_EQ(dividers[1].axis, SplitAxis::Y);
     EXPECT_EQ(dividers[1].strip.min.y, cells[1].rect.max.y);
     EXPECT_EQ(dividers[1].strip.max.y, cells[2].rect.min.y);
+    // The gap's centre sits at the fraction of the track (what a splitter over the track draws).
+    for (const ViewDivider& d : dividers) {
+        const bool x = d.axis == SplitAxis::X;
+        const float centre = x ? 0.5f * (d.strip.min.x + d.strip.max.x) : 0.5f * (d.strip.min.y + d.strip.max.y);
+        const float along = x ? d.track.min.x + d.fraction * d.track.size().x : d.track.min.y + d.fraction * d.track.size().y;
+        EXPECT_NEAR(centre, along, 1e-4f) << d.path;
+    }
 
-    // Dragging the root divider to x = 60: its gap is centred there, the right column follows.
-    ASSERT_TRUE(layout.moveDivider(dividers[0], {60.0f, 10.0f}, gap));
+    // Setting a fraction moves that split only; it is clamped to keep 5 % a side and kept in the text.
+    ASSERT_TRUE(layout.setFraction("1", 0.8f));
     auto moved = layout.arrange(kArea, gap);
-    EXPECT_NEAR(0.5f * (moved[0].rect.max.x + moved[1].rect.min.x), 60.0f, 1e-4f);
-    EXPECT_EQ(moved[2].rect.min.x, moved[1].rect.min.x);
-    // The nested one to y = 80 inside the right column.
-    ASSERT_TRUE(layout.moveDivider(layout.dividers(kArea, gap)[1], {150.0f, 80.0f}, gap));
-    moved = layout.arrange(kArea, gap);
-    EXPECT_NEAR(0.5f * (moved[1].rect.max.y + moved[2].rect.min.y), 80.0f, 1e-4f);
-    // Far past the edge: each side keeps 5 %.
-    ASSERT_TRUE(layout.moveDivider(layout.dividers(kArea, gap)[0], {-500.0f, 0.0f}, gap));
-    moved = layout.arrange(kArea, gap);
-    EXPECT_NEAR(moved[0].rect.size().x, 0.05f * (200.0f - gap), 1e-3f);
-    // The fraction is what the session keeps.
-    EXPECT_EQ(ViewLayout::fromText(layout.toText()).toText(), layout.toText());
+    EXPECT_EQ(moved[0].rect.min, cells[0].rect.min);
+    EXPECT_EQ(moved[0].rect.max, cells[0].rect.max);
+    EXPECT_GT(moved[1].rect.size().y, cells[1].rect.size().y);
+    ASSERT_TRUE(layout.setFraction("", -3.0f));
+    EXPECT_NEAR(layout.arrange(kArea, gap)[0].rect.size().x, 0.05f * (200.0f - gap), 1e-3f);
     EXPECT_NE(layout.toText().find("x(0.05,"), std::string::npos) << layout.toText();
-
-    // A divider whose split was closed no longer moves anything.
-    const ViewDivider nested = layout.dividers(kArea, gap)[1];
-    layout.close(2);
-    EXPECT_FALSE(layout.moveDivider(nested, {150.0f, 30.0f}, gap));
+    EXPECT_EQ(ViewLayout::fromText(layout.toText()).toText(), layout.toText());
+    // No split at these paths: a leaf, beyond the tree, or not a path.
+    EXPECT_FALSE(layout.setFraction("0", 0.5f));
+    EXPECT_FALSE(layout.setFraction("111", 0.5f));
+    EXPECT_FALSE(layout.setFraction("x", 0.5f));
     // Maximised: no dividers.
     layout.toggleMaximise(0);
     EXPECT_TRUE(layout.dividers(kArea, gap).empty());
