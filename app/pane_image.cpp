@@ -131,7 +131,8 @@ void makePane(PaneImage& pane, const viz::Intermediate& in, int layer) {
         return;
     }
     if (in.glTexture == 0) {
-        pane.unavailable = std::string("(a ") + viz::viewKindName(in.kind) + ": no image view yet)";
+        pane.unavailable = std::string("(a ") + viz::viewKindName(in.kind) +
+                           " on the GPU, with no image of its own: the note above says which view draws it)";
         return;
     }
     const GLenum target = in.glTarget ? in.glTarget : GL_TEXTURE_2D;

@@ -18,7 +18,9 @@ std::string formatTick(double v, double step) {
     const double magnitude = std::abs(v);
     if (v == 0.0) return "0";
     if (magnitude >= 1e5 || magnitude < 1e-3) {
-        std::snprintf(buffer, sizeof buffer, "%.0e", v);
+        // As many significant digits as the step needs (2.5e-04 next to 2.0e-04, not 2e-04 twice).
+        const int digits = std::clamp(int(std::ceil(std::log10(magnitude / std::abs(step)) - 1e-9)), 0, 6);
+        std::snprintf(buffer, sizeof buffer, "%.*e", digits, v);
     } else {
         // Enough decimals to tell neighbouring ticks apart.
         const int decimals = std::clamp(int(std::ceil(-std::log10(step) - 1e-9)), 0, 6);

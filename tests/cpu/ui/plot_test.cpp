@@ -32,6 +32,18 @@ TEST(AxisTicks, LogTicksAreDecadesAroundTheData) {
     EXPECT_TRUE(std::is_sorted(t.values.begin(), t.values.end()));
 }
 
+TEST(AxisTicks, TinyAndHugeTicksKeepTheDigitsThatTellThemApart) {
+    for (const double scale : {1e-4, 1e-7, 1e6}) {
+        const AxisTicks t = axisTicks(0.0, 3.0 * scale, false, 6);  // steps of 0.5 scale
+        ASSERT_GE(t.labels.size(), 5u);
+        for (std::size_t i = 1; i < t.labels.size(); ++i) {
+            EXPECT_NE(t.labels[i], t.labels[i - 1]) << scale;
+            // Each label reads back as its tick.
+            EXPECT_NEAR(std::stod(t.labels[i]), t.values[i], 1e-9 * t.values[i]) << t.labels[i];
+        }
+    }
+}
+
 TEST(AxisTicks, DegenerateAndInvalidRangesStillGiveAnAxis) {
     const AxisTicks a = axisTicks(3.0, 3.0, false);
     EXPECT_LT(a.lo, 3.0);

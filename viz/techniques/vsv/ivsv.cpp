@@ -403,10 +403,12 @@ public:
                              std::to_string(shown),
                 "its 128 phi bits: 1 shadowed, 0 lit, 0.5 beyond the fragment (not read)", ViewKind::BitField,
                 columnImage(scene, input, shown, cells, pickX, pickY)));
+            const std::shared_ptr<Image> perVpl = perVplImage(count);
             out.intermediates.push_back(vsv::cpuIntermediate(
                 kPerVpl, "Per-VPL airlight of pixel (" + std::to_string(pickX) + ", " + std::to_string(pickY) + ")",
                 "x = VPL index: its unscaled contribution to L_air (only VPLs this pixel gathered)", ViewKind::Color,
-                perVplImage(count), 0.0f, 0.0f));
+                perVpl, 0.0f, 0.0f));
+            out.intermediates.back().plots = {perVplPlot(*perVpl)};
             out.intermediates.push_back(vsv::cpuIntermediate(
                 kInterleave, "Interleaving pattern", "which ninth of the VPLs each pixel gathers (0..8 / 8)",
                 ViewKind::Scalar, interleaveImage(input.width, input.height, gatherMode)));
@@ -806,6 +808,22 @@ private:
         for (int i = 0; i < count; ++i)
             for (int c = 0; c < 3; ++c) image->at(i, 0, c) = values[std::size_t(i)][c];
         return image;
+    }
+
+    // The same terms plotted: each VPL's contribution (luminance of its RGB) against its index, the
+    // ones the pixel did not gather (zero) left out.
+    static PlotData perVplPlot(const Image& perVpl) {
+        PlotData p;
+        p.title = "per-VPL airlight (luminance, unscaled)";
+        p.xLabel = "VPL index";
+        p.yLabel = "contribution";
+        PlotCurve gathered{"gathered VPLs", {}, false, true, 0};
+        for (int i = 0; i < perVpl.width; ++i) {
+            const double y = 0.2126 * perVpl.at(i, 0, 0) + 0.7152 * perVpl.at(i, 0, 1) + 0.0722 * perVpl.at(i, 0, 2);
+            if (y != 0.0 && std::isfinite(y)) gathered.points.push_back({double(i), y});
+        }
+        p.curves = {gathered};
+        return p;
     }
 
     static std::shared_ptr<Image> interleaveImage(int width, int height, int mode) {
