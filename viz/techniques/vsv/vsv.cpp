@@ -253,6 +253,12 @@ public:
         out.lastStageRun = kVoxelizeIndex;
         if (stop == kVoxelizeIndex) return out;
 
+        // The picked pixel's column as voxelized, for the column view (the scan overwrites the grid).
+        if (!lights.empty()) {
+            const glm::ivec2 cell = pickedCell(scene, input, lights[std::size_t(shown)], grids[std::size_t(shown)], pickX, pickY);
+            mPreScanRow = vsv::readGridRow(mGrid[std::size_t(shown)], 0, grids[std::size_t(shown)].nAlpha, cell.y);
+        }
+
         // ---- scan ----
         clock.begin();
         const int passLimit = s.at("scan_passes") < 0 ? kMaxScanPasses : int(s.at("scan_passes"));
@@ -285,7 +291,8 @@ public:
         if (!lights.empty())
             out.intermediates.push_back(cpuIntermediate(
                 kColumn, "Voxel column of pixel (" + std::to_string(pickX) + ", " + std::to_string(pickY) + ")",
-                "the phi bits its eye ray reads: 1 shadowed, 0 lit, 0.5 beyond the fragment (not read)",
+                "the 128 phi bits its eye ray reads; top row as voxelized (1 occluder), bottom row after the scan "
+                "(1 shadowed, 0 lit); 0.5 beyond the fragment (not read)",
                 ViewKind::BitField,
                 columnImage(scene, input, lights[std::size_t(shown)], grids[std::size_t(shown)], shown, pickX,
                             pickY)));
@@ -593,22 +600,35 @@ private:
     }
 
     // The phi bits the picked pixel's eye ray reads (nearest theta cell), marked 0.5 beyond its fragment.
+    // The alpha cell (x) and theta cell (y) of pixel (x, y)'s eye ray in light `sceneLight`'s grid.
+    static glm::ivec2 pickedCell(const scene::Scene& scene, const FrameInput& input, int sceneLight,
+                                 const vsv::EpipolarGrid& g, int x, int y) {
+        const vsv::EpipolarFrame f = vsv::frameForLight(scene, scene.lights[std::size_t(sceneLight)]);
+        const glm::dvec3 ray = scene::pixelRay(scene.camera, input.width, input.height, x, y);
+        return {std::clamp(int(std::floor(vsv::alphaCoord(g, vsv::alphaOf(f, ray)))), 0, g.nAlpha - 1),
+                std::clamp(int(std::floor(vsv::thetaCoord(g, vsv::thetaOf(f, ray)))), 0, g.nTheta - 1)};
+    }
+
+    // Two rows of phi bits along pixel (x, y)'s column: row 0 as voxelized (mPreScanRow), row 1 after the
+    // scan; 0.5 beyond the pixel's fragment (the gather does not read them).
     std::shared_ptr<Image> columnImage(const scene::Scene& scene, const FrameInput& input, int sceneLight,
                                        const vsv::EpipolarGrid& g, int slot, int x, int y) const {
         const vsv::EpipolarFrame f = vsv::frameForLight(scene, scene.lights[std::size_t(sceneLight)]);
-        const glm::dvec3 ray = scene::pixelRay(scene.camera, input.width, input.height, x, y);
-        const double alpha = vsv::alphaOf(f, ray);
-        const int ia = std::clamp(int(std::floor(vsv::alphaCoord(g, alpha))), 0, g.nAlpha - 1);
-        const int jt = std::clamp(int(std::floor(vsv::thetaCoord(g, vsv::thetaOf(f, ray)))), 0, g.nTheta - 1);
+        const glm::ivec2 cell = pickedCell(scene, input, sceneLight, g, x, y);
+        const double alpha = vsv::alphaOf(f, scene::pixelRay(scene.camera, input.width, input.height, x, y));
         float d = 0.0f;
         glGetTextureSubImage(mView.surface().distance().id(), 0, x, input.height - 1 - y, 0, 1, 1, 1, GL_RED,
                              GL_FLOAT, sizeof(float), &d);
         const double kEnd = vsv::phiCoord(g, vsv::phiOnEyeRay(f, alpha, double(d)));
-        const std::vector<vsv::Bits128> row = vsv::readGridRow(*mResult[std::size_t(slot)], 0, g.nAlpha, jt);
-        auto image = std::make_shared<Image>(g.nPhi, 1, 1);
-        for (int k = 0; k < g.nPhi; ++k) {
-            const bool shadowed = vsv::testBitPlain(row[std::size_t((k >> 7) * g.nAlpha + ia)], k & 127);
-            image->at(k, 0) = double(k) >= kEnd ? 0.5f : (shadowed ? 1.0f : 0.0f);
+        const std::vector<vsv::Bits128> after = vsv::readGridRow(*mResult[std::size_t(slot)], 0, g.nAlpha, cell.y);
+        auto image = std::make_shared<Image>(g.nPhi, 2, 1);
+        for (int row = 0; row < 2; ++row) {
+            const std::vector<vsv::Bits128>& bits = row == 0 ? mPreScanRow : after;
+            for (int k = 0; k < g.nPhi; ++k) {
+                const std::size_t at = std::size_t((k >> 7) * g.nAlpha + cell.x);
+                const bool set = at < bits.size() && vsv::testBitPlain(bits[at], k & 127);
+                image->at(k, row) = double(k) >= kEnd ? 0.5f : (set ? 1.0f : 0.0f);
+            }
         }
         return image;
     }
@@ -621,6 +641,7 @@ private:
     glm::ivec3 mGridSize{0};
     std::vector<gl::Texture> mGrid, mPong, mOccluder;  // per light
     std::vector<const gl::Texture*> mResult;           // per light: where the scan left the grid
+    std::vector<vsv::Bits128> mPreScanRow;              // the picked pixel's theta row before the scan
     gl::Texture mWords;                                // voxelization scratch, one light at a time
     gl::Texture mAirlight, mVisibility;
     std::unique_ptr<Technique> mIvsv;  // the scene's area lights
