@@ -14,7 +14,7 @@ void main() {
     ivec2 texel = ivec2(gl_GlobalInvocationID.xy);
     if (any(greaterThanEqual(texel, uSize))) return;
     float d = texelFetch(uDistance, texel, 0).r;
-    vec3 w = pixelRay(vec2(texel) + 0.5);
+    vec3 w = fragmentRay(vec2(texel) + 0.5);
     float worst = 0.0;
     for (int i = 0; i < uLightCount; ++i) {
         GpuLight L = gLights[i];

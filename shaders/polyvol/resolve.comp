@@ -21,7 +21,7 @@ void main() {
     float c = total.a;
     if (c != 0.0) {
         float d = texelFetch(uDistance, texel, 0).r;
-        vec3 w = pixelRay(vec2(texel) + 0.5);
+        vec3 w = fragmentRay(vec2(texel) + 0.5);
         vec3 base = uConstant != 0 ? vec3(d) : segmentAirlight(gLights[uLightIndex], w, 0.0, d);
         total.rgb += c * base;
         if (c > 0.0) {

@@ -8,25 +8,12 @@
 #include "common/airlight.glsl"
 #include "common/lights.glsl"
 #include "polyvol/airlight_lut.glsl"
+#include "common/camera_ray.glsl"
 
-uniform ivec2 uSize;
-uniform vec3 uForward;
-uniform vec3 uRight;
-uniform vec3 uUp;
-uniform float uTanHalf;
-uniform float uAspect;
 uniform float uSigmaS;
 uniform float uSigmaT;
 uniform float uG;
 uniform int uSpotPieces;   // spot lights: equal-angle pieces per penumbra part (see angularSegment)
-
-// The ray through pixel position `pixel` (gl_FragCoord convention: centres at .5, row 0 at the bottom):
-// the same formula as scene::pixelRay.
-vec3 pixelRay(vec2 pixel) {
-    float ndcX = 2.0 * pixel.x / float(uSize.x) - 1.0;
-    float ndcY = 2.0 * pixel.y / float(uSize.y) - 1.0;
-    return normalize(uForward + (ndcX * uTanHalf * uAspect) * uRight + (ndcY * uTanHalf) * uUp);
-}
 
 // Unit-intensity isotropic-source airlight of [x0, x1] (closed form or lookup table).
 float unitPointSegment(RayLightGeometry g, float x0, float x1) {

@@ -30,7 +30,7 @@ layout(location = 3) out vec4 oCrossings;
 
 void main() {
     ivec2 texel = ivec2(gl_FragCoord.xy);
-    vec3 w = pixelRay(gl_FragCoord.xy);
+    vec3 w = fragmentRay(gl_FragCoord.xy);
     float d = texelFetch(uDistance, texel, 0).r;
     float x = min(length(vPosition), d);
     // Counter-clockwise seen from inside the volume: a front-facing fragment is where the ray leaves it.

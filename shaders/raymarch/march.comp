@@ -18,17 +18,12 @@ layout(local_size_x = 8, local_size_y = 8) in;
 #include "common/airlight.glsl"
 #include "common/lights.glsl"
 #include "common/shadow_map.glsl"
+#include "common/camera_ray.glsl"
 
 layout(binding = kFirstFreeTextureUnit) uniform sampler2D uDistance;  // Euclidean t of the first surface
 layout(rgba32f, binding = 0) uniform image2D uAirlight;     // running sum over the dispatches
 layout(r32f, binding = 1) uniform image2D uLitFraction;     // running count of lit samples, then the fraction
 
-uniform ivec2 uSize;
-uniform vec3 uForward;
-uniform vec3 uRight;
-uniform vec3 uUp;
-uniform float uTanHalf;  // tan(yfov / 2)
-uniform float uAspect;
 uniform int uSamples;
 uniform int uLightCount;
 uniform float uSigmaS;
@@ -47,15 +42,6 @@ float hashToUnit(uvec3 v) {
     v ^= v >> 16u;
     v.x += v.y * v.z; v.y += v.z * v.x; v.z += v.x * v.y;
     return float(v.x >> 8u) * (1.0 / 16777216.0);
-}
-
-// The ray through the centre of pixel (x, yTop), yTop = 0 the top row: the same formula as
-// scene::pixelRay (viz/scene/camera.h).
-vec3 pixelRay(ivec2 texel) {
-    float yTop = float(uSize.y - 1 - texel.y);  // GL row 0 is the bottom of the image
-    float ndcX = 2.0 * (float(texel.x) + 0.5) / float(uSize.x) - 1.0;
-    float ndcY = 1.0 - 2.0 * (yTop + 0.5) / float(uSize.y);
-    return normalize(uForward + (ndcX * uTanHalf * uAspect) * uRight + (ndcY * uTanHalf) * uUp);
 }
 
 void main() {

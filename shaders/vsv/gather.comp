@@ -25,6 +25,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 #include "common/lights.glsl"
 #include "common/shadow_map.glsl"
 #include "vsv/bits128.glsl"
+#include "common/camera_ray.glsl"
 #include "vsv/epipolar_uniforms.glsl"
 
 layout(binding = kFirstFreeTextureUnit) uniform sampler2D uDistance;
@@ -32,12 +33,6 @@ layout(rgba32ui, binding = 0) uniform readonly uimage2DArray uGrid;
 layout(rgba32f, binding = 1) uniform image2D uAirlight;
 layout(rgba32f, binding = 2) uniform writeonly image2D uVisibility;
 
-uniform ivec2 uSize;
-uniform vec3 uForward;
-uniform vec3 uRight;
-uniform vec3 uUp;
-uniform float uTanHalf;
-uniform float uAspect;
 uniform int uLight;
 uniform float uSigmaS;
 uniform float uSigmaT;
@@ -48,13 +43,6 @@ uniform int uEpipoleToward;  // the alpha = 0 epipole is in view and the grid st
 uniform int uEpipoleAway;    // the alpha = pi epipole is in view and the grid ends at alpha = pi
 uniform float uDirectBins;    // rays crossing fewer phi bins skip the grid (0: only epipole rays)
 uniform int uDirectSegments;  // shadow-map tests per direct ray
-
-vec3 pixelRay(ivec2 texel) {
-    float yTop = float(uSize.y - 1 - texel.y);
-    float ndcX = 2.0 * (float(texel.x) + 0.5) / float(uSize.x) - 1.0;
-    float ndcY = 1.0 - 2.0 * (yTop + 0.5) / float(uSize.y);
-    return normalize(uForward + (ndcX * uTanHalf * uAspect) * uRight + (ndcY * uTanHalf) * uUp);
-}
 
 // Airlight of the ray over [ta, tb] for the whole bin run: the isotropic-source segment integral times
 // the light's angular factor (spot falloff, cookie) averaged by Simpson's rule over the run.

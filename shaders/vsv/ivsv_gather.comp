@@ -13,6 +13,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 
 #include "common/airlight.glsl"
 #include "vsv/bits128.glsl"
+#include "common/camera_ray.glsl"
 #include "vsv/ivsv_vpls.glsl"
 
 layout(binding = 8) uniform sampler2D uDistance;
@@ -22,13 +23,7 @@ layout(r32f, binding = 2) uniform image2D uVisibility;    // mean lit fraction o
 layout(std430, binding = 6) buffer PickContributions { vec4 gPick[]; };
 
 uniform ivec2 uOutSize;   // invocations
-uniform ivec2 uSize;      // full image
 uniform int uScale;
-uniform vec3 uForward;
-uniform vec3 uRight;
-uniform vec3 uUp;
-uniform float uTanHalf;
-uniform float uAspect;
 uniform ivec3 uCells;
 uniform int uFirstVpl;
 uniform int uVplCount;    // VPLs [uFirstVpl, uFirstVpl + uVplCount)
@@ -40,13 +35,6 @@ uniform int uChunkBits;
 uniform float uDiscScale;  // 1: VPLs as discs of their area near the emitter (vpl_disc), 0: points  // phi bits per quadrature node
 uniform int uAccumulate;
 uniform ivec2 uPick;      // full-resolution pixel whose per-VPL contributions go to gPick (-1: none)
-
-vec3 pixelRay(ivec2 texel) {
-    float yTop = float(uSize.y - 1 - texel.y);
-    float ndcX = 2.0 * (float(texel.x) + 0.5) / float(uSize.x) - 1.0;
-    float ndcY = 1.0 - 2.0 * (yTop + 0.5) / float(uSize.y);
-    return normalize(uForward + (ndcX * uTanHalf * uAspect) * uRight + (ndcY * uTanHalf) * uUp);
-}
 
 // Lit (clear) fraction of bits [first, last) of a column.
 float litBits(uvec4 c, int first, int last) {
