@@ -289,9 +289,10 @@ public:
         auto last = Clock::now();
         while (!mWindow.shouldClose()) {
             const bool flying = mController.mode() == CameraController::Mode::Fly && anyFlyKeyDown();
-            const bool busy = mWorker->progress().busy || otherPending();
+            const bool busy = mWorker->progress().busy || otherPending() || comparisonPending();
             const bool automated = !mOptions.screenshot.empty() || !mOptions.script.empty();
-            if (flying || mDirty || automated || mPlaying || mGpuOthersDue || (mLesson && mLesson->animating())) {
+            if (flying || mDirty || automated || mPlaying || mGpuOthersDue || mCompareGpuDue ||
+                (mLesson && mLesson->animating())) {
                 glfwPollEvents();
             } else {
                 // Nothing animates: sleep until input arrives, waking a few times a second while the
@@ -302,6 +303,7 @@ public:
             const double dt = std::min(0.1, std::chrono::duration<double>(now - last).count());
             last = now;
             if (mGpuOthersDue) runDueGpuOthers();  // after a frame that said "computing it..."
+            if (mCompareGpuDue) runComparisonTechniques();
             if (mController.mode() == CameraController::Mode::Fly) fly(dt);
             // Automation advances animations by a fixed 1/30 s per frame, so runs repeat exactly.
             if (mLesson) mLesson->update(*this, automated ? 1.0 / 30.0 : dt);
@@ -324,11 +326,12 @@ public:
                 mPendingInspect.reset();
             }
             pollOtherWorker();
+            pollComparison();
             draw();
             ++mFramesDrawn;
             if (!mOptions.script.empty()) {
                 // Each frame runs the script's next actions; the window closes when it is done.
-                if (mHaveOutput && !mWorker->progress().busy && !otherPending() && !stepScript()) {
+                if (mHaveOutput && !mWorker->progress().busy && !otherPending() && !comparisonPending() && !stepScript()) {
                     if (!mOptions.screenshot.empty()) writeScreenshot(mOptions.screenshot);
                     return 0;
                 }
@@ -663,7 +666,7 @@ private:
         mGizmoArm = kGizmoArm * mController.targetDistance();
         mWorker = std::make_unique<CpuWorker>(mScene);
         mLightIntensity0 = 0.0;
-        mCompare.clear();
+        closeComparison();
         mProbe.reset();
         mDirty = true;
     }
@@ -710,7 +713,7 @@ private:
         mProbe.reset();
         mPendingInspect = s.inspect;
         mExposureSet = false;
-        mCompare.clear();
+        closeComparison();
     }
 
     void showLessonView(const std::string& id) override { showInFocusedView(id); }
@@ -782,33 +785,66 @@ private:
     // G: every technique renders the current scene and camera with its current settings; their L_air
     // sit in a grid at one shared exposure (the reference's), each with its time and error against the
     // reference. G again closes it. The grid is a snapshot: it does not follow later changes.
+    // G: every technique's L_air for the current view beside the reference's. The reference renders on
+    // a worker thread (from its on-disk cache when it has the frame) while the window stays responsive;
+    // when it is in, the GPU techniques run on this thread at the start of the next frame.
     void toggleComparison() {
         if (!mCompare.empty()) {
-            mCompare.clear();
+            closeComparison();
             return;
         }
-        mScene.camera = mController.camera();
-        const int w = mOptions.width, h = mOptions.height;
-        viz::Image reference;
+        mCompareCamera = mController.camera();
+        mCompareSize = {mOptions.width, mOptions.height};
+        for (const std::string& id : mIds) mCompare.push_back(CompareTile{id, "", {}, 0.0, {}});
         try {
-            auto r = viz::makeTechnique("reference");
-            viz::FrameInput in{&mScene, w, h, viz::completeSettings(*r, {}), -1};
-            reference = r->run(in).airlight;
+            const auto reference = viz::makeTechnique("reference");
+            mCompareWorker = std::make_unique<CpuWorker>(mScene);
+            mCompareWorker->submit({"reference", mCompareCamera, viz::completeSettings(*reference, {}), mCompareSize.x,
+                                    mCompareSize.y});
+            mComparePending = true;
         } catch (const std::exception& e) {
             mError = std::string("comparison: ") + e.what();
+            closeComparison();
+        }
+    }
+
+    void closeComparison() {
+        mCompare.clear();
+        mCompareWorker.reset();
+        mComparePending = mCompareGpuDue = false;
+    }
+
+    bool comparisonPending() const { return mComparePending || mCompareGpuDue; }
+
+    // The comparison's reference, once its full-size pass is in: the GPU techniques follow next frame.
+    void pollComparison() {
+        if (!mComparePending || !mCompareWorker) return;
+        std::optional<CpuResult> result = mCompareWorker->take();
+        if (!result || (result->error.empty() && result->pass < result->passCount)) return;
+        mComparePending = false;
+        if (!result->error.empty()) {
+            for (CompareTile& tile : mCompare) tile.failure = "reference: " + firstLine(result->error);
             return;
         }
-        const float exposure = std::log2(autoExposure(reference));
-        for (const std::string& id : mIds) {
-            CompareTile tile;
-            tile.technique = id;
+        mCompareReference = std::move(result->output.airlight);
+        mCompareGpuDue = true;
+    }
+
+    void runComparisonTechniques() {
+        mCompareGpuDue = false;
+        const viz::Image& reference = mCompareReference;
+        viz::scene::Scene scene = mScene;
+        scene.camera = mCompareCamera;
+        const int w = mCompareSize.x, h = mCompareSize.y;
+        for (CompareTile& tile : mCompare) {
+            const std::string& id = tile.technique;
             try {
                 if (!mTechniques.count(id)) mTechniques[id] = viz::makeTechnique(id);
                 viz::Technique& t = *mTechniques.at(id);
                 viz::Settings given = mSession.settings.count(id) ? mSession.settings.at(id) : viz::Settings{};
                 for (const auto& [name, value] : mOptions.settings) given[name] = value;
                 std::string ignored;
-                viz::FrameInput in{&mScene, w, h, settingsFor(t, given, ignored), -1};
+                viz::FrameInput in{&scene, w, h, settingsFor(t, given, ignored), -1};
                 // Timed warm: the first run compiles shaders and allocates (polyvol's first run at 80x60
                 // takes several times its second), so the second run's time is the one shown.
                 if (id != "reference") (void)t.run(in);
@@ -823,9 +859,10 @@ private:
             } catch (const std::exception& e) {
                 tile.failure = e.what();
             }
-            mCompare.push_back(std::move(tile));
         }
-        mCompareExposure = exposure;
+        mCompareExposure = std::log2(autoExposure(reference));
+        // The techniques' runs replaced the current technique's textures with the comparison's: run it again.
+        mDirty = true;
     }
 
     void drawComparison(DrawList& dl, const Rect& area) {
@@ -849,12 +886,22 @@ private:
             const glm::vec2 at = area.min + glm::vec2(float(i % cols), float(i / cols)) * cell;
             const Rect box{at + pad, at + cell - glm::vec2(pad, pad + 2.0f * line)};
             const Rect image = fitImage(box, tile.pane.size);
-            DisplayMapping shared;
-            shared.exposure = mCompareExposure;
-            mPaneDraws.push_back({image, &tile.pane, nullptr, shared});
+            if (tile.pane.texture != 0) {
+                DisplayMapping shared;
+                shared.exposure = mCompareExposure;
+                mPaneDraws.push_back({image, &tile.pane, nullptr, shared});
+            } else if (tile.failure.empty()) {
+                const CpuProgress progress = mCompareWorker ? mCompareWorker->progress() : CpuProgress{};
+                const std::string waiting = mComparePending ? "computing the reference... pass " +
+                                                                  std::to_string(progress.pass) + "/" +
+                                                                  std::to_string(progress.passCount)
+                                                            : std::string("running...");
+                dl.textClipped({box.min.x + 4.0f * mScale, box.min.y + 4.0f * mScale}, waiting, kDim, box.max.x);
+            }
             std::string caption = tile.technique;
             std::string figures = tile.failure.empty()
-                ? (tile.technique == "reference" ? std::string("ground truth")
+                ? (tile.pane.texture == 0 ? std::string("")
+                   : tile.technique == "reference" ? std::string("ground truth")
                                                  : format("%.1f ms", tile.milliseconds) + "   error " +
                                                        format("%.3g", tile.error.relativeL2))
                 : "failed: " + firstLine(tile.failure);
@@ -2826,6 +2873,12 @@ private:
     };
     std::vector<CompareTile> mCompare;  // the comparison grid (G), empty when closed
     float mCompareExposure = 0.0f;
+    std::unique_ptr<CpuWorker> mCompareWorker;  // the comparison's reference
+    bool mComparePending = false;               // waiting for it
+    bool mCompareGpuDue = false;                // it is in: the GPU techniques run next frame
+    viz::Image mCompareReference;
+    viz::scene::Camera mCompareCamera;          // the view and size the comparison is for
+    glm::ivec2 mCompareSize{0};
     std::vector<PaneDraw> mPaneDraws;
     std::unique_ptr<viz::ui::Context> mUi;   // the widgets
     viz::ui::Input mUiInput;                 // keys, text and wheel gathered since the last frame

@@ -216,25 +216,35 @@ void drawPlot(ui::DrawList& list, const ui::Rect& area, const PlotSpec& spec) {
         }
     }
 
-    // Legend.
+    // Legend: from the frame's top down; what does not fit above the area's bottom is counted in a last
+    // line ("+3 more") instead of running out of the plot.
     float y = frame.min.y;
     const float x = frame.max.x + pad;
+    int entries = int(spec.bands.size()) + (spec.highlighted.empty() ? 0 : 1);
+    for (const Series& s : spec.series) entries += s.name.empty() ? 0 : 1;
+    const int rows = std::max(1, int((area.max.y - pad - y) / line));
+    int room = entries > rows ? rows - 1 : entries;
+    const auto fits = [&]() { return room-- > 0; };
     for (const Series& s : spec.series) {
         if (s.name.empty()) continue;  // unnamed series (e.g. a line through another's points) stay out
+        if (!fits()) break;
         list.rect({{x, y + line * 0.3f}, {x + line, y + line * 0.7f}}, s.color);
         list.textClipped({x + line * 1.4f, y}, s.name, kInk, area.max.x - 2.0f);
         y += line;
     }
     for (const Band& b : spec.bands) {
+        if (!fits()) break;
         list.rect({{x, y + line * 0.4f}, {x + line, y + line * 0.6f}}, b.color);
         list.textClipped({x + line * 1.4f, y}, b.name, kInk, area.max.x - 2.0f);
         y += line;
     }
-    if (!spec.highlighted.empty()) {
+    if (!spec.highlighted.empty() && fits()) {
         const glm::vec2 c{x + line * 0.5f, y + line * 0.5f};
         squareRing(list, c, marker * 2.2f);
         list.textClipped({x + line * 1.4f, y}, spec.highlightName, kInk, area.max.x - 2.0f);
+        y += line;
     }
+    if (entries > rows) list.textClipped({x, y}, "+" + std::to_string(entries - rows + 1) + " more", kInk, area.max.x - 2.0f);
 }
 
 float drawBarChart(ui::DrawList& list, const ui::Rect& area, const BarChart& chart, glm::vec4 textColor) {

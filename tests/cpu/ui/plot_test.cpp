@@ -75,6 +75,27 @@ TEST(DrawPlot, EverythingLandsInsideTheArea) {
     }
 }
 
+TEST(DrawPlot, ALegendTooLongForTheAreaIsCutShortAndStaysInside) {
+    const ui::FontAtlas font = ui::FontAtlas::bake(ui::FontAtlas::kDefaultFontPath, 14.0f);
+    PlotSpec spec;
+    spec.logX = spec.logY = true;
+    for (int i = 0; i < 12; ++i)
+        spec.series.push_back({"technique " + std::to_string(i), categoricalColor(i), {{10.0 * (i + 1), 0.5 / (i + 1)}},
+                               false, true});
+    const ui::Rect area{{0, 0}, {360, 130}};  // room for a few legend lines only
+    ui::DrawList list(font);
+    drawPlot(list, area, spec);
+    ASSERT_GT(list.vertices().size(), 50u);
+    for (const ui::UiVertex& v : list.vertices()) {
+        EXPECT_GE(v.position.y, area.min.y - 1e-3f);
+        EXPECT_LE(v.position.y, area.max.y + 1e-3f);
+    }
+    // In a tall area every entry fits: more is drawn than in the short one.
+    ui::DrawList tall(font);
+    drawPlot(tall, {{0, 0}, {360, 600}}, spec);
+    EXPECT_GT(tall.vertices().size(), list.vertices().size());
+}
+
 TEST(DrawBarChart, BarsAreScaledToTheLargestValueAndStayInside) {
     const ui::FontAtlas font = ui::FontAtlas::bake(ui::FontAtlas::kDefaultFontPath, 14.0f);
     ui::DrawList list(font);
