@@ -393,6 +393,14 @@ public:
                     ++mScriptIndex;
                     return true;
                 }
+                case ScriptAction::Kind::Wheel: {
+                    if (revealScriptTarget(a)) return true;
+                    const Rect r = scriptTarget(a);
+                    mHover = r.min + 0.5f * r.size();
+                    onScroll(double(a.notches));
+                    ++mScriptIndex;
+                    return true;
+                }
                 case ScriptAction::Kind::Screenshot:
                     writeScreenshot(a.target);
                     ++mScriptIndex;

@@ -117,6 +117,13 @@ std::vector<ScriptAction> parseScript(const std::string& path) {
             if (scriptKeyCode(name) < 0) fail("unknown key '" + w[1] + "'");
             a.kind = ScriptAction::Kind::Key;
             a.target = name;
+        } else if (w[0] == "wheel") {
+            float n = 0.0f;
+            if (w.size() != 3 || !parseFloat(w[2], n) || n == 0.0f || std::abs(n) > 100.0f)
+                fail("wheel takes a name and a number of notches from -100 to 100 (not 0)");
+            a.kind = ScriptAction::Kind::Wheel;
+            a.target = w[1];
+            a.notches = n;
         } else if (w[0] == "frames") {
             float n = 0.0f;
             if (w.size() != 2 || !parseFloat(w[1], n) || n < 1.0f || n > 100000.0f || n != std::floor(n))
@@ -128,7 +135,7 @@ std::vector<ScriptAction> parseScript(const std::string& path) {
             a.kind = ScriptAction::Kind::Screenshot;
             a.target = w[1];
         } else {
-            fail("unknown action '" + w[0] + "' (known: click, hover, drag, key, frames, screenshot)");
+            fail("unknown action '" + w[0] + "' (known: click, hover, drag, wheel, key, frames, screenshot)");
         }
         actions.push_back(std::move(a));
     }

@@ -7,6 +7,8 @@
 //   drag NAME FX FY TX TY [ONTO]  press the left button at fraction (FX, FY) of the target, move to
 //                        (TX, TY) of the same rectangle (or of ONTO's) over a few frames, release (pans
 //                        a zoomed view, turns an orbit view, moves a divider or a light handle, ...)
+//   wheel NAME N         turn the mouse wheel N notches (positive: away from the user, zooming in) over
+//                        the centre of a view or widget
 //   key NAME             press a key: Tab, Enter, Escape, Space, Left, Right, Up, Down, PageUp,
 //                        PageDown, F1-F12, 0-9,
 //                        A-Z, [ and ], optionally after Shift+ and/or Ctrl+ (Shift+S)
@@ -22,13 +24,14 @@
 namespace airlight {
 
 struct ScriptAction {
-    enum class Kind { Click, Hover, Drag, Key, Frames, Screenshot };
+    enum class Kind { Click, Hover, Drag, Wheel, Key, Frames, Screenshot };
     Kind kind = Kind::Frames;
     std::string target;          // widget / view name, key name or path
     glm::vec2 fraction{0.5f};    // click position within the target's rectangle
     glm::vec2 to{0.5f};          // drag: where the button is released, within the same rectangle or
     std::string onto;            // within this one's (drag ... ONTO), when not empty
     int frames = 1;
+    float notches = 0.0f;        // wheel
     int modifiers = 0;           // key: GLFW_MOD_SHIFT | GLFW_MOD_CONTROL
     int line = 0;                // 1-based, for messages
 };

@@ -176,12 +176,14 @@ TEST_F(GuiCli, PlayMovesTheLightAndScrollsTheNoiseAndPauseStopsThem) {
 TEST_F(GuiCli, DraggingAnOrbitViewTurnsItsCamera) {
     const fs::path script = writeText("orbit.txt", "frames 1\nclick \"view:Light volume mesh\"\nframes 2\n"
                                                    "screenshot " + path("before.png").string() + "\n"
-                                                   "drag polyvol.mesh 0.3 0.5 0.7 0.6\nframes 2\n");
+                                                   "drag polyvol.mesh 0.3 0.5 0.7 0.6\nframes 2\nscreenshot " +
+                                                   path("turned.png").string() + "\nwheel polyvol.mesh 2\nframes 2\n");
     const RunResult r = run("gui --scene grate --technique polyvol --size 40x30 --set wireframe=3 --set shadow_map=64 "
                             "--script " + script.string() + " --screenshot " + path("after.png").string());
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const nlohmann::json before = nlohmann::json::parse(readFile(path("before.json")));
-    const nlohmann::json after = nlohmann::json::parse(readFile(path("after.json")));
+    const nlohmann::json after = nlohmann::json::parse(readFile(path("turned.json")));
+    const nlohmann::json zoomed = nlohmann::json::parse(readFile(path("after.json")));
     const double yaw0 = before.at("settings").at("mesh_yaw").get<double>(),
                  yaw1 = after.at("settings").at("mesh_yaw").get<double>();
     const double pitch0 = before.at("settings").at("mesh_pitch").get<double>(),
@@ -189,6 +191,13 @@ TEST_F(GuiCli, DraggingAnOrbitViewTurnsItsCamera) {
     EXPECT_LT(yaw1, yaw0 - 5.0) << "dragged right: the orbit turns the other way";
     EXPECT_GT(pitch1, pitch0 + 1.0) << "dragged down: the orbit camera rises";
     EXPECT_EQ(after.at("views").size(), before.at("views").size());
+    // The wheel over it moves its own camera in (mesh_zoom, 1.25 a notch); the view's texture zoom stays 1.
+    EXPECT_NEAR(zoomed.at("settings").at("mesh_zoom").get<double>(),
+                after.at("settings").at("mesh_zoom").get<double>() * 1.25 * 1.25, 1e-9);
+    for (const auto& v : zoomed.at("views"))
+        if (v.at("name") == "polyvol.mesh") {
+            EXPECT_EQ(v.at("zoom").get<double>(), 1.0);
+        }
 }
 
 TEST_F(GuiCli, TheRayInspectorShowsTheValuesAirlightRenderGivesAtThatPixel) {
