@@ -65,6 +65,9 @@ struct Intermediate {
     // An orbit view (render::MeshView): the window turns it by dragging (the technique's mesh_yaw and
     // mesh_pitch parameters).
     bool orbit = false;
+    // Shows the picked pixel's ray (the technique's pick_x / pick_y): a walk, a voxel column, per-VPL
+    // terms, the planes along it. The ray inspector lists these by id.
+    bool rayView = false;
 };
 
 using Settings = std::map<std::string, double>;

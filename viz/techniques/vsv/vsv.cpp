@@ -282,13 +282,15 @@ public:
             if (featureEnabled(out.plan, "AREA_LIGHTS_BY_IVSV")) addAreaLights(input);
         }
         out.timing.stages.push_back({kStageGather, clock.endMilliseconds()});
-        if (!lights.empty())
+        if (!lights.empty()) {
             out.intermediates.push_back(cpuIntermediate(
                 kColumn, "Voxel column of pixel (" + std::to_string(pickX) + ", " + std::to_string(pickY) + ")",
                 "the phi bits its eye ray reads: 1 shadowed, 0 lit, 0.5 beyond the fragment (not read)",
                 ViewKind::BitField,
                 columnImage(scene, input, lights[std::size_t(shown)], grids[std::size_t(shown)], shown, pickX,
                             pickY)));
+            out.intermediates.back().rayView = true;
+        }
         out.intermediates.push_back(render::textureIntermediate(
             kAirlight, "L_air", "single-scattered light reaching the eye", "radiance", ViewKind::Color, 0.0f, 1.0f,
             mAirlight));
