@@ -563,6 +563,13 @@ public:
                 }
                 sidecar["inspector"]["readings"] = readings;
                 sidecar["inspector"]["ray_views"] = probeInspection().rayViews;
+                nlohmann::json series = nlohmann::json::object();
+                for (const viz::plot::Series& s : probeInspection().series) {
+                    nlohmann::json points = nlohmann::json::array();
+                    for (const glm::dvec2& q : s.points) points.push_back({q.x, q.y});
+                    series[s.name] = points;
+                }
+                sidecar["inspector"]["ray_series"] = series;
             }
         }
         if (mLesson) sidecar["lesson"] = mLesson->sidecar(*this);
@@ -1079,6 +1086,9 @@ private:
             curve.points.push_back({p.t[i], v.x + v.y + v.z});
         }
         spec.series.push_back(std::move(curve));
+        // The technique's own samples along the ray (slices: one point per plane), on the same axes.
+        if (mHaveOutput && technique().id() == mProbeTechnique)
+            for (const viz::plot::Series& s : probeInspection().series) spec.series.push_back(s);
         for (std::size_t k = 0; k < p.lights.size(); ++k) {
             viz::plot::Band band{"lit: " + p.lights[k].name, viz::plot::categoricalColor(int(k) + 1), {}};
             for (const auto& iv : p.lights[k].lit) band.spans.push_back({iv.a, iv.b});

@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "pane_image.h"
+#include "techniques/slices/ray_planes.h"
 
 namespace airlight {
 
@@ -65,24 +66,38 @@ bool pickPixel(const viz::Technique& technique, viz::Settings& settings, glm::iv
     return changed;
 }
 
-std::vector<std::string> pickedRayViews(const viz::Technique& technique, const viz::FrameOutput& out,
-                                        glm::ivec2 frame) {
+std::vector<std::string> pickedRayViews(const viz::Technique& technique, const viz::FrameOutput& out) {
     std::vector<std::string> ids;
-    for (const viz::StageInfo& st : technique.stages()) {
-        if (std::find(st.params.begin(), st.params.end(), "pick_x") == st.params.end()) continue;
-        for (const std::string& id : st.intermediates) {
-            const auto in = std::find_if(out.intermediates.begin(), out.intermediates.end(),
-                                         [&](const viz::Intermediate& i) { return i.id == id; });
-            if (in == out.intermediates.end()) continue;  // not produced by this run
-            if (sizeOf(*in) != frame) ids.push_back(id);  // per-pixel images are in the readings instead
-        }
-    }
+    if (!hasParam(technique, "pick_x")) return ids;
+    for (const viz::Intermediate& in : out.intermediates)
+        if (in.rayView) ids.push_back(in.id);
     return ids;
+}
+
+std::vector<viz::plot::Series> rayViewSeries(const viz::FrameOutput& out) {
+    const auto in = std::find_if(out.intermediates.begin(), out.intermediates.end(),
+                                 [](const viz::Intermediate& i) { return i.id == "slices.ray_planes"; });
+    using namespace viz::slices;
+    if (in == out.intermediates.end() || !in->image || in->image->channels < 4 ||
+        in->image->width < kRayPlaneColumns)
+        return {};
+    const viz::Image& table = *in->image;
+    viz::plot::Series shaded{"slices, shaded", viz::plot::categoricalColor(5), {}, false, true};
+    viz::plot::Series kept{"slices, stored", viz::plot::categoricalColor(6), {}, false, true};
+    for (int row = 0; row < table.height; ++row) {
+        const float t = table.at(kColWhere, row, 2), dt = table.at(kColWhere, row, 3);
+        if (PickStatus(int(table.at(kColTest, row, 0))) != PickStatus::Added || !(dt > 0.0f)) continue;
+        // Column kColSet: (light, set, L_air as stored, L_air as shaded), sums of rgb.
+        shaded.points.push_back({double(t), double(table.at(kColSet, row, 3)) / double(dt)});
+        kept.points.push_back({double(t), double(table.at(kColSet, row, 2)) / double(dt)});
+    }
+    if (shaded.points.empty()) return {};
+    return {std::move(shaded), std::move(kept)};
 }
 
 PixelInspection inspectRun(const viz::Technique& technique, const viz::FrameOutput& out, glm::ivec2 frame,
                            glm::ivec2 pixel) {
-    return {readingsAtPixel(out, frame, pixel), pickedRayViews(technique, out, frame)};
+    return {readingsAtPixel(out, frame, pixel), pickedRayViews(technique, out), rayViewSeries(out)};
 }
 
 }  // namespace airlight

@@ -10,6 +10,7 @@
 #include <glm/glm.hpp>
 
 #include "debug/technique.h"
+#include "plot/plot.h"
 
 namespace airlight {
 
@@ -24,11 +25,18 @@ struct PixelReading {
 // intermediates (integer grids, meshes, maps in light space) are not per pixel and are left out.
 std::vector<PixelReading> readingsAtPixel(const viz::FrameOutput& out, glm::ivec2 frame, glm::ivec2 pixel);
 
-// Both of the above for one pixel of one run. The window reads it once per run and pixel (each reading
+// The technique's own samples along the picked ray as series for the inspector's plot (x = t along the
+// ray, y = integrand per unit length, sum of RGB, the axes of the reference's curve). slices.ray_planes:
+// one point per plane that was shaded, its L_air divided by its dt, as the shader computed it ("slices,
+// shaded") and as the accumulation format kept it ("slices, stored"). Empty when `out` has no such view.
+std::vector<viz::plot::Series> rayViewSeries(const viz::FrameOutput& out);
+
+// All of the above for one pixel of one run. The window reads it once per run and pixel (each reading
 // is a GL readback), not once per frame.
 struct PixelInspection {
     std::vector<PixelReading> readings;
     std::vector<std::string> rayViews;
+    std::vector<viz::plot::Series> series;
 };
 PixelInspection inspectRun(const viz::Technique& technique, const viz::FrameOutput& out, glm::ivec2 frame,
                            glm::ivec2 pixel);
@@ -37,10 +45,9 @@ PixelInspection inspectRun(const viz::Technique& technique, const viz::FrameOutp
 // value changed (the technique must run again for its per-ray intermediates).
 bool pickPixel(const viz::Technique& technique, viz::Settings& settings, glm::ivec2 pixel);
 
-// The ids of the intermediates in `out` that show the picked pixel's ray: those of a stage that reads
-// pick_x whose size is not the frame's (a walk, a voxel column, per-VPL terms). The inspector names them
-// so the user can open them in a view.
-std::vector<std::string> pickedRayViews(const viz::Technique& technique, const viz::FrameOutput& out,
-                                        glm::ivec2 frame);
+// The ids of the intermediates in `out` that show the picked pixel's ray (Intermediate::rayView: a walk, a
+// voxel column, per-VPL terms, the planes along it) of a technique with pick_x / pick_y. The inspector
+// names them so the user can open them in a view.
+std::vector<std::string> pickedRayViews(const viz::Technique& technique, const viz::FrameOutput& out);
 
 }  // namespace airlight

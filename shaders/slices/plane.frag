@@ -7,6 +7,9 @@
 // Terms compiled in by defines: SPOT_FALLOFF, COOKIE, SHADOW (nearest, or PCF), NOISE; CHANNEL_MASK
 // routes plane i's scalar to channel i mod 4; COUNT_OUTSIDE counts fragments outside the light frustum.
 // Output is scaled by uStoreScale (RGBA8 targets hold [0, 1]).
+// PICK_RAY (a separate draw of the same planes, scissored to the picked pixel, colour writes off): the
+// fragment there writes what it computed and did into its plane's record (slices.ray_planes;
+// pick_replay.* fills in the planes that made no fragment there).
 
 #include "common/host_device.glsl"
 #include "common/airlight.glsl"
@@ -43,6 +46,15 @@ layout(binding = 0, offset = 0) uniform atomic_uint uOutside;
 layout(binding = 0, offset = 4) uniform atomic_uint uShaded;
 uniform int uCountPass;
 #endif
+
+#ifdef PICK_RAY
+#include "slices/pick_record.glsl"
+uniform ivec2 uPickPixel;  // GL window coordinates of the picked pixel (row 0 at the bottom)
+uniform int uPickBase;     // this draw set's first record
+#endif
+// Shadow test results of the lights shade() evaluated for this fragment (the picked pixel's record).
+float gVisibilitySum = 0.0;
+float gVisibilityCount = 0.0;
 
 flat in float vDepth;  // s_i
 flat in int vPlane;
@@ -93,6 +105,8 @@ vec3 shade(GpuLight L, vec3 p, vec3 w, float t) {
 #ifdef SHADOW
     V = visibility(L, p);
 #endif
+    gVisibilitySum += V;
+    gVisibilityCount += 1.0;
     // Noise: two tileable layers projected from the light (spot / directional: its shadow map's clip xy;
     // point lights and VPLs: the eye-relative xz plane), scrolled apart.
 #ifdef NOISE
@@ -172,6 +186,13 @@ void main() {
     atomicCounterIncrement(uShaded);
 #endif
     float d = texelFetch(uDistance, ivec2(gl_FragCoord.xy), 0).r;
+#ifdef PICK_RAY
+    // The pick draw is scissored to the picked pixel; the test keeps the records right without it.
+    bool picked = ivec2(gl_FragCoord.xy) == uPickPixel;
+    int record = uPickBase + vPlane;
+    if (picked) gPick[record].where = vec4(float(vPlane), vDepth, t, uSpacing / dot(w, uForward));
+    if (picked && t > d) gPick[record].test = vec4(kPickBeyondSurface, -1.0, -1.0, d);  // V: not tested
+#endif
     // Beyond the first surface (or zfar) the ray has ended: the plane adds nothing there.
     if (t > d) discard;
 
@@ -197,5 +218,18 @@ void main() {
     oColor = scalar * mask;
 #else
     oColor = vec4(value, 0.0);
+#endif
+#ifdef PICK_RAY
+    if (picked) {
+        // V: the set's light, or the mean over the unbounded lights; channel: where the mask sent it.
+        float V = gVisibilityCount > 0.0 ? gVisibilitySum / gVisibilityCount : 1.0;
+#ifdef CHANNEL_MASK
+        float channel = float(vPlane & 3);
+#else
+        float channel = -1.0;
+#endif
+        gPick[record].test = vec4(kPickAdded, V, channel, d);
+        gPick[record].value = oColor;
+    }
 #endif
 }

@@ -2,6 +2,7 @@
 // rectangles of its views, and the views hold the rendered images.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -249,6 +250,41 @@ TEST_F(GuiCli, TheRayInspectorShowsTheTechniquesOwnViewOfThePixel) {
     EXPECT_LE(visible, 1.0);
     const auto& views = in.at("ray_views");
     EXPECT_NE(std::find(views.begin(), views.end(), "vsv.column"), views.end()) << views.dump();
+}
+
+// slices in the ray inspector: its per-ray views (the planes along the ray, a table and a chart) follow the
+// inspected pixel, and the plot shows one point per shaded plane, its L_air over its dt, as the table that
+// `airlight render --layer slices.ray_planes` writes for the same pixel holds them.
+TEST_F(GuiCli, TheRayInspectorPlotsTheSlicesPlanesAlongTheRay) {
+    const fs::path script = writeText("inspect_slices.txt", "hover final 0.52 0.6\nkey I\nframes 2\n");
+    const RunResult r = run("gui --scene grate --technique slices --size 40x30 --set planes=32 --script " +
+                            script.string() + " --screenshot " + path("inspect_slices.png").string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const nlohmann::json j = nlohmann::json::parse(readFile(path("inspect_slices.json")));
+    const auto& in = j.at("inspector");
+    const int x = in.at("pixel")[0].get<int>(), y = in.at("pixel")[1].get<int>();
+    const auto& views = in.at("ray_views");
+    for (const char* id : {"slices.ray_planes", "slices.ray_planes_chart"})
+        EXPECT_NE(std::find(views.begin(), views.end(), id), views.end()) << views.dump();
+    const auto& series = in.at("ray_series");
+    ASSERT_TRUE(series.contains("slices, stored")) << series.dump();
+    const auto& points = series.at("slices, stored");
+    ASSERT_EQ(run("render --scene grate --technique slices --size 40x30 --set planes=32 --set pick_x=" +
+                  std::to_string(x) + " --set pick_y=" + std::to_string(y) +
+                  " --layer slices.ray_planes --out " + path("planes.exr").string()).exitCode, 0);
+    const Image table = readImage(path("planes.exr").string());
+    ASSERT_EQ(table.channels, 4);
+    std::size_t k = 0;
+    for (int row = 0; row < table.height; ++row) {
+        if (table.at(1, row, 0) != 1.0f) continue;  // status 1: shaded and added
+        ASSERT_LT(k, points.size());
+        const double t = table.at(0, row, 2), dt = table.at(0, row, 3), lair = table.at(5, row, 2);
+        EXPECT_NEAR(points[k][0].get<double>(), t, 1e-6 * t);
+        EXPECT_NEAR(points[k][1].get<double>(), lair / dt, 1e-6 * std::abs(lair / dt) + 1e-12);
+        ++k;
+    }
+    EXPECT_GT(k, 0u) << "the inspected pixel lies in the spot's light";
+    EXPECT_EQ(k, points.size());
 }
 
 TEST_F(GuiCli, SteppingStopsAtAStageAndInsideItAtASubstep) {

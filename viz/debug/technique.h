@@ -82,6 +82,9 @@ struct Intermediate {
     bool orbit = false;
     // Plots of the same data, stacked top to bottom in the window's view (empty: the image is shown).
     std::vector<PlotData> plots{};
+    // Shows the picked pixel's ray (the technique's pick_x / pick_y): a walk, a voxel column, per-VPL
+    // terms, the planes along it. The ray inspector lists these by id.
+    bool rayView = false;
 };
 
 using Settings = std::map<std::string, double>;

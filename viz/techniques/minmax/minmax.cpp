@@ -853,6 +853,7 @@ private:
             "beta 0 shown)", ViewKind::Color,
             std::make_shared<Image>(minmax::traceView(readTreeRow(w.tree, row), coords[1], coords[2],
                                                       int(input.settings.at("trace_steps"))))));
+        out.intermediates.back().rayView = true;
     }
 
     std::vector<ParamInfo> mParams;

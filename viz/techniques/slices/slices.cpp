@@ -12,6 +12,7 @@
 #include "gl/buffer.h"
 #include "gl/framebuffer.h"
 #include "gl/program.h"
+#include "gl/readback.h"
 #include "gl/stage_clock.h"
 #include "gl/texture.h"
 #include "gl/vertex_array.h"
@@ -26,6 +27,7 @@
 #include "render/shadow_maps.h"
 #include "render/surface_pass.h"
 #include "scene/camera.h"
+#include "techniques/slices/ray_planes.h"
 #include "techniques/slices/slice_geometry.h"
 
 namespace viz {
@@ -42,6 +44,19 @@ constexpr const char* kFragments = "slices.fragments";
 constexpr const char* kPlaneMesh = "slices.plane_mesh";
 constexpr const char* kPlaneView = "slices.plane_view";
 constexpr const char* kAirlight = "slices.airlight";
+constexpr const char* kRayPlanes = "slices.ray_planes";
+constexpr const char* kRayPlanesChart = "slices.ray_planes_chart";
+// The pick replay target's width: each record's quad covers the rest of its row (work: count x width / 2
+// fragments); each further row is seeded with the accumulation at the end of the one before.
+constexpr int kReplayColumns = 64;
+
+// The picked pixel's record of one plane, as shaders/slices/pick_record.glsl lays it out (std430).
+struct PickRecord {
+    glm::vec4 where;  // plane i, view depth s_i, t along the ray, dt
+    glm::vec4 test;   // status (PickStatus), V (-1: not tested), channel (-1: all), surface distance d
+    glm::vec4 value;  // the fragment's output (stored units), before the blend quantises it
+};
+static_assert(sizeof(PickRecord) == 48);
 
 enum StageIndex { kShadowMapsIndex = 0, kSurfaceIndex, kPlanesIndex, kResolveIndex, kComposeIndex };
 
@@ -93,6 +108,18 @@ struct Terms {
     bool physical = true;
     bool spot = false, cookie = false, shadow = false, pcf = false, noise = false;
     bool mask = false, blur = false, clip = true, userClip = false, count = false, cubes = false;
+    bool pick = false;  // record the picked pixel's planes (slices.ray_planes)
+};
+
+// One draw set as the pick replay needs it again.
+struct PickSet {
+    int light = -1;  // index into Scene::lights, -1: the unbounded lights together
+    int base = 0;    // first record
+    int drawn = 0;
+    bool clipLight = false;
+    float depthFar = 0.0f, spacing = 0.0f, drawNear = 0.0f;
+    glm::vec2 boxMin{0.0f}, boxMax{0.0f};
+    glm::mat4 volume{1.0f};
 };
 
 class SlicesTechnique final : public Technique {
@@ -133,6 +160,11 @@ public:
             {"mesh_yaw", "mesh_view: orbit camera's angle about the vertical (degrees)", 35, -360, 360, false},
             {"mesh_pitch", "mesh_view: orbit camera's angle above the horizon (degrees)", 25, -89, 89, false},
             {"mesh_zoom", "mesh_view: orbit camera's zoom (1 fits the scene and the camera)", 1, 0.05, 50, false},
+            {"pick_x", "picked pixel (column, 0 = left) whose planes slices.ray_planes lists; -1: image centre", -1,
+             -1, 16384, true},
+            {"pick_y", "picked pixel (row, 0 = top); -1: image centre", -1, -1, 16384, true},
+            {"ray_planes", "1: record the picked pixel's planes (slices.ray_planes: the planes drawn again at that "
+             "pixel alone, a replay of its blend, a readback); 0: off", 1, 0, 1, true},
             forceFeaturesParam(),
         };
         for (ParamInfo& p : render::SceneViewPasses::params()) mParams.push_back(std::move(p));
@@ -144,8 +176,8 @@ public:
              {"planes", "planes_drawn", "weighting", "accum", "accum_range", "shadow", "spot_falloff", "cookie",
               "noise", "noise_tiles", "time", "falloff", "ambient", "artistic_units", "clip", "user_clip",
               "clip_y_min", "clip_y_max", "directional_box", "distance_scale", "count_fragments", "mesh_view",
-              "mesh_yaw", "mesh_pitch", "mesh_zoom", "force_features"},
-             {kAccum, kPlane, kPlaneMesh, kPlaneView, kFragments}, 128, "planes_drawn", "planes"},
+              "mesh_yaw", "mesh_pitch", "mesh_zoom", "pick_x", "pick_y", "ray_planes", "force_features"},
+             {kAccum, kPlane, kPlaneMesh, kPlaneView, kFragments, kRayPlanes, kRayPlanesChart}, 128, "planes_drawn", "planes"},
             {kStageResolve, "Resolve", "accumulation -> L_air: undo the 8-bit scale, sum the mask channels, blur",
              {"blur"}, {kAirlight}, 1},
             render::SceneViewPasses::composeStage("slices"),
@@ -171,10 +203,12 @@ public:
                   : std::vector<std::pair<std::string, double>>{{"rgba8", 0}, {"rgba8-mask", 1}, {"rgba16f", 2}};
         for (const auto& [name, code] : accums)
             sweep.push_back({"planes=256 " + name, {{"planes", 256.0}, {"accum", code}}});
+        // The report times the technique, not the inspector's recording of one pixel.
+        for (QualitySetting& q : sweep) q.settings["ray_planes"] = 0.0;
         return sweep;
     }
 
-    Settings stiffSettings() const override { return {{"planes", 512.0}}; }
+    Settings stiffSettings() const override { return {{"planes", 512.0}, {"ray_planes", 0.0}}; }
 
     // Measured by `airlight report --suite stiff` at 33x25 (figures in README.md), bounds about twice that.
     std::optional<StiffBound> stiffBound(const std::string& caseClass) const override {
@@ -250,6 +284,12 @@ public:
         p.features.push_back({"DISTANCE_SCALED_PLANES", scaled,
                               scaled ? "N shrinks beyond distance_scale from the light volume (spacing compensates)"
                                      : "distance_scale=0: always N planes"});
+        p.features.push_back({"PICK_RAY", t.pick,
+                              t.pick ? "the picked pixel's planes recorded (slices.ray_planes): the planes drawn "
+                                       "again scissored to that pixel (PICK_RAY shader, colour writes off), a "
+                                       "replay of its blend in the accumulation's format, one readback; the "
+                                       "frame's own draw is unchanged (README: what it costs)"
+                                     : "ray_planes=0: none of it runs, costs nothing"});
         p.features.push_back({"USER_CLIP", t.userClip, t.userClip ? "planes y >= clip_y_min, y <= clip_y_max"
                                                                  : "user_clip=0"});
         p.features.push_back({"SHADOW_MAPS_CUBE", t.cubes,
@@ -321,6 +361,7 @@ public:
         mQueryCounts[0] = mQueryCounts[1] = 0.0;
         mPlanesUsed.clear();
         mPolygons.clear();
+        mRayPlanes.reset();
         if (out.plan.stages[kPlanesIndex].runs) drawPlanes(scene, input, t);
         out.timing.stages.push_back({kStagePlanes, clock.endMilliseconds()});
         const int n = mPlanesUsed.empty() ? int(s.at("planes")) : mPlanesUsed.front();
@@ -357,6 +398,36 @@ public:
                 "", ViewKind::Color, 0.0f, 1.0f, mMeshView.texture());
             view.orbit = true;  // the window turns it by dragging
             out.intermediates.push_back(std::move(view));
+        }
+        if (mRayPlanes) {
+            Intermediate i;
+            i.id = kRayPlanes;
+            i.label = "Planes along pixel (" + std::to_string(mPickPixel.x) + ", " + std::to_string(mPickPixel.y) +
+                      ")'s ray";
+            i.note = "one row per plane drawn (sets of lights in turn, back to front); columns of rgba: 0 (plane i, "
+                     "view depth s, t, dt), 1 (status: 1 added, 2 beyond the surface d, 3 clipped by the light "
+                     "frustum, 4 by a user plane, 5 outside the plane's quad; V (-1 untested), mask channel, d), 2 "
+                     "shader output, 3 added after the blend's quantisation, 4 accumulation after it (stored "
+                     "units), 5 (light, set, L_air added, unquantised L_air)";
+            i.units = "stored value";
+            i.kind = ViewKind::Buffer;
+            i.image = mRayPlanes;
+            i.extent = {mRayPlanes->width, mRayPlanes->height, 1};
+            i.rayView = true;
+            out.intermediates.push_back(std::move(i));
+            Intermediate chart;
+            chart.id = kRayPlanesChart;
+            chart.label = "Planes along pixel (" + std::to_string(mPickPixel.x) + ", " +
+                          std::to_string(mPickPixel.y) + ")'s ray (chart)";
+            chart.note = "nearest plane left, t grows to the right; bars: each plane's L_air as shaded (grey) and "
+                         "as stored (orange), scaled to the largest; strip: green added, blue beyond the surface, "
+                         "grey clipped by the light frustum, purple by a user plane, black outside the quad; "
+                         "bottom: shadow test V (white lit, black shadowed, blue untested)";
+            chart.kind = ViewKind::Color;
+            chart.image = std::make_shared<Image>(slices::rayPlanesChart(*mRayPlanes));
+            chart.extent = {chart.image->width, chart.image->height, 1};
+            chart.rayView = true;
+            out.intermediates.push_back(std::move(chart));
         }
         if (t.count) {
             std::uint32_t counts[2] = {0, 0};
@@ -420,13 +491,15 @@ private:
         t.clip = s.at("clip") != 0.0 && (hasSpot || boxedDirectional || force);
         t.userClip = s.at("user_clip") != 0.0;
         t.count = s.at("count_fragments") != 0.0;
+        t.pick = s.at("ray_planes") != 0.0;
         t.cubes = render::hasLightOfType(scene, scene::LightType::Point) ||
                   render::hasLightOfType(scene, scene::LightType::Area) || force;
         return t;
     }
 
     // The defines of the plane shader, in a fixed order: also the cache key and what plan() reports.
-    static gl::ShaderDefines planeDefines(const Terms& t) {
+    // pick: the picked pixel's recording draw (PICK_RAY, no fragment counting); the frame's draw is without.
+    static gl::ShaderDefines planeDefines(const Terms& t, bool pick = false) {
         gl::ShaderDefines d;
         if (t.physical) d.push_back({"PHYSICAL", "1"});
         if (t.spot) d.push_back({"SPOT_FALLOFF", "1"});
@@ -436,16 +509,17 @@ private:
         if (t.pcf) d.push_back({"PCF", "1"});
         if (t.noise) d.push_back({"NOISE", "1"});
         if (t.mask) d.push_back({"CHANNEL_MASK", "1"});
-        if (t.count) d.push_back({"COUNT_OUTSIDE", "1"});
+        if (t.count && !pick) d.push_back({"COUNT_OUTSIDE", "1"});
         if (t.clip) d.push_back({"CLIP", "1"});
         if (t.userClip) d.push_back({"USER_CLIP", "1"});
+        if (pick) d.push_back({"PICK_RAY", "1"});
         // Cube maps serve point lights and area-light VPLs only.
         if (!t.cubes) d.push_back({"SHADOW_NO_CUBE", "1"});
         return d;
     }
-    static std::string permutationKey(const Terms& t) {
+    static std::string permutationKey(const Terms& t, bool pick = false) {
         std::string key;
-        for (const auto& [name, value] : planeDefines(t)) key += (key.empty() ? "" : ";") + name;
+        for (const auto& [name, value] : planeDefines(t, pick)) key += (key.empty() ? "" : ";") + name;
         return key;
     }
 
@@ -470,13 +544,13 @@ private:
         return 1.0;
     }
 
-    const gl::Program& planeProgram(const Terms& t) {
-        const std::string key = permutationKey(t);
+    const gl::Program& planeProgram(const Terms& t, bool pick) {
+        const std::string key = permutationKey(t, pick);
         auto it = mPlanePrograms.find(key);
         if (it == mPlanePrograms.end()) {
             it = mPlanePrograms
                      .emplace(key, gl::Program::compile({.stages = {"slices/plane.vert", "slices/plane.frag"},
-                                                         .defines = planeDefines(t),
+                                                         .defines = planeDefines(t, pick),
                                                          .label = "slices.plane_program"}))
                      .first;
         }
@@ -493,36 +567,42 @@ private:
         const Settings& s = input.settings;
         const scene::Camera& cam = scene.camera;
         const int n = int(s.at("planes"));
-        const gl::Program& program = planeProgram(t);
+        const gl::Program& program = planeProgram(t, false);
+        // The pick draw's program: the same shader with PICK_RAY; both get every uniform.
+        const gl::Program* pick = t.pick ? &planeProgram(t, true) : nullptr;
+        auto setBoth = [&](const char* name, auto value) {
+            program.set(name, value);
+            if (pick) pick->set(name, value);
+        };
         mPlanesUsed.clear();
         mPolygons.clear();
         const CameraBasis basis{cam.forward, scene::cameraRight(cam), cam.up};
 
         program.use();
-        program.set("uViewProj", render::eyeRelativeViewProjection(cam, input.width, input.height));
-        program.set("uRight", glm::vec3(basis.right));
-        program.set("uUp", glm::vec3(basis.up));
-        program.set("uForward", glm::vec3(basis.forward));
-        program.set("uSize", glm::vec2(float(input.width), float(input.height)));
-        program.set("uTanHalf", float(std::tan(cam.yfov * 0.5)));
-        program.set("uAspect", float(scene::aspectOf(cam, input.width, input.height)));
-        program.set("uSigmaS", float(scene.medium.sigma_s));
-        program.set("uSigmaT", float(scene.medium.sigma_t()));
-        program.set("uG", float(scene.medium.g));
+        setBoth("uViewProj", render::eyeRelativeViewProjection(cam, input.width, input.height));
+        setBoth("uRight", glm::vec3(basis.right));
+        setBoth("uUp", glm::vec3(basis.up));
+        setBoth("uForward", glm::vec3(basis.forward));
+        setBoth("uSize", glm::vec2(float(input.width), float(input.height)));
+        setBoth("uTanHalf", float(std::tan(cam.yfov * 0.5)));
+        setBoth("uAspect", float(scene::aspectOf(cam, input.width, input.height)));
+        setBoth("uSigmaS", float(scene.medium.sigma_s));
+        setBoth("uSigmaT", float(scene.medium.sigma_t()));
+        setBoth("uG", float(scene.medium.g));
         mLastStoreScale = storeScale(t, s);
-        program.set("uStoreScale", float(mLastStoreScale));
-        program.set("uArtisticUnits", float(s.at("artistic_units")));
-        program.set("uAmbient", float(s.at("ambient") != 0.0 ? kPaperAmbient : 0.0));
-        program.set("uFalloff", int(s.at("falloff")));
-        program.set("uNoiseTiles", float(s.at("noise_tiles")));
+        setBoth("uStoreScale", float(mLastStoreScale));
+        setBoth("uArtisticUnits", float(s.at("artistic_units")));
+        setBoth("uAmbient", float(s.at("ambient") != 0.0 ? kPaperAmbient : 0.0));
+        setBoth("uFalloff", int(s.at("falloff")));
+        setBoth("uNoiseTiles", float(s.at("noise_tiles")));
         // Two layers scrolling in different directions (slowly: a few hundredths of a tile per second).
         const float time = float(s.at("time"));
-        program.set("uScroll", glm::vec4(0.031f * time, 0.017f * time, -0.023f * time, 0.029f * time));
-        program.set("uPlaneWeight", 1.0f);
+        setBoth("uScroll", glm::vec4(0.031f * time, 0.017f * time, -0.023f * time, 0.029f * time));
+        setBoth("uPlaneWeight", 1.0f);
         // User planes: world y >= clip_y_min and y <= clip_y_max, written in eye-relative space.
         const double eyeY = cam.position.y;
-        program.set("uUserPlane0", glm::vec4(0, 1, 0, float(eyeY - s.at("clip_y_min"))));
-        program.set("uUserPlane1", glm::vec4(0, -1, 0, float(s.at("clip_y_max") - eyeY)));
+        setBoth("uUserPlane0", glm::vec4(0, 1, 0, float(eyeY - s.at("clip_y_min"))));
+        setBoth("uUserPlane1", glm::vec4(0, -1, 0, float(s.at("clip_y_max") - eyeY)));
 
         mView.lights().bind();
         mView.shadows().bind();
@@ -570,8 +650,20 @@ private:
                 unbounded = true;
         }
         if (unbounded) sets.push_back({-1, cameraVolume(cam, input.width, input.height)});
-        program.set("uLightCount", mView.lights().count());
-        program.set("uBoxedDirectional", boxedDirectional ? 1 : 0);
+        setBoth("uLightCount", mView.lights().count());
+        setBoth("uBoxedDirectional", boxedDirectional ? 1 : 0);
+        // The picked pixel's records: at most N per draw set (distance scaling only lowers the count).
+        mPickSets.clear();
+        mPickPixel = pickedPixel(input);
+        int pickBase = 0;
+        if (t.pick) {
+            const std::size_t need = std::max<std::size_t>(1, sets.size() * std::size_t(n)) * sizeof(PickRecord);
+            if (!mPickRecords || mPickRecords.bytes() < need)
+                mPickRecords = gl::Buffer::create({.bytes = need, .label = "slices.pick_records"});
+            mPickRecords.clearZero();
+            mPickRecords.bindBase(GL_SHADER_STORAGE_BUFFER, render::hd::kFirstFreeSsboBinding);
+            pick->set("uPickPixel", glm::ivec2(mPickPixel.x, input.height - 1 - mPickPixel.y));
+        }
 
         for (const DrawSet& set : sets) {
             const bool boxed = set.light >= 0;
@@ -586,15 +678,22 @@ private:
             mPlanesUsed.push_back(planes);
             for (auto& poly : planePolygons(range, basis, set.volume, drawn, t.clip && boxed))
                 mPolygons.push_back(std::move(poly));
-            program.set("uClipLight", boxed ? 1 : 0);
-            program.set("uFractionOfMaxShells", float(double(planes) / kPaperMaxPlanes));
-            program.set("uLight", set.light);
-            program.set("uLightMatrix", glm::mat4(set.volume));
-            program.set("uBoxMinXY", glm::vec2(range.minXY));
-            program.set("uBoxMaxXY", glm::vec2(range.maxXY));
-            program.set("uDepthFar", float(range.far));
-            program.set("uSpacing", float(range.spacing));
-            program.set("uDrawNear", float(range.drawNear));
+            setBoth("uClipLight", boxed ? 1 : 0);
+            setBoth("uFractionOfMaxShells", float(double(planes) / kPaperMaxPlanes));
+            setBoth("uLight", set.light);
+            setBoth("uLightMatrix", glm::mat4(set.volume));
+            setBoth("uBoxMinXY", glm::vec2(range.minXY));
+            setBoth("uBoxMaxXY", glm::vec2(range.maxXY));
+            setBoth("uDepthFar", float(range.far));
+            setBoth("uSpacing", float(range.spacing));
+            setBoth("uDrawNear", float(range.drawNear));
+            if (t.pick) {
+                mPickSets.push_back({boxed ? lights[std::size_t(set.light)].info.w : -1, pickBase, drawn,
+                                     t.clip && boxed, float(range.far), float(range.spacing), float(range.drawNear),
+                                     glm::vec2(range.minXY), glm::vec2(range.maxXY), glm::mat4(set.volume)});
+                pick->set("uPickBase", pickBase);
+                pickBase += drawn;
+            }
             // Back to front: plane 0 is the farthest, so the first k planes are the k farthest.
             mFramebuffer.attachColor(0, mAccum);
             mFramebuffer.checkComplete();
@@ -604,12 +703,145 @@ private:
             mFramebuffer.attachColor(0, mPlane);
             mFramebuffer.bind();
             glDrawArrays(GL_TRIANGLES, 6 * (drawn - 1), 6);
+            if (pick) {
+                // The picked pixel alone with colour writes off: the same planes through the same shader
+                // (PICK_RAY), which records what each plane computes there. The frame pays one pixel.
+                const glm::ivec2 glPixel(mPickPixel.x, input.height - 1 - mPickPixel.y);
+                pick->use();
+                glEnable(GL_SCISSOR_TEST);
+                glScissor(glPixel.x, glPixel.y, 1, 1);
+                glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+                glDrawArrays(GL_TRIANGLES, 0, 6 * drawn);
+                glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+                glDisable(GL_SCISSOR_TEST);
+                program.use();
+            }
             if (t.count) countFragments(program, drawn);
         }
-        glDisable(GL_BLEND);
         for (int i = 0; i < 8; ++i) glDisable(GLenum(GL_CLIP_DISTANCE0 + i));
+        if (t.pick) replayPick(input, basis, t);
+        glDisable(GL_BLEND);
         glMemoryBarrier(GL_ATOMIC_COUNTER_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
         gl::Framebuffer::bindDefault();
+    }
+
+    glm::ivec2 pickedPixel(const FrameInput& input) const {
+        int x = int(input.settings.at("pick_x")), y = int(input.settings.at("pick_y"));
+        if (x < 0) x = input.width / 2;
+        if (y < 0) y = input.height / 2;
+        return {std::min(x, input.width - 1), std::min(y, input.height - 1)};
+    }
+
+    // The picked pixel's blend replayed (pick_replay.*): every record in drawing order (draw sets in turn)
+    // over a target in the accumulation's format, so texel k holds the pixel's accumulation after records
+    // 0..k as this blend quantises it. Then the records and the replay are read back into mRayPlanes.
+    // Runs with the plane pass's blend state (dst + src).
+    void replayPick(const FrameInput& input, const CameraBasis& basis, const Terms& t) {
+        mRayPlanes.reset();
+        if (mPickSets.empty()) return;
+        // The plane pass's SSBO writes, visible to the replay's reads.
+        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+        const int count = mPickSets.back().base + mPickSets.back().drawn;
+        if (count <= 0) return;
+        const int columns = std::min(count, kReplayColumns);
+        const int rows = (count + columns - 1) / columns;
+        const GLenum format = GLenum(mAccum.format());
+        if (!mReplay || mReplay.size().x != columns || mReplay.size().y != rows || GLenum(mReplay.format()) != format)
+            mReplay = gl::Texture::create(
+                {.target = GL_TEXTURE_2D, .format = format, .size = {columns, rows, 1}, .label = "slices.pick_replay"});
+        const float zero[4] = {0, 0, 0, 0};
+        glClearTexImage(mReplay.id(), 0, GL_RGBA, GL_FLOAT, zero);
+        if (!mReplayProgram)
+            mReplayProgram = gl::Program::compile(
+                {.stages = {"slices/pick_replay.vert", "slices/pick_replay.frag"}, .label = "slices.pick_replay"});
+        const gl::Program& program = mReplayProgram;
+        const scene::Camera& cam = input.scene->camera;
+        program.use();
+        program.set("uRows", rows);
+        program.set("uColumns", columns);
+        program.set("uSeedRow", -1);
+        program.set("uPickPixel", glm::ivec2(mPickPixel.x, input.height - 1 - mPickPixel.y));
+        program.set("uSize", glm::vec2(float(input.width), float(input.height)));
+        program.set("uTanHalf", float(std::tan(cam.yfov * 0.5)));
+        program.set("uAspect", float(scene::aspectOf(cam, input.width, input.height)));
+        program.set("uForward", glm::vec3(basis.forward));
+        program.set("uRight", glm::vec3(basis.right));
+        program.set("uUp", glm::vec3(basis.up));
+        program.set("uUserClip", t.userClip ? 1 : 0);
+        const double eyeY = cam.position.y;
+        program.set("uUserPlane0", glm::vec4(0, 1, 0, float(eyeY - input.settings.at("clip_y_min"))));
+        program.set("uUserPlane1", glm::vec4(0, -1, 0, float(input.settings.at("clip_y_max") - eyeY)));
+        mView.surface().distance().bindUnit(0);
+        mReplay.bindUnit(1);
+        mFramebuffer.attachColor(0, mReplay);
+        mFramebuffer.checkComplete();
+        mFramebuffer.bind();
+        glViewport(0, 0, columns, rows);
+        mVao.bind();
+        for (int row = 0; row < rows; ++row) {
+            const int k0 = row * columns, k1 = std::min(count, k0 + columns);
+            if (row > 0) {
+                // The row starts from the accumulation at the end of the row before.
+                glTextureBarrier();
+                program.set("uSeedRow", row);
+                glDrawArrays(GL_TRIANGLES, 0, 6);
+                program.set("uSeedRow", -1);
+            }
+            for (const PickSet& ps : mPickSets) {
+                const int j0 = std::max(k0, ps.base) - ps.base, j1 = std::min(k1, ps.base + ps.drawn) - ps.base;
+                if (j0 >= j1) continue;
+                program.set("uPickBase", ps.base);
+                program.set("uDepthFar", ps.depthFar);
+                program.set("uSpacing", ps.spacing);
+                program.set("uDrawNear", ps.drawNear);
+                program.set("uClipLight", ps.clipLight ? 1 : 0);
+                program.set("uLightMatrix", ps.volume);
+                program.set("uBoxMinXY", ps.boxMin);
+                program.set("uBoxMaxXY", ps.boxMax);
+                glDrawArrays(GL_TRIANGLES, 6 * j0, 6 * (j1 - j0));
+            }
+        }
+        glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+        std::vector<PickRecord> records(static_cast<std::size_t>(count));
+        mPickRecords.download(0, records.size() * sizeof(PickRecord), records.data());
+        const Image replay = gl::readTexture(mReplay);  // row 0 at the top: GL row height - 1
+        mRayPlanes = rayPlaneTable(records, replay, t);
+    }
+
+    // slices.ray_planes as a table: one row per record, RayPlaneColumn columns of four channels.
+    std::shared_ptr<Image> rayPlaneTable(const std::vector<PickRecord>& records, const Image& replay,
+                                         const Terms& t) const {
+        using namespace slices;
+        auto table = std::make_shared<Image>(int(kRayPlaneColumns), int(std::max<std::size_t>(records.size(), 1)), 4);
+        const float radianceScale =
+            float(1.0 / mLastStoreScale) * (t.mask ? (mMaskColor.r + mMaskColor.g + mMaskColor.b) : 1.0f);
+        glm::vec4 before(0.0f);  // the accumulation runs on from one draw set into the next
+        for (std::size_t r = 0; r < mPickSets.size(); ++r) {
+            const PickSet& ps = mPickSets[r];
+            for (int i = 0; i < ps.drawn; ++i) {
+                const int row = ps.base + i;
+                const PickRecord& rec = records[std::size_t(row)];
+                glm::vec4 after(0.0f);
+                for (int c = 0; c < 4; ++c)
+                    after[c] = replay.at(row % replay.width, replay.height - 1 - row / replay.width, c);
+                const glm::vec4 added = after - before;
+                before = after;
+                auto put = [&](int column, glm::vec4 v) {
+                    for (int c = 0; c < 4; ++c) table->at(column, row, c) = v[c];
+                };
+                put(kColWhere, rec.where);
+                put(kColTest, rec.test);
+                put(kColValue, rec.value);
+                put(kColAdded, added);
+                put(kColAfter, after);
+                // L_air added and the unquantised value, decoded as resolve.frag decodes (sum of rgb).
+                const float addedSum = t.mask ? added.r + added.g + added.b + added.a : added.r + added.g + added.b;
+                const float valueSum =
+                    t.mask ? rec.value.r + rec.value.g + rec.value.b + rec.value.a : rec.value.r + rec.value.g + rec.value.b;
+                put(kColSet, {float(ps.light), float(r), addedSum * radianceScale, valueSum * radianceScale});
+            }
+        }
+        return table;
     }
 
     // The drawn planes as polygons (rows: planes back to front, light after light; columns: vertices;
@@ -696,6 +928,13 @@ private:
     std::vector<std::vector<glm::dvec3>> mPolygons;       // drawn planes, clipped (eye-relative world)
     double mQueryCounts[2] = {0.0, 0.0};  // occlusion queries: outside the frustum, all
     glm::vec3 mMaskColor{1.0f};
+    // The picked pixel's planes (slices.ray_planes).
+    gl::Buffer mPickRecords;
+    gl::Texture mReplay;
+    gl::Program mReplayProgram;
+    std::vector<PickSet> mPickSets;
+    glm::ivec2 mPickPixel{0};
+    std::shared_ptr<Image> mRayPlanes;
 };
 
 }  // namespace

@@ -403,12 +403,14 @@ public:
                              std::to_string(shown),
                 "its 128 phi bits: 1 shadowed, 0 lit, 0.5 beyond the fragment (not read)", ViewKind::BitField,
                 columnImage(scene, input, shown, cells, pickX, pickY)));
+            out.intermediates.back().rayView = true;
             const std::shared_ptr<Image> perVpl = perVplImage(count);
             out.intermediates.push_back(vsv::cpuIntermediate(
                 kPerVpl, "Per-VPL airlight of pixel (" + std::to_string(pickX) + ", " + std::to_string(pickY) + ")",
                 "x = VPL index: its unscaled contribution to L_air (only VPLs this pixel gathered)", ViewKind::Color,
                 perVpl, 0.0f, 0.0f));
             out.intermediates.back().plots = {perVplPlot(*perVpl)};
+            out.intermediates.back().rayView = true;
             out.intermediates.push_back(vsv::cpuIntermediate(
                 kInterleave, "Interleaving pattern", "which ninth of the VPLs each pixel gathers (0..8 / 8)",
                 ViewKind::Scalar, interleaveImage(input.width, input.height, gatherMode)));

@@ -288,7 +288,7 @@ public:
             if (featureEnabled(out.plan, "AREA_LIGHTS_BY_IVSV")) addAreaLights(input);
         }
         out.timing.stages.push_back({kStageGather, clock.endMilliseconds()});
-        if (!lights.empty())
+        if (!lights.empty()) {
             out.intermediates.push_back(cpuIntermediate(
                 kColumn, "Voxel column of pixel (" + std::to_string(pickX) + ", " + std::to_string(pickY) + ")",
                 "the 128 phi bits its eye ray reads; top row as voxelized (1 occluder), bottom row after the scan "
@@ -296,6 +296,8 @@ public:
                 ViewKind::BitField,
                 columnImage(scene, input, lights[std::size_t(shown)], grids[std::size_t(shown)], shown, pickX,
                             pickY)));
+            out.intermediates.back().rayView = true;
+        }
         out.intermediates.push_back(render::textureIntermediate(
             kAirlight, "L_air", "single-scattered light reaching the eye", "radiance", ViewKind::Color, 0.0f, 1.0f,
             mAirlight));
