@@ -8,7 +8,8 @@
 //                        over a few frames, release (pans a zoomed view, turns an orbit view, ...)
 //   key NAME             press a key: Tab, Enter, Escape, Space, Left, Right, Up, Down, PageUp,
 //                        PageDown, F1-F12, 0-9,
-//                        A-Z, [ and ], optionally after Shift+ and/or Ctrl+ (Shift+S)
+//                        A-Z, [ and ], , and . (previous / next layer), optionally after Shift+
+//                        and/or Ctrl+ (Shift+S)
 //   frames N             let N frames pass
 //   screenshot PATH      write the window (PNG) and its sidecar JSON now
 #pragma once
