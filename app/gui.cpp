@@ -2291,29 +2291,52 @@ private:
         }
     }
 
-    // Technique markers: data uv (row 0 = the first row stored) -> the view's image uv -> window.
+    // Technique markers: data uv (row 0 = the first row stored; a GL texture's row 0, shown at the bottom,
+    // also when the pane shows a layer read back) -> the view's image uv -> window. Marks of another layer
+    // (cube face, array layer) than the one shown are left out.
     void drawMarkers(DrawList& dl, const ViewState& v, const std::vector<viz::ViewMarker>& marks) {
         const auto toWindow = [&](glm::vec2 data) {
-            const glm::dvec2 uv{data.x, v.pane.flipY ? 1.0 - double(data.y) : double(data.y)};
+            const glm::dvec2 uv{data.x, v.pane.glRows ? 1.0 - double(data.y) : double(data.y)};
             return v.image.min + glm::vec2(v.transform.uvToPane(uv)) * v.image.size();
         };
         dl.pushClip(v.image);
+        std::vector<Rect> placed;  // labels drawn so far
+        glm::vec4 colour(0.0f);
+        float width = 1.0f;
         for (std::size_t i = 0; i < marks.size(); ++i) {
+            if (marks[i].layer >= 0 && marks[i].layer != v.pane.layer) continue;
             const glm::vec2 a = toWindow(marks[i].from), b = toWindow(marks[i].to);
-            const glm::vec4 colour = i == 0 ? glm::vec4(0.2f, 1.0f, 1.0f, 0.9f) : glm::vec4(1.0f, 0.85f, 0.2f, 1.0f);
+            // The first mark thin cyan, the others yellow; an unlabelled one continues the previous (a
+            // polyline).
+            if (i == 0 || !marks[i].label.empty()) {
+                colour = i == 0 ? glm::vec4(0.2f, 1.0f, 1.0f, 0.9f) : glm::vec4(1.0f, 0.85f, 0.2f, 1.0f);
+                width = i == 0 ? 1.0f : 2.0f;
+            }
             if (a == b) {
                 crosshair(dl, a, v.image);
             } else {
                 dl.line(a, b, 3.0f * mScale, {0.0f, 0.0f, 0.0f, 0.6f});
-                dl.line(a, b, (i == 0 ? 1.0f : 2.0f) * mScale, colour);
+                dl.line(a, b, width * mScale, colour);
             }
             const float line = mFont->lineHeight();
             const glm::vec2 at{std::max(std::min(a.x, b.x), v.image.min.x) + 4.0f * mScale,
                                std::min(a.y, b.y) - line - 2.0f * mScale + float(i) * 0.0f};
-            const glm::vec2 labelAt{i == 0 ? at.x : std::max(a.x, b.x) + 4.0f * mScale,
-                                    std::clamp(i == 0 ? at.y : std::max(a.y, b.y) + 2.0f * mScale, v.image.min.y,
-                                               v.image.max.y - line)};
-            dl.rect({labelAt - 1.0f, labelAt + glm::vec2(mFont->measure(marks[i].label) + 2.0f, line)}, {0.0f, 0.0f, 0.0f, 0.6f});
+            if (marks[i].label.empty()) continue;  // a piece of a polyline labelled once
+            // A label that would run past the image's right edge moves left to end there; one that would
+            // cover a label already placed moves down a line (marks close together, e.g. a ray's crossings).
+            const float labelWidth = mFont->measure(marks[i].label);
+            const float labelX = i == 0 ? at.x : std::max(a.x, b.x) + 4.0f * mScale;
+            glm::vec2 labelAt{std::max(v.image.min.x, std::min(labelX, v.image.max.x - labelWidth - 2.0f)),
+                              std::clamp(i == 0 ? at.y : std::max(a.y, b.y) + 2.0f * mScale, v.image.min.y,
+                                         v.image.max.y - line)};
+            const auto overlaps = [&](const Rect& r) {
+                return labelAt.x < r.max.x && labelAt.x + labelWidth > r.min.x && labelAt.y < r.max.y &&
+                       labelAt.y + line > r.min.y;
+            };
+            for (int tries = 0; tries < 8 && std::any_of(placed.begin(), placed.end(), overlaps); ++tries)
+                labelAt.y += line + 1.0f;
+            placed.push_back({labelAt, labelAt + glm::vec2(labelWidth, line)});
+            dl.rect({labelAt - 1.0f, labelAt + glm::vec2(labelWidth + 2.0f, line)}, {0.0f, 0.0f, 0.0f, 0.6f});
             dl.textClipped(labelAt, marks[i].label, colour, v.image.max.x);
         }
         dl.popClip();
@@ -2493,7 +2516,8 @@ private:
         if (mLinkedPixel && !isScreenSpace(v) && v.pane.texture != 0) {
             nlohmann::json marks = nlohmann::json::array();
             for (const viz::ViewMarker& mk : markersFor(v))
-                marks.push_back({{"from", {mk.from.x, mk.from.y}}, {"to", {mk.to.x, mk.to.y}}, {"label", mk.label}});
+                marks.push_back({{"from", {mk.from.x, mk.from.y}}, {"to", {mk.to.x, mk.to.y}}, {"label", mk.label},
+                                 {"layer", mk.layer}});
             j["markers"] = marks;
         }
         return j;

@@ -146,6 +146,7 @@ void makePane(PaneImage& pane, const viz::Intermediate& in, int layer) {
     if (target == GL_TEXTURE_2D && channels > 0) {
         pane.texture = in.glTexture;
         pane.flipY = true;
+        pane.glRows = true;
         pane.channels = channels;
         GLint w = 0, h = 0;
         glGetTextureLevelParameteriv(in.glTexture, 0, GL_TEXTURE_WIDTH, &w);
@@ -153,6 +154,7 @@ void makePane(PaneImage& pane, const viz::Intermediate& in, int layer) {
         pane.size = {w, h};
         return;
     }
+    pane.glRows = true;
     try {
         uploadImage(pane, viz::gl::readTexture(in.glTexture, 0, pane.layer));
     } catch (const std::exception& e) {

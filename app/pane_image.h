@@ -37,6 +37,9 @@ struct PaneImage {
     GLuint texture = 0;   // borrowed (technique's) or `owned`
     viz::gl::Texture owned;
     bool flipY = false;   // true for textures rendered by GL (row 0 at the bottom)
+    // The data's rows are a GL texture's (row 0 at the bottom), shown directly (flipY) or read back
+    // (a layer of an array or cube, rows flipped by the readback): technique marks use these rows.
+    bool glRows = false;
     int channels = 4;
     glm::ivec2 size{0};
     int layer = 0, layers = 1;

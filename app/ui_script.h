@@ -11,7 +11,8 @@
 //                        the centre of a view or widget
 //   key NAME             press a key: Tab, Enter, Escape, Space, Left, Right, Up, Down, PageUp,
 //                        PageDown, F1-F12, 0-9,
-//                        A-Z, [ and ], optionally after Shift+ and/or Ctrl+ (Shift+S)
+//                        A-Z, [ and ], , and . (previous / next layer), optionally after Shift+
+//                        and/or Ctrl+ (Shift+S)
 //   frames N             let N frames pass
 //   screenshot PATH      write the window (PNG) and its sidecar JSON now
 #pragma once

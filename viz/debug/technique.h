@@ -92,10 +92,13 @@ using Settings = std::map<std::string, double>;
 // A mark a technique can draw in one of its algorithm-space intermediates for a screen pixel (the
 // window's linked cursors: the epipolar row of the pixel in a rectified map, say). A segment from
 // `from` to `to` (equal: a point) in the intermediate's data uv: [0,1]^2 over its columns and its rows
-// as stored (row 0 = the first row; a GL texture shows it at the bottom).
+// as stored (row 0 = the first row; a GL texture, and each layer of a GL array or cube map, shows it at
+// the bottom).
 struct ViewMarker {
     glm::vec2 from{0.0f}, to{0.0f};
     std::string label;  // short, e.g. "slice 37"
+    // The layer (array layer, cube face 0..5 = +X -X +Y -Y +Z -Z) the mark belongs to; -1: every layer.
+    int layer = -1;
 };
 
 // Which stages run for a scene and settings, and for each one left out, why.

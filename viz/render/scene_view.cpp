@@ -3,8 +3,11 @@
 #include "gl/stage_clock.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "render/intermediates.h"
+#include "render/shadow_map_markers.h"
+#include "scene/camera.h"
 
 namespace viz::render {
 
@@ -59,6 +62,9 @@ void SceneViewPasses::buildShadows(const scene::Scene& scene, int shadowMapSize,
         mSceneFingerprint = fingerprint;
     }
     mLights = std::make_unique<GpuLights>(scene, scene.camera.position, areaSamples);
+    mCamera = scene.camera;
+    mSurfaceCurrent = false;
+    mFrameSize = glm::ivec2(0);  // known again from runSharedStages or renderSurface
     mShadows->build(*mGpuScene, *mLights, shadowMapSize, std::min(shadowMapSize, kMaxVplShadowSize));
     mShadows->publish(out, prefix);
 }
@@ -66,6 +72,8 @@ void SceneViewPasses::buildShadows(const scene::Scene& scene, int shadowMapSize,
 void SceneViewPasses::renderSurface(const scene::Scene& scene, int width, int height, std::vector<Intermediate>& out,
                                     const std::string& prefix) {
     mSurface->run(*mGpuScene, *mLights, *mShadows, scene, width, height);
+    mFrameSize = {width, height};
+    mSurfaceCurrent = true;
     out.push_back(textureIntermediate(prefix + ".distance", "Distance d",
                                       "Euclidean distance to the first surface along the pixel ray (zfar: sky)",
                                       "scene units", ViewKind::Scalar, 0.0f, float(scene.camera.zfar),
@@ -92,6 +100,7 @@ bool SceneViewPasses::runSharedStages(const FrameInput& input, int stop, const s
     // The scene upload is counted with the shadow maps: it is part of the technique's cost.
     clock.begin();
     buildShadows(*input.scene, input.settings, out.intermediates, prefix);
+    mFrameSize = {input.width, input.height};
     out.timing.stages.push_back({stages[0].id, clock.endMilliseconds()});
     out.lastStageRun = 0;
     if (stop == 0) return false;
@@ -101,6 +110,33 @@ bool SceneViewPasses::runSharedStages(const FrameInput& input, int stop, const s
     out.timing.stages.push_back({stages[1].id, clock.endMilliseconds()});
     out.lastStageRun = 1;
     return stop != 1;
+}
+
+bool SceneViewPasses::pixelRay(glm::ivec2 pixel, glm::dvec3& w, double& tEnd) const {
+    if (!mLights || pixel.x < 0 || pixel.y < 0 || pixel.x >= mFrameSize.x || pixel.y >= mFrameSize.y) return false;
+    w = scene::pixelRay(mCamera, mFrameSize.x, mFrameSize.y, pixel.x, pixel.y);
+    tEnd = mCamera.zfar;
+    if (mSurfaceCurrent && mSurface && mSurface->distance() && mSurface->width() == mFrameSize.x &&
+        mSurface->height() == mFrameSize.y) {
+        const gl::Texture& distance = mSurface->distance();
+        float d = 0.0f;
+        // GL row 0 is the bottom of the frame.
+        glGetTextureSubImage(distance.id(), 0, pixel.x, mFrameSize.y - 1 - pixel.y, 0, 1, 1, 1, GL_RED, GL_FLOAT,
+                             sizeof d, &d);
+        if (std::isfinite(d) && d > 0.0f) tEnd = std::min(double(d), tEnd);
+    }
+    return true;
+}
+
+std::vector<ViewMarker> SceneViewPasses::shadowMapMarkers(glm::ivec2 pixel, const std::string& id,
+                                                          const std::string& prefix) const {
+    const int index = shadowMapIndexOf(id, prefix);
+    if (index < 0 || !mLights || !mShadows || index >= mLights->count()) return {};
+    const GpuLightCpu& light = mLights->lights()[std::size_t(index)];
+    glm::dvec3 w;
+    double tEnd = 0.0;
+    if (light.info.z < 0 || !pixelRay(pixel, w, tEnd)) return {};
+    return render::shadowMapMarkers(*mShadows, light, w, tEnd);
 }
 
 }  // namespace viz::render

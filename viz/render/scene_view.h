@@ -51,6 +51,17 @@ public:
     bool runSharedStages(const FrameInput& input, int stop, const std::vector<StageInfo>& stages,
                          const std::string& prefix, FrameOutput& out);
 
+    // ---- linked cursors (the window's marks for a hovered frame pixel; render/shadow_map_markers.h) ----
+    // The eye ray of frame pixel `pixel` (row 0 at the top) of the last run: unit direction w (world axes;
+    // the eye is the origin of eye-relative space) and its end, the surface distance d when the camera view
+    // ran after the last buildShadows, else the camera's zfar. False outside the frame, before a run, and
+    // when the frame size is not known (buildShadows called alone, without runSharedStages).
+    bool pixelRay(glm::ivec2 pixel, glm::dvec3& w, double& tEnd) const;
+    // The marks of `pixel` in `id` when `id` is one of the maps published as prefix.shadow_map[.N] by the
+    // last buildShadows: the eye ray's projection and its lit/shadow changes by the map's own test. Empty
+    // for other ids and pixels outside the frame.
+    std::vector<ViewMarker> shadowMapMarkers(glm::ivec2 pixel, const std::string& id, const std::string& prefix) const;
+
     const GpuScene& gpuScene() const { return *mGpuScene; }
     const GpuLights& lights() const { return *mLights; }
     const ShadowMaps& shadows() const { return *mShadows; }
@@ -68,6 +79,11 @@ private:
     std::unique_ptr<SurfacePass> mSurface;
     std::unique_ptr<Composer> mComposer;
     gl::Texture mFinal;
+    // What pixelRay needs: the camera of the last buildShadows, the frame size, whether the camera view
+    // (the distance d) belongs to it.
+    scene::Camera mCamera{};
+    glm::ivec2 mFrameSize{0};
+    bool mSurfaceCurrent = false;
 };
 
 }  // namespace viz::render

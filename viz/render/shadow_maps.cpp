@@ -60,6 +60,7 @@ void ShadowMaps::build(const GpuScene& scene, const GpuLights& lights, int size,
     mVplSize = vplSize;
     mLayout = layout;
     mLights = lights.lights();
+    mReadback.clear();
 
     mProgram.use();
     mProgram.set("uModel", eyeRelativeModel(lights.eye()));
@@ -135,6 +136,26 @@ void ShadowMaps::makeViews() {
         mViews.back() = gl::Handle<gl::TextureTraits>(view);
         gl::setLabel(GL_TEXTURE, view, "render.shadow_map." + std::to_string(i));
     }
+}
+
+const std::vector<float>& ShadowMaps::texels(const GpuLightCpu& light, int face) const {
+    VIZ_CHECK(light.info.z >= 0, "ShadowMaps::texels: the light has no shadow map");
+    const int type = light.info.x;
+    const bool flat = type == hd::kLightSpot || type == hd::kLightDirectional;
+    VIZ_CHECK(flat || (face >= 0 && face < 6), "ShadowMaps::texels: cube face out of range");
+    const int array = flat ? 0 : (type == hd::kLightVpl ? 2 : 1);
+    const int layer = flat ? light.info.z : 6 * light.info.z + face;
+    std::vector<float>& values = mReadback[{array, layer}];
+    if (values.empty()) {
+        const gl::Texture& source = array == 0 ? mMaps2D : (array == 1 ? mCubes : mVplCubes);
+        const int n = source.size().x;
+        VIZ_CHECK(layer < source.size().z, "ShadowMaps::texels: layer out of range");
+        values.resize(std::size_t(n) * std::size_t(n));
+        glPixelStorei(GL_PACK_ALIGNMENT, 4);
+        glGetTextureSubImage(source.id(), 0, 0, 0, layer, n, n, 1, GL_RED, GL_FLOAT,
+                             GLsizei(values.size() * sizeof(float)), values.data());
+    }
+    return values;
 }
 
 void ShadowMaps::bind() const {

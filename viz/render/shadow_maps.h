@@ -11,7 +11,9 @@
 // sampler stays valid.
 #pragma once
 
+#include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "debug/technique.h"
@@ -43,6 +45,13 @@ public:
     // Face f of a cube (0..5 = +X, -X, +Y, -Y, +Z, -Z): view direction and up of its lookAt.
     static void cubeFaceBasis(int face, glm::dvec3& forward, glm::dvec3& up);
 
+    // The stored distances of one map face (a 2D map: face 0), texels per side * texels per side floats,
+    // row 0 = GL row 0 (ndc.y = -1). Read back at first use after each build() and kept until the next.
+    // `light` is one of the lights of the last build() (its map: light.info.z >= 0).
+    const std::vector<float>& texels(const GpuLightCpu& light, int face) const;
+    // Texels per side of the light's map (vplSize for VPL cubes).
+    int sizeOf(const GpuLightCpu& light) const { return light.info.x == hd::kLightVpl ? mVplSize : mSize; }
+
     const gl::Texture& maps2D() const { return mMaps2D; }
     const gl::Texture& cubes() const { return mCubes; }
     const gl::Texture& vplCubes() const { return mVplCubes; }
@@ -60,6 +69,8 @@ private:
     std::vector<gl::Handle<gl::TextureTraits>> mViews;  // per light (0 = no map): views for publish()
     int mSize = 0, mVplSize = 0;
     ShadowLayout mLayout;
+    // texels(): (array: 0 2D, 1 cubes, 2 VPL cubes; layer) -> the layer's values, cleared by build().
+    mutable std::map<std::pair<int, int>, std::vector<float>> mReadback;
 };
 
 }  // namespace viz::render

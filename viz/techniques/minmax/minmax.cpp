@@ -21,6 +21,7 @@
 #include "render/intermediates.h"
 #include "render/light_culling.h"
 #include "render/scene_view.h"
+#include "render/shadow_map_markers.h"
 #include "scene/camera.h"
 #include "techniques/minmax/epipolar_setup.h"
 #include "techniques/minmax/low_rank.h"
@@ -425,7 +426,9 @@ public:
     // The pixel's epipolar slice (first epipolar light) as a row of the rectified map, its view and the
     // min-max tree; after the traversal also the columns the camera ray covers (gamma from the eye up to
     // its end column cEnd, the GPU's own value) as a segment on that row.
+    // In every light's shadow map: the eye ray and its lit/shadow changes (render/shadow_map_markers.h).
     std::vector<ViewMarker> markersFor(glm::ivec2 pixel, const std::string& id) const override {
+        if (render::shadowMapIndexOf(id, "minmax") >= 0) return mView.shadowMapMarkers(pixel, id, "minmax");
         const bool rectified = id == kRectified || id == kRectifiedView;
         if (mWork.empty() || (!rectified && id != kTree)) return {};
         if (pixel.x < 0 || pixel.y < 0 || pixel.x >= mMarkSize.x || pixel.y >= mMarkSize.y) return {};

@@ -1,8 +1,10 @@
 #include "techniques/polyvol/polyvol.h"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <chrono>
+#include <cstdio>
 #include <cmath>
 #include <map>
 #include <memory>
@@ -22,12 +24,14 @@
 #include "render/intermediates.h"
 #include "render/light_culling.h"
 #include "render/scene_view.h"
+#include "render/shadow_map_markers.h"
 #include "scene/camera.h"
 #include "render/mesh_view.h"
 #include "techniques/polyvol/adaptive_tessellation.h"
 #include "techniques/polyvol/airlight_lut.h"
 #include "techniques/polyvol/crack_check.h"
 #include "techniques/polyvol/light_volume_mesh.h"
+#include "techniques/polyvol/volume_crossings.h"
 #include "techniques/polyvol/volume_grid.h"
 
 namespace viz {
@@ -291,6 +295,12 @@ public:
         const int stop = input.stopAfterStage < 0 ? kComposeIndex : input.stopAfterStage;
         gl::StageClock clock;
 
+        mMarkZfar = scene.camera.zfar;
+        mMarkCookieMask = float(s.at("cookie_mask"));
+        mAdaptiveUsed = false;
+        mAdaptiveLights.clear();
+        mMarkKeysRead = false;
+
         // ---- shadow maps and camera view ----
         if (!mView.runSharedStages(input, stop, mStages, "polyvol", out)) return out;
 
@@ -331,7 +341,81 @@ public:
         return out;
     }
 
+    // Linked cursors. In each light's shadow map, and in the edge map and tessellation levels (the last
+    // adaptive 2D light's): the pixel's eye ray projected into the map (cubes: per face) and every crossing
+    // of the ray with that light's volume mesh (volume_crossings.h), signed as the volume pass adds it
+    // (+1 leaving the lit volume, -1 entering), also those beyond d, so that they add up to the pixel's
+    // polyvol.crossings (r: count, g: signed sum) in a one-light scene. Cube marks carry their face.
+    std::vector<ViewMarker> markersFor(glm::ivec2 pixel, const std::string& id) const override {
+        int index = render::shadowMapIndexOf(id, "polyvol");
+        if (index < 0 && (id == kEdgeMap || id == kTessLevels) && mAdaptiveUsed) index = mEdgeLight;
+        if (index < 0 || index >= mView.lights().count()) return {};
+        const render::GpuLightCpu& L = mView.lights().lights()[std::size_t(index)];
+        const bool flat = L.info.x == render::hd::kLightSpot || L.info.x == render::hd::kLightDirectional;
+        if (L.info.z < 0 || (!flat && (id == kEdgeMap || id == kTessLevels))) return {};
+        glm::dvec3 w;
+        double d = 0.0;
+        if (!mView.pixelRay(pixel, w, d)) return {};
+        const int n = mView.shadows().size();
+        polyvol::VolumeGrid grid = describe(L, index, n, mMarkZfar, mMarkCookieMask);
+        // An adaptive volume: its triangles as emitted, read back; only the last adaptive light's are
+        // still in the buffer, the others are marked with their static mesh (the adaptive one agrees with
+        // it up to `threshold`).
+        const bool adaptive = std::find(mAdaptiveLights.begin(), mAdaptiveLights.end(), index) != mAdaptiveLights.end();
+        const std::vector<std::uint32_t>* keys = nullptr;
+        if (adaptive && index == mEdgeLight) {
+            grid.keyStride = n + 1;
+            keys = &adaptiveKeys();
+        }
+        std::vector<polyvol::VolumeCrossing> crossings;
+        if (flat) {
+            crossings = polyvol::volumeCrossings(grid, L, mView.shadows().texels(L, 0), w, keys);
+        } else {
+            std::array<const std::vector<float>*, 6> faces{};
+            for (int f = 0; f < 6; ++f) faces[std::size_t(f)] = &mView.shadows().texels(L, f);
+            crossings = polyvol::cubeVolumeCrossings(grid, L, faces, w);
+        }
+        int sum = 0;
+        for (const polyvol::VolumeCrossing& c : crossings) sum += c.sign;
+        std::vector<ViewMarker> marks;
+        char text[160];
+        // Cube maps: marks on the face (layer) the point's direction from the light selects.
+        const auto faceOf = [&](const glm::dvec3& p) {
+            if (flat) return 0;
+            const glm::dvec3 v = p - glm::dvec3(L.position), a = glm::abs(v);
+            const int axis = (a.x >= a.y && a.x >= a.z) ? 0 : (a.y >= a.z ? 1 : 2);
+            return 2 * axis + (v[axis] < 0.0 ? 1 : 0);
+        };
+        for (const render::MapStretch& s : render::walkShadowMap(mView.shadows(), L, w, d).stretches) {
+            std::snprintf(text, sizeof text, "eye ray t=%.2f..%.2f: %d crossings, signed %+d%s", s.t0, s.t1,
+                          int(crossings.size()), sum, adaptive && !keys ? " (static mesh)" : "");
+            marks.push_back({render::shadowMapUv(L, s.face, s.t0 * w), render::shadowMapUv(L, s.face, s.t1 * w), text,
+                             flat ? -1 : s.face});
+        }
+        for (const polyvol::VolumeCrossing& c : crossings) {
+            const int face = faceOf(c.t * w);
+            const glm::vec2 uv = render::shadowMapUv(L, face, c.t * w);
+            // Crossings on a directional volume's skirt lie outside the map: not drawable there.
+            if (!(uv.x >= -1e-3f && uv.y >= -1e-3f && uv.x <= 1.001f && uv.y <= 1.001f)) continue;
+            std::snprintf(text, sizeof text, c.sign > 0 ? "+1 leaves lit t=%.2f%s" : "-1 enters lit t=%.2f%s", c.t,
+                          c.t > d ? " (beyond d)" : "");
+            marks.push_back({uv, uv, text, flat ? -1 : face});
+        }
+        return marks;
+    }
+
 private:
+    // The keys of the last adaptive light's triangles (3 per triangle), read back once per run.
+    const std::vector<std::uint32_t>& adaptiveKeys() const {
+        if (!mMarkKeysRead) {
+            const std::size_t count = std::size_t(std::max<std::int64_t>(0, mTess.triangles())) * 3;
+            mMarkKeys.assign(std::min(count, mTess.keys().bytes() / sizeof(std::uint32_t)), 0u);
+            if (!mMarkKeys.empty()) mTess.keys().download(0, mMarkKeys.size() * sizeof(std::uint32_t), mMarkKeys.data());
+            mMarkKeysRead = true;
+        }
+        return mMarkKeys;
+    }
+
     static std::int64_t gridTriangleCountFor(int n, int faces) { return polyvol::gridTriangleCount(n, faces); }
 
     void allocateTargets(int width, int height) {
@@ -536,6 +620,8 @@ private:
                 grid.keyStride = n + 1;
                 mTess.build(grid, s.at("threshold"), int(s.at("stop_level")), mDefines, mProgramKey);
                 mAdaptiveUsed = true;
+                mEdgeLight = i;
+                mAdaptiveLights.push_back(i);
                 mAdaptiveOverflow = mAdaptiveOverflow || mTess.overflowed();
                 mView.lights().bind();
                 mView.shadows().bind();
@@ -778,6 +864,14 @@ private:
     std::map<std::pair<int, int>, Extra> mExtras;
     polyvol::AdaptiveTessellation mTess;
     bool mAdaptiveUsed = false, mAdaptiveOverflow = false, mWireDrawn = false;
+    // markersFor: the light whose edge map and levels are shown (the last adaptive 2D light), the camera's
+    // zfar and cookie_mask of the last run (they place the volume's vertices).
+    int mEdgeLight = -1;
+    std::vector<int> mAdaptiveLights;  // lights drawn with adaptive tessellation in the last run
+    mutable std::vector<std::uint32_t> mMarkKeys;
+    mutable bool mMarkKeysRead = false;
+    double mMarkZfar = 0.0;
+    float mMarkCookieMask = 0.0f;
     std::int64_t mTriangles = 0;
     gl::ShaderDefines mDefines;
     gl::Program mResolve, mWireProgram, mClamp;

@@ -214,6 +214,11 @@ public:
         return out;
     }
 
+    // Linked cursors: the pixel's eye ray and its lit/shadow changes in each light's shadow map.
+    std::vector<ViewMarker> markersFor(glm::ivec2 pixel, const std::string& id) const override {
+        return mView.shadowMapMarkers(pixel, id, "raymarch");
+    }
+
 private:
     void allocateTargets(int width, int height) {
         if (mAirlight && mAirlight.size().x == width && mAirlight.size().y == height) return;

@@ -228,6 +228,12 @@ public:
         return it == kBounds.end() ? std::nullopt : std::optional<StiffBound>(it->second);
     }
 
+    // Linked cursors: in every light's shadow map the pixel's eye ray and where it enters or leaves
+    // shadow by the map's own test (render/shadow_map_markers.h). They follow the camera-view stage.
+    std::vector<ViewMarker> markersFor(glm::ivec2 pixel, const std::string& id) const override {
+        return mView.shadowMapMarkers(pixel, id, "slices");
+    }
+
     Plan plan(const scene::Scene& scene, const Settings& s) const override {
         Plan p;
         for (const StageInfo& st : mStages) p.stages.push_back({st.id, true, ""});

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <memory>
 #include <numbers>
@@ -18,6 +19,7 @@
 #include "render/intermediates.h"
 #include "render/light_culling.h"
 #include "render/scene_view.h"
+#include "render/shadow_map_markers.h"
 #include "scene/camera.h"
 #include "techniques/vsv/add_airlight.h"
 #include "techniques/vsv/bits128.h"
@@ -284,6 +286,8 @@ public:
         const int tile = int(s.at("shadow_map"));
         const int shown = std::max(0, std::min(int(s.at("pick_vpl")), count - 1));
         gl::StageClock clock;
+        mSurfaceRan = mNaiveBuilt = false;
+        mMark.reset();
 
         // ---- VPLs and their epipolar spaces ----
         clock.begin();
@@ -316,6 +320,7 @@ public:
                 points.lights.push_back(l);
             }
             mNaiveView.buildShadows(points, tile, 1, out.intermediates, "ivsv.naive");
+            mNaiveBuilt = true;
         } else if (area) {
             buildIsm(scene, *area, int(s.at("points")), count, tile);
         }
@@ -339,6 +344,7 @@ public:
         clock.begin();
         mView.buildShadows(scene, s, out.intermediates, "ivsv");
         mView.renderSurface(scene, input.width, input.height, out.intermediates, "ivsv");
+        mSurfaceRan = true;
         out.timing.stages.push_back({kStageSurface, clock.endMilliseconds()});
         out.lastStageRun = kSurfaceIndex;
         if (stop == kSurfaceIndex) return out;
@@ -354,6 +360,7 @@ public:
         }
         if (s.at("pick_theta") >= 0) pickTheta = std::min(int(s.at("pick_theta")), cells - 1);
         const glm::ivec2 shownTile = tileOrigin(shown, cells);
+        if (area) mMark = MarkState{shown, pickTheta, tile, naive, scene.camera.position};
 
         // ---- rectify ----
         clock.begin();
@@ -433,7 +440,91 @@ public:
         return out;
     }
 
+    // Linked cursors (once the camera view ran: the eye ray ends at the pixel's surface): in the shadow
+    // maps, the eye ray and its lit/shadow changes by the map's own test (render/shadow_map_markers.h).
+    std::vector<ViewMarker> markersFor(glm::ivec2 pixel, const std::string& id) const override {
+        if (!mSurfaceRan) return {};
+        if (render::shadowMapIndexOf(id, "ivsv") >= 0) return mView.shadowMapMarkers(pixel, id, "ivsv");
+        const int naive = render::shadowMapIndexOf(id, "ivsv.naive");
+        if (naive >= 0) {
+            // mode=naive: VPL i as point light i; the same eye, so the same eye-relative space.
+            const auto& lights = mNaiveView.lights().lights();
+            glm::dvec3 w;
+            double tEnd = 0.0;
+            if (!mNaiveBuilt || naive >= int(lights.size()) || lights[std::size_t(naive)].info.z < 0 ||
+                !mView.pixelRay(pixel, w, tEnd))
+                return {};
+            return render::shadowMapMarkers(mNaiveView.shadows(), lights[std::size_t(naive)], w, tEnd);
+        }
+        if (!mMark) return {};
+        const MarkState& m = *mMark;
+        glm::dvec3 w;
+        double d = 0.0;
+        if (!mView.pixelRay(pixel, w, d)) return {};
+        const vsv::Vpl& vpl = mVpls[std::size_t(m.shown)];
+        if (id == kVoxelSlice || id == kScanSlice) {
+            // As vsv: the slices show theta cell pickTheta of the shown VPL's grid (alpha x, phi y); the eye
+            // ray is the column at its alpha when its theta cell is that one.
+            const vsv::EpipolarFrame f = vsv::makeFrame(vpl.position - m.eye);
+            const vsv::EpipolarGrid& g = mGrids[std::size_t(m.shown)];
+            const int theta = int(std::floor(vsv::thetaCoord(g, vsv::thetaOf(f, w))));
+            if (theta != m.pickTheta) return {};
+            const double alpha = vsv::alphaCoord(g, vsv::alphaOf(f, w));
+            if (alpha < 0.0 || alpha >= double(g.nAlpha)) return {};
+            const float u = float(alpha) / float(g.nAlpha);
+            return {{{u, 0.0f}, {u, 1.0f}, "eye ray, alpha cell " + std::to_string(int(alpha))}};
+        }
+        if ((id == kIsm || id == kIsmRaw) && !m.naive) return ismMarkers(m, vpl, w, d);
+        return {};
+    }
+
 private:
+    // What markersFor needs of the last run (set once the VPLs' grids exist).
+    struct MarkState {
+        int shown = 0, pickTheta = 0, tile = 0;
+        bool naive = false;
+        glm::dvec3 eye{0.0};  // world position of the camera: the VPLs are in world space
+    };
+    std::optional<MarkState> mMark;
+
+    // The eye ray t w, t in [0, d], in the shown VPL's paraboloid tile of the ISM atlas: a curve, drawn as
+    // a polyline of the parts in its hemisphere (shaders/vsv/ism.glsl: uv = (x, y) / (1 + z) in the VPL's
+    // frame, texel = tile origin + (uv / 2 + 1 / 2) tile size; data uv = texel / atlas size, GL rows).
+    std::vector<ViewMarker> ismMarkers(const MarkState& m, const vsv::Vpl& vpl, const glm::dvec3& w, double d) const {
+        glm::dvec3 tx, ty;
+        vsv::hemisphereFrame(vpl.normal, tx, ty);
+        const glm::dvec3 from = vpl.position - m.eye;  // eye-relative
+        const glm::dvec2 origin(tileOrigin(m.shown, m.tile));
+        const glm::dvec2 atlas(double(mTilesX * m.tile), double(mTilesY * m.tile));
+        const auto project = [&](double t, glm::vec2& uv) {
+            const glm::dvec3 v = t * w - from;
+            const double len = glm::length(v);
+            if (len <= 0.0) return false;
+            const glm::dvec3 local(glm::dot(v, tx) / len, glm::dot(v, ty) / len, glm::dot(v, vpl.normal) / len);
+            if (local.z <= 0.0) return false;
+            const glm::dvec2 texel = origin + (vsv::paraboloid(local) * 0.5 + 0.5) * double(m.tile);
+            uv = glm::vec2(texel / atlas);
+            return true;
+        };
+        constexpr int kPieces = 48;
+        std::vector<ViewMarker> marks;
+        glm::vec2 previous(0.0f);
+        bool previousIn = project(0.0, previous);
+        for (int k = 1; k <= kPieces; ++k) {
+            glm::vec2 uv(0.0f);
+            const bool in = project(d * double(k) / kPieces, uv);
+            if (in && previousIn) {
+                char text[96];
+                text[0] = 0;
+                if (marks.empty()) std::snprintf(text, sizeof text, "eye ray t=0..%.2f, VPL %d", d, m.shown);
+                marks.push_back({previous, uv, text});
+            }
+            previous = uv;
+            previousIn = in;
+        }
+        return marks;
+    }
+
     static void checkTileSize(const Settings& s) {
         const int t = int(s.at("shadow_map"));
         if (t > 512 || (t & (t - 1)) != 0)
@@ -842,6 +933,7 @@ private:
     std::vector<StageInfo> mStages;
     render::SceneViewPasses mView;       // surface term and compose
     render::SceneViewPasses mNaiveView;  // mode=naive: one point light (cube map) per VPL
+    bool mSurfaceRan = false, mNaiveBuilt = false;  // in the last run (markersFor)
     std::unique_ptr<Technique> mVsv;     // the scene's other lights
     std::vector<vsv::Vpl> mVpls;
     std::vector<vsv::EpipolarGrid> mGrids;

@@ -16,6 +16,7 @@
 #include "render/intermediates.h"
 #include "render/light_culling.h"
 #include "render/scene_view.h"
+#include "render/shadow_map_markers.h"
 #include "scene/camera.h"
 #include "techniques/vsv/add_airlight.h"
 #include "techniques/vsv/bits128.h"
@@ -321,7 +322,9 @@ public:
     // A screen pixel in the grid of the shown light: its eye ray's theta cell as a row of the occluder
     // map (x = phi bit, y = theta cell), and in the alpha x phi voxel slices, when the slice shown is
     // the pixel's (theta cell = pick_theta's), its eye ray as the column at its alpha.
+    // In every light's shadow map: the eye ray and its lit/shadow changes (render/shadow_map_markers.h).
     std::vector<ViewMarker> markersFor(glm::ivec2 pixel, const std::string& id) const override {
+        if (render::shadowMapIndexOf(id, "vsv") >= 0) return mView.shadowMapMarkers(pixel, id, "vsv");
         if (!mMark || (id != kOccluder && id != kVoxelSlice && id != kScanSlice)) return {};
         const MarkState& m = *mMark;
         if (pixel.x < 0 || pixel.y < 0 || pixel.x >= m.size.x || pixel.y >= m.size.y) return {};

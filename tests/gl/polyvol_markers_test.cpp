@@ -1,0 +1,163 @@
+// polyvol's linked-cursor marks: the crossings of a pixel's eye ray with the light volume, computed on the
+// CPU (techniques/polyvol/volume_crossings.h), against what the GPU's volume pass counted for that pixel
+// (polyvol.crossings: r = faces crossed, g = signed sum).
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "gl/readback.h"
+#include "scene/builtin_scenes.h"
+#include "technique_test_util.h"
+
+namespace {
+
+using viz::ViewMarker;
+
+struct Counted {
+    int crossings = 0, signedSum = 0;
+};
+
+// What the segment's label of a polyvol view says: "eye ray t=a..b: N crossings, signed S" (all of the
+// ray's crossings, also those a directional volume's skirt has outside the map), and the crossing points
+// drawn ("+1 ..." / "-1 ...").
+Counted countCrossings(const std::vector<ViewMarker>& marks, Counted* drawn = nullptr) {
+    Counted c;
+    for (const ViewMarker& m : marks) {
+        if (m.from != m.to) {
+            const std::size_t at = m.label.find(": ");
+            if (at != std::string::npos) std::sscanf(m.label.c_str() + at, ": %d crossings, signed %d", &c.crossings, &c.signedSum);
+            continue;
+        }
+        if (!drawn) continue;
+        ++drawn->crossings;
+        drawn->signedSum += m.label.rfind("+1", 0) == 0 ? 1 : (m.label.rfind("-1", 0) == 0 ? -1 : 0);
+    }
+    return c;
+}
+
+class PolyvolMarkersTest : public viz::testing::TechniqueTest {
+protected:
+    // Every `step`-th pixel: the marks in polyvol.shadow_map count the faces and the signed sum that the
+    // GPU's volume pass drew for that pixel. The signed sum must agree everywhere. The count may differ by
+    // a pair (+1 and -1 at the same t) where the ray grazes the fold between two faces (the top of a
+    // shadow wall, a wall meeting the map's border): the CPU intersects in double, the rasteriser samples
+    // the pixel centre in float. Returns the pixels compared, the crossings marked and the pixels whose
+    // count differs by such a pair.
+    static void expectCrossingsMatchTheGpu(const viz::scene::Scene& scene, const viz::Settings& settings, int w,
+                                           int h, int step, int& pixels, int& crossings, int& grazing) {
+        const bool allDrawn = scene.lights[0].type != viz::scene::LightType::Directional;
+        const bool spotOrSun = scene.lights[0].type != viz::scene::LightType::Point;
+        auto polyvol = viz::makeTechnique("polyvol");
+        const viz::FrameOutput out = viz::testing::runTechnique(*polyvol, scene, settings, w, h);
+        const viz::Intermediate* counts = find(out, "polyvol.crossings");
+        ASSERT_NE(counts, nullptr);
+        const viz::Image gpu = viz::gl::readTexture(counts->glTexture);
+        pixels = crossings = grazing = 0;
+        for (int y = step / 2; y < h; y += step) {
+            for (int x = step / 2; x < w; x += step) {
+                Counted drawn;
+                const std::vector<ViewMarker> marks = polyvol->markersFor({x, y}, "polyvol.shadow_map");
+                const Counted c = countCrossings(marks, &drawn);
+                for (const ViewMarker& m : marks) {
+                    if (allDrawn && !spotOrSun) {
+                        EXPECT_GE(m.layer, 0);  // a cube face
+                        EXPECT_LT(m.layer, 6);
+                    } else {
+                        EXPECT_EQ(m.layer, -1);
+                    }
+                }
+                // In a spot's map and a cube every crossing is drawn; a directional volume's skirt is outside.
+                if (allDrawn) {
+                    EXPECT_EQ(drawn.crossings, c.crossings) << "pixel (" << x << ", " << y << ")";
+                }
+                EXPECT_LE(drawn.crossings, c.crossings);
+                const int gpuCount = int(std::lround(gpu.at(x, y, 0)));
+                const int gpuSigned = int(std::lround(gpu.at(x, y, 1)));
+                ++pixels;
+                crossings += c.crossings;
+                EXPECT_EQ(c.signedSum, gpuSigned) << "pixel (" << x << ", " << y << ")";
+                if (c.crossings != gpuCount) {
+                    ++grazing;
+                    EXPECT_EQ(std::abs(c.crossings - gpuCount), 2) << "pixel (" << x << ", " << y << ")";
+                    std::printf("pixel (%d, %d): %d crossings marked, the GPU drew %d\n", x, y, c.crossings, gpuCount);
+                }
+            }
+        }
+    }
+};
+
+TEST_F(PolyvolMarkersTest, SpotCrossingsAddUpToTheGpusCrossingCounts) {
+    const viz::scene::Scene scene = viz::scene::makeBuiltinScene("grate");
+    int pixels = 0, crossings = 0, grazing = 0;
+    expectCrossingsMatchTheGpu(scene, {{"shadow_map", 128}}, 64, 48, 3, pixels, crossings, grazing);
+    std::printf("grate spot 128^2: %d pixels, %d crossings marked, %d grazing pairs\n", pixels, crossings, grazing);
+    EXPECT_LE(grazing, 1);  // measured: 1 of 336 pixels
+    EXPECT_GT(crossings, 2 * pixels);  // rays do cross the bars' shadow walls
+}
+
+// The adaptive mesh (coarse quads where the map is flat, its keys read back) counts as the GPU drew it.
+TEST_F(PolyvolMarkersTest, AdaptiveMeshCrossingsAddUpToTheGpusCrossingCounts) {
+    const viz::scene::Scene scene = viz::scene::makeBuiltinScene("grate");
+    int pixels = 0, crossings = 0, grazing = 0;
+    expectCrossingsMatchTheGpu(scene, {{"shadow_map", 128}, {"tessellation", 1}, {"force_features", 1}}, 64, 48, 3,
+                               pixels, crossings, grazing);
+    std::printf("grate spot 128^2 adaptive: %d pixels, %d crossings marked, %d grazing pairs\n", pixels, crossings,
+                grazing);
+    EXPECT_GT(crossings, 2 * pixels);
+    EXPECT_LE(grazing, 1);
+}
+
+// A point light: six grids and the seams between them; every mark on the face its direction selects.
+TEST_F(PolyvolMarkersTest, CubeCrossingsAddUpToTheGpusCrossingCounts) {
+    viz::scene::Scene scene = viz::scene::makeBuiltinScene("grate");
+    scene.lights[0].type = viz::scene::LightType::Point;
+    int pixels = 0, crossings = 0, grazing = 0;
+    expectCrossingsMatchTheGpu(scene, {{"shadow_map", 64}}, 64, 48, 3, pixels, crossings, grazing);
+    std::printf("omni grate 64^2 cube: %d pixels, %d crossings marked, %d grazing pairs\n", pixels, crossings, grazing);
+    EXPECT_GT(crossings, 2 * pixels);
+    EXPECT_LE(grazing, 0);
+}
+
+TEST_F(PolyvolMarkersTest, DirectionalCrossingsAddUpToTheGpusCrossingCounts) {
+    viz::scene::Scene scene = viz::scene::makeBuiltinScene("grate");
+    scene.lights[0].type = viz::scene::LightType::Directional;
+    scene.lights[0].direction = glm::normalize(glm::dvec3(0.15, -1.0, 0.05));
+    int pixels = 0, crossings = 0, grazing = 0;
+    expectCrossingsMatchTheGpu(scene, {{"shadow_map", 128}}, 64, 48, 3, pixels, crossings, grazing);
+    std::printf("grate sun 128^2: %d pixels, %d crossings marked, %d grazing pairs\n", pixels, crossings, grazing);
+    EXPECT_LE(grazing, 3);  // measured: 3 of 336 pixels
+    EXPECT_GT(crossings, pixels);
+}
+
+TEST_F(PolyvolMarkersTest, EdgeMapAndLevelsShowTheSameRayAndCrossingsAsTheShadowMap) {
+    const viz::scene::Scene scene = viz::scene::makeBuiltinScene("grate");
+    auto adaptive = viz::makeTechnique("polyvol");
+    viz::testing::runTechnique(*adaptive, scene, {{"shadow_map", 64}, {"tessellation", 1}, {"force_features", 1}},
+                               64, 48);
+    const glm::ivec2 px{40, 40};
+    const std::vector<ViewMarker> map = adaptive->markersFor(px, "polyvol.shadow_map");
+    ASSERT_GE(map.size(), 2u);
+    for (const std::string id : {"polyvol.edge_map", "polyvol.tess_levels"}) {
+        const std::vector<ViewMarker> marks = adaptive->markersFor(px, id);
+        ASSERT_EQ(marks.size(), map.size()) << id;
+        for (std::size_t i = 0; i < marks.size(); ++i) {
+            EXPECT_EQ(marks[i].from, map[i].from) << id;
+            EXPECT_EQ(marks[i].label, map[i].label) << id;
+        }
+    }
+    // Static tessellation publishes no edge map: nothing to mark; other views and pixels outside the frame
+    // have no marks either.
+    auto flat = viz::makeTechnique("polyvol");
+    viz::testing::runTechnique(*flat, scene, {{"shadow_map", 64}}, 64, 48);
+    EXPECT_TRUE(flat->markersFor(px, "polyvol.edge_map").empty());
+    EXPECT_TRUE(flat->markersFor(px, "polyvol.crossings").empty());
+    EXPECT_TRUE(flat->markersFor({64, 0}, "polyvol.shadow_map").empty());
+    EXPECT_TRUE(flat->markersFor({0, -1}, "polyvol.shadow_map").empty());
+}
+
+}  // namespace
