@@ -2636,7 +2636,9 @@ private:
         // As tall as two frame-shaped views side by side need, leaving room for the panels below.
         const float chrome = 3.0f * line + 10.0f * s;
         const float aspect = float(mOptions.height) / float(std::max(1, mOptions.width));
-        const float gridHeight = std::clamp(half * aspect + chrome, 0.5f * panes.size().y, 0.74f * panes.size().y);
+        float gridHeight = std::clamp(half * aspect + chrome, 0.5f * panes.size().y, 0.74f * panes.size().y);
+        // The ray inspector's plot needs height: the grid gives some up while it is open.
+        if (mProbe) gridHeight = std::min(gridHeight, 0.56f * panes.size().y);
         const Rect gridArea{panes.min, {panes.max.x, panes.min.y + gridHeight}};
         mViewArea = gridArea;
         beginWidgets(fb);
