@@ -2305,8 +2305,16 @@ private:
         std::vector<Rect> placed;  // labels drawn so far
         glm::vec4 colour(0.0f);
         float width = 1.0f;
+        const float line = mFont->lineHeight();
+        const auto shown = [&](const viz::ViewMarker& m) { return m.layer < 0 || m.layer == v.pane.layer; };
+        // Several labelled points (a ray's crossings lie close together): each gets a number beside it and
+        // its label goes into a key at the image's bottom left, so that labels do not pile up.
+        const auto points = std::count_if(marks.begin(), marks.end(), [&](const viz::ViewMarker& m) {
+            return shown(m) && m.from == m.to && !m.label.empty();
+        });
+        std::vector<std::string> key;
         for (std::size_t i = 0; i < marks.size(); ++i) {
-            if (marks[i].layer >= 0 && marks[i].layer != v.pane.layer) continue;
+            if (!shown(marks[i])) continue;
             const glm::vec2 a = toWindow(marks[i].from), b = toWindow(marks[i].to);
             // The first mark thin cyan, the others yellow; an unlabelled one continues the previous (a
             // polyline).
@@ -2320,10 +2328,17 @@ private:
                 dl.line(a, b, 3.0f * mScale, {0.0f, 0.0f, 0.0f, 0.6f});
                 dl.line(a, b, width * mScale, colour);
             }
-            const float line = mFont->lineHeight();
             const glm::vec2 at{std::max(std::min(a.x, b.x), v.image.min.x) + 4.0f * mScale,
-                               std::min(a.y, b.y) - line - 2.0f * mScale + float(i) * 0.0f};
+                               std::min(a.y, b.y) - line - 2.0f * mScale};
             if (marks[i].label.empty()) continue;  // a piece of a polyline labelled once
+            if (a == b && points > 2) {
+                const std::string tag = std::to_string(key.size() + 1);
+                const glm::vec2 tagAt = a + glm::vec2(5.0f, -line - 1.0f) * glm::vec2(mScale, 1.0f);
+                dl.rect({tagAt - 1.0f, tagAt + glm::vec2(mFont->measure(tag) + 2.0f, line)}, {0.0f, 0.0f, 0.0f, 0.6f});
+                dl.textClipped(tagAt, tag, colour, v.image.max.x);
+                key.push_back(tag + "  " + marks[i].label);
+                continue;
+            }
             // A label that would run past the image's right edge moves left to end there; one that would
             // cover a label already placed moves down a line (marks close together, e.g. a ray's crossings).
             const float labelWidth = mFont->measure(marks[i].label);
@@ -2340,6 +2355,16 @@ private:
             placed.push_back({labelAt, labelAt + glm::vec2(labelWidth, line)});
             dl.rect({labelAt - 1.0f, labelAt + glm::vec2(labelWidth + 2.0f, line)}, {0.0f, 0.0f, 0.0f, 0.6f});
             dl.textClipped(labelAt, marks[i].label, colour, v.image.max.x);
+        }
+        if (!key.empty()) {
+            float keyWidth = 0.0f;
+            for (const std::string& k : key) keyWidth = std::max(keyWidth, mFont->measure(k));
+            const float pad = 3.0f * mScale;
+            const glm::vec2 origin{v.image.min.x + pad, v.image.max.y - pad - float(key.size()) * line};
+            dl.rect({origin - pad, origin + glm::vec2(keyWidth + pad, float(key.size()) * line + pad)},
+                    {0.0f, 0.0f, 0.0f, 0.7f});
+            for (std::size_t k = 0; k < key.size(); ++k)
+                dl.textClipped(origin + glm::vec2(0.0f, float(k) * line), key[k], {1.0f, 0.85f, 0.2f, 1.0f}, v.image.max.x);
         }
         dl.popClip();
     }
