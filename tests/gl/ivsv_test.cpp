@@ -181,6 +181,45 @@ TEST_F(IvsvTest, PerVplContributionsOfThePickedPixelAddUp) {
     }
 }
 
+// The picked pixel's column in the shown VPL's grid, as in vsv: up to the fragment, row 0 is one column of
+// the voxels slice at the pixel's theta (published separately) and row 1 the prefix OR of that slice's
+// columns up to the same alpha (the segmented scan within the VPL's tile).
+TEST_F(IvsvTest, ThePickedColumnShowsItsBitsBeforeAndAfterTheScan) {
+    const viz::scene::Scene scene = viz::scene::makeBuiltinScene("tv-room");
+    int occluded = 0;
+    for (const glm::ivec2 pick : {glm::ivec2(60, 40), glm::ivec2(20, 45), glm::ivec2(40, 30)}) {
+        const viz::Settings s{{"vpls", 4}, {"voxels", 64}, {"points", 50000}, {"pick_x", pick.x}, {"pick_y", pick.y}};
+        const viz::FrameOutput out = render(scene, "ivsv", s, 80, 60);
+        const viz::Image& voxels = *find(out, "ivsv.voxels")->image;
+        const viz::Image& column = *find(out, "ivsv.column")->image;
+        ASSERT_EQ(column.height, 2);
+        ASSERT_EQ(column.width, voxels.height);
+        int read = 0;
+        while (read < column.width && column.at(read, 0) != 0.5f) ++read;
+        for (int k = read; k < column.width; ++k) EXPECT_EQ(column.at(k, 1), 0.5f);
+        ASSERT_GT(read, 0);
+        int matches = 0;
+        for (int a = 0; a < voxels.width; ++a) {
+            bool same = true, prefix = true;
+            for (int k = 0; k < read; ++k) {
+                same = same && (voxels.at(a, k) > 0.5f) == (column.at(k, 0) > 0.5f);
+                bool any = false;
+                for (int b = 0; b <= a; ++b) any = any || voxels.at(b, k) > 0.5f;
+                prefix = prefix && any == (column.at(k, 1) > 0.5f);
+            }
+            matches += same && prefix;
+        }
+        EXPECT_GE(matches, 1) << "pixel " << pick.x << ", " << pick.y;
+        int before = 0, after = 0;
+        for (int k = 0; k < read; ++k) before += column.at(k, 0) > 0.5f, after += column.at(k, 1) > 0.5f;
+        std::printf("pixel (%d, %d): %d bits read, %d occluder bits, %d shadowed after the scan\n", pick.x, pick.y,
+                    read, before, after);
+        EXPECT_GE(after, before);
+        occluded += after;
+    }
+    EXPECT_GT(occluded, 0) << "some picked ray passes through shadow";
+}
+
 TEST_F(IvsvTest, PlanAndInputErrors) {
     auto technique = viz::makeTechnique("ivsv");
     const viz::Settings settings = viz::completeSettings(*technique, {});

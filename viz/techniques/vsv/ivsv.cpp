@@ -374,6 +374,12 @@ public:
         out.lastStageRun = kVoxelizeIndex;
         if (stop == kVoxelizeIndex) return out;
 
+        // The picked pixel's column as voxelized, for the column view (the scan overwrites the grid).
+        if (area) {
+            const glm::ivec2 cell = pickedCell(scene, input, shown, cells, pickX, pickY);
+            mPreScanColumn = vsv::readGridRow(mGrid, shownTile.x + cell.x, 1, shownTile.y + cell.y).front();
+        }
+
         // ---- segmented scan ----
         clock.begin();
         const int passLimit = s.at("scan_passes") < 0 ? kMaxScanPasses : int(s.at("scan_passes"));
@@ -408,7 +414,8 @@ public:
             out.intermediates.push_back(vsv::cpuIntermediate(
                 kColumn, "Voxel column of pixel (" + std::to_string(pickX) + ", " + std::to_string(pickY) + "), VPL " +
                              std::to_string(shown),
-                "its 128 phi bits: 1 shadowed, 0 lit, 0.5 beyond the fragment (not read)", ViewKind::BitField,
+                "its 128 phi bits; top row as voxelized (1 occluder), bottom row after the scan (1 shadowed, 0 lit); "
+                "0.5 beyond the fragment (not read)", ViewKind::BitField,
                 columnImage(scene, input, shown, cells, pickX, pickY)));
             out.intermediates.back().rayView = true;
             const std::shared_ptr<Image> perVpl = perVplImage(count);
@@ -875,23 +882,34 @@ private:
         return image;
     }
 
+    // The alpha cell (x) and theta cell (y) of pixel (x, y)'s eye ray in VPL `vpl`'s grid.
+    glm::ivec2 pickedCell(const scene::Scene& scene, const FrameInput& input, int vpl, int cells, int x, int y) const {
+        const vsv::EpipolarFrame f = vsv::makeFrame(mVpls[std::size_t(vpl)].position - scene.camera.position);
+        const vsv::EpipolarGrid& g = mGrids[std::size_t(vpl)];
+        const glm::dvec3 ray = scene::pixelRay(scene.camera, input.width, input.height, x, y);
+        return {std::clamp(int(std::floor(vsv::alphaCoord(g, vsv::alphaOf(f, ray)))), 0, cells - 1),
+                std::clamp(int(std::floor(vsv::thetaCoord(g, vsv::thetaOf(f, ray)))), 0, cells - 1)};
+    }
+
+    // Two rows of phi bits along pixel (x, y)'s column: row 0 as voxelized (mPreScanColumn), row 1 after
+    // the scan; 0.5 beyond the pixel's fragment (the gather does not read them).
     std::shared_ptr<Image> columnImage(const scene::Scene& scene, const FrameInput& input, int vpl, int cells, int x,
                                        int y) const {
         const vsv::EpipolarFrame f = vsv::makeFrame(mVpls[std::size_t(vpl)].position - scene.camera.position);
         const vsv::EpipolarGrid& g = mGrids[std::size_t(vpl)];
-        const glm::dvec3 ray = scene::pixelRay(scene.camera, input.width, input.height, x, y);
-        const double alpha = vsv::alphaOf(f, ray);
-        const int ia = std::clamp(int(std::floor(vsv::alphaCoord(g, alpha))), 0, cells - 1);
-        const int jt = std::clamp(int(std::floor(vsv::thetaCoord(g, vsv::thetaOf(f, ray)))), 0, cells - 1);
+        const double alpha = vsv::alphaOf(f, scene::pixelRay(scene.camera, input.width, input.height, x, y));
+        const glm::ivec2 cell = pickedCell(scene, input, vpl, cells, x, y);
         float d = 0.0f;
         glGetTextureSubImage(mView.surface().distance().id(), 0, x, input.height - 1 - y, 0, 1, 1, 1, GL_RED,
                              GL_FLOAT, sizeof(float), &d);
         const double kEnd = vsv::phiCoord(g, vsv::phiOnEyeRay(f, alpha, double(d)));
         const glm::ivec2 origin = tileOrigin(vpl, cells);
-        const std::vector<vsv::Bits128> texel = vsv::readGridRow(*mResult, origin.x + ia, 1, origin.y + jt);
-        auto image = std::make_shared<Image>(kPhiBits, 1, 1);
-        for (int k = 0; k < kPhiBits; ++k)
-            image->at(k, 0) = double(k) >= kEnd ? 0.5f : (vsv::testBitPlain(texel[0], k) ? 1.0f : 0.0f);
+        const vsv::Bits128 after = vsv::readGridRow(*mResult, origin.x + cell.x, 1, origin.y + cell.y).front();
+        auto image = std::make_shared<Image>(kPhiBits, 2, 1);
+        for (int row = 0; row < 2; ++row)
+            for (int k = 0; k < kPhiBits; ++k)
+                image->at(k, row) = double(k) >= kEnd ? 0.5f
+                                                      : (vsv::testBitPlain(row == 0 ? mPreScanColumn : after, k) ? 1.0f : 0.0f);
         return image;
     }
 
@@ -950,6 +968,7 @@ private:
     gl::Texture mIsmBits, mIsmRaw, mIsm;
     gl::Texture mGrid, mPong, mWords;
     const gl::Texture* mResult = nullptr;
+    vsv::Bits128 mPreScanColumn{};  // the picked pixel's column of the shown VPL before the scan
     gl::Texture mAirlight, mRaw, mLow, mVisibility;
 };
 
