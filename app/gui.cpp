@@ -2041,10 +2041,14 @@ private:
             return (mGizmoDrag && mGizmoDrag->view == id && mGizmoDrag->direction == direction) ? kText : yellow;
         };
         bool inside = true;
-        if (h.tip && h.root) {
-            const glm::vec2 a = frameToWindow(v, *h.root), tip = frameToWindow(v, *h.tip);
-            dl.line(a, tip, w + 2.0f * mScale, shadow);
-            dl.line(a, tip, w, yellow);
+        if (h.tip) {
+            // The arm, when its root is in front of the camera too (a light behind the camera can still be
+            // turned by its tip).
+            if (h.root) {
+                const glm::vec2 a = frameToWindow(v, *h.root), tip = frameToWindow(v, *h.tip);
+                dl.line(a, tip, w + 2.0f * mScale, shadow);
+                dl.line(a, tip, w, yellow);
+            }
             const glm::vec2 b = handlePoint(v, *h.tip, inside);
             const glm::vec2 corners[4] = {{b.x, b.y - r - 1.0f}, {b.x + r + 1.0f, b.y}, {b.x, b.y + r + 1.0f}, {b.x - r - 1.0f, b.y}};
             for (int pass = 0; pass < 2; ++pass)

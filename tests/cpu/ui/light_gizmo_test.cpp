@@ -98,6 +98,23 @@ TEST(LightGizmo, DraggingTheTipTurnsTheSpotAboutItsPosition) {
     EXPECT_GT(glm::dot(glm::normalize(toTip), ray), glm::dot(glm::normalize(position - cam.position), ray));
 }
 
+TEST(LightGizmo, ASpotBehindTheCameraIsTurnedByItsTipAlone) {
+    const auto cam = testCamera();
+    const double arm = 2.0;
+    const LightGizmo gizmo(cam, kFrame, arm, {});
+    Light light = spot();
+    light.position = cam.position - 0.5 * cam.forward;  // just behind the eye, shining forward
+    light.direction = cam.forward;
+    const auto h = gizmo.handles(light);
+    EXPECT_FALSE(h.position);
+    EXPECT_FALSE(h.root);
+    ASSERT_TRUE(h.tip);
+    const glm::dvec2 target = *h.tip + glm::dvec2(3.0, 2.0);
+    ASSERT_TRUE(gizmo.dragDirection(light, target));
+    expectNear(*gizmo.handles(light).tip, target, 1e-6);
+    EXPECT_NEAR(glm::length(light.direction), 1.0, 1e-12);
+}
+
 TEST(LightGizmo, ADirectionalLightsHandleIsWhereItsLightComesFrom) {
     const auto cam = testCamera();
     const glm::dvec3 anchor{0.0, 0.0, 0.0};
