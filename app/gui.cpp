@@ -31,6 +31,7 @@
 #include <nlohmann/json.hpp>
 
 #include "camera_controller.h"
+#include "comparison_grid.h"
 #include "cpu_worker.h"
 #include "lesson_player.h"
 #include "pane_image.h"
@@ -280,7 +281,7 @@ public:
             if (cursor) glfwDestroyCursor(cursor);
         // Panes may borrow the techniques' textures: drop them first.
         mViews.clear();
-        mCompare.clear();
+        mComparison.close();
         mOutput = {};
         mTechniques.clear();
     }
@@ -289,9 +290,9 @@ public:
         auto last = Clock::now();
         while (!mWindow.shouldClose()) {
             const bool flying = mController.mode() == CameraController::Mode::Fly && anyFlyKeyDown();
-            const bool busy = mWorker->progress().busy || otherPending() || comparisonPending();
+            const bool busy = mWorker->progress().busy || otherPending() || mComparison.pending();
             const bool automated = !mOptions.screenshot.empty() || !mOptions.script.empty();
-            if (flying || mDirty || automated || mPlaying || mGpuOthersDue || mCompareGpuDue ||
+            if (flying || mDirty || automated || mPlaying || mGpuOthersDue || mComparison.due() ||
                 (mLesson && mLesson->animating())) {
                 glfwPollEvents();
             } else {
@@ -303,7 +304,7 @@ public:
             const double dt = std::min(0.1, std::chrono::duration<double>(now - last).count());
             last = now;
             if (mGpuOthersDue) runDueGpuOthers();  // after a frame that said "computing it..."
-            if (mCompareGpuDue) runComparisonTechniques();
+            if (mComparison.due()) runComparisonTechniques();
             if (mController.mode() == CameraController::Mode::Fly) fly(dt);
             // Automation advances animations by a fixed 1/30 s per frame, so runs repeat exactly.
             if (mLesson) mLesson->update(*this, automated ? 1.0 / 30.0 : dt);
@@ -326,12 +327,12 @@ public:
                 mPendingInspect.reset();
             }
             pollOtherWorker();
-            pollComparison();
+            mComparison.poll();
             draw();
             ++mFramesDrawn;
             if (!mOptions.script.empty()) {
                 // Each frame runs the script's next actions; the window closes when it is done.
-                if (mHaveOutput && !mWorker->progress().busy && !otherPending() && !comparisonPending() && !stepScript()) {
+                if (mHaveOutput && !mWorker->progress().busy && !otherPending() && !mComparison.pending() && !stepScript()) {
                     if (!mOptions.screenshot.empty()) writeScreenshot(mOptions.screenshot);
                     return 0;
                 }
@@ -529,17 +530,7 @@ public:
                                 {"ui_cpu_ms_last_frame", mUiMilliseconds},
                                 {"linked_pixel", mLinkedPixel ? nlohmann::json::array({mLinkedPixel->x, mLinkedPixel->y})
                                                               : nlohmann::json(nullptr)}};
-        if (!mCompare.empty()) {
-            nlohmann::json tiles = nlohmann::json::array();
-            for (const auto& t : mCompare)
-                tiles.push_back({{"technique", t.technique},
-                                 {"milliseconds", t.milliseconds},
-                                 {"relative_l2", std::isfinite(t.error.relativeL2) ? nlohmann::json(t.error.relativeL2)
-                                                                                   : nlohmann::json(nullptr)},
-                                 {"nan_inf_pixels", t.error.nanPixels + t.error.infPixels},
-                                 {"failure", t.failure}});
-            sidecar["comparison"] = tiles;
-        }
+        if (mComparison.isOpen()) sidecar["comparison"] = mComparison.toJson();
         if (mProbe) {
             const auto rgb = [](glm::dvec3 v) { return nlohmann::json::array({v.x, v.y, v.z}); };
             nlohmann::json lights = nlohmann::json::array();
@@ -681,7 +672,7 @@ private:
         mGizmoArm = kGizmoArm * mController.targetDistance();
         mWorker = std::make_unique<CpuWorker>(mScene);
         mLightIntensity0 = 0.0;
-        closeComparison();
+        mComparison.close();
         mProbe.reset();
         mDirty = true;
     }
@@ -728,7 +719,7 @@ private:
         mProbe.reset();
         mPendingInspect = s.inspect;
         mExposureSet = false;
-        closeComparison();
+        mComparison.close();
     }
 
     void showLessonView(const std::string& id) override { showInFocusedView(id); }
@@ -797,92 +788,41 @@ private:
 
     // ---- comparison grid ----
 
-    // G: every technique renders the current scene and camera with its current settings; their L_air
-    // sit in a grid at one shared exposure (the reference's), each with its time and error against the
-    // reference. G again closes it. The grid is a snapshot: it does not follow later changes.
-    // G: every technique's L_air for the current view beside the reference's. The reference renders on
-    // a worker thread (from its on-disk cache when it has the frame) while the window stays responsive;
-    // when it is in, the GPU techniques run on this thread at the start of the next frame.
+    // G: the comparison grid (comparison_grid.h) for the current view; G again closes it.
     void toggleComparison() {
-        if (!mCompare.empty()) {
-            closeComparison();
+        if (mComparison.isOpen()) {
+            mComparison.close();
             return;
         }
-        mCompareCamera = mController.camera();
-        mCompareSize = {mOptions.width, mOptions.height};
-        for (const std::string& id : mIds) mCompare.push_back(CompareTile{id, "", {}, 0.0, {}});
+        viz::scene::Scene scene = mScene;
+        scene.camera = mController.camera();
         try {
-            const auto reference = viz::makeTechnique("reference");
-            mCompareWorker = std::make_unique<CpuWorker>(mScene);
-            mCompareWorker->submit({"reference", mCompareCamera, viz::completeSettings(*reference, {}), mCompareSize.x,
-                                    mCompareSize.y});
-            mComparePending = true;
+            mComparison.open(scene, {mOptions.width, mOptions.height}, mIds);
         } catch (const std::exception& e) {
             mError = std::string("comparison: ") + e.what();
-            closeComparison();
+            mComparison.close();
         }
     }
 
-    void closeComparison() {
-        mCompare.clear();
-        mCompareWorker.reset();
-        mComparePending = mCompareGpuDue = false;
-    }
-
-    bool comparisonPending() const { return mComparePending || mCompareGpuDue; }
-
-    // The comparison's reference, once its full-size pass is in: the GPU techniques follow next frame.
-    void pollComparison() {
-        if (!mComparePending || !mCompareWorker) return;
-        std::optional<CpuResult> result = mCompareWorker->take();
-        if (!result || (result->error.empty() && result->pass < result->passCount)) return;
-        mComparePending = false;
-        if (!result->error.empty()) {
-            for (CompareTile& tile : mCompare) tile.failure = "reference: " + firstLine(result->error);
-            return;
-        }
-        mCompareReference = std::move(result->output.airlight);
-        mCompareGpuDue = true;
-    }
-
+    // The grid's techniques with the window's instances and settings (this thread holds the GL context).
     void runComparisonTechniques() {
-        mCompareGpuDue = false;
-        const viz::Image& reference = mCompareReference;
-        viz::scene::Scene scene = mScene;
-        scene.camera = mCompareCamera;
-        const int w = mCompareSize.x, h = mCompareSize.y;
-        for (CompareTile& tile : mCompare) {
-            const std::string& id = tile.technique;
-            try {
-                if (!mTechniques.count(id)) mTechniques[id] = viz::makeTechnique(id);
-                viz::Technique& t = *mTechniques.at(id);
-                viz::Settings given = mSession.settings.count(id) ? mSession.settings.at(id) : viz::Settings{};
-                for (const auto& [name, value] : mOptions.settings) given[name] = value;
-                std::string ignored;
-                viz::FrameInput in{&scene, w, h, settingsFor(t, given, ignored), -1};
-                // Timed warm: the first run compiles shaders and allocates (polyvol's first run at 80x60
-                // takes several times its second), so the second run's time is the one shown.
-                if (id != "reference") (void)t.run(in);
-                const viz::FrameOutput out = id == "reference" ? viz::FrameOutput{} : t.run(in);
-                glBindFramebuffer(GL_FRAMEBUFFER, 0);
-                const viz::Image& airlight = id == "reference" ? reference : out.airlight;
-                tile.milliseconds = out.timing.totalMilliseconds();
-                tile.error = viz::report::compareImages(airlight, reference);
-                tile.pane.id = id;
-                tile.pane.mode = DisplayMode::HdrColor;
-                uploadImage(tile.pane, airlight);
-            } catch (const std::exception& e) {
-                tile.failure = e.what();
-            }
-        }
-        mCompareExposure = std::log2(autoExposure(reference));
-        // The techniques' runs replaced the current technique's textures with the comparison's: run it again.
+        mComparison.runTechniques([this](const std::string& id, const viz::scene::Scene& scene, glm::ivec2 size) {
+            if (!mTechniques.count(id)) mTechniques[id] = viz::makeTechnique(id);
+            viz::Technique& t = *mTechniques.at(id);
+            viz::Settings given = mSession.settings.count(id) ? mSession.settings.at(id) : viz::Settings{};
+            for (const auto& [name, value] : mOptions.settings) given[name] = value;
+            std::string ignored;
+            viz::FrameOutput out = t.run({&scene, size.x, size.y, settingsFor(t, given, ignored), -1});
+            glBindFramebuffer(GL_FRAMEBUFFER, 0);
+            return out;
+        });
+        // Those runs replaced the current technique's textures with the comparison's: run it again.
         mDirty = true;
     }
 
     void drawComparison(DrawList& dl, const Rect& area) {
         const float line = mFont->lineHeight(), pad = 4.0f * mScale;
-        const int n = int(mCompare.size());
+        const int n = int(mComparison.tiles().size());
         // One more cell for the plot of error against time.
         const int cells = n + 1;
         const int cols = int(std::ceil(std::sqrt(double(cells)))), rows = (cells + cols - 1) / cols;
@@ -893,25 +833,21 @@ private:
             // The plot takes the rest of the last row.
             const glm::vec2 at = area.min + glm::vec2(float(n % cols), float(n / cols)) * cell;
             const Rect box{at + pad, at + glm::vec2(float(cols - n % cols), 1.0f) * cell - pad};
-            viz::plot::drawPlot(dl, box, errorAgainstTimePlot());
+            viz::plot::drawPlot(dl, box, mComparison.errorAgainstTime());
             mViewRects.push_back({"comparison.error_vs_time", "relative L2 against time", box, -1});
         }
         for (int i = 0; i < n; ++i) {
-            CompareTile& tile = mCompare[std::size_t(i)];
+            ComparisonTile& tile = mComparison.tiles()[std::size_t(i)];
             const glm::vec2 at = area.min + glm::vec2(float(i % cols), float(i / cols)) * cell;
             const Rect box{at + pad, at + cell - glm::vec2(pad, pad + 2.0f * line)};
             const Rect image = fitImage(box, tile.pane.size);
             if (tile.pane.texture != 0) {
                 DisplayMapping shared;
-                shared.exposure = mCompareExposure;
+                shared.exposure = mComparison.exposure();
                 mPaneDraws.push_back({image, &tile.pane, nullptr, shared});
             } else if (tile.failure.empty()) {
-                const CpuProgress progress = mCompareWorker ? mCompareWorker->progress() : CpuProgress{};
-                const std::string waiting = mComparePending ? "computing the reference... pass " +
-                                                                  std::to_string(progress.pass) + "/" +
-                                                                  std::to_string(progress.passCount)
-                                                            : std::string("running...");
-                dl.textClipped({box.min.x + 4.0f * mScale, box.min.y + 4.0f * mScale}, waiting, kDim, box.max.x);
+                dl.textClipped({box.min.x + 4.0f * mScale, box.min.y + 4.0f * mScale}, mComparison.waitingText(), kDim,
+                               box.max.x);
             }
             std::string caption = tile.technique;
             std::string figures = tile.failure.empty()
@@ -925,24 +861,6 @@ private:
             dl.textClipped({box.min.x, box.max.y + 2.0f}, caption, kText, at.x + cell.x - pad);
             dl.textClipped({box.min.x, box.max.y + 2.0f + line}, figures, kDim, at.x + cell.x - pad);
         }
-    }
-
-    // Each technique of the comparison grid as a point: its run time and its relative L2 against the
-    // reference, both on log axes (the report's error-against-time plot, for this scene and view).
-    viz::plot::PlotSpec errorAgainstTimePlot() const {
-        viz::plot::PlotSpec spec;
-        spec.xLabel = "run time (ms)";
-        spec.yLabel = "relative L2";
-        spec.logX = spec.logY = true;
-        for (std::size_t i = 0; i < mCompare.size(); ++i) {
-            const CompareTile& t = mCompare[i];
-            if (t.technique == "reference" || !t.failure.empty() || !(t.milliseconds > 0.0) ||
-                !(t.error.relativeL2 > 0.0) || !std::isfinite(t.error.relativeL2))
-                continue;
-            spec.series.push_back({t.technique, viz::plot::categoricalColor(int(i)), {{t.milliseconds, t.error.relativeL2}},
-                                   false, true});
-        }
-        return spec;
     }
 
     // ---- export ----
@@ -2083,7 +2001,7 @@ private:
     // The gaps between views: each is the toolkit's splitter over its split (scripts name them
     // "divider:root", "divider:1", ... by the split's path).
     void drawDividers(const Rect& area) {
-        const auto dividers = mCompare.empty() ? mLayout.dividers(area, kPad * mScale) : std::vector<ViewDivider>{};
+        const auto dividers = !mComparison.isOpen() ? mLayout.dividers(area, kPad * mScale) : std::vector<ViewDivider>{};
         std::optional<SplitAxis> over;
         mDividerRects.clear();
         for (const ViewDivider& d : dividers) {
@@ -2112,7 +2030,7 @@ private:
         mStripRects.clear();
         // The comparison grid takes the right half; the first view keeps the left.
         const float half = 0.5f * (area.size().x - kPad * mScale);
-        if (mCompare.empty()) mCells = mLayout.arrange(area, kPad * mScale);
+        if (!mComparison.isOpen()) mCells = mLayout.arrange(area, kPad * mScale);
         else mCells = {{mLayout.views().front(), {area.min, {area.min.x + half, area.max.y}}}};
         drawDividers(area);
         for (const ViewCellRect& c : mCells) layoutCell(mViews[c.view], c.rect);
@@ -2131,7 +2049,7 @@ private:
             drawView(c.view, v);
         }
         if (frameHeight > 1.0f) mImageHeight = frameHeight;
-        if (!mCompare.empty()) {
+        if (mComparison.isOpen()) {
             const Rect grid{{area.max.x - half, area.min.y + mFont->lineHeight()}, area.max};
             drawComparison(*mDrawList, grid);
             mViewRects.push_back({"comparison", "comparison grid", grid, -1});
@@ -2940,20 +2858,7 @@ private:
         const viz::ui::ImageViewTransform* view;  // nullptr: the whole image
         DisplayMapping mapping;
     };
-    struct CompareTile {
-        std::string technique, failure;
-        PaneImage pane;
-        double milliseconds = 0.0;
-        viz::report::ErrorMetrics error;
-    };
-    std::vector<CompareTile> mCompare;  // the comparison grid (G), empty when closed
-    float mCompareExposure = 0.0f;
-    std::unique_ptr<CpuWorker> mCompareWorker;  // the comparison's reference
-    bool mComparePending = false;               // waiting for it
-    bool mCompareGpuDue = false;                // it is in: the GPU techniques run next frame
-    viz::Image mCompareReference;
-    viz::scene::Camera mCompareCamera;          // the view and size the comparison is for
-    glm::ivec2 mCompareSize{0};
+    ComparisonGrid mComparison;  // G
     std::vector<PaneDraw> mPaneDraws;
     std::unique_ptr<viz::ui::Context> mUi;   // the widgets
     viz::ui::Input mUiInput;                 // keys, text and wheel gathered since the last frame

@@ -1,0 +1,105 @@
+#include "comparison_grid.h"
+
+#include <cmath>
+
+#include "render_job.h"
+#include "techniques/registry.h"
+
+namespace airlight {
+
+namespace {
+
+std::string firstLineOf(const std::string& text) { return text.substr(0, text.find('\n')); }
+
+}  // namespace
+
+void ComparisonGrid::open(const viz::scene::Scene& scene, glm::ivec2 size, const std::vector<std::string>& ids) {
+    close();
+    mScene = scene;
+    mSize = size;
+    for (const std::string& id : ids) mTiles.push_back(ComparisonTile{id, "", {}, 0.0, {}});
+    const auto reference = viz::makeTechnique("reference");
+    mWorker = std::make_unique<CpuWorker>(mScene);
+    mWorker->submit({"reference", mScene.camera, viz::completeSettings(*reference, {}), mSize.x, mSize.y});
+    mWaiting = true;
+}
+
+void ComparisonGrid::close() {
+    mTiles.clear();
+    mWorker.reset();
+    mWaiting = mDue = false;
+    mReference = {};
+}
+
+void ComparisonGrid::poll() {
+    if (!mWaiting || !mWorker) return;
+    std::optional<CpuResult> result = mWorker->take();
+    if (!result || (result->error.empty() && result->pass < result->passCount)) return;
+    mWaiting = false;
+    if (!result->error.empty()) {
+        for (ComparisonTile& tile : mTiles) tile.failure = "reference: " + firstLineOf(result->error);
+        return;
+    }
+    mReference = std::move(result->output.airlight);
+    mDue = true;
+}
+
+void ComparisonGrid::runTechniques(const RunTechnique& run) {
+    mDue = false;
+    for (ComparisonTile& tile : mTiles) {
+        try {
+            const bool reference = tile.technique == "reference";
+            viz::FrameOutput out;
+            if (!reference) {
+                // Timed warm: polyvol's first run at 80x60 takes several times its second.
+                (void)run(tile.technique, mScene, mSize);
+                out = run(tile.technique, mScene, mSize);
+            }
+            const viz::Image& airlight = reference ? mReference : out.airlight;
+            tile.milliseconds = out.timing.totalMilliseconds();
+            tile.error = viz::report::compareImages(airlight, mReference);
+            tile.pane.id = tile.technique;
+            tile.pane.mode = DisplayMode::HdrColor;
+            uploadImage(tile.pane, airlight);
+        } catch (const std::exception& e) {
+            tile.failure = e.what();
+        }
+    }
+    mExposure = std::log2(autoExposure(mReference));
+}
+
+std::string ComparisonGrid::waitingText() const {
+    if (!mWaiting) return "running...";
+    const CpuProgress progress = mWorker ? mWorker->progress() : CpuProgress{};
+    return "computing the reference... pass " + std::to_string(progress.pass) + "/" + std::to_string(progress.passCount);
+}
+
+viz::plot::PlotSpec ComparisonGrid::errorAgainstTime() const {
+    viz::plot::PlotSpec spec;
+    spec.xLabel = "run time (ms)";
+    spec.yLabel = "relative L2";
+    spec.logX = spec.logY = true;
+    for (std::size_t i = 0; i < mTiles.size(); ++i) {
+        const ComparisonTile& t = mTiles[i];
+        if (t.technique == "reference" || !t.failure.empty() || !(t.milliseconds > 0.0) ||
+            !(t.error.relativeL2 > 0.0) || !std::isfinite(t.error.relativeL2))
+            continue;
+        spec.series.push_back({t.technique, viz::plot::categoricalColor(int(i)), {{t.milliseconds, t.error.relativeL2}},
+                               false, true});
+    }
+    return spec;
+}
+
+nlohmann::json ComparisonGrid::toJson() const {
+    nlohmann::json tiles = nlohmann::json::array();
+    for (const ComparisonTile& t : mTiles)
+        tiles.push_back({{"technique", t.technique},
+                         {"milliseconds", t.milliseconds},
+                         {"relative_l2", std::isfinite(t.error.relativeL2) ? nlohmann::json(t.error.relativeL2)
+                                                                           : nlohmann::json(nullptr)},
+                         {"nan_inf_pixels", t.error.nanPixels + t.error.infPixels},
+                         {"failure", t.failure}});
+    return tiles;
+}
+
+}  // namespace airlight

@@ -1,0 +1,72 @@
+// The window's comparison grid (G): every technique's L_air for one view (scene, camera, size) beside the
+// reference's, each with the time of a warm run and its error against the reference, and the error
+// against time as a plot. The reference renders on a worker thread (from its on-disk cache when it has
+// the frame) while the window stays responsive; once it is in, the window runs the GPU techniques on its
+// own thread (they need its GL context). The grid is a snapshot: it does not follow later changes.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+#include <nlohmann/json.hpp>
+
+#include "cpu_worker.h"
+#include "pane_image.h"
+#include "plot/plot.h"
+#include "report/error_metrics.h"
+#include "scene/scene.h"
+
+namespace airlight {
+
+struct ComparisonTile {
+    std::string technique, failure;
+    PaneImage pane;  // empty until the technique has run
+    double milliseconds = 0.0;
+    viz::report::ErrorMetrics error;
+};
+
+class ComparisonGrid {
+public:
+    // Runs technique `id` once on `scene` at `size` with the window's settings for it (throws on failure).
+    using RunTechnique =
+        std::function<viz::FrameOutput(const std::string& id, const viz::scene::Scene& scene, glm::ivec2 size)>;
+
+    // Starts the reference for `scene` (its camera is the view compared) at `size`; one tile per id.
+    void open(const viz::scene::Scene& scene, glm::ivec2 size, const std::vector<std::string>& ids);
+    void close();
+    bool isOpen() const { return !mTiles.empty(); }
+    // Automation waits while the reference renders or the techniques are still to run.
+    bool pending() const { return mWaiting || mDue; }
+    // The reference is in: call runTechniques (at the start of a frame, after one that said so).
+    bool due() const { return mDue; }
+
+    // Takes the reference's full-size pass when the worker has it.
+    void poll();
+    // Runs every technique but the reference twice and keeps the second run (the first compiles shaders
+    // and allocates), its time and its error against the reference.
+    void runTechniques(const RunTechnique& run);
+
+    std::vector<ComparisonTile>& tiles() { return mTiles; }
+    const std::vector<ComparisonTile>& tiles() const { return mTiles; }
+    float exposure() const { return mExposure; }  // EV, from the reference's image, shared by every tile
+    // What a tile without an image says ("computing the reference... pass 2/4").
+    std::string waitingText() const;
+    // Each technique as a point: run time against relative L2, both on log axes.
+    viz::plot::PlotSpec errorAgainstTime() const;
+    // The tiles' figures for the screenshot sidecar.
+    nlohmann::json toJson() const;
+
+private:
+    std::vector<ComparisonTile> mTiles;
+    std::unique_ptr<CpuWorker> mWorker;  // the reference
+    bool mWaiting = false, mDue = false;
+    viz::Image mReference;
+    viz::scene::Scene mScene;
+    glm::ivec2 mSize{0};
+    float mExposure = 0.0f;
+};
+
+}  // namespace airlight
