@@ -68,6 +68,34 @@ inline glm::vec3 shaderPixelRay(const scene::Camera& cam, int w, int h, int x, i
                           (ndcY * tanHalf) * glm::vec3(cam.up));
 }
 
+// vsv's and ivsv's picked column (two rows of phi bits: as voxelized, after the scan; 0.5 beyond the
+// fragment) against the voxels slice at the pixel's theta (alpha x phi, before the scan): some alpha cell
+// must have row 0 as its column and row 1 as the prefix OR of the columns up to it. Returns the number of
+// bits read and, in `before` / `after`, the set bits of each row up to there.
+inline int expectColumnIsAVoxelColumnAndItsPrefixOr(const Image& voxels, const Image& column, int& before, int& after) {
+    EXPECT_EQ(column.height, 2);
+    EXPECT_EQ(column.width, voxels.height);
+    int read = 0;
+    while (read < column.width && column.at(read, 0) != 0.5f) ++read;
+    for (int k = read; k < column.width; ++k) EXPECT_EQ(column.at(k, 1), 0.5f);
+    int matches = 0;
+    for (int a = 0; a < voxels.width; ++a) {
+        bool same = true, prefix = true;
+        for (int k = 0; k < read; ++k) {
+            same = same && (voxels.at(a, k) > 0.5f) == (column.at(k, 0) > 0.5f);
+            bool any = false;
+            for (int b = 0; b <= a; ++b) any = any || voxels.at(b, k) > 0.5f;
+            prefix = prefix && any == (column.at(k, 1) > 0.5f);
+        }
+        matches += same && prefix;
+    }
+    EXPECT_GE(matches, 1) << "no alpha cell explains both rows";
+    before = after = 0;
+    for (int k = 0; k < read; ++k) before += column.at(k, 0) > 0.5f, after += column.at(k, 1) > 0.5f;
+    EXPECT_GE(after, before);
+    return read;
+}
+
 inline double relativeL2(const Image& a, const Image& b) {
     double num = 0.0, den = 0.0;
     for (std::size_t i = 0; i < b.pixels.size(); ++i) {
