@@ -113,6 +113,21 @@ glm::vec4 categoricalColor(int i) {
     return kPalette[((i % n) + n) % n];
 }
 
+std::vector<bool> keptTickLabels(const std::vector<float>& centres, const std::vector<float>& extents, float gap) {
+    std::vector<bool> kept(centres.size(), false);
+    bool any = false;
+    float lastCentre = 0.0f, lastHalf = 0.0f;
+    for (std::size_t i = 0; i < centres.size(); ++i) {
+        const float half = 0.5f * extents[i];
+        // The axis may run either way on screen (y grows downwards): the distance between centres counts.
+        if (any && std::abs(centres[i] - lastCentre) < lastHalf + half + gap) continue;
+        kept[i] = any = true;
+        lastCentre = centres[i];
+        lastHalf = half;
+    }
+    return kept;
+}
+
 void drawPlot(ui::DrawList& list, const ui::Rect& area, const PlotSpec& spec) {
     const ui::FontAtlas& font = list.font();
     const float line = font.lineHeight();
@@ -155,19 +170,24 @@ void drawPlot(ui::DrawList& list, const ui::Rect& area, const PlotSpec& spec) {
 
     if (!spec.title.empty())
         list.textClipped({frame.min.x, area.min.y + pad}, spec.title, kInk, area.max.x - pad);
+    // Every tick gets its grid line; a label that would touch the one before it is left out (a narrow
+    // log axis with 1-2-5 ticks).
+    std::vector<float> xs, widths, ys, heights;
+    for (std::size_t i = 0; i < xt.values.size(); ++i) xs.push_back(mx(xt.values[i])), widths.push_back(font.measure(xt.labels[i]));
+    for (std::size_t i = 0; i < yt.values.size(); ++i) ys.push_back(my(yt.values[i])), heights.push_back(line);
+    const std::vector<bool> keepX = keptTickLabels(xs, widths, pad), keepY = keptTickLabels(ys, heights, 0.0f);
     for (std::size_t i = 0; i < xt.values.size(); ++i) {
-        const float x = mx(xt.values[i]);
+        const float x = xs[i];
         list.line({x, frame.min.y}, {x, frame.max.y}, 1.0f, kGrid);
         list.line({x, frame.max.y}, {x, frame.max.y + pad * 0.6f}, 1.0f, kInk);
-        const float w = font.measure(xt.labels[i]);
-        list.text({x - w * 0.5f, frame.max.y + pad}, xt.labels[i], kInk);
+        if (keepX[i]) list.text({x - widths[i] * 0.5f, frame.max.y + pad}, xt.labels[i], kInk);
     }
     for (std::size_t i = 0; i < yt.values.size(); ++i) {
-        const float y = my(yt.values[i]);
+        const float y = ys[i];
         list.line({frame.min.x, y}, {frame.max.x, y}, 1.0f, kGrid);
         list.line({frame.min.x - pad * 0.6f, y}, {frame.min.x, y}, 1.0f, kInk);
         const float w = font.measure(yt.labels[i]);
-        list.text({frame.min.x - pad - w, y - line * 0.5f}, yt.labels[i], kInk);
+        if (keepY[i]) list.text({frame.min.x - pad - w, y - line * 0.5f}, yt.labels[i], kInk);
     }
     // Frame.
     list.line(frame.min, {frame.max.x, frame.min.y}, 1.0f, kInk);

@@ -49,6 +49,11 @@ struct AxisTicks {
 // A degenerate range is widened around its value.
 AxisTicks axisTicks(double lo, double hi, bool logarithmic, int target = 6);
 
+// Which tick labels to draw along an axis: centres[i] and extents[i] (label width along x, line height
+// along y) in pixels, in tick order; a label that would come within `gap` of the last one kept is left
+// out (its tick and grid line stay). The first label is always kept.
+std::vector<bool> keptTickLabels(const std::vector<float>& centres, const std::vector<float>& extents, float gap);
+
 // A distinct colour for series i (a fixed categorical palette that cycles).
 glm::vec4 categoricalColor(int i);
 

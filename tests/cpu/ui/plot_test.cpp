@@ -1,6 +1,7 @@
 // Plot layout on the CPU: tick choice and that a drawn plot stays inside its rectangle.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "plot/plot.h"
@@ -94,6 +95,16 @@ TEST(DrawPlot, ALegendTooLongForTheAreaIsCutShortAndStaysInside) {
     ui::DrawList tall(font);
     drawPlot(tall, {{0, 0}, {360, 600}}, spec);
     EXPECT_GT(tall.vertices().size(), list.vertices().size());
+}
+
+TEST(KeptTickLabels, LabelsThatWouldTouchTheLastKeptOneAreLeftOut) {
+    // 1-2-5 ticks on a narrow log axis: 100, 200, 500, 1000 at 20, 36, 58, 74 px, labels 21-28 px wide.
+    const std::vector<bool> kept = keptTickLabels({20, 36, 58, 74}, {21, 21, 21, 28}, 4.0f);
+    EXPECT_EQ(kept, (std::vector<bool>{true, false, true, false}));
+    // Either direction on screen (a y axis runs upwards), and every label kept where there is room.
+    EXPECT_EQ(keptTickLabels({100, 90, 60, 30}, {14, 14, 14, 14}, 0.0f), (std::vector<bool>{true, false, true, true}));
+    EXPECT_EQ(keptTickLabels({0, 50, 100}, {20, 20, 20}, 4.0f), (std::vector<bool>{true, true, true}));
+    EXPECT_TRUE(keptTickLabels({}, {}, 1.0f).empty());
 }
 
 TEST(DrawBarChart, BarsAreScaledToTheLargestValueAndStayInside) {
