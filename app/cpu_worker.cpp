@@ -5,6 +5,7 @@
 
 #include <cstdio>
 #include <exception>
+#include <utility>
 #include <vector>
 
 #include "techniques/registry.h"
@@ -22,6 +23,8 @@ void CpuWorker::loop(State& s) {
             if (s.quit) return;
             request = std::move(*s.request);
             s.request.reset();
+            // Only this thread reads s.scene: it changes between requests, never under a running pass.
+            if (s.nextScene) s.scene = std::move(*std::exchange(s.nextScene, std::nullopt));
         }
         runPasses(s, request);
     }

@@ -71,6 +71,14 @@ public:
     CpuWorker(const CpuWorker&) = delete;
     CpuWorker& operator=(const CpuWorker&) = delete;
 
+    // Replaces the worker's copy of the scene (medium, lights) for the requests that follow; a pass
+    // already running finishes with the scene it started with. Cheaper and safer than a new worker per
+    // edit: a busy worker cannot be stopped mid-pass, so replacing it would leave its pass running on.
+    void setScene(const viz::scene::Scene& scene) {
+        std::lock_guard lock(mState->mutex);
+        mState->nextScene = scene;
+    }
+
     void submit(CpuRequest request) {
         {
             std::lock_guard lock(mState->mutex);
@@ -91,7 +99,8 @@ public:
 
 private:
     struct State {
-        viz::scene::Scene scene;  // the worker's own copy; only the camera changes
+        viz::scene::Scene scene;  // the worker's own copy; the camera comes with each request
+        std::optional<viz::scene::Scene> nextScene;  // setScene's, taken with the next request
         std::map<std::string, std::unique_ptr<viz::Technique>> techniques;
         mutable std::mutex mutex;
         std::condition_variable wake;

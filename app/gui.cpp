@@ -655,8 +655,7 @@ private:
     void restoreSessionOverStep() override {
         const bool lights = applyLightPlacements(mSession.lights, mScene);
         if (mSession.medium) mScene.medium = *mSession.medium;
-        if (mSession.medium || lights)
-            mWorker = std::make_unique<CpuWorker>(mScene);  // the CPU worker keeps its own copy of the scene
+        if (mSession.medium || lights) mWorker->setScene(mScene);  // the CPU worker keeps its own copy of the scene
         const auto it = std::find(mIds.begin(), mIds.end(), mSession.technique);
         selectTechnique(it == mIds.end() ? mCurrent : int(it - mIds.begin()));
         applySessionView();
@@ -704,7 +703,7 @@ private:
         }
         mScene.medium = s.medium;
         mScene.lights = s.lights;
-        if (lighting) mWorker = std::make_unique<CpuWorker>(mScene);  // it keeps its own copy of the scene
+        if (lighting) mWorker->setScene(mScene);  // it keeps its own copy of the scene
         mController.place(s.camera, s.orbitTarget);
         mOptions.width = s.size.x;
         mOptions.height = s.size.y;
@@ -1994,7 +1993,7 @@ private:
     // The scene's medium or lights changed (panel, gizmo): the CPU worker keeps its own copy of the
     // scene, and the plan may change.
     void sceneEdited() {
-        mWorker = std::make_unique<CpuWorker>(mScene);
+        mWorker->setScene(mScene);
         replan();
     }
 
