@@ -7,12 +7,6 @@
 
 namespace airlight {
 
-namespace {
-
-std::string firstLineOf(const std::string& text) { return text.substr(0, text.find('\n')); }
-
-}  // namespace
-
 void ComparisonGrid::open(const viz::scene::Scene& scene, glm::ivec2 size, const std::vector<std::string>& ids) {
     close();
     mScene = scene;
@@ -37,7 +31,7 @@ void ComparisonGrid::poll() {
     if (!result || (result->error.empty() && result->pass < result->passCount)) return;
     mWaiting = false;
     if (!result->error.empty()) {
-        for (ComparisonTile& tile : mTiles) tile.failure = "reference: " + firstLineOf(result->error);
+        for (ComparisonTile& tile : mTiles) tile.failure = "reference: " + result->error;  // the window shows its first line
         return;
     }
     mReference = std::move(result->output.airlight);

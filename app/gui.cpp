@@ -669,7 +669,7 @@ private:
         mOptions.scene = name;
         mController = CameraController(mScene.camera, orbitDistance(mScene));
         mGizmoArm = kGizmoArm * mController.targetDistance();
-        mWorker = std::make_unique<CpuWorker>(mScene);
+        mWorker->setScene(mScene);
         mLightIntensity0 = 0.0;
         mComparison.close();
         mProbe.reset();
@@ -1366,11 +1366,10 @@ private:
             mGpuOthersDue = true;
             return nullptr;
         }
-        // The worker keeps its own copy of the scene: a new one when the medium or lights changed.
-        if (!mOtherWorker || mOtherSceneKey != sceneOnlyKey()) {
-            mOtherWorker = std::make_unique<CpuWorker>(mScene);
-            mOtherSceneKey = sceneOnlyKey();
-        }
+        // The worker keeps its own copy of the scene: handed the new one when the medium or lights changed.
+        if (!mOtherWorker) mOtherWorker = std::make_unique<CpuWorker>(mScene);
+        else if (mOtherSceneKey != sceneOnlyKey()) mOtherWorker->setScene(mScene);
+        mOtherSceneKey = sceneOnlyKey();
         std::string ignored;
         mOtherWorker->submit({id, mController.camera(), settingsFor(*mTechniques.at(id), otherSettings(id), ignored),
                               mOutputSize.x, mOutputSize.y});

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "gl/readback.h"
+#include "minmax_frame.h"
 #include "core/image_io.h"
 #include "render/gpu_lights.h"
 #include "report/stiff_suite.h"
@@ -43,20 +44,6 @@ const viz::FeaturePlan* feature(const viz::Plan& p, const std::string& name) {
     for (const auto& f : p.features)
         if (f.feature == name) return &f;
     return nullptr;
-}
-
-// The technique's float frame for light 0 (as run() builds it).
-viz::minmax::EpipolarFrame<float> frameOf(const viz::scene::Scene& scene, int w, int h, int columns,
-                                          viz::render::GpuLightCpu* light) {
-    const viz::render::GpuLights lights(scene, scene.camera.position, 4);
-    const auto& L = lights.lights()[0];
-    *light = L;
-    auto technique = viz::makeTechnique("minmax");
-    const int oversampling = int(viz::completeSettings(*technique, {}).at("slice_oversampling"));
-    return viz::minmax::toFloat(viz::minmax::setupLight({.light = &L, .camera = &scene.camera, .width = w,
-                                                         .height = h, .slices = 0, .columns = columns,
-                                                         .oversampling = oversampling})
-                                    .frame);
 }
 
 // shadow_map.glsl cubeLookup on the CPU: the nearest texel of the face the direction leaves through.
@@ -124,7 +111,7 @@ TEST_F(MinmaxPointTest, RectifiedMapEqualsCubeLookups) {
         for (int f = 0; f < 6; ++f) faces.push_back(viz::gl::readTexture(cube->glTexture, 0, f));
         ASSERT_EQ(faces[0].width, size);
         viz::render::GpuLightCpu L{};
-        const auto f = frameOf(scene, w, h, size, &L);
+        const auto f = viz::testing::minmaxFrame(scene, 0, w, h, size, &L);
         ASSERT_EQ(f.kind, viz::minmax::LightKind::Point);
         ASSERT_EQ(rect.width, f.columns);
         ASSERT_EQ(rect.height, f.slices);
@@ -254,7 +241,7 @@ TEST_F(MinmaxPointTest, CpuMirrorEqualsGpuForSampledPixels) {
     const auto* rows = find(out, "minmax.row_gamma");
     ASSERT_TRUE(tree && coords && visited && near && rows && rows->image);
     viz::render::GpuLightCpu L{};
-    const auto f = frameOf(scene, w, h, size, &L);
+    const auto f = viz::testing::minmaxFrame(scene, 0, w, h, size, &L);
     viz::minmax::MirrorLight ml;
     ml.kind = f.kind;
     ml.position = glm::vec3(L.position);

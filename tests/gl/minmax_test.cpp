@@ -9,6 +9,7 @@
 #include <numbers>
 #include <vector>
 
+#include "minmax_frame.h"
 #include "technique_test_util.h"
 #include "render/gpu_lights.h"
 #include "scene/builtin_scenes.h"
@@ -34,21 +35,6 @@ bool allFinite(const viz::Image& img) {
     for (float v : img.pixels)
         if (!std::isfinite(v)) return false;
     return true;
-}
-
-// The GPU's frame for light `index` of a scene: the same GpuLights and setup the technique builds.
-viz::minmax::EpipolarFrame<float> frameOf(const viz::scene::Scene& scene, int index, int w, int h, int columns,
-                                          viz::render::GpuLightCpu* light = nullptr) {
-    const viz::render::GpuLights lights(scene, scene.camera.position, 4);
-    const auto& L = lights.lights()[std::size_t(index)];
-    if (light) *light = L;
-    // The technique's default slice_oversampling.
-    auto technique = viz::makeTechnique("minmax");
-    const int oversampling = int(viz::completeSettings(*technique, {}).at("slice_oversampling"));
-    return viz::minmax::toFloat(viz::minmax::setupLight({.light = &L, .camera = &scene.camera, .width = w,
-                                                         .height = h, .slices = 0, .columns = columns,
-                                                         .oversampling = oversampling})
-                                    .frame);
 }
 
 // GL row of an Image read back by the test utilities (row 0 at the top).
@@ -169,7 +155,7 @@ TEST_F(MinmaxTest, RectifiedMapAgreesWithShadowMapLookups) {
         const auto* map = find(out, "minmax.shadow_map");
         ASSERT_TRUE(S && S->image && map && map->image);
         viz::render::GpuLightCpu L{};
-        const auto f = frameOf(scene, 0, w, h, size, &L);
+        const auto f = viz::testing::minmaxFrame(scene, 0, w, h, size, &L);
         ASSERT_EQ(S->image->width, f.columns);
         ASSERT_EQ(S->image->height, f.slices);
         int compared = 0, agree = 0;
@@ -215,7 +201,7 @@ TEST_F(MinmaxTest, CpuMirrorEqualsGpuForSampledPixels) {
         const auto* visited = find(out, "minmax.visited");
         const auto* near = find(out, "minmax.near_epipole");
         viz::render::GpuLightCpu L{};
-        const auto f = frameOf(scene, 0, w, h, size, &L);
+        const auto f = viz::testing::minmaxFrame(scene, 0, w, h, size, &L);
         double mean = 0.0;
         for (float v : out.airlight.pixels) mean += v;
         mean /= double(out.airlight.pixels.size());

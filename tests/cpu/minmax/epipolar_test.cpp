@@ -85,15 +85,21 @@ TEST(MinmaxEpipolar, DistanceAtGammaInvertsGammaAlongRay) {
     }
 }
 
-// The automatic slice count puts every pixel's ray within half a pixel of its slice: the pixel's alpha
-// differs from its row's alpha by at most half the pixel's own alpha step, for the epipole on screen, off
-// screen and behind the camera.
-TEST(MinmaxEpipolar, AutomaticSlicesKeepEveryRayWithinHalfAPixel) {
+// The eye at the origin looking down -z, 0.9 rad vertical field of view.
+viz::scene::Camera testCamera() {
     viz::scene::Camera cam;
     cam.position = glm::dvec3(0.0);
     cam.forward = glm::dvec3(0.0, 0.0, -1.0);
     cam.up = glm::dvec3(0.0, 1.0, 0.0);
     cam.yfov = 0.9;
+    return cam;
+}
+
+// The automatic slice count puts every pixel's ray within half a pixel of its slice: the pixel's alpha
+// differs from its row's alpha by at most half the pixel's own alpha step, for the epipole on screen, off
+// screen and behind the camera.
+TEST(MinmaxEpipolar, AutomaticSlicesKeepEveryRayWithinHalfAPixel) {
+    const viz::scene::Camera cam = testCamera();
     const int w = 64, h = 48;
     for (glm::vec3 light : {glm::vec3(0.5f, 0.3f, -6.0f), glm::vec3(9.0f, 2.0f, -3.0f), glm::vec3(0.4f, 1.0f, 5.0f)}) {
         viz::render::GpuLightCpu L{};
@@ -126,11 +132,7 @@ TEST(MinmaxEpipolar, AutomaticSlicesKeepEveryRayWithinHalfAPixel) {
 // is the cube-map lookup rectify.comp makes for S[alpha, gamma]. Light on screen, off screen (to the side)
 // and behind the camera.
 TEST(MinmaxEpipolar, PointLightRoundTripAndCubeDirection) {
-    viz::scene::Camera cam;
-    cam.position = glm::dvec3(0.0);
-    cam.forward = glm::dvec3(0.0, 0.0, -1.0);
-    cam.up = glm::dvec3(0.0, 1.0, 0.0);
-    cam.yfov = 0.9;
+    const viz::scene::Camera cam = testCamera();
     const int w = 64, h = 48;
     std::mt19937 rng(5);
     std::uniform_real_distribution<double> unit(0.0, 1.0);

@@ -374,8 +374,9 @@ public:
         out.lastStageRun = kVoxelizeIndex;
         if (stop == kVoxelizeIndex) return out;
 
-        // The picked pixel's column as voxelized, for the column view (the scan overwrites the grid).
-        if (area) {
+        // The picked pixel's column as voxelized, for the gather's column view (the scan overwrites the
+        // grid); read only when the gather will run.
+        if (area && stop != kScanIndex) {
             const glm::ivec2 cell = pickedCell(scene, input, shown, cells, pickX, pickY);
             mPreScanColumn = vsv::readGridRow(mGrid, shownTile.x + cell.x, 1, shownTile.y + cell.y).front();
         }

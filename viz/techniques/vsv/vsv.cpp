@@ -254,10 +254,11 @@ public:
         out.lastStageRun = kVoxelizeIndex;
         if (stop == kVoxelizeIndex) return out;
 
-        // The picked pixel's column as voxelized, for the column view (the scan overwrites the grid).
-        if (!lights.empty()) {
+        // The picked pixel's column as voxelized, for the gather's column view (the scan overwrites the
+        // grid): one texel per 128 phi bits, read only when the gather will run.
+        if (!lights.empty() && stop != kScanIndex) {
             const glm::ivec2 cell = pickedCell(scene, input, lights[std::size_t(shown)], grids[std::size_t(shown)], pickX, pickY);
-            mPreScanRow = vsv::readGridRow(mGrid[std::size_t(shown)], 0, grids[std::size_t(shown)].nAlpha, cell.y);
+            mPreScanColumn = vsv::readGridRow(mGrid[std::size_t(shown)], cell.x, 1, cell.y);
         }
 
         // ---- scan ----
@@ -614,7 +615,7 @@ private:
                 std::clamp(int(std::floor(vsv::thetaCoord(g, vsv::thetaOf(f, ray)))), 0, g.nTheta - 1)};
     }
 
-    // Two rows of phi bits along pixel (x, y)'s column: row 0 as voxelized (mPreScanRow), row 1 after the
+    // Two rows of phi bits along pixel (x, y)'s column: row 0 as voxelized (mPreScanColumn), row 1 after the
     // scan; 0.5 beyond the pixel's fragment (the gather does not read them).
     std::shared_ptr<Image> columnImage(const scene::Scene& scene, const FrameInput& input, int sceneLight,
                                        const vsv::EpipolarGrid& g, int slot, int x, int y) const {
@@ -625,12 +626,12 @@ private:
         glGetTextureSubImage(mView.surface().distance().id(), 0, x, input.height - 1 - y, 0, 1, 1, 1, GL_RED,
                              GL_FLOAT, sizeof(float), &d);
         const double kEnd = vsv::phiCoord(g, vsv::phiOnEyeRay(f, alpha, double(d)));
-        const std::vector<vsv::Bits128> after = vsv::readGridRow(*mResult[std::size_t(slot)], 0, g.nAlpha, cell.y);
+        const std::vector<vsv::Bits128> after = vsv::readGridRow(*mResult[std::size_t(slot)], cell.x, 1, cell.y);
         auto image = std::make_shared<Image>(g.nPhi, 2, 1);
         for (int row = 0; row < 2; ++row) {
-            const std::vector<vsv::Bits128>& bits = row == 0 ? mPreScanRow : after;
+            const std::vector<vsv::Bits128>& bits = row == 0 ? mPreScanColumn : after;
             for (int k = 0; k < g.nPhi; ++k) {
-                const std::size_t at = std::size_t((k >> 7) * g.nAlpha + cell.x);
+                const std::size_t at = std::size_t(k >> 7);  // one texel per 128 bits, layer by layer
                 const bool set = at < bits.size() && vsv::testBitPlain(bits[at], k & 127);
                 image->at(k, row) = double(k) >= kEnd ? 0.5f : (set ? 1.0f : 0.0f);
             }
@@ -646,7 +647,7 @@ private:
     glm::ivec3 mGridSize{0};
     std::vector<gl::Texture> mGrid, mPong, mOccluder;  // per light
     std::vector<const gl::Texture*> mResult;           // per light: where the scan left the grid
-    std::vector<vsv::Bits128> mPreScanRow;              // the picked pixel's theta row before the scan
+    std::vector<vsv::Bits128> mPreScanColumn;           // the picked pixel's texels before the scan
     gl::Texture mWords;                                // voxelization scratch, one light at a time
     gl::Texture mAirlight, mVisibility;
     std::unique_ptr<Technique> mIvsv;  // the scene's area lights
