@@ -43,6 +43,8 @@ constexpr const char* kRenderHelp = R"(usage: airlight render --scene S --techni
   --exposure X|auto  PNG only: scale applied before the sRGB encode (default: auto for colour
                      layers, the intermediate's display range otherwise)
   --quiet            print nothing on success
+  --no-default-light a .gltf/.glb without a light is an error (default: a spot light is added above
+                     the model, with a note)
 )";
 
 constexpr const char* kListHelp = R"(usage: airlight list scenes | techniques | stages T | params T
@@ -51,7 +53,7 @@ constexpr const char* kListHelp = R"(usage: airlight list scenes | techniques | 
 constexpr const char* kPlanHelp = R"(usage: airlight plan --scene S --technique T [--set name=value]...
 
 Prints which stages of technique T run for scene S and which shader features are compiled in,
-and for each one left out, why.
+and for each one left out, why. --no-default-light: a .gltf/.glb without a light is an error.
 )";
 
 constexpr const char* kExportHelp = R"(usage: airlight export-scene NAME OUT.gltf|OUT.glb
@@ -128,6 +130,7 @@ CommonOptions parseOptions(Args& args, const std::string& command, const std::st
         else if (flag == "--stop-after") o.request.stopAfter = args.next(flag);
         else if (flag == "--exposure") o.exposure = args.next(flag);
         else if (flag == "--quiet") o.quiet = true;
+        else if (flag == "--no-default-light") o.request.load.defaultLight = false;
         else if (flag == "--screenshot") o.screenshot = args.next(flag);
         else if (flag == "--frames") {
             const double frames = parseNumber(args.next(flag), flag);
@@ -202,7 +205,7 @@ int runRender(Args& args) {
         return 0;
     }
     CommonOptions o = parseOptions(
-        args, "render", " --scene --technique --size --out --layer --layer-index --set --stop-after --exposure --quiet ");
+        args, "render", " --scene --technique --size --out --layer --layer-index --set --stop-after --exposure --quiet --no-default-light ");
     if (o.out.empty()) throw InputError("render needs --out F.exr or --out F.png");
     const std::string ext = viz::extensionOf(o.out);
     if (ext != ".exr" && ext != ".png") throw InputError("--out '" + o.out + "' must end in .exr or .png");
@@ -263,10 +266,10 @@ int runPlan(Args& args) {
         std::fputs(kPlanHelp, stdout);
         return 0;
     }
-    CommonOptions o = parseOptions(args, "plan", " --scene --technique --size --set ");
+    CommonOptions o = parseOptions(args, "plan", " --scene --technique --size --set --no-default-light ");
     const auto technique = viz::makeTechnique(o.request.technique);
     const viz::Settings settings = viz::completeSettings(*technique, o.request.settings);
-    const viz::scene::Scene scene = viz::scene::loadScene(o.request.scene);
+    const viz::scene::Scene scene = viz::scene::loadScene(o.request.scene, o.request.load);
     printNotes(scene);
     const viz::Plan plan = technique->plan(scene, settings);
     std::printf("%s on %s:\n", technique->id().c_str(), o.request.scene.c_str());
@@ -300,7 +303,7 @@ int runGuiCommand(Args& args) {
         std::fputs(kGuiHelp, stdout);
         return 0;
     }
-    CommonOptions o = parseOptions(args, "gui", " --scene --technique --size --set --screenshot --frames --state --script --export-dir --lesson ");
+    CommonOptions o = parseOptions(args, "gui", " --scene --technique --size --set --screenshot --frames --state --script --export-dir --lesson --no-default-light ");
     if (!o.screenshot.empty() && viz::extensionOf(o.screenshot) != ".png")
         throw InputError("--screenshot '" + o.screenshot + "' must end in .png");
     if (o.frames < 1) throw InputError("--frames must be at least 1");
@@ -321,6 +324,7 @@ int runGuiCommand(Args& args) {
     g.width = o.request.width;
     g.height = o.request.height;
     g.settings = o.request.settings;
+    g.load = o.request.load;
     g.screenshot = o.screenshot;
     g.frames = o.frames;
     if (!o.script.empty()) {

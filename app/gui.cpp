@@ -664,7 +664,7 @@ private:
     // ---- the lesson player's hooks (lesson_player.h): the window's own state changes ----
 
     void loadLessonScene(const std::string& name) override {
-        viz::scene::Scene scene = viz::scene::loadScene(name);  // InputError: the window keeps its scene
+        viz::scene::Scene scene = viz::scene::loadScene(name, mOptions.load);  // InputError: the window keeps its scene
         mScene = std::move(scene);
         mOptions.scene = name;
         mController = CameraController(mScene.camera, orbitDistance(mScene));
@@ -2922,7 +2922,7 @@ int runGui(const GuiOptions& options) {
         // A session whose scene cannot be loaded any more falls back to the default scene.
         if (effective.scene != options.scene) {
             try {
-                (void)viz::scene::loadScene(effective.scene);
+                (void)viz::scene::loadScene(effective.scene, options.load);
             } catch (const viz::InputError& e) {
                 notice = "session scene: " + std::string(e.what()) + "; using '" + options.scene + "'";
                 std::fprintf(stderr, "airlight: note: %s\n", notice.c_str());
@@ -2932,7 +2932,7 @@ int runGui(const GuiOptions& options) {
         }
     }
     // Everything that can fail on user input fails before the window opens.
-    viz::scene::Scene scene = viz::scene::loadScene(effective.scene);
+    viz::scene::Scene scene = viz::scene::loadScene(effective.scene, options.load);
     if (session.medium && effective.scene == session.scene) scene.medium = *session.medium;
     if (effective.scene == session.scene) applyLightPlacements(session.lights, scene);
     // Each --set must name a parameter of some technique (the window switches between them), and the

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "debug/technique.h"
+#include "scene/gltf_loader.h"
 #include "ui_script.h"
 
 namespace airlight {
@@ -18,6 +19,7 @@ struct GuiOptions {
     int width = 320;        // internal render resolution; the panes upscale it (nearest)
     int height = 240;
     viz::Settings settings;  // applied to every technique that has a parameter of that name
+    viz::scene::LoadOptions load;  // for .gltf/.glb scenes (--no-default-light)
     // Automation (tests, handouts): after `frames` frames (and once a CPU technique's result is in),
     // write the window to `screenshot` (PNG) and its view rectangles to the same path with .json, then
     // exit. Empty: run until closed.

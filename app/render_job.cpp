@@ -28,7 +28,7 @@ RenderJob::RenderJob(const RenderRequest& request) {
     mTechnique = viz::makeTechnique(request.technique);
     mInput.settings = viz::completeSettings(*mTechnique, request.settings);
     mInput.stopAfterStage = request.stopAfter.empty() ? -1 : stageIndex(*mTechnique, request.stopAfter);
-    mScene = viz::scene::loadScene(request.scene);
+    mScene = viz::scene::loadScene(request.scene, request.load);
     mInput.scene = &mScene;
     mInput.width = request.width;
     mInput.height = request.height;

@@ -7,6 +7,7 @@
 
 #include "core/image.h"
 #include "debug/technique.h"
+#include "scene/gltf_loader.h"
 #include "scene/scene.h"
 
 namespace viz {
@@ -22,6 +23,7 @@ struct RenderRequest {
     int height = 120;
     viz::Settings settings;
     std::string stopAfter;  // stage id or empty
+    viz::scene::LoadOptions load;  // what a file lacking a light gets (--no-default-light)
 };
 
 class RenderJob {

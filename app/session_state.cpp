@@ -1,5 +1,7 @@
 #include "session_state.h"
 
+#include "core/json_check.h"
+
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -103,6 +105,8 @@ SessionState sessionFromJson(const std::string& text, std::string& problem) {
     problem.clear();
     SessionState s;
     try {
+        // The file is user input: depth-checked before nlohmann builds it.
+        if (const std::string bad = viz::jsonProblem(text, 32); !bad.empty()) throw std::runtime_error(bad);
         const json j = json::parse(text);
         if (!j.is_object()) throw std::runtime_error("not a JSON object");
         if (j.at("version").get<int>() != SessionState::kVersion)
@@ -143,10 +147,12 @@ SessionState sessionFromJson(const std::string& text, std::string& problem) {
             for (const json& l : lights) {
                 SessionState::LightPlacement p;
                 p.position = readVec3(l, "position");
+                if (glm::any(glm::greaterThan(glm::abs(p.position), glm::dvec3(1e15))))
+                    throw std::runtime_error("a light's position lies beyond 1e15 from the origin");
                 p.direction = readVec3(l, "direction");
                 if (glm::length(p.direction) < 1e-9) throw std::runtime_error("a light's direction is zero");
                 p.direction = glm::normalize(p.direction);
-                p.intensity = readNumber(l, "intensity", 0.0, 1e30);
+                p.intensity = readNumber(l, "intensity", 0.0, 1e20);
                 s.lights.push_back(p);
             }
         }
@@ -238,7 +244,15 @@ SessionState loadSession(const std::string& path, std::string& problem) {
     std::stringstream text;
     text << in.rdbuf();
     SessionState s = sessionFromJson(text.str(), problem);
-    if (!problem.empty()) problem = "state file '" + path + "': " + problem + "; using defaults";
+    if (!problem.empty()) {
+        // Never lose a hand-edited file: it is moved aside before the window saves over its name.
+        in.close();
+        const std::string aside = path + ".broken";
+        std::error_code ec;
+        std::filesystem::rename(path, aside, ec);
+        problem = "state file '" + path + "': " + problem + "; using defaults" +
+                  (ec ? " (the file could not be moved aside: " + ec.message() + ")" : "; the file was moved to '" + aside + "'");
+    }
     return s;
 }
 

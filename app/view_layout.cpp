@@ -222,10 +222,14 @@ struct Parser {
 
 ViewLayout ViewLayout::fromText(const std::string& text) {
     Parser p{text, 0, {}};
-    // A lambda that calls itself through a reference: the nesting depth is bounded by the text's length.
+    // A lambda that calls itself through a reference, once per level: the depth is capped so that no
+    // text (a session file is user input) can exhaust the stack.
+    constexpr int kMaxDepth = 32;
+    int depth = 0;
     const std::function<Node()> node = [&]() -> Node {
         Node n;
         if (p.i < text.size() && (text[p.i] == 'x' || text[p.i] == 'y')) {
+            if (++depth > kMaxDepth) p.fail("layout nested deeper than " + std::to_string(kMaxDepth));
             n.axis = text[p.i] == 'x' ? SplitAxis::X : SplitAxis::Y;
             ++p.i;
             p.expect('(');
@@ -237,6 +241,7 @@ ViewLayout ViewLayout::fromText(const std::string& text) {
             p.expect(',');
             n.kids.push_back(node());
             p.expect(')');
+            --depth;
             return n;
         }
         if (p.i >= text.size() || text[p.i] < '0' || text[p.i] > '9') p.fail("expected a view number or x( / y(");

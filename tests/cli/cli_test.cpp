@@ -316,7 +316,7 @@ TEST_F(CliTest, BadInputIsAOneLineErrorWithExitCode2AndNoOutput) {
     {
         GltfParts p;
         p.light = false;
-        cases.push_back({"no light", render + writeText("nolight.gltf", makeGltf(p)).string(), "light"});
+        cases.push_back({"no light", "render --no-default-light " + render.substr(7) + writeText("nolight.gltf", makeGltf(p)).string(), "light"});
     }
     {
         GltfParts p;

@@ -13,157 +13,30 @@
 
 #include "core/error.h"
 #include "scene/area_light.h"
+#include "scene/default_lighting.h"
+#include "scene/gltf_accessors.h"
+#include "scene/gltf_input.h"
 #include "scene/validate.h"
 
 namespace viz::scene {
 namespace {
 
 constexpr double kDefaultZfar = 1000.0;  // glTF infinite projection: zfar absent
-constexpr int kMaxNodeDepth = 256;       // deeper trees are treated as cycles
+constexpr int kMaxNodeDepth = 256;       // deeper trees are refused (the visit recurses)
 
-// ---- accessors ----
-
-// Where an accessor's elements live, after checking that all of them fit in their bufferView and the
-// bufferView in its buffer.
-struct ElementRange {
-    const unsigned char* data = nullptr;
-    std::size_t stride = 0;
-    std::size_t count = 0;
-    int componentType = 0;
-    int components = 0;
-    bool normalized = false;
-};
-
-class Reader {
-public:
-    Reader(const tinygltf::Model& model, std::string file) : mModel(model), mFile(std::move(file)) {}
-
-    [[noreturn]] void fail(const std::string& what) const { throw InputError("glTF '" + mFile + "': " + what); }
-
-    ElementRange range(int accessorIndex, const std::string& what) const {
-        if (accessorIndex < 0 || std::size_t(accessorIndex) >= mModel.accessors.size()) {
-            fail(what + ": accessor " + std::to_string(accessorIndex) + " does not exist");
-        }
-        const tinygltf::Accessor& acc = mModel.accessors[std::size_t(accessorIndex)];
-        const std::string name = "accessor " + std::to_string(accessorIndex) + " (" + what + ")";
-        if (acc.sparse.isSparse) fail(name + " is sparse, which is not supported");
-        if (acc.bufferView < 0 || std::size_t(acc.bufferView) >= mModel.bufferViews.size()) {
-            fail(name + " has no valid bufferView");
-        }
-        const tinygltf::BufferView& view = mModel.bufferViews[std::size_t(acc.bufferView)];
-        if (view.buffer < 0 || std::size_t(view.buffer) >= mModel.buffers.size()) {
-            fail("bufferView " + std::to_string(acc.bufferView) + " refers to missing buffer " +
-                 std::to_string(view.buffer));
-        }
-        const tinygltf::Buffer& buffer = mModel.buffers[std::size_t(view.buffer)];
-        if (view.byteOffset + view.byteLength > buffer.data.size()) {
-            fail("bufferView " + std::to_string(acc.bufferView) + " is out of range of buffer " +
-                 std::to_string(view.buffer) + " (needs " + std::to_string(view.byteOffset + view.byteLength) +
-                 " bytes, the buffer has " + std::to_string(buffer.data.size()) + ")");
-        }
-        const int componentSize = tinygltf::GetComponentSizeInBytes(std::uint32_t(acc.componentType));
-        const int components = tinygltf::GetNumComponentsInType(std::uint32_t(acc.type));
-        if (componentSize <= 0 || components <= 0) fail(name + " has an invalid type or componentType");
-        const std::size_t elementSize = std::size_t(componentSize) * std::size_t(components);
-        const std::size_t stride = view.byteStride > 0 ? view.byteStride : elementSize;
-        if (acc.count > 0) {
-            const std::size_t end = acc.byteOffset + stride * (acc.count - 1) + elementSize;
-            if (end > view.byteLength) {
-                fail(name + " is out of range of bufferView " + std::to_string(acc.bufferView) + " (needs " +
-                     std::to_string(end) + " bytes, the view has " + std::to_string(view.byteLength) + ")");
-            }
-        }
-        ElementRange r;
-        r.data = buffer.data.data() + view.byteOffset + acc.byteOffset;
-        r.stride = stride;
-        r.count = acc.count;
-        r.componentType = acc.componentType;
-        r.components = components;
-        r.normalized = acc.normalized;
-        return r;
-    }
-
-    // Component c of element i as a double, with glTF's normalisation of integer types when asked.
-    static double component(const ElementRange& r, std::size_t i, int c) {
-        const unsigned char* p = r.data + r.stride * i;
-        auto load = [&](auto tag) {
-            decltype(tag) v;
-            std::memcpy(&v, p + sizeof(v) * std::size_t(c), sizeof(v));
-            return v;
-        };
-        switch (r.componentType) {
-            case TINYGLTF_COMPONENT_TYPE_FLOAT: return double(load(float{}));
-            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: {
-                const double v = load(std::uint8_t{});
-                return r.normalized ? v / 255.0 : v;
-            }
-            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
-                const double v = load(std::uint16_t{});
-                return r.normalized ? v / 65535.0 : v;
-            }
-            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: return double(load(std::uint32_t{}));
-            case TINYGLTF_COMPONENT_TYPE_BYTE: {
-                const double v = load(std::int8_t{});
-                return r.normalized ? std::max(v / 127.0, -1.0) : v;
-            }
-            case TINYGLTF_COMPONENT_TYPE_SHORT: {
-                const double v = load(std::int16_t{});
-                return r.normalized ? std::max(v / 32767.0, -1.0) : v;
-            }
-            default: return 0.0;
-        }
-    }
-
-    std::vector<glm::vec3> readVec3Float(int accessorIndex, const std::string& what) const {
-        const ElementRange r = range(accessorIndex, what);
-        if (r.components != 3 || r.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT) {
-            fail("accessor " + std::to_string(accessorIndex) + " (" + what + ") must be VEC3 FLOAT");
-        }
-        std::vector<glm::vec3> out(r.count);
-        for (std::size_t i = 0; i < r.count; ++i) std::memcpy(&out[i], r.data + r.stride * i, sizeof(glm::vec3));
-        return out;
-    }
-
-    std::vector<glm::vec2> readUv(int accessorIndex, const std::string& what) const {
-        const ElementRange r = range(accessorIndex, what);
-        if (r.components != 2) fail("accessor " + std::to_string(accessorIndex) + " (" + what + ") must be VEC2");
-        std::vector<glm::vec2> out(r.count);
-        for (std::size_t i = 0; i < r.count; ++i) {
-            if (r.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT) {
-                std::memcpy(&out[i], r.data + r.stride * i, sizeof(glm::vec2));
-            } else {
-                out[i] = glm::vec2(float(component(r, i, 0)), float(component(r, i, 1)));
-            }
-        }
-        return out;
-    }
-
-    std::vector<std::uint32_t> readIndices(int accessorIndex, const std::string& what) const {
-        const ElementRange r = range(accessorIndex, what);
-        if (r.components != 1 || (r.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
-                                  r.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
-                                  r.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)) {
-            fail("accessor " + std::to_string(accessorIndex) + " (" + what + ") must be an unsigned SCALAR");
-        }
-        std::vector<std::uint32_t> out(r.count);
-        for (std::size_t i = 0; i < r.count; ++i) out[i] = std::uint32_t(component(r, i, 0));
-        return out;
-    }
-
-private:
-    const tinygltf::Model& mModel;
-    std::string mFile;
-};
+using gltf::quoteValue;
 
 // ---- helpers ----
 
-double numberOr(const tinygltf::Value& obj, const char* key, double fallback) {
-    if (!obj.IsObject() || !obj.Has(key)) return fallback;
-    const tinygltf::Value& v = obj.Get(key);
-    return v.IsNumber() ? v.GetNumberAsDouble() : fallback;
+bool finite(double v) { return std::isfinite(v); }
+
+std::string number(double v) {
+    char text[32];
+    std::snprintf(text, sizeof(text), "%.6g", v);
+    return text;
 }
 
-// Node-local matrix: 'matrix' (column-major) or T * R * S.
+// Node-local matrix: 'matrix' (column-major) or T * R * S. The values were checked finite.
 glm::dmat4 localMatrix(const tinygltf::Node& node) {
     if (node.matrix.size() == 16) {
         glm::dmat4 m(1.0);
@@ -193,10 +66,10 @@ glm::dvec3 unitOrSelf(const glm::dvec3& v) {
 }
 
 // Decoded image (1-4 channels of 8 or 16 bits) to RGBA8: grey replicates into R, G, B; missing alpha
-// is opaque; 16-bit values are rounded to 8 bits.
+// is opaque; 16-bit values are rounded to 8 bits. The caller checked the pixel buffer's size.
 std::vector<std::uint8_t> toRgba8(const tinygltf::Image& image) {
     const std::size_t pixels = std::size_t(image.width) * std::size_t(image.height);
-    const std::size_t channels = std::size_t(std::clamp(image.component, 1, 4));
+    const std::size_t channels = std::size_t(image.component);
     const bool wide = image.bits == 16;
     auto channel = [&](std::size_t p, std::size_t c) -> std::uint8_t {
         const std::size_t at = p * channels + c;
@@ -221,16 +94,9 @@ std::vector<std::uint8_t> toRgba8(const tinygltf::Image& image) {
 
 // A camera that sees the whole bounding box, looking at its centre from above and to the side.
 Camera frameScene(const Scene& scene) {
-    glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
-    for (const Mesh& mesh : scene.meshes) {
-        for (const glm::vec3& p : mesh.positions) {
-            lo = glm::min(lo, glm::dvec3(p));
-            hi = glm::max(hi, glm::dvec3(p));
-        }
-    }
-    if (lo.x > hi.x) lo = hi = glm::dvec3(0.0);
-    const glm::dvec3 centre = 0.5 * (lo + hi);
-    const double radius = std::max(0.5 * glm::length(hi - lo), 1e-3);
+    const Bounds b = sceneBounds(scene);
+    const glm::dvec3 centre = b.centre();
+    const double radius = std::max(0.5 * b.diagonal(), 1e-3);
     Camera cam;
     cam.name = "framed";
     cam.yfov = 0.8;
@@ -240,28 +106,49 @@ Camera frameScene(const Scene& scene) {
     cam.position = centre + distance * fromCentre;
     cam.forward = -fromCentre;
     cam.up = glm::normalize(glm::dvec3(0, 1, 0) - glm::dot(glm::dvec3(0, 1, 0), cam.forward) * cam.forward);
-    cam.znear = std::max(1e-3, 0.01 * radius);
+    cam.znear = std::max(1e-3 * radius, 0.01 * radius);
     cam.zfar = distance + 2.0 * radius;
     return cam;
 }
 
-std::string fileName(const std::string& path) { return std::filesystem::path(path).filename().string(); }
-
-// One line: tinygltf separates messages with newlines.
-std::string firstLine(const std::string& s) {
-    std::string line = s.substr(0, s.find('\n'));
-    while (!line.empty() && (line.back() == '\r' || line.back() == ' ')) line.pop_back();
-    return line;
+// Replaces zero-length (or non-finite) normals by the area-weighted normal of the triangles that use
+// the vertex, or +Y when those are degenerate too; returns how many were replaced.
+std::size_t repairNormals(Mesh& mesh) {
+    std::vector<bool> bad(mesh.normals.size());
+    std::size_t count = 0;
+    for (std::size_t v = 0; v < mesh.normals.size(); ++v) {
+        const glm::vec3& n = mesh.normals[v];
+        bad[v] = !(std::isfinite(n.x) && std::isfinite(n.y) && std::isfinite(n.z)) || glm::dot(n, n) < 1e-24f;
+        count += bad[v];
+    }
+    if (count == 0) return 0;
+    std::vector<glm::dvec3> sum(mesh.normals.size(), glm::dvec3(0.0));
+    for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+        const std::uint32_t a = mesh.indices[t], b = mesh.indices[t + 1], c = mesh.indices[t + 2];
+        const glm::dvec3 face = glm::cross(glm::dvec3(mesh.positions[b]) - glm::dvec3(mesh.positions[a]),
+                                           glm::dvec3(mesh.positions[c]) - glm::dvec3(mesh.positions[a]));
+        for (std::uint32_t v : {a, b, c}) {
+            if (bad[v]) sum[v] += face;
+        }
+    }
+    for (std::size_t v = 0; v < mesh.normals.size(); ++v) {
+        if (!bad[v]) continue;
+        const double len = glm::length(sum[v]);
+        mesh.normals[v] = len > 0.0 && std::isfinite(len) ? glm::vec3(sum[v] / len) : glm::vec3(0, 1, 0);
+    }
+    return count;
 }
 
 // ---- the loader ----
 
 class Loader {
 public:
-    Loader(const tinygltf::Model& model, const std::string& file) : mModel(model), mFile(file), mRead(model, file) {}
+    Loader(const tinygltf::Model& model, const std::string& file, const LoadOptions& options)
+        : mModel(model), mFile(file), mOptions(options), mRead(model, "glTF " + quoteValue(file) + ": ") {}
 
     Scene load() {
         checkExtensions();
+        checkNodeForest();
         loadTextures();
         loadMaterials();
         const int sceneIndex = mModel.defaultScene >= 0 ? mModel.defaultScene : 0;
@@ -272,30 +159,24 @@ public:
             mScene.name = mModel.scenes[std::size_t(sceneIndex)].name;
         } else {
             // No scenes: every node that is nobody's child is a root.
-            std::set<int> children;
-            for (const auto& node : mModel.nodes) children.insert(node.children.begin(), node.children.end());
             for (int n = 0; n < int(mModel.nodes.size()); ++n) {
-                if (!children.count(n)) roots.push_back(n);
+                if (mParent[std::size_t(n)] < 0) roots.push_back(n);
             }
         }
         if (mScene.name.empty()) mScene.name = std::filesystem::path(mFile).stem().string();
+        for (int root : roots) checkNode(root, "scene root");
+        for (int root : roots) budget(root, 0);
         for (int root : roots) visit(root, glm::dmat4(1.0), 0);
-
-        // Area lights after the punctual ones, in mesh order.
-        for (int m = 0; m < int(mScene.meshes.size()); ++m) {
-            const Mesh& mesh = mScene.meshes[std::size_t(m)];
-            if (mesh.material >= 0 && mScene.materials[std::size_t(mesh.material)].isEmissive()) {
-                try {
-                    mScene.lights.push_back(areaLightFromMesh(mScene, m));
-                } catch (const InputError& e) {
-                    mRead.fail(e.what());
-                }
-            }
-        }
-        loadMedium(sceneIndex);
+        loadAreaLights();
+        noteUnusedLights();
         if (!mHaveCamera) {
             mScene.camera = frameScene(mScene);
             mScene.notes.push_back("no camera: framed the scene");
+        }
+        loadMedium(sceneIndex);
+        if (mScene.lights.empty() && mOptions.defaultLight && !mScene.meshes.empty()) {
+            mScene.lights.push_back(defaultSpotLight(mScene));
+            mScene.notes.push_back("no light in " + quoteValue(mFile) + ": added a default spot light above the model (--no-default-light to refuse)");
         }
         return std::move(mScene);
     }
@@ -304,8 +185,89 @@ private:
     void checkExtensions() const {
         static const std::set<std::string> kSupported = {"KHR_lights_punctual", "KHR_materials_emissive_strength"};
         for (const std::string& ext : mModel.extensionsRequired) {
-            if (!kSupported.count(ext)) mRead.fail("requires unsupported extension " + ext);
+            if (!kSupported.count(ext)) mRead.fail("requires unsupported extension " + quoteValue(ext));
         }
+    }
+
+    void checkNode(int index, const std::string& who) const {
+        if (index < 0 || std::size_t(index) >= mModel.nodes.size()) {
+            mRead.fail(who + " refers to node " + std::to_string(index) + ", which does not exist");
+        }
+    }
+
+    // glTF nodes form a forest: every child exists, no node has two parents (or is a scene root and a
+    // child), and no node is its own ancestor. Without this a file of a few KB could make the visit
+    // below take 2^63 steps.
+    void checkNodeForest() {
+        const std::size_t n = mModel.nodes.size();
+        mParent.assign(n, -1);
+        for (std::size_t p = 0; p < n; ++p) {
+            for (int child : mModel.nodes[p].children) {
+                checkNode(child, "node " + std::to_string(p));
+                int& parent = mParent[std::size_t(child)];
+                if (parent >= 0) {
+                    mRead.fail("node " + std::to_string(child) + " is a child of both node " + std::to_string(parent) +
+                               " and node " + std::to_string(p) + " (glTF nodes must form a tree)");
+                }
+                parent = int(p);
+            }
+        }
+        for (std::size_t s = 0; s < mModel.scenes.size(); ++s) {
+            std::set<int> listed;
+            for (int root : mModel.scenes[s].nodes) {
+                checkNode(root, "scene " + std::to_string(s));
+                if (!listed.insert(root).second) {
+                    mRead.fail("scene " + std::to_string(s) + " lists node " + std::to_string(root) + " twice");
+                }
+                if (mParent[std::size_t(root)] >= 0) {
+                    mRead.fail("node " + std::to_string(root) + " is a root of scene " + std::to_string(s) +
+                               " and a child of node " + std::to_string(mParent[std::size_t(root)]));
+                }
+            }
+        }
+        // With one parent each, a cycle is a parent chain that never reaches a root.
+        std::vector<char> state(n, 0);  // 0 unknown, 1 on the current chain, 2 reaches a root
+        for (std::size_t start = 0; start < n; ++start) {
+            std::vector<std::size_t> chain;
+            std::size_t at = start;
+            while (state[at] == 0) {
+                state[at] = 1;
+                chain.push_back(at);
+                if (mParent[at] < 0) break;
+                at = std::size_t(mParent[at]);
+            }
+            if (state[at] == 1 && mParent[at] >= 0) {
+                mRead.fail("node " + std::to_string(at) + " is its own ancestor (the node hierarchy has a cycle)");
+            }
+            for (std::size_t c : chain) state[c] = 2;
+        }
+    }
+
+    // Counts what the scene's tree will instance before any vertex is read (LoadLimits).
+    void budget(int nodeIndex, int depth) {
+        if (depth > kMaxNodeDepth) mRead.fail("node hierarchy is deeper than " + std::to_string(kMaxNodeDepth));
+        const tinygltf::Node& node = mModel.nodes[std::size_t(nodeIndex)];
+        if (node.mesh >= 0 && std::size_t(node.mesh) < mModel.meshes.size()) {
+            for (const tinygltf::Primitive& prim : mModel.meshes[std::size_t(node.mesh)].primitives) {
+                const auto pos = prim.attributes.find("POSITION");
+                if (pos == prim.attributes.end()) continue;
+                const std::uint64_t vertices = mRead.count(pos->second, "POSITION");
+                const std::uint64_t corners = prim.indices >= 0 ? mRead.count(prim.indices, "indices") : vertices;
+                mInstances += 1;
+                mVertices += vertices;
+                mTriangles += corners / 3;
+            }
+            if (mInstances > LoadLimits::kMaxMeshInstances || mVertices > LoadLimits::kMaxVertices ||
+                mTriangles > LoadLimits::kMaxTriangles) {
+                mRead.fail("the scene places more than the limits allow (at most " +
+                           std::to_string(LoadLimits::kMaxMeshInstances) + " mesh primitives, " +
+                           std::to_string(LoadLimits::kMaxTriangles) + " triangles, " +
+                           std::to_string(LoadLimits::kMaxVertices) + " vertices after instancing; reached " +
+                           std::to_string(mInstances) + ", " + std::to_string(mTriangles) + ", " +
+                           std::to_string(mVertices) + ")");
+            }
+        }
+        for (int child : node.children) budget(child, depth + 1);
     }
 
     void loadTextures() {
@@ -315,9 +277,14 @@ private:
                 mRead.fail("texture " + std::to_string(t) + " has no valid image source");
             }
             const tinygltf::Image& image = mModel.images[std::size_t(gt.source)];
-            if (image.image.empty() || image.width <= 0 || image.height <= 0) {
-                mRead.fail("image " + std::to_string(gt.source) + " could not be decoded");
-            }
+            const std::string who = "image " + std::to_string(gt.source) +
+                                    (image.uri.empty() || image.uri.rfind("data:", 0) == 0 ? "" : " (" + quoteValue(image.uri) + ")");
+            const bool sized = image.width > 0 && image.height > 0 && image.component >= 1 && image.component <= 4 &&
+                               (image.bits == 8 || image.bits == 16);
+            if (image.image.empty() || !sized) mRead.fail(who + " could not be decoded");
+            const std::uint64_t bytes = std::uint64_t(image.width) * std::uint64_t(image.height) *
+                                        std::uint64_t(image.component) * std::uint64_t(image.bits / 8);
+            if (bytes != image.image.size()) mRead.fail(who + ": decoded size does not match its width and height");
             Texture tex;
             tex.name = !gt.name.empty() ? gt.name : image.name;
             tex.width = image.width;
@@ -334,6 +301,15 @@ private:
         return index;
     }
 
+    // A factor's components: finite and in [0, hi] (glTF allows [0, 1] for colours).
+    void checkFactor(const std::vector<double>& f, const std::string& who, double hi) const {
+        for (std::size_t i = 0; i < f.size(); ++i) {
+            if (!finite(f[i]) || f[i] < 0.0 || f[i] > hi) {
+                mRead.fail(who + "[" + std::to_string(i) + "] = " + number(f[i]) + " is outside [0, " + number(hi) + "]");
+            }
+        }
+    }
+
     void loadMaterials() {
         for (std::size_t m = 0; m < mModel.materials.size(); ++m) {
             const tinygltf::Material& gm = mModel.materials[m];
@@ -341,8 +317,10 @@ private:
             Material mat;
             mat.name = gm.name;
             const auto& f = gm.pbrMetallicRoughness.baseColorFactor;
+            checkFactor(f, who + " baseColorFactor", 1.0);
             if (f.size() == 4) mat.baseColorFactor = glm::vec4(float(f[0]), float(f[1]), float(f[2]), float(f[3]));
             mat.baseColorTexture = textureIndex(gm.pbrMetallicRoughness.baseColorTexture.index, who);
+            checkFactor(gm.emissiveFactor, who + " emissiveFactor", 1.0);
             if (gm.emissiveFactor.size() == 3) {
                 mat.emissiveFactor = glm::vec3(float(gm.emissiveFactor[0]), float(gm.emissiveFactor[1]),
                                                float(gm.emissiveFactor[2]));
@@ -350,7 +328,11 @@ private:
             mat.emissiveTexture = textureIndex(gm.emissiveTexture.index, who);
             const auto strength = gm.extensions.find("KHR_materials_emissive_strength");
             if (strength != gm.extensions.end()) {
-                mat.emissiveStrength = float(numberOr(strength->second, "emissiveStrength", 1.0));
+                const double v = numberOr(strength->second, "emissiveStrength", 1.0);
+                if (!finite(v) || v < 0.0 || v > LoadLimits::kMaxRadiance) {
+                    mRead.fail(who + " emissiveStrength " + number(v) + " is outside [0, " + number(LoadLimits::kMaxRadiance) + "]");
+                }
+                mat.emissiveStrength = float(v);
             }
             if (gm.pbrMetallicRoughness.baseColorTexture.texCoord != 0 || gm.emissiveTexture.texCoord != 0) {
                 mScene.notes.push_back(who + ": only TEXCOORD_0 is used");
@@ -359,32 +341,65 @@ private:
         }
     }
 
-    void visit(int nodeIndex, const glm::dmat4& parent, int depth) {
-        if (nodeIndex < 0 || std::size_t(nodeIndex) >= mModel.nodes.size()) {
-            mRead.fail("node " + std::to_string(nodeIndex) + " does not exist");
+    static double numberOr(const tinygltf::Value& obj, const char* key, double fallback) {
+        if (!obj.IsObject() || !obj.Has(key)) return fallback;
+        const tinygltf::Value& v = obj.Get(key);
+        return v.IsNumber() ? v.GetNumberAsDouble() : fallback;
+    }
+
+    void checkTransform(const tinygltf::Node& node, int nodeIndex) const {
+        const std::string who = "node " + std::to_string(nodeIndex);
+        auto all = [&](const std::vector<double>& v, const char* what) {
+            for (double x : v) {
+                if (!finite(x) || std::abs(x) > LoadLimits::kMaxCoordinate) {
+                    mRead.fail(who + " " + what + " has a value " + number(x) + " that is not finite or beyond 1e15");
+                }
+            }
+        };
+        all(node.matrix, "matrix");
+        all(node.translation, "translation");
+        all(node.rotation, "rotation");
+        all(node.scale, "scale");
+        if (!node.matrix.empty() && node.matrix.size() != 16) mRead.fail(who + " matrix must have 16 numbers");
+        if (node.rotation.size() == 4) {
+            const double n2 = node.rotation[0] * node.rotation[0] + node.rotation[1] * node.rotation[1] +
+                              node.rotation[2] * node.rotation[2] + node.rotation[3] * node.rotation[3];
+            if (!(n2 > 1e-12)) mRead.fail(who + " rotation is a zero quaternion");
         }
-        if (depth > kMaxNodeDepth) mRead.fail("node hierarchy is cyclic or deeper than 256");
+    }
+
+    void visit(int nodeIndex, const glm::dmat4& parent, int depth) {
         const tinygltf::Node& node = mModel.nodes[std::size_t(nodeIndex)];
+        checkTransform(node, nodeIndex);
         const glm::dmat4 world = parent * localMatrix(node);
-        if (node.mesh >= 0) loadMesh(node.mesh, world);
+        if (node.mesh >= 0) loadMesh(node.mesh, world, nodeIndex);
         if (node.camera >= 0 && !mHaveCamera) loadCamera(node.camera, world);
         const auto light = node.extensions.find("KHR_lights_punctual");
         if (light != node.extensions.end()) {
-            loadLight(int(numberOr(light->second, "light", -1.0)), world, node.name);
+            const double index = numberOr(light->second, "light", -1.0);
+            if (!(index >= 0.0 && index < double(mModel.lights.size()) && index == std::floor(index))) {
+                mRead.fail("node " + std::to_string(nodeIndex) + ": KHR_lights_punctual light " + number(index) + " does not exist");
+            }
+            loadLight(int(index), world, node.name);
         }
         for (int child : node.children) visit(child, world, depth + 1);
     }
 
-    void loadMesh(int meshIndex, const glm::dmat4& world) {
+    void loadMesh(int meshIndex, const glm::dmat4& world, int nodeIndex) {
         if (std::size_t(meshIndex) >= mModel.meshes.size()) mRead.fail("mesh " + std::to_string(meshIndex) + " does not exist");
         const tinygltf::Mesh& gm = mModel.meshes[std::size_t(meshIndex)];
         const bool identity = world == glm::dmat4(1.0);
+        const double det = glm::determinant(glm::dmat3(world));
+        if (!(std::abs(det) > 0.0) || !std::isfinite(det)) {
+            mScene.notes.push_back("node " + std::to_string(nodeIndex) + " has a singular transform (a scale of 0): its mesh is skipped");
+            return;
+        }
         const glm::dmat3 normalMatrix = glm::transpose(glm::inverse(glm::dmat3(world)));
         // A mirroring transform turns counter-clockwise into clockwise; swap two indices to undo it.
-        const bool mirrored = glm::determinant(glm::dmat3(world)) < 0.0;
+        const bool mirrored = det < 0.0;
         for (std::size_t p = 0; p < gm.primitives.size(); ++p) {
             const tinygltf::Primitive& prim = gm.primitives[p];
-            const std::string who = "mesh " + std::to_string(meshIndex) + (gm.name.empty() ? "" : " '" + gm.name + "'") +
+            const std::string who = "mesh " + std::to_string(meshIndex) + (gm.name.empty() ? "" : " " + quoteValue(gm.name)) +
                                     " primitive " + std::to_string(p);
             const int mode = prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
             if (mode != TINYGLTF_MODE_TRIANGLES) {
@@ -413,6 +428,11 @@ private:
             if (!mesh.uvs.empty() && mesh.uvs.size() != mesh.positions.size()) {
                 mRead.fail(who + ": TEXCOORD_0 and POSITION counts differ");
             }
+            for (std::size_t v = 0; v < mesh.uvs.size(); ++v) {
+                if (!std::isfinite(mesh.uvs[v].x) || !std::isfinite(mesh.uvs[v].y)) {
+                    mRead.fail(who + ": TEXCOORD_0 " + std::to_string(v) + " is NaN or Inf");
+                }
+            }
             if (prim.indices >= 0) {
                 mesh.indices = mRead.readIndices(prim.indices, who + " indices");
                 for (std::uint32_t i : mesh.indices) {
@@ -428,16 +448,27 @@ private:
             mesh.indices.resize(mesh.indices.size() - mesh.indices.size() % 3);
             if (prim.material >= int(mModel.materials.size())) mRead.fail(who + " refers to a missing material");
             mesh.material = prim.material;
+            if (const std::size_t fixed = repairNormals(mesh)) {
+                mScene.notes.push_back(who + ": " + std::to_string(fixed) + " zero-length normal" + (fixed > 1 ? "s" : "") +
+                                       " replaced by the triangles' normal");
+            }
 
             if (!identity) {
                 for (glm::vec3& q : mesh.positions) q = glm::vec3(world * glm::dvec4(glm::dvec3(q), 1.0));
                 for (glm::vec3& n : mesh.normals) {
                     const glm::dvec3 t = normalMatrix * glm::dvec3(n);
                     const double len = glm::length(t);
-                    n = len > 0.0 ? glm::vec3(t / len) : n;
+                    n = len > 0.0 && std::isfinite(len) ? glm::vec3(t / len) : n;
                 }
                 if (mirrored) {
                     for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) std::swap(mesh.indices[t + 1], mesh.indices[t + 2]);
+                }
+            }
+            for (const glm::vec3& q : mesh.positions) {
+                if (!(std::abs(q.x) <= LoadLimits::kMaxCoordinate && std::abs(q.y) <= LoadLimits::kMaxCoordinate &&
+                      std::abs(q.z) <= LoadLimits::kMaxCoordinate)) {
+                    mRead.fail(who + ": a vertex lies at (" + number(q.x) + ", " + number(q.y) + ", " + number(q.z) +
+                               ") after its node's transform, beyond the 1e15 limit");
                 }
             }
             mScene.meshes.push_back(std::move(mesh));
@@ -470,10 +501,9 @@ private:
     }
 
     void loadLight(int lightIndex, const glm::dmat4& world, const std::string& nodeName) {
-        if (lightIndex < 0 || std::size_t(lightIndex) >= mModel.lights.size()) {
-            mRead.fail("KHR_lights_punctual light " + std::to_string(lightIndex) + " does not exist");
-        }
         const tinygltf::Light& gl = mModel.lights[std::size_t(lightIndex)];
+        const std::string who = "light " + std::to_string(lightIndex);
+        mUsedLights.insert(lightIndex);
         Light light;
         light.name = !gl.name.empty() ? gl.name : nodeName;
         if (gl.type == "point") {
@@ -485,19 +515,61 @@ private:
         } else if (gl.type == "directional") {
             light.type = LightType::Directional;
         } else {
-            mRead.fail("light " + std::to_string(lightIndex) + " has unknown type '" + gl.type + "'");
+            mRead.fail(who + " has unknown type " + quoteValue(gl.type));
         }
         light.position = glm::dvec3(world[3]);
         light.direction = unitOrSelf(-glm::dvec3(world[2]));
         if (gl.color.size() == 3) light.color = glm::dvec3(gl.color[0], gl.color[1], gl.color[2]);
         light.intensity = gl.intensity;
+        for (int c = 0; c < 3; ++c) {
+            if (!finite(light.color[c]) || light.color[c] < 0.0) {
+                mRead.fail(who + " color[" + std::to_string(c) + "] = " + number(light.color[c]) + " must be finite and >= 0");
+            }
+        }
+        if (!finite(light.intensity) || light.intensity < 0.0) {
+            mRead.fail(who + " intensity " + number(light.intensity) + " must be finite and >= 0");
+        }
+        const double peak = light.intensity * std::max({light.color.x, light.color.y, light.color.z});
+        if (peak > LoadLimits::kMaxRadiance) {
+            mRead.fail(who + " intensity x colour = " + number(peak) + " is over the limit of 1e20 (GPU floats overflow)");
+        }
         if (gl.extras.IsObject() && gl.extras.Has("cookie")) {
             const tinygltf::Value& cookie = gl.extras.Get("cookie");
-            if (!cookie.IsInt()) mRead.fail("light " + std::to_string(lightIndex) + ": extras.cookie must be a texture index");
-            if (light.type != LightType::Spot) mRead.fail("light " + std::to_string(lightIndex) + ": only spot lights can have a cookie");
-            light.cookie = textureIndex(cookie.GetNumberAsInt(), "light " + std::to_string(lightIndex) + " cookie");
+            if (!cookie.IsInt()) mRead.fail(who + ": extras.cookie must be a texture index");
+            if (light.type != LightType::Spot) mRead.fail(who + ": only spot lights can have a cookie");
+            light.cookie = textureIndex(cookie.GetNumberAsInt(), who + " cookie");
         }
         mScene.lights.push_back(light);
+    }
+
+    // Area lights after the punctual ones, in mesh order; an emissive mesh that is no planar
+    // rectangle still glows on the surface but lights nothing.
+    void loadAreaLights() {
+        for (int m = 0; m < int(mScene.meshes.size()); ++m) {
+            const Mesh& mesh = mScene.meshes[std::size_t(m)];
+            if (mesh.material < 0 || !mScene.materials[std::size_t(mesh.material)].isEmissive()) continue;
+            try {
+                mScene.lights.push_back(areaLightFromMesh(mScene, m));
+            } catch (const InputError& e) {
+                ++mGlowOnly;
+                if (mGlowOnly <= 3) {
+                    mScene.notes.push_back(std::string(e.what()) + ": it shades as an emissive surface and casts no light");
+                } else if (mGlowOnly == 4) {
+                    mScene.notes.push_back("more emissive meshes are not planar rectangles (notes left out)");
+                }
+            }
+        }
+    }
+
+    void noteUnusedLights() {
+        for (std::size_t l = 0; l < mModel.lights.size(); ++l) {
+            if (mUsedLights.count(int(l))) continue;
+            const std::string name = mModel.lights[l].name.empty() ? "" : " " + quoteValue(mModel.lights[l].name);
+            const std::string what = "KHR_lights_punctual light " + std::to_string(l) + name +
+                                     " is not used by any node of the scene";
+            if (mScene.lights.empty() && !mOptions.defaultLight) mRead.fail(what + ", so the scene has no light");
+            mScene.notes.push_back(what + ": ignored");
+        }
     }
 
     void loadMedium(int sceneIndex) {
@@ -507,58 +579,81 @@ private:
             if (extras.IsObject() && extras.Has("medium")) medium = &extras.Get("medium");
         }
         if (!medium) {
-            mScene.medium = Medium{0.05, 0.0, 0.0};
-            mScene.notes.push_back("no medium in the scene's extras: using sigma_s = 0.05, sigma_a = 0, g = 0");
+            mScene.medium = scaleAwareMedium(mScene);
+            mScene.notes.push_back("no medium in the scene's extras: sigma_s = " + number(mScene.medium.sigma_s) +
+                                   " (optical depth 0.5 across the model's bounding box), sigma_a = 0, g = 0");
             return;
         }
         if (!medium->IsObject()) mRead.fail("scene extras.medium must be an object");
-        mScene.medium.sigma_s = numberOr(*medium, "sigma_s", 0.05);
-        mScene.medium.sigma_a = numberOr(*medium, "sigma_a", 0.0);
-        mScene.medium.g = numberOr(*medium, "g", 0.0);
+        static const char* kKeys[] = {"sigma_s", "sigma_a", "g"};
+        for (const std::string& key : medium->Keys()) {
+            if (std::find(std::begin(kKeys), std::end(kKeys), key) == std::end(kKeys)) {
+                mScene.notes.push_back("scene extras.medium: unknown key " + quoteValue(key) + " ignored (known: sigma_s, sigma_a, g)");
+            }
+        }
+        const double defaults[] = {0.05, 0.0, 0.0};
+        double values[3];
+        for (int k = 0; k < 3; ++k) {
+            values[k] = defaults[k];
+            if (!medium->Has(kKeys[k])) continue;
+            const tinygltf::Value& v = medium->Get(kKeys[k]);
+            if (!v.IsNumber()) {
+                mScene.notes.push_back(std::string("scene extras.medium.") + kKeys[k] + " is not a number: using " + number(defaults[k]));
+                continue;
+            }
+            values[k] = v.GetNumberAsDouble();
+        }
+        for (int k = 0; k < 2; ++k) {
+            if (!finite(values[k]) || values[k] < 0.0 || values[k] > LoadLimits::kMaxSigma) {
+                mRead.fail(std::string("scene extras.medium.") + kKeys[k] + " = " + number(values[k]) + " is outside [0, 1e12]");
+            }
+        }
+        mScene.medium = Medium{values[0], values[1], values[2]};
     }
 
     const tinygltf::Model& mModel;
     std::string mFile;
-    Reader mRead;
+    LoadOptions mOptions;
+    gltf::AccessorReader mRead;
     Scene mScene;
     bool mHaveCamera = false;
+    std::vector<int> mParent;
+    std::set<int> mUsedLights;
+    int mGlowOnly = 0;
+    std::uint64_t mInstances = 0, mVertices = 0, mTriangles = 0;
 };
+
+std::string fileName(const std::string& path) { return std::filesystem::path(path).filename().string(); }
 
 }  // namespace
 
-Scene loadGltf(const std::string& path) {
-    const std::string file = fileName(path);
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec)) {
-        throw InputError("glTF '" + path + "': no such file");
-    }
-    std::string ext = std::filesystem::path(path).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-
-    tinygltf::TinyGLTF gltf;
+Scene loadGltfFromMemory(const std::vector<unsigned char>& bytes, const std::string& file, const std::string& baseDir,
+                         bool binary, const LoadOptions& options) {
     tinygltf::Model model;
-    std::string err, warn;
-    const bool ok = ext == ".glb" ? gltf.LoadBinaryFromFile(&model, &err, &warn, path)
-                                  : gltf.LoadASCIIFromFile(&model, &err, &warn, path);
-    if (!ok) {
-        std::string why = firstLine(err.empty() ? warn : err);
-        if (why.find("JSON") != std::string::npos || why.find("json") != std::string::npos ||
-            why.find("parse") != std::string::npos) {
-            why = "malformed JSON (" + why + ")";
-        } else if (why.find("size mismatch") != std::string::npos || why.find("Failed to load external") != std::string::npos ||
-                   why.find("File not found") != std::string::npos ||
-                   why.find("decode") != std::string::npos || why.find("buffer") != std::string::npos) {
-            why = "missing or short buffer/image (" + why + ")";
-        }
-        throw InputError("glTF '" + file + "': " + why);
+    gltf::parseModel(bytes, file, baseDir, binary, model);
+    Scene scene;
+    try {
+        scene = Loader(model, file, options).load();
+    } catch (const std::bad_alloc&) {
+        throw InputError("glTF " + quoteValue(file) + ": too large to load (out of memory)");
+    } catch (const std::length_error&) {
+        throw InputError("glTF " + quoteValue(file) + ": too large to load (a count beyond what memory can hold)");
     }
-    Scene scene = Loader(model, file).load();
     try {
         validateScene(scene);
     } catch (const InputError& e) {
-        throw InputError("glTF '" + file + "': " + e.what());
+        throw InputError("glTF " + quoteValue(file) + ": " + e.what());
     }
     return scene;
+}
+
+Scene loadGltf(const std::string& path, const LoadOptions& options) {
+    const std::string file = fileName(path);
+    std::string ext = std::filesystem::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    const std::vector<unsigned char> bytes = gltf::readFile(path, file);
+    const std::string folder = std::filesystem::path(path).parent_path().string();
+    return loadGltfFromMemory(bytes, file, folder.empty() ? "." : folder, ext == ".glb", options);
 }
 
 }  // namespace viz::scene

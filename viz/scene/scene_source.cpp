@@ -64,7 +64,7 @@ std::uint64_t fnv1a64(const void* data, std::size_t size, std::uint64_t hash) {
     return hash;
 }
 
-Scene loadScene(const std::string& nameOrPath) {
+Scene loadScene(const std::string& nameOrPath, const LoadOptions& options) {
     Scene scene;
     if (isBuiltinScene(nameOrPath)) {
         scene = makeBuiltinScene(nameOrPath);
@@ -77,7 +77,7 @@ Scene loadScene(const std::string& nameOrPath) {
         }
         scene = buildStiffScene(*c);
     } else if (endsWith(nameOrPath, ".gltf") || endsWith(nameOrPath, ".glb")) {
-        scene = loadGltf(nameOrPath);
+        scene = loadGltf(nameOrPath, options);
     } else {
         std::string known;
         for (const std::string& n : builtinSceneNames()) known += (known.empty() ? "" : ", ") + n;

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <string>
 
+#include "scene/gltf_loader.h"
 #include "scene/scene.h"
 
 namespace viz::scene {
@@ -12,7 +13,8 @@ namespace viz::scene {
 // A built-in scene name (builtin_scenes.h), a stiff case "stiff/ID" (stiff_scenes.h) or a path ending in
 // .gltf or .glb; anything else throws
 // viz::InputError. The result has passed validateScene.
-Scene loadScene(const std::string& nameOrPath);
+// A built-in scene, a stiff case "stiff/ID" or a .gltf/.glb file (options apply to files), validated.
+Scene loadScene(const std::string& nameOrPath, const LoadOptions& options = {});
 
 // Stable 64-bit FNV-1a hash, as 16 hex digits, of everything that affects rendering: geometry,
 // materials, texture bytes, lights, camera and medium (not names or notes). Same value on every run.

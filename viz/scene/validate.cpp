@@ -1,14 +1,29 @@
 #include "scene/validate.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "core/error.h"
+#include "scene/limits.h"
 
 namespace viz::scene {
 namespace {
 
 bool finite3(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+// Within the coordinate limit (GPU floats square distances: 1e15^2 still fits).
+bool placeable(const glm::dvec3& v) {
+    const double m = LoadLimits::kMaxCoordinate;
+    return std::abs(v.x) <= m && std::abs(v.y) <= m && std::abs(v.z) <= m;
+}
+
+std::string num(double v) {
+    char text[32];
+    std::snprintf(text, sizeof(text), "%.6g", v);
+    return text;
+}
 
 std::string meshLabel(const Mesh& mesh, std::size_t i) {
     return "mesh " + std::to_string(i) + (mesh.name.empty() ? "" : " '" + mesh.name + "'");
@@ -45,6 +60,15 @@ void validateScene(const Scene& scene) {
             !std::isfinite(mat.emissiveStrength)) {
             throw InputError(who + " has a NaN or Inf factor");
         }
+        const glm::dvec4 base(mat.baseColorFactor);
+        const glm::dvec3 emit(mat.emissiveFactor);
+        if (base.x < 0 || base.y < 0 || base.z < 0 || base.w < 0 || emit.x < 0 || emit.y < 0 || emit.z < 0 ||
+            mat.emissiveStrength < 0) {
+            throw InputError(who + " has a negative colour factor or emissive strength");
+        }
+        if (std::max({emit.x, emit.y, emit.z}) * double(mat.emissiveStrength) > LoadLimits::kMaxRadiance) {
+            throw InputError(who + ": emissive factor x strength is over the limit of 1e20");
+        }
     }
 
     std::size_t triangles = 0;
@@ -54,6 +78,9 @@ void validateScene(const Scene& scene) {
         for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
             if (!finite3(glm::dvec3(mesh.positions[v]))) {
                 throw InputError(who + ": vertex " + std::to_string(v) + " is NaN or Inf");
+            }
+            if (!placeable(glm::dvec3(mesh.positions[v]))) {
+                throw InputError(who + ": vertex " + std::to_string(v) + " lies beyond 1e15 from the origin");
             }
         }
         for (std::size_t v = 0; v < mesh.normals.size(); ++v) {
@@ -110,6 +137,14 @@ void validateScene(const Scene& scene) {
         if (light.intensity < 0.0 || light.color.x < 0.0 || light.color.y < 0.0 || light.color.z < 0.0) {
             throw InputError(who + ": negative intensity or colour");
         }
+        if (!placeable(light.position)) throw InputError(who + ": position lies beyond 1e15 from the origin");
+        const double peak = light.intensity * std::max({light.color.x, light.color.y, light.color.z});
+        if (peak > LoadLimits::kMaxRadiance) {
+            throw InputError(who + ": intensity x colour = " + num(peak) + " is over the limit of 1e20 (GPU floats overflow)");
+        }
+        if (light.type == LightType::Area && glm::length(light.radiance) > LoadLimits::kMaxRadiance) {
+            throw InputError(who + ": emitted radiance is over the limit of 1e20");
+        }
         if (light.type == LightType::Spot) {
             if (!(light.innerConeAngle >= 0.0 && light.innerConeAngle <= light.outerConeAngle &&
                   light.outerConeAngle > 0.0 && light.outerConeAngle <= 0.5 * 3.14159265358979323846 + 1e-12)) {
@@ -138,6 +173,10 @@ void validateScene(const Scene& scene) {
     if (!std::isfinite(medium.sigma_a) || medium.sigma_a < 0.0) {
         throw InputError(where + "medium sigma_a must be finite and >= 0 (got " + std::to_string(medium.sigma_a) + ")");
     }
+    if (medium.sigma_s > LoadLimits::kMaxSigma || medium.sigma_a > LoadLimits::kMaxSigma) {
+        throw InputError(where + "medium sigma_s and sigma_a must be at most 1e12 per scene unit (got " + num(medium.sigma_s) +
+                         ", " + num(medium.sigma_a) + ")");
+    }
     if (!(std::abs(medium.g) < 1.0)) {
         throw InputError(where + "medium g must satisfy |g| < 1 (got " + std::to_string(medium.g) + ")");
     }
@@ -147,6 +186,7 @@ void validateScene(const Scene& scene) {
         !std::isfinite(cam.znear) || !std::isfinite(cam.zfar) || !std::isfinite(cam.aspectRatio)) {
         throw InputError(where + "camera has a NaN or Inf value");
     }
+    if (!placeable(cam.position)) throw InputError(where + "camera position lies beyond 1e15 from the origin");
     if (!(cam.yfov > 0.0 && cam.yfov < 3.14159265358979323846)) {
         throw InputError(where + "camera yfov must be in (0, pi)");
     }

@@ -11,13 +11,7 @@ namespace viz::scene {
 namespace {
 
 using test::dataPath;
-
-bool hasNote(const Scene& s, const std::string& part) {
-    for (const auto& n : s.notes) {
-        if (n.find(part) != std::string::npos) return true;
-    }
-    return false;
-}
+using test::hasNote;
 
 // Tolerance for values that went through a float buffer or a quaternion (float epsilon scale).
 constexpr double kFloatTol = 1e-6;

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "core/error.h"
+#include "scene/scene.h"
 
 namespace viz::scene::test {
 
@@ -25,6 +26,13 @@ inline void writeText(const std::filesystem::path& path, const std::string& text
 }
 
 inline std::string dataPath(const std::string& name) { return std::string(VIZ_TEST_DATA_DIR) + "/scene/" + name; }
+
+inline bool hasNote(const Scene& scene, const std::string& part) {
+    for (const std::string& n : scene.notes) {
+        if (n.find(part) != std::string::npos) return true;
+    }
+    return false;
+}
 
 // Runs f, expects an InputError whose message contains 'part', and returns the message.
 template <typename F>

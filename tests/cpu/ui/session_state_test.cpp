@@ -1,6 +1,9 @@
 // The window's session file: a round trip keeps everything, and any broken file gives the defaults with
 // a one-line reason naming the file, never a crash.
+#include <tuple>
+
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 #include <unistd.h>
 
 #include <filesystem>
@@ -156,6 +159,53 @@ TEST(SessionState, BrokenFilesGiveTheDefaultsAndAReasonNamingTheFile) {
     const SessionState back = loadSession((dir / "deeper" / "s.json").string(), problem);
     EXPECT_EQ(problem, "");
     EXPECT_EQ(back.technique, "slices");
+    fs::remove_all(dir);
+}
+
+// A broken file is moved aside whole (the window then saves a fresh one over the name, and the
+// user's hand edit survives as .broken); hostile nesting and magnitudes are reasons, not crashes.
+TEST(SessionState, BrokenFilesAreMovedAsideAndHostileOnesRefused) {
+    const fs::path dir = fs::temp_directory_path() / ("airlight_state_aside_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    const std::string good = sessionToJson(sample());
+    std::string deepLayout = std::string(good);
+    {
+        // A view_grid layout nested 40,000 deep (the session's JSON itself stays shallow).
+        std::string layout;
+        for (int i = 0; i < 40000; ++i) layout += "x(0.5,";
+        layout += "0";
+        for (int i = 0; i < 40000; ++i) layout += "," + std::to_string(i + 1) + ")";
+        nlohmann::json j = nlohmann::json::parse(good);
+        j["view_grid"] = {{"layout", layout}, {"focused", 0}, {"maximised", -1}, {"views", nlohmann::json::array()}};
+        deepLayout = j.dump();
+    }
+    std::string farLight;
+    {
+        nlohmann::json j = nlohmann::json::parse(good);
+        j["lights"] = {{{"position", {1e300, 0, 0}}, {"direction", {0, -1, 0}}, {"intensity", 1.0}}};
+        farLight = j.dump();
+    }
+    const std::vector<std::tuple<std::string, std::string, std::string>> cases = {
+        {"hand edit with a typo", good.substr(0, good.size() - 3) + ",}", "malformed JSON"},
+        {"JSON nested 100000 deep", std::string(100000, '[') + std::string(100000, ']'), "JSON nested deeper than 32"},
+        {"layout nested 40000 deep", deepLayout, "layout nested deeper than 32"},
+        {"light at 1e300", farLight, "beyond 1e15"},
+    };
+    for (const auto& [what, text, reason] : cases) {
+        const fs::path file = dir / "session.json";
+        fs::remove(dir / "session.json.broken");
+        std::ofstream(file, std::ios::binary) << text;
+        std::string problem;
+        const SessionState s = loadSession(file.string(), problem);
+        EXPECT_NE(problem.find(reason), std::string::npos) << what << ": " << problem.substr(0, 300);
+        EXPECT_NE(problem.find("moved to"), std::string::npos) << what << ": " << problem.substr(0, 300);
+        EXPECT_EQ(s.scene, SessionState{}.scene) << what;
+        EXPECT_FALSE(fs::exists(file)) << what;
+        std::ifstream aside(dir / "session.json.broken", std::ios::binary);
+        const std::string kept((std::istreambuf_iterator<char>(aside)), std::istreambuf_iterator<char>());
+        EXPECT_EQ(kept, text) << what << ": the broken file must survive byte for byte";
+    }
     fs::remove_all(dir);
 }
 

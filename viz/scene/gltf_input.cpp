@@ -1,0 +1,315 @@
+#include "scene/gltf_input.h"
+
+#include <sys/stat.h>
+
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+#include <stb_image.h>
+#include <tiny_gltf.h>
+
+#include "core/error.h"
+#include "core/json_check.h"
+#include "scene/gltf_loader.h"
+
+namespace viz::scene::gltf {
+namespace {
+
+namespace fs = std::filesystem;
+using Limits = LoadLimits;
+
+std::string gib(std::uint64_t bytes) { return std::to_string(bytes >> 30) + " GiB"; }
+
+// What stat says a path is, in words for a message; empty when it is a regular file within the limit.
+std::string fileProblem(const std::string& path) {
+    struct stat st {};
+    if (::stat(path.c_str(), &st) != 0) return "does not exist";
+    if (S_ISDIR(st.st_mode)) return "names a folder, not a file";
+    if (!S_ISREG(st.st_mode)) return "is not a regular file (a FIFO, device or socket)";
+    if (std::uint64_t(st.st_size) > Limits::kMaxFileBytes) {
+        return "is " + std::to_string(st.st_size) + " bytes, over the " + gib(Limits::kMaxFileBytes) + " limit";
+    }
+    return {};
+}
+
+bool readWhole(const std::string& path, std::vector<unsigned char>& out) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return false;
+    in.seekg(0, std::ios::end);
+    const std::streamoff size = in.tellg();
+    if (size < 0 || std::uint64_t(size) > Limits::kMaxFileBytes) return false;
+    in.seekg(0, std::ios::beg);
+    out.resize(std::size_t(size));
+    if (size > 0) in.read(reinterpret_cast<char*>(out.data()), size);
+    return bool(in) || in.gcount() == size;
+}
+
+// ---- external files: resolved in the file's folder, regular files only ----
+
+// %XX escapes decoded (glTF URIs are URI-encoded); a malformed escape stays as written.
+std::string percentDecoded(const std::string& uri) {
+    auto hex = [](char c) -> int {
+        if (c >= '0' && c <= '9') return c - '0';
+        if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+        if (c >= 'A' && c <= 'F') return c - 'A' + 10;
+        return -1;
+    };
+    std::string out;
+    for (std::size_t i = 0; i < uri.size(); ++i) {
+        if (uri[i] == '%' && i + 2 < uri.size() && hex(uri[i + 1]) >= 0 && hex(uri[i + 2]) >= 0) {
+            out += char(hex(uri[i + 1]) * 16 + hex(uri[i + 2]));
+            i += 2;
+        } else {
+            out += uri[i];
+        }
+    }
+    return out;
+}
+
+struct Folder {
+    fs::path base;  // absolute and lexically normal; empty: no external files
+};
+
+// The file an URI names, or an error message (without the "glTF 'FILE': " prefix).
+std::string resolveUri(const Folder& folder, const std::string& uri, const std::string& who, std::string& resolved) {
+    const std::string decoded = percentDecoded(uri);
+    if (folder.base.empty()) return who + ": external file " + quoteValue(uri) + " cannot be read here (data: URIs only)";
+    if (decoded.empty() || decoded.find('\0') != std::string::npos) return who + ": URI " + quoteValue(uri) + " is not a file name";
+    if (decoded.find("://") != std::string::npos) return who + ": URI " + quoteValue(uri) + " is not a relative file name";
+    const fs::path rel(decoded);
+    if (rel.is_absolute()) return who + ": URI " + quoteValue(uri) + " is an absolute path (glTF URIs are relative to the file)";
+    const fs::path full = (folder.base / rel).lexically_normal();
+    const fs::path inside = full.lexically_relative(folder.base);
+    if (inside.empty() || *inside.begin() == ".." || inside == ".") {
+        return who + ": URI " + quoteValue(uri) + (inside == "." ? " names the file's folder" : " leaves the file's folder");
+    }
+    const std::string problem = fileProblem(full.string());
+    if (!problem.empty()) return who + ": file " + quoteValue(uri) + " " + problem;
+    resolved = full.string();
+    return {};
+}
+
+// tinygltf's file callbacks: the same rules again, for whatever path tinygltf builds (it also tries
+// the current folder, which must not be reachable).
+bool guardedFileExists(const std::string& path, void* user) {
+    const Folder& folder = *static_cast<const Folder*>(user);
+    if (folder.base.empty()) return false;
+    const fs::path full = fs::absolute(fs::path(path)).lexically_normal();
+    const fs::path inside = full.lexically_relative(folder.base);
+    if (inside.empty() || *inside.begin() == "..") return false;
+    return fileProblem(full.string()).empty();
+}
+
+std::string unexpandedPath(const std::string& path, void*) { return path; }
+
+bool guardedReadWholeFile(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* user) {
+    if (!guardedFileExists(path, user) || !readWhole(path, *out)) {
+        if (err) *err += "cannot read " + quoteValue(path);
+        return false;
+    }
+    return true;
+}
+
+bool refuseWrite(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {
+    if (err) *err += "the loader writes no files";
+    return false;
+}
+
+// Decodes an image only when its header states a size within the limits.
+bool boundedImageLoader(tinygltf::Image* image, const int index, std::string* err, std::string* warn, int reqWidth,
+                        int reqHeight, const unsigned char* bytes, int size, void*) {
+    int w = 0, h = 0, c = 0;
+    if (size <= 0 || !stbi_info_from_memory(bytes, size, &w, &h, &c)) {
+        if (err) {
+            const char* why = stbi_failure_reason();
+            *err += "image " + std::to_string(index) + " is not a PNG, JPEG or other decodable image" +
+                    (why ? std::string(" (") + why + ")" : std::string()) + "\n";
+        }
+        return false;
+    }
+    if (w <= 0 || h <= 0 || w > 16384 || h > 16384 || std::uint64_t(w) * std::uint64_t(h) > Limits::kMaxImagePixels) {
+        if (err) *err += "image " + std::to_string(index) + " is " + std::to_string(w) + "x" + std::to_string(h) +
+                         ", over the 16384 x 16384 limit\n";
+        return false;
+    }
+    return tinygltf::LoadImageData(image, index, err, warn, reqWidth, reqHeight, bytes, size, nullptr);
+}
+
+// Checks the document's buffers and images before tinygltf allocates or opens anything for them.
+void checkResources(const std::string& json, const Folder& folder, bool binary, std::uint64_t fileSize,
+                    const std::string& prefix) {
+    const nlohmann::json doc = nlohmann::json::parse(json, nullptr, /*allow_exceptions=*/false);
+    if (!doc.is_object()) throw InputError(prefix + "the JSON document is not an object");
+    auto items = [&](const char* key) -> const nlohmann::json* {
+        const auto it = doc.find(key);
+        return it != doc.end() && it->is_array() ? &*it : nullptr;
+    };
+    if (const nlohmann::json* buffers = items("buffers")) {
+        for (std::size_t i = 0; i < buffers->size(); ++i) {
+            const nlohmann::json& b = (*buffers)[i];
+            const std::string who = "buffer " + std::to_string(i);
+            if (!b.is_object()) throw InputError(prefix + who + " is not an object");
+            const auto len = b.find("byteLength");
+            if (len == b.end() || !len->is_number_unsigned()) {
+                throw InputError(prefix + who + ": byteLength must be a non-negative integer");
+            }
+            const std::uint64_t bytes = len->get<std::uint64_t>();
+            if (bytes > Limits::kMaxFileBytes) {
+                throw InputError(prefix + who + ": byteLength " + std::to_string(bytes) + " is over the " +
+                                 gib(Limits::kMaxFileBytes) + " limit");
+            }
+            const auto uri = b.find("uri");
+            if (uri == b.end()) {
+                if (binary && i == 0 && bytes > fileSize) {
+                    throw InputError(prefix + who + ": byteLength " + std::to_string(bytes) + " is more than the whole file (" +
+                                     std::to_string(fileSize) + " bytes)");
+                }
+                continue;
+            }
+            if (!uri->is_string()) throw InputError(prefix + who + ": uri must be a string");
+            const std::string u = uri->get<std::string>();
+            if (u.rfind("data:", 0) == 0) continue;
+            std::string resolved;
+            const std::string problem = resolveUri(folder, u, who, resolved);
+            if (!problem.empty()) throw InputError(prefix + problem);
+        }
+    }
+    if (const nlohmann::json* images = items("images")) {
+        for (std::size_t i = 0; i < images->size(); ++i) {
+            const nlohmann::json& im = (*images)[i];
+            const std::string who = "image " + std::to_string(i);
+            if (!im.is_object()) throw InputError(prefix + who + " is not an object");
+            const auto uri = im.find("uri");
+            if (uri == im.end()) continue;
+            if (!uri->is_string()) throw InputError(prefix + who + ": uri must be a string");
+            const std::string u = uri->get<std::string>();
+            if (u.rfind("data:", 0) == 0) continue;
+            std::string resolved;
+            const std::string problem = resolveUri(folder, u, who, resolved);
+            if (!problem.empty()) throw InputError(prefix + problem);
+        }
+    }
+}
+
+std::uint32_t le32(const unsigned char* p) {
+    return std::uint32_t(p[0]) | (std::uint32_t(p[1]) << 8) | (std::uint32_t(p[2]) << 16) | (std::uint32_t(p[3]) << 24);
+}
+
+// The JSON chunk of a GLB, after checking the header and the chunk's bounds.
+std::string glbJson(const std::vector<unsigned char>& bytes, const std::string& prefix) {
+    if (bytes.size() < 20) throw InputError(prefix + "not a binary glTF: " + std::to_string(bytes.size()) + " bytes, shorter than a GLB header");
+    if (std::memcmp(bytes.data(), "glTF", 4) != 0) {
+        throw InputError(prefix + "not a binary glTF: the file does not start with 'glTF' (a .glb must; a JSON glTF is .gltf)");
+    }
+    const std::uint32_t version = le32(&bytes[4]);
+    if (version != 2) throw InputError(prefix + "GLB version " + std::to_string(version) + " is not supported (only 2)");
+    const std::uint32_t total = le32(&bytes[8]);
+    if (total > bytes.size()) {
+        throw InputError(prefix + "GLB header states " + std::to_string(total) + " bytes, the file has " +
+                         std::to_string(bytes.size()) + " (truncated?)");
+    }
+    const std::uint32_t jsonLength = le32(&bytes[12]);
+    if (le32(&bytes[16]) != 0x4E4F534Au) throw InputError(prefix + "GLB's first chunk is not JSON");
+    if (jsonLength == 0 || std::uint64_t(jsonLength) + 20 > total) {
+        throw InputError(prefix + "GLB's JSON chunk length " + std::to_string(jsonLength) + " does not fit in the file");
+    }
+    return std::string(reinterpret_cast<const char*>(&bytes[20]), jsonLength);
+}
+
+// tinygltf's messages, one line each, shortened; data URIs and long values never echoed whole.
+std::string firstLine(const std::string& s) {
+    std::string line = s.substr(0, s.find('\n'));
+    while (!line.empty() && (line.back() == '\r' || line.back() == ' ')) line.pop_back();
+    return line.size() > 200 ? line.substr(0, 120) + "..." : line;
+}
+
+}  // namespace
+
+std::string quoteValue(const std::string& value) {
+    std::string v;
+    v.reserve(std::min<std::size_t>(value.size(), 130));
+    const std::size_t keep = 58;
+    auto append = [&](std::size_t from, std::size_t to) {
+        for (std::size_t i = from; i < to; ++i) {
+            const unsigned char c = static_cast<unsigned char>(value[i]);
+            v += c < 0x20 || c == 0x7f ? '?' : char(c);
+        }
+    };
+    if (value.size() <= 120) {
+        append(0, value.size());
+    } else {
+        // Cut at character boundaries (not inside a UTF-8 sequence).
+        std::size_t head = keep, tail = value.size() - keep;
+        while (head > 0 && (static_cast<unsigned char>(value[head]) & 0xC0) == 0x80) --head;
+        while (tail < value.size() && (static_cast<unsigned char>(value[tail]) & 0xC0) == 0x80) ++tail;
+        append(0, head);
+        v += "...";
+        append(tail, value.size());
+    }
+    return "'" + v + "'";
+}
+
+std::vector<unsigned char> readFile(const std::string& path, const std::string& fileName) {
+    const std::string prefix = "glTF " + quoteValue(fileName) + ": ";
+    const std::string problem = fileProblem(path);
+    if (problem == "does not exist") throw InputError("glTF " + quoteValue(path) + ": no such file");
+    if (!problem.empty()) throw InputError(prefix + "the path " + problem);
+    std::vector<unsigned char> bytes;
+    if (!readWhole(path, bytes)) throw InputError(prefix + "could not be read");
+    return bytes;
+}
+
+void parseModel(const std::vector<unsigned char>& bytes, const std::string& fileName, const std::string& baseDir,
+                bool binary, tinygltf::Model& model) {
+    const std::string prefix = "glTF " + quoteValue(fileName) + ": ";
+    if (bytes.size() > Limits::kMaxFileBytes) throw InputError(prefix + "over the " + gib(Limits::kMaxFileBytes) + " limit");
+    const std::string json = binary ? glbJson(bytes, prefix) : std::string(bytes.begin(), bytes.end());
+
+    // Depth first: tinygltf's parse and its walk of extras recurse once per level.
+    const std::string jsonError = jsonProblem(json, Limits::kMaxJsonDepth);
+    if (!jsonError.empty()) throw InputError(prefix + jsonError);
+
+    Folder folder;
+    if (!baseDir.empty()) folder.base = fs::absolute(fs::path(baseDir)).lexically_normal();
+    checkResources(json, folder, binary, bytes.size(), prefix);
+
+    tinygltf::TinyGLTF loader;
+    tinygltf::FsCallbacks callbacks{};
+    callbacks.FileExists = guardedFileExists;
+    callbacks.ExpandFilePath = unexpandedPath;
+    callbacks.ReadWholeFile = guardedReadWholeFile;
+    callbacks.WriteWholeFile = refuseWrite;
+    callbacks.user_data = &folder;
+    loader.SetFsCallbacks(callbacks);
+    loader.SetImageLoader(boundedImageLoader, nullptr);
+
+    // tinygltf wants a folder it can join paths to; a name that cannot exist keeps it from the
+    // current folder when external files are refused.
+    const std::string base = folder.base.empty() ? std::string("/nonexistent-airlight-base") : folder.base.string();
+    std::string err, warn;
+    bool ok = false;
+    try {
+        ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), unsigned(bytes.size()), base)
+                    : loader.LoadASCIIFromString(&model, &err, &warn, json.data(), unsigned(json.size()), base);
+    } catch (const std::bad_alloc&) {
+        throw InputError(prefix + "too large to load (out of memory while parsing)");
+    } catch (const std::length_error&) {
+        throw InputError(prefix + "too large to load (a count or size beyond what memory can hold)");
+    } catch (const std::exception& e) {
+        throw InputError(prefix + "could not be parsed (" + firstLine(e.what()) + ")");
+    }
+    if (!ok) {
+        std::string why = firstLine(err.empty() ? warn : err);
+        if (why.empty()) why = "tinygltf refused the document";
+        if (why.find("size mismatch") != std::string::npos || why.find("Failed to load external") != std::string::npos ||
+            why.find("File not found") != std::string::npos || why.find("decode") != std::string::npos ||
+            why.find("buffer") != std::string::npos) {
+            why = "missing or short buffer/image (" + why + ")";
+        }
+        throw InputError(prefix + why);
+    }
+}
+
+}  // namespace viz::scene::gltf
