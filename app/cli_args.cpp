@@ -40,9 +40,8 @@ glm::ivec2 parseSize(const std::string& text) {
     if (x == std::string::npos) throw InputError("size '" + text + "' must be WIDTHxHEIGHT, e.g. 160x120");
     const int w = parseDimension(text.substr(0, x), text);
     const int h = parseDimension(text.substr(x + 1), text);
-    constexpr int kMaxDimension = 16384;
-    if (w < 1 || h < 1 || w > kMaxDimension || h > kMaxDimension)
-        throw InputError("size '" + text + "' is out of range: each side must be between 1 and 16384");
+    if (w < 1 || h < 1 || w > kMaxImageSide || h > kMaxImageSide)
+        throw InputError("size '" + text + "' is out of range: each side must be between 1 and " + std::to_string(kMaxImageSide));
     return {w, h};
 }
 

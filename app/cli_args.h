@@ -23,7 +23,10 @@ private:
     std::size_t mPos = 0;
 };
 
-glm::ivec2 parseSize(const std::string& text);                 // "WxH", 1..16384 each
+// The largest image side a render, a session or a lesson may ask for: 16384^2 float images (4 GiB each)
+// do not fit the GL framebuffers and the reference's buffers on a 24 GiB machine; 8192^2 renders.
+constexpr int kMaxImageSide = 8192;
+glm::ivec2 parseSize(const std::string& text);                 // "WxH", 1..kMaxImageSide each
 void parseSetting(const std::string& text, viz::Settings& into);  // "name=value"
 double parseNumber(const std::string& text, const std::string& what);
 bool isHelpFlag(const std::string& word);

@@ -10,6 +10,7 @@
 
 #include "core/error.h"
 #include "core/image_io.h"
+#include "core/pixel_census.h"
 #include "gui.h"
 #include "lesson.h"
 #include "platform/window_glfw.h"
@@ -33,7 +34,7 @@ constexpr const char* kRenderHelp = R"(usage: airlight render --scene S --techni
   --scene S          built-in scene name (see 'airlight list scenes') or a .gltf/.glb file
                      (default: the default scene)
   --technique T      technique id (see 'airlight list techniques'; default: raymarch)
-  --size WxH         image size in pixels, each side 1..16384 (default: 320x240)
+  --size WxH         image size in pixels, each side 1..8192 (default: 320x240)
   --out F            output file: .exr (32-bit float, linear RGB) or .png (8-bit sRGB)
   --layer L          airlight (L_air alone), final (default), or an intermediate id
                      (see 'airlight list stages T')
@@ -43,6 +44,8 @@ constexpr const char* kRenderHelp = R"(usage: airlight render --scene S --techni
   --exposure X|auto  PNG only: scale applied before the sRGB encode (default: auto for colour
                      layers, the intermediate's display range otherwise)
   --quiet            print nothing on success
+  --strict           exit 3 (and write nothing) when L_air or the final image has NaN, Inf or
+                     negative pixels; without it they are a warning on stderr
   --no-default-light a .gltf/.glb without a light is an error (default: a spot light is added above
                      the model, with a note)
 )";
@@ -92,6 +95,7 @@ struct CommonOptions {
     int layerIndex = -1;
     std::string exposure;
     bool quiet = false;
+    bool strict = false;  // render: NaN/Inf/negative pixels are exit 3 instead of a warning
     std::string screenshot;  // gui only
     int frames = 1;
     std::string state;  // gui only
@@ -131,6 +135,7 @@ CommonOptions parseOptions(Args& args, const std::string& command, const std::st
         else if (flag == "--exposure") o.exposure = args.next(flag);
         else if (flag == "--quiet") o.quiet = true;
         else if (flag == "--no-default-light") o.request.load.defaultLight = false;
+        else if (flag == "--strict") o.strict = true;
         else if (flag == "--screenshot") o.screenshot = args.next(flag);
         else if (flag == "--frames") {
             const double frames = parseNumber(args.next(flag), flag);
@@ -205,7 +210,7 @@ int runRender(Args& args) {
         return 0;
     }
     CommonOptions o = parseOptions(
-        args, "render", " --scene --technique --size --out --layer --layer-index --set --stop-after --exposure --quiet --no-default-light ");
+        args, "render", " --scene --technique --size --out --layer --layer-index --set --stop-after --exposure --quiet --no-default-light --strict ");
     if (o.out.empty()) throw InputError("render needs --out F.exr or --out F.png");
     const std::string ext = viz::extensionOf(o.out);
     if (ext != ".exr" && ext != ".png") throw InputError("--out '" + o.out + "' must end in .exr or .png");
@@ -216,6 +221,21 @@ int runRender(Args& args) {
     RenderJob job(o.request);
     if (!o.quiet) printNotes(job.scene());
     const viz::FrameOutput& out = job.run();
+    // No image leaves silently wrong: NaN, Inf and negative pixels are counted before anything is written.
+    const auto& stages = job.technique().stages();
+    const std::string stage = !o.request.stopAfter.empty() ? o.request.stopAfter : stages.empty() ? "" : stages.back().id;
+    bool bad = false;
+    for (const char* layer : {"airlight", "final"}) {
+        const viz::PixelCensus c = viz::census(job.layerImage(layer));
+        if (c.clean()) continue;
+        bad = true;
+        std::fprintf(stderr, "airlight: warning: %s (stage %s): %s has %s\n", job.technique().id().c_str(), stage.c_str(),
+                     std::string(layer) == "airlight" ? "L_air" : "the final image", c.describe().c_str());
+    }
+    if (bad && o.strict) {
+        std::fprintf(stderr, "airlight: error: --strict: bad pixels, %s not written\n", o.out.c_str());
+        return 3;
+    }
     writeLayer(job, o.layer, o.layerIndex, o.out, o.exposure);
     if (!o.quiet) {
         printTiming(out);

@@ -3,14 +3,17 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <set>
 #include <sstream>
 
 #include "cli_args.h"
 #include "core/error.h"
 #include "core/image_io.h"
+#include "core/pixel_census.h"
 #include "render_job.h"
 #include "report/error_images.h"
 #include "report/text_output.h"
@@ -178,8 +181,10 @@ Lesson parseLesson(const std::string& path) {
         throw InputError(path + ":" + std::to_string(at) + ": " + why);
     };
     std::string* prose = &lesson.intro;
+    std::set<std::string> blockSettings;  // names set in the current block: a second one is a mistake
     while (std::getline(in, line)) {
         ++number;
+        if (number == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);  // a UTF-8 byte-order mark
         const std::string t = trim(line);
         if (inBlock) {
             if (t == "```") {
@@ -198,14 +203,22 @@ Lesson parseLesson(const std::string& path) {
                     const glm::ivec2 size = parseSize(value);
                     step->width = size.x, step->height = size.y;
                 } else if (key == "set") {
-                    for (const std::string& item : splitList(value)) parseSetting(item, step->settings);
+                    for (const std::string& item : splitList(value)) {
+                        viz::Settings one;
+                        parseSetting(item, one);
+                        for (const auto& [name, v] : one) {
+                            if (!blockSettings.insert(name).second) fail(number, "'" + name + "' is set twice in this step");
+                            step->settings[name] = v;
+                        }
+                    }
                 } else if (key == "animate") step->animation = parseAnimation(value, number);
                 else if (key == "stage") step->stage = value;
                 else if (key == "views") step->views = splitList(value);
                 else if (key == "inspect") {
                     std::istringstream xy(value);
                     int x = -1, y = -1;
-                    if (!(xy >> x >> y) || x < 0 || y < 0) fail(number, "inspect takes a pixel 'x y'");
+                    if (!(xy >> x >> y) || x < 0 || y < 0 || !(xy >> std::ws).eof())
+                        fail(number, "inspect takes one pixel 'x y', got '" + value + "'");
                     step->inspect = glm::ivec2(x, y);
                 } else {
                     fail(number, "unknown key '" + key + "' (known: scene, technique, size, set, stage, views, inspect, animate)");
@@ -236,6 +249,7 @@ Lesson parseLesson(const std::string& path) {
             if (!step) fail(number, "an airlight block belongs in a step (after a '## ' heading)");
             if (stepHasBlock) fail(number, "a step has one airlight block");
             step->settings.clear();  // a step's settings replace the previous step's
+            blockSettings.clear();
             inBlock = stepHasBlock = true;
             blockLine = number;
         } else {
@@ -302,11 +316,54 @@ std::string findLesson(const std::string& nameOrPath) {
     throw InputError("unknown lesson '" + nameOrPath + "' (known: " + known + ")");
 }
 
+namespace {
+
+// Every file of an export is written into a staging folder beside the target; only a complete export
+// is moved into place, so a step that fails halfway leaves no partial folder (and no half-replaced one).
+class StagedFolder {
+public:
+    explicit StagedFolder(const std::string& target) : mTarget(target) {
+        namespace fs = std::filesystem;
+        const fs::path t = fs::path(target).lexically_normal();
+        const fs::path name = t.filename().empty() ? t.parent_path().filename() : t.filename();
+        mStage = (t.has_parent_path() ? t.parent_path() : fs::path(".")) / ("." + name.string() + ".partial");
+        std::error_code ec;
+        fs::remove_all(mStage, ec);
+        fs::create_directories(mStage, ec);
+        if (!fs::is_directory(mStage)) throw InputError("cannot create the folder '" + mStage.string() + "'");
+    }
+    ~StagedFolder() {
+        std::error_code ec;
+        std::filesystem::remove_all(mStage, ec);
+    }
+    StagedFolder(const StagedFolder&) = delete;
+    StagedFolder& operator=(const StagedFolder&) = delete;
+
+    std::string path(const std::string& file) const { return (mStage / file).string(); }
+
+    // Moves every staged file into the target folder (created if needed), replacing same-named files.
+    void commit() {
+        namespace fs = std::filesystem;
+        std::error_code ec;
+        fs::create_directories(mTarget, ec);
+        if (!fs::is_directory(mTarget)) throw InputError("cannot create the folder '" + mTarget + "'");
+        for (const auto& entry : fs::directory_iterator(mStage)) {
+            fs::rename(entry.path(), fs::path(mTarget) / entry.path().filename(), ec);
+            if (ec) throw InputError("cannot move '" + entry.path().string() + "' into '" + mTarget + "': " + ec.message());
+        }
+    }
+
+private:
+    std::string mTarget;
+    std::filesystem::path mStage;
+};
+
+}  // namespace
+
 void exportLesson(const Lesson& lesson, const std::string& folder, glm::ivec2 size) {
     namespace fs = std::filesystem;
-    std::error_code ec;
-    fs::create_directories(folder, ec);
-    if (!fs::is_directory(folder)) throw InputError("cannot create the folder '" + folder + "'");
+    if (folder.empty()) throw InputError("lesson --export needs a folder");
+    StagedFolder staged(folder);
     std::string html = "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>" +
                        viz::report::escapeHtml(lesson.title) +
                        "</title><style>body{font-family:DejaVu Sans,sans-serif;max-width:60em;margin:2em;color:#222}"
@@ -325,6 +382,14 @@ void exportLesson(const Lesson& lesson, const std::string& folder, glm::ivec2 si
         request.stopAfter = s.stage;
         RenderJob job(request);
         const viz::FrameOutput& out = job.run();
+        for (const char* layer : {"airlight", "final"}) {
+            const viz::PixelCensus c = viz::census(job.layerImage(layer));
+            if (!c.clean()) {
+                std::fprintf(stderr, "airlight: warning: %s:%d: step '%s': %s (stage %s): %s has %s\n", lesson.path.c_str(),
+                             s.line, s.title.c_str(), s.technique.c_str(), s.stage.empty() ? "all" : s.stage.c_str(),
+                             std::string(layer) == "airlight" ? "L_air" : "the final image", c.describe().c_str());
+            }
+        }
         html += "<h2>" + viz::report::escapeHtml(s.title) + "</h2>\n" + markdownToHtml(s.prose);
         std::string state = s.technique + " on " + s.scene;
         if (!s.stage.empty()) state += ", stopped after " + s.stage;
@@ -348,14 +413,15 @@ void exportLesson(const Lesson& lesson, const std::string& folder, glm::ivec2 si
             for (char c : view) file += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
             file += ".png";
             const bool colour = !in || in->kind == viz::ViewKind::Color;
-            if (colour) viz::writeImage(image, (fs::path(folder) / file).string(), view == "final" ? exposure : viz::report::exposureFor(image));
-            else viz::writeImage(viz::toDisplay(image, in->rangeMin, in->rangeMax), (fs::path(folder) / file).string());
+            if (colour) viz::writeImage(image, staged.path(file), view == "final" ? exposure : viz::report::exposureFor(image));
+            else viz::writeImage(viz::toDisplay(image, in->rangeMin, in->rangeMax), staged.path(file));
             html += "<figure><img src=\"" + file + "\" alt=\"" + viz::report::escapeHtml(view) + "\"><figcaption>" +
                     viz::report::escapeHtml(in ? in->label : view) + "</figcaption></figure>\n";
         }
     }
     html += "</body></html>\n";
-    viz::report::writeTextFile((fs::path(folder) / "index.html").string(), html);
+    viz::report::writeTextFile(staged.path("index.html"), html);
+    staged.commit();
 }
 
 }  // namespace airlight

@@ -12,6 +12,7 @@
 
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "cli_args.h"
 #include "view_layout.h"
 
 namespace airlight {
@@ -118,8 +119,9 @@ SessionState sessionFromJson(const std::string& text, std::string& problem) {
         if (!size.is_array() || size.size() != 2) throw std::runtime_error("size is not [width, height]");
         s.width = size[0].get<int>();
         s.height = size[1].get<int>();
-        if (s.width < 1 || s.height < 1 || s.width > 16384 || s.height > 16384)
-            throw std::runtime_error("size is out of range");
+        if (s.width < 1 || s.height < 1 || s.width > kMaxImageSide || s.height > kMaxImageSide)
+            throw std::runtime_error("size " + std::to_string(s.width) + "x" + std::to_string(s.height) +
+                                     " is out of range (each side 1.." + std::to_string(kMaxImageSide) + ")");
         if (j.contains("camera")) {
             const json& c = j.at("camera");
             viz::scene::Camera cam;

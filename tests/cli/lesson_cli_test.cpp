@@ -62,7 +62,25 @@ TEST_F(CliTest, MalformedLessonsNameTheFileAndLine) {
     expectUserError(run("lesson " + lesson("noview.md", good + "## two\n```airlight\nviews: no.such.view\n```\n") +
                         " --export " + path("o5").string() + " --size 16x12"),
                     "noview.md:11");
+    // The unknown view is found only while exporting step two: nothing of the export is left behind.
+    EXPECT_FALSE(fs::exists(path("o5")));
+    EXPECT_FALSE(fs::exists(path(".o5.partial")));
     expectUserError(run("lesson no-such-lesson --export " + path("o6").string()), "no-such-lesson");
+    expectUserError(run("lesson " + lesson("inspect3.md", good + "## two\n```airlight\ninspect: 5 5 5\n```\n") +
+                        " --export " + path("o7").string()),
+                    "inspect3.md:13: inspect takes one pixel 'x y', got '5 5 5'");
+    expectUserError(run("lesson " + lesson("twice.md", good + "## two\n```airlight\nset: samples=8\nset: samples=16\n```\n") +
+                        " --export " + path("o8").string()),
+                    "twice.md:14: 'samples' is set twice in this step");
+}
+
+TEST_F(CliTest, ALessonWithAByteOrderMarkExports) {
+    const std::string text = "\xEF\xBB\xBF# Title after a BOM\n\n## one\n```airlight\nscene: grate\ntechnique: raymarch\n```\ntext\n";
+    const RunResult r = run("lesson " + writeText("bom.md", text).string() + " --export " + path("bom").string() +
+                            " --size 16x12");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(readFile(path("bom") / "index.html").find("<h1>Title after a BOM</h1>"), std::string::npos);
+    EXPECT_FALSE(fs::exists(path(".bom.partial")));
 }
 
 }  // namespace
