@@ -10,7 +10,6 @@
 
 #include "core/error.h"
 #include "core/image_io.h"
-#include "core/pixel_census.h"
 #include "gui.h"
 #include "lesson.h"
 #include "platform/window_glfw.h"
@@ -222,17 +221,9 @@ int runRender(Args& args) {
     if (!o.quiet) printNotes(job.scene());
     const viz::FrameOutput& out = job.run();
     // No image leaves silently wrong: NaN, Inf and negative pixels are counted before anything is written.
-    const auto& stages = job.technique().stages();
-    const std::string stage = !o.request.stopAfter.empty() ? o.request.stopAfter : stages.empty() ? "" : stages.back().id;
-    bool bad = false;
-    for (const char* layer : {"airlight", "final"}) {
-        const viz::PixelCensus c = viz::census(job.layerImage(layer));
-        if (c.clean()) continue;
-        bad = true;
-        std::fprintf(stderr, "airlight: warning: %s (stage %s): %s has %s\n", job.technique().id().c_str(), stage.c_str(),
-                     std::string(layer) == "airlight" ? "L_air" : "the final image", c.describe().c_str());
-    }
-    if (bad && o.strict) {
+    const std::vector<std::string> bad = job.badPixelWarnings();
+    for (const std::string& line : bad) std::fprintf(stderr, "airlight: warning: %s\n", line.c_str());
+    if (!bad.empty() && o.strict) {
         std::fprintf(stderr, "airlight: error: --strict: bad pixels, %s not written\n", o.out.c_str());
         return 3;
     }

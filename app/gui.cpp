@@ -20,6 +20,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <functional>
 #include <map>
 #include <memory>
@@ -35,6 +36,7 @@
 #include "cpu_worker.h"
 #include "lesson_player.h"
 #include "pane_image.h"
+#include "process_stats.h"
 #include "ray_inspection.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
@@ -406,6 +408,14 @@ public:
                     writeScreenshot(a.target);
                     ++mScriptIndex;
                     break;
+                case ScriptAction::Kind::Stats: {
+                    while (glGetError() != GL_NO_ERROR) ++mGlErrors;
+                    std::ofstream out(a.target, std::ios::app);
+                    out << statsJsonLine(currentProcessStats(), long(mFramesDrawn), mGlErrors) << "\n";
+                    if (!out) throw viz::InputError(mOptions.scriptPath + ":" + std::to_string(a.line) + ": cannot append to '" + a.target + "'");
+                    ++mScriptIndex;
+                    break;
+                }
                 case ScriptAction::Kind::Drag: {
                     // Frame 1: press at the start; frames 2-5: move a quarter of the way each; then release.
                     // Both ends are fixed at the press: what is dragged (a divider, a handle) moves.
@@ -2791,6 +2801,7 @@ private:
     }
 
     GuiOptions mOptions;
+    long mGlErrors = 0;  // GL errors seen by the script's stats actions
     int mScriptRevealFrames = 0;
     bool mPlaying = false;                        // P: the animation runs
     double mPlayClock = 0.0, mPlayTurn = 0.0;     // seconds played; the light's turn (0..1)

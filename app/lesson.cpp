@@ -13,7 +13,6 @@
 #include "cli_args.h"
 #include "core/error.h"
 #include "core/image_io.h"
-#include "core/pixel_census.h"
 #include "render_job.h"
 #include "report/error_images.h"
 #include "report/text_output.h"
@@ -382,13 +381,9 @@ void exportLesson(const Lesson& lesson, const std::string& folder, glm::ivec2 si
         request.stopAfter = s.stage;
         RenderJob job(request);
         const viz::FrameOutput& out = job.run();
-        for (const char* layer : {"airlight", "final"}) {
-            const viz::PixelCensus c = viz::census(job.layerImage(layer));
-            if (!c.clean()) {
-                std::fprintf(stderr, "airlight: warning: %s:%d: step '%s': %s (stage %s): %s has %s\n", lesson.path.c_str(),
-                             s.line, s.title.c_str(), s.technique.c_str(), s.stage.empty() ? "all" : s.stage.c_str(),
-                             std::string(layer) == "airlight" ? "L_air" : "the final image", c.describe().c_str());
-            }
+        for (const std::string& line : job.badPixelWarnings()) {
+            std::fprintf(stderr, "airlight: warning: %s:%d: step '%s': %s\n", lesson.path.c_str(), s.line, s.title.c_str(),
+                         line.c_str());
         }
         html += "<h2>" + viz::report::escapeHtml(s.title) + "</h2>\n" + markdownToHtml(s.prose);
         std::string state = s.technique + " on " + s.scene;

@@ -1,5 +1,7 @@
 #include "render_job.h"
 
+#include "core/pixel_census.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -60,6 +62,18 @@ const viz::Intermediate* RenderJob::findIntermediate(const std::string& id) cons
     for (const auto& i : mOutput.intermediates)
         if (i.id == id) return &i;
     return nullptr;
+}
+
+std::vector<std::string> RenderJob::badPixelWarnings() const {
+    std::vector<std::string> lines;
+    const std::string stage = mTechnique->stages().empty()
+                                  ? std::string("?")
+                                  : mTechnique->stages()[std::size_t(std::max(mOutput.lastStageRun, 0))].id;
+    for (const auto& [image, name] : {std::pair{&mOutput.airlight, "L_air"}, std::pair{&mOutput.final, "the final image"}}) {
+        const viz::PixelCensus c = viz::census(*image);
+        if (!c.clean()) lines.push_back(mTechnique->id() + " (stage " + stage + "): " + name + " has " + c.describe());
+    }
+    return lines;
 }
 
 viz::Image RenderJob::layerImage(const std::string& layer, int arrayLayer) const {

@@ -4,6 +4,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "core/image.h"
 #include "debug/technique.h"
@@ -40,6 +41,9 @@ public:
     // "airlight", "final" or an intermediate id; layer selects a cube face / array layer.
     viz::Image layerImage(const std::string& layer, int arrayLayer = -1) const;
     const viz::Intermediate* findIntermediate(const std::string& id) const;
+    // One line per output of the last run (L_air, the final image) that has NaN, Inf or negative
+    // pixels: "TECHNIQUE (stage S): L_air has 3 NaN of 76800 pixels". Empty when all are clean.
+    std::vector<std::string> badPixelWarnings() const;
 
 private:
     viz::scene::Scene mScene;

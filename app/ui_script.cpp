@@ -134,8 +134,12 @@ std::vector<ScriptAction> parseScript(const std::string& path) {
             if (w.size() != 2) fail("screenshot takes one path");
             a.kind = ScriptAction::Kind::Screenshot;
             a.target = w[1];
+        } else if (w[0] == "stats") {
+            if (w.size() != 2) fail("stats takes one path");
+            a.kind = ScriptAction::Kind::Stats;
+            a.target = w[1];
         } else {
-            fail("unknown action '" + w[0] + "' (known: click, hover, drag, wheel, key, frames, screenshot)");
+            fail("unknown action '" + w[0] + "' (known: click, hover, drag, wheel, key, frames, screenshot, stats)");
         }
         actions.push_back(std::move(a));
     }

@@ -15,6 +15,8 @@
 //                        and/or Ctrl+ (Shift+S)
 //   frames N             let N frames pass
 //   screenshot PATH      write the window (PNG) and its sidecar JSON now
+//   stats PATH           append one JSON line to PATH: frame, resident memory, open files, GL objects
+//                        our wrappers own and GL errors so far (process_stats.h; the soak test)
 #pragma once
 
 #include <string>
@@ -25,7 +27,7 @@
 namespace airlight {
 
 struct ScriptAction {
-    enum class Kind { Click, Hover, Drag, Wheel, Key, Frames, Screenshot };
+    enum class Kind { Click, Hover, Drag, Wheel, Key, Frames, Screenshot, Stats };
     Kind kind = Kind::Frames;
     std::string target;          // widget / view name, key name or path
     glm::vec2 fraction{0.5f};    // click position within the target's rectangle

@@ -1,6 +1,7 @@
 // Handle<Traits>: owns one GL name, move-only. The destructor deletes the name through
 // Traits::destroy; a moved-from handle holds 0 and deletes nothing. Every wrapper type (Texture,
-// Buffer, ...) holds one.
+// Buffer, ...) holds one, so liveHandleCount() is the number of GL objects our code owns (the soak test
+// checks it stays flat).
 #pragma once
 
 #include <epoxy/gl.h>
@@ -10,11 +11,17 @@
 
 namespace viz::gl {
 
+// GL names currently owned by a Handle, all types together (creations minus deletions and releases).
+long liveHandleCount();
+void countHandle(int delta);
+
 template <typename Traits>
 class Handle {
 public:
     Handle() = default;
-    explicit Handle(GLuint id) : mId(id) {}
+    explicit Handle(GLuint id) : mId(id) {
+        if (id != 0) countHandle(+1);
+    }
     ~Handle() { reset(); }
 
     Handle(const Handle&) = delete;
@@ -33,12 +40,17 @@ public:
 
     // Deletes the owned name now (if any).
     void reset() {
-        if (mId != 0)
+        if (mId != 0) {
             Traits::destroy(mId);
+            countHandle(-1);
+        }
         mId = 0;
     }
     // Gives up ownership without deleting.
-    GLuint release() { return std::exchange(mId, 0u); }
+    GLuint release() {
+        if (mId != 0) countHandle(-1);
+        return std::exchange(mId, 0u);
+    }
 
 private:
     GLuint mId = 0;

@@ -16,6 +16,7 @@
 #include "scene/default_lighting.h"
 #include "scene/gltf_accessors.h"
 #include "scene/gltf_input.h"
+#include "scene/gltf_mesh_fixes.h"
 #include "scene/validate.h"
 
 namespace viz::scene {
@@ -24,7 +25,10 @@ namespace {
 constexpr double kDefaultZfar = 1000.0;  // glTF infinite projection: zfar absent
 constexpr int kMaxNodeDepth = 256;       // deeper trees are refused (the visit recurses)
 
+using gltf::frameScene;
 using gltf::quoteValue;
+using gltf::repairNormals;
+using gltf::toRgba8;
 
 // ---- helpers ----
 
@@ -63,80 +67,6 @@ glm::dmat4 localMatrix(const tinygltf::Node& node) {
 glm::dvec3 unitOrSelf(const glm::dvec3& v) {
     const double len = glm::length(v);
     return std::abs(len - 1.0) < 1e-14 ? v : v / len;
-}
-
-// Decoded image (1-4 channels of 8 or 16 bits) to RGBA8: grey replicates into R, G, B; missing alpha
-// is opaque; 16-bit values are rounded to 8 bits. The caller checked the pixel buffer's size.
-std::vector<std::uint8_t> toRgba8(const tinygltf::Image& image) {
-    const std::size_t pixels = std::size_t(image.width) * std::size_t(image.height);
-    const std::size_t channels = std::size_t(image.component);
-    const bool wide = image.bits == 16;
-    auto channel = [&](std::size_t p, std::size_t c) -> std::uint8_t {
-        const std::size_t at = p * channels + c;
-        if (!wide) return image.image[at];
-        std::uint16_t w;
-        std::memcpy(&w, &image.image[2 * at], 2);
-        return std::uint8_t((unsigned(w) + 128u) / 257u);
-    };
-    std::vector<std::uint8_t> out(pixels * 4);
-    for (std::size_t p = 0; p < pixels; ++p) {
-        std::uint8_t* o = &out[p * 4];
-        if (channels <= 2) {
-            o[0] = o[1] = o[2] = channel(p, 0);
-            o[3] = channels == 2 ? channel(p, 1) : 255;
-        } else {
-            for (std::size_t c = 0; c < 3; ++c) o[c] = channel(p, c);
-            o[3] = channels == 4 ? channel(p, 3) : 255;
-        }
-    }
-    return out;
-}
-
-// A camera that sees the whole bounding box, looking at its centre from above and to the side.
-Camera frameScene(const Scene& scene) {
-    const Bounds b = sceneBounds(scene);
-    const glm::dvec3 centre = b.centre();
-    const double radius = std::max(0.5 * b.diagonal(), 1e-3);
-    Camera cam;
-    cam.name = "framed";
-    cam.yfov = 0.8;
-    const glm::dvec3 fromCentre = glm::normalize(glm::dvec3(0.6, 0.45, 1.0));
-    // Distance at which a sphere of the given radius fits in the vertical field of view.
-    const double distance = 1.1 * radius / std::sin(0.5 * cam.yfov);
-    cam.position = centre + distance * fromCentre;
-    cam.forward = -fromCentre;
-    cam.up = glm::normalize(glm::dvec3(0, 1, 0) - glm::dot(glm::dvec3(0, 1, 0), cam.forward) * cam.forward);
-    cam.znear = std::max(1e-3 * radius, 0.01 * radius);
-    cam.zfar = distance + 2.0 * radius;
-    return cam;
-}
-
-// Replaces zero-length (or non-finite) normals by the area-weighted normal of the triangles that use
-// the vertex, or +Y when those are degenerate too; returns how many were replaced.
-std::size_t repairNormals(Mesh& mesh) {
-    std::vector<bool> bad(mesh.normals.size());
-    std::size_t count = 0;
-    for (std::size_t v = 0; v < mesh.normals.size(); ++v) {
-        const glm::vec3& n = mesh.normals[v];
-        bad[v] = !(std::isfinite(n.x) && std::isfinite(n.y) && std::isfinite(n.z)) || glm::dot(n, n) < 1e-24f;
-        count += bad[v];
-    }
-    if (count == 0) return 0;
-    std::vector<glm::dvec3> sum(mesh.normals.size(), glm::dvec3(0.0));
-    for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
-        const std::uint32_t a = mesh.indices[t], b = mesh.indices[t + 1], c = mesh.indices[t + 2];
-        const glm::dvec3 face = glm::cross(glm::dvec3(mesh.positions[b]) - glm::dvec3(mesh.positions[a]),
-                                           glm::dvec3(mesh.positions[c]) - glm::dvec3(mesh.positions[a]));
-        for (std::uint32_t v : {a, b, c}) {
-            if (bad[v]) sum[v] += face;
-        }
-    }
-    for (std::size_t v = 0; v < mesh.normals.size(); ++v) {
-        if (!bad[v]) continue;
-        const double len = glm::length(sum[v]);
-        mesh.normals[v] = len > 0.0 && std::isfinite(len) ? glm::vec3(sum[v] / len) : glm::vec3(0, 1, 0);
-    }
-    return count;
 }
 
 // ---- the loader ----

@@ -1,0 +1,31 @@
+#include "process_stats.h"
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "gl/handle.h"
+
+namespace airlight {
+
+ProcessStats currentProcessStats() {
+    ProcessStats s;
+    std::ifstream statm("/proc/self/statm");
+    long pages = 0, resident = 0;
+    if (statm >> pages >> resident) s.residentKb = resident * (::sysconf(_SC_PAGESIZE) / 1024);
+    std::error_code ec;
+    long files = 0;
+    for (std::filesystem::directory_iterator it("/proc/self/fd", ec), end; !ec && it != end; it.increment(ec)) ++files;
+    if (!ec) s.openFiles = files - 1;  // less the descriptor the listing itself holds
+    s.glObjects = viz::gl::liveHandleCount();
+    return s;
+}
+
+std::string statsJsonLine(const ProcessStats& s, long frame, long glErrors) {
+    return "{\"frame\": " + std::to_string(frame) + ", \"rss_kb\": " + std::to_string(s.residentKb) +
+           ", \"fds\": " + std::to_string(s.openFiles) + ", \"gl_objects\": " + std::to_string(s.glObjects) +
+           ", \"gl_errors\": " + std::to_string(glErrors) + "}";
+}
+
+}  // namespace airlight
