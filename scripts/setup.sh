@@ -12,6 +12,7 @@ packages=(
     libembree-dev libeigen3-dev fonts-dejavu-core
     libgtest-dev libboost-math-dev
     xvfb xauth python3-mpmath chromium
+    clang libclang-rt-14-dev
 )
 missing=()
 for p in "${packages[@]}"; do
