@@ -94,6 +94,55 @@ vec3 lightIntensity(GpuLight L, vec3 p) {
     return L.radiant.rgb * max(0.0, dot(L.direction.xyz, dirFromLight));
 }
 
+// The part [t0, t1] of the eye ray x = t w, t in [0, d], where a light can add airlight, so that samples
+// along the ray are spent there and never depend on d alone (a camera's zfar of 1e6): at most 60 mean
+// free paths from the eye (exp(-60) < 1e-26 of what nearer points add), and for a spot light its outer
+// cone, outside which A_spot is 0. The cone test solves |v|^2 cos^2 = (v . axis)^2 for v = t w - P on the
+// forward nappe; it is widened a little and falls back to the whole ray when degenerate, so it can only
+// include too much, never cut a lit stretch. Empty when t0 >= t1.
+vec2 litInterval(GpuLight L, vec3 w, float d, float sigma_t) {
+    float far = sigma_t > 0.0 ? min(d, 60.0 / sigma_t) : d;
+    vec2 r = vec2(0.0, far);
+#ifndef LIGHTS_NO_SPOT
+    if (L.info.x != kLightSpot) return r;
+    vec3 P = L.position.xyz;
+    vec3 D = L.direction.xyz;
+    float c = L.spot.w;  // cos(outer) in [0, 1)
+    float a1 = dot(w, D), b1 = -dot(P, D);  // v . D = a1 t + b1
+    float c2 = c * c;
+    float A = a1 * a1 - c2;
+    float B = 2.0 * (a1 * b1 + c2 * dot(w, P));
+    float C = b1 * b1 - c2 * dot(P, P);
+    float scale = length(P) + far;
+    float pad = 1.0e-3 * scale;
+    if (abs(A) < 1.0e-4) return r;  // the ray runs almost along the cone's surface: keep it whole
+    float disc = B * B - 4.0 * A * C;
+    if (disc < 0.0) {
+        // No crossing: the ray is wholly inside the double cone (A > 0) or wholly outside (A < 0).
+        if (A < 0.0) return vec2(1.0, 0.0);
+        // Inside: the forward nappe is where v . D >= 0.
+        float tAxis = -b1 / a1;
+        return a1 > 0.0 ? vec2(max(0.0, tAxis - pad), far) : vec2(0.0, min(far, tAxis + pad));
+    }
+    float q = -0.5 * (B + (B >= 0.0 ? 1.0 : -1.0) * sqrt(disc));
+    float t1 = q / A, t2 = C / q;
+    if (t1 > t2) { float tmp = t1; t1 = t2; t2 = tmp; }
+    vec2 seg;
+    if (A < 0.0) {
+        // Inside the double cone between the roots; one nappe or the other (the midpoint says which).
+        if (a1 * 0.5 * (t1 + t2) + b1 < 0.0) return vec2(1.0, 0.0);
+        float grow = pad + 1.0e-3 * (t2 - t1);
+        seg = vec2(t1 - grow, t2 + grow);
+    } else {
+        // Inside before t1 and after t2; the forward nappe is the end the ray travels along the axis.
+        seg = a1 > 0.0 ? vec2(t2 - pad - 1.0e-3 * abs(t2), 3.0e38) : vec2(-3.0e38, t1 + pad + 1.0e-3 * abs(t1));
+    }
+    r = vec2(max(r.x, seg.x), min(r.y, seg.y));
+    if (any(isnan(r))) return vec2(0.0, far);
+#endif
+    return r;
+}
+
 // E of the definition at p: lightIntensity * exp(-sigma_t r) / r^2 for point-like lights, I * colour for
 // directional ones (no attenuation on the light side). No visibility.
 vec3 unshadowedIrradiance(GpuLight L, vec3 p, float sigma_t) {

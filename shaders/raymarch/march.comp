@@ -1,6 +1,7 @@
 #version 450 core
 // raymarch/march.comp: brute-force single scattering. For each pixel and light, N samples along the eye
-// ray over [0, d] (d from the surface pass), each tested against the light's shadow map. Plain mode is
+// ray over the part of [0, d] (d from the surface pass) the light can reach (litInterval: a spot's cone,
+// 60 mean free paths), each tested against the light's shadow map. Plain mode is
 // the midpoint rule of the integrand; EXACT integrates the unshadowed airlight analytically over each
 // sample's interval and weights it by the visibility at the sample (NAIVE_CLOSED_FORM, a teaching mode:
 // with Sun et al.'s textbook formula instead of the stable pointSegment). Output: L_air (rgba32f) and the lit
@@ -50,7 +51,6 @@ void main() {
 
     vec3 w = pixelRay(texel);
     float d = texelFetch(uDistance, texel, 0).r;
-    float dt = d / float(uSamples);
 
     vec3 sum = uFirst ? vec3(0.0) : imageLoad(uAirlight, texel).rgb;
     float litSamples = uFirst ? 0.0 : imageLoad(uLitFraction, texel).r;
@@ -58,12 +58,15 @@ void main() {
         int li = k / uSamples;
         int i = k - li * uSamples;
         GpuLight L = gLights[li];
+        vec2 span = litInterval(L, w, d, uSigmaT);
+        if (span.y <= span.x) continue;  // the light reaches no part of this ray: no samples, none lit
+        float dt = (span.y - span.x) / float(uSamples);
 #ifdef JITTER
         float u = hashToUnit(uvec3(uint(texel.x) + uint(texel.y) * 65536u, uint(i), uSeed + uint(li)));
 #else
         float u = 0.5;
 #endif
-        float t = (float(i) + u) * dt;
+        float t = span.x + (float(i) + u) * dt;
         vec3 x = t * w;
 #ifdef SHADOW_LOOKUP_MESH
         float V = shadowVisibilityMesh(L, x);  // depth linear across the polyvol mesh's triangles
@@ -76,8 +79,8 @@ void main() {
         vec3 toLight = directionToLight(L, x);
         float cosTheta = dot(toLight, w);
 #ifdef EXACT
-        float x0 = float(i) * dt;
-        float x1 = float(i + 1) * dt;
+        float x0 = span.x + float(i) * dt;
+        float x1 = span.x + float(i + 1) * dt;
         if (L.info.x == kLightDirectional) {
             sum += V * directionalSegment(cosTheta, x0, x1, uSigmaS, uSigmaT, uG, 1.0) * L.radiant.rgb;
         } else {
