@@ -214,6 +214,14 @@ struct GizmoDrag {
                              // half size): the handle keeps it
 };
 
+// What the loader decided on its own about a scene (a default light, a medium typo, repaired normals),
+// for the status line: "scene notes: A; B".
+std::string sceneNotesLine(const viz::scene::Scene& scene) {
+    std::string line;
+    for (const std::string& n : scene.notes) line += (line.empty() ? "scene notes: " : "; ") + n;
+    return line;
+}
+
 class GuiApp : public LessonHost {
 public:
     GuiApp(const GuiOptions& options, viz::scene::Scene scene, viz::Window& window, SessionState session,
@@ -226,6 +234,7 @@ public:
         , mController(mScene.camera, orbitDistance(mScene))
         , mGizmoArm(kGizmoArm * mController.targetDistance())
         , mIds(viz::techniqueIds()) {
+        if (mNotice.empty()) mNotice = sceneNotesLine(mScene);
         float sx = 1.0f, sy = 1.0f;
         glfwGetWindowContentScale(mWindow.handle(), &sx, &sy);
         mScale = std::max(1.0f, std::max(sx, sy));
@@ -680,7 +689,8 @@ private:
         mController = CameraController(mScene.camera, orbitDistance(mScene));
         mGizmoArm = kGizmoArm * mController.targetDistance();
         mWorker->setScene(mScene);
-        mLightIntensity0 = 0.0;
+        mLightIntensityOff = 0.0;
+        mNotice = sceneNotesLine(mScene);
         mComparison.close();
         mProbe.reset();
         mDirty = true;
@@ -2662,12 +2672,22 @@ private:
                 mUi->tooltip("phase function asymmetry: > 0 scatters forward, < 0 back");
             }
             if (!mScene.lights.empty() && mUi->collapsingHeader("Light: " + mScene.lights[0].name, true)) {
-                float intensity = float(mScene.lights[0].intensity);
-                if (mLightIntensity0 <= 0.0) mLightIntensity0 = mScene.lights[0].intensity;
-                const float lo = float(mLightIntensity0 * 1e-3), hi = float(mLightIntensity0 * 1e3);
-                if (mUi->sliderFloat("intensity", intensity, lo, hi, true)) {
-                    mScene.lights[0].intensity = intensity;
+                // The slider's range is declared, never derived from the light (a light of intensity 0, or
+                // one from a millimetre model, once gave an empty or inverted range): a log scale over the
+                // intensities scenes use, and "on" for the light switched off (0).
+                double& value = mScene.lights[0].intensity;
+                bool on = value > 0.0;
+                if (mUi->checkbox("on", on)) {
+                    if (on) value = mLightIntensityOff > 0.0 ? mLightIntensityOff : 1.0;
+                    else mLightIntensityOff = value, value = 0.0;
                     sceneChanged = true;
+                }
+                if (on) {
+                    float intensity = float(value);
+                    if (mUi->sliderFloat("intensity", intensity, kIntensitySliderMin, kIntensitySliderMax, true)) {
+                        value = intensity;
+                        sceneChanged = true;
+                    }
                 }
             }
             // Folded by default: the technique's parameters stay in view on small windows.
@@ -2880,7 +2900,10 @@ private:
     std::string mProbeTechnique;
     bool mProbeHasValue = false;
     glm::dvec3 mProbeValue{0.0};
-    double mLightIntensity0 = 0.0;           // the first light's intensity at start (slider range)
+    // The light panel's intensity slider: a declared log range (candela or lux) covering every scene's
+    // lights, from millimetre models to the stiff cases; 0 is the "on" box unticked.
+    static constexpr float kIntensitySliderMin = 1e-6f, kIntensitySliderMax = 1e12f;
+    double mLightIntensityOff = 0.0;  // the intensity before "on" was unticked
     int mDragView = -1;                      // the view a drag pans
     int mDragOrbit = -1;                     // the orbit view a drag turns
     bool mShowGizmo = true;                   // L: the light gizmo over the frame views

@@ -11,11 +11,13 @@ export VIZ_REQUIRE_DISPLAY="${VIZ_REQUIRE_DISPLAY:-1}"
 export VIZ_REQUIRE_BROWSER="${VIZ_REQUIRE_BROWSER:-1}"
 export LP_NUM_THREADS="${LP_NUM_THREADS:-2}"
 export AIRLIGHT_CACHE_DIR="${AIRLIGHT_CACHE_DIR:-$PWD/build/ci/cache}"
-# The glTF loader's fuzz target (clang, libFuzzer, ASan + UBSan): the regressions and seeds replayed,
-# then 60 s of fuzzing. AIRLIGHT_SKIP_FUZZ=1 leaves it out (a quick local run).
+# The scene code built with clang, ASan and UBSan (preset fuzz): the scene tests (the loader's hardening
+# and fuzz regressions among them) with leak checks, then the fuzz target: the regressions and seeds
+# replayed, and 60 s of fuzzing. AIRLIGHT_SKIP_FUZZ=1 leaves it out (a quick local run).
 if [ "${AIRLIGHT_SKIP_FUZZ:-0}" != 1 ]; then
     cmake --preset fuzz >/dev/null
     cmake --build --preset fuzz -j "$(nproc)"
+    ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 build/fuzz/tests/viz_scene_tests --gtest_brief=1
     ctest --preset fuzz
 fi
 if [ -z "${DISPLAY:-}" ] && [ -z "${WAYLAND_DISPLAY:-}" ]; then

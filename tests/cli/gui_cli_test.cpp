@@ -143,6 +143,26 @@ TEST_F(GuiCli, TheLightPanelTurnsTheLight) {
     EXPECT_NEAR(y, -std::sqrt(0.5), 0.03) << "45 degrees below the horizon (pixel rounding aside)";
 }
 
+// A light of intensity 0 opens (the slider's range once came from the light's own value and aborted the
+// window); ticking "on" brings it back and the slider then moves it over its declared range.
+TEST_F(GuiCli, ALightOfIntensityZeroOpensAndCanBeSwitchedOn) {
+    ASSERT_EQ(run("export-scene grate " + path("grate.gltf").string()).exitCode, 0);
+    nlohmann::json doc = nlohmann::json::parse(readFile(path("grate.gltf")));
+    doc["extensions"]["KHR_lights_punctual"]["lights"][0]["intensity"] = 0.0;
+    writeText("dark.gltf", doc.dump());
+    const fs::path script = writeText("on.txt", "frames 2\nscreenshot " + path("off.png").string() +
+                                                    "\nclick on\nframes 2\nclick intensity 0.75 0.5\nframes 2\n");
+    const RunResult r = run("gui --scene " + path("dark.gltf").string() +
+                            " --technique raymarch --size 40x30 --set samples=16 --script " + script.string() +
+                            " --screenshot " + path("on.png").string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const nlohmann::json off = nlohmann::json::parse(readFile(path("off.json")));
+    const nlohmann::json on = nlohmann::json::parse(readFile(path("on.json")));
+    EXPECT_EQ(off.at("lights")[0].at("intensity").get<double>(), 0.0);
+    // Three quarters along a log scale from 1e-6 to 1e12: 1e7.5, whatever the light was.
+    EXPECT_NEAR(std::log10(on.at("lights")[0].at("intensity").get<double>()), 7.5, 0.2);
+}
+
 // The scene pickers load a built-in scene or a stiff case with its own camera and medium.
 TEST_F(GuiCli, TheScenePickersLoadABuiltinSceneAndAStiffCase) {
     const fs::path script = writeText("pick.txt", "frames 1\nclick scene\nframes 1\nclick \"scene/colonnade\"\nframes 2\n"

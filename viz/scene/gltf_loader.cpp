@@ -463,6 +463,11 @@ private:
         if (peak > LoadLimits::kMaxRadiance) {
             mRead.fail(who + " intensity x colour = " + number(peak) + " is over the limit of 1e20 (GPU floats overflow)");
         }
+        if (gl.extras.IsObject()) {
+            for (const std::string& key : gl.extras.Keys()) {
+                if (key != "cookie") mScene.notes.push_back(who + ": extras key " + quoteValue(key) + " ignored (known: cookie)");
+            }
+        }
         if (gl.extras.IsObject() && gl.extras.Has("cookie")) {
             const tinygltf::Value& cookie = gl.extras.Get("cookie");
             if (!cookie.IsInt()) mRead.fail(who + ": extras.cookie must be a texture index");

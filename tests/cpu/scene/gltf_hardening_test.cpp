@@ -401,6 +401,12 @@ TEST_F(GltfHardening, UnusedLightIsItsOwnMessage) {
     EXPECT_TRUE(hasNote(s, "added a default spot light"));
 }
 
+TEST_F(GltfHardening, UnknownLightExtrasAreNoted) {
+    Tiny d;
+    d.light = R"({"type": "point", "intensity": 5, "extras": {"cokie": 0}})";
+    EXPECT_TRUE(hasNote(loadGltf(write(d)), "light 0: extras key 'cokie' ignored (known: cookie)"));
+}
+
 TEST_F(GltfHardening, MediumTyposAreNoted) {
     Tiny d;
     d.sceneExtras = R"({"medium": {"sigma_S": 0.3, "sigma_a": "thick"}})";
