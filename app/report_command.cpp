@@ -24,6 +24,7 @@
 #include "report/report_table.h"
 #include "scene/stiff_scenes.h"
 #include "report/stiff_suite.h"
+#include "report/text_output.h"
 #include "report/tradeoff.h"
 #include "scene/builtin_scenes.h"
 #include "scene/scene_source.h"
@@ -437,8 +438,9 @@ int runReportCommand(Args& args, const std::string& commandLine) {
     for (const viz::report::ScenePage& page : pages)
         for (const std::string& t : o.techniques)
             if (const auto* best = viz::report::bestSpeedup(rows, page.scene, t); best && t != "raymarch")
-                std::printf("%-14s %-10s %6.2fx faster than raymarch at error %.3g (%s)\n", page.scene.c_str(),
-                            t.c_str(), *best->speedup, best->error.relativeL2, best->setting.c_str());
+                std::printf("%-14s %-10s %s than raymarch at error %.3g (%s)\n", page.scene.c_str(), t.c_str(),
+                            viz::report::speedupPhrase(*best->speedup).c_str(), best->error.relativeL2,
+                            best->setting.c_str());
     std::printf("wrote %s\n", (dir / "index.html").string().c_str());
     return 0;
 }

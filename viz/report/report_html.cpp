@@ -13,6 +13,16 @@ namespace viz::report {
 
 namespace {
 
+// The plan's saving in percent; a planned run that measured slower than the forced one saved nothing,
+// and the page says so instead of printing a negative saving.
+std::string savedCell(double planned, double forced) {
+    const double saved = 100.0 * (1.0 - planned / forced);
+    if (!std::isfinite(saved)) return "&ndash;";
+    if (saved >= 0.0) return formatFigure(saved, "%.0f") + " %";
+    return "none <span class=\"note\">(planned " + formatFigure(-saved, "%.0f") +
+           " % slower: timing noise, or the plan costs more)</span>";
+}
+
 // A figure for a table cell: a dash when undefined.
 std::string figure(double v, const char* format = "%.3g") {
     const std::string text = formatFigure(v, format);
@@ -60,7 +70,7 @@ void writeHtml(const std::string& path, const ReportMeta& meta, const std::vecto
             const ReportRow* best = bestSpeedup(rows, s.scene, t);
             h << "<td>";
             if (best)
-                h << figure(*best->speedup, "%.2f") << "&times; <span class=\"note\">(" << escapeHtml(best->setting)
+                h << escapeHtml(speedupPhrase(*best->speedup)) << " <span class=\"note\">(" << escapeHtml(best->setting)
                   << ", error " << figure(best->error.relativeL2) << ")</span>";
             else
                 h << "&ndash;";
@@ -83,7 +93,7 @@ void writeHtml(const std::string& path, const ReportMeta& meta, const std::vecto
             h << "<tr><td class=\"l\">" << escapeHtml(p.scene) << "</td><td class=\"l\">" << escapeHtml(p.technique)
               << "</td><td>" << figure(p.plannedMilliseconds, "%.1f") << "</td><td>"
               << figure(p.forcedMilliseconds, "%.1f") << "</td><td>"
-              << figure(100.0 * (1.0 - p.plannedMilliseconds / p.forcedMilliseconds), "%.0f") << "%</td><td class=\"l\">"
+              << savedCell(p.plannedMilliseconds, p.forcedMilliseconds) << "</td><td class=\"l\">"
               << escapeHtml(skipped.empty() ? "nothing" : skipped) << "</td></tr>\n";
         }
         h << "</table>\n";
@@ -106,7 +116,7 @@ void writeHtml(const std::string& path, const ReportMeta& meta, const std::vecto
               << "</td><td>" << figure(r.error.rmse) << "</td><td>" << figure(r.error.maxAbsolute) << "</td><td>"
               << figure(r.error.relativeP999) << "</td><td>" << figure(r.error.psnr, "%.1f") << "</td><td"
               << (bad ? " class=\"bad\"" : "") << ">" << r.error.nanPixels << "/" << r.error.infPixels << "/"
-              << r.error.negativePixels << "</td><td>" << (r.speedup ? figure(*r.speedup, "%.2f") : "&ndash;")
+              << r.error.negativePixels << "</td><td>" << (r.speedup ? escapeHtml(speedupPhrase(*r.speedup)) : "&ndash;")
               << "</td></tr>\n";
         }
         h << "</table>\n";

@@ -29,6 +29,15 @@ std::string escapeHtml(const std::string& text) {
     return out;
 }
 
+std::string speedupPhrase(double ratio) {
+    if (!(ratio > 0.0) || !std::isfinite(ratio)) return "-";
+    if (std::abs(ratio - 1.0) < 0.01) return "as fast";
+    char text[48];
+    const double r = ratio > 1.0 ? ratio : 1.0 / ratio;
+    std::snprintf(text, sizeof(text), r < 10.0 ? "%.2fx %s" : "%.0fx %s", r, ratio > 1.0 ? "faster" : "slower");
+    return text;
+}
+
 std::string formatFigure(double value, const char* format) {
     if (!std::isfinite(value)) return "";
     char buffer[64];

@@ -11,6 +11,10 @@ std::string csvField(const std::string& text);
 std::string escapeHtml(const std::string& text);
 // printf-formatted figure; empty for NaN and Inf (undefined figures print as nothing).
 std::string formatFigure(double value, const char* format = "%.6g");
+
+// A time ratio (baseline time / technique time) in words: "5.9x faster", "5.9x slower" (never
+// "0.17x faster"), "as fast" within 1 %; "-" when the ratio is not a positive finite number.
+std::string speedupPhrase(double ratio);
 // Writes the whole file atomically; throws InputError naming the path on failure.
 void writeTextFile(const std::string& path, const std::string& text);
 
