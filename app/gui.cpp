@@ -1595,6 +1595,12 @@ private:
             mUiInput.keys.push_back(*k);  // widgets: arrows, Enter, Space, editing keys
             return;
         }
+        // In fly mode W A S D Q E drive the camera (fly() reads them as held keys) and nothing else: S
+        // does not also step the stage, nor E export a view.
+        if (mController.mode() == CameraController::Mode::Fly &&
+            (key == GLFW_KEY_W || key == GLFW_KEY_A || key == GLFW_KEY_S || key == GLFW_KEY_D || key == GLFW_KEY_Q ||
+             key == GLFW_KEY_E))
+            return;
         if (key == GLFW_KEY_ESCAPE) glfwSetWindowShouldClose(mWindow.handle(), GLFW_TRUE);
         else if (key == GLFW_KEY_TAB) selectTechnique(mCurrent + (shift ? -1 : 1));
         else if (key >= GLFW_KEY_1 && key <= GLFW_KEY_9 && key - GLFW_KEY_1 < int(mIds.size())) selectTechnique(key - GLFW_KEY_1);

@@ -163,6 +163,22 @@ TEST_F(GuiCli, ALightOfIntensityZeroOpensAndCanBeSwitchedOn) {
     EXPECT_NEAR(std::log10(on.at("lights")[0].at("intensity").get<double>()), 7.5, 0.2);
 }
 
+// In fly mode W A S D Q E belong to the camera: S and Shift+S do not step the stage, E does not export a
+// view. Back in orbit mode (C) Shift+S steps again.
+TEST_F(GuiCli, InFlyModeTheMovementKeysOnlyMoveTheCamera) {
+    const fs::path exports = path("exports");
+    const fs::path script = writeText("fly.txt", "frames 2\nkey C\nkey S\nkey Shift+S\nkey E\nframes 2\nscreenshot " +
+                                                     path("fly.png").string() + "\nkey C\nkey Shift+S\nframes 2\n");
+    const RunResult r = run("gui --scene grate --technique slices --size 40x30 --set planes=16 --export-dir " +
+                            exports.string() + " --script " + script.string() + " --screenshot " + path("orbit.png").string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const nlohmann::json fly = nlohmann::json::parse(readFile(path("fly.json")));
+    const nlohmann::json orbit = nlohmann::json::parse(readFile(path("orbit.json")));
+    EXPECT_EQ(fly.at("stage"), "slices.compose") << "S in fly mode must not step the stage";
+    EXPECT_FALSE(fs::exists(exports)) << "E in fly mode must not export";
+    EXPECT_NE(orbit.at("stage"), "slices.compose") << "Shift+S in orbit mode steps";
+}
+
 // The scene pickers load a built-in scene or a stiff case with its own camera and medium.
 TEST_F(GuiCli, TheScenePickersLoadABuiltinSceneAndAStiffCase) {
     const fs::path script = writeText("pick.txt", "frames 1\nclick scene\nframes 1\nclick \"scene/colonnade\"\nframes 2\n"
