@@ -388,7 +388,8 @@ void exportLesson(const Lesson& lesson, const std::string& folder, glm::ivec2 si
         html += "<h2>" + viz::report::escapeHtml(s.title) + "</h2>\n" + markdownToHtml(s.prose);
         std::string state = s.technique + " on " + s.scene;
         if (!s.stage.empty()) state += ", stopped after " + s.stage;
-        for (const auto& [name, value] : s.settings) state += ", " + name + "=" + viz::report::formatFigure(value, "%g");
+        const std::vector<viz::ParamInfo> params = viz::makeTechnique(s.technique)->params();
+        for (const auto& [name, value] : s.settings) state += ", " + viz::settingText(params, name, value);
         // Both animations end on the static step's state (every sub-step; the light back where it was):
         // the image is the animation's last frame.
         if (s.animation.kind != LessonAnimation::Kind::None)

@@ -516,11 +516,11 @@ void LessonPlayer::draw(viz::ui::Context& ui, DrawList& dl, DrawList& background
         // What the step sets, as the handout prints it.
         std::string state = s.technique + " on " + s.scene;
         if (!s.stage.empty()) state += ", stopped after " + s.stage;
-        for (const auto& [name, value] : s.settings) {
-            std::ostringstream v;
-            v << value;
-            state += ", " + name + "=" + v.str();
+        if (mStepParamsFor != s.technique) {  // drawn every frame: the technique's declarations once per step
+            mStepParams = viz::makeTechnique(s.technique)->params();
+            mStepParamsFor = s.technique;
         }
+        for (const auto& [name, value] : s.settings) state += ", " + viz::settingText(mStepParams, name, value);
         y += flowWords(&dl, font, inlineWords(state, SpanStyle::Dim), {left, y}, 0.0f, 0.0f, width, scale);
     }
     y += 4.0f * scale;

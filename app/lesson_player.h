@@ -114,6 +114,8 @@ private:
     std::string mPath;
     glm::ivec2 mSizeOverride{0};
     std::optional<Lesson> mLesson;
+    std::string mStepParamsFor;              // the technique whose parameters mStepParams holds
+    std::vector<viz::ParamInfo> mStepParams;  // to show a step's settings by name (integrand=svd)
     std::string mLoadError;  // the lesson file's problem (FILE:LINE: reason)
     std::string mStepError;  // the current step's problem when applying it
     int mStep = 0;

@@ -80,13 +80,9 @@ double median(std::vector<double> v) {
     return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
-std::string settingsText(const viz::Settings& s) {
+std::string settingsText(const std::vector<viz::ParamInfo>& params, const viz::Settings& s) {
     std::string text;
-    for (const auto& [name, value] : s) {
-        char buffer[64];
-        std::snprintf(buffer, sizeof buffer, "%g", value);
-        text += (text.empty() ? "" : " ") + name + "=" + buffer;
-    }
+    for (const auto& [name, value] : s) text += (text.empty() ? "" : " ") + viz::settingText(params, name, value);
     return text;
 }
 
@@ -364,7 +360,7 @@ int runReportCommand(Args& args, const std::string& commandLine) {
             row.scene = sceneName;
             row.technique = point.technique;
             row.setting = point.setting.label;
-            row.settings = settingsText(point.setting.settings);
+            row.settings = settingsText(technique->params(), point.setting.settings);
             row.width = o.width, row.height = o.height, row.runs = o.runs;
             row.clock = output.timing.clock;
             for (const std::string& s : stageOrder) row.stages.push_back({s, median(stageTimes[s])});

@@ -2,19 +2,36 @@
 // browser loads with no missing image); malformed lessons are one-line errors naming file and line.
 #include <gtest/gtest.h>
 
+#include <cctype>
 #include <filesystem>
 #include <regex>
+#include <set>
 #include <string>
 
 #include "cli/cli_fixture.h"
+#include "techniques/registry.h"
 
 namespace viz::testing {
 namespace {
 
 namespace fs = std::filesystem;
 
+// Every parameter with named values (integrand=svd, accum=rgba8), from the techniques' declarations.
+std::set<std::string> namedValueParams() {
+    std::set<std::string> names;
+    for (const std::string& id : viz::techniqueIds()) {
+        const auto technique = viz::makeTechnique(id);  // params() refers into it: keep it alive
+        for (const viz::ParamInfo& p : technique->params()) {
+            if (!p.choices.empty()) names.insert(p.name);
+        }
+    }
+    return names;
+}
+
 TEST_F(CliTest, EveryLessonExportsAPageWithAllItsImages) {
-    int lessons = 0;
+    const std::set<std::string> named = namedValueParams();
+    ASSERT_FALSE(named.empty());
+    int lessons = 0, namedTotal = 0;
     for (const auto& entry : fs::directory_iterator(fs::path(VIZ_SOURCE_DIR) / "lessons")) {
         if (entry.path().extension() != ".md" || entry.path().filename() == "README.md") continue;
         ++lessons;
@@ -30,6 +47,20 @@ TEST_F(CliTest, EveryLessonExportsAPageWithAllItsImages) {
             ++images;
             EXPECT_TRUE(fs::exists(out / (*it)[1].str())) << name << ": " << (*it)[1].str();
         }
+        // Settings are shown as the prose names them: a parameter with named values never as a number.
+        // (A plain scan: std::regex recurses per character and overflows the stack on a whole page.)
+        int namedShown = 0;
+        for (std::size_t eq = page.find('='); eq != std::string::npos; eq = page.find('=', eq + 1)) {
+            std::size_t b = eq;
+            while (b > 0 && (std::islower(static_cast<unsigned char>(page[b - 1])) || page[b - 1] == '_')) --b;
+            const std::string key = page.substr(b, eq - b);
+            if (!named.count(key) || eq + 1 >= page.size()) continue;
+            ++namedShown;
+            const char first = page[eq + 1];
+            EXPECT_FALSE(std::isdigit(static_cast<unsigned char>(first)) || first == '-')
+                << name << ": " << page.substr(b, 40) << " shows a named value as a number";
+        }
+        namedTotal += namedShown;
         int steps = 0;
         for (std::size_t at = page.find("<h2>"); at != std::string::npos; at = page.find("<h2>", at + 1)) ++steps;
         EXPECT_GE(images, steps) << name;
@@ -42,6 +73,7 @@ TEST_F(CliTest, EveryLessonExportsAPageWithAllItsImages) {
         EXPECT_EQ(loaded, "images=" + std::to_string(images) + " missing=0") << name;
     }
     EXPECT_GE(lessons, 2);
+    EXPECT_GT(namedTotal, 0) << "no lesson sets a parameter with named values: the check above checked nothing";
 }
 
 TEST_F(CliTest, MalformedLessonsNameTheFileAndLine) {

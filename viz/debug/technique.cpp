@@ -1,5 +1,7 @@
 #include "debug/technique.h"
 
+#include <cstdio>
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -27,6 +29,18 @@ static std::string knownParams(const Technique& technique) {
     const auto& params = technique.params();
     for (std::size_t i = 0; i < params.size(); ++i) out << (i ? ", " : "") << params[i].name;
     return params.empty() ? std::string("none") : out.str();
+}
+
+std::string settingText(const std::vector<ParamInfo>& params, const std::string& name, double value) {
+    for (const ParamInfo& p : params) {
+        if (p.name != name || p.choices.empty()) continue;
+        if (value >= 0.0 && value == std::floor(value) && value < double(p.choices.size())) {
+            return name + "=" + p.choices[std::size_t(value)];
+        }
+    }
+    char number[32];
+    std::snprintf(number, sizeof(number), "%g", value);
+    return name + "=" + number;
 }
 
 Settings completeSettings(const Technique& technique, const Settings& given) {

@@ -203,6 +203,10 @@ bool setSubstep(const Technique& technique, int stage, Settings& settings, int k
 // Fills in defaults and rejects unknown names and out-of-range values with an InputError.
 Settings completeSettings(const Technique& technique, const Settings& given);
 
+// "name=value" as a user writes it in --set and lessons: a named value by its name (integrand=svd,
+// accum=rgba8), any other value as a number (%g). Unknown names and out-of-range indices stay numbers.
+std::string settingText(const std::vector<ParamInfo>& params, const std::string& name, double value);
+
 // The `force_features` parameter every technique that prunes by scene offers: 1 runs every stage and
 // compiles in every feature its plan would leave out for the scene, so `airlight report` can measure
 // what each plan saves. The image must not change.
