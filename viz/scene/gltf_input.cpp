@@ -137,6 +137,20 @@ bool boundedImageLoader(tinygltf::Image* image, const int index, std::string* er
     return tinygltf::LoadImageData(image, index, err, warn, reqWidth, reqHeight, bytes, size, nullptr);
 }
 
+// An item's "uri", when it names an external file: that file must be one the loader may read.
+// Returns false when the item has no uri (a GLB's own chunk, an image in a bufferView).
+bool checkItemUri(const nlohmann::json& item, const std::string& who, const Folder& folder, const std::string& prefix) {
+    const auto uri = item.find("uri");
+    if (uri == item.end()) return false;
+    if (!uri->is_string()) throw InputError(prefix + who + ": uri must be a string");
+    const std::string u = uri->get<std::string>();
+    if (u.rfind("data:", 0) == 0) return true;
+    std::string resolved;
+    const std::string problem = resolveUri(folder, u, who, resolved);
+    if (!problem.empty()) throw InputError(prefix + problem);
+    return true;
+}
+
 // Checks the document's buffers and images before tinygltf allocates or opens anything for them.
 void checkResources(const std::string& json, const Folder& folder, bool binary, std::uint64_t fileSize,
                     const std::string& prefix) {
@@ -160,20 +174,10 @@ void checkResources(const std::string& json, const Folder& folder, bool binary, 
                 throw InputError(prefix + who + ": byteLength " + std::to_string(bytes) + " is over the " +
                                  gib(Limits::kMaxFileBytes) + " limit");
             }
-            const auto uri = b.find("uri");
-            if (uri == b.end()) {
-                if (binary && i == 0 && bytes > fileSize) {
-                    throw InputError(prefix + who + ": byteLength " + std::to_string(bytes) + " is more than the whole file (" +
-                                     std::to_string(fileSize) + " bytes)");
-                }
-                continue;
+            if (!checkItemUri(b, who, folder, prefix) && binary && i == 0 && bytes > fileSize) {
+                throw InputError(prefix + who + ": byteLength " + std::to_string(bytes) + " is more than the whole file (" +
+                                 std::to_string(fileSize) + " bytes)");
             }
-            if (!uri->is_string()) throw InputError(prefix + who + ": uri must be a string");
-            const std::string u = uri->get<std::string>();
-            if (u.rfind("data:", 0) == 0) continue;
-            std::string resolved;
-            const std::string problem = resolveUri(folder, u, who, resolved);
-            if (!problem.empty()) throw InputError(prefix + problem);
         }
     }
     if (const nlohmann::json* images = items("images")) {
@@ -181,14 +185,7 @@ void checkResources(const std::string& json, const Folder& folder, bool binary, 
             const nlohmann::json& im = (*images)[i];
             const std::string who = "image " + std::to_string(i);
             if (!im.is_object()) throw InputError(prefix + who + " is not an object");
-            const auto uri = im.find("uri");
-            if (uri == im.end()) continue;
-            if (!uri->is_string()) throw InputError(prefix + who + ": uri must be a string");
-            const std::string u = uri->get<std::string>();
-            if (u.rfind("data:", 0) == 0) continue;
-            std::string resolved;
-            const std::string problem = resolveUri(folder, u, who, resolved);
-            if (!problem.empty()) throw InputError(prefix + problem);
+            checkItemUri(im, who, folder, prefix);
         }
     }
 }

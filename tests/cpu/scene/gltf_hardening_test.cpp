@@ -59,6 +59,12 @@ struct Tiny {
     }
 };
 
+// The base document's nodes, with extra fields on the mesh node (e.g. a transform to break).
+std::string meshNodeWith(const std::string& fields) {
+    return R"([{"mesh": 0, )" + fields + R"(}, {"camera": 0, "translation": [0, 0, 3]},
+        {"extensions": {"KHR_lights_punctual": {"light": 0}}, "translation": [0, 2, 0]}])";
+}
+
 class GltfHardening : public ::testing::Test {
 protected:
     void SetUp() override { mDir = test::freshTempDir("hard"); }
@@ -295,22 +301,19 @@ TEST_F(GltfHardening, HugeSigma) {
 
 TEST_F(GltfHardening, HugeTranslation) {
     Tiny d;
-    d.nodes = R"([{"mesh": 0, "translation": [1e30, 0, 0]}, {"camera": 0, "translation": [0, 0, 3]},
-        {"extensions": {"KHR_lights_punctual": {"light": 0}}, "translation": [0, 2, 0]}])";
+    d.nodes = meshNodeWith(R"("translation": [1e30, 0, 0])");
     expectInputError([&] { loadGltf(write(d)); }, "node 0 translation has a value 1e+30 that is not finite or beyond 1e15");
 }
 
 TEST_F(GltfHardening, ScaleThatMovesVerticesBeyondTheLimit) {
     Tiny d;
-    d.nodes = R"([{"mesh": 0, "scale": [1e14, 1e14, 1e14], "translation": [9.5e14, 0, 0]}, {"camera": 0, "translation": [0, 0, 3]},
-        {"extensions": {"KHR_lights_punctual": {"light": 0}}, "translation": [0, 2, 0]}])";
+    d.nodes = meshNodeWith(R"("scale": [1e14, 1e14, 1e14], "translation": [9.5e14, 0, 0])");
     expectInputError([&] { loadGltf(write(d)); }, "beyond the 1e15 limit");
 }
 
 TEST_F(GltfHardening, ZeroQuaternion) {
     Tiny d;
-    d.nodes = R"([{"mesh": 0, "rotation": [0, 0, 0, 0]}, {"camera": 0, "translation": [0, 0, 3]},
-        {"extensions": {"KHR_lights_punctual": {"light": 0}}, "translation": [0, 2, 0]}])";
+    d.nodes = meshNodeWith(R"("rotation": [0, 0, 0, 0])");
     expectInputError([&] { loadGltf(write(d)); }, "node 0 rotation is a zero quaternion");
 }
 
