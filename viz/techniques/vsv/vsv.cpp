@@ -117,7 +117,7 @@ public:
              0, -16, 16, false},
             {"phi_bias", "light-ray phi offset in cells (negative: shadow moves away from the eye; the paper's -1)", 0,
              -16, 16, false},
-            {"interp", "1: two texels along theta (bit-level along phi for the fragment); 0: nearest", 1, 0, 1, true},
+            {"interp", "1: two texels along theta; 0: nearest", 1, 0, 1, true},
             {"dynamic_range", "1: the grid covers only the visible part of epipolar space; 0: all of it", 1, 0, 1,
              true},
             {"epipole", "1: near an epipole compare the fragment with the light instead of reading the grid", 1, 0, 1,
@@ -394,7 +394,8 @@ private:
                               exact ? "combine=exact: airlight summed over lit runs of phi bins (pointSegment)"
                                     : "combine=fraction: lit fraction x unshadowed airlight (the paper's factorisation)"});
         p.features.push_back({"INTERP", interp,
-                              interp ? "two texels along theta, bit-level along phi for the fragment's voxel"
+                              interp ? "two texels along theta (the fragment's own bit-level phi fraction fills only "
+                                       "the debug channel vsv.visibility.g)"
                                      : "interp=0: nearest texel"});
         p.features.push_back(
             {"EPIPOLE", epipole,
