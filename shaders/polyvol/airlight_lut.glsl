@@ -1,34 +1,55 @@
-// The airlight lookup table (viz/techniques/polyvol/airlight_lut.h for the channels and the algebra):
-// unit-intensity point-light airlight of [x0, x1] from two premultiplied, log-mapped channels.
+// The airlight lookup table (viz/techniques/polyvol/airlight_lut.h for the channels, the axes and the
+// algebra): unit-intensity point-light airlight of [x0, x1] from two premultiplied channels.
 #ifndef POLYVOL_AIRLIGHT_LUT_GLSL
 #define POLYVOL_AIRLIGHT_LUT_GLSL
 #ifdef AIRLIGHT_LUT
 
-layout(binding = kFirstFreeTextureUnit + 1) uniform sampler2D uAirlightLut;  // RG32F, linear, clamp
+layout(binding = kFirstFreeTextureUnit + 1) uniform sampler2D uAirlightLut;  // RG32F, read with texelFetch
 
-const float LUT_LOG_TAU_MIN = -11.512925465;  // ln 1e-5
-const float LUT_LOG_TAU_MAX = 5.298317367;    // ln 200
+// AirlightLut::kTauMin, kTauMax, log of both, and columnSpan() = asinh(kTauMax / s(kTauMin)).
+const float LUT_TAU_MIN = 1.0e-9;
+const float LUT_TAU_MAX = 200.0;
+const float LUT_LOG_TAU_MIN = -20.723265837;
+const float LUT_LOG_TAU_MAX = 5.298317367;
+const float LUT_COLUMN_SPAN = 26.714730385;
 
-float lutAxis(float tau) {
-    return clamp((log(max(tau, 1.0e-5)) - LUT_LOG_TAU_MIN) / (LUT_LOG_TAU_MAX - LUT_LOG_TAU_MIN), 0.0, 1.0);
+// Column coordinate in [0, 1] of |u| in the row of tauH: asinh(|u| / s) / span, s = tauH / (1 + tauH);
+// 0 is the foot point.
+float lutColumn(float u, float tauH) {
+    float s = tauH / (1.0 + tauH);
+    return clamp(stableAsinh(min(abs(u), LUT_TAU_MAX) / s) / LUT_COLUMN_SPAN, 0.0, 1.0);
 }
 
-// Bilinear sample with the axis value v in [0, 1] mapped to the first .. last texel centre.
+float lutRow(float tauH) {
+    return clamp((log(tauH) - LUT_LOG_TAU_MIN) / (LUT_LOG_TAU_MAX - LUT_LOG_TAU_MIN), 0.0, 1.0);
+}
+
+// Bilinear sample between the four nearest texels, weights in float (hardware filtering keeps only 8
+// fractional bits on many GPUs: NUMERICS.md row 17), with the first and last texels on the axis ends.
 vec2 lutSample(float u, float tauH) {
-    vec2 size = vec2(textureSize(uAirlightLut, 0));
-    vec2 v = vec2(lutAxis(u), lutAxis(tauH));
-    return texture(uAirlightLut, (v * (size - 1.0) + 0.5) / size).rg;
+    ivec2 size = textureSize(uAirlightLut, 0);
+    vec2 f = vec2(lutColumn(u, tauH), lutRow(tauH)) * vec2(size - 1);
+    ivec2 i0 = min(ivec2(f), size - 2);
+    vec2 t = f - vec2(i0);
+    vec2 a = texelFetch(uAirlightLut, i0, 0).rg;
+    vec2 b = texelFetch(uAirlightLut, i0 + ivec2(1, 0), 0).rg;
+    vec2 c = texelFetch(uAirlightLut, i0 + ivec2(0, 1), 0).rg;
+    vec2 d = texelFetch(uAirlightLut, i0 + ivec2(1, 1), 0).rg;
+    return mix(mix(a, b, t.x), mix(c, d, t.x), t.y);
 }
 
 float lutPointSegment(float tP, float h, float x0, float x1, float sigma_s, float sigma_t, float g) {
-    if (!(sigma_t > 0.0)) return pointSegment(tP, h, x0, x1, sigma_s, sigma_t, g, 1.0);
     if (!(x1 > x0) || !(sigma_s > 0.0)) return 0.0;
-    float tauH = sigma_t * max(h, 1.0e-30);
+    float tauH = sigma_t * h;
+    // Below the table's rows (sigma_t = 0, or a ray within 1e-9 optical units of the light): the closed
+    // form. The rows could be extended, but the columns would have to cover |u| / tau_h up to
+    // kTauMax / tau_h, and such rays are rare.
+    if (!(tauH >= LUT_TAU_MIN)) return pointSegment(tP, h, x0, x1, sigma_s, sigma_t, g, 1.0);
     float s0 = x0 - tP;
     float s1 = x1 - tP;
     float sum = 0.0;
     if (s0 < 0.0) {
-        // Before the foot point (tP > x0 >= 0 here): A(|s|) grows toward P.
+        // Before the foot point (tP > x0 >= 0 here): A(|u|) grows toward P.
         float a1 = lutSample(sigma_t * max(-s1, 0.0), tauH).r;
         float a0 = lutSample(-sigma_t * s0, tauH).r;
         sum += (a1 - a0) * exp(-sigma_t * tP);

@@ -7,6 +7,8 @@
 // L(0, x) = L(0, d) - L(x, d); the fragment adds -s L(x, d) and the resolve adds c L(0, d) once per pixel
 // and light, c = the signed crossing count. Crossings clamped to d then add exactly 0 instead of
 // +-L(0, d) pairs that cancel in fp32.
+// Rays next to the light (README): each term leaves out the ray's chord through the ball of radius
+// uNearRadius around the light, which the resolve adds once per pixel.
 // Outputs (additive blending): 0 signed total (rgb, a = signed crossing count of this light, consumed by
 // the resolve), 1 sum of the positive terms, 2 sum of the negative terms (as positive values),
 // 3 crossings (r = count, g = signed count over all lights: the crack detector's input; b = in front of the
@@ -20,6 +22,7 @@ uniform int uLightIndex;
 uniform int uConstant;         // 1: crack detector, the integrand is 1 so each term is +-x
 uniform int uOriginAtSurface;
 uniform float uNear;           // the camera's znear: crossings nearer along the view exist only by the depth clamp
+uniform float uNearRadius;     // radius of the ball around the light left to the resolve (0: none)
 
 in vec3 vPosition;
 
@@ -38,9 +41,9 @@ void main() {
     vec3 term;
     if (uOriginAtSurface != 0) {
         s = -s;
-        term = uConstant != 0 ? vec3(d - x) : segmentAirlight(gLights[uLightIndex], w, x, d);
+        term = uConstant != 0 ? vec3(d - x) : segmentAirlightOutsideBall(gLights[uLightIndex], w, x, d, uNearRadius);
     } else {
-        term = uConstant != 0 ? vec3(x) : segmentAirlight(gLights[uLightIndex], w, 0.0, x);
+        term = uConstant != 0 ? vec3(x) : segmentAirlightOutsideBall(gLights[uLightIndex], w, 0.0, x, uNearRadius);
     }
     oTotal = vec4(s * term, gl_FrontFacing ? 1.0 : -1.0);
     oPositive = vec4(s > 0.0 ? term : vec3(0.0), 0.0);

@@ -5,12 +5,21 @@
 // unit-intensity point-light integrand is f(u) = p(cos) e^{-(u + rho)} / rho^2, rho = sqrt(u^2 + tau_h^2),
 // and  int_x0^x1 sigma_s p e^{-sigma_t (x + r)} / r^2 dx = sigma_s sigma_t e^{-sigma_t tP} int f du.
 // Two premultiplied channels, both O(1) over the whole table (the supplement's "premult" and its split
-// at the foot point), on log-mapped axes |u|, tau_h in [kTauMin, kTauMax]:
+// at the foot point):
 //   R: A(u) = tau_h int_{-kTauMax}^{-|u|} f du                 (the part before P)
 //   G: B(u) = tau_h e^{|u| + rho(|u|)} int_{|u|}^{inf} f du     (the part after P, its decay factored out)
 // A segment is then a difference of A values times e^{-sigma_t tP} and of B values times
 // e^{-sigma_t x - rho}: every exponent is formed before exponentiating (no overflow, NUMERICS.md row 3).
-// The table depends on g only (sigma_t is scaled out), so it is built per medium g.
+//
+// Axes. Rows: log tau_h over [kTauMin, kTauMax]. Columns: y = asinh(|u| / s), s = tau_h / (1 + tau_h),
+// linear in y over [0, columnSpan()], columnSpan() = asinh(kTauMax / s(kTauMin)), the same y in every
+// row. Near P the channels vary on the scale |u| ~ tau_h (the 1/rho^2 bump) when tau_h < 1 and on the
+// scale |u| ~ 1 (the attenuation) when tau_h > 1, i.e. on the scale s; asinh(|u| / s) is linear in |u|
+// below it and logarithmic above, and column 0 is exactly the foot point. (A first version mapped log |u|
+// over [1e-5, 200]: the stretch |u| < 1e-5 around P was never counted, which lost 0.64 % of a ray's
+// airlight at tau_h = 1e-3, 6.3 % at 1e-4 and half near 1e-5; README, "Rays next to the light".)
+// Below kTauMin (a ray within 1e-9 optical units of the light) and at sigma_t = 0 the shader evaluates the
+// closed form instead. The table depends on g only (sigma_t is scaled out), so it is built per medium g.
 #pragma once
 
 #include <vector>
@@ -18,20 +27,28 @@
 namespace viz::polyvol {
 
 struct AirlightLut {
-    static constexpr double kTauMin = 1e-5;
+    static constexpr double kTauMin = 1e-9;
     static constexpr double kTauMax = 200.0;  // beyond: e^{-200} of attenuation, or a clamped anchor
-    int width = 0;   // |u| axis
-    int height = 0;  // tau_h axis
+    // The technique's table size (columns x rows): 1.5e-4 relative on rays passing the light (README).
+    static constexpr int kWidth = 1024, kHeight = 512;
+    int width = 0;   // asinh(|u| / s) axis
+    int height = 0;  // log tau_h axis
     double g = 0.0;
     std::vector<float> rg;  // width * height * 2, row = tau_h index
 
-    // Table coordinate in [0, 1] of an optical length (clamped to the axis).
-    static double axis(double tau);
-    // The optical length of sample k of n along an axis.
-    static double tauAt(int k, int n);
+    // s(tau_h) = tau_h / (1 + tau_h): the length scale of the columns.
+    static double scaleOf(double tauH);
+    // asinh(kTauMax / s(kTauMin)): the largest column coordinate y.
+    static double columnSpan();
+    // Table coordinates in [0, 1] (clamped): of |u| in the row of tau_h, and of tau_h.
+    static double column(double u, double tauH);
+    static double row(double tauH);
+    // tau_h of row j of n; |u| of column i of n in the row of tau_h (capped at kTauMax).
+    static double tauAt(int j, int n);
+    static double uAt(int i, int n, double tauH);
 };
 
-// Builds the table for phase asymmetry g (the double closed form at every sample).
+// Builds the table for phase asymmetry g (the double closed form at every sample; rows in parallel).
 AirlightLut buildAirlightLut(double g, int width, int height);
 
 // The closed-form channels at one point (what the table samples).
