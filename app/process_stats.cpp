@@ -1,5 +1,6 @@
 #include "process_stats.h"
 
+#include <malloc.h>
 #include <unistd.h>
 
 #include <filesystem>
@@ -19,12 +20,14 @@ ProcessStats currentProcessStats() {
     for (std::filesystem::directory_iterator it("/proc/self/fd", ec), end; !ec && it != end; it.increment(ec)) ++files;
     if (!ec) s.openFiles = files - 1;  // less the descriptor the listing itself holds
     s.glObjects = viz::gl::liveHandleCount();
+    const struct mallinfo2 m = ::mallinfo2();
+    s.heapKb = long((m.uordblks + m.hblkhd) / 1024);
     return s;
 }
 
 std::string statsJsonLine(const ProcessStats& s, long frame, long glErrors) {
     return "{\"frame\": " + std::to_string(frame) + ", \"rss_kb\": " + std::to_string(s.residentKb) +
-           ", \"fds\": " + std::to_string(s.openFiles) + ", \"gl_objects\": " + std::to_string(s.glObjects) +
+           ", \"heap_kb\": " + std::to_string(s.heapKb) + ", \"fds\": " + std::to_string(s.openFiles) + ", \"gl_objects\": " + std::to_string(s.glObjects) +
            ", \"gl_errors\": " + std::to_string(glErrors) + "}";
 }
 
