@@ -1,5 +1,7 @@
 #include "view_stats.h"
 
+#include "core/pixel_census.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -45,22 +47,8 @@ std::vector<float> channelValues(const viz::Image& image, Channel channel, int m
 }
 
 SpecialCounts countSpecial(const viz::Image& image, int meaningful) {
-    SpecialCounts counts;
-    const int n = std::clamp(meaningful, 1, std::max(image.channels, 1));
-    const std::size_t pixels = std::size_t(image.width) * std::size_t(image.height);
-    for (std::size_t p = 0; p < pixels && !image.empty(); ++p) {
-        bool nan = false, inf = false, negative = false;
-        for (int c = 0; c < n; ++c) {
-            const float v = image.pixels[p * std::size_t(image.channels) + std::size_t(c)];
-            nan |= std::isnan(v);
-            inf |= std::isinf(v);
-            negative |= v < 0.0f;  // -Inf counts as both Inf and negative
-        }
-        counts.nan += nan;
-        counts.inf += inf;
-        counts.negative += negative;
-    }
-    return counts;
+    const viz::PixelCensus c = viz::census(image, std::max(meaningful, 1));  // -Inf counts as Inf and negative
+    return {c.nan, c.inf, c.negative};
 }
 
 ValueRange finiteRange(const std::vector<float>& values) {

@@ -5,21 +5,22 @@
 
 namespace viz {
 
-PixelCensus census(const Image& image) {
+PixelCensus census(const Image& image, int channels) {
     PixelCensus c;
-    const std::size_t channels = std::size_t(std::max(image.channels, 1));
-    c.pixels = image.pixels.size() / channels;
+    const std::size_t stride = std::size_t(std::max(image.channels, 1));
+    const std::size_t counted = channels > 0 ? std::min(std::size_t(channels), stride) : stride;
+    c.pixels = image.pixels.size() / stride;
     for (std::size_t p = 0; p < c.pixels; ++p) {
         bool nan = false, inf = false, negative = false;
-        for (std::size_t k = 0; k < channels; ++k) {
-            const float v = image.pixels[p * channels + k];
+        for (std::size_t k = 0; k < counted; ++k) {
+            const float v = image.pixels[p * stride + k];
             nan |= std::isnan(v);
             inf |= std::isinf(v);
             negative |= v < 0.0f;
         }
-        if (nan) ++c.nan;
-        else if (inf) ++c.inf;
-        else if (negative) ++c.negative;
+        c.nan += nan;
+        c.inf += inf;
+        c.negative += negative;
     }
     return c;
 }

@@ -1,5 +1,7 @@
 #include "report/error_metrics.h"
 
+#include "core/pixel_census.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -21,21 +23,11 @@ double toneMapScale(const Image& reference) {
 }
 
 void countNonFinite(const Image& image, ErrorMetrics& into) {
+    const PixelCensus c = census(image);
     into.pixels = std::size_t(image.width) * std::size_t(image.height);
-    into.nanPixels = into.infPixels = into.negativePixels = 0;
-    for (int y = 0; y < image.height; ++y)
-        for (int x = 0; x < image.width; ++x) {
-            bool nan = false, inf = false, negative = false;
-            for (int c = 0; c < image.channels; ++c) {
-                const float v = image.at(x, y, c);
-                nan |= std::isnan(v);
-                inf |= std::isinf(v);
-                negative |= v < 0.0f;
-            }
-            into.nanPixels += nan;
-            into.infPixels += inf;
-            into.negativePixels += negative;
-        }
+    into.nanPixels = c.nan;
+    into.infPixels = c.inf;
+    into.negativePixels = c.negative;
 }
 
 ErrorMetrics compareImages(const Image& test, const Image& reference) {
