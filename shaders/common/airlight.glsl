@@ -15,7 +15,7 @@ const float AIRLIGHT_WINDOW = 17.0;
 const float AIRLIGHT_ASINH_LARGE = 1e4;
 const int AIRLIGHT_SERIES_TERMS = 10;
 
-// Light-to-ray distance floor, the same as on the CPU (see pointSegment).
+// Light-to-ray distance floor: Precision<float>::kMinRelativeH and kMinAbsoluteH (see pointSegment).
 const float AIRLIGHT_MIN_RELATIVE_H = 1e-7;
 const float AIRLIGHT_MIN_ABSOLUTE_H = 1e-15;
 const float AIRLIGHT_INV_4PI = 0.0795774715459476679;

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <map>
 
@@ -38,6 +39,7 @@ TEST_P(StiffSuite, EveryTechniqueStaysFiniteAndWithinItsDeclaredBound) {
         auto technique = makeTechnique(id);
         const report::StiffOutcome o = report::runStiffCase(*technique, c, s, reference);
         EXPECT_TRUE(o.passed) << id << " on " << c.id << ": " << o.verdict;
+        std::printf("  %-22s %-9s %s\n", c.id.c_str(), id.c_str(), o.verdict.c_str());
         if (o.ran) {
             EXPECT_EQ(o.error.nanPixels + o.error.infPixels + o.error.negativePixels, 0u) << id;
         }

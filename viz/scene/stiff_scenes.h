@@ -25,7 +25,8 @@ struct StiffCase {
     double excludeAroundLight = 0.0;
 };
 
-// Every case, in a fixed order. Case classes: medium, intensity, scale, singular-ray, epipole,
+// Every case, in a fixed order. Case classes: medium, intensity, scale, singular-ray (a ray through a
+// point light; its pixel is left out), near-light (a ray 1e-6 from one; its pixel counts), epipole,
 // camera-placement, geometry, depth-range, phase.
 const std::vector<StiffCase>& stiffCases();
 

@@ -29,6 +29,10 @@ namespace viz::airlight {
 // kWindow (W): the geometric factor 1/cosh(y) is below 2 e^-W farther than W from the closest approach.
 // kAsinhLarge: above it asinh(a) = ln(2a) to working precision (the 1/(4a^2) term is below epsilon).
 // kSeriesTerms: terms of the log1p and expm1 series near 0 (the first omitted one is below epsilon).
+// kMinRelativeH: light-to-ray distance floor relative to the segment's extent (see pointSegment). It sits
+//   a little above the rounding of h = |D x w| itself (~1e-7 |D| in float, ~1e-16 |D| in double), so it
+//   only ever changes a ray that passes through the light to working precision; a ray passing 1e-6 from
+//   a light 33 units down a 40-unit ray (h/extent 3e-8) keeps its own h in double.
 template <typename Real>
 struct Precision;
 
@@ -40,6 +44,7 @@ struct Precision<float> {
     static constexpr float kWindow = 17.0f;
     static constexpr float kAsinhLarge = 1e4f;
     static constexpr int kSeriesTerms = 10;
+    static constexpr float kMinRelativeH = 1e-7f;
 };
 
 template <>
@@ -50,10 +55,10 @@ struct Precision<double> {
     static constexpr double kWindow = 30.0;
     static constexpr double kAsinhLarge = 1e9;
     static constexpr int kSeriesTerms = 18;
+    static constexpr double kMinRelativeH = 1e-13;
 };
 
-// Light-to-ray distance floor, the same in every precision so float and double agree (see pointSegment).
-inline constexpr double kMinRelativeH = 1e-7;
+// Absolute light-to-ray distance floor (see pointSegment), for a light at the segment's end.
 inline constexpr double kMinAbsoluteH = 1e-15;
 inline constexpr double kInv4Pi = 0.25 * std::numbers::inv_pi;
 
@@ -240,11 +245,13 @@ Real pointPanel(Real a, Real b, Real y0, Real nu, Real g) {
 // or along the light, sky, large sigma_t h, slivers, g -> 1); Sun et al. 2005's closed form is the
 // isotropic special case but cancels catastrophically there (NUMERICS.md 2.2, row 2).
 //
-// Ray through the light: h is raised to max(kMinRelativeH * scale, kMinAbsoluteH), scale = distance from
+// Ray through the light: h is raised to max(Precision<Real>::kMinRelativeH * scale, kMinAbsoluteH), scale = distance from
 // P to the nearer segment end when P is outside the segment (a harmless clamp: L changes by O((h/s)^2)),
 // or the segment's extent around P when P is inside. In the latter case the exact integral diverges like
 // sigma_s I0 e^(-sigma_t tP) / (4 h); the result is that of a ray passing at the floor distance: finite
-// and large, the same in float and double. Callers that can see the light itself should give it a size.
+// and large. The floor is 1e-7 (float) or 1e-13 (double) of the extent, each just above the rounding of h
+// in that precision, so float and double agree wherever float can tell h apart from 0 and differ only on
+// rays through the light itself. Callers that can see the light itself should give it a size.
 //
 // Quadrature: eta is cut where the extinction from x0 exceeds e^-K and to a window of W (+ 2 ln 1/(1-|g|)
 // for the HG lobe) around the closest approach y = 0 (clamped into the segment); N-node Gauss-Legendre
@@ -261,7 +268,7 @@ Real pointSegment(Real tP, Real h, Real x0, Real x1, Real sigma_s, Real sigma_t,
     Real scale = footInside ? std::max(std::abs(s0), std::isinf(s1) ? Real(0) : s1)
                             : std::min(std::abs(s0), std::abs(s1));
     if (scale == Real(0)) scale = std::abs(tP);
-    h = std::max(h, std::max(Real(kMinRelativeH) * scale, Real(kMinAbsoluteH)));
+    h = std::max(h, std::max(Precision<Real>::kMinRelativeH * scale, Real(kMinAbsoluteH)));
 
     // Segment start: r0 = |light - point|, q0 = s0 + r0 written without cancellation for s0 < 0.
     const Real r0 = scaledHypot(s0, h);

@@ -25,15 +25,16 @@ struct SegmentCase {
 
 inline constexpr double kInf = std::numeric_limits<double>::infinity();
 
-// The h actually used by pointSegment (its documented floor for rays through the light), so that an
-// exact reference integrates the same problem.
+// The h actually used by pointSegment<Real> (its documented floor for rays through the light), so that
+// an exact reference integrates the same problem.
+template <typename Real = double>
 inline double flooredH(double tP, double h, double x0, double x1) {
     const double s0 = x0 - tP, s1 = x1 - tP;
     const bool inside = s0 <= 0.0 && s1 >= 0.0;
     double scale = inside ? std::max(std::abs(s0), std::isinf(s1) ? 0.0 : s1)
                           : std::min(std::abs(s0), std::abs(s1));
     if (scale == 0.0) scale = std::abs(tP);
-    return std::max(h, std::max(kMinRelativeH * scale, kMinAbsoluteH));
+    return std::max(h, std::max(double(Precision<Real>::kMinRelativeH) * scale, kMinAbsoluteH));
 }
 
 inline std::vector<SegmentCase> airlightCaseGrid() {

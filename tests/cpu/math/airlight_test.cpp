@@ -96,10 +96,14 @@ TEST(AirlightPointSegment, DoubleMatchesBoostQuadratureOnStiffGrid) {
 TEST(AirlightPointSegment, FloatMirrorMatchesDoubleOnStiffGrid) {
     WorstByGroup worst;
     for (const SegmentCase& original : airlightCaseGrid()) {
-        // Both precisions see the same float-representable problem (what a GPU receives).
+        // Both precisions see the same float-representable problem (what a GPU receives), with h raised
+        // to float's floor where float's is the higher one (rays through the light, where each
+        // precision documents its own floor).
         const SegmentCase c = roundedToFloat(original);
         SCOPED_TRACE(c.name);
-        const double reference = pointDouble(c);
+        SegmentCase forDouble = c;
+        forDouble.h = flooredH<float>(c.tP, c.h, c.x0, c.x1);
+        const double reference = pointDouble(forDouble);
         const float value = pointFloat(c);
         ASSERT_TRUE(std::isfinite(value));
         ASSERT_GE(value, 0.0f);
@@ -227,22 +231,39 @@ TEST(AirlightPointSegment, RayThroughLightMatchesClosedFormsWithFootPointOutside
 
 TEST(AirlightPointSegment, RayThroughLightWithFootPointInsideIsFiniteAndFloored) {
     // The exact integral diverges like sigma_s I0 e^{-sigma tP} / (4 h); the kernel returns the value for
-    // the floor distance h = 1e-7 * (segment extent around P), in both precisions.
+    // the floor distance h = kMinRelativeH * (segment extent around P): 1e-13 in double, 1e-7 in float.
     const double tP = 5, x0 = 0, x1 = 10, sigma = 0.1;
-    const double hFloor = kMinRelativeH * 5.0;
-    const double atZero = pointSegment<double>(tP, 0.0, x0, x1, sigma, sigma, 0.0, 1.0);
-    const double atFloor = pointSegment<double>(tP, hFloor, x0, x1, sigma, sigma, 0.0, 1.0);
-    const double aboveFloor = pointSegment<double>(tP, 10.0 * hFloor, x0, x1, sigma, sigma, 0.0, 1.0);
-    ASSERT_TRUE(std::isfinite(atZero));
-    EXPECT_EQ(atZero, atFloor);
-    EXPECT_GT(atZero, aboveFloor);
-    const ReferenceValue ref = referencePointSegment(tP, hFloor, x0, x1, sigma, sigma, 0.0, 1.0);
-    EXPECT_LT(relativeError(atZero, double(ref.value)), 1e-9);
-    // Divergence rate: close to sigma_s I0 e^{-sigma tP} / (4 h) at the floor.
-    const double asymptote = sigma * std::exp(-sigma * tP) / (4.0 * hFloor);
-    EXPECT_LT(relativeError(atZero, asymptote), 1e-3);
-    const float atZeroF = pointSegment<float>(5.0f, 0.0f, 0.0f, 10.0f, 0.1f, 0.1f, 0.0f, 1.0f);
-    EXPECT_LT(relativeError(atZeroF, atZero), 1e-4);
+    for (const double hFloor : {Precision<double>::kMinRelativeH * 5.0, double(Precision<float>::kMinRelativeH) * 5.0}) {
+        const bool isDouble = hFloor < 1e-9;
+        const double atZero = isDouble ? pointSegment<double>(tP, 0.0, x0, x1, sigma, sigma, 0.0, 1.0)
+                                       : double(pointSegment<float>(5.0f, 0.0f, 0.0f, 10.0f, 0.1f, 0.1f, 0.0f, 1.0f));
+        ASSERT_TRUE(std::isfinite(atZero)) << hFloor;
+        // Divergence rate: close to sigma_s I0 e^{-sigma tP} / (4 h) at the floor, against a long-double
+        // tanh-sinh quadrature of the same problem (Boost).
+        const ReferenceValue ref = referencePointSegment(tP, hFloor, x0, x1, sigma, sigma, 0.0, 1.0);
+        EXPECT_LT(relativeError(atZero, double(ref.value)), isDouble ? 1e-9 : 1e-4) << hFloor;
+        const double asymptote = sigma * std::exp(-sigma * tP) / (4.0 * hFloor);
+        EXPECT_LT(relativeError(atZero, asymptote), 1e-3) << hFloor;
+        if (isDouble) {
+            EXPECT_EQ(atZero, pointSegment<double>(tP, hFloor, x0, x1, sigma, sigma, 0.0, 1.0));
+            EXPECT_GT(atZero, pointSegment<double>(tP, 10.0 * hFloor, x0, x1, sigma, sigma, 0.0, 1.0));
+        }
+    }
+}
+
+TEST(AirlightPointSegment, RayPassingFarBelowTheFloatFloorKeepsItsOwnDistanceInDouble) {
+    // The stiff case ray-near-light: a point light 1e-6 from a ray, 7 units in, the ray 40 long
+    // (h / extent ~ 3e-8, below float's floor). Double must integrate the ray as it is: against a
+    // long-double quadrature and the 1/h asymptote, and not the value at float's floor, 3.3 times darker.
+    const double tP = 7.0, h = 1e-6, x0 = 0.05, x1 = 40.0, sigma_t = 0.08, sigma_s = 0.05, I0 = 60.0;
+    const double value = pointSegment<double>(tP, h, x0, x1, sigma_s, sigma_t, 0.0, I0);
+    const ReferenceValue ref = referencePointSegment(tP, h, x0, x1, sigma_s, sigma_t, 0.0, I0);
+    EXPECT_LT(relativeError(value, double(ref.value)), 1e-9);
+    const double asymptote = sigma_s * I0 * std::exp(-sigma_t * tP) / (4.0 * h);
+    EXPECT_LT(relativeError(value, asymptote), 1e-4);
+    const double atFloatFloor = pointSegment<double>(tP, double(Precision<float>::kMinRelativeH) * 33.0, x0, x1,
+                                                     sigma_s, sigma_t, 0.0, I0);
+    EXPECT_GT(value, 3.0 * atFloatFloor);
 }
 
 // ---- mpmath reference values (NUMERICS.md section 9) --------------------------------------------------

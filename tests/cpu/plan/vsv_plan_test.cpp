@@ -142,7 +142,7 @@ TEST(VsvPlan, QualitySweepAndStiffDeclarations) {
                 EXPECT_LE(sweep[i - 1].settings.at("voxels"), sweep[i].settings.at("voxels")) << id;
         }
         EXPECT_NO_THROW(completeSettings(*t, t->stiffSettings())) << id;
-        for (const char* cls : {"medium", "intensity", "scale", "singular-ray", "epipole", "camera-placement",
+        for (const char* cls : {"medium", "intensity", "scale", "singular-ray", "near-light", "epipole", "camera-placement",
                                 "geometry", "depth-range", "phase"}) {
             const auto bound = t->stiffBound(cls);
             ASSERT_TRUE(bound.has_value()) << id << " " << cls;

@@ -227,6 +227,8 @@ public:
                                     "grate's bars run parallel to the view axis, so their shadow edges are epipolar "
                                     "planes: four pixels whose rays lie within 1/8 px of such an edge take the slice "
                                     "on its other side (0.0148, was 0.00034 marched)"}},
+            {"near-light", {1e-4, "the light's own pixel is marched with the closed form per interval, "
+                                  "which keeps the ray's own distance from the light (9.3e-7)"}},
             {"epipole", {0.045, "rays within epipole_radius px of an epipole, and rays on the epipolar axis, are "
                                "marched; grazing sun is the worst (shadow-map bias across long light rays)"}},
             {"camera-placement", {0.008, "the frame is eye-relative; a closed box gives d small and S above beta"}},

@@ -180,8 +180,9 @@ public:
             {"scale", {0.004, "eye-relative vertices, distance-valued maps, cone roots solved in units of |light| "
                               "(0.0017; 0.96 at 1e4 before the roots were scaled)"}},
             {"singular-ray", {0.003, "the ray's chord through a ball around the light is integrated once per pixel, "
-                                     "the cone cuts are solved relative to the light (ray-through-light 0.0011, "
-                                     "ray-near-light 8.3e-7 with its light's pixel)"}},
+                                     "the cone cuts are solved relative to the light (ray-through-light 0.0011)"}},
+            {"near-light", {1e-4, "the chord through the ball around the light is integrated in closed form "
+                                   "with the ray's own distance from the light (8.4e-7)"}},
             {"epipole", {0.045, "no epipolar structure; grazing sun is the worst: shadow-map edges (0.021)"}},
             {"camera-placement", {0.008, "depth clamp keeps faces before the near plane; origin=surface makes "
                                          "crossings behind d add exactly 0 (0.0039)"}},

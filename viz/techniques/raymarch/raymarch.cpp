@@ -100,6 +100,7 @@ public:
             {"intensity", {0.02, "linear in the intensity; float holds 1e-3 to 1e7 without clamping"}},
             {"scale", {0.02, "eye-relative coordinates and distance-valued shadow maps are scale-free"}},
             {"singular-ray", {0.005, "the shared closed form clamps h; the light's own pixel is left out"}},
+            {"near-light", {1e-4, "exact=1 integrates each lit interval in closed form with the ray's own h (7.7e-7)"}},
             {"epipole", {0.04, "no epipolar structure to break; grazing sun is the worst (shadow-map bias)"}},
             {"camera-placement", {0.04, "rays start at the eye wherever it is"}},
             {"geometry", {0.05, "shadow-map rasterisation drops slivers the reference still hits"}},

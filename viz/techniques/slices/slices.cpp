@@ -218,6 +218,8 @@ public:
             {"intensity", {0.01, "linear in the intensity (rgba32f accumulation)"}},
             {"scale", {0.01, "eye-relative planes and distance-valued shadow maps are scale-free"}},
             {"singular-ray", {0.005, "no plane sample lands on the light; its own pixel is left out"}},
+            {"near-light", {1.0, "planes sample each ray at fixed depths: none lands within 1e-6 of the light, so "
+                                 "the one pixel that holds nearly all of the image's airlight is missed (1.0)"}},
             {"epipole", {0.05, "unbounded planes for the sun; grazing sun is the worst (shadow-map bias)"}},
             {"camera-placement", {0.03, "the nearest slab reaches the eye (its plane drawn just beyond znear)"}},
             {"geometry", {0.05, "shadow-map rasterisation drops slivers the reference still hits"}},

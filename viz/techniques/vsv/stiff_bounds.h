@@ -18,6 +18,8 @@ inline std::optional<StiffBound> stiffBound(const std::string& caseClass) {
         {"intensity", {0.004, "linear in the intensity; float holds 1e-3 to 1e7 without clamping"}},
         {"scale", {0.005, "eye-relative angles and distance-valued shadow maps are scale-free"}},
         {"singular-ray", {0.025, "rays next to the light skip the grid and test the shadow map directly"}},
+        {"near-light", {1e-4, "the ray past the light skips the grid; its lit runs are integrated analytically "
+                               "with the ray's own distance from the light (7.3e-7)"}},
         {"epipole", {0.05, "epipole rays test the map directly; a sun's light lines (y = t sin alpha) are coarse "
                            "for rays almost along the baseline: the grazing sun is the worst"}},
         {"camera-placement", {0.01, "the grid covers what the camera sees wherever it stands"}},
