@@ -220,6 +220,7 @@ int runRender(Args& args) {
     RenderJob job(o.request);
     if (!o.quiet) printNotes(job.scene());
     const viz::FrameOutput& out = job.run();
+    for (const std::string& note : out.notes) std::fprintf(stderr, "airlight: note: %s\n", note.c_str());
     // No image leaves silently wrong: NaN, Inf and negative pixels are counted before anything is written.
     const std::vector<std::string> bad = job.badPixelWarnings();
     for (const std::string& line : bad) std::fprintf(stderr, "airlight: warning: %s\n", line.c_str());

@@ -2552,6 +2552,9 @@ private:
             thirdColor = kError;
         } else if (!mNotice.empty()) {
             third = mNotice + "   |   " + third;
+        } else if (mHaveOutput && !mOutput.notes.empty()) {
+            third = "note: " + mOutput.notes.front() + "   |   " + third;
+            thirdColor = kAccent;
         }
         dl.textClipped({pad, pad + 2.0f * line}, third, thirdColor, float(fb.x) - pad);
         const float top = 3.0f * line + 3.0f * pad;

@@ -145,6 +145,10 @@ struct FrameOutput {
     std::vector<Intermediate> intermediates;
     Timing timing;
     Plan plan;
+    // What the run found that plan() could not know (it depends on the image size or the frame): a
+    // promise a setting makes that this frame does not keep, with the figure. `render` prints each as a
+    // note; the window shows the first in its header.
+    std::vector<std::string> notes;
     int lastStageRun = -1;
 };
 

@@ -14,7 +14,10 @@
 
 namespace viz::minmax {
 
-inline constexpr int kMaxSlices = 4096;
+// GL 4.5's smallest allowed GL_MAX_TEXTURE_SIZE (the rectified map has one row per slice): enough for
+// every ray within half a pixel of a slice wherever the farthest pixel is within 16384 / (2 pi) = 2607 px
+// of the epipole (1280x960 with the epipole on a corner needs about 10,000).
+inline constexpr int kMaxSlices = 16384;
 inline constexpr int kMaxColumns = 4096;
 
 // Gamma texels per slice for a wanted count: a power of two in [16, kMaxColumns] (the min-max tree's

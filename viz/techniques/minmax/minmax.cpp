@@ -102,8 +102,9 @@ class MinmaxTechnique final : public Technique {
 public:
     MinmaxTechnique() {
         mParams = {
-            {"slices", "epipolar slices (rows of the rectified map); 0: automatic, every ray within half a pixel "
-                       "of a slice", 0, 0, minmax::kMaxSlices, true},
+            {"slices", "epipolar slices (rows of the rectified map); 0: automatic, every ray within 1/(2k) pixel "
+                       "of a slice (k = slice_oversampling) up to 16384 slices; past that the run notes the gap",
+             0, 0, minmax::kMaxSlices, true},
             {"slice_oversampling", "automatic slices: k puts every camera ray within 1/(2k) pixel of a slice", 2, 1,
              64, true},
             {"columns", "gamma texels per slice (rounded up to a power of two); 0: the shadow map's size", 0, 0,
@@ -367,7 +368,7 @@ public:
         const auto runs = [&](int stage) { return out.plan.stages[std::size_t(stage)].runs; };
         // ---- rectify ----
         clock.begin();
-        prepareLights(scene, input);
+        prepareLights(scene, input, out.notes);
         const bool svd = s.at("integrand") == 1.0;
         if (runs(kRectifyIndex)) {
             for (LightWork& w : mWork) {
@@ -467,7 +468,9 @@ private:
     }
 
     // Epipolar setup of every spot, directional and point light with a shadow map; others are marched.
-    void prepareLights(const scene::Scene& scene, const FrameInput& input) {
+    // `notes` gets one line per light whose slices leave some camera ray farther from its slice than the
+    // settings promise (the slice cap reached, or a fixed count too low for the image).
+    void prepareLights(const scene::Scene& scene, const FrameInput& input, std::vector<std::string>& notes) {
         const auto& lights = mView.lights().lights();
         const int columns = int(input.settings.at("columns")) > 0 ? int(input.settings.at("columns"))
                                                                     : int(input.settings.at("shadow_map"));
@@ -489,6 +492,7 @@ private:
                                           .height = input.height, .slices = int(input.settings.at("slices")),
                                           .columns = columns,
                                           .oversampling = int(input.settings.at("slice_oversampling"))});
+            sliceGapNote(scene, i, input, w.setup, notes);
             // Reuse the previous textures when the sizes agree.
             const std::size_t k = work.size();
             if (k < mWork.size() && mWork[k].rectified &&
@@ -511,6 +515,26 @@ private:
             work.push_back(std::move(w));
         }
         mWork = std::move(work);
+    }
+
+    static void sliceGapNote(const scene::Scene& scene, int light, const FrameInput& input, const minmax::Setup& setup,
+                             std::vector<std::string>& notes) {
+        const int fixed = int(input.settings.at("slices"));
+        const int k = std::max(1, int(input.settings.at("slice_oversampling")));
+        const double promised = fixed > 0 ? 1.0 : 1.0 / k;  // largest gap the setting stands for (pixels)
+        if (setup.maxSliceGap <= promised * (1.0 + 1e-6)) return;
+        const std::string name = light < int(scene.lights.size()) ? scene.lights[std::size_t(light)].name : "light";
+        const std::string why = fixed > 0 ? "slices=" + std::to_string(fixed) + " is too few for this image"
+                                          : "the cap of " + std::to_string(minmax::kMaxSlices) +
+                                                " slices is reached (slice_oversampling " + std::to_string(k) +
+                                                " asks for " + std::to_string(int(std::ceil(setup.maxSliceGap / promised *
+                                                                                             setup.frame.slices))) + ")";
+        char figure[160];
+        std::snprintf(figure, sizeof figure, "%.2f px apart, so a ray may take a slice %.2f px away (promised %.2f)",
+                      setup.maxSliceGap, 0.5 * setup.maxSliceGap, 0.5 * promised);
+        notes.push_back("minmax, " + name + ": " + std::to_string(setup.frame.slices) + " slices at " +
+                        std::to_string(input.width) + "x" + std::to_string(input.height) + " are up to " + figure +
+                        ": shadow edges may shift by that much; " + why);
     }
 
     void setFrameUniforms(const gl::Program& p, const minmax::EpipolarFrame<float>& f) const {
