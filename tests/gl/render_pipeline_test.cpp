@@ -330,6 +330,42 @@ TEST_F(RenderPipeline, PublishedShadowMapsHoldDistancesToTheLight) {
     EXPECT_LE(nearestCube, corner + 2.0 * 3.0 / size);
 }
 
+// ShadowMaps::nearest (a GPU reduction) against an exhaustive loop over the read-back texels of every
+// face, and against the geometry: the occluder's nearest corner sqrt(1.02) from the light. A second
+// light and the cube's six faces make the layer arithmetic matter; an upper bound below the value wins.
+TEST_F(RenderPipeline, NearestStoredDistanceIsTheMinimumOverTheMapsTexels) {
+    scene::Scene s = occluderScene();
+    scene::Light spot;
+    spot.type = scene::LightType::Spot;
+    spot.position = {0.0, 3.0, 0.0};
+    spot.direction = {0.0, -1.0, 0.0};
+    spot.outerConeAngle = 1.0;
+    scene::Light far = spot;
+    far.position = {0.0, 6.0, 0.0};
+    scene::Light point = spot;
+    point.type = scene::LightType::Point;
+    point.position = {0.25, 2.6, 0.25};  // 0.6 above the occluder's centre
+    s.lights = {spot, far, point};
+    GpuScene gpuScene(s);
+    GpuLights lights(s, s.camera.position, 1);
+    ShadowMaps shadows;
+    const int size = 128;
+    shadows.build(gpuScene, lights, size, 32);
+    const double geometric[] = {std::sqrt(1.02), std::sqrt(4.0 * 4.0 + 0.02), 0.6};
+    for (int i = 0; i < 3; ++i) {
+        const GpuLightCpu& L = lights.lights()[std::size_t(i)];
+        ASSERT_GE(L.info.z, 0) << i;
+        float exhaustive = 1e30f;
+        const int faces = L.info.x == hd::kLightPoint ? 6 : 1;
+        for (int f = 0; f < faces; ++f)
+            for (float v : shadows.texels(L, f)) exhaustive = std::min(exhaustive, std::max(v, 0.0f));
+        EXPECT_EQ(shadows.nearest(L, 1e30f), exhaustive) << "light " << i;
+        EXPECT_GE(exhaustive, geometric[i] * (1.0 - 1e-5)) << "light " << i;
+        EXPECT_LE(exhaustive, geometric[i] + 0.1) << "light " << i;
+        EXPECT_EQ(shadows.nearest(L, 0.25f), 0.25f) << "light " << i;
+    }
+}
+
 TEST_F(RenderPipeline, DirectionalShadowMapOccludesAlongTheTravelDirection) {
     scene::Scene s = occluderScene();
     scene::Light sun;

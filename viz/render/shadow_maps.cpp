@@ -1,6 +1,8 @@
 #include "render/shadow_maps.h"
 
 #include <algorithm>
+#include <cstdint>
+#include <cstring>
 #include <numbers>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -61,6 +63,7 @@ void ShadowMaps::build(const GpuScene& scene, const GpuLights& lights, int size,
     mLayout = layout;
     mLights = lights.lights();
     mReadback.clear();
+    mNearest.clear();
 
     mProgram.use();
     mProgram.set("uModel", eyeRelativeModel(lights.eye()));
@@ -156,6 +159,40 @@ const std::vector<float>& ShadowMaps::texels(const GpuLightCpu& light, int face)
                              GLsizei(values.size() * sizeof(float)), values.data());
     }
     return values;
+}
+
+float ShadowMaps::nearest(const GpuLightCpu& light, float upperBound) const {
+    VIZ_CHECK(light.info.z >= 0, "ShadowMaps::nearest: the light has no shadow map");
+    const int type = light.info.x;
+    const bool flat = type == hd::kLightSpot || type == hd::kLightDirectional;
+    const int array = flat ? 0 : (type == hd::kLightVpl ? 2 : 1);
+    const int first = flat ? light.info.z : 6 * light.info.z;
+    const int layers = flat ? 1 : 6;
+    const auto key = std::make_pair(array, first);
+    if (auto it = mNearest.find(key); it != mNearest.end()) return std::min(it->second, upperBound);
+    const gl::Texture& source = array == 0 ? mMaps2D : (array == 1 ? mCubes : mVplCubes);
+    VIZ_CHECK(first + layers <= source.size().z, "ShadowMaps::nearest: layer out of range");
+    if (!mNearestProgram)
+        mNearestProgram = gl::Program::compile({.stages = {"render/shadow_nearest.comp"}, .label = "render.shadow_nearest"});
+    if (!mNearestBuffer) mNearestBuffer = gl::Buffer::create({.bytes = sizeof(std::uint32_t), .label = "render.shadow_nearest"});
+    const std::uint32_t start = 0x7f7fffffu;  // FLT_MAX: the shader only lowers it
+    mNearestBuffer.upload(0, sizeof start, &start);
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
+    mNearestProgram.use();
+    mNearestProgram.set("uFirstLayer", first);
+    mNearestProgram.set("uLayers", layers);
+    mNearestProgram.set("uSize", source.size().x);
+    source.bindImage(0, GL_READ_ONLY);
+    mNearestBuffer.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
+    const glm::ivec3 groups = gl::groupCount({source.size().x, source.size().y, 1}, mNearestProgram.workGroupSize());
+    glDispatchCompute(GLuint(groups.x), GLuint(groups.y), 1);
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    std::uint32_t bits = 0;
+    mNearestBuffer.download(0, sizeof bits, &bits);
+    float value = 0.0f;
+    std::memcpy(&value, &bits, sizeof value);
+    mNearest[key] = value;
+    return std::min(value, upperBound);
 }
 
 void ShadowMaps::bind() const {

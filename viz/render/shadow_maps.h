@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "debug/technique.h"
+#include "gl/buffer.h"
 #include "gl/framebuffer.h"
 #include "gl/program.h"
 #include "gl/texture.h"
@@ -49,6 +50,10 @@ public:
     // row 0 = GL row 0 (ndc.y = -1). Read back at first use after each build() and kept until the next.
     // `light` is one of the lights of the last build() (its map: light.info.z >= 0).
     const std::vector<float>& texels(const GpuLightCpu& light, int face) const;
+    // The smallest distance the light's map stores (every face of a cube), at most `upperBound` (an
+    // empty map holds 1e30), and at least 0. Reduced on the GPU (render/shadow_nearest.comp); four bytes
+    // come back, not the map. Kept until the next build().
+    float nearest(const GpuLightCpu& light, float upperBound) const;
     // Texels per side of the light's map (vplSize for VPL cubes).
     int sizeOf(const GpuLightCpu& light) const { return light.info.x == hd::kLightVpl ? mVplSize : mSize; }
 
@@ -62,6 +67,9 @@ private:
     void makeViews();
 
     gl::Program mProgram;
+    mutable gl::Program mNearestProgram;  // compiled at first nearest()
+    mutable gl::Buffer mNearestBuffer;
+    mutable std::map<std::pair<int, int>, float> mNearest;  // nearest(): (array, first layer) -> value
     gl::Texture mMaps2D, mCubes, mVplCubes;
     gl::Texture mDepth, mDepthVpl;  // z-buffers for rendering (size and vplSize)
     gl::Framebuffer mFramebuffer;

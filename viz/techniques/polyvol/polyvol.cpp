@@ -561,6 +561,10 @@ private:
         if (int(s.at("wireframe")) == 3)
             mMeshView.begin(scene, mView.gpuScene(),
                             {s.at("mesh_yaw"), s.at("mesh_pitch"), s.at("mesh_zoom")}, input.width, input.height);
+        // Each light's ball radius, before the volume pass's state: nearRadius runs a compute pass.
+        mNearRadii.clear();
+        for (const render::GpuLightCpu& L : mView.lights().lights())
+            mNearRadii.push_back(L.info.z < 0 || s.at("crack_check") != 0.0 ? 0.0f : nearRadius(L, cam, input.height));
         program.use();
         program.set("uViewProj", render::eyeRelativeViewProjection(cam, input.width, input.height));
         program.set("uSize", glm::ivec2(input.width, input.height));
@@ -608,7 +612,6 @@ private:
             mWire.clear(glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
         }
         std::int64_t drawn = 0;
-        mNearRadii.clear();
         mAdaptiveUsed = false;
         mAdaptiveOverflow = false;
         const auto& lights = mView.lights().lights();
@@ -620,8 +623,7 @@ private:
             polyvol::VolumeGrid grid = describe(L, i, n, cam.zfar, float(s.at("cookie_mask")));
             const bool adaptive = adaptiveWanted && grid.mode != kModeCube;
             // The crack detector counts crossings of the whole mesh: no ball there.
-            const float radius = s.at("crack_check") != 0.0 ? 0.0f : nearRadius(L, cam, input.height);
-            mNearRadii.push_back(radius);
+            const float radius = mNearRadii[std::size_t(i)];
             program.set("uNearRadius", radius);
             std::int64_t extraTriangles = 0;
             if (adaptive) {
@@ -720,10 +722,7 @@ private:
     float nearRadius(const render::GpuLightCpu& L, const scene::Camera& cam, int height) const {
         const int type = L.info.x;
         if (type == render::hd::kLightDirectional || L.info.z < 0) return 0.0f;
-        float nearest = L.shadow.y;
-        const int faces = type == render::hd::kLightSpot ? 1 : 6;
-        for (int f = 0; f < faces; ++f)
-            for (float v : mView.shadows().texels(L, f)) nearest = std::min(nearest, v);
+        const float nearest = mView.shadows().nearest(L, L.shadow.y);
         const double footprint = glm::length(glm::dvec3(L.position)) * 2.0 * std::tan(cam.yfov * 0.5) / double(height);
         return float(std::min(0.5 * double(std::max(nearest, 0.0f)), kBallPixels * footprint));
     }
