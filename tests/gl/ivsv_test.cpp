@@ -191,8 +191,8 @@ TEST_F(IvsvTest, ThePickedColumnShowsItsBitsBeforeAndAfterTheScan) {
         const viz::Settings s{{"vpls", 4}, {"voxels", 64}, {"points", 50000}, {"pick_x", pick.x}, {"pick_y", pick.y}};
         const viz::FrameOutput out = render(scene, "ivsv", s, 80, 60);
         int before = 0, after = 0;
-        const int read = viz::testing::expectColumnIsAVoxelColumnAndItsPrefixOr(*find(out, "ivsv.voxels")->image,
-                                                                                *find(out, "ivsv.column")->image, before, after);
+        const int read = viz::testing::expectColumnIsAVoxelColumnAndItsPrefixOr(
+            *find(out, "ivsv.voxels")->image, *find(out, "ivsv.column")->image, std::nan(""), before, after);
         EXPECT_GT(read, 0) << "pixel " << pick.x << ", " << pick.y;
         std::printf("pixel (%d, %d): %d bits read, %d occluder bits, %d shadowed after the scan\n", pick.x, pick.y,
                     read, before, after);

@@ -272,7 +272,10 @@ TEST_F(SlicesTest, DistanceScaledPlanesKeepTheLightLevel) {
     const viz::FrameOutput fewer = render(scene, "slices", {{"planes", 256}, {"distance_scale", 3}}, 80, 60);
     const viz::Intermediate* mesh = find(fewer, "slices.plane_mesh");
     ASSERT_TRUE(mesh && mesh->image);
-    EXPECT_LT(mesh->image->height, 256);
+    // The eye is about 12 units from the light's box: 256 x 3 / 12 = 64 planes (the scene's geometry,
+    // not the code's formula), give or take the box's exact distance.
+    EXPECT_GE(mesh->image->height, 48);
+    EXPECT_LE(mesh->image->height, 85);
     double a = 0.0, b = 0.0;
     for (float v : full.airlight.pixels) a += v;
     for (float v : fewer.airlight.pixels) b += v;

@@ -72,13 +72,18 @@ inline glm::vec3 shaderPixelRay(const scene::Camera& cam, int w, int h, int x, i
 // fragment) against the voxels slice at the pixel's theta (alpha x phi, before the scan): some alpha cell
 // must have row 0 as its column and row 1 as the prefix OR of the columns up to it. Returns the number of
 // bits read and, in `before` / `after`, the set bits of each row up to there.
-inline int expectColumnIsAVoxelColumnAndItsPrefixOr(const Image& voxels, const Image& column, int& before, int& after) {
+// `expectedAlpha`: the pixel's alpha in cell units, computed by the caller from the camera and the frame;
+// the column must be the voxels' column at that cell (or a neighbour, for a ray on a cell boundary). NaN:
+// any cell (ivsv, whose frame is a VPL's that only the technique knows).
+inline int expectColumnIsAVoxelColumnAndItsPrefixOr(const Image& voxels, const Image& column, double expectedAlpha,
+                                                    int& before, int& after) {
     EXPECT_EQ(column.height, 2);
     EXPECT_EQ(column.width, voxels.height);
     int read = 0;
     while (read < column.width && column.at(read, 0) != 0.5f) ++read;
     for (int k = read; k < column.width; ++k) EXPECT_EQ(column.at(k, 1), 0.5f);
     int matches = 0;
+    bool atExpected = false;
     for (int a = 0; a < voxels.width; ++a) {
         bool same = true, prefix = true;
         for (int k = 0; k < read; ++k) {
@@ -88,8 +93,12 @@ inline int expectColumnIsAVoxelColumnAndItsPrefixOr(const Image& voxels, const I
             prefix = prefix && any == (column.at(k, 1) > 0.5f);
         }
         matches += same && prefix;
+        atExpected = atExpected || (same && prefix && std::abs(a + 0.5 - expectedAlpha) <= 1.0);
     }
     EXPECT_GE(matches, 1) << "no alpha cell explains both rows";
+    if (!std::isnan(expectedAlpha)) {
+        EXPECT_TRUE(atExpected) << "the rows are not the voxel column at the pixel's alpha cell " << expectedAlpha;
+    }
     before = after = 0;
     for (int k = 0; k < read; ++k) before += column.at(k, 0) > 0.5f, after += column.at(k, 1) > 0.5f;
     EXPECT_GE(after, before);

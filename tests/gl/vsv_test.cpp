@@ -164,7 +164,9 @@ TEST_F(VsvTest, ScanShaderEqualsCpuPrefixOrOnRandomColumns) {
 }
 
 // The voxelized occluder of random light rays is the first hit of a ray cast from the light against the
-// scene's triangles (Embree), to within one alpha cell. Biases off, so both sample the same ray.
+// scene's triangles (Embree), to within one alpha cell. Biases off, so both sample the same ray. Rays that
+// hit nothing must have no occluder (a negative cell), and are counted apart: they cannot pass by being
+// within one cell of cell 0.
 TEST_F(VsvTest, VoxelizationMatchesRayCastingWithinOneVoxel) {
     for (const viz::scene::Scene& scene :
          {viz::scene::makeBuiltinScene("grate"), pointGrate(), viz::scene::makeBuiltinScene("colonnade")}) {
@@ -182,17 +184,19 @@ TEST_F(VsvTest, VoxelizationMatchesRayCastingWithinOneVoxel) {
         const viz::reference::RayTracer tracer(scene);
         std::mt19937 rng(29);
         std::uniform_int_distribution<int> phiCell(0, g.nPhi - 1), thetaCell(0, g.nTheta - 1);
-        int tested = 0, hits = 0, within = 0;
+        int tested = 0, hits = 0, within = 0, misses = 0, missesEmpty = 0;
         for (int trial = 0; trial < 2000; ++trial) {
             const int k = phiCell(rng), j = thetaCell(rng);
             const double theta = viz::vsv::thetaAtCell(g, j + 0.5);
             const double phi = g.phi0 + (k + 0.5) * g.dPhi();
             double expected = -1.0;
+            bool found = false;
             if (f.directional) {
                 // The light line at offset y = phi: from far toward the light along the travel direction.
                 const glm::dvec3 e = std::cos(theta) * f.u + std::sin(theta) * f.v;
                 const double far = 1000.0;
                 const viz::reference::Hit hit = tracer.intersect(scene.camera.position + phi * e + far * f.b, -f.b, 2e3);
+                found = hit.found;
                 if (hit.found) expected = viz::vsv::alphaCoord(g, std::atan2(phi, far - hit.t));
             } else {
                 const glm::dvec3 dir = viz::vsv::lightRay(f, theta, phi);
@@ -201,9 +205,16 @@ TEST_F(VsvTest, VoxelizationMatchesRayCastingWithinOneVoxel) {
                     glm::dot(dir, light.direction) < std::cos(light.outerConeAngle) + 1e-3)
                     continue;
                 const viz::reference::Hit hit = tracer.intersect(light.position, dir, 1e6);
+                found = hit.found;
                 if (hit.found) expected = viz::vsv::alphaCoord(g, viz::vsv::alphaOnLightRay(f, phi, hit.t));
             }
             const float gpu = image.at(k, g.nTheta - 1 - j);
+            if (!found) {
+                // Nothing on the light ray: no occluder in the column.
+                ++misses;
+                missesEmpty += gpu < 0.0f ? 1 : 0;
+                continue;
+            }
             ++tested;
             if (expected >= g.nAlpha) {
                 // Nothing inside the grid: no bit (the GPU may still see an occluder beyond the last cell).
@@ -214,10 +225,15 @@ TEST_F(VsvTest, VoxelizationMatchesRayCastingWithinOneVoxel) {
             // An occluder before the grid's alpha range shadows the whole column (cell 0).
             within += std::abs(double(gpu) - std::max(expected, 0.0)) <= 1.0 ? 1 : 0;
         }
-        std::printf("%s: %d light rays (%d hitting inside the grid), %d within one alpha cell (%.2f %%)\n",
-                    scene.name.c_str(), tested, hits, within, 100.0 * within / tested);
+        std::printf("%s: %d light rays hitting the scene (%d inside the grid), %d within one alpha cell (%.2f %%); "
+                    "%d hitting nothing, %d of them empty (%.2f %%)\n",
+                    scene.name.c_str(), tested, hits, within, 100.0 * within / tested, misses, missesEmpty,
+                    misses ? 100.0 * missesEmpty / misses : 100.0);
         EXPECT_GT(hits, 200);
         EXPECT_GE(double(within) / tested, 0.99) << scene.name;
+        if (misses > 0) {
+            EXPECT_GE(double(missesEmpty) / misses, 0.99) << scene.name;
+        }
     }
 }
 
@@ -272,9 +288,13 @@ TEST_F(VsvTest, ThePickedColumnShowsItsBitsBeforeAndAfterTheScan) {
     for (const glm::ivec2 pick : {glm::ivec2(40, 40), glm::ivec2(30, 45), glm::ivec2(52, 20)}) {
         const viz::Settings s{{"voxels", 64}, {"pick_x", pick.x}, {"pick_y", pick.y}};
         const viz::FrameOutput out = render(scene, "vsv", s, 80, 60);
+        // The pixel's alpha cell from the camera's ray for that pixel and the light's frame.
+        const viz::vsv::EpipolarFrame f = viz::vsv::frameForLight(scene, scene.lights[0]);
+        const viz::vsv::EpipolarGrid g = viz::vsv::gridForLight(scene, scene.lights[0], 80, 60, 64, 64, 64, true);
+        const double alpha = viz::vsv::alphaCoord(g, viz::vsv::alphaOf(f, viz::scene::pixelRay(scene.camera, 80, 60, pick.x, pick.y)));
         int before = 0, after = 0;
-        const int read = viz::testing::expectColumnIsAVoxelColumnAndItsPrefixOr(*find(out, "vsv.voxels")->image,
-                                                                                *find(out, "vsv.column")->image, before, after);
+        const int read = viz::testing::expectColumnIsAVoxelColumnAndItsPrefixOr(
+            *find(out, "vsv.voxels")->image, *find(out, "vsv.column")->image, alpha, before, after);
         EXPECT_GT(read, 8) << "pixel " << pick.x << ", " << pick.y << ": the fragment is beyond the first few phi bits";
         std::printf("pixel (%d, %d): %d bits read, %d occluder bits, %d shadowed after the scan\n", pick.x, pick.y,
                     read, before, after);

@@ -85,7 +85,8 @@ public:
         mParams = {
             {"tessellation", "static: one vertex per shadow-map texel; adaptive: refined where the Laplacian is large",
              0, 0, 1, true, {"static", "adaptive"}},
-            {"airlight", "analytic: stable closed form (common/airlight.glsl); lut: 2D lookup table (supplement)",
+            {"airlight", "analytic: the stable segment integral (common/airlight.glsl: Gauss-Legendre panels for "
+                        "point and spot lights, closed form for suns); lut: 2D lookup table (supplement)",
              0, 0, 1, true, {"analytic", "lut"}},
             {"threshold", "adaptive: Laplacian of the vertex distances, relative to the map's depth range, above which a "
              "vertex needs the finest level", 1e-4, 0, 1e3, false},
@@ -251,7 +252,7 @@ public:
                               maps2D ? "spot / directional lights: one grid each" : "no spot or directional light"});
         p.features.push_back({"AIRLIGHT_LUT", lut,
                               lut ? "airlight=lut: 2D table of the unit point-light integral (supplement)"
-                                  : "airlight=analytic: closed form of common/airlight.glsl, no table"});
+                                  : "airlight=analytic: segment integral of common/airlight.glsl, no table"});
         const int areaSamples = int(settings.at("area_samples"));
         p.features.push_back({"AREA_VPLS", hasArea,
                               hasArea ? "each area light -> " + std::to_string(areaSamples * areaSamples) +
@@ -592,7 +593,10 @@ private:
         glDisable(GL_DEPTH_TEST);
         glDepthMask(GL_FALSE);
         glDisable(GL_CULL_FACE);
-        glEnable(GL_DEPTH_CLAMP);  // faces between the eye and the near plane still count (Billeter Sec. 5)
+        // Faces between the eye and the near plane must still count (ours: Billeter Sec. 5 disables the depth
+        // test and clamps each fragment to the depth buffer, which volume.frag does, but is silent on the
+        // near plane).
+        glEnable(GL_DEPTH_CLAMP);
         glEnable(GL_BLEND);
         glBlendEquation(GL_FUNC_ADD);
         glBlendFunc(GL_ONE, GL_ONE);
