@@ -121,6 +121,9 @@ public:
              0, 0, 1, true, {"imperfect", "naive"}},
             {"points", "point cloud size for the imperfect shadow maps (split among the VPLs)", 1 << 20, 1024,
              1 << 23, true},
+            {"fill_levels", "push-pull fills a hole only from a sample within 2^k texels of it (k levels up the "
+                            "pyramid); wider holes stay empty, so directions that see nothing (open sky) stay lit",
+             2, 0, 12, true},
             {"alpha_bias", "occluder alpha offset in cells (negative: shadow starts further from the light)", -2.25,
              -16, 16, false},
             {"phi_bias", "light-ray phi offset in cells (negative: shadow moves away from the eye)", -1, -16, 16,
@@ -154,7 +157,7 @@ public:
             {kStageShadows, "Shadow maps",
              "imperfect: point cloud subsets splatted into one paraboloid tile per VPL, push-pull hole filling; "
              "naive: a cube shadow map per VPL",
-             {"mode", "points", "shadow_map"}, {kPointCloud, kIsmRaw, kIsm, "ivsv.naive.shadow_map"}, 1},
+             {"mode", "points", "fill_levels", "shadow_map"}, {kPointCloud, kIsmRaw, kIsm, "ivsv.naive.shadow_map"}, 1},
             {kStageSurface, "Camera view",
              "the shared surface term: its own shadow maps, distance d and surface radiance", {"area_samples"},
              {"ivsv.shadow_map", "ivsv.distance", "ivsv.surface"}, 1},
@@ -322,7 +325,7 @@ public:
             mNaiveView.buildShadows(points, tile, 1, out.intermediates, "ivsv.naive");
             mNaiveBuilt = true;
         } else if (area) {
-            buildIsm(scene, *area, int(s.at("points")), count, tile);
+            buildIsm(scene, *area, int(s.at("points")), count, tile, int(s.at("fill_levels")));
         }
         out.timing.stages.push_back({kStageShadows, clock.endMilliseconds()});
         if (area && !naive) {
@@ -617,7 +620,7 @@ private:
     }
 
     // The point cloud is sampled once per scene and size; each splat pass uses all of it.
-    void buildIsm(const scene::Scene& scene, const scene::Light& light, int points, int count, int tile) {
+    void buildIsm(const scene::Scene& scene, const scene::Light& light, int points, int count, int tile, int fillLevels) {
         const std::size_t key = render::geometryFingerprint(scene) ^ (std::size_t(points) * 2654435761u);
         if (key != mPointsKey || &scene != mPointsScene) {
             mCloudWorld = vsv::samplePointCloud(scene, points, light.mesh);
@@ -669,7 +672,9 @@ private:
             dispatch(used >> (l + 1));
         }
         mPushPull.set("uMode", 2);
+        mPushPull.set("uFillLevels", fillLevels);
         for (int l = levels - 2; l >= 0; --l) {
+            mPushPull.set("uLevel", l);
             mIsm.bindImage(1, GL_READ_WRITE, l);
             mIsm.bindImage(2, GL_READ_WRITE, l + 1);
             dispatch(used >> l);
