@@ -39,6 +39,7 @@ constexpr const char* kRenderHelp = R"(usage: airlight render --scene S --techni
                      (see 'airlight list stages T')
   --layer-index K    array layer / cube face of an intermediate with layers (default 0)
   --set name=value   set a technique parameter (repeatable; see 'airlight list params T')
+  --preset paper     start from the technique's paper configuration (--set still wins); default: ours
   --stop-after ID    stop after this stage (see 'airlight list stages T')
   --exposure X|auto  PNG only: scale applied before the sRGB encode (default: auto for colour
                      layers, the intermediate's display range otherwise)
@@ -102,6 +103,7 @@ struct CommonOptions {
     std::string exportDir;  // gui only
     std::string lesson;     // gui only
     bool sceneGiven = false, techniqueGiven = false, sizeGiven = false;
+    std::string preset = "default";  // --preset: "paper" starts from the technique's paperSettings()
 };
 
 // Parses the options shared by render, plan and gui; `allowed` lists the flags this command takes.
@@ -131,6 +133,11 @@ CommonOptions parseOptions(Args& args, const std::string& command, const std::st
         else if (flag == "--layer-index") o.layerIndex = int(parseNumber(args.next(flag), flag));
         else if (flag == "--set") parseSetting(args.next(flag), o.request.settings);
         else if (flag == "--stop-after") o.request.stopAfter = args.next(flag);
+        else if (flag == "--preset") {
+            o.preset = args.next(flag);
+            if (o.preset != "paper" && o.preset != "default")
+                throw InputError("--preset '" + o.preset + "': expected 'paper' or 'default'");
+        }
         else if (flag == "--exposure") o.exposure = args.next(flag);
         else if (flag == "--quiet") o.quiet = true;
         else if (flag == "--no-default-light") o.request.load.defaultLight = false;
@@ -142,6 +149,11 @@ CommonOptions parseOptions(Args& args, const std::string& command, const std::st
                 throw InputError("--frames must be a whole number from 1 to 1000000");
             o.frames = int(frames);
         }
+    }
+    // The paper's settings under the ones given with --set (those win).
+    if (o.preset == "paper") {
+        for (const auto& [name, value] : viz::makeTechnique(o.request.technique)->paperSettings())
+            o.request.settings.emplace(name, value);
     }
     return o;
 }
@@ -209,7 +221,7 @@ int runRender(Args& args) {
         return 0;
     }
     CommonOptions o = parseOptions(
-        args, "render", " --scene --technique --size --out --layer --layer-index --set --stop-after --exposure --quiet --no-default-light --strict ");
+        args, "render", " --scene --technique --size --out --layer --layer-index --set --preset --stop-after --exposure --quiet --no-default-light --strict ");
     if (o.out.empty()) throw InputError("render needs --out F.exr or --out F.png");
     const std::string ext = viz::extensionOf(o.out);
     if (ext != ".exr" && ext != ".png") throw InputError("--out '" + o.out + "' must end in .exr or .png");
@@ -278,7 +290,7 @@ int runPlan(Args& args) {
         std::fputs(kPlanHelp, stdout);
         return 0;
     }
-    CommonOptions o = parseOptions(args, "plan", " --scene --technique --size --set --no-default-light ");
+    CommonOptions o = parseOptions(args, "plan", " --scene --technique --size --set --preset --no-default-light ");
     const auto technique = viz::makeTechnique(o.request.technique);
     const viz::Settings settings = viz::completeSettings(*technique, o.request.settings);
     const viz::scene::Scene scene = viz::scene::loadScene(o.request.scene, o.request.load);
@@ -315,7 +327,7 @@ int runGuiCommand(Args& args) {
         std::fputs(kGuiHelp, stdout);
         return 0;
     }
-    CommonOptions o = parseOptions(args, "gui", " --scene --technique --size --set --screenshot --frames --state --script --export-dir --lesson --no-default-light ");
+    CommonOptions o = parseOptions(args, "gui", " --scene --technique --size --set --preset --screenshot --frames --state --script --export-dir --lesson --no-default-light ");
     if (!o.screenshot.empty() && viz::extensionOf(o.screenshot) != ".png")
         throw InputError("--screenshot '" + o.screenshot + "' must end in .png");
     if (o.frames < 1) throw InputError("--frames must be at least 1");

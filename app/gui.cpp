@@ -2711,6 +2711,44 @@ private:
         mUi->endFrame();
     }
 
+    // The preset picker: "ours" (the defaults) or "paper" (the technique's paperSettings(), as --preset
+    // paper) for the parameters where the two differ; "(mixed)" when those parameters are neither.
+    void presetWidget(const std::string& id) {
+        const viz::Settings paper = technique().paperSettings();
+        if (paper.empty()) return;
+        auto valueOf = [&](const std::string& name) {
+            if (mSettings.count(name)) return mSettings.at(name);
+            for (const viz::ParamInfo& p : technique().params())
+                if (p.name == name) return p.defaultValue;
+            return 0.0;
+        };
+        auto defaultOf = [&](const std::string& name) {
+            for (const viz::ParamInfo& p : technique().params())
+                if (p.name == name) return p.defaultValue;
+            return 0.0;
+        };
+        bool isPaper = true, isOurs = true;
+        std::string names;
+        for (const auto& [name, value] : paper) {
+            isPaper = isPaper && valueOf(name) == value;
+            isOurs = isOurs && valueOf(name) == defaultOf(name);
+            names += (names.empty() ? "" : ", ") + name;
+        }
+        int index = isPaper ? 1 : isOurs ? 0 : 2;
+        const std::vector<std::string> choices = {"ours (defaults)", "paper", "(mixed)"};
+        const bool changed = mUi->combo("preset", index, choices);
+        mUi->tooltip("the paper's own configuration or Airlight's defaults, for " + names +
+                     " (airlight render --preset paper)");
+        if (!changed || index == 2) return;
+        for (const auto& [name, value] : paper) {
+            const double v = index == 1 ? value : defaultOf(name);
+            mSettings[name] = v;
+            mSession.settings[id][name] = v;
+            mOptions.settings.erase(name);
+        }
+        replan();
+    }
+
     // The scene pickers: the built-in scenes (and the file given on the command line, if any) in one
     // list, the stiff cases of `airlight report --suite stiff` in another (one long list would not fit
     // the window). Picking one loads it with its own camera, medium and lights; a scene that fails to
@@ -2781,6 +2819,7 @@ private:
 
     void parameterWidgets() {
         const std::string id = mIds[std::size_t(mCurrent)];
+        presetWidget(id);
         for (const viz::ParamInfo& p : technique().params()) {
             double value = mSettings.count(p.name) ? mSettings.at(p.name) : p.defaultValue;
             bool changed = false;

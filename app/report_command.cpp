@@ -281,6 +281,7 @@ viz::report::PlanSaving measurePlanSaving(const std::string& id, const viz::scen
 struct SweepPoint {
     std::string technique;
     viz::QualitySetting setting;
+    std::string series;  // the report's series: the technique, or "T (paper)" for its paper preset
 };
 
 }  // namespace
@@ -301,7 +302,12 @@ int runReportCommand(Args& args, const std::string& commandLine) {
         const auto technique = viz::makeTechnique(id);
         for (viz::QualitySetting& q : technique->qualitySweep(o.quick)) {
             viz::completeSettings(*technique, q.settings);  // throws if a declared sweep is invalid
-            sweep.push_back({id, std::move(q)});
+            sweep.push_back({id, std::move(q), id});
+        }
+        // The paper's configuration beside ours: its own series, one point.
+        if (const viz::Settings paper = technique->paperSettings(); !paper.empty()) {
+            viz::completeSettings(*technique, paper);
+            sweep.push_back({id, {"paper preset", paper}, id + " (paper)"});
         }
     }
     const std::filesystem::path dir = createOutputFolder(o.out);
@@ -358,7 +364,7 @@ int runReportCommand(Args& args, const std::string& commandLine) {
             }
             viz::report::ReportRow row;
             row.scene = sceneName;
-            row.technique = point.technique;
+            row.technique = point.series;
             row.setting = point.setting.label;
             row.settings = settingsText(technique->params(), point.setting.settings);
             row.width = o.width, row.height = o.height, row.runs = o.runs;
@@ -369,10 +375,10 @@ int runReportCommand(Args& args, const std::string& commandLine) {
             if (output.airlight.empty()) throw std::runtime_error(point.technique + " produced no L_air image");
             row.error = viz::report::compareImages(output.airlight, reference);
             // The page shows each technique's most accurate image (a finite error beats an undefined one).
-            const auto it = bestImage.find(point.technique);
+            const auto it = bestImage.find(point.series);
             const double e = row.error.relativeL2;
             if (it == bestImage.end() || (std::isfinite(e) && !(rows[it->second.first].error.relativeL2 <= e)))
-                bestImage[point.technique] = {rows.size(), output.airlight};
+                bestImage[point.series] = {rows.size(), output.airlight};
             rows.push_back(std::move(row));
             ++done;
         }

@@ -199,6 +199,31 @@ TEST_F(CliTest, PlanSaysWhatIsSkippedAndWhy) {
     EXPECT_NE(r.out.find("no area light"), std::string::npos) << r.out;
 }
 
+// --preset paper starts from the paper's configuration (the plan shows minmax's SVD integrand and
+// slices' artistic formula on); --set still wins over it; an unknown preset is a one-line error.
+TEST_F(CliTest, PaperPresetSetsThePapersChoicesAndSetWins) {
+    auto line = [](const std::string& out, const std::string& feature) {
+        const std::size_t at = out.find("feature " + feature + " ");
+        return at == std::string::npos ? std::string() : out.substr(at, out.find('\n', at) - at);
+    };
+    RunResult r = run("plan --scene grate --technique minmax");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(line(r.out, "INTEGRAND_SVD").find(" off "), std::string::npos) << r.out;
+    r = run("plan --scene grate --technique minmax --preset paper");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(line(r.out, "INTEGRAND_SVD").find(" on "), std::string::npos) << r.out;
+    EXPECT_NE(line(r.out, "INTEGRAND_SVD").find("rank-4"), std::string::npos) << r.out;
+    r = run("plan --scene grate --technique minmax --preset paper --set integrand=analytic");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(line(r.out, "INTEGRAND_SVD").find(" off "), std::string::npos) << r.out;
+    r = run("plan --scene grate --technique slices --preset paper");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(line(r.out, "PHYSICAL").find(" off "), std::string::npos) << r.out;
+    r = run("plan --scene grate --technique slices --preset papers");
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("--preset 'papers'"), std::string::npos) << r.err;
+}
+
 // Every built-in scene with every registered technique: finite, non-negative, not black.
 TEST_F(CliTest, EveryBuiltinSceneRendersWithEveryTechnique) {
     const RunResult scenes = run("list scenes");

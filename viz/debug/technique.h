@@ -172,6 +172,9 @@ public:
     // bound it promises per case class. No bound: the technique does not handle that class, and then it
     // must say so in plan() and refuse (InputError) or fall back to a correct path.
     virtual Settings stiffSettings() const { return {}; }
+    // The paper's own configuration where Airlight's defaults depart from it (`--preset paper`; the report
+    // shows it beside the defaults). Empty: the defaults are the paper's, or there is no paper.
+    virtual Settings paperSettings() const { return {}; }
     // Marks for the screen pixel `pixel` (column, row 0 at the top, of the last run's frame) in the
     // intermediate `intermediateId` of the last run; empty when the technique cannot map it there. GPU
     // techniques may read their textures (the GL context is current).

@@ -211,6 +211,10 @@ public:
     // The accurate end of the knobs: every camera ray within 1/8 pixel of a slice (slice_oversampling 4),
     // 128 spot pieces, 1024 near-epipole samples; the analytic integrand (the SVD's own error is measured
     // by the quality sweep). Keeps the 20 cases at 33x25 within seconds.
+    // Chen et al. 2011: the rank-4 SVD integrand with prefix sums, one slice per half pixel (k = 1).
+    Settings paperSettings() const override {
+        return {{"integrand", 1.0}, {"rank", 4.0}, {"slice_oversampling", 1.0}};
+    }
     Settings stiffSettings() const override {
         return {{"slice_oversampling", 4.0}, {"spot_pieces", 128.0}, {"march_samples", 1024.0}};
     }

@@ -169,6 +169,11 @@ public:
     // boundary in occluder-touching-light is misclassified next to the 1/r^2 singularity: 0.25), adaptive
     // (the same image, half the time), origin=surface (crossings behind d add exactly 0, so a camera
     // inside a closed occluder gets exactly 0 instead of a 4e-9 blend-order residue).
+    // Billeter et al. 2010 and its supplement: the airlight lookup table, adaptive tessellation, 1024^2
+    // shadow maps (Table 1's smallest size).
+    Settings paperSettings() const override {
+        return {{"airlight", 1.0}, {"tessellation", 1.0}, {"shadow_map", 1024.0}};
+    }
     Settings stiffSettings() const override {
         return {{"shadow_map", 1024.0}, {"tessellation", 1.0}, {"origin", 1.0}};
     }

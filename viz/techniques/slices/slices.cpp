@@ -209,6 +209,9 @@ public:
     }
 
     Settings stiffSettings() const override { return {{"planes", 512.0}, {"ray_planes", 0.0}}; }
+    // Mitchell 2004: the artistic formula and constants, the RGBA8 target with the channel mask, 100
+    // planes (the example application's count, Figure 8.1.11c).
+    Settings paperSettings() const override { return {{"weighting", 0.0}, {"accum", 1.0}, {"planes", 100.0}}; }
 
     // Measured by `airlight report --suite stiff` at 33x25 (figures in README.md), bounds about twice that.
     std::optional<StiffBound> stiffBound(const std::string& caseClass) const override {

@@ -212,6 +212,11 @@ public:
 
     // The stiff cases have no area light: ivsv hands every light to its inner vsv at this resolution.
     Settings stiffSettings() const override { return {{"voxels", 512.0}, {"vpls", 256.0}}; }
+    // Wyman and Dai 2013: 256 VPLs with imperfect shadow maps, the lit fraction, the 3x3 interleaved
+    // gather with its bilateral filter (ours offers it or the quarter-size gather, not both at once).
+    Settings paperSettings() const override {
+        return {{"vpls", 256.0}, {"mode", 0.0}, {"combine", 0.0}, {"gather", 1.0}};
+    }
     std::optional<StiffBound> stiffBound(const std::string& caseClass) const override {
         return vsv::stiffBound(caseClass);
     }

@@ -187,6 +187,11 @@ public:
     }
 
     Settings stiffSettings() const override { return {{"voxels", 512.0}, {"combine", 1.0}}; }
+    // Wyman 2011: the lit fraction times the unshadowed airlight, alpha and phi biases of -2.25 and -1
+    // cells.
+    Settings paperSettings() const override {
+        return {{"combine", 0.0}, {"alpha_bias", -2.25}, {"phi_bias", -1.0}};
+    }
 
     std::optional<StiffBound> stiffBound(const std::string& caseClass) const override {
         return vsv::stiffBound(caseClass);
