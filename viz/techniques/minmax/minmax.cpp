@@ -109,7 +109,8 @@ public:
              64, true},
             {"columns", "gamma texels per slice (rounded up to a power of two); 0: the shadow map's size", 0, 0,
              minmax::kMaxColumns, true},
-            {"integrand", "analytic: closed form per lit segment; svd: rank-N approximation with prefix sums", 0, 0,
+            {"integrand", "analytic: the segment integral per lit run (closed form for suns, Gauss-Legendre panels for "
+                          "point and spot lights); svd: rank-N approximation with prefix sums", 0, 0,
              1, true, {"analytic", "svd"}},
             {"rank", "singular vectors kept by integrand=svd", 4, 1, 8, true},
             {"texture_columns", "integrand=svd: gamma texels of the prefix-sum tables of Gamma_i T (the light "
@@ -240,7 +241,7 @@ public:
             {"geometry", {0.05, "slice quantisation: a shadow edge along an epipolar plane is placed to the nearest "
                                 "slice (centre line exact); slivers the rasteriser drops"}},
             {"depth-range", {0.022, "S stores angles beta, not depths: the 1e6 range costs no precision"}},
-            {"phase", {0.04, "the HG lobe is integrated in closed form per lit segment; g = +-0.99 is the worst"}},
+            {"phase", {0.04, "the HG lobe is inside the segment integral of each lit run; g = +-0.99 is the worst"}},
         };
         const auto it = kBounds.find(caseClass);
         return it == kBounds.end() ? std::nullopt : std::optional<StiffBound>(it->second);
