@@ -272,13 +272,19 @@ scene::Scene occluderScene() {
     return s;
 }
 
-TEST_F(RenderPipeline, SpotShadowMapOccludesBelowTheOccluderOnly) {
-    scene::Scene s = occluderScene();
+// A spot 3 above the floor pointing straight down over the occluder (cone half-angle 1 rad).
+scene::Light spotAboveOccluder() {
     scene::Light spot;
     spot.type = scene::LightType::Spot;
     spot.position = {0.0, 3.0, 0.0};
     spot.direction = {0.0, -1.0, 0.0};
     spot.outerConeAngle = 1.0;
+    return spot;
+}
+
+TEST_F(RenderPipeline, SpotShadowMapOccludesBelowTheOccluderOnly) {
+    scene::Scene s = occluderScene();
+    const scene::Light spot = spotAboveOccluder();
     s.lights = {spot};
     // The occluder's shadow on the floor: scaled by 3 from the light: centre (0.75, 0, 0.75), half 0.45.
     const std::vector<glm::dvec3> pts = {{0.75, 0.0, 0.75}, {0.6, 0.0, 0.9}, {0.5, 1.0, 0.5},  // shadowed
@@ -291,11 +297,7 @@ TEST_F(RenderPipeline, SpotShadowMapOccludesBelowTheOccluderOnly) {
 
 TEST_F(RenderPipeline, PublishedShadowMapsHoldDistancesToTheLight) {
     scene::Scene s = occluderScene();
-    scene::Light spot;
-    spot.type = scene::LightType::Spot;
-    spot.position = {0.0, 3.0, 0.0};
-    spot.direction = {0.0, -1.0, 0.0};
-    spot.outerConeAngle = 1.0;
+    const scene::Light spot = spotAboveOccluder();
     scene::Light point = spot;
     point.type = scene::LightType::Point;
     s.lights = {spot, point};
@@ -335,11 +337,7 @@ TEST_F(RenderPipeline, PublishedShadowMapsHoldDistancesToTheLight) {
 // light and the cube's six faces make the layer arithmetic matter; an upper bound below the value wins.
 TEST_F(RenderPipeline, NearestStoredDistanceIsTheMinimumOverTheMapsTexels) {
     scene::Scene s = occluderScene();
-    scene::Light spot;
-    spot.type = scene::LightType::Spot;
-    spot.position = {0.0, 3.0, 0.0};
-    spot.direction = {0.0, -1.0, 0.0};
-    spot.outerConeAngle = 1.0;
+    const scene::Light spot = spotAboveOccluder();
     scene::Light far = spot;
     far.position = {0.0, 6.0, 0.0};
     scene::Light point = spot;
