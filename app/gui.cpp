@@ -2716,22 +2716,14 @@ private:
     void presetWidget(const std::string& id) {
         const viz::Settings paper = technique().paperSettings();
         if (paper.empty()) return;
-        auto valueOf = [&](const std::string& name) {
-            if (mSettings.count(name)) return mSettings.at(name);
-            for (const viz::ParamInfo& p : technique().params())
-                if (p.name == name) return p.defaultValue;
-            return 0.0;
-        };
-        auto defaultOf = [&](const std::string& name) {
-            for (const viz::ParamInfo& p : technique().params())
-                if (p.name == name) return p.defaultValue;
-            return 0.0;
-        };
+        std::string ignored;  // mSettings were validated when they were set
+        const viz::Settings current = settingsFor(technique(), mSettings, ignored);
+        const viz::Settings defaults = viz::completeSettings(technique(), {});
         bool isPaper = true, isOurs = true;
         std::string names;
         for (const auto& [name, value] : paper) {
-            isPaper = isPaper && valueOf(name) == value;
-            isOurs = isOurs && valueOf(name) == defaultOf(name);
+            isPaper = isPaper && current.at(name) == value;
+            isOurs = isOurs && current.at(name) == defaults.at(name);
             names += (names.empty() ? "" : ", ") + name;
         }
         int index = isPaper ? 1 : isOurs ? 0 : 2;
@@ -2741,7 +2733,7 @@ private:
                      " (airlight render --preset paper)");
         if (!changed || index == 2) return;
         for (const auto& [name, value] : paper) {
-            const double v = index == 1 ? value : defaultOf(name);
+            const double v = index == 1 ? value : defaults.at(name);
             mSettings[name] = v;
             mSession.settings[id][name] = v;
             mOptions.settings.erase(name);

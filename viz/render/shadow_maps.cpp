@@ -141,18 +141,25 @@ void ShadowMaps::makeViews() {
     }
 }
 
-const std::vector<float>& ShadowMaps::texels(const GpuLightCpu& light, int face) const {
-    VIZ_CHECK(light.info.z >= 0, "ShadowMaps::texels: the light has no shadow map");
+ShadowMaps::MapLayers ShadowMaps::layersOf(const GpuLightCpu& light) const {
+    VIZ_CHECK(light.info.z >= 0, "ShadowMaps: the light has no shadow map");
     const int type = light.info.x;
     const bool flat = type == hd::kLightSpot || type == hd::kLightDirectional;
-    VIZ_CHECK(flat || (face >= 0 && face < 6), "ShadowMaps::texels: cube face out of range");
     const int array = flat ? 0 : (type == hd::kLightVpl ? 2 : 1);
-    const int layer = flat ? light.info.z : 6 * light.info.z + face;
-    std::vector<float>& values = mReadback[{array, layer}];
+    const MapLayers m{array == 0 ? &mMaps2D : (array == 1 ? &mCubes : &mVplCubes), array,
+                      flat ? light.info.z : 6 * light.info.z, flat ? 1 : 6};
+    VIZ_CHECK(m.first + m.count <= m.texture->size().z, "ShadowMaps: layer out of range");
+    return m;
+}
+
+const std::vector<float>& ShadowMaps::texels(const GpuLightCpu& light, int face) const {
+    const MapLayers m = layersOf(light);
+    VIZ_CHECK(face >= 0 && face < m.count, "ShadowMaps::texels: face out of range");
+    const int layer = m.first + face;
+    std::vector<float>& values = mReadback[{m.array, layer}];
     if (values.empty()) {
-        const gl::Texture& source = array == 0 ? mMaps2D : (array == 1 ? mCubes : mVplCubes);
+        const gl::Texture& source = *m.texture;
         const int n = source.size().x;
-        VIZ_CHECK(layer < source.size().z, "ShadowMaps::texels: layer out of range");
         values.resize(std::size_t(n) * std::size_t(n));
         glPixelStorei(GL_PACK_ALIGNMENT, 4);
         glGetTextureSubImage(source.id(), 0, 0, 0, layer, n, n, 1, GL_RED, GL_FLOAT,
@@ -162,16 +169,10 @@ const std::vector<float>& ShadowMaps::texels(const GpuLightCpu& light, int face)
 }
 
 float ShadowMaps::nearest(const GpuLightCpu& light, float upperBound) const {
-    VIZ_CHECK(light.info.z >= 0, "ShadowMaps::nearest: the light has no shadow map");
-    const int type = light.info.x;
-    const bool flat = type == hd::kLightSpot || type == hd::kLightDirectional;
-    const int array = flat ? 0 : (type == hd::kLightVpl ? 2 : 1);
-    const int first = flat ? light.info.z : 6 * light.info.z;
-    const int layers = flat ? 1 : 6;
-    const auto key = std::make_pair(array, first);
+    const MapLayers m = layersOf(light);
+    const auto key = std::make_pair(m.array, m.first);
     if (auto it = mNearest.find(key); it != mNearest.end()) return std::min(it->second, upperBound);
-    const gl::Texture& source = array == 0 ? mMaps2D : (array == 1 ? mCubes : mVplCubes);
-    VIZ_CHECK(first + layers <= source.size().z, "ShadowMaps::nearest: layer out of range");
+    const gl::Texture& source = *m.texture;
     if (!mNearestProgram)
         mNearestProgram = gl::Program::compile({.stages = {"render/shadow_nearest.comp"}, .label = "render.shadow_nearest"});
     if (!mNearestBuffer) mNearestBuffer = gl::Buffer::create({.bytes = sizeof(std::uint32_t), .label = "render.shadow_nearest"});
@@ -179,8 +180,8 @@ float ShadowMaps::nearest(const GpuLightCpu& light, float upperBound) const {
     mNearestBuffer.upload(0, sizeof start, &start);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
     mNearestProgram.use();
-    mNearestProgram.set("uFirstLayer", first);
-    mNearestProgram.set("uLayers", layers);
+    mNearestProgram.set("uFirstLayer", m.first);
+    mNearestProgram.set("uLayers", m.count);
     mNearestProgram.set("uSize", source.size().x);
     source.bindImage(0, GL_READ_ONLY);
     mNearestBuffer.bindBase(GL_SHADER_STORAGE_BUFFER, 0);

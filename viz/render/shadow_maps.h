@@ -66,6 +66,13 @@ public:
 private:
     void makeViews();
 
+    // Where a light's map lives: its array (0 2D, 1 cubes, 2 VPL cubes) and layers [first, first + count).
+    struct MapLayers {
+        const gl::Texture* texture;
+        int array, first, count;
+    };
+    MapLayers layersOf(const GpuLightCpu& light) const;
+
     gl::Program mProgram;
     mutable gl::Program mNearestProgram;  // compiled at first nearest()
     mutable gl::Buffer mNearestBuffer;

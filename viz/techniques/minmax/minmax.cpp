@@ -497,7 +497,7 @@ private:
                                           .height = input.height, .slices = int(input.settings.at("slices")),
                                           .columns = columns,
                                           .oversampling = int(input.settings.at("slice_oversampling"))});
-            sliceGapNote(scene, i, input, w.setup, notes);
+            sliceGapNote(scene, L.info.w, input, w.setup, notes);
             // Reuse the previous textures when the sizes agree.
             const std::size_t k = work.size();
             if (k < mWork.size() && mWork[k].rectified &&
@@ -528,7 +528,8 @@ private:
         const int k = std::max(1, int(input.settings.at("slice_oversampling")));
         const double promised = fixed > 0 ? 1.0 : 1.0 / k;  // largest gap the setting stands for (pixels)
         if (setup.maxSliceGap <= promised * (1.0 + 1e-6)) return;
-        const std::string name = light < int(scene.lights.size()) ? scene.lights[std::size_t(light)].name : "light";
+        const std::string name = light >= 0 && light < int(scene.lights.size()) ? scene.lights[std::size_t(light)].name
+                                                                                  : "light";
         const std::string why = fixed > 0 ? "slices=" + std::to_string(fixed) + " is too few for this image"
                                           : "the cap of " + std::to_string(minmax::kMaxSlices) +
                                                 " slices is reached (slice_oversampling " + std::to_string(k) +
