@@ -1,4 +1,5 @@
-// Shadow-map visibility V(p) for a GpuLight (1 = lit), nearest texel, in eye-relative world space.
+// Shadow-map visibility V(p) for a GpuLight (1 = lit), in eye-relative world space: the nearest texel
+// of a cube map; for a 2D map the nearest texel corrected along smooth surfaces (shadowStored2D).
 // Every map stores a linear distance in scene units (render::ShadowMaps): the distance to the light
 // (spot, point, VPL) or the depth dot(p, direction) along a directional light's travel direction.
 // Bias: p is lit when  d(p) <= stored + L.shadow.w + L.shadow.z * footprint,  footprint = d(p) / size for
@@ -50,7 +51,45 @@ float cubeLookup(sampler2DArray maps, int cube, vec3 d) {
     return texelFetch(maps, ivec3(texel, 6 * cube + face), 0).r;
 }
 
-float shadowVisibility(GpuLight L, vec3 p) {
+#ifndef SHADOW_NO_2D
+// How far the two one-sided differences of a texel's depth along one map axis may disagree (relative to
+// the larger) for the texel and its neighbours to count as one smooth surface.
+const float kShadowSmoothTolerance = 0.25;
+
+// The depth a 2D map gives at ndc (|ndc| <= 1): the nearest texel's stored value, moved to ndc along each
+// map axis by that axis's slope where the texel and its two neighbours on the axis lie on one smooth
+// surface (their one-sided differences agree). A texel stores the depth at its centre; on a surface seen
+// at a grazing angle one texel spans a large depth range, and a point up to half a texel times that slope
+// behind the surface read as in front of it: light leaked through thin ceilings and walls under a low
+// sun (the stiff case sun-grazing-ceiling). Next to a depth discontinuity the differences disagree and the
+// nearest value is kept, so silhouettes stay where nearest-texel sampling puts them. Exact on planes.
+float shadowStored2D(GpuLight L, vec2 ndc) {
+    ivec2 size = textureSize(uShadow2D, 0).xy;
+    vec2 f = (ndc * 0.5 + 0.5) * vec2(size);
+    // Nearest texel: GL row 0 is at ndc.y = -1, as the map was rendered.
+    ivec2 c = clamp(ivec2(floor(f)), ivec2(0), size - 1);
+    int layer = L.info.z;
+    float s0 = texelFetch(uShadow2D, ivec3(c, layer), 0).r;
+    if (!(s0 < L.shadow.y)) return s0;  // nothing rendered there
+    vec2 offset = clamp(f - (vec2(c) + 0.5), vec2(-0.5), vec2(0.5));
+    float corrected = s0;
+    for (int axis = 0; axis < 2; ++axis) {
+        ivec2 e = axis == 0 ? ivec2(1, 0) : ivec2(0, 1);
+        ivec2 lo = c - e, hi = c + e;
+        if (any(lessThan(lo, ivec2(0))) || any(greaterThanEqual(hi, size))) continue;
+        float sl = texelFetch(uShadow2D, ivec3(lo, layer), 0).r;
+        float sh = texelFetch(uShadow2D, ivec3(hi, layer), 0).r;
+        if (!(sl < L.shadow.y && sh < L.shadow.y)) continue;
+        float dl = s0 - sl, dh = sh - s0;
+        if (abs(dh - dl) > kShadowSmoothTolerance * max(abs(dl), abs(dh)) + L.shadow.w) continue;
+        corrected += (offset[axis] >= 0.0 ? dh : dl) * offset[axis];
+    }
+    return corrected;
+}
+#endif
+
+// surfaceBias2D scales a 2D map's footprint term of the bias (1 for surfaces, 0 for points of the medium).
+float shadowVisibilityBiased(GpuLight L, vec3 p, float surfaceBias2D) {
     int layer = L.info.z;
     if (layer < 0) return 1.0;
     int type = L.info.x;
@@ -63,11 +102,8 @@ float shadowVisibility(GpuLight L, vec3 p) {
         if (clip.w <= 0.0) return 1.0;
         vec2 ndc = clip.xy / clip.w;
         if (any(greaterThan(abs(ndc), vec2(1.0)))) return 1.0;
-        ivec2 size = textureSize(uShadow2D, 0).xy;
-        // Nearest texel: GL row 0 is at ndc.y = -1, as the map was rendered.
-        ivec2 texel = clamp(ivec2(floor((ndc * 0.5 + 0.5) * vec2(size))), ivec2(0), size - 1);
-        stored = texelFetch(uShadow2D, ivec3(texel, layer), 0).r;
-        footprint = (type == kLightSpot ? d : 1.0) / float(size.x);
+        stored = shadowStored2D(L, ndc);
+        footprint = surfaceBias2D * (type == kLightSpot ? d : 1.0) / float(textureSize(uShadow2D, 0).x);
     } else
 #endif
 #ifndef SHADOW_NO_CUBE
@@ -85,6 +121,15 @@ float shadowVisibility(GpuLight L, vec3 p) {
 #endif
     return d <= stored + L.shadow.w + L.shadow.z * footprint ? 1.0 : 0.0;
 }
+
+// Visibility of a point on a surface: the bias keeps a lit receiver from shadowing itself (acne).
+float shadowVisibility(GpuLight L, vec3 p) { return shadowVisibilityBiased(L, p, 1.0); }
+
+// Visibility of a point of the medium. Such a point is no receiver that could shadow itself, so a 2D map
+// (whose depth shadowStored2D reconstructs along smooth surfaces) keeps only the constant part of the
+// bias: the footprint part lit a band behind every thin wall, two texels deep (the stiff case
+// sun-grazing-ceiling). Cube maps have no reconstruction and keep the whole bias.
+float shadowVisibilityMedium(GpuLight L, vec3 p) { return shadowVisibilityBiased(L, p, 0.0); }
 
 #ifdef SHADOW_LOOKUP_MESH
 // Visibility as the polygonal light volume of polyvol sees it (shaders/polyvol/volume.vert): spot and

@@ -71,7 +71,7 @@ void main() {
 #ifdef SHADOW_LOOKUP_MESH
         float V = shadowVisibilityMesh(L, x);  // depth linear across the polyvol mesh's triangles
 #else
-        float V = shadowVisibility(L, x);
+        float V = shadowVisibilityMedium(L, x);
 #endif
         litSamples += V;
         if (V == 0.0) continue;

@@ -63,7 +63,7 @@ layout(location = 0) out vec4 oColor;
 // Shadow term: nearest texel (the paper) or 3x3 percentage-closer filtering on the same map and bias.
 float visibility(GpuLight L, vec3 p) {
 #ifdef PCF
-    if (L.info.x != kLightSpot && L.info.x != kLightDirectional) return shadowVisibility(L, p);
+    if (L.info.x != kLightSpot && L.info.x != kLightDirectional) return shadowVisibilityMedium(L, p);
     vec4 clip = L.shadowMatrix * vec4(p, 1.0);
     if (clip.w <= 0.0) return 1.0;
     vec2 ndc = clip.xy / clip.w;
@@ -81,7 +81,7 @@ float visibility(GpuLight L, vec3 p) {
         }
     return lit / 9.0;
 #else
-    return shadowVisibility(L, p);
+    return shadowVisibilityMedium(L, p);
 #endif
 }
 

@@ -96,7 +96,7 @@ void main() {
             if (tb > ta) {
                 vec3 a = runAirlight(L, geo, w, ta, tb);
                 unlit += a;
-                lit += shadowVisibility(L, 0.5 * (ta + tb) * w) * a;
+                lit += shadowVisibilityMedium(L, 0.5 * (ta + tb) * w) * a;
                 ta = tb;
             }
         }

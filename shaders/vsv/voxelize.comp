@@ -20,10 +20,11 @@ uniform float uAlphaBias;  // cells; negative pushes the shadow away from the li
 uniform float uPhiBias;    // cells; the light ray of bit k is sampled at phi cell k + 0.5 + uPhiBias
 
 // Distance from the light along direction dir at which the light ray counts as blocked: the stored
-// linear distance pushed back by the bias of the shared lookup (shaders/common/shadow_map.glsl: a point
-// at distance r is lit when r <= stored + shadow.w + shadow.z r / size, i.e. up to
-// r = (stored + shadow.w) / (1 - shadow.z / size)), so the grid and shadowVisibility agree on every
-// point. A huge value when nothing was rendered there or the direction leaves the map.
+// linear distance pushed back by the bias of the shared medium lookup (shaders/common/shadow_map.glsl,
+// shadowVisibilityMedium: on a spot's map a point at distance r is lit when r <= stored + shadow.w; on a
+// cube when r <= stored + shadow.w + shadow.z r / size, i.e. up to r = (stored + shadow.w) /
+// (1 - shadow.z / size)), so the grid and shadowVisibilityMedium agree on every point. A huge value when
+// nothing was rendered there or the direction leaves the map.
 float occluderDistance(GpuLight L, vec3 dir) {
     int layer = L.info.z;
     if (layer < 0) return 3.0e38;
@@ -35,10 +36,9 @@ float occluderDistance(GpuLight L, vec3 dir) {
         if (clip.w <= 0.0) return 3.0e38;
         vec2 ndc = clip.xy / clip.w;
         if (any(greaterThan(abs(ndc), vec2(1.0)))) return 3.0e38;
-        ivec2 mapSize = textureSize(uShadow2D, 0).xy;
-        ivec2 texel = clamp(ivec2(floor((ndc * 0.5 + 0.5) * vec2(mapSize))), ivec2(0), mapSize - 1);
-        stored = texelFetch(uShadow2D, ivec3(texel, layer), 0).r;
-        size = mapSize.x;
+        stored = shadowStored2D(L, ndc);
+        // A 2D map keeps only the constant part of the bias for points of the medium.
+        return stored < L.shadow.y ? stored + L.shadow.w : 3.0e38;
     } else
 #endif
     {
@@ -72,12 +72,9 @@ void main() {
         vec4 clip = L.shadowMatrix * vec4(phi * e, 1.0);
         vec2 ndc = clip.xy / clip.w;
         if (phi > 0.0 && all(lessThanEqual(abs(ndc), vec2(1.0)))) {
-            ivec2 size = textureSize(uShadow2D, 0).xy;
-            ivec2 texel = clamp(ivec2(floor((ndc * 0.5 + 0.5) * vec2(size))), ivec2(0), size - 1);
-            float stored = texelFetch(uShadow2D, ivec3(texel, L.info.z), 0).r;
-            // The shared lookup's bias (constant for an orthographic map): depth up to
-            // stored + shadow.w + shadow.z / size is lit.
-            float blocked = stored + L.shadow.w + L.shadow.z / float(size.x);
+            float stored = shadowStored2D(L, ndc);
+            // The medium lookup's bias (shadowVisibilityMedium): depth up to stored + shadow.w is lit.
+            float blocked = stored + L.shadow.w;
             if (L.info.z >= 0 && stored < L.shadow.y) c = epiAlphaCoord(S, atan(phi, -blocked)) - uAlphaBias;
         }
     } else

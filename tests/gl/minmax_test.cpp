@@ -143,8 +143,31 @@ TEST_F(MinmaxTest, TreeWalkEqualsLinearScan) {
     EXPECT_LT(nodes, texels);
 }
 
+// The depth shadowStored2D (shaders/common/shadow_map.glsl) reads at ndc: the nearest texel, moved along
+// each axis by that axis's slope where the texel's one-sided differences agree within a quarter.
+float storedAt(const viz::Image& map, glm::vec2 ndc, float far, float constantBias) {
+    const glm::vec2 f = (ndc * 0.5f + 0.5f) * float(map.width);
+    const glm::ivec2 c = glm::clamp(glm::ivec2(glm::floor(f)), glm::ivec2(0), glm::ivec2(map.width - 1));
+    const float s0 = texel(map, c.x, c.y);
+    if (!(s0 < far)) return s0;
+    const glm::vec2 offset = glm::clamp(f - (glm::vec2(c) + 0.5f), glm::vec2(-0.5f), glm::vec2(0.5f));
+    float corrected = s0;
+    for (int axis = 0; axis < 2; ++axis) {
+        const glm::ivec2 e = axis == 0 ? glm::ivec2(1, 0) : glm::ivec2(0, 1);
+        const glm::ivec2 lo = c - e, hi = c + e;
+        if (lo[axis] < 0 || hi[axis] >= map.width) continue;
+        const float sl = texel(map, lo.x, lo.y), sh = texel(map, hi.x, hi.y);
+        if (!(sl < far && sh < far)) continue;
+        const float dl = s0 - sl, dh = sh - s0;
+        if (std::abs(dh - dl) > 0.25f * std::max(std::abs(dl), std::abs(dh)) + constantBias) continue;
+        corrected += (offset[axis] >= 0.0f ? dh : dl) * offset[axis];
+    }
+    return corrected;
+}
+
 // S[alpha, gamma] equals the occluder's beta computed on the CPU from a direct lookup of the shadow map
-// along the same light ray (texel picked with the light's shadow matrix, biased as shadowVisibility does).
+// along the same light ray (read as shadowStored2D does, biased as shadowVisibility does). This mirrors the
+// shader's rule; an independent check against ray casting is still to be written.
 TEST_F(MinmaxTest, RectifiedMapAgreesWithShadowMapLookups) {
     for (const char* name : {"grate", "terrain"}) {
         const viz::scene::Scene scene = viz::scene::makeBuiltinScene(name);
@@ -169,9 +192,7 @@ TEST_F(MinmaxTest, RectifiedMapAgreesWithShadowMapLookups) {
                 if (clip.w <= 0.0f || std::abs(ndc.x) > 1.0f || std::abs(ndc.y) > 1.0f) continue;
                 const float got = texel(*S->image, col, row);
                 if (got < 0.0f) continue;  // outside the spot's cone
-                const glm::ivec2 st = glm::clamp(glm::ivec2(glm::floor((ndc * 0.5f + 0.5f) * float(size))),
-                                                 glm::ivec2(0), glm::ivec2(size - 1));
-                const float stored = texel(*map->image, st.x, st.y);
+                const float stored = storedAt(*map->image, ndc, L.shadow.y, L.shadow.w);
                 const float threshold = f.kind == viz::minmax::LightKind::Spot
                                             ? (stored + L.shadow.w) / (1.0f - L.shadow.z / float(size))
                                             : stored + L.shadow.w + L.shadow.z / float(size);

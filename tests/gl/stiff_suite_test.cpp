@@ -46,6 +46,46 @@ TEST_P(StiffSuite, EveryTechniqueStaysFiniteAndWithinItsDeclaredBound) {
     }
 }
 
+// A low sun grazing the hall's one-sided ceiling leaves the interior dark in the reference. A dense march
+// and the slices' planes sample the air just under the ceiling, where the nearest shadow-map texel's
+// depth (stored at the texel's centre) and the surface bias of two texels used to read as lit: a band of
+// light under the ceiling. Measured as the L_air these techniques add on the pixels the reference has
+// dark (below 1e-3 of its brightest), against the reference's total.
+class GrazingSun : public gl::GlTest {};
+
+TEST_F(GrazingSun, LeaksNoLightUnderTheCeiling) {
+    const scene::StiffCase& c = *scene::findStiffCase("sun-grazing-ceiling");
+    const scene::Scene s = scene::buildStiffScene(c);
+    const int w = 160, h = 120;
+    auto reference = makeTechnique("reference");
+    const Image ref = testing::runTechnique(*reference, s, {}, w, h).airlight;
+    double brightest = 0.0, total = 0.0;
+    for (std::size_t i = 0; i < ref.pixels.size(); i += ref.channels) {
+        brightest = std::max(brightest, double(ref.pixels[i]));
+        total += ref.pixels[i];
+    }
+    ASSERT_GT(total, 0.0);
+    const std::vector<std::pair<std::string, Settings>> runs = {{"raymarch", {{"samples", 1024}}}, {"slices", {}}};
+    for (const auto& [id, settings] : runs) {
+        auto technique = makeTechnique(id);
+        const Image img = testing::runTechnique(*technique, s, settings, w, h).airlight;
+        double leaked = 0.0;
+        int dark = 0, lit = 0;
+        for (std::size_t i = 0; i < ref.pixels.size(); i += ref.channels) {
+            if (ref.pixels[i] > 1e-3 * brightest) continue;
+            ++dark;
+            const double extra = double(img.pixels[i]) - ref.pixels[i];
+            leaked += std::max(0.0, extra);
+            lit += extra > 1e-3 * brightest;
+        }
+        std::printf("%s: %d of %d dark pixels lit, leaked L_air %.3g of the reference's total\n", id.c_str(), lit,
+                    dark, leaked / total);
+        EXPECT_GT(dark, int(ref.pixels.size() / ref.channels / 3)) << id;
+        EXPECT_LT(leaked / total, 1e-3) << id;
+        EXPECT_LT(lit, dark / 200) << id;
+    }
+}
+
 std::vector<std::string> caseIds() {
     std::vector<std::string> ids;
     for (const scene::StiffCase& c : scene::stiffCases()) ids.push_back(c.id);

@@ -130,6 +130,15 @@ std::vector<StiffCase> makeCases() {
             s.lights[0].direction = glm::normalize(glm::dvec3(0.3 * std::cos(e), -std::sin(e), std::cos(e)));
         });
 
+    // ---- light through thin walls ----
+    add("sun-grazing-ceiling", "leak",
+        "a low sun (2 degrees up) travelling along the hall, parallel to its window wall: no light enters, and "
+        "the sun grazes the one-sided ceiling above the dark interior (lit air only outside the windows)",
+        "colonnade", [](Scene& s) {
+            const double e = 2.0 * 3.14159265358979323846 / 180.0;
+            s.lights[0].direction = glm::dvec3(-std::cos(e), -std::sin(e), 0.0);
+        });
+
     // ---- where the camera is ----
     add("camera-in-lit-volume", "camera-placement", "the camera inside the spot's cone under the grate, looking across it",
         "grate", [](Scene& s) {

@@ -240,6 +240,8 @@ public:
             {"camera-placement", {0.008, "the frame is eye-relative; a closed box gives d small and S above beta"}},
             {"geometry", {0.05, "slice quantisation: a shadow edge along an epipolar plane is placed to the nearest "
                                 "slice (centre line exact); slivers the rasteriser drops"}},
+            {"leak", {0.045, "the rectified map reads the reconstructed depth but keeps the surface bias (its gamma "
+                      "columns need it): a band under the grazing ceiling stays lit (0.023)"}},
             {"depth-range", {0.022, "S stores angles beta, not depths: the 1e6 range costs no precision"}},
             {"phase", {0.04, "the HG lobe is inside the segment integral of each lit run; g = +-0.99 is the worst"}},
         };

@@ -193,6 +193,7 @@ public:
             {"camera-placement", {0.008, "depth clamp keeps faces before the near plane; origin=surface makes "
                                          "crossings behind d add exactly 0 (0.0039)"}},
             {"geometry", {0.05, "shadow-map rasterisation drops slivers the reference still hits (0.024)"}},
+            {"leak", {0.002, "the volume's triangles are linear between texel centres: a grazing plane is exact (0.0007)"}},
             {"depth-range", {0.02, "distance-valued R32F maps; the volume is as coarse as the 1e6-wide map (0.0099)"}},
             {"phase", {0.016, "the HG lobe is inside the closed form of each segment; g = 0.99 is the worst (0.0079)"}},
         };
