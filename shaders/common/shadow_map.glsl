@@ -86,6 +86,18 @@ float shadowStored2D(GpuLight L, vec2 ndc) {
     }
     return corrected;
 }
+
+// The largest distance (spot) or depth (directional) a point on the light ray through ndc may have and
+// read lit: d <= stored + shadow.w + shadow.z footprint solved for d, surfaceBias2D as in
+// shadowVisibilityBiased. Grids built from light rays (minmax's rectified map, vsv's voxels) read it so
+// that they and the lookup agree on every point. `stored` returns shadowStored2D (>= shadow.y: nothing
+// rendered there).
+float shadowLitLimit2D(GpuLight L, vec2 ndc, float surfaceBias2D, out float stored) {
+    stored = shadowStored2D(L, ndc);
+    float footprintBias = surfaceBias2D * L.shadow.z / float(textureSize(uShadow2D, 0).x);
+    return L.info.x == kLightSpot ? (stored + L.shadow.w) / (1.0 - footprintBias)
+                                  : stored + L.shadow.w + footprintBias;
+}
 #endif
 
 // surfaceBias2D scales a 2D map's footprint term of the bias (1 for surfaces, 0 for points of the medium).

@@ -5,8 +5,8 @@
 // directional: the map is orthographic along the ray; point: the ray's direction picks one cube texel),
 // so one nearest lookup gives the ray's occluder. Point lights (EPIPOLAR_POINT) read their row's own
 // gamma range (minmax/gamma_range.comp).
-// S = beta of the occluder, after the same bias as shadowVisibilityMedium (common/shadow_map.glsl), so
-// that "beta < S" and shadowVisibilityMedium agree for every point of the ray.
+// S = beta of the occluder, after the same bias as shadowVisibility (common/shadow_map.glsl), so that
+// "beta < S" and shadowVisibility agree for every point of the ray.
 layout(local_size_x = 64, local_size_y = 1) in;
 
 #include "common/host_device.glsl"
@@ -28,7 +28,7 @@ void main() {
 #ifdef EPIPOLAR_POINT
     if (uKind == kKindPoint) {
         // The light ray's direction picks one texel of the cube (every point of the ray projects onto it);
-        // the same bias as shadowVisibilityMedium for a cube: footprint d / size, so lit when
+        // the same bias as shadowVisibility for a cube: footprint d / size, so lit when
         // d <= (stored + w) / (1 - z / size).
         vec3 dir = -cos(gamma) * uAxis + sin(gamma) * slicePerpendicular(alpha);
         float stored = cubeLookup(uShadowCube, L.info.z, dir);
@@ -49,17 +49,12 @@ void main() {
         if (dark) {
             S = kOutsideCone;
         } else if (inside) {
-            // Lit when d <= stored + w + z footprint, stored reconstructed along smooth surfaces: spot
-            // footprint = d / size, so the threshold on d is (stored + w) / (1 - z / size); directional
-            // footprint = 1 / size. The rectified map keeps the surface lookup's footprint bias: it is
-            // sampled at discrete gamma columns, and without the bias (depth-range-1e6: 2000-unit texels)
-            // the column spacing shadows the air over lit receivers (relative L2 0.43).
-            ivec2 size = textureSize(uShadow2D, 0).xy;
-            float stored = shadowStored2D(L, ndc);
-            float threshold = uKind == kKindSpot
-                ? (stored + L.shadow.w) / (1.0 - L.shadow.z / float(size.x))
-                : stored + L.shadow.w + L.shadow.z / float(size.x);
-            S = occluderBeta(gamma, threshold);
+            // The rectified map keeps the surface lookup's footprint bias (and the traverse reads
+            // shadowVisibility): it is sampled at discrete gamma columns, and without the bias
+            // (depth-range-1e6: 2000-unit texels) the column spacing shadowed the air over lit receivers
+            // (relative L2 0.43).
+            float stored;
+            S = occluderBeta(gamma, shadowLitLimit2D(L, ndc, 1.0, stored));
         }
     }
     imageStore(uRectified, texel, vec4(S));

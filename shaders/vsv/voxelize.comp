@@ -36,9 +36,8 @@ float occluderDistance(GpuLight L, vec3 dir) {
         if (clip.w <= 0.0) return 3.0e38;
         vec2 ndc = clip.xy / clip.w;
         if (any(greaterThan(abs(ndc), vec2(1.0)))) return 3.0e38;
-        stored = shadowStored2D(L, ndc);
-        // A 2D map keeps only the constant part of the bias for points of the medium.
-        return stored < L.shadow.y ? stored + L.shadow.w : 3.0e38;
+        float limit = shadowLitLimit2D(L, ndc, 0.0, stored);
+        return stored < L.shadow.y ? limit : 3.0e38;
     } else
 #endif
     {
@@ -72,9 +71,8 @@ void main() {
         vec4 clip = L.shadowMatrix * vec4(phi * e, 1.0);
         vec2 ndc = clip.xy / clip.w;
         if (phi > 0.0 && all(lessThanEqual(abs(ndc), vec2(1.0)))) {
-            float stored = shadowStored2D(L, ndc);
-            // The medium lookup's bias (shadowVisibilityMedium): depth up to stored + shadow.w is lit.
-            float blocked = stored + L.shadow.w;
+            float stored;
+            float blocked = shadowLitLimit2D(L, ndc, 0.0, stored);
             if (L.info.z >= 0 && stored < L.shadow.y) c = epiAlphaCoord(S, atan(phi, -blocked)) - uAlphaBias;
         }
     } else
