@@ -49,6 +49,8 @@
 #include "gl/vertex_array.h"
 #include "platform/window_glfw.h"
 #include "render_job.h"
+#include "run_scheduler.h"
+#include "step_timeline.h"
 #include "scene/scene_source.h"
 #include "scene/stiff_scenes.h"
 #include "scene/builtin_scenes.h"
@@ -109,6 +111,35 @@ viz::Settings settingsFor(const viz::Technique& technique, const viz::Settings& 
         error = e.what();
         return viz::completeSettings(technique, {});
     }
+}
+
+// The stage whose sub-step parameter `name` is (StageInfo::substepParam), or -1.
+int substepStageOf(const viz::Technique& technique, const std::string& name) {
+    const auto& stages = technique.stages();
+    for (int k = 0; k < int(stages.size()); ++k)
+        if (stages[std::size_t(k)].substepParam == name) return k;
+    return -1;
+}
+
+// The window steps with its cursor, never with settings: takes the sub-step parameters out of `settings`
+// (back to their defaults) and returns the cursor that the first one set away from its default stands
+// for (the command line's `gui --set planes_drawn=7`, a session file), if any. `onlyStage` >= 0: only
+// that stage's parameter (a lesson step stopping there); the others stay as the lesson set them.
+std::optional<StepCursor> takeSubsteps(const viz::Technique& technique, viz::Settings& settings, int onlyStage = -1) {
+    std::optional<StepCursor> cursor;
+    const viz::Settings defaults = viz::completeSettings(technique, {});
+    const auto& stages = technique.stages();
+    for (int k = 0; k < int(stages.size()); ++k) {
+        const std::string& name = stages[std::size_t(k)].substepParam;
+        if (name.empty() || !settings.count(name) || (onlyStage >= 0 && k != onlyStage)) continue;
+        const double value = settings.at(name);
+        settings[name] = defaults.at(name);
+        if (value == defaults.at(name) || cursor) continue;
+        const std::vector<double> values = technique.substepValues(k, settings);
+        for (int i = 0; i < int(values.size()); ++i)
+            if (values[std::size_t(i)] == value) cursor = StepCursor{k, i + 1};
+    }
+    return cursor;
 }
 
 // ---- formatting ----
@@ -295,6 +326,7 @@ public:
         mComparison.close();
         mOutput = {};
         mTechniques.clear();
+        mRunners.clear();
     }
 
     int run() {
@@ -511,6 +543,11 @@ public:
                                         {"settings", mSettings},
                                         {"stage", technique().stages()[std::size_t(stageShown())].id},
                                         {"last_stage_run", mHaveOutput ? mOutput.lastStageRun : -1},
+                                        {"first_stage_run", mHaveOutput ? mOutput.firstStageRun : -1},
+                                        {"substep", substepState().first},
+                                        {"substep_count", substepState().second},
+                                        {"stopped_early", stoppedEarly()},
+                                        {"notice", mNotice},
                                         {"views", views}};
         {
             nlohmann::json lights = nlohmann::json::array();
@@ -603,7 +640,7 @@ private:
         s.medium = mScene.medium;
         s.lights = lightPlacements(mScene);
         // Only what differs from the technique's defaults is kept, per technique.
-        const auto defaults = viz::completeSettings(*mTechniques.at(s.technique), {});
+        const auto defaults = viz::completeSettings(technique(), {});
         viz::Settings changed;
         for (const auto& [name, value] : mSettings)
             if (!defaults.count(name) || defaults.at(name) != value) changed[name] = value;
@@ -703,6 +740,13 @@ private:
         s.size = {mOptions.width, mOptions.height};
         s.settings = mSettings;
         s.stage = stageShown();
+        // The lesson speaks in settings: the cursor's sub-step is its stage's parameter there.
+        if (mCursor.substep > 0) {
+            const std::vector<double> values = technique().substepValues(s.stage, mSettings);
+            const std::string& name = technique().stages()[std::size_t(s.stage)].substepParam;
+            if (!values.empty() && !name.empty())
+                s.settings[name] = values[std::size_t(std::clamp(mCursor.substep, 1, int(values.size())) - 1)];
+        }
         s.view = mViews.count(mFocused) ? mViews.at(mFocused).content : std::string("airlight");
         s.inspect = mPendingInspect;
         if (mProbe) s.inspect = glm::ivec2(mProbe->x, mProbe->y);
@@ -732,7 +776,12 @@ private:
         selectTechnique(int(it - mIds.begin()));  // also drops the last frame: the step's pixel waits for its own
         mSettings = s.settings;
         mSettingsError.clear();
-        mStopAfter = s.stage;
+        const int last = int(technique().stages().size()) - 1;
+        mCursor = {s.stage >= 0 && s.stage < last ? s.stage : -1, 0};
+        // The step's sub-step of the stage it stops in becomes the cursor; a sub-step parameter of an
+        // earlier stage stays a setting of the step (the title says the frame is cut short).
+        if (auto c = takeSubsteps(technique(), mSettings, stageShown()); c && c->stage == stageShown())
+            mCursor.substep = c->substep;
         replan();
         showInFocusedView(s.view);
         mProbe.reset();
@@ -753,6 +802,13 @@ private:
     }
 
     void setLessonSetting(const std::string& name, double value) override {
+        // A lesson's animation of the shown stage's sub-steps moves the cursor.
+        if (substepStageOf(technique(), name) == stageShown()) {
+            const std::vector<double> values = technique().substepValues(stageShown(), mSettings);
+            for (int i = 0; i < int(values.size()); ++i)
+                if (values[std::size_t(i)] == value) moveCursor({mCursor.stage, i + 1});
+            return;
+        }
         if (mSettings.count(name) && mSettings.at(name) == value) return;
         mSettings[name] = value;
         mDirty = true;
@@ -835,8 +891,6 @@ private:
             glBindFramebuffer(GL_FRAMEBUFFER, 0);
             return out;
         });
-        // Those runs replaced the current technique's textures with the comparison's: run it again.
-        mDirty = true;
     }
 
     void drawComparison(DrawList& dl, const Rect& area) {
@@ -937,29 +991,89 @@ private:
 
     // ---- stepping ----
 
+    // The stage the cursor stands in (the last one for the complete frame).
     int stageShown() const {
-        const int n = int(mTechniques.at(mIds[std::size_t(mCurrent)])->stages().size());
-        return mStopAfter < 0 || mStopAfter >= n ? n - 1 : mStopAfter;
+        const int n = int(technique().stages().size());
+        return mCursor.stage < 0 || mCursor.stage >= n ? n - 1 : mCursor.stage;
     }
 
-    // S / Shift+S: run up to the next / previous stage (the last stage runs everything).
-    void stepStage(int delta) {
+    // The cursor's sub-step position: {at, count} (1-based; {count, count} when the stage runs whole,
+    // {0, 0} for a stage without sub-steps).
+    std::pair<int, int> substepState() const {
+        const int count = int(technique().substepValues(stageShown(), mSettings).size());
+        if (count == 0) return {0, 0};
+        return {mCursor.substep <= 0 ? count : std::min(mCursor.substep, count), count};
+    }
+
+    // Whether the frame is the complete algorithm: the last stage, whole, and no sub-step parameter a
+    // lesson (or --set) left cutting an earlier stage short.
+    std::string stoppedEarly() const {
+        const auto& stages = technique().stages();
+        const int shown = stageShown();
+        const auto [at, count] = substepState();
+        std::string why;
+        if (shown < int(stages.size()) - 1)
+            why = "stopped after stage " + std::to_string(shown + 1) + "/" + std::to_string(stages.size()) + " " +
+                  stages[std::size_t(shown)].id;
+        if (count > 0 && at < count)
+            why += (why.empty() ? "stopped in " + stages[std::size_t(shown)].id : std::string()) + " at sub-step " +
+                   std::to_string(at) + "/" + std::to_string(count);
+        const viz::Settings defaults = viz::completeSettings(technique(), {});
+        for (const viz::StageInfo& st : stages)
+            if (!st.substepParam.empty() && mSettings.count(st.substepParam) &&
+                mSettings.at(st.substepParam) != defaults.at(st.substepParam))
+                why += (why.empty() ? "" : "; ") + st.substepParam + "=" + format("%g", mSettings.at(st.substepParam)) +
+                       " cuts " + st.id + " short";
+        return why;
+    }
+
+    void moveCursor(StepCursor c) {
         const int n = int(technique().stages().size());
-        mStopAfter = std::clamp(stageShown() + delta, 0, n - 1);
+        if ((c.stage < 0 || c.stage >= n - 1) && c.substep <= 0) c = {};  // the complete frame
+        if (c.stage < 0 && c.substep > 0) c.stage = n - 1;
+        if (c == mCursor) return;
+        mCursor = c;
         mDirty = true;
     }
 
-    // The current stage's sub-step count and position (1-based; the count when it runs them all).
-    std::pair<int, int> substepState() {
-        const viz::SubstepPosition pos = viz::substepPosition(technique(), stageShown(), mSettings);
-        return {pos.at, pos.count};
+    // S / Shift+S: the next / previous stage, wrapping (the last stage is the complete frame). A stage
+    // with sub-steps is entered at its first.
+    void stepStage(int delta) {
+        const int n = int(technique().stages().size());
+        const int stage = ((stageShown() + delta) % n + n) % n;
+        const bool substeps = !technique().substepValues(stage, mSettings).empty();
+        moveCursor({stage == n - 1 ? -1 : stage, substeps && stage < n - 1 ? 1 : 0});
+        mNotice.clear();
     }
 
-    // D / Shift+D: one sub-step more / fewer inside the current stage (planes, levels, passes, VPLs).
-    void stepSubstep(int delta) {
+    // D / Shift+D: one sub-step more / fewer inside the current stage; Home / End: the first / last.
+    void stepSubstep(int delta) { setSubstepAt(substepState().first + delta); }
+    void setSubstepAt(int k) {
         const auto [at, count] = substepState();
-        if (count <= 0) return;
-        if (viz::setSubstep(technique(), stageShown(), mSettings, at + delta)) mDirty = true;
+        const std::string& id = technique().stages()[std::size_t(stageShown())].id;
+        if (count <= 0) {
+            mNotice = id + " has no sub-steps (S steps the stages)";
+            return;
+        }
+        if (k < 1 || k > count) {
+            mNotice = (k < 1 ? "already at the first sub-step of " : "already at the last sub-step of ") + id + " (" +
+                      std::to_string(at) + "/" + std::to_string(count) + ")";
+            return;
+        }
+        mNotice.clear();
+        moveCursor({stageShown(), k == count ? 0 : k});
+    }
+
+    // The timeline under the views: a click or a drag puts the cursor there (step_timeline.h).
+    void drawStepTimeline() {
+        mTimeline = timelineSegments(technique(), mSettings, mTimelineRect.min.x, mTimelineRect.max.x);
+        drawTimeline(*mBackground, *mDrawList, mTimelineRect, mTimeline, mCursor, mScale);
+        mNamedRects["timeline"] = mTimelineRect;
+        mHits.push_back({mTimelineRect, [this] {
+                             mDragTimeline = true;
+                             mNotice.clear();
+                             moveCursor(timelineCursorAt(mTimeline, mHover.x));
+                         }});
     }
 
     // ---- ray inspector ----
@@ -1073,27 +1187,29 @@ private:
 
     // ---- techniques and rendering ----
 
-    viz::Technique& technique() { return *mTechniques.at(mIds[std::size_t(mCurrent)]); }
-    const viz::Technique& technique() const { return *mTechniques.at(mIds[std::size_t(mCurrent)]); }
+    // The main views' instance of the current technique (its own: no other consumer runs it).
+    viz::Technique& technique() { return mRunners.at(mIds[std::size_t(mCurrent)])->technique(); }
+    const viz::Technique& technique() const { return mRunners.at(mIds[std::size_t(mCurrent)])->technique(); }
 
     void selectTechnique(int index) {
         const int n = int(mIds.size());
         index = ((index % n) + n) % n;
         const std::string& id = mIds[std::size_t(index)];
         try {
-            if (!mTechniques.count(id)) mTechniques[id] = viz::makeTechnique(id);
+            if (!mRunners.count(id)) mRunners[id] = std::make_unique<StageRunner>(viz::makeTechnique(id));
         } catch (const std::exception& e) {
             mError = e.what();
             return;
         }
         mCurrent = index;
-        mStopAfter = -1;  // a new technique starts complete
+        mCursor = {};  // a new technique starts on its complete frame
         mError.clear();
         mSettingsError.clear();
         // The session's values for this technique, then the command line's on top.
         viz::Settings given = mSession.settings.count(id) ? mSession.settings.at(id) : viz::Settings{};
         for (const auto& [name, value] : mOptions.settings) given[name] = value;
         mSettings = settingsFor(technique(), given, mSettingsError);
+        if (auto c = takeSubsteps(technique(), mSettings)) mCursor = *c;
         try {
             mPlan = technique().plan(mScene, mSettings);
         } catch (const std::exception& e) {
@@ -1118,30 +1234,22 @@ private:
             mWorker->submit({t.id(), mScene.camera, mSettings, mOptions.width, mOptions.height});
             return;
         }
-        viz::FrameInput input;
-        input.scene = &mScene;
-        input.width = mOptions.width;
-        input.height = mOptions.height;
-        input.settings = mSettings;
-        const int stageCount = int(t.stages().size());
-        input.stopAfterStage = mStopAfter >= 0 && mStopAfter < stageCount - 1 ? mStopAfter : -1;
+        glm::ivec2 size{mOptions.width, mOptions.height};
         // While the camera is being dragged or flown, render at half size to keep up; the full size
         // follows when the interaction stops.
-        mReduced = (mDragButton >= 0 || mGizmoDrag || anyFlyKeyDown()) && input.width >= 64 && input.height >= 48;
-        if (mReduced) {
-            input.width /= 2;
-            input.height /= 2;
-        }
+        mReduced = (mDragButton >= 0 || mGizmoDrag || anyFlyKeyDown()) && size.x >= 64 && size.y >= 48;
+        if (mReduced) size /= 2;
         // Panes borrow textures the run is about to replace.
         clearPanes();
         const auto start = Clock::now();
         try {
-            mOutput = t.run(input);
+            // The scheduler re-runs only the stages whose inputs changed (a sub-step: its stage alone).
+            mOutput = mRunners.at(t.id())->run(mScene, size.x, size.y, mSettings, mCursor);
             mError.clear();
             mHaveOutput = true;
             mPass = 1;
             mPassCount = 1;
-            mOutputSize = {input.width, input.height};
+            mOutputSize = size;
         } catch (const std::exception& e) {
             mError = e.what();
             mOutput = {};
@@ -1591,6 +1699,11 @@ private:
         const bool shift = (mods & GLFW_MOD_SHIFT) != 0;
         mUiInput.shift = shift;
         mUiInput.ctrl = (mods & GLFW_MOD_CONTROL) != 0;
+        // Home / End: the first / last sub-step, unless a text field is being edited.
+        if ((key == GLFW_KEY_HOME || key == GLFW_KEY_END) && !mUi->textFocused()) {
+            setSubstepAt(key == GLFW_KEY_HOME ? 1 : substepState().second);
+            return;
+        }
         if (const auto k = uiKey(key)) {
             mUiInput.keys.push_back(*k);  // widgets: arrows, Enter, Space, editing keys
             return;
@@ -1650,6 +1763,10 @@ private:
     }
 
     void onMouseButtonAt(int button, int action, glm::vec2 p) {
+        if (action == GLFW_RELEASE && mDragTimeline) {
+            mDragTimeline = false;
+            return;
+        }
         if (action == GLFW_PRESS) {
             if (button == GLFW_MOUSE_BUTTON_LEFT) {
                 for (const auto& [rect, action2] : mHits) {
@@ -1732,6 +1849,10 @@ private:
 
     void onCursorPixels(glm::vec2 p) {
         mHover = p;
+        if (mDragTimeline) {
+            moveCursor(timelineCursorAt(mTimeline, p.x));
+            return;
+        }
         if (mGizmoDrag) {
             dragGizmo(p);
             return;
@@ -2126,8 +2247,11 @@ private:
         const float toggleWidth = mFont->measure(toggle) + 16.0f * s;
         const Rect toggleRect{{v.title.max.x - toggleWidth, v.title.min.y + 1.0f * s},
                               {v.title.max.x - 2.0f * s, v.title.min.y + line + 2.0f * s}};
-        const float x = dl.textClipped({v.title.min.x + 4.0f * s, v.title.min.y + 2.0f * s}, title, kAccent,
+        float x = dl.textClipped({v.title.min.x + 4.0f * s, v.title.min.y + 2.0f * s}, title, kAccent,
                                  toggleRect.min.x - 4.0f * s);
+        // Not the complete algorithm: every view says where the run stopped, in the warning colour.
+        const std::string early = mHaveOutput && !stoppedEarly().empty() ? "   [" + stoppedEarly() + "]" : "";
+        if (!early.empty()) x = dl.textClipped({x, v.title.min.y + 2.0f * s}, early, kError, toggleRect.min.x - 4.0f * s);
         const SpecialCounts& n = v.counts;
         std::string counts;
         if (n.nan + n.inf + n.negative > 0) {
@@ -2153,14 +2277,14 @@ private:
         if (!v.pane.plots.empty()) {
             // The technique's plots of this intermediate, stacked (its image is what `render --layer` writes).
             drawPlots(v);
-            mViewRects.push_back({v.pane.id, title + counts, v.image, id});
+            mViewRects.push_back({v.pane.id, title + early + counts, v.image, id});
             drawStatusBands(dl, v.image);
             if (v.display.stripOpen && v.strip.size().y > 0.0f) drawStrip(id, v);
             return;
         }
         mPaneDraws.push_back({v.image, &v.pane, &v.transform, resolveMapping(v.pane, v.display, mExposure, v.measured)});
         mViewRects.push_back({mHaveOutput ? (v.pane.id.empty() ? v.content : v.pane.id) : std::string("none"),
-                              title + counts, v.image, id});
+                              title + early + counts, v.image, id});
         if (!v.pane.unavailable.empty())
             dl.textClipped({v.image.min.x + 8.0f * s, v.image.min.y + 8.0f * s}, v.pane.unavailable, kDim, v.image.max.x);
         if (v.pane.texture != 0) texelValues(v.pane, v.image, v.transform);
@@ -2537,8 +2661,10 @@ private:
             head += "   stage " + std::to_string(shown + 1) + "/" + std::to_string(stages.size()) + " " +
                     stages[std::size_t(shown)].id;
             const auto [at, count] = substepState();
-            if (count > 0) head += " step " + std::to_string(at) + "/" + std::to_string(count);
-            head += " (S, D)";
+            if (count > 0) head += " sub-step " + std::to_string(at) + "/" + std::to_string(count);
+            head += " (S, D, Home, End)";
+            if (mHaveOutput && mOutput.firstStageRun > 0)
+                head += "   re-ran from stage " + std::to_string(mOutput.firstStageRun + 1) + " (earlier ones kept)";
         }
         mBackground->rect({{0.0f, 0.0f}, {float(fb.x), 3.0f * line + 2.0f * pad}}, kPanel);
         dl.textClipped({pad, pad}, head, kText, float(fb.x) - pad);
@@ -2561,7 +2687,7 @@ private:
 
         // Help line at the bottom.
         const std::string help = mode == CameraController::Mode::Orbit
-            ? "camera: ORBIT (target " + format("%.2f", mController.targetDistance()) + ")   Tab/Shift+Tab or 1-9 technique   [ ] view   , . layer   +/- exposure (X auto)   C fly   R reset   P play/pause   "
+            ? "camera: ORBIT (target " + format("%.2f", mController.targetDistance()) + ")   Tab/Shift+Tab or 1-9 technique   S/Shift+S stage   D/Shift+D sub-step   Home/End   [ ] view   , . layer   +/- exposure (X auto)   C fly   R reset   P play/pause   "
               "left drag orbit, wheel zoom, right/middle drag pan   Esc quit"
             : "camera: FLY   Tab/Shift+Tab or 1-9 technique   [ ] view   , . layer   +/- exposure (X auto)   C orbit   R reset   P play/pause   "
               "right drag look, WASD move, Q/E down/up, Shift faster, middle drag pan   Esc quit";
@@ -2615,8 +2741,11 @@ private:
         float gridHeight = std::clamp(half * aspect + chrome, 0.5f * panes.size().y, 0.74f * panes.size().y);
         // The ray inspector's plot needs height: the grid gives some up while it is open.
         if (mProbe) gridHeight = std::min(gridHeight, 0.56f * panes.size().y);
+        // The stepping timeline sits between the grid and the panels.
+        const float timelineHeight = line + 8.0f * s;
         const Rect gridArea{panes.min, {panes.max.x, panes.min.y + gridHeight}};
         mViewArea = gridArea;
+        mTimelineRect = {{panes.min.x, gridArea.max.y + 0.5f * pad}, {panes.max.x, gridArea.max.y + 0.5f * pad + timelineHeight}};
         beginWidgets(fb);
         {
             // CPU cost of the view grid (layout, titles, readouts, markers, strips), for the sidecar.
@@ -2624,8 +2753,9 @@ private:
             drawViewGrid(gridArea);
             mGridMilliseconds = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
         }
-        const Rect left{{panes.min.x, gridArea.max.y + pad}, {panes.min.x + half, panes.max.y}};
-        const Rect right{{panes.max.x - half, gridArea.max.y + pad}, panes.max};
+        drawStepTimeline();
+        const Rect left{{panes.min.x, mTimelineRect.max.y + pad}, {panes.min.x + half, panes.max.y}};
+        const Rect right{{panes.max.x - half, mTimelineRect.max.y + pad}, panes.max};
         if (mProbe) {
             if (left.size().y > 6.0f * line) drawInspector(dl, left);
         } else if (mHaveOutput && !mOutput.timing.stages.empty()) {
@@ -2813,6 +2943,8 @@ private:
         const std::string id = mIds[std::size_t(mCurrent)];
         presetWidget(id);
         for (const viz::ParamInfo& p : technique().params()) {
+            // Sub-steps are the stepping cursor's (S, D, the timeline), not settings.
+            if (substepStageOf(technique(), p.name) >= 0) continue;
             double value = mSettings.count(p.name) ? mSettings.at(p.name) : p.defaultValue;
             bool changed = false;
             if (!p.choices.empty()) {
@@ -2875,7 +3007,8 @@ private:
     CameraController mController;
     double mGizmoArm = 1.0;  // scene units (kGizmoArm of the scene camera's orbit distance)
     std::vector<std::string> mIds;
-    std::map<std::string, std::unique_ptr<viz::Technique>> mTechniques;  // main-thread instances
+    // Instances for the other consumers (difference views, the comparison grid), apart from mRunners.
+    std::map<std::string, std::unique_ptr<viz::Technique>> mTechniques;
     int mCurrent = 0;
     viz::Settings mSettings;
     viz::Plan mPlan;
@@ -2936,7 +3069,12 @@ private:
     std::optional<glm::ivec2> mPendingInspect;  // a lesson step's pixel, inspected when its result is in
     std::unique_ptr<LessonPlayer> mLesson;      // the lesson panel, when a lesson is open
     glm::ivec2 mLessonSize{0};                  // --size given with a lesson: every step at that size
-    int mStopAfter = -1;                     // stepping: run up to this stage (-1: all)
+    StepCursor mCursor;                      // stepping: where the main views' run stops (not a setting)
+    // The main views' technique instances, one per technique, each with its last run's key.
+    std::map<std::string, std::unique_ptr<StageRunner>> mRunners;
+    std::vector<TimelineSegment> mTimeline;  // the stepping timeline as drawn last
+    Rect mTimelineRect;
+    bool mDragTimeline = false;
     std::string mProbeTechnique;
     bool mProbeHasValue = false;
     glm::dvec3 mProbeValue{0.0};

@@ -10,7 +10,7 @@
 //   wheel NAME N         turn the mouse wheel N notches (positive: away from the user, zooming in) over
 //                        the centre of a view or widget
 //   key NAME             press a key: Tab, Enter, Escape, Space, Left, Right, Up, Down, PageUp,
-//                        PageDown, F1-F12, 0-9,
+//                        PageDown, Home, End, F1-F12, 0-9,
 //                        A-Z, [ and ], , and . (previous / next layer), optionally after Shift+
 //                        and/or Ctrl+ (Shift+S)
 //   frames N             let N frames pass

@@ -18,6 +18,17 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// What the window exported equals what `render` wrote, pixel for pixel (RGB).
+void expectSameImage(const std::string& window, const std::string& cliPath) {
+    const Image gui = readImage(window);
+    const Image cli = readImage(cliPath);
+    ASSERT_EQ(gui.width, cli.width);
+    ASSERT_EQ(gui.height, cli.height);
+    for (int y = 0; y < cli.height; ++y)
+        for (int x = 0; x < cli.width; ++x)
+            for (int c = 0; c < 3; ++c) ASSERT_EQ(gui.at(x, y, c), cli.at(x, y, c)) << x << "," << y;
+}
+
 class GuiCli : public WindowCliTest {};
 
 // Mean and spread of the pixels inside a rectangle (window pixels).
@@ -333,18 +344,73 @@ TEST_F(GuiCli, TheRayInspectorPlotsTheSlicesPlanesAlongTheRay) {
     EXPECT_EQ(k, points.size());
 }
 
+// Stepping as a student does it: the window opens on the complete frame; S goes to the first stage (it
+// wraps), a stage with sub-steps is entered at its first, End and Home jump, D past the last says so and
+// changes nothing; the sub-step is the cursor's, never a setting; every view warns while stopped early.
 TEST_F(GuiCli, SteppingStopsAtAStageAndInsideItAtASubstep) {
-    // Back two stages from the complete run (slices: compose, resolve -> planes), then two planes fewer.
-    const fs::path script = writeText("step.txt", "key Shift+S\nkey Shift+S\nframes 1\nkey Shift+D\nkey Shift+D\nframes 1\n");
+    const std::string shot = "\nframes 1\nscreenshot ";
+    const fs::path script = writeText(
+        "step.txt", "frames 1\nscreenshot " + path("s0.png").string() + "\nkey S" + shot + path("s1.png").string() +
+                        "\nkey S\nkey S" + shot + path("s3.png").string() + "\nkey End\nkey D" + shot +
+                        path("end.png").string() + "\nkey Shift+D\nkey Shift+D" + shot + path("back.png").string() +
+                        "\nkey Home\nkey Shift+D" + shot + path("home.png").string() + "\nkey Shift+S\nkey Shift+S\nkey Shift+S" +
+                        shot + path("wrap.png").string() + "\nclick timeline 0.01 0.5\nframes 1\n");
     const RunResult r = run("gui --scene grate --technique slices --size 40x30 --set planes=16 --script " +
-                            script.string() + " --screenshot " + path("step.png").string());
+                            script.string() + " --screenshot " + path("click.png").string());
     ASSERT_EQ(r.exitCode, 0) << r.err;
-    const nlohmann::json j = nlohmann::json::parse(readFile(path("step.json")));
-    EXPECT_EQ(j.at("stage"), "slices.planes");
-    EXPECT_EQ(j.at("last_stage_run"), 2);
-    EXPECT_EQ(j.at("settings").at("planes_drawn").get<double>(), 14.0);
+    const auto shotJson = [&](const char* name) { return nlohmann::json::parse(readFile(path(name))); };
+    const auto title = [](const nlohmann::json& j) { return j.at("views")[0].at("title").get<std::string>(); };
+    const nlohmann::json s0 = shotJson("s0.json");
+    EXPECT_EQ(s0.at("stage"), "slices.compose");
+    EXPECT_EQ(s0.at("stopped_early"), "");
+    EXPECT_EQ(title(s0).find("stopped"), std::string::npos) << title(s0);
+    const nlohmann::json s1 = shotJson("s1.json");
+    EXPECT_EQ(s1.at("stage"), "slices.shadow_maps") << "S from the complete frame goes to the first stage";
+    EXPECT_NE(title(s1).find("stopped after stage 1/5"), std::string::npos) << title(s1);
+    const nlohmann::json s3 = shotJson("s3.json");
+    EXPECT_EQ(s3.at("stage"), "slices.planes");
+    EXPECT_EQ(s3.at("substep"), 1) << "a stage is entered at its first sub-step";
+    EXPECT_EQ(s3.at("substep_count"), 16);
+    EXPECT_EQ(s3.at("last_stage_run"), 2);
     // L_air does not exist yet: the view shows what the planes stage published.
-    EXPECT_EQ(j.at("views")[1].at("name"), "slices.accumulation");
+    EXPECT_EQ(s3.at("views")[1].at("name"), "slices.accumulation");
+    const nlohmann::json end = shotJson("end.json");
+    EXPECT_EQ(end.at("substep"), 16);
+    EXPECT_NE(end.at("notice").get<std::string>().find("already at the last sub-step"), std::string::npos)
+        << end.at("notice");
+    const nlohmann::json back = shotJson("back.json");
+    EXPECT_EQ(back.at("substep"), 14);
+    EXPECT_EQ(back.at("settings").at("planes_drawn").get<double>(), 0.0) << "the sub-step is not a setting";
+    EXPECT_NE(back.at("stopped_early").get<std::string>().find("sub-step 14/16"), std::string::npos);
+    EXPECT_EQ(back.at("first_stage_run"), 2) << "a sub-step re-runs its stage only";
+    const nlohmann::json home = shotJson("home.json");
+    EXPECT_EQ(home.at("substep"), 1);
+    EXPECT_NE(home.at("notice").get<std::string>().find("already at the first sub-step"), std::string::npos);
+    const nlohmann::json wrap = shotJson("wrap.json");
+    EXPECT_EQ(wrap.at("stage"), "slices.compose") << "Shift+S from the first stage wraps to the complete frame";
+    EXPECT_EQ(wrap.at("stopped_early"), "");
+    const nlohmann::json click = shotJson("click.json");
+    EXPECT_EQ(click.at("stage"), "slices.shadow_maps") << "the timeline's left end is the first stage";
+}
+
+// Stepping the vsv scan pass by pass and moving on leaves nothing behind: the complete frame afterwards is
+// the one `render` writes (the old window kept scan_passes=2 as a setting and drew a wrong gather).
+TEST_F(GuiCli, LeavingAStageRestoresTheCompleteFrame) {
+    const fs::path script = writeText("leak.txt", "key Shift+S\nkey Shift+S\nframes 1\nkey D\nkey D\nframes 1\nscreenshot " +
+                                                      path("scan.png").string() + "\nkey S\nkey S\nframes 1\nkey E\nframes 1\n");
+    const RunResult r = run("gui --scene grate --technique vsv --size 40x30 --export-dir " + path("exports").string() +
+                            " --script " + script.string() + " --screenshot " + path("after.png").string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const nlohmann::json scan = nlohmann::json::parse(readFile(path("scan.json")));
+    EXPECT_EQ(scan.at("stage"), "vsv.scan");
+    EXPECT_EQ(scan.at("substep"), 3);
+    const nlohmann::json after = nlohmann::json::parse(readFile(path("after.json")));
+    EXPECT_EQ(after.at("stage"), "vsv.compose");
+    EXPECT_EQ(after.at("stopped_early"), "");
+    EXPECT_EQ(after.at("settings").at("scan_passes").get<double>(), -1.0);
+    ASSERT_EQ(run("render --scene grate --technique vsv --size 40x30 --layer airlight --out " + path("cli.exr").string())
+                  .exitCode, 0);
+    expectSameImage((path("exports") / "grate-vsv-airlight.exr").string(), path("cli.exr").string());
 }
 
 TEST_F(GuiCli, ExportingAViewWritesWhatRenderWrites) {
@@ -356,13 +422,7 @@ TEST_F(GuiCli, ExportingAViewWritesWhatRenderWrites) {
     EXPECT_TRUE(fs::exists(path("exports") / "grate-raymarch-window.png"));
     ASSERT_EQ(run("render --scene grate --technique raymarch --size 40x30 --set samples=64 --layer airlight --out " +
                   path("cli.exr").string()).exitCode, 0);
-    const Image gui = readImage((path("exports") / "grate-raymarch-airlight.exr").string());
-    const Image cli = readImage(path("cli.exr").string());
-    ASSERT_EQ(gui.width, cli.width);
-    ASSERT_EQ(gui.height, cli.height);
-    for (int y = 0; y < cli.height; ++y)
-        for (int x = 0; x < cli.width; ++x)
-            for (int c = 0; c < 3; ++c) ASSERT_EQ(gui.at(x, y, c), cli.at(x, y, c)) << x << "," << y;
+    expectSameImage((path("exports") / "grate-raymarch-airlight.exr").string(), path("cli.exr").string());
 }
 
 TEST_F(GuiCli, TheComparisonGridShowsEveryTechniqueWithItsErrorAndTime) {

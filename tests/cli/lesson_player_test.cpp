@@ -299,18 +299,21 @@ TEST_F(LessonPlayer, ASubstepAnimationStepsThroughThePlanesAndEndsOnTheStep) {
                             path("again.png").string());
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const json mid = sidecar("mid.png"), done = sidecar("done.png"), again = sidecar("again.png");
-    const double k = mid.at("settings").at("planes_drawn");
-    EXPECT_GE(k, 1.0);
-    EXPECT_LT(k, 16.0);
+    // The animation moves the stepping cursor (the sub-step is not a setting).
+    const int k = mid.at("substep").get<int>();
+    EXPECT_GE(k, 1);
+    EXPECT_LT(k, 16);
+    EXPECT_EQ(mid.at("substep_count"), 16);
+    EXPECT_EQ(mid.at("settings").at("planes_drawn").get<double>(), 0.0);
     EXPECT_TRUE(mid.at("lesson").at("animation").at("playing").get<bool>());
     EXPECT_TRUE(mid.at("lesson").at("matches_step").get<bool>());  // the animation is part of the step
     EXPECT_EQ(mid.at("stage"), "slices.planes");
-    EXPECT_EQ(done.at("settings").at("planes_drawn"), 0.0);  // every plane: the static step
+    EXPECT_EQ(done.at("substep"), 16);  // every plane: the static step
     EXPECT_FALSE(done.at("lesson").at("animation").at("playing").get<bool>());
     // Space plays it again from the first plane.
     EXPECT_TRUE(again.at("lesson").at("animation").at("playing").get<bool>());
-    EXPECT_LT(again.at("settings").at("planes_drawn").get<double>(), k);
-    EXPECT_GE(again.at("settings").at("planes_drawn").get<double>(), 1.0);
+    EXPECT_LT(again.at("substep").get<int>(), k);
+    EXPECT_GE(again.at("substep").get<int>(), 1);
 }
 
 TEST_F(LessonPlayer, ALightOrbitCirclesTheAimPointAndReturnsToTheStart) {

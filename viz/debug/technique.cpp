@@ -114,6 +114,15 @@ std::vector<double> Technique::substepValues(int stage, const Settings& settings
     return values;
 }
 
+double Technique::substepLimit(const FrameInput& input, int stage) const {
+    const StageInfo& st = stages().at(std::size_t(stage));
+    const double set = input.settings.at(st.substepParam);
+    if (input.substep <= 0 || input.stopAfterStage != stage) return set;
+    const std::vector<double> values = substepValues(stage, input.settings);
+    if (values.empty()) return set;
+    return values[std::size_t(std::clamp(input.substep, 1, int(values.size())) - 1)];
+}
+
 SubstepPosition substepPosition(const Technique& technique, int stage, const Settings& settings) {
     if (stage < 0 || stage >= int(technique.stages().size())) return {};
     const Settings complete = completeSettings(technique, settings);

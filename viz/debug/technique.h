@@ -1,6 +1,8 @@
 // The interface every technique implements (reference, raymarch, slices, polyvol, minmax, vsv, ivsv).
-// A technique declares ordered stages; each stage publishes named intermediates. run() always starts
-// at stage 0 and stops after the requested stage, so stepping is re-running (see STYLE.md 1.3).
+// A technique declares ordered stages; each stage publishes named intermediates. run() starts at stage 0
+// (or, when its caller vouches that the earlier stages' inputs did not change, at FrameInput::
+// resumeAtStage, republishing what they published last time: debug/stage_reuse.h) and stops after the
+// requested stage, at the stepping cursor's sub-step.
 #pragma once
 
 #include <map>
@@ -137,6 +139,19 @@ struct FrameInput {
     int height = 0;
     Settings settings;          // already validated and completed with defaults
     int stopAfterStage = -1;    // index into stages(); -1 = run everything
+    // The stepping cursor's sub-step inside stage stopAfterStage: 1 .. the count substepValues() lists
+    // for it (the last runs the stage whole); 0 runs the stage whole. It is not a setting: a stage's
+    // sub-step parameter in `settings` (the CLI's --set planes_drawn=7) applies only where the cursor
+    // does not step that stage (Technique::substepLimit).
+    int substep = 0;
+    // Stage-level reuse (app/run_scheduler.h): the caller vouches that stages before resumeAtStage would
+    // compute what this instance's previous run computed for them (same scene, camera, size and every
+    // parameter they read, StageInfo::params), so the technique may keep their results and skip them.
+    // substepOnly: stage resumeAtStage itself differs only in the cursor's sub-step (it may then redo only
+    // what the sub-step changes). A technique is free to ignore both; FrameOutput::firstStageRun says
+    // what it did.
+    int resumeAtStage = 0;
+    bool substepOnly = false;
 };
 
 struct FrameOutput {
@@ -150,6 +165,9 @@ struct FrameOutput {
     // note; the window shows the first in its header.
     std::vector<std::string> notes;
     int lastStageRun = -1;
+    // The first stage this run computed (> 0: the earlier ones were carried over from the previous run
+    // of the same instance, FrameInput::resumeAtStage; timing lists only the stages that ran).
+    int firstStageRun = 0;
 };
 
 class Technique {
@@ -194,6 +212,9 @@ public:
     // order depends on the scene-independent settings in another way (levels from a map size, passes
     // from a grid size, coarse to fine) override it.
     virtual std::vector<double> substepValues(int stage, const Settings& settings) const;
+    // The value of stage `stage`'s sub-step parameter for this run: the cursor's (substepValues at
+    // input.substep) when the run stops inside that stage with a sub-step, else the settings' value.
+    double substepLimit(const FrameInput& input, int stage) const;
 };
 
 // Where stepping inside a stage stands: sub-step `at` of `count` (1-based; `count` when the stage runs

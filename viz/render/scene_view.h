@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "debug/stage_reuse.h"
 #include "debug/technique.h"
 #include "gl/texture.h"
 #include "render/compose.h"
@@ -47,9 +48,10 @@ public:
 
     // The two stages every GPU technique starts with, at stage indices 0 (shadow maps, settings
     // `shadow_map` and `area_samples`) and 1 (camera view), each timed with the StageClock and recorded as
-    // the last stage run. Returns false when the run stops after one of them (`stop`: the last stage to run).
+    // the last stage run, or carried over from the last run where `reuse` (begun by the caller) says so.
+    // Returns false when the run stops after one of them (`stop`: the last stage to run).
     bool runSharedStages(const FrameInput& input, int stop, const std::vector<StageInfo>& stages,
-                         const std::string& prefix, FrameOutput& out);
+                         const std::string& prefix, FrameOutput& out, StageReuse& reuse);
 
     // ---- linked cursors (the window's marks for a hovered frame pixel; render/shadow_map_markers.h) ----
     // The eye ray of frame pixel `pixel` (row 0 at the top) of the last run: unit direction w (world axes;

@@ -97,6 +97,8 @@ public:
     Id hot() const { return mHot; }
     Id active() const { return mActive; }
     Id focused() const { return mFocused; }
+    // A text input held the keyboard last frame (editing keys such as Home and End are its).
+    bool textFocused() const { return mTextFocus; }
     const Rect& lastRect() const { return mLastRect; }
     Id lastId() const { return mLastId; }
     // The rectangle of every widget drawn this frame, by its full label (automation clicks at names).

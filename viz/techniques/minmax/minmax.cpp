@@ -361,7 +361,6 @@ public:
         const Settings& s = input.settings;
         mMarkCamera = scene.camera;
         mMarkSize = {input.width, input.height};
-        mMarkTraversed = false;
         FrameOutput out;
         out.plan = plan(scene, s);
         out.timing.clock = gl::StageClock::method();
@@ -369,60 +368,81 @@ public:
         gl::StageClock clock;
 
         // ---- shadow maps and camera view ----
-        if (!mView.runSharedStages(input, stop, mStages, "minmax", out)) return out;
+        mReuse.begin(input, out);
+        if (!mReuse.substepOnly(kTraverseIndex)) mMarkTraversed = false;
+        if (!mView.runSharedStages(input, stop, mStages, "minmax", out, mReuse)) return out;
 
         // The plan decides (sigma_s = 0 skips the epipolar stages unless force_features=1 runs them).
         const auto runs = [&](int stage) { return out.plan.stages[std::size_t(stage)].runs; };
         // ---- rectify ----
-        clock.begin();
-        prepareLights(scene, input, out.notes);
         const bool svd = s.at("integrand") == 1.0;
-        if (runs(kRectifyIndex)) {
-            for (LightWork& w : mWork) {
-                if (w.point()) measureRowGamma(w, scene, input);
-                rectify(w);
-                if (svd) prefixSums(w, scene, input);
+        if (mReuse.carries(kRectifyIndex)) {
+            mReuse.carry(kRectifyIndex, out);
+        } else {
+            clock.begin();
+            prepareLights(scene, input, out.notes);
+            if (runs(kRectifyIndex)) {
+                for (LightWork& w : mWork) {
+                    if (w.point()) measureRowGamma(w, scene, input);
+                    rectify(w);
+                    if (svd) prefixSums(w, scene, input);
+                }
             }
+            out.timing.stages.push_back({kStageRectify, clock.endMilliseconds()});
+            publishRectified(out, input);
+            if (runs(kRectifyIndex)) publishRowGamma(out);
+            if (svd && runs(kRectifyIndex)) publishLowRank(out);
+            mReuse.ran(kRectifyIndex, out);
         }
-        out.timing.stages.push_back({kStageRectify, clock.endMilliseconds()});
-        publishRectified(out, input);
-        if (runs(kRectifyIndex)) publishRowGamma(out);
-        if (svd && runs(kRectifyIndex)) publishLowRank(out);
         out.lastStageRun = kRectifyIndex;
         if (stop == kRectifyIndex) return out;
 
         // ---- mipmap ----
-        clock.begin();
-        const int wantedLevels = int(s.at("mip_levels"));
         bool complete = true;
-        if (runs(kMipmapIndex)) {
-            for (LightWork& w : mWork) {
-                buildTree(w, wantedLevels);
-                complete = complete && w.levelsBuilt == levelCount(w);
+        if (mReuse.carries(kMipmapIndex)) {
+            mReuse.carry(kMipmapIndex, out);
+            for (const LightWork& w : mWork) complete = complete && (!runs(kMipmapIndex) || w.levelsBuilt == levelCount(w));
+        } else {
+            clock.begin();
+            const int wantedLevels = int(substepLimit(input, kMipmapIndex));
+            if (runs(kMipmapIndex)) {
+                for (LightWork& w : mWork) {
+                    buildTree(w, wantedLevels);
+                    complete = complete && w.levelsBuilt == levelCount(w);
+                }
             }
+            out.timing.stages.push_back({kStageMipmap, clock.endMilliseconds()});
+            publishTree(out, input);
+            mReuse.ran(kMipmapIndex, out);
         }
-        out.timing.stages.push_back({kStageMipmap, clock.endMilliseconds()});
-        publishTree(out, input);
         out.lastStageRun = kMipmapIndex;
         if (stop == kMipmapIndex || !complete) return out;
 
         // ---- traverse ----
-        clock.begin();
-        allocateTargets(input.width, input.height);
-        mAirlight.clear(glm::vec4(0.0f));
-        mVisited.clear(glm::vec4(0.0f));
-        mNearMask.clear(glm::vec4(0.0f));
-        mRayCoords.clear(glm::vec4(0.0f));
-        if (runs(kTraverseIndex)) {
-            const gl::Program& program = traverseProgram(out.plan);
-            for (std::size_t i = 0; i < mWork.size(); ++i)
-                traverse(program, scene, input, &mWork[i], mWork[i].gpuIndex, i == 0);
-            for (int li : mBruteLights) traverse(program, scene, input, nullptr, li, false);
+        // Stepping the picked pixel's walk (the cursor's sub-step alone changed): the traversal's images
+        // stand; only the walk's view is drawn again.
+        if (!mReuse.substepOnly(kTraverseIndex)) {
+            clock.begin();
+            allocateTargets(input.width, input.height);
+            mAirlight.clear(glm::vec4(0.0f));
+            mVisited.clear(glm::vec4(0.0f));
+            mNearMask.clear(glm::vec4(0.0f));
+            mRayCoords.clear(glm::vec4(0.0f));
+            if (runs(kTraverseIndex)) {
+                const gl::Program& program = traverseProgram(out.plan);
+                for (std::size_t i = 0; i < mWork.size(); ++i)
+                    traverse(program, scene, input, &mWork[i], mWork[i].gpuIndex, i == 0);
+                for (int li : mBruteLights) traverse(program, scene, input, nullptr, li, false);
+            }
+            out.timing.stages.push_back({kStageTraverse, clock.endMilliseconds()});
+            mMarkTraversed = runs(kTraverseIndex) && !mWork.empty();
+        } else {
+            clock.begin();
         }
-        out.timing.stages.push_back({kStageTraverse, clock.endMilliseconds()});
         publishTraverse(out, input);
-        mMarkTraversed = runs(kTraverseIndex) && !mWork.empty();
+        if (mReuse.substepOnly(kTraverseIndex)) out.timing.stages.push_back({kStageTraverse, clock.endMilliseconds()});
         out.airlight = render::readRgb(mAirlight);
+        mReuse.ran(kTraverseIndex, out);
         out.lastStageRun = kTraverseIndex;
         if (stop == kTraverseIndex) return out;
 
@@ -889,13 +909,14 @@ private:
             "level, green lit, red shadowed, grey mixed. A pixel marched near the epipole has no walk (row 0, "
             "beta 0 shown)", ViewKind::Color,
             std::make_shared<Image>(minmax::traceView(readTreeRow(w.tree, row), coords[1], coords[2],
-                                                      int(input.settings.at("trace_steps"))))));
+                                                      int(substepLimit(input, kTraverseIndex))))));
         out.intermediates.back().rayView = true;
     }
 
     std::vector<ParamInfo> mParams;
     std::vector<StageInfo> mStages;
     render::SceneViewPasses mView;
+    StageReuse mReuse;  // stages carried over from the last run (FrameInput::resumeAtStage)
     std::vector<LightWork> mWork;
     std::vector<int> mBruteLights;  // GpuLights indices marched by brute force
     gl::Program mRectify, mRectifyPoint, mGammaRange, mMipmap, mTraverse, mPrefix, mPrefixPoint;

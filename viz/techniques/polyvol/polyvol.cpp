@@ -312,7 +312,8 @@ public:
         mMarkKeysRead = false;
 
         // ---- shadow maps and camera view ----
-        if (!mView.runSharedStages(input, stop, mStages, "polyvol", out)) return out;
+        mReuse.begin(input, out);
+        if (!mView.runSharedStages(input, stop, mStages, "polyvol", out, mReuse)) return out;
 
         clock.begin();
         allocateTargets(input.width, input.height);
@@ -639,7 +640,7 @@ private:
             if (adaptive) {
                 // Compute passes in between: the draw state is set again afterwards.
                 grid.keyStride = n + 1;
-                mTess.build(grid, s.at("threshold"), int(s.at("stop_level")), mDefines, mProgramKey);
+                mTess.build(grid, s.at("threshold"), int(substepLimit(input, kVolumeIndex)), mDefines, mProgramKey);
                 mAdaptiveUsed = true;
                 mEdgeLight = i;
                 mAdaptiveLights.push_back(i);
@@ -905,6 +906,7 @@ private:
     std::vector<ParamInfo> mParams;
     std::vector<StageInfo> mStages;
     render::SceneViewPasses mView;
+    StageReuse mReuse;  // stages carried over from the last run (FrameInput::resumeAtStage)
     gl::Program mProgram;
     std::string mProgramKey;
     gl::Texture mTotal, mPositive, mNegative, mCrossings;

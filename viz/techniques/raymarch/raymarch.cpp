@@ -185,7 +185,8 @@ public:
         gl::StageClock clock;
 
         // ---- shadow maps and camera view ----
-        if (!mView.runSharedStages(input, stop, mStages, "raymarch", out)) return out;
+        mReuse.begin(input, out);
+        if (!mView.runSharedStages(input, stop, mStages, "raymarch", out, mReuse)) return out;
 
         // ---- ray march ----
         clock.begin();
@@ -288,6 +289,7 @@ private:
     std::vector<ParamInfo> mParams;
     std::vector<StageInfo> mStages;
     render::SceneViewPasses mView;
+    StageReuse mReuse;  // stages carried over from the last run (FrameInput::resumeAtStage)
     static std::int64_t pairsPerDispatch(const Settings& s) {
         return s.at("exact") != 0.0 ? kPairsPerDispatchExact : kPairsPerDispatchPlain;
     }

@@ -332,33 +332,44 @@ public:
         gl::StageClock clock;
 
         // ---- shadow maps ----
-        clock.begin();
-        if (!mTriangle) {
-            mTriangle = std::make_unique<render::FullscreenTriangle>();
-            mVao = gl::VertexArray::create("slices.planes_vao");
-            mFramebuffer = gl::Framebuffer::create("slices.fbo");
-            mCounters = gl::Buffer::create({.bytes = 8, .label = "slices.fragment_counters"});
-            const std::vector<std::uint8_t> noise = makeNoise(kNoiseSize);
-            mNoise = gl::Texture::create(
-                {.target = GL_TEXTURE_2D, .format = GL_RG8, .size = {kNoiseSize, kNoiseSize, 1}, .label = kNoise});
-            mNoise.upload(GL_RG, GL_UNSIGNED_BYTE, noise.data());
-            mNoise.setFilter(GL_LINEAR, GL_LINEAR);
-            mNoise.setWrap(GL_REPEAT);
+        mReuse.begin(input, out);
+        if (mReuse.carries(kShadowMapsIndex)) {
+            mReuse.carry(kShadowMapsIndex, out);
+        } else {
+            clock.begin();
+            if (!mTriangle) {
+                mTriangle = std::make_unique<render::FullscreenTriangle>();
+                mVao = gl::VertexArray::create("slices.planes_vao");
+                mFramebuffer = gl::Framebuffer::create("slices.fbo");
+                mCounters = gl::Buffer::create({.bytes = 8, .label = "slices.fragment_counters"});
+                const std::vector<std::uint8_t> noise = makeNoise(kNoiseSize);
+                mNoise = gl::Texture::create(
+                    {.target = GL_TEXTURE_2D, .format = GL_RG8, .size = {kNoiseSize, kNoiseSize, 1}, .label = kNoise});
+                mNoise.upload(GL_RG, GL_UNSIGNED_BYTE, noise.data());
+                mNoise.setFilter(GL_LINEAR, GL_LINEAR);
+                mNoise.setWrap(GL_REPEAT);
+            }
+            mView.buildShadows(scene, s, out.intermediates, "slices");
+            out.timing.stages.push_back({mStages[kShadowMapsIndex].id, clock.endMilliseconds()});
+            out.intermediates.push_back(render::textureIntermediate(kCookies, "Cookies", "spot cookie textures (sRGB bytes), one layer per cookie", "",
+                                                            ViewKind::Color, 0.0f, 1.0f, mView.lights().cookies()));
+            out.intermediates.push_back(render::textureIntermediate(
+                kNoise, "Noise", "two tileable value-noise layers (r, g), generated, projected from the light", "",
+                ViewKind::Color, 0.0f, 1.0f, mNoise));
+            mReuse.ran(kShadowMapsIndex, out);
         }
-        mView.buildShadows(scene, s, out.intermediates, "slices");
-        out.timing.stages.push_back({mStages[kShadowMapsIndex].id, clock.endMilliseconds()});
-        out.intermediates.push_back(render::textureIntermediate(kCookies, "Cookies", "spot cookie textures (sRGB bytes), one layer per cookie", "",
-                                                        ViewKind::Color, 0.0f, 1.0f, mView.lights().cookies()));
-        out.intermediates.push_back(render::textureIntermediate(
-            kNoise, "Noise", "two tileable value-noise layers (r, g), generated, projected from the light", "",
-            ViewKind::Color, 0.0f, 1.0f, mNoise));
         out.lastStageRun = kShadowMapsIndex;
         if (stop == kShadowMapsIndex) return out;
 
         // ---- camera view ----
-        clock.begin();
-        mView.renderSurface(scene, input.width, input.height, out.intermediates, "slices");
-        out.timing.stages.push_back({mStages[kSurfaceIndex].id, clock.endMilliseconds()});
+        if (mReuse.carries(kSurfaceIndex)) {
+            mReuse.carry(kSurfaceIndex, out);
+        } else {
+            clock.begin();
+            mView.renderSurface(scene, input.width, input.height, out.intermediates, "slices");
+            out.timing.stages.push_back({mStages[kSurfaceIndex].id, clock.endMilliseconds()});
+            mReuse.ran(kSurfaceIndex, out);
+        }
         out.lastStageRun = kSurfaceIndex;
         if (stop == kSurfaceIndex) return out;
 
@@ -377,7 +388,8 @@ public:
         if (out.plan.stages[kPlanesIndex].runs) drawPlanes(scene, input, t);
         out.timing.stages.push_back({kStagePlanes, clock.endMilliseconds()});
         const int n = mPlanesUsed.empty() ? int(s.at("planes")) : mPlanesUsed.front();
-        const int drawn = s.at("planes_drawn") > 0 ? std::min(n, int(s.at("planes_drawn"))) : n;
+        const int drawnLimit = int(substepLimit(input, kPlanesIndex));
+        const int drawn = drawnLimit > 0 ? std::min(n, drawnLimit) : n;
         out.intermediates.push_back(render::textureIntermediate(
             kAccum, "Accumulation after " + std::to_string(drawn) + " of " + std::to_string(n) + " planes",
             t.mask ? "plane i added to channel i mod 4 (r, g, b, a), times the store scale"
@@ -686,7 +698,8 @@ private:
             const double distance = glm::length(glm::max(glm::max(lo, -hi), glm::dvec3(0.0)));
             const int planes = scaledPlaneCount(n, distance, s.at("distance_scale"), kMinScaledPlanes);
             range = planeRange(set.volume, basis, cam.znear, cam.zfar, planes);
-            const int drawn = s.at("planes_drawn") > 0 ? std::min(planes, int(s.at("planes_drawn"))) : planes;
+            const int drawnLimit = int(substepLimit(input, kPlanesIndex));
+            const int drawn = drawnLimit > 0 ? std::min(planes, drawnLimit) : planes;
             mPlanesUsed.push_back(planes);
             for (auto& poly : planePolygons(range, basis, set.volume, drawn, t.clip && boxed))
                 mPolygons.push_back(std::move(poly));
@@ -928,6 +941,7 @@ private:
     std::vector<ParamInfo> mParams;
     std::vector<StageInfo> mStages;
     render::SceneViewPasses mView;
+    StageReuse mReuse;  // stages carried over from the last run (FrameInput::resumeAtStage)
     std::unique_ptr<render::FullscreenTriangle> mTriangle;
     std::map<std::string, gl::Program> mPlanePrograms, mResolvePrograms;
     gl::VertexArray mVao;

@@ -391,7 +391,8 @@ public:
 
         // ---- segmented scan ----
         clock.begin();
-        const int passLimit = s.at("scan_passes") < 0 ? kMaxScanPasses : int(s.at("scan_passes"));
+        const int passSetting = int(substepLimit(input, kScanIndex));
+        const int passLimit = passSetting < 0 ? kMaxScanPasses : passSetting;
         if (area) scan(count, cells, passLimit, naive);
         out.timing.stages.push_back({kStageScan, clock.endMilliseconds()});
         if (area)
@@ -407,7 +408,8 @@ public:
         // ---- gather ----
         clock.begin();
         const int gatherMode = int(s.at("gather"));
-        const int gathered = s.at("vpl_step") < 0 ? count : std::min(count, int(s.at("vpl_step")) + 1);
+        const int vplStep = int(substepLimit(input, kGatherIndex));
+        const int gathered = vplStep < 0 ? count : std::min(count, vplStep + 1);
         allocateOutputs(input.width, input.height);
         mPick.clearZero();
         if (area && out.plan.stages[kGatherIndex].runs) {

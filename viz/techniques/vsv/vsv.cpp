@@ -217,7 +217,8 @@ public:
         mMark.reset();
 
         // ---- shadow maps and camera view ----
-        if (!mView.runSharedStages(input, stop, mStages, "vsv", out)) return out;
+        mReuse.begin(input, out);
+        if (!mView.runSharedStages(input, stop, mStages, "vsv", out, mReuse)) return out;
 
         // One grid per light; the stages below run light after light and time the sum. The intermediates
         // show the light chosen by `light`.
@@ -268,7 +269,8 @@ public:
 
         // ---- scan ----
         clock.begin();
-        const int passLimit = s.at("scan_passes") < 0 ? kMaxScanPasses : int(s.at("scan_passes"));
+        const int passSetting = int(substepLimit(input, kScanIndex));
+        const int passLimit = passSetting < 0 ? kMaxScanPasses : passSetting;
         for (std::size_t i = 0; i < lights.size(); ++i) scan(int(i), size, passLimit);
         out.timing.stages.push_back({kStageScan, clock.endMilliseconds()});
         if (!lights.empty()) {
@@ -648,6 +650,7 @@ private:
     std::vector<ParamInfo> mParams;
     std::vector<StageInfo> mStages;
     render::SceneViewPasses mView;
+    StageReuse mReuse;  // stages carried over from the last run (FrameInput::resumeAtStage)
     gl::Program mVoxelize, mPack, mScan, mGather;
     std::string mGatherKey;
     glm::ivec3 mGridSize{0};
