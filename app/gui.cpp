@@ -132,12 +132,9 @@ std::optional<StepCursor> takeSubsteps(const viz::Technique& technique, viz::Set
     for (int k = 0; k < int(stages.size()); ++k) {
         const std::string& name = stages[std::size_t(k)].substepParam;
         if (name.empty() || !settings.count(name) || (onlyStage >= 0 && k != onlyStage)) continue;
-        const double value = settings.at(name);
+        const viz::SubstepPosition pos = viz::substepPosition(technique, k, settings);
         settings[name] = defaults.at(name);
-        if (value == defaults.at(name) || cursor) continue;
-        const std::vector<double> values = technique.substepValues(k, settings);
-        for (int i = 0; i < int(values.size()); ++i)
-            if (values[std::size_t(i)] == value) cursor = StepCursor{k, i + 1};
+        if (!cursor && pos.at < pos.count) cursor = StepCursor{k, pos.at};
     }
     return cursor;
 }
@@ -741,12 +738,7 @@ private:
         s.settings = mSettings;
         s.stage = stageShown();
         // The lesson speaks in settings: the cursor's sub-step is its stage's parameter there.
-        if (mCursor.substep > 0) {
-            const std::vector<double> values = technique().substepValues(s.stage, mSettings);
-            const std::string& name = technique().stages()[std::size_t(s.stage)].substepParam;
-            if (!values.empty() && !name.empty())
-                s.settings[name] = values[std::size_t(std::clamp(mCursor.substep, 1, int(values.size())) - 1)];
-        }
+        if (mCursor.substep > 0) (void)viz::setSubstep(technique(), s.stage, s.settings, mCursor.substep);
         s.view = mViews.count(mFocused) ? mViews.at(mFocused).content : std::string("airlight");
         s.inspect = mPendingInspect;
         if (mProbe) s.inspect = glm::ivec2(mProbe->x, mProbe->y);
@@ -804,9 +796,10 @@ private:
     void setLessonSetting(const std::string& name, double value) override {
         // A lesson's animation of the shown stage's sub-steps moves the cursor.
         if (substepStageOf(technique(), name) == stageShown()) {
-            const std::vector<double> values = technique().substepValues(stageShown(), mSettings);
-            for (int i = 0; i < int(values.size()); ++i)
-                if (values[std::size_t(i)] == value) moveCursor({mCursor.stage, i + 1});
+            viz::Settings probe = mSettings;
+            probe[name] = value;
+            const viz::SubstepPosition pos = viz::substepPosition(technique(), stageShown(), probe);
+            moveCursor({stageShown(), pos.at < pos.count ? pos.at : 0});
             return;
         }
         if (mSettings.count(name) && mSettings.at(name) == value) return;
@@ -2250,7 +2243,8 @@ private:
         float x = dl.textClipped({v.title.min.x + 4.0f * s, v.title.min.y + 2.0f * s}, title, kAccent,
                                  toggleRect.min.x - 4.0f * s);
         // Not the complete algorithm: every view says where the run stopped, in the warning colour.
-        const std::string early = mHaveOutput && !stoppedEarly().empty() ? "   [" + stoppedEarly() + "]" : "";
+        const std::string why = mHaveOutput ? stoppedEarly() : std::string();
+        const std::string early = why.empty() ? why : "   [" + why + "]";
         if (!early.empty()) x = dl.textClipped({x, v.title.min.y + 2.0f * s}, early, kError, toggleRect.min.x - 4.0f * s);
         const SpecialCounts& n = v.counts;
         std::string counts;
