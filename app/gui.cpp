@@ -7,6 +7,7 @@
 // whenever the camera, the settings or the technique change; CPU techniques (the reference) run on a
 // worker thread in progressive passes (1/4, 1/2, then full resolution) so the window never freezes.
 #include "gui.h"
+#include "input_table.h"
 
 #include <epoxy/gl.h>
 #define GLFW_INCLUDE_NONE
@@ -427,6 +428,17 @@ public:
                     onKey(scriptKeyCode(a.target), GLFW_PRESS, a.modifiers);
                     ++mScriptIndex;
                     return true;
+                case ScriptAction::Kind::Hold:
+                    if (mScriptWait == 0) {
+                        onKey(scriptKeyCode(a.target), GLFW_PRESS, a.modifiers);
+                        mScriptHeld = scriptKeyCode(a.target);
+                        mScriptHeldShift = (a.modifiers & GLFW_MOD_SHIFT) != 0;
+                        mScriptWait = a.frames + 1;
+                    }
+                    if (--mScriptWait > 0) return true;
+                    mScriptHeld = -1;
+                    ++mScriptIndex;
+                    return true;
                 case ScriptAction::Kind::Hover: {
                     if (revealScriptTarget(a)) return true;
                     const Rect r = scriptTarget(a);
@@ -577,6 +589,12 @@ public:
             break;
         }
         sidecar["animation"] = {{"playing", mPlaying}, {"seconds", mPlayClock}, {"light_turn", mPlayTurn}};
+        {
+            const viz::scene::Camera& c = mController.camera();
+            sidecar["camera"] = {{"mode", mController.mode() == CameraController::Mode::Fly ? "fly" : "orbit"},
+                                 {"position", {c.position.x, c.position.y, c.position.z}},
+                                 {"forward", {c.forward.x, c.forward.y, c.forward.z}}};
+        }
         sidecar["view_grid"] = {{"layout", mLayout.toText()}, {"focused", mFocused},
                                 {"maximised", mLayout.maximised()},
                                 {"cpu_ms_last_frame", mGridMilliseconds},
@@ -1686,67 +1704,82 @@ private:
         return {float(x) * float(fb.x) / float(std::max(ww, 1)), float(y) * float(fb.y) / float(std::max(wh, 1))};
     }
 
+    // Keys are dispatched from one table (input_table.h), which also writes the help lines and the
+    // README's key table.
     void onKey(int key, int action, int mods) {
         if (action != GLFW_PRESS && action != GLFW_REPEAT) return;
-        if (mLesson && mLesson->onKey(key, action == GLFW_REPEAT)) return;
-        const bool shift = (mods & GLFW_MOD_SHIFT) != 0;
+        const bool repeat = action == GLFW_REPEAT, shift = (mods & GLFW_MOD_SHIFT) != 0;
         mUiInput.shift = shift;
         mUiInput.ctrl = (mods & GLFW_MOD_CONTROL) != 0;
-        // Home / End: the first / last sub-step, unless a text field is being edited.
-        if ((key == GLFW_KEY_HOME || key == GLFW_KEY_END) && !mUi->textFocused()) {
-            setSubstepAt(key == GLFW_KEY_HOME ? 1 : substepState().second);
+        const KeyState state{mController.mode() == CameraController::Mode::Fly, mLesson != nullptr, mUi->textFocused()};
+        int offset = 0;
+        const Command command = commandForKey(key, shift, repeat, state, &offset);
+        if (command == Command::LessonKey && mLesson && mLesson->onKey(key, repeat)) return;
+        // Widgets take arrows, Enter, Space and the editing keys (Home / End only while a field is edited).
+        if (const auto k = uiKey(key);
+            k && (state.text || (command != Command::FirstSubstep && command != Command::LastSubstep))) {
+            mUiInput.keys.push_back(*k);
             return;
         }
-        if (const auto k = uiKey(key)) {
-            mUiInput.keys.push_back(*k);  // widgets: arrows, Enter, Space, editing keys
-            return;
-        }
-        // In fly mode W A S D Q E drive the camera (fly() reads them as held keys) and nothing else: S
-        // does not also step the stage, nor E export a view.
-        if (mController.mode() == CameraController::Mode::Fly &&
-            (key == GLFW_KEY_W || key == GLFW_KEY_A || key == GLFW_KEY_S || key == GLFW_KEY_D || key == GLFW_KEY_Q ||
-             key == GLFW_KEY_E))
-            return;
-        if (key == GLFW_KEY_ESCAPE) glfwSetWindowShouldClose(mWindow.handle(), GLFW_TRUE);
-        else if (key == GLFW_KEY_TAB) selectTechnique(mCurrent + (shift ? -1 : 1));
-        else if (key >= GLFW_KEY_1 && key <= GLFW_KEY_9 && key - GLFW_KEY_1 < int(mIds.size())) selectTechnique(key - GLFW_KEY_1);
-        else if (key == GLFW_KEY_RIGHT_BRACKET || (key == GLFW_KEY_V && !shift)) stepView(1);
-        else if (key == GLFW_KEY_LEFT_BRACKET || (key == GLFW_KEY_V && shift)) stepView(-1);
-        else if (key == GLFW_KEY_PERIOD || key == GLFW_KEY_COMMA) stepLayer(key == GLFW_KEY_PERIOD ? 1 : -1);
-        else if (key == GLFW_KEY_C && action == GLFW_PRESS) mController.toggleMode();
-        else if (key == GLFW_KEY_F5 && action == GLFW_PRESS) saveSessionNow();
-        else if (key == GLFW_KEY_0 && action == GLFW_PRESS) focusedView().transform.fit();
-        else if (key == GLFW_KEY_H && action == GLFW_PRESS) splitFocused(SplitAxis::X);
-        else if (key == GLFW_KEY_J && action == GLFW_PRESS) splitFocused(SplitAxis::Y);
-        else if (key == GLFW_KEY_K && action == GLFW_PRESS) closeFocused();
-        else if (key == GLFW_KEY_M && action == GLFW_PRESS) mLayout.toggleMaximise(mFocused);
-        else if (key == GLFW_KEY_O && action == GLFW_PRESS) swapFocused(shift ? -1 : 1);
-        else if (key == GLFW_KEY_N && action == GLFW_PRESS) mFocused = mLayout.next(mFocused, shift ? -1 : 1);
-        else if (key == GLFW_KEY_F && action == GLFW_PRESS) toggleDifference();
-        else if (key == GLFW_KEY_I && action == GLFW_PRESS) inspectPixelUnderCursor();
-        else if (key == GLFW_KEY_P && action == GLFW_PRESS) togglePlaying();
-        else if (key == GLFW_KEY_L && action == GLFW_PRESS) mShowGizmo = !mShowGizmo;
-        else if (key == GLFW_KEY_E && action == GLFW_PRESS) exportView();
-        else if (key == GLFW_KEY_G && action == GLFW_PRESS) toggleComparison();
-        else if (key == GLFW_KEY_F12 && action == GLFW_PRESS) exportWindow();
-        else if (key == GLFW_KEY_S) stepStage(shift ? -1 : 1);
-        else if (key == GLFW_KEY_D) stepSubstep(shift ? -1 : 1);
-        else if (key == GLFW_KEY_F9 && action == GLFW_PRESS) loadSessionNow();
-        else if (key == GLFW_KEY_R && action == GLFW_PRESS) {
-            mController.reset();
-            mDirty = true;
-        } else if (key == GLFW_KEY_X && action == GLFW_PRESS) {
-            mExposureSet = false;  // auto exposure again on the next frame
-            if (!mOutput.final.empty()) {
-                mExposure = std::round(std::log2(autoExposure(mOutput.final)) / kExposureStep) * kExposureStep;
-                mExposureSet = true;
-            }
+        perform(command, offset);
+    }
+
+    void perform(Command command, int offset) {
+        switch (command) {
+            case Command::None: case Command::FlyMove: case Command::LessonKey: case Command::Pointer: break;
+            case Command::Quit: glfwSetWindowShouldClose(mWindow.handle(), GLFW_TRUE); break;
+            case Command::NextTechnique: selectTechnique(mCurrent + 1); break;
+            case Command::PrevTechnique: selectTechnique(mCurrent - 1); break;
+            case Command::PickTechnique:
+                if (offset < int(mIds.size())) selectTechnique(offset);
+                break;
+            case Command::NextStage: stepStage(1); break;
+            case Command::PrevStage: stepStage(-1); break;
+            case Command::NextSubstep: stepSubstep(1); break;
+            case Command::PrevSubstep: stepSubstep(-1); break;
+            case Command::FirstSubstep: setSubstepAt(1); break;
+            case Command::LastSubstep: setSubstepAt(substepState().second); break;
+            case Command::NextView: stepView(1); break;
+            case Command::PrevView: stepView(-1); break;
+            case Command::NextLayer: stepLayer(1); break;
+            case Command::PrevLayer: stepLayer(-1); break;
+            case Command::FitView: focusedView().transform.fit(); break;
+            case Command::SplitBeside: splitFocused(SplitAxis::X); break;
+            case Command::SplitBelow: splitFocused(SplitAxis::Y); break;
+            case Command::CloseView: closeFocused(); break;
+            case Command::Maximise: mLayout.toggleMaximise(mFocused); break;
+            case Command::SwapNext: swapFocused(1); break;
+            case Command::SwapPrev: swapFocused(-1); break;
+            case Command::FocusNext: mFocused = mLayout.next(mFocused, 1); break;
+            case Command::FocusPrev: mFocused = mLayout.next(mFocused, -1); break;
+            case Command::ToggleDifference: toggleDifference(); break;
+            case Command::ToggleGizmo: mShowGizmo = !mShowGizmo; break;
+            case Command::InspectPixel: inspectPixelUnderCursor(); break;
+            case Command::ToggleComparison: toggleComparison(); break;
+            case Command::PlayPause: togglePlaying(); break;
+            case Command::ExportView: exportView(); break;
+            case Command::ExportWindow: exportWindow(); break;
+            case Command::SaveSession: saveSessionNow(); break;
+            case Command::LoadSession: loadSessionNow(); break;
+            case Command::ToggleCameraMode: mController.toggleMode(); break;
+            case Command::ResetCamera:
+                mController.reset();
+                mDirty = true;
+                break;
+            case Command::AutoExposure:
+                mExposureSet = false;  // auto exposure again on the next frame
+                if (!mOutput.final.empty()) {
+                    mExposure = std::round(std::log2(autoExposure(mOutput.final)) / kExposureStep) * kExposureStep;
+                    mExposureSet = true;
+                }
+                break;
+            case Command::ExposureUp: mExposure += kExposureStep; break;
+            case Command::ExposureDown: mExposure -= kExposureStep; break;
         }
     }
 
     void onChar(unsigned codepoint) {
-        if (codepoint == '+' || codepoint == '=') mExposure += kExposureStep;
-        if (codepoint == '-' || codepoint == '_') mExposure -= kExposureStep;
+        if (!mUi->textFocused()) perform(commandForChar(codepoint), 0);
     }
 
     void onMouseButton(int button, int action) {
@@ -1921,19 +1954,21 @@ private:
         mDirty = true;
     }
 
+    // A key held down, by the user or by a script's `hold`.
+    bool keyDown(int key) const { return glfwGetKey(mWindow.handle(), key) == GLFW_PRESS || key == mScriptHeld; }
+
     bool anyFlyKeyDown() const {
         for (int key : {GLFW_KEY_W, GLFW_KEY_A, GLFW_KEY_S, GLFW_KEY_D, GLFW_KEY_Q, GLFW_KEY_E})
-            if (glfwGetKey(mWindow.handle(), key) == GLFW_PRESS) return true;
+            if (keyDown(key)) return true;
         return false;
     }
 
     void fly(double dt) {
-        GLFWwindow* w = mWindow.handle();
-        const auto down = [&](int key) { return glfwGetKey(w, key) == GLFW_PRESS ? 1.0 : 0.0; };
+        const auto down = [&](int key) { return keyDown(key) ? 1.0 : 0.0; };
         const glm::dvec3 dir{down(GLFW_KEY_D) - down(GLFW_KEY_A), down(GLFW_KEY_E) - down(GLFW_KEY_Q),
                              down(GLFW_KEY_W) - down(GLFW_KEY_S)};
         if (dir == glm::dvec3(0.0)) return;
-        const bool fast = glfwGetKey(w, GLFW_KEY_LEFT_SHIFT) == GLFW_PRESS;
+        const bool fast = keyDown(GLFW_KEY_LEFT_SHIFT) || (mScriptHeld >= 0 && mScriptHeldShift);
         mController.move(dir * (kFlySpeed * dt * (fast ? 4.0 : 1.0)));
         mDirty = true;
     }
@@ -2679,18 +2714,14 @@ private:
         dl.textClipped({pad, pad + 2.0f * line}, third, thirdColor, float(fb.x) - pad);
         const float top = 3.0f * line + 3.0f * pad;
 
-        // Help line at the bottom.
-        const std::string help = mode == CameraController::Mode::Orbit
-            ? "camera: ORBIT (target " + format("%.2f", mController.targetDistance()) + ")   Tab/Shift+Tab or 1-9 technique   S/Shift+S stage   D/Shift+D sub-step   Home/End   [ ] view   , . layer   +/- exposure (X auto)   C fly   R reset   P play/pause   "
-              "left drag orbit, wheel zoom, right/middle drag pan   Esc quit"
-            : "camera: FLY   Tab/Shift+Tab or 1-9 technique   [ ] view   , . layer   +/- exposure (X auto)   C orbit   R reset   P play/pause   "
-              "right drag look, WASD move, Q/E down/up, Shift faster, middle drag pan   Esc quit";
+        // Help lines at the bottom, from the key table.
+        const bool flying = mode == CameraController::Mode::Fly;
+        const std::string help = (flying ? std::string("camera: FLY   ")
+                                         : "camera: ORBIT (target " + format("%.2f", mController.targetDistance()) + ")   ") +
+                                 helpLine(HelpLine::Frame, flying);
         const float bottom = float(fb.y) - 2.0f * line - pad;
         dl.textClipped({pad, bottom}, help, kDim, float(fb.x) - pad);
-        dl.textClipped({pad, bottom + line},
-                       "views: click to focus   H / J split   drag a gap: resize   K close   M maximise   O swap (or drag a "
-                       "title)   N next   F difference   0 fit   L light gizmo   'display +': controls",
-                       kDim, float(fb.x) - pad);
+        dl.textClipped({pad, bottom + line}, helpLine(HelpLine::Views, flying), kDim, float(fb.x) - pad);
 
         // Sidebar: techniques, then views.
         float sidebarWidth = kSidebarMin * s;
@@ -3069,6 +3100,8 @@ private:
     std::vector<TimelineSegment> mTimeline;  // the stepping timeline as drawn last
     Rect mTimelineRect;
     bool mDragTimeline = false;
+    int mScriptHeld = -1;           // the key a script's `hold` keeps down (-1: none)
+    bool mScriptHeldShift = false;  // ... with Shift
     std::string mProbeTechnique;
     bool mProbeHasValue = false;
     glm::dvec3 mProbeValue{0.0};

@@ -102,8 +102,15 @@ std::vector<ScriptAction> parseScript(const std::string& path) {
             a.fraction = {f[0], f[1]};
             a.to = {f[2], f[3]};
             if (w.size() == 7) a.onto = w[6];
-        } else if (w[0] == "key") {
-            if (w.size() != 2) fail("key takes one key name");
+        } else if (w[0] == "key" || w[0] == "hold") {
+            const bool hold = w[0] == "hold";
+            if (!hold && w.size() != 2) fail("key takes one key name");
+            if (hold) {
+                float n = 0.0f;
+                if (w.size() != 3 || !parseFloat(w[2], n) || n < 1.0f || n > 100000.0f || n != std::floor(n))
+                    fail("hold takes a key name and a whole number of frames from 1 to 100000");
+                a.frames = int(n);
+            }
             std::string name = w[1];
             for (bool more = true; more;) {
                 more = false;
@@ -116,7 +123,7 @@ std::vector<ScriptAction> parseScript(const std::string& path) {
                     }
             }
             if (scriptKeyCode(name) < 0) fail("unknown key '" + w[1] + "'");
-            a.kind = ScriptAction::Kind::Key;
+            a.kind = hold ? ScriptAction::Kind::Hold : ScriptAction::Kind::Key;
             a.target = name;
         } else if (w[0] == "wheel") {
             float n = 0.0f;
@@ -140,7 +147,7 @@ std::vector<ScriptAction> parseScript(const std::string& path) {
             a.kind = ScriptAction::Kind::Stats;
             a.target = w[1];
         } else {
-            fail("unknown action '" + w[0] + "' (known: click, hover, drag, wheel, key, frames, screenshot, stats)");
+            fail("unknown action '" + w[0] + "' (known: click, hover, drag, wheel, key, hold, frames, screenshot, stats)");
         }
         actions.push_back(std::move(a));
     }

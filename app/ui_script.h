@@ -13,6 +13,8 @@
 //                        PageDown, Home, End, F1-F12, 0-9,
 //                        A-Z, [ and ], , and . (previous / next layer), optionally after Shift+
 //                        and/or Ctrl+ (Shift+S)
+//   hold NAME N          press a key and keep it down for N frames (fly mode's W A S D Q E), then
+//                        release it
 //   frames N             let N frames pass
 //   screenshot PATH      write the window (PNG) and its sidecar JSON now
 //   stats PATH           append one JSON line to PATH: frame, resident memory, open files, GL objects
@@ -27,13 +29,13 @@
 namespace airlight {
 
 struct ScriptAction {
-    enum class Kind { Click, Hover, Drag, Wheel, Key, Frames, Screenshot, Stats };
+    enum class Kind { Click, Hover, Drag, Wheel, Key, Hold, Frames, Screenshot, Stats };
     Kind kind = Kind::Frames;
     std::string target;          // widget / view name, key name or path
     glm::vec2 fraction{0.5f};    // click position within the target's rectangle
     glm::vec2 to{0.5f};          // drag: where the button is released, within the same rectangle or
     std::string onto;            // within this one's (drag ... ONTO), when not empty
-    int frames = 1;
+    int frames = 1;              // frames, hold
     float notches = 0.0f;        // wheel
     int modifiers = 0;           // key: GLFW_MOD_SHIFT | GLFW_MOD_CONTROL
     int line = 0;                // 1-based, for messages

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <string>
 
+#include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
 
 #include "cli/cli_fixture.h"
@@ -175,17 +176,27 @@ TEST_F(GuiCli, ALightOfIntensityZeroOpensAndCanBeSwitchedOn) {
 }
 
 // In fly mode W A S D Q E belong to the camera: S and Shift+S do not step the stage, E does not export a
-// view. Back in orbit mode (C) Shift+S steps again.
+// view, and holding S moves the camera back. Back in orbit mode (C) Shift+S steps again.
 TEST_F(GuiCli, InFlyModeTheMovementKeysOnlyMoveTheCamera) {
     const fs::path exports = path("exports");
-    const fs::path script = writeText("fly.txt", "frames 2\nkey C\nkey S\nkey Shift+S\nkey E\nframes 2\nscreenshot " +
+    const fs::path script = writeText("fly.txt", "frames 2\nscreenshot " + path("before.png").string() +
+                                                     "\nkey C\nkey S\nkey Shift+S\nkey E\nhold S 4\nframes 2\nscreenshot " +
                                                      path("fly.png").string() + "\nkey C\nkey Shift+S\nframes 2\n");
     const RunResult r = run("gui --scene grate --technique slices --size 40x30 --set planes=16 --export-dir " +
                             exports.string() + " --script " + script.string() + " --screenshot " + path("orbit.png").string());
     ASSERT_EQ(r.exitCode, 0) << r.err;
+    const nlohmann::json before = nlohmann::json::parse(readFile(path("before.json")));
     const nlohmann::json fly = nlohmann::json::parse(readFile(path("fly.json")));
     const nlohmann::json orbit = nlohmann::json::parse(readFile(path("orbit.json")));
     EXPECT_EQ(fly.at("stage"), "slices.compose") << "S in fly mode must not step the stage";
+    EXPECT_EQ(fly.at("camera").at("mode"), "fly");
+    // Held S moves the camera against its forward direction.
+    glm::dvec3 moved{0.0}, forward{0.0};
+    for (int i = 0; i < 3; ++i) {
+        moved[i] = fly.at("camera").at("position")[i].get<double>() - before.at("camera").at("position")[i].get<double>();
+        forward[i] = before.at("camera").at("forward")[i].get<double>();
+    }
+    EXPECT_LT(glm::dot(moved, forward), 0.0) << "holding S in fly mode moves the camera back";
     EXPECT_FALSE(fs::exists(exports)) << "E in fly mode must not export";
     EXPECT_NE(orbit.at("stage"), "slices.compose") << "Shift+S in orbit mode steps";
 }
