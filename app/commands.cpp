@@ -1,4 +1,5 @@
 #include "commands.h"
+#include "input_table.h"
 
 #include <algorithm>
 #include <cmath>
@@ -69,14 +70,13 @@ constexpr const char* kGuiHelp = R"(usage: airlight gui [--scene S] [--technique
                     [--state FILE] [--script FILE] [--export-dir DIR] [--screenshot OUT.png [--frames N]]
                     [--lesson NAME]
 
-Opens the window: the final frame beside one intermediate. Keys: Tab / Shift+Tab technique,
-[ and ] intermediate, C orbit/fly camera, R reset camera, + and - exposure, Esc quit.
+Opens the window: the final frame beside one intermediate. Its keys are listed below.
 
 --state FILE          load the session (scene, camera, medium, technique, parameters, view) from FILE
                       at start; F5 saves it there, F9 loads it again, and it is saved on exit.
                       Without --state the file is ~/.local/state/airlight/session.json.
---script FILE         replay window actions (click NAME [FX FY], key NAME, frames N, screenshot PATH;
-                      one per line), then exit (after writing --screenshot if given)
+--script FILE         replay window actions (click NAME [FX FY], key NAME, hold NAME N, frames N,
+                      screenshot PATH; one per line), then exit (after writing --screenshot if given)
 --export-dir DIR      where E (the intermediate view as EXR and PNG) and F12 (the window) write
                       (default airlight-exports/)
 --lesson NAME         open the lesson player beside the views: lessons/NAME.md or a path to a .md file
@@ -325,6 +325,7 @@ int runExportScene(Args& args) {
 int runGuiCommand(Args& args) {
     if (!args.empty() && isHelpFlag(args.peek())) {
         std::fputs(kGuiHelp, stdout);
+        std::printf("\nKeys and mouse (where a key applies only in one context, it is named):\n%s", plainKeyTable().c_str());
         return 0;
     }
     CommonOptions o = parseOptions(args, "gui", " --scene --technique --size --set --preset --screenshot --frames --state --script --export-dir --lesson --no-default-light ");

@@ -1432,6 +1432,8 @@ private:
         }
         if (v.display.difference != DifferenceMode::Off && (content == "final" || content == "airlight"))
             makeDifference(v, content);
+        else if (v.display.difference != DifferenceMode::Off)
+            v.differenceNote = "no difference: this view shows " + content + " (difference is for the final frame and L_air)";
     }
 
     // Difference mode: this technique's image against the same image of `against` (same scene, camera,
@@ -2617,12 +2619,13 @@ private:
                             {"nan_pixels", v.counts.nan},
                             {"inf_pixels", v.counts.inf}};
         if (d.difference != DifferenceMode::Off) {
-            const auto figure = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
-            j["difference"] = {{"mode", differenceModeNames()[std::size_t(d.difference)]},
-                               {"against", d.against},
-                               {"relative_l2", v.error ? figure(v.error->relativeL2) : nlohmann::json(nullptr)},
-                               {"max_abs", v.error ? figure(v.error->maxAbsolute) : nlohmann::json(nullptr)},
-                               {"note", v.differenceNote}};
+            // Figures only where they were computed and are defined (relative L2 is not against a black
+            // reference); the note says why one is missing.
+            nlohmann::json diff = {{"mode", differenceModeNames()[std::size_t(d.difference)]},
+                                   {"against", d.against}, {"note", v.differenceNote}};
+            if (v.error && std::isfinite(v.error->relativeL2)) diff["relative_l2"] = v.error->relativeL2;
+            if (v.error && std::isfinite(v.error->maxAbsolute)) diff["max_abs"] = v.error->maxAbsolute;
+            j["difference"] = std::move(diff);
         }
         // The linked cursor as this view marks it: the pixel itself in screen-space views.
         std::optional<glm::ivec2> at;
@@ -2670,6 +2673,7 @@ private:
         mPaneDraws.clear();
         mViewRects.clear();
         mNamedRects.clear();
+        mNamedRects["window"] = Rect{{0.0f, 0.0f}, glm::vec2(fb)};  // scripts: any point, by window fraction
         const float s = mScale;
         const float pad = kPad * s;
         const float line = mFont->lineHeight();

@@ -243,4 +243,19 @@ std::string markdownKeyTable() {
     return out;
 }
 
+std::string plainKeyTable() {
+    std::string out;
+    for (const KeyBinding& b : keyBindings()) {
+        std::string label;
+        for (char c : b.label)
+            if (c != '`') label += c;
+        std::string help;
+        for (char c : b.help)
+            if (c != '`') help += c;
+        const std::string where = b.context == KeyContext::Any ? "" : " (" + contextName(b.context) + ")";
+        out += "  " + label + where + ": " + help + "\n";
+    }
+    return out;
+}
+
 }  // namespace airlight

@@ -74,5 +74,7 @@ Command commandForChar(unsigned codepoint);
 std::string helpLine(HelpLine line, bool fly);
 // The README's key table (Markdown, one row per binding, with a context column).
 std::string markdownKeyTable();
+// The same as plain text, for `airlight gui --help`.
+std::string plainKeyTable();
 
 }  // namespace airlight
