@@ -1,6 +1,7 @@
 // Airlight math for the GPU techniques: single scattering from a point or directional light in a
 // homogeneous medium along one segment of an eye ray. Float mirror of viz/shared/airlight.h (same
-// function names, argument order and structure, line by line); NUMERICS.md 5.1, Sun et al. 2005.
+// function names, argument order and structure, line by line); Sun et al. 2005 and
+// docs/numerics.md#quadrature.
 // Inputs are camera-relative (tP, h computed in double on the CPU when world coordinates are large).
 // No step relies on compensated arithmetic (every difference that could cancel is rewritten as a sum and
 // log1p/expm1 use series near 0), so `precise` is not needed and fast-math reassociation is harmless.
@@ -27,7 +28,7 @@ const float AIRLIGHT_GL_X[4] = float[4](0.960289856497536231684, 0.7966664774136
 const float AIRLIGHT_GL_W[4] = float[4](0.101228536290376259153, 0.222381034453374470544,
                                         0.313706645877887287338, 0.362683783378361982965);
 
-// ---- Elementary helpers (GLSL has no log1p/expm1; NUMERICS.md 5.3) ---------------------------------
+// ---- Elementary helpers (GLSL has no log1p/expm1; docs/numerics.md#elementary-functions) ------------
 
 // log(1 + x) without losing x when |x| << 1: 2 atanh(z) series, z = x / (2 + x), on (-0.5, 1). GLSL's
 // log has only an absolute error bound of 2^-21 near 1, so Kahan's log(u) x / (u - 1) trick fails here.
@@ -105,7 +106,8 @@ RayLightGeometry rayLightGeometry(vec3 D, vec3 w) {
     return RayLightGeometry(dot(D, w), length(cross(D, w)));
 }
 
-// ---- Point light: anchored log-tangent Gauss-Legendre (NUMERICS.md 2.5 and 5.1) ------------------
+// ---- Point light: anchored log-tangent Gauss-Legendre ----------------------------------------------
+// (docs/numerics.md#anchored-point-light-segment and docs/numerics.md#quadrature)
 
 // p(cos) * exp(-nu expm1(eta)) / cosh(y), y = y0 + eta; 1 -+ cos = 1 +- tanh(y) from e = exp(-|y|).
 float pointIntegrand(float eta, float y0, float nu, float g) {
@@ -134,8 +136,8 @@ float pointPanel(float a, float b, float y0, float nu, float g) {
 }
 
 // L(x0, x1) = int_x0^x1 sigma_s p(cos) I0 exp(-sigma_t (x + r(x))) / r(x)^2 dx, x1 may be +inf.
-// Anchored at x0 (NUMERICS.md 2.5); see viz/shared/airlight.h for the derivation, the h floor for rays
-// through the light, and the quadrature windows.
+// Anchored at x0 (docs/numerics.md#anchored-point-light-segment); see viz/shared/airlight.h for the
+// derivation, the h floor for rays through the light, and the quadrature windows.
 float pointSegment(float tP, float h, float x0, float x1, float sigma_s, float sigma_t, float g, float I0) {
     if (!(x1 > x0) || !(sigma_s > 0.0) || !(I0 > 0.0)) return 0.0;
 
@@ -202,13 +204,15 @@ float pointSegment(float tP, float h, float x0, float x1, float sigma_s, float s
     }
     if (!(sum > 0.0)) return 0.0;
 
-    // Exponents combined before exponentiating: exp(-x) flushes to 0 for x > ~87 on GPUs (NUMERICS row 3).
+    // Exponents combined before exponentiating: exp(-x) flushes to 0 for x > ~87 on GPUs
+    // (docs/numerics.md#combined-exponents).
     float logL = log(sigma_s) + log(I0) - log(h) - sigma_t * (x0 + r0) + log(sum);
     return exp(logL);
 }
 
 #ifdef AIRLIGHT_NAIVE_CLOSED_FORM
-// ---- Teaching only: Sun et al. 2005's closed form evaluated as printed (NUMERICS.md 2.2) -------------
+// ---- Teaching only: Sun et al. 2005's closed form evaluated as printed -------------------------------
+// (docs/numerics.md#the-textbook-closed-form)
 // Compiled in only by a shader that defines AIRLIGHT_NAIVE_CLOSED_FORM (raymarch's closed_form=naive),
 // to show why pointSegment exists; no technique's result uses it. No CPU mirror in airlight.h.
 

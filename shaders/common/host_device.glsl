@@ -1,7 +1,8 @@
 // Structs and binding points shared by C++ and GLSL, declared once. C++ includes this file (through
 // viz/render/host_device.h) with __cplusplus defined; GLSL includes it as "common/host_device.glsl".
 // Every block member is a vec4, ivec4 or mat4, so std430 and the C++ layout agree without hidden padding
-// (checked by static_asserts in gpu_lights.h / gpu_scene.h and by a compute-shader test). No bool.
+// (checked by the static_asserts on sizes and offsets in viz/render/host_device.h, and on the GPU by
+// RenderLights.GpuLightAndMaterialLayoutsMatchGlsl in tests/gl/render_lights_test.cpp). No bool.
 #ifndef HOST_DEVICE_GLSL
 #define HOST_DEVICE_GLSL
 

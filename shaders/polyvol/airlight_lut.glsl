@@ -25,7 +25,8 @@ float lutRow(float tauH) {
 }
 
 // Bilinear sample between the four nearest texels, weights in float (hardware filtering keeps only 8
-// fractional bits on many GPUs: NUMERICS.md row 17), with the first and last texels on the axis ends.
+// fractional bits on many GPUs: docs/numerics.md#lookup-tables), with the first and last texels on the
+// axis ends.
 vec2 lutSample(float u, float tauH) {
     ivec2 size = textureSize(uAirlightLut, 0);
     vec2 f = vec2(lutColumn(u, tauH), lutRow(tauH)) * vec2(size - 1);

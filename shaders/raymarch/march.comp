@@ -84,7 +84,7 @@ void main() {
         if (L.info.x == kLightDirectional) {
             sum += V * directionalSegment(cosTheta, x0, x1, uSigmaS, uSigmaT, uG, 1.0) * L.radiant.rgb;
         } else {
-            // t_P and h of the ray relative to the light (NUMERICS.md section 1); the unit-intensity
+            // t_P and h of the ray relative to the light (docs/numerics.md#notation); the unit-intensity
             // isotropic segment times the light's angular factor at the sample.
 #ifdef NAIVE_CLOSED_FORM
             // Teaching mode (closed_form=naive): the textbook evaluation that fails in the stiff cases.

@@ -1,6 +1,7 @@
 // Eye-relative world space ("view-origin space"): world translated so the camera is at the origin, axes
 // unchanged. Everything on the GPU lives there, because fp32 world coordinates far from the origin lose
-// airlight accuracy (NUMERICS.md section 4, row 13). Translations are formed in double and rounded once.
+// airlight accuracy (docs/numerics.md#camera-relative-coordinates). Translations are formed in double and
+// rounded once.
 #pragma once
 
 #include <glm/glm.hpp>

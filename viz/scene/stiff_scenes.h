@@ -26,8 +26,9 @@ struct StiffCase {
 };
 
 // Every case, in a fixed order. Case classes: medium, intensity, scale, singular-ray (a ray through a
-// point light; its pixel is left out), near-light (a ray 1e-6 from one; its pixel counts), epipole,
-// camera-placement, geometry, depth-range, phase.
+// point light; its pixel is left out), near-light (a ray 1e-6 from one; its pixel counts), epipole, leak
+// (a thin occluder grazed by the light), camera-placement, geometry, depth-range, phase
+// (docs/numerics.md#stiff-classes).
 const std::vector<StiffCase>& stiffCases();
 
 // The base scene with the case's edit applied, validated (throws InputError if an edit broke it).

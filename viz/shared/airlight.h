@@ -5,7 +5,7 @@
 // the GLSL file's pointSegmentNaive (Sun et al.'s closed form as printed, compiled only under
 // AIRLIGHT_NAIVE_CLOSED_FORM for raymarch's closed_form=naive teaching mode), which has no mirror here.
 //
-// Notation (NUMERICS.md section 1; Sun et al. 2005): D = light - eye (camera-relative), w the unit ray
+// Notation (docs/numerics.md#notation; Sun et al. 2005): D = light - eye (camera-relative), w the unit ray
 // direction, tP = dot(D, w) the signed distance to the light's foot point P on the ray, h = |D x w| the
 // light-to-ray distance, s = x - tP, r(x) = sqrt(s^2 + h^2), y = asinh(s / h), q = s + r = h e^y.
 #pragma once
@@ -20,10 +20,10 @@
 namespace viz::airlight {
 
 // ---- Precision-dependent knobs --------------------------------------------------------------------
-// kNodes: Gauss-Legendre nodes per panel. NUMERICS.md 5.1 suggests 2 panels x 16 (fp32) / x 32 (fp64);
-//   with the graded panels below, 8 (fp32) and 16 (fp64) per panel reach ~1e-5 and ~1e-13 (measured by
-//   tests/cpu/math/airlight_test.cpp against Boost.Math), at 1-6 panels for ~90% of the test grid (up to
-//   13 for a strong HG lobe with the light beside the segment).
+// kNodes: Gauss-Legendre nodes per panel (docs/numerics.md#quadrature). With the graded panels below, 8
+//   (fp32) and 16 (fp64) per panel reach ~1e-5 and ~1e-13 (measured by tests/cpu/math/airlight_test.cpp
+//   against Boost.Math), at 1-6 panels for ~90% of the test grid (up to 13 for a strong HG lobe with the
+//   light beside the segment).
 // kNearWidth (a): panel widths in y around each centre are a, 2a, then the rest.
 // kAttenuationCut (K): the segment is cut where the extinction from its start exceeds e^-K.
 // kWindow (W): the geometric factor 1/cosh(y) is below 2 e^-W farther than W from the closest approach.
@@ -106,7 +106,7 @@ struct GaussLegendre<32> {
         0.0965400885147278005668};
 };
 
-// ---- Elementary helpers (GLSL has no log1p/expm1; NUMERICS.md 5.3) -------------------------------
+// ---- Elementary helpers (GLSL has no log1p/expm1; docs/numerics.md#elementary-functions) ----------
 
 // log(1 + x) without losing x when |x| << 1. Near 0 it uses the series
 // log1p(x) = 2 atanh(z) = 2 (z + z^3/3 + z^5/5 + ...), z = x / (2 + x), |z| <= 1/3 on (-0.5, 1); outside,
@@ -170,7 +170,7 @@ Real scaledHypot(Real a, Real b) {
 // Henyey-Greenstein from 1 - cos(theta) and 1 + cos(theta):
 // p = (1 - g^2) / (4 pi (1 + g^2 - 2 g cos)^(3/2)) with the denominator written as a sum of non-negative
 // terms, (1 - g)^2 + 2 g (1 - cos) for g > 0 and (1 + g)^2 - 2 g (1 + cos) for g < 0: no cancellation in
-// the peak of either lobe (NUMERICS.md section 1 gives the g > 0 form). Exactly 1/(4 pi) for g == 0.
+// the peak of either lobe (docs/numerics.md#phase-function). Exactly 1/(4 pi) for g == 0.
 // Requires |g| < 1.
 template <typename Real>
 Real phaseHGFromCosTerms(Real oneMinusCos, Real onePlusCos, Real g) {
@@ -194,14 +194,16 @@ struct RayLightGeometry {
     Real h;   // light-to-ray distance, >= 0
 };
 
-// D = light - eye, camera-relative (compute it in double when world coordinates are large, NUMERICS.md
-// row 13); w unit. h = |D x w|; never sqrt(|D|^2 - tP^2), which cancels when h << |D|.
+// D = light - eye, camera-relative (compute it in double when world coordinates are large,
+// docs/numerics.md#camera-relative-coordinates); w unit. h = |D x w|; never sqrt(|D|^2 - tP^2), which
+// cancels when h << |D|.
 template <typename Real>
 RayLightGeometry<Real> rayLightGeometry(glm::vec<3, Real> D, glm::vec<3, Real> w) {
     return RayLightGeometry<Real>{glm::dot(D, w), glm::length(glm::cross(D, w))};
 }
 
-// ---- Point light: anchored log-tangent Gauss-Legendre (NUMERICS.md 2.5 and 5.1) ------------------
+// ---- Point light: anchored log-tangent Gauss-Legendre ----------------------------------------------
+// (docs/numerics.md#anchored-point-light-segment and docs/numerics.md#quadrature)
 
 // The integrand in eta = y - y0 without the constant factors: p(cos) * exp(-nu expm1(eta)) / cosh(y).
 // cos(theta_s) = -tanh(y), so 1 - cos = 1 + tanh(y) = 2/(1 + e^2) for y >= 0 and 2 e^2/(1 + e^2) for
@@ -237,13 +239,14 @@ Real pointPanel(Real a, Real b, Real y0, Real nu, Real g) {
 
 // L(x0, x1) = int_x0^x1 sigma_s p(cos) I0 exp(-sigma_t (x + r(x))) / r(x)^2 dx for a point light at
 // foot-point distance tP and ray distance h; x1 may be +inf (sky). Evaluated directly for the segment,
-// anchored at x0 (NUMERICS.md 2.5):
+// anchored at x0 (docs/numerics.md#anchored-point-light-segment):
 //   L = sigma_s I0 exp(-sigma_t (x0 + r0)) / h * int_0^E p(-tanh y) exp(-nu expm1(eta)) / cosh y deta,
 //   y = y0 + eta, y0 = asinh(s0 / h), nu = sigma_t q0, E = y1 - y0 = log1p((x1 - x0)(q1 + q0)/((r1 + r0) q0)).
-// Every factor is bounded by its value at x0 and nothing large is subtracted, which keeps it stable in
-// all stiff cases of NUMERICS.md section 4 (thin/zero/thick medium, light behind the camera, ray through
-// or along the light, sky, large sigma_t h, slivers, g -> 1); Sun et al. 2005's closed form is the
-// isotropic special case but cancels catastrophically there (NUMERICS.md 2.2, row 2).
+// Every factor is bounded by its value at x0 and nothing large is subtracted, which keeps it stable on
+// all the stiff inputs of docs/numerics.md#stiff-inputs-of-the-kernel (thin/zero/thick medium, light
+// behind the camera, ray through or along the light, sky, large sigma_t h, slivers, g -> 1); Sun et al.
+// 2005's closed form is the isotropic special case but cancels catastrophically there
+// (docs/numerics.md#the-textbook-closed-form).
 //
 // Ray through the light: h is raised to max(Precision<Real>::kMinRelativeH * scale, kMinAbsoluteH), scale = distance from
 // P to the nearer segment end when P is outside the segment (a harmless clamp: L changes by O((h/s)^2)),
@@ -332,7 +335,7 @@ Real pointSegment(Real tP, Real h, Real x0, Real x1, Real sigma_s, Real sigma_t,
 
     // sigma_s I0 e^{-sigma_t (x0 + r0)} / h * sum with the exponents combined first: e^{+-100}-type
     // factors of thick media and bright lights never overflow or flush to zero on their own
-    // (NUMERICS.md row 3). x0 + r0 >= |D|, so this is at most e^{-sigma_t |D|}-scaled.
+    // (docs/numerics.md#combined-exponents). x0 + r0 >= |D|, so this is at most e^{-sigma_t |D|}-scaled.
     const Real logL = std::log(sigma_s) + std::log(I0) - std::log(h) - sigma_t * (x0 + r0) + std::log(sum);
     return std::exp(logL);
 }

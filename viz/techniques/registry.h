@@ -1,4 +1,4 @@
-// The explicit list of techniques (no self-registering statics: see STYLE.md 1.3).
+// The explicit list of techniques (no self-registering statics: see docs/architecture.md#explicit-registry).
 #pragma once
 
 #include <memory>

@@ -135,7 +135,7 @@ void TextRenderer::draw(const DrawList& list, glm::ivec2 framebufferSize) {
     }
     mVertices.upload(0, bytes, vertices.data());
 
-    // Save what we change (STYLE.md 1.2: the UI renderer restores state around itself).
+    // Save what we change (docs/architecture.md#gl-state: the UI renderer restores state around itself).
     GLint program = 0, vertexArray = 0, blendSrc = 0, blendDst = 0, blendSrcA = 0, blendDstA = 0;
     glGetIntegerv(GL_CURRENT_PROGRAM, &program);
     glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &vertexArray);

@@ -1,6 +1,6 @@
-// The grid of airlight segment cases shared by the CPU math tests and the GLSL test: every stiff case of
-// NUMERICS.md section 4 (each with isotropic and Henyey-Greenstein phase functions) plus a fixed random
-// sample. Inputs are plain doubles; the float and GLSL tests round them to float.
+// The grid of airlight segment cases shared by the CPU math tests and the GLSL test: every stiff input of
+// docs/numerics.md#stiff-inputs-of-the-kernel (each with isotropic and Henyey-Greenstein phase functions)
+// plus a fixed random sample. Inputs are plain doubles; the float and GLSL tests round them to float.
 #pragma once
 
 #include <cmath>
@@ -43,7 +43,8 @@ inline std::vector<SegmentCase> airlightCaseGrid() {
         const char* name;
         double tP, h, x0, x1, sigma_t, sigma_s, I0;
     };
-    // World-offset case: geometry from world coordinates, camera-relative in double (NUMERICS row 13).
+    // World-offset case: geometry from world coordinates, camera-relative in double
+    // (docs/numerics.md#camera-relative-coordinates).
     const glm::dvec3 cam(1e4, 1e4, 0.0), light(1e4 + 5.0, 1e4 + 1e-2, 0.0), dir(1.0, 0.0, 0.0);
     const auto world = rayLightGeometry<double>(light - cam, dir);
     const double sliver = std::ldexp(1.0, -10);

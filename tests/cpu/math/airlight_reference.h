@@ -1,8 +1,8 @@
-// An independent reference for pointSegment: adaptive Boost.Math quadrature in long double (NUMERICS.md
-// section 6), written separately from the Gauss-Legendre kernel in viz/shared/airlight.h. Integrates
-// in y = asinh(s/h) with break points at the segment ends, the closest approach, the HG peak, every 2 units
-// of y and at optical depths 2^k from the segment start; tanh-sinh and Gauss-Kronrod (61 points) on
-// every piece, so the two rules check each other.
+// An independent reference for pointSegment: adaptive Boost.Math quadrature in long double
+// (docs/numerics.md#long-double-quadrature), written separately from the Gauss-Legendre kernel in
+// viz/shared/airlight.h. Integrates in y = asinh(s/h) with break points at the segment ends, the closest
+// approach, the HG peak, every 2 units of y and at optical depths 2^k from the segment start; tanh-sinh
+// and Gauss-Kronrod (61 points) on every piece, so the two rules check each other.
 #pragma once
 
 #include <algorithm>

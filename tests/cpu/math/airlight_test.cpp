@@ -1,6 +1,7 @@
 // Tests of viz/shared/airlight.h: the double kernel against an independent long-double Boost.Math
-// quadrature on every stiff case of NUMERICS.md section 4, against closed forms (sigma_t = 0, h = 0,
-// directional light), against mpmath values from airlight_ref.py, and the float mirror against double.
+// quadrature on every stiff input of docs/numerics.md#stiff-inputs-of-the-kernel, against closed forms
+// (sigma_t = 0, h = 0, directional light), against mpmath values from airlight_ref.py, and the float
+// mirror against double.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -178,7 +179,8 @@ TEST(AirlightPointSegment, AdditiveOverSplitPoints) {
 
 TEST(AirlightPointSegment, ZeroExtinctionMatchesAtan2Form) {
     // sigma_t = 0, isotropic: L = sigma_s I0 / (4 pi h) * (atan(s1/h) - atan(s0/h)), written as
-    // atan2(h (s1 - s0), h^2 + s0 s1), valid also when P is inside the segment (NUMERICS.md 2.4).
+    // atan2(h (s1 - s0), h^2 + s0 s1), valid also when P is inside the segment
+    // (docs/numerics.md#closed-forms-for-zero-extinction).
     struct Case {
         double tP, h, x0, x1;
     };
@@ -200,8 +202,9 @@ TEST(AirlightPointSegment, ZeroExtinctionMatchesAtan2Form) {
 }
 
 TEST(AirlightPointSegment, RayThroughLightMatchesClosedFormsWithFootPointOutside) {
-    // h = 0 closed forms of NUMERICS.md 2.3 (isotropic). The kernel floors h at 1e-7 of the distance to
-    // the foot point, which changes L by O(1e-14) relative.
+    // h = 0 closed forms (isotropic; docs/numerics.md#closed-forms-for-a-ray-through-the-light). The kernel
+    // floors h at kMinRelativeH (1e-13 in double) of the distance from the foot point to the nearer end,
+    // which changes L by O((h / s)^2) relative: far below rounding.
     const long double pi = boost::math::constants::pi<long double>();
     struct Case {
         double tP, x0, x1, sigma;
@@ -266,7 +269,7 @@ TEST(AirlightPointSegment, RayPassingFarBelowTheFloatFloorKeepsItsOwnDistanceInD
     EXPECT_GT(value, 3.0 * atFloatFloor);
 }
 
-// ---- mpmath reference values (NUMERICS.md section 9) --------------------------------------------------
+// ---- mpmath reference values (docs/numerics.md#reference-values) ---------------------------------------
 
 struct TableCase {
     std::string name;

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""Writes airlight_ref_cases.txt: the 16 cases of NUMERICS.md section 9 evaluated by the mpmath
-reference ../shared/tools/airlight_ref.py (30 digits, cross-checked by independent rules).
+"""Writes airlight_ref_cases.txt: the 16 cases of docs/numerics.md#reference-values evaluated by the
+mpmath reference ../shared/tools/airlight_ref.py (30 digits, cross-checked by independent rules).
 
     python3 tests/data/math/make_airlight_ref.py ../shared/tools > tests/data/math/airlight_ref_cases.txt
 

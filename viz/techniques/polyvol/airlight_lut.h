@@ -9,7 +9,8 @@
 //   R: A(u) = tau_h int_{-kTauMax}^{-|u|} f du                 (the part before P)
 //   G: B(u) = tau_h e^{|u| + rho(|u|)} int_{|u|}^{inf} f du     (the part after P, its decay factored out)
 // A segment is then a difference of A values times e^{-sigma_t tP} and of B values times
-// e^{-sigma_t x - rho}: every exponent is formed before exponentiating (no overflow, NUMERICS.md row 3).
+// e^{-sigma_t x - rho}: every exponent is formed before exponentiating (no overflow,
+// docs/numerics.md#combined-exponents).
 //
 // Axes. Rows: log tau_h over [kTauMin, kTauMax]. Columns: y = asinh(|u| / s), s = tau_h / (1 + tau_h),
 // linear in y over [0, columnSpan()], columnSpan() = asinh(kTauMax / s(kTauMin)), the same y in every
