@@ -1,0 +1,582 @@
+// The window's application object: one GLFW window, its state and its parts. The class is declared here
+// and defined by concept across app/window_*.cpp (automation, session and lesson host, input, panes, view
+// drawing, gizmo, inspector, tools, frame, parameters); gui.cpp holds the frame loop and the runs.
+#pragma once
+
+
+#include <epoxy/gl.h>
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+#include <algorithm>
+#include <cctype>
+#include <chrono>
+#include <cmath>
+#include <condition_variable>
+#include <cstdint>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <thread>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "camera_controller.h"
+#include "comparison_grid.h"
+#include "cpu_worker.h"
+#include "lesson_player.h"
+#include "pane_image.h"
+#include "process_stats.h"
+#include "ray_inspection.h"
+#include "core/atomic_file.h"
+#include "core/error.h"
+#include "core/image_io.h"
+#include "gl/debug_output.h"
+#include "gl/program.h"
+#include "gl/readback.h"
+#include "gl/stage_clock.h"
+#include "gl/texture.h"
+#include "gl/vertex_array.h"
+#include "platform/window_glfw.h"
+#include "render_job.h"
+#include "run_scheduler.h"
+#include "step_timeline.h"
+#include "scene/scene_source.h"
+#include "scene/stiff_scenes.h"
+#include "scene/builtin_scenes.h"
+#include "session_state.h"
+#include "light_gizmo.h"
+#include "view_layout.h"
+#include "view_state.h"
+#include "view_stats.h"
+#include "techniques/registry.h"
+#include "plot/plot.h"
+#include "report/error_metrics.h"
+#include "techniques/reference/ray_probe.h"
+#include "ui/font.h"
+#include "ui/immediate.h"
+#include "ui/text_renderer.h"
+
+#include "gui.h"
+#include "input_table.h"
+#include "window_common.h"
+
+namespace airlight {
+
+class GuiApp : public LessonHost {
+public:
+    GuiApp(const GuiOptions& options, viz::scene::Scene scene, viz::Window& window, SessionState session,
+           std::string notice);
+
+    ~GuiApp();
+
+    int run();
+
+    // ---- scripted actions (ui_script.h) ----
+
+    // The rectangle of a widget, view or sidebar item drawn last frame.
+    Rect scriptTarget(const ScriptAction& a) const;
+
+    // Runs actions until one needs frames to pass; false when the script is done.
+    // A widget named by a script action is scrolled into view first, as a user would: the request is
+    // served on the next frame and the new rectangle known the frame after. Returns true while waiting.
+    bool revealScriptTarget(const ScriptAction& a);
+
+    bool stepScript();
+
+    // The back buffer as drawn (before the swap) to the PNG, and the views' rectangles beside it.
+    void writeScreenshot(const std::string& path);
+
+private:
+    // ---- the session file ----
+
+    SessionState currentSession() const;
+
+    void saveSessionNow();
+
+    void loadSessionNow();
+
+    // The session's medium, technique (with its settings), camera, view and exposure over the scene.
+    void restoreSessionOverStep() override;
+
+    // ---- the lesson player's hooks (lesson_player.h): the window's own state changes ----
+
+    void loadLessonScene(const std::string& name) override;
+
+    LessonWindowState lessonWindowState() const override;
+
+    void applyLessonWindowState(const LessonWindowState& s) override;
+
+    void showLessonView(const std::string& id) override;
+
+    // A lesson's view goes to the focused view of the grid (the right-hand one by default).
+    void showInFocusedView(const std::string& id);
+
+    void setLessonSetting(const std::string& name, double value) override;
+
+    // ---- animation (P): the first light circles its aim point, and a technique with a `time`
+    // parameter (slices' scrolling noise) follows the clock. GPU techniques run every frame while it plays;
+    // the reference (seconds per frame on its worker) keeps the light where it is. Pausing keeps the
+    // state where it is; playing again continues from there.
+    static constexpr double kLightTurnSeconds = 8.0;
+
+    void togglePlaying();
+
+    void advanceAnimation(double dt);
+
+    void setLessonLight(const viz::scene::Light& light) override;
+
+    // Camera, view and exposure of the session (the scene, medium and technique are applied before).
+    void applySessionView();
+
+    // ---- comparison grid ----
+
+    // G: the comparison grid (comparison_grid.h) for the current view; G again closes it.
+    void toggleComparison();
+
+    // The grid's techniques with the window's instances and settings (this thread holds the GL context).
+    void runComparisonTechniques();
+
+    void drawComparison(DrawList& dl, const Rect& area);
+
+    // ---- export ----
+
+    // Files go to --export-dir (default airlight-exports/ in the working folder), named after the scene,
+    // technique and view, so that successive exports of different views do not overwrite each other.
+    std::string exportStem(const std::string& what);
+
+    // E: the intermediate view as EXR (its float values) and PNG (as shown: exposure or range mapping).
+    void exportView();
+
+    // F12: the whole window as PNG (with its sidecar JSON of view rectangles).
+    void exportWindow();
+
+    // ---- stepping ----
+
+    // The stage the cursor stands in (the last one for the complete frame).
+    int stageShown() const;
+
+    // The cursor's sub-step position: {at, count} (1-based; {count, count} when the stage runs whole,
+    // {0, 0} for a stage without sub-steps).
+    std::pair<int, int> substepState() const;
+
+    // Whether the frame is the complete algorithm: the last stage, whole, and no sub-step parameter a
+    // lesson (or --set) left cutting an earlier stage short.
+    std::string stoppedEarly() const;
+
+    void moveCursor(StepCursor c);
+
+    // S / Shift+S: the next / previous stage, wrapping (the last stage is the complete frame). A stage
+    // with sub-steps is entered at its first.
+    void stepStage(int delta);
+
+    // D / Shift+D: one sub-step more / fewer inside the current stage; Home / End: the first / last.
+    void stepSubstep(int delta);
+    void setSubstepAt(int k);
+
+    // The timeline under the views: a click or a drag puts the cursor there (step_timeline.h).
+    void drawStepTimeline();
+
+    // ---- ray inspector ----
+
+    // The exact ground truth along the ray of the final image's pixel under the cursor, beside the current
+    // technique's value for that pixel. The cursor elsewhere clears it.
+    void inspectPixelUnderCursor();
+
+    void inspectPixel(int x, int y);
+
+    void drawInspector(DrawList& dl, const Rect& area);
+
+    // A cross on the inspected pixel in a screen-space view.
+    void markProbe(DrawList& dl, const ViewState& v);
+
+    // ---- techniques and rendering ----
+
+    // The main views' instance of the current technique (its own: no other consumer runs it).
+    viz::Technique& technique() { return mRunners.at(mIds[std::size_t(mCurrent)])->technique(); }
+    const viz::Technique& technique() const { return mRunners.at(mIds[std::size_t(mCurrent)])->technique(); }
+
+    void selectTechnique(int index);
+
+    void render();
+
+    void acceptCpuResult(CpuResult result);
+
+    // ---- the view grid: what each view shows ----
+
+    // The other side of a difference view: one technique's images for one scene, camera and size.
+    struct OtherRun {
+        std::string key;  // scene, camera, size and settings it was run for
+        viz::Image airlight, final;
+        std::string failure;
+        std::string pending;  // a CPU technique: the key of the run the worker computes
+    };
+
+    // Contents in the views list: the final frame, L_air, then every intermediate of the run.
+    int contentCount() const;
+    std::string contentId(int index) const;
+    std::string contentLabel(int index) const;
+
+    ViewState& focusedView();
+
+    void clearPanes();
+
+    // The default grid: the final frame on the left, `content` on the right (focused).
+    void resetLayout(const std::string& content);
+
+    // The session's grid, or the default one around its `view`.
+    void applySessionGrid();
+
+    // A view of the final frame, L_air or an intermediate the size of the frame: its texels are the
+    // frame's pixels, so cursors link across such views.
+    // A view with one texel per frame pixel (an orbit view is frame-sized but seen from elsewhere).
+    bool isScreenSpace(const ViewState& v) const;
+
+    // Builds the view's pane from the last run (and its difference image in difference mode).
+    void buildPane(ViewState& v);
+
+    // Difference mode: this technique's image against the same image of `against` (same scene, camera,
+    // size; that technique's own settings), as a heat map (or blue-white-red when signed), with the
+    // report's error figures in the title.
+    void makeDifference(ViewState& v, const std::string& content);
+
+    // The other side of difference views: `id`'s images for the current scene, camera and size, kept
+    // until any of those change. CPU techniques (the reference, from its on-disk cache when it has the
+    // frame) run on a worker thread of their own, so that the window stays responsive: null until its
+    // full-size pass arrives (pollOtherWorker). GPU techniques need this thread's GL context: they are
+    // queued and run at the start of the next frame (runDueGpuOthers), after a frame that says so, as
+    // the window does for a slow run of its own technique. The current technique is its own last output.
+    const OtherRun* otherRun(const std::string& id);
+
+    // The settings `id` runs with on the other side: the session's for it, then the command line's.
+    viz::Settings otherSettings(const std::string& id) const;
+
+    // What the other side's images depend on: technique, size, camera, scene (medium, lights), settings.
+    std::string otherRunKey(const std::string& id) const;
+
+    // The GPU techniques queued by otherRun: run now (this blocks the thread; the frame before said
+    // "computing it..."), unless the scene, camera or size moved on since they were asked for.
+    void runDueGpuOthers();
+
+    // The medium and lights: what a CPU worker's scene copy depends on besides the camera.
+    std::string sceneOnlyKey() const;
+
+    // The difference worker's full-size pass: the other side of the difference views it was asked for.
+    void pollOtherWorker();
+
+    bool otherPending() const;
+
+    void refreshView(ViewState& v);
+
+    // The technique's view of the inspected pixel in the last run, read back once per run and pixel.
+    const PixelInspection& probeInspection();
+
+    void refreshPanes();
+
+    // [ ] and the views list: what the focused view shows.
+    void stepView(int delta);
+
+    void selectView(int index);
+
+    void stepLayer(int delta);
+
+    // H / J: a new view beside / below the focused one, showing the content after the focused one's.
+    void splitFocused(SplitAxis axis);
+
+    // K: closes the focused view (not the last one).
+    void closeFocused();
+
+    // O / Shift+O: the focused view trades places with the next / previous one (it keeps the focus).
+    void swapFocused(int step);
+
+    // F: the focused view's difference to the reference on or off (final frame and L_air views).
+    void toggleDifference();
+
+    // ---- input ----
+
+    glm::vec2 cursorPixels(double x, double y) const;
+
+    // Keys are dispatched from one table (input_table.h), which also writes the help lines and the
+    // README's key table.
+    void onKey(int key, int action, int mods);
+
+    void perform(Command command, int offset);
+
+    void onChar(unsigned codepoint);
+
+    void onMouseButton(int button, int action);
+
+    void onMouseButtonAt(int button, int action, glm::vec2 p);
+
+    void onCursor(double x, double y);
+
+    // Orbit views (render::MeshView: polyvol's light volume, slices' planes) turn with a left drag:
+    // their mesh_yaw / mesh_pitch parameters, 0.4 degrees per pixel.
+    bool isOrbitView(const ViewState& v) const;
+
+    void turnOrbitView(glm::vec2 d);
+
+    void onCursorPixels(glm::vec2 p);
+
+    void onScroll(double dy);
+
+    // A key held down, by the user or by a script's `hold`.
+    bool keyDown(int key) const;
+
+    bool anyFlyKeyDown() const;
+
+    void fly(double dt);
+
+    // ---- drawing ----
+
+    // Largest rectangle of the image's aspect ratio (the render's when the pane is empty) inside
+    // `area`, centred at the top.
+    Rect fitImage(const Rect& area, glm::ivec2 imageSize) const;
+
+    // A clickable list entry: highlighted when selected, lighter under the cursor.
+    void listItem(const Rect& r, const std::string& text, bool selected, std::function<void()> onClick);
+
+    // The texel of `pane` under a window point, through the view's pan and zoom; row 0 is the row shown
+    // at the top (the image convention: for a frame-sized view, the frame's pixel).
+    static glm::ivec2 texelAt(const PaneImage& pane, const Rect& image, const viz::ui::ImageViewTransform& view,
+                              glm::vec2 p);
+
+    // Zoomed in until a texel is large enough to hold its value: write the value in every visible texel
+    // (one read of the visible block per frame).
+    void texelValues(const PaneImage& pane, const Rect& image, const viz::ui::ImageViewTransform& view);
+
+    // ---- the view grid: drawing ----
+
+    // Title (two lines), image, value readout and, when open, the display strip inside one cell.
+    void layoutCell(ViewState& v, const Rect& cell);
+
+    // ---- the light gizmo (light_gizmo.h): the first light's handles over the frame views ----
+
+    std::optional<LightGizmo> gizmoFor(const ViewState& v) const;
+
+    // Frame pixels (continuous, y down) <-> window pixels, through the view's pan and zoom.
+    static glm::vec2 frameToWindow(const ViewState& v, glm::dvec2 px);
+    static glm::dvec2 windowToFrame(const ViewState& v, glm::vec2 p);
+
+    // Where a handle is drawn and grabbed: its window point, or (off the view) the nearest point just
+    // inside the image's edge; `inside` says which.
+    glm::vec2 handlePoint(const ViewState& v, glm::dvec2 px, bool& inside) const;
+
+    // The handle under `p` (the direction handle first: it is the smaller target), within 8 pixels.
+    // Drags are relative: a handle off the view is grabbed at the view's edge and follows the cursor.
+    std::optional<GizmoDrag> gizmoHandleAt(glm::vec2 p) const;
+
+    void dragGizmo(glm::vec2 p);
+
+    // The first light's handles: a square at its position (point, spot), a diamond at the end of its
+    // direction arm (spot: where the light goes; directional: where it comes from, the arm ending at
+    // the orbit target). Scripts name them "gizmo:position" and "gizmo:direction" (in the first view
+    // that shows them).
+    void drawGizmo(DrawList& dl, int id, const ViewState& v);
+
+    // The scene's medium or lights changed (panel, gizmo): the CPU worker keeps its own copy of the
+    // scene, and the plan may change.
+    void sceneEdited();
+
+    // The gaps between views: each is the toolkit's splitter over its split (scripts name them
+    // "divider:root", "divider:1", ... by the split's path).
+    void drawDividers(const Rect& area);
+
+    // The window's cursor shows a divider can be dragged.
+    void setResizeCursor(std::optional<SplitAxis> axis);
+
+    void drawViewGrid(const Rect& area);
+
+    // "name  [i/n]  id  layer k/n  |  3 negative px" and the note with the range or the error figures.
+    std::pair<std::string, std::string> viewTitle(const ViewState& v) const;
+
+    void drawView(int id, ViewState& v);
+
+    void drawPlots(const ViewState& v);
+
+    // The technique's marks for the linked pixel, asked once per pixel and run (a GPU technique may
+    // read a texel back for them).
+    std::vector<viz::ViewMarker> markersFor(const ViewState& v);
+
+    // A small cross with a dark outline, so that it shows on bright and dark images alike.
+    void crosshair(DrawList& dl, glm::vec2 c, const Rect& clip);
+
+    // Technique markers: data uv (row 0 = the first row stored; a GL texture's row 0, shown at the bottom,
+    // also when the pane shows a layer read back) -> the view's image uv -> window. Marks of another layer
+    // (cube face, array layer) than the one shown are left out.
+    void drawMarkers(DrawList& dl, const ViewState& v, const std::vector<viz::ViewMarker>& marks);
+
+    // "rendering..." while a slow GPU run blocks, the CPU worker's progress while it computes.
+    void drawStatusBands(DrawList& dl, const Rect& image);
+
+    // The display strip: channel, range (auto or manual), log scale, colour map, negative overlay and
+    // difference mode as widgets on the left; the histogram of the shown values on the right.
+    void drawStrip(int id, ViewState& v);
+
+    // Counts of the shown channel's finite values over their range, with the display range marked.
+    void drawHistogram(const ViewState& v, const Rect& area);
+
+    // What the sidecar says of a view (tests assert on it).
+    nlohmann::json viewSidecar(int id, const ViewState& v);
+
+    void draw();
+
+    // ---- scene and technique controls (immediate-mode widgets) ----
+
+    // Medium and light sliders and the technique's parameters, generated from its declarations.
+    // The widgets' frame starts before the view grid (its display strips) and ends after this panel.
+    void beginWidgets(glm::ivec2 fb);
+
+    void drawParameters(glm::ivec2 fb);
+
+    // The preset picker: "ours" (the defaults) or "paper" (the technique's paperSettings(), as --preset
+    // paper) for the parameters where the two differ; "(mixed)" when those parameters are neither.
+    void presetWidget(const std::string& id);
+
+    // The scene pickers: the built-in scenes (and the file given on the command line, if any) in one
+    // list, the stiff cases of `airlight report --suite stiff` in another (one long list would not fit
+    // the window). Picking one loads it with its own camera, medium and lights; a scene that fails to
+    // load leaves the current one and shows the error.
+    void scenePicker();
+
+    // Where the light points and where it is: azimuth and elevation of the direction for spot and
+    // directional lights, position for point and spot lights (an area light's rectangle is scene
+    // geometry and stays put). Returns whether the light changed.
+    bool lightPlacementWidgets(viz::scene::Light& light);
+
+    void parameterWidgets();
+
+    void replan();
+
+    GuiOptions mOptions;
+    long mGlErrors = 0;  // GL errors seen by the script's stats actions
+    int mScriptRevealFrames = 0;
+    bool mPlaying = false;                        // P: the animation runs
+    double mPlayClock = 0.0, mPlayTurn = 0.0;     // seconds played; the light's turn (0..1)
+    std::optional<viz::scene::Light> mPlayLight;  // the first light as it was when play started
+    glm::dvec3 mPlayCentre{0.0};  // frames left until a script action's widget is scrolled into view
+    std::vector<std::string> mSceneChoices, mStiffChoices;  // the scene pickers' lists (built lazily)
+    SessionState mSession;  // as loaded (or defaults); settings of techniques not yet visited come from it
+    std::string mNotice;    // last session message, shown in the status line
+    viz::scene::Scene mScene;  // the camera follows the controller
+    viz::Window& mWindow;
+    CameraController mController;
+    double mGizmoArm = 1.0;  // scene units (kGizmoArm of the scene camera's orbit distance)
+    std::vector<std::string> mIds;
+    // Instances for the other consumers (difference views, the comparison grid), apart from mRunners.
+    std::map<std::string, std::unique_ptr<viz::Technique>> mTechniques;
+    int mCurrent = 0;
+    viz::Settings mSettings;
+    viz::Plan mPlan;
+    std::string mSettingsError, mError, mClockName;
+
+    std::unique_ptr<viz::ui::FontAtlas> mFont;
+    std::unique_ptr<viz::ui::TextRenderer> mTextRenderer;
+    std::unique_ptr<DrawList> mDrawList;    // text and overlays, drawn last in one call
+    std::unique_ptr<DrawList> mBackground;  // panels behind the images
+    std::unique_ptr<ImageDisplay> mImageDisplay;
+    std::unique_ptr<CpuWorker> mWorker;
+    float mScale = 1.0f;
+
+    viz::FrameOutput mOutput;
+    bool mHaveOutput = false;
+    glm::ivec2 mOutputSize{0};
+    int mPass = 0, mPassCount = 1;
+    // ---- the view grid ----
+    ViewLayout mLayout{0};
+    std::map<int, ViewState> mViews;  // by the layout's view number
+    int mFocused = 1;                 // keys, the views list and exports act on it
+    int mNextView = 2;
+    std::vector<ViewCellRect> mCells;        // where the last frame put each view
+    std::optional<glm::ivec2> mLinkedPixel;  // frame pixel under the cursor (a screen-space view)
+    int mHoveredView = -1;
+    int mDragTitle = -1;                     // a title dragged onto another view swaps the two
+    std::vector<Rect> mStripRects;           // open display strips' widget panels last frame
+    std::map<std::string, OtherRun> mOtherRuns;  // difference views' other side, by technique id
+    OtherRun mSelfRun;
+    std::unique_ptr<CpuWorker> mOtherWorker;  // CPU techniques on the other side of difference views
+    bool mGpuOthersDue = false;               // GPU techniques queued for difference views (next frame)
+    std::string mOtherSceneKey;
+    double mGridMilliseconds = 0.0;  // CPU time drawViewGrid took last frame
+    double mUiMilliseconds = 0.0;    // CPU time of building the whole frame's UI (before its draw calls)
+    glm::vec2 mHoverDrawn{-1.0f};    // the mouse position the widgets saw last frame
+    // markersFor answers by intermediate id, for one pixel of the current run.
+    std::map<std::string, std::pair<glm::ivec2, std::optional<std::vector<viz::ViewMarker>>>> mMarkerCache;
+    float mExposure = 0.0f;
+    bool mExposureSet = false;
+    bool mDirty = true;
+    bool mRendering = false;  // a GPU run is about to block the thread
+    double mLastRunSeconds = 0.0;
+    bool mReduced = false;  // the last GPU run was at half size during an interaction
+
+    std::vector<std::pair<Rect, std::function<void()>>> mHits;  // clickable rectangles of the last frame
+    struct PaneDraw {
+        Rect rect;
+        const PaneImage* pane;
+        const viz::ui::ImageViewTransform* view;  // nullptr: the whole image
+        DisplayMapping mapping;
+    };
+    ComparisonGrid mComparison;  // G
+    std::vector<PaneDraw> mPaneDraws;
+    std::unique_ptr<viz::ui::Context> mUi;   // the widgets
+    viz::ui::Input mUiInput;                 // keys, text and wheel gathered since the last frame
+    Rect mParamsRect;                        // the widget panel's area last frame
+    std::optional<viz::reference::RayProbe> mProbe;  // the ray inspector's pixel, if any
+    std::optional<glm::ivec2> mPendingInspect;  // a lesson step's pixel, inspected when its result is in
+    std::unique_ptr<LessonPlayer> mLesson;      // the lesson panel, when a lesson is open
+    glm::ivec2 mLessonSize{0};                  // --size given with a lesson: every step at that size
+    StepCursor mCursor;                      // stepping: where the main views' run stops (not a setting)
+    // The main views' technique instances, one per technique, each with its last run's key.
+    std::map<std::string, std::unique_ptr<StageRunner>> mRunners;
+    std::vector<TimelineSegment> mTimeline;  // the stepping timeline as drawn last
+    Rect mTimelineRect;
+    bool mDragTimeline = false;
+    int mScriptHeld = -1;           // the key a script's `hold` keeps down (-1: none)
+    bool mScriptHeldShift = false;  // ... with Shift
+    std::string mProbeTechnique;
+    bool mProbeHasValue = false;
+    glm::dvec3 mProbeValue{0.0};
+    // The light panel's intensity slider: a declared log range (candela or lux) covering every scene's
+    // lights, from millimetre models to the stiff cases; 0 is the "on" box unticked.
+    static constexpr float kIntensitySliderMin = 1e-6f, kIntensitySliderMax = 1e12f;
+    double mLightIntensityOff = 0.0;  // the intensity before "on" was unticked
+    int mDragView = -1;                      // the view a drag pans
+    int mDragOrbit = -1;                     // the orbit view a drag turns
+    bool mShowGizmo = true;                   // L: the light gizmo over the frame views
+    std::optional<GizmoDrag> mGizmoDrag;       // the light handle being dragged
+    std::vector<Rect> mDividerRects;          // the grid's splitters last frame
+    std::optional<SplitAxis> mCursorAxis;     // the resize cursor shown (none: the arrow)
+    GLFWcursor* mArrowCursor = nullptr;       // stays null: the default cursor
+    GLFWcursor* mColumnCursor = nullptr;      // created on first use, destroyed with the app
+    GLFWcursor* mRowCursor = nullptr;
+    std::optional<PixelInspection> mProbeInspection;  // cache of probeInspection()
+    int mScriptDragStep = 0;                 // a script's drag: 0 before the press, 1-4 moving, 5 release
+    glm::vec2 mScriptDragFrom{0.0f}, mScriptDragTo{0.0f};  // its ends, fixed at the press
+    struct ViewRect {
+        std::string name, title;
+        Rect rect;      // the image's rectangle in window pixels
+        int cell = -1;  // the grid's view number (-1: the comparison grid)
+    };
+    std::vector<ViewRect> mViewRects;  // what the last frame showed where (screenshot sidecar)
+    // Sidebar items "technique:ID", "view:LABEL"; per grid view N: "cell:N" (image), "title:N", "strip:N"
+    // (the display strip's toggle).
+    std::map<std::string, Rect> mNamedRects;
+    std::size_t mScriptIndex = 0;
+    int mScriptWait = 0;
+    std::optional<bool> mSyntheticDown;  // the script holds the left button (down / just released)
+    glm::vec2 mScriptPoint{0.0f};
+    int mFramesDrawn = 0;
+    Rect mViewArea;
+    float mImageHeight = 1.0f;
+    glm::vec2 mHover{-1.0f};
+    glm::vec2 mLastCursor{0.0f};
+    int mDragButton = -1;
+};
+
+}  // namespace airlight

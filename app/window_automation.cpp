@@ -1,0 +1,307 @@
+// The window under automation: the script player (gui --script) and the screenshot sidecar.
+#include "gui_app.h"
+
+namespace airlight {
+
+Rect GuiApp::scriptTarget(const ScriptAction& a) const {
+    if (const auto it = mUi->widgetRects().find(a.target); it != mUi->widgetRects().end()) return it->second;
+    for (const auto& v : mViewRects)
+        if (v.name == a.target) return v.rect;
+    if (const auto it = mNamedRects.find(a.target); it != mNamedRects.end()) return it->second;
+    std::string known;
+    for (const auto& [name, r] : mNamedRects) known += (known.empty() ? "" : ", ") + name;
+    for (const auto& v : mViewRects) known += ", " + v.name;
+    for (const auto& [name, r] : mUi->widgetRects()) known += ", " + name;
+    throw viz::InputError(mOptions.scriptPath + ":" + std::to_string(a.line) + ": nothing named '" + a.target +
+                          "' is on screen (on screen: " + known + ")");
+}
+
+bool GuiApp::revealScriptTarget(const ScriptAction& a) {
+    if (mScriptRevealFrames > 0) return --mScriptRevealFrames > 0;  // 0: revealed, go on
+    if (!mUi->widgetRects().count(a.target)) return false;
+    mUi->reveal(a.target);
+    mScriptRevealFrames = 2;
+    return true;
+}
+
+bool GuiApp::stepScript() {
+    while (mScriptIndex < mOptions.script.size()) {
+        const ScriptAction& a = mOptions.script[mScriptIndex];
+        switch (a.kind) {
+            case ScriptAction::Kind::Frames:
+                if (mScriptWait == 0) mScriptWait = a.frames;
+                if (--mScriptWait > 0) return true;
+                ++mScriptIndex;
+                return true;
+            case ScriptAction::Kind::Key:
+                onKey(scriptKeyCode(a.target), GLFW_PRESS, a.modifiers);
+                ++mScriptIndex;
+                return true;
+            case ScriptAction::Kind::Hold:
+                if (mScriptWait == 0) {
+                    onKey(scriptKeyCode(a.target), GLFW_PRESS, a.modifiers);
+                    mScriptHeld = scriptKeyCode(a.target);
+                    mScriptHeldShift = (a.modifiers & GLFW_MOD_SHIFT) != 0;
+                    mScriptWait = a.frames + 1;
+                }
+                if (--mScriptWait > 0) return true;
+                mScriptHeld = -1;
+                ++mScriptIndex;
+                return true;
+            case ScriptAction::Kind::Hover: {
+                if (revealScriptTarget(a)) return true;
+                const Rect r = scriptTarget(a);
+                mHover = r.min + a.fraction * r.size();
+                ++mScriptIndex;
+                return true;
+            }
+            case ScriptAction::Kind::Wheel: {
+                if (revealScriptTarget(a)) return true;
+                const Rect r = scriptTarget(a);
+                mHover = r.min + 0.5f * r.size();
+                onScroll(double(a.notches));
+                ++mScriptIndex;
+                return true;
+            }
+            case ScriptAction::Kind::Screenshot:
+                writeScreenshot(a.target);
+                ++mScriptIndex;
+                break;
+            case ScriptAction::Kind::Stats: {
+                while (glGetError() != GL_NO_ERROR) ++mGlErrors;
+                std::ofstream out(a.target, std::ios::app);
+                out << statsJsonLine(currentProcessStats(), long(mFramesDrawn), mGlErrors) << "\n";
+                if (!out) throw viz::InputError(mOptions.scriptPath + ":" + std::to_string(a.line) + ": cannot append to '" + a.target + "'");
+                ++mScriptIndex;
+                break;
+            }
+            case ScriptAction::Kind::Drag: {
+                // Frame 1: press at the start; frames 2-5: move a quarter of the way each; then release.
+                // Both ends are fixed at the press: what is dragged (a divider, a handle) moves.
+                if (mScriptDragStep == 0) {
+                    const Rect r = scriptTarget(a);
+                    Rect onto = r;
+                    if (!a.onto.empty()) {
+                        ScriptAction other = a;
+                        other.target = a.onto;
+                        onto = scriptTarget(other);
+                    }
+                    mScriptDragFrom = r.min + a.fraction * r.size();
+                    mScriptDragTo = onto.min + a.to * onto.size();
+                    mHover = mScriptDragFrom;
+                    mSyntheticDown = true;  // widgets (a splitter, a slider) see the button held
+                    onMouseButtonAt(GLFW_MOUSE_BUTTON_LEFT, GLFW_PRESS, mScriptDragFrom);
+                    mScriptDragStep = 1;
+                } else if (mScriptDragStep <= 4) {
+                    const glm::vec2 p = mScriptDragFrom + (mScriptDragTo - mScriptDragFrom) * (float(mScriptDragStep) / 4.0f);
+                    onCursorPixels(p);
+                    ++mScriptDragStep;
+                } else {
+                    mSyntheticDown.reset();
+                    onMouseButtonAt(GLFW_MOUSE_BUTTON_LEFT, GLFW_RELEASE, mScriptDragTo);
+                    mScriptDragStep = 0;
+                    ++mScriptIndex;
+                }
+                return true;
+            }
+            case ScriptAction::Kind::Click: {
+                // Frame 1: move there and press; frame 2: release (widgets click on release).
+                if (!mSyntheticDown) {
+                    if (revealScriptTarget(a)) return true;
+                    const Rect r = scriptTarget(a);
+                    mScriptPoint = r.min + a.fraction * r.size();
+                    mHover = mScriptPoint;
+                    mSyntheticDown = true;
+                    onMouseButtonAt(GLFW_MOUSE_BUTTON_LEFT, GLFW_PRESS, mScriptPoint);
+                } else {
+                    mHover = mScriptPoint;
+                    mSyntheticDown = false;
+                    onMouseButtonAt(GLFW_MOUSE_BUTTON_LEFT, GLFW_RELEASE, mScriptPoint);
+                    mSyntheticDown.reset();
+                    ++mScriptIndex;
+                }
+                return true;
+            }
+        }
+    }
+    return false;
+}
+
+void GuiApp::writeScreenshot(const std::string& path) {
+    const glm::ivec2 fb = mWindow.framebufferSize();
+    std::vector<std::uint8_t> bytes(std::size_t(fb.x) * std::size_t(fb.y) * 4);
+    glReadBuffer(GL_BACK);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, fb.x, fb.y, GL_RGBA, GL_UNSIGNED_BYTE, bytes.data());
+    // Display bytes, GL row 0 at the bottom -> linear floats, row 0 at the top (writeImage encodes).
+    viz::Image image(fb.x, fb.y, 3);
+    for (int y = 0; y < fb.y; ++y)
+        for (int x = 0; x < fb.x; ++x)
+            for (int c = 0; c < 3; ++c) {
+                const float v = float(bytes[(std::size_t(fb.y - 1 - y) * std::size_t(fb.x) + std::size_t(x)) * 4 +
+                                            std::size_t(c)]) / 255.0f;
+                image.at(x, y, c) = v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f);
+            }
+    viz::writeImage(image, path);
+    nlohmann::json views = nlohmann::json::array();
+    for (const auto& v : mViewRects) {
+        nlohmann::json entry = {{"name", v.name}, {"title", v.title},
+                                {"rect", {v.rect.min.x, v.rect.min.y, v.rect.max.x, v.rect.max.y}}};
+        if (v.cell >= 0 && mViews.count(v.cell)) entry.update(viewSidecar(v.cell, mViews.at(v.cell)));
+        views.push_back(entry);
+    }
+    nlohmann::json sidecar = {{"window", {fb.x, fb.y}},
+                                    {"scale", mScale},
+                                    {"scene", mScene.name},
+                                    {"technique", technique().id()},
+                                    {"frames", mFramesDrawn},
+                                    {"medium", {{"sigma_s", mScene.medium.sigma_s}, {"sigma_a", mScene.medium.sigma_a},
+                                                {"g", mScene.medium.g}}},
+                                    {"settings", mSettings},
+                                    {"stage", technique().stages()[std::size_t(stageShown())].id},
+                                    {"last_stage_run", mHaveOutput ? mOutput.lastStageRun : -1},
+                                    {"first_stage_run", mHaveOutput ? mOutput.firstStageRun : -1},
+                                    {"substep", substepState().first},
+                                    {"substep_count", substepState().second},
+                                    {"stopped_early", stoppedEarly()},
+                                    {"notice", mNotice},
+                                    {"views", views}};
+    {
+        nlohmann::json lights = nlohmann::json::array();
+        for (const auto& l : mScene.lights)
+            lights.push_back({{"name", l.name},
+                              {"position", {l.position.x, l.position.y, l.position.z}},
+                              {"direction", {l.direction.x, l.direction.y, l.direction.z}},
+                              {"intensity", l.intensity}});
+        sidecar["lights"] = lights;
+    }
+    // The light gizmo in the first view that shows it: its handles in that view's frame pixels.
+    sidecar["gizmo"] = nullptr;
+    for (const ViewCellRect& c : mCells) {
+        const auto gizmo = gizmoFor(mViews.at(c.view));
+        if (!gizmo) continue;
+        const GizmoHandles h = gizmo->handles(mScene.lights[0]);
+        const auto point = [](const std::optional<glm::dvec2>& p) {
+            return p ? nlohmann::json::array({p->x, p->y}) : nlohmann::json(nullptr);
+        };
+        // Where each handle is grabbed in the window (off the view: at its edge).
+        const auto grab = [&](const std::optional<glm::dvec2>& p) {
+            bool inside = true;
+            if (!p) return nlohmann::json(nullptr);
+            const glm::vec2 w = handlePoint(mViews.at(c.view), *p, inside);
+            return nlohmann::json::array({w.x, w.y});
+        };
+        sidecar["gizmo"] = {{"cell", c.view},           {"position", point(h.position)}, {"tip", point(h.tip)},
+                            {"root", point(h.root)},    {"arm", mGizmoArm},
+                            {"position_grab", grab(h.position)}, {"tip_grab", grab(h.tip)}};
+        break;
+    }
+    sidecar["animation"] = {{"playing", mPlaying}, {"seconds", mPlayClock}, {"light_turn", mPlayTurn}};
+    {
+        const viz::scene::Camera& c = mController.camera();
+        sidecar["camera"] = {{"mode", mController.mode() == CameraController::Mode::Fly ? "fly" : "orbit"},
+                             {"position", {c.position.x, c.position.y, c.position.z}},
+                             {"forward", {c.forward.x, c.forward.y, c.forward.z}}};
+    }
+    sidecar["view_grid"] = {{"layout", mLayout.toText()}, {"focused", mFocused},
+                            {"maximised", mLayout.maximised()},
+                            {"cpu_ms_last_frame", mGridMilliseconds},
+                            {"ui_cpu_ms_last_frame", mUiMilliseconds},
+                            {"linked_pixel", mLinkedPixel ? nlohmann::json::array({mLinkedPixel->x, mLinkedPixel->y})
+                                                          : nlohmann::json(nullptr)}};
+    if (mComparison.isOpen()) sidecar["comparison"] = mComparison.toJson();
+    if (mProbe) {
+        const auto rgb = [](glm::dvec3 v) { return nlohmann::json::array({v.x, v.y, v.z}); };
+        nlohmann::json lights = nlohmann::json::array();
+        for (const auto& l : mProbe->lights) {
+            nlohmann::json spans = nlohmann::json::array();
+            for (const auto& iv : l.lit) spans.push_back({iv.a, iv.b});
+            lights.push_back({{"name", l.name}, {"lit", spans}, {"airlight", rgb(l.airlight)}});
+        }
+        sidecar["inspector"] = {{"pixel", {mProbe->x, mProbe->y}},
+                                {"d", mProbe->d},
+                                {"reference", rgb(mProbe->airlight)},
+                                {"technique", mProbeTechnique},
+                                {"technique_value", mProbeHasValue ? rgb(mProbeValue) : nlohmann::json(nullptr)},
+                                {"lights", lights}};
+        if (mHaveOutput && mProbeTechnique == technique().id()) {
+            nlohmann::json readings = nlohmann::json::object();
+            for (const PixelReading& r : probeInspection().readings) {
+                std::vector<double> values;
+                for (int c = 0; c < r.channels; ++c) values.push_back(r.value[c]);
+                readings[r.id] = values;
+            }
+            sidecar["inspector"]["readings"] = readings;
+            sidecar["inspector"]["ray_views"] = probeInspection().rayViews;
+            nlohmann::json series = nlohmann::json::object();
+            for (const viz::plot::Series& s : probeInspection().series) {
+                nlohmann::json points = nlohmann::json::array();
+                for (const glm::dvec2& q : s.points) points.push_back({q.x, q.y});
+                series[s.name] = points;
+            }
+            sidecar["inspector"]["ray_series"] = series;
+        }
+    }
+    if (mLesson) sidecar["lesson"] = mLesson->sidecar(*this);
+    std::filesystem::path json(path);
+    json.replace_extension(".json");
+    const std::string error = viz::writeFileAtomically(json, sidecar.dump(2) + "\n");
+    if (!error.empty()) throw viz::InputError("cannot write '" + json.string() + "': " + error);
+}
+
+nlohmann::json GuiApp::viewSidecar(int id, const ViewState& v) {
+    const DisplaySettings& d = v.display;
+    const DisplayMapping m = resolveMapping(v.pane, d, mExposure, v.measured);
+    nlohmann::json j = {{"cell", id},
+                        {"content", v.content},
+                        {"cell_rect", {v.cell.min.x, v.cell.min.y, v.cell.max.x, v.cell.max.y}},
+                        {"focused", id == mFocused},
+                        {"layer", v.pane.layer},
+                        {"zoom", v.transform.zoom},
+                        {"center", {v.transform.center.x, v.transform.center.y}},
+                        {"size", {v.pane.size.x, v.pane.size.y}},
+                        {"screen_space", isScreenSpace(v)},
+                        {"display", {{"channel", channelNames()[std::size_t(d.channel)]},
+                                     {"range", rangeModeNames()[std::size_t(d.range)]},
+                                     {"lo", m.lo}, {"hi", m.hi}, {"log", d.logScale},
+                                     {"colour_map", colourMapNames()[std::size_t(d.colourMap)]},
+                                     {"mode", int(m.mode)}, {"mark_negative", m.markNegative},
+                                     {"strip_open", d.stripOpen}}},
+                        {"negative_pixels", v.counts.negative},
+                        {"nan_pixels", v.counts.nan},
+                        {"inf_pixels", v.counts.inf}};
+    if (d.difference != DifferenceMode::Off) {
+        // Figures only where they were computed and are defined (relative L2 is not against a black
+        // reference); the note says why one is missing.
+        nlohmann::json diff = {{"mode", differenceModeNames()[std::size_t(d.difference)]},
+                               {"against", d.against}, {"note", v.differenceNote}};
+        if (v.error && std::isfinite(v.error->relativeL2)) diff["relative_l2"] = v.error->relativeL2;
+        if (v.error && std::isfinite(v.error->maxAbsolute)) diff["max_abs"] = v.error->maxAbsolute;
+        j["difference"] = std::move(diff);
+    }
+    // The linked cursor as this view marks it: the pixel itself in screen-space views.
+    std::optional<glm::ivec2> at;
+    if (mLinkedPixel && isScreenSpace(v)) at = *mLinkedPixel;
+    if (at) {
+        glm::vec4 value(0.0f);
+        j["cursor"] = {at->x, at->y};
+        if (valueAt(v, *at, value)) {
+            nlohmann::json values = nlohmann::json::array();
+            for (int c = 0; c < std::clamp(v.meaningful, 1, 4); ++c)
+                values.push_back(std::isfinite(value[c]) ? nlohmann::json(value[c]) : nlohmann::json(nullptr));
+            j["cursor_value"] = values;
+        }
+    } else {
+        j["cursor"] = nullptr;
+    }
+    if (mLinkedPixel && !isScreenSpace(v) && v.pane.texture != 0) {
+        nlohmann::json marks = nlohmann::json::array();
+        for (const viz::ViewMarker& mk : markersFor(v))
+            marks.push_back({{"from", {mk.from.x, mk.from.y}}, {"to", {mk.to.x, mk.to.y}}, {"label", mk.label},
+                             {"layer", mk.layer}});
+        j["markers"] = marks;
+    }
+    return j;
+}
+
+}  // namespace airlight

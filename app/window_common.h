@@ -1,0 +1,201 @@
+// The window's shared vocabulary: its palette and sizes, and the small helpers its parts share (settings
+// completed with defaults, status-line text, the orbit distance of a scene, GLFW keys the widgets take).
+#pragma once
+
+#include <chrono>
+#include <optional>
+#include <string>
+
+#include <glm/glm.hpp>
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+#include "debug/technique.h"
+#include "run_scheduler.h"
+#include "scene/scene.h"
+#include "ui/immediate.h"
+
+namespace airlight {
+
+
+using viz::ui::DrawList;
+using viz::ui::Rect;
+using Clock = std::chrono::steady_clock;
+
+// ---- colours (display values) and sizes (logical pixels, times the content scale) ----
+constexpr glm::vec4 kBackground{0.11f, 0.11f, 0.12f, 1.0f};
+constexpr glm::vec4 kPanel{0.16f, 0.16f, 0.18f, 1.0f};
+constexpr glm::vec4 kText{0.90f, 0.90f, 0.90f, 1.0f};
+constexpr glm::vec4 kDim{0.60f, 0.62f, 0.66f, 1.0f};
+constexpr glm::vec4 kAccent{0.98f, 0.78f, 0.35f, 1.0f};
+constexpr glm::vec4 kHighlight{0.25f, 0.36f, 0.55f, 1.0f};
+constexpr glm::vec4 kHover{0.22f, 0.22f, 0.26f, 1.0f};
+constexpr glm::vec4 kError{1.0f, 0.45f, 0.40f, 1.0f};
+constexpr float kFontSize = 15.0f;
+constexpr float kPad = 8.0f;
+constexpr double kGizmoArm = 0.25;  // the light gizmo's direction arm, in orbit distances of the scene camera
+constexpr float kSidebarMin = 170.0f;
+constexpr float kExposureStep = 0.5f;  // stops per +/- key press
+constexpr double kOrbitRadiansPerPixel = 0.008;
+constexpr double kLookRadiansPerPixel = 0.004;
+constexpr double kFlySpeed = 0.6;  // target distances per second
+constexpr float kStripSideBySide = 460.0f;  // a view at least this wide has its histogram beside the widgets
+constexpr float kHistogramHeight = 110.0f;
+
+// ---- settings ----
+
+// The given settings that this technique has a parameter for, completed with its defaults. A value
+// the technique rejects is reported in `error` and the defaults are used instead.
+inline viz::Settings settingsFor(const viz::Technique& technique, const viz::Settings& given, std::string& error) {
+    viz::Settings mine;
+    for (const auto& [name, value] : given) {
+        for (const viz::ParamInfo& p : technique.params())
+            if (p.name == name) mine[name] = value;
+    }
+    try {
+        return viz::completeSettings(technique, mine);
+    } catch (const viz::InputError& e) {
+        error = e.what();
+        return viz::completeSettings(technique, {});
+    }
+}
+
+// The stage whose sub-step parameter `name` is (StageInfo::substepParam), or -1.
+inline int substepStageOf(const viz::Technique& technique, const std::string& name) {
+    const auto& stages = technique.stages();
+    for (int k = 0; k < int(stages.size()); ++k)
+        if (stages[std::size_t(k)].substepParam == name) return k;
+    return -1;
+}
+
+// The window steps with its cursor, never with settings: takes the sub-step parameters out of `settings`
+// (back to their defaults) and returns the cursor that the first one set away from its default stands
+// for (the command line's `gui --set planes_drawn=7`, a session file), if any. `onlyStage` >= 0: only
+// that stage's parameter (a lesson step stopping there); the others stay as the lesson set them.
+inline std::optional<StepCursor> takeSubsteps(const viz::Technique& technique, viz::Settings& settings, int onlyStage = -1) {
+    std::optional<StepCursor> cursor;
+    const viz::Settings defaults = viz::completeSettings(technique, {});
+    const auto& stages = technique.stages();
+    for (int k = 0; k < int(stages.size()); ++k) {
+        const std::string& name = stages[std::size_t(k)].substepParam;
+        if (name.empty() || !settings.count(name) || (onlyStage >= 0 && k != onlyStage)) continue;
+        const viz::SubstepPosition pos = viz::substepPosition(technique, k, settings);
+        settings[name] = defaults.at(name);
+        if (!cursor && pos.at < pos.count) cursor = StepCursor{k, pos.at};
+    }
+    return cursor;
+}
+
+// ---- formatting ----
+
+// Error messages (shader logs) can span lines; the status line shows the first.
+inline std::string firstLine(const std::string& text) {
+    const std::size_t end = text.find('\n');
+    return end == std::string::npos ? text : text.substr(0, end) + "  (...)";
+}
+
+inline std::string format(const char* fmt, double a) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, fmt, a);
+    return buf;
+}
+
+inline std::string timingLine(const viz::Timing& timing) {
+    if (timing.stages.empty()) return "timings: (none yet)";
+    std::string line = "timings:";
+    for (const auto& st : timing.stages) line += "  " + st.stage + " " + format("%.1f ms", st.milliseconds);
+    line += "  | total " + format("%.1f ms", timing.totalMilliseconds()) + "  (clock: " + timing.clock + ")";
+    return line;
+}
+
+inline std::string skippedLine(const viz::Plan& plan) {
+    std::string line;
+    for (const auto& st : plan.stages) {
+        if (st.runs) continue;
+        line += (line.empty() ? "skipped: " : ";  ") + st.stage + (st.why.empty() ? "" : " (" + st.why + ")");
+    }
+    return line.empty() ? "skipped: none" : line;
+}
+
+// Distance along the ray to the nearest triangle of the scene (Moller-Trumbore, brute force over every
+// triangle: done once per reset, scenes here have a few thousand triangles), or -1 for a miss.
+inline double firstHit(const viz::scene::Scene& scene, glm::dvec3 origin, glm::dvec3 dir) {
+    double best = -1.0;
+    for (const auto& mesh : scene.meshes) {
+        for (std::size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
+            const glm::dvec3 a(mesh.positions[mesh.indices[i]]);
+            const glm::dvec3 e1 = glm::dvec3(mesh.positions[mesh.indices[i + 1]]) - a;
+            const glm::dvec3 e2 = glm::dvec3(mesh.positions[mesh.indices[i + 2]]) - a;
+            const glm::dvec3 p = glm::cross(dir, e2);
+            const double det = glm::dot(e1, p);
+            if (std::abs(det) < 1e-12) continue;
+            const glm::dvec3 s = origin - a;
+            const double u = glm::dot(s, p) / det;
+            if (u < 0.0 || u > 1.0) continue;
+            const glm::dvec3 q = glm::cross(s, e1);
+            const double v = glm::dot(dir, q) / det;
+            if (v < 0.0 || u + v > 1.0) continue;
+            const double t = glm::dot(e2, q) / det;
+            if (t > 1e-6 && (best < 0.0 || t < best)) best = t;
+        }
+    }
+    return best;
+}
+
+// Distance from the scene camera to the orbit target: the first surface on the view axis; failing
+// that, where the axis passes closest to the centre of the scene's bounding box; failing that (the
+// centre is behind the camera), the box's size.
+inline double orbitDistance(const viz::scene::Scene& scene) {
+    const glm::dvec3 forward = glm::normalize(scene.camera.forward);
+    const double hit = firstHit(scene, scene.camera.position, forward);
+    if (hit > 0.0 && hit < scene.camera.zfar) return hit;
+    glm::dvec3 lo(1e300), hi(-1e300);
+    for (const auto& mesh : scene.meshes)
+        for (const glm::vec3& p : mesh.positions) {
+            lo = glm::min(lo, glm::dvec3(p));
+            hi = glm::max(hi, glm::dvec3(p));
+        }
+    if (lo.x > hi.x) return 5.0;
+    const glm::dvec3 centre = 0.5 * (lo + hi);
+    const double radius = std::max(0.5 * glm::length(hi - lo), 1e-3);
+    const double along = glm::dot(centre - scene.camera.position, forward);
+    return along > 0.1 * radius ? along : radius;
+}
+
+// ---- the app ----
+
+// The keys the widgets use, from GLFW's; others stay with the window's own shortcuts.
+inline std::optional<viz::ui::Key> uiKey(int key) {
+    switch (key) {
+        case GLFW_KEY_ENTER: case GLFW_KEY_KP_ENTER: return viz::ui::Key::Enter;
+        case GLFW_KEY_SPACE: return viz::ui::Key::Space;
+        case GLFW_KEY_LEFT: return viz::ui::Key::Left;
+        case GLFW_KEY_RIGHT: return viz::ui::Key::Right;
+        case GLFW_KEY_UP: return viz::ui::Key::Up;
+        case GLFW_KEY_DOWN: return viz::ui::Key::Down;
+        case GLFW_KEY_BACKSPACE: return viz::ui::Key::Backspace;
+        case GLFW_KEY_DELETE: return viz::ui::Key::Delete;
+        case GLFW_KEY_HOME: return viz::ui::Key::Home;
+        case GLFW_KEY_END: return viz::ui::Key::End;
+        default: return std::nullopt;
+    }
+}
+
+// A light gizmo handle being dragged (GuiApp::mGizmoDrag).
+struct GizmoDrag {
+    int view = -1;
+    bool direction = false;  // the direction handle (else the position handle)
+    glm::dvec2 offset{0.0};  // from the cursor to the handle at the press, in frame uv (drags render at
+                             // half size): the handle keeps it
+};
+
+// What the loader decided on its own about a scene (a default light, a medium typo, repaired normals),
+// for the status line: "scene notes: A; B".
+inline std::string sceneNotesLine(const viz::scene::Scene& scene) {
+    std::string line;
+    for (const std::string& n : scene.notes) line += (line.empty() ? "scene notes: " : "; ") + n;
+    return line;
+}
+
+}  // namespace airlight

@@ -1,0 +1,320 @@
+// The view grid's contents: each view's pane built from the last run, difference views and the runs of
+// other techniques they need, and the grid edits (split, close, swap, step).
+#include "gui_app.h"
+
+namespace airlight {
+
+int GuiApp::contentCount() const { return 2 + int(mOutput.intermediates.size()); }
+
+std::string GuiApp::contentId(int index) const {
+    return index == 0 ? "final" : index == 1 ? "airlight" : mOutput.intermediates[std::size_t(index - 2)].id;
+}
+
+std::string GuiApp::contentLabel(int index) const {
+    return index == 0 ? "Final image" : index == 1 ? "Airlight L_air" : mOutput.intermediates[std::size_t(index - 2)].label;
+}
+
+ViewState& GuiApp::focusedView() {
+    if (!mViews.count(mFocused)) mFocused = mLayout.views().front();
+    return mViews[mFocused];
+}
+
+bool GuiApp::isScreenSpace(const ViewState& v) const {
+    return v.pane.texture != 0 && mOutputSize.x > 0 && v.pane.size == mOutputSize && !isOrbitView(v);
+}
+
+void GuiApp::buildPane(ViewState& v) {
+    v.pane = {};
+    v.error.reset();
+    v.differenceNote.clear();
+    v.shown = -1;
+    if (!mHaveOutput) return;
+    const auto& all = mOutput.intermediates;
+    std::string content = v.content;
+    int index = -1;
+    if (content != "final" && content != "airlight") {
+        // Ids may repeat (one shadow map per light): prefer the same position, then the first match.
+        if (v.index >= 0 && v.index < int(all.size()) && all[std::size_t(v.index)].id == content) {
+            index = v.index;
+        } else {
+            for (int i = int(all.size()) - 1; i >= 0; --i)
+                if (all[std::size_t(i)].id == content) index = i;
+        }
+        if (index < 0) content = "airlight";  // not in this run: L_air (the choice is kept for later runs)
+    }
+    // Stepped to a stage before L_air exists: show what that stage published instead.
+    if (content == "airlight" && mOutput.airlight.empty() && mOutput.lastStageRun >= 0) {
+        const auto& declared = technique().stages()[std::size_t(mOutput.lastStageRun)].intermediates;
+        for (int i = int(all.size()) - 1; i >= 0; --i)
+            if (std::find(declared.begin(), declared.end(), all[std::size_t(i)].id) != declared.end()) index = i;
+        if (index >= 0) content = all[std::size_t(index)].id;
+    }
+    if (index >= 0) v.index = index;
+    // The two radiance images every run has: contents 0 (final) and 1 (L_air).
+    const auto radiancePane = [&](int shown, const char* id, const char* note, const viz::Image& image) {
+        v.shown = shown;
+        v.pane.id = id;
+        v.pane.label = contentLabel(shown);
+        v.pane.note = note;
+        v.pane.units = "radiance";
+        v.pane.kind = viz::ViewKind::Color;
+        v.pane.mode = DisplayMode::HdrColor;
+        uploadImage(v.pane, image);
+    };
+    if (content == "final") {
+        radiancePane(0, "final", "surface radiance * exp(-sigma_t d) + L_air", mOutput.final);
+    } else if (content == "airlight") {
+        radiancePane(1, "airlight", "in-scattered radiance along each eye ray, before the surface term",
+                     mOutput.airlight);
+    } else {
+        v.shown = index + 2;
+        makePane(v.pane, all[std::size_t(index)], v.layer);
+        v.layer = v.pane.layer;
+    }
+    if (v.display.difference != DifferenceMode::Off && (content == "final" || content == "airlight"))
+        makeDifference(v, content);
+    else if (v.display.difference != DifferenceMode::Off)
+        v.differenceNote = "no difference: this view shows " + content + " (difference is for the final frame and L_air)";
+}
+
+void GuiApp::makeDifference(ViewState& v, const std::string& content) {
+    const DisplaySettings& d = v.display;
+    const viz::Image& mine = content == "final" ? mOutput.final : mOutput.airlight;
+    const OtherRun* other = otherRun(d.against);
+    if (!other) {
+        v.differenceNote = mReduced ? "difference to " + d.against + ": after the interaction"
+                                    : "difference to " + d.against + ": computing it...";
+        return;
+    }
+    if (!other->failure.empty()) {
+        v.differenceNote = d.against + " failed: " + firstLine(other->failure);
+        return;
+    }
+    const viz::Image& theirs = content == "final" ? other->final : other->airlight;
+    if (mine.empty() || theirs.empty() || mine.width != theirs.width || mine.height != theirs.height ||
+        mine.channels != theirs.channels) {
+        v.differenceNote = "difference to " + d.against + ": no image of the same size yet";
+        return;
+    }
+    v.error = viz::report::compareImages(mine, theirs);
+    const viz::Image diff = differenceImage(mine, theirs, d.difference);
+    PaneImage pane;
+    pane.id = v.pane.id;
+    pane.label = v.pane.label + ": " + differenceModeNames()[std::size_t(d.difference)] + ", b = " + d.against;
+    pane.note = d.difference == DifferenceMode::Signed
+        ? "sum over RGB of (a - b): blue where a is darker, red where brighter"
+        : d.difference == DifferenceMode::Relative
+            ? "sum_c |a - b| / max(sum_c |b|, 1% of its mean): the report's per-pixel relative error"
+            : "sum over RGB of |a - b|, a = " + technique().id();
+    pane.units = d.difference == DifferenceMode::Relative ? "" : "radiance";
+    pane.kind = d.difference == DifferenceMode::Signed ? viz::ViewKind::Signed : viz::ViewKind::Scalar;
+    pane.mode = d.difference == DifferenceMode::Signed ? DisplayMode::Signed : DisplayMode::Heat;
+    // Suggested range: up to the 99.9th percentile, so a few outliers do not wash out the map.
+    const ValueRange r = percentileRange(diff.pixels, 0.001, 0.999);
+    const float top = r.valid ? std::max({std::abs(r.lo), std::abs(r.hi), 1e-12f}) : 1.0f;
+    pane.rangeMin = d.difference == DifferenceMode::Signed ? -top : 0.0f;
+    pane.rangeMax = top;
+    uploadImage(pane, diff);
+    v.pane = std::move(pane);
+}
+
+const GuiApp::OtherRun* GuiApp::otherRun(const std::string& id) {
+    if (mReduced) return nullptr;
+    if (id == technique().id()) {
+        mSelfRun = {"", mOutput.airlight, mOutput.final, "", ""};
+        return &mSelfRun;
+    }
+    const std::string key = otherRunKey(id);
+    OtherRun& run = mOtherRuns[id];
+    if (run.key == key) return &run;
+    try {
+        if (!mTechniques.count(id)) mTechniques[id] = viz::makeTechnique(id);
+    } catch (const std::exception& e) {
+        run = OtherRun{key, {}, {}, e.what(), ""};
+        return &run;
+    }
+    if (run.pending == key) return nullptr;
+    run.pending = key;
+    if (mTechniques.at(id)->needsGl()) {
+        mGpuOthersDue = true;
+        return nullptr;
+    }
+    // The worker keeps its own copy of the scene: handed the new one when the medium or lights changed.
+    if (!mOtherWorker) mOtherWorker = std::make_unique<CpuWorker>(mScene);
+    else if (mOtherSceneKey != sceneOnlyKey()) mOtherWorker->setScene(mScene);
+    mOtherSceneKey = sceneOnlyKey();
+    std::string ignored;
+    mOtherWorker->submit({id, mController.camera(), settingsFor(*mTechniques.at(id), otherSettings(id), ignored),
+                          mOutputSize.x, mOutputSize.y});
+    return nullptr;
+}
+
+viz::Settings GuiApp::otherSettings(const std::string& id) const {
+    viz::Settings given = mSession.settings.count(id) ? mSession.settings.at(id) : viz::Settings{};
+    for (const auto& [name, value] : mOptions.settings) given[name] = value;
+    return given;
+}
+
+std::string GuiApp::otherRunKey(const std::string& id) const {
+    std::string key = id + " " + std::to_string(mOutputSize.x) + "x" + std::to_string(mOutputSize.y);
+    const viz::scene::Camera c = mController.camera();
+    char buf[512];
+    std::snprintf(buf, sizeof buf, " %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g", c.position.x,
+                  c.position.y, c.position.z, c.forward.x, c.forward.y, c.forward.z, c.up.x, c.up.y, c.up.z, c.yfov);
+    key += buf;
+    key += " " + sceneOnlyKey();
+    for (const auto& [name, value] : otherSettings(id)) key += " " + name + "=" + format("%.17g", value);
+    return key;
+}
+
+void GuiApp::runDueGpuOthers() {
+    mGpuOthersDue = false;
+    for (auto& [id, run] : mOtherRuns) {
+        if (run.pending.empty() || !mTechniques.count(id) || !mTechniques.at(id)->needsGl()) continue;
+        const std::string key = std::exchange(run.pending, std::string());
+        if (key != otherRunKey(id)) continue;  // stale: the next refresh asks again
+        run = OtherRun{key, {}, {}, "", ""};
+        try {
+            viz::Technique& t = *mTechniques.at(id);
+            std::string ignored;
+            viz::scene::Scene scene = mScene;
+            scene.camera = mController.camera();
+            viz::FrameInput in{&scene, mOutputSize.x, mOutputSize.y, settingsFor(t, otherSettings(id), ignored), -1};
+            viz::FrameOutput out = t.run(in);
+            glBindFramebuffer(GL_FRAMEBUFFER, 0);
+            run.airlight = std::move(out.airlight);
+            run.final = std::move(out.final);
+        } catch (const std::exception& e) {
+            run.failure = e.what();
+        }
+        for (auto& [vid, v] : mViews)
+            if (v.display.difference != DifferenceMode::Off && v.display.against == id) refreshView(v);
+    }
+}
+
+std::string GuiApp::sceneOnlyKey() const {
+    char buf[96];
+    std::snprintf(buf, sizeof buf, "%.17g %.17g %.17g", mScene.medium.sigma_s, mScene.medium.sigma_a,
+                  mScene.medium.g);
+    std::string key = buf;
+    for (const auto& l : mScene.lights)
+        for (const double x : {l.position.x, l.position.y, l.position.z, l.direction.x, l.direction.y,
+                               l.direction.z, l.intensity, l.color.x, l.color.y, l.color.z}) {
+            key += ' ';  // appended apart: GCC 12 at -O3 warns (-Wrestrict) on " " + a temporary here
+            key += format("%.17g", x);
+        }
+    return key;
+}
+
+void GuiApp::pollOtherWorker() {
+    if (!mOtherWorker) return;
+    std::optional<CpuResult> result = mOtherWorker->take();
+    if (!result || (result->error.empty() && result->pass < result->passCount)) return;
+    auto it = mOtherRuns.find(result->technique);
+    if (it == mOtherRuns.end() || it->second.pending.empty()) return;
+    OtherRun& run = it->second;
+    run.key = std::exchange(run.pending, std::string());
+    run.failure = result->error;
+    run.airlight = std::move(result->output.airlight);
+    run.final = std::move(result->output.final);
+    for (auto& [id, v] : mViews)
+        if (v.display.difference != DifferenceMode::Off && v.display.against == result->technique) refreshView(v);
+}
+
+bool GuiApp::otherPending() const {
+    for (const auto& [id, run] : mOtherRuns)
+        if (!run.pending.empty()) return true;
+    return false;
+}
+
+void GuiApp::refreshView(ViewState& v) {
+    buildPane(v);
+    if (mReduced) {
+        // During an interaction the frames are smaller and short-lived: no readback.
+        v.values = {};
+        updateStatistics(v);
+    } else {
+        readBackValues(v);
+    }
+}
+
+const PixelInspection& GuiApp::probeInspection() {
+    if (!mProbeInspection)
+        mProbeInspection = inspectRun(technique(), mOutput, {mOptions.width, mOptions.height}, {mProbe->x, mProbe->y});
+    return *mProbeInspection;
+}
+
+void GuiApp::refreshPanes() {
+    mMarkerCache.clear();
+    mProbeInspection.reset();
+    if (mHaveOutput && !mExposureSet && !mOutput.final.empty()) {
+        mExposure = std::round(std::log2(autoExposure(mOutput.final)) / kExposureStep) * kExposureStep;
+        mExposureSet = true;
+    }
+    for (auto& [id, v] : mViews) refreshView(v);
+}
+
+void GuiApp::stepView(int delta) {
+    if (!mHaveOutput) return;
+    ViewState& v = focusedView();
+    const int n = contentCount();
+    selectView((((v.shown < 0 ? 1 : v.shown) + delta) % n + n) % n);
+}
+
+void GuiApp::selectView(int index) {
+    if (!mHaveOutput || index < 0 || index >= contentCount()) return;
+    ViewState& v = focusedView();
+    v.content = contentId(index);
+    v.index = index - 2;
+    v.layer = 0;
+    v.transform.fit();
+    refreshView(v);
+}
+
+void GuiApp::stepLayer(int delta) {
+    ViewState& v = focusedView();
+    if (v.pane.layers <= 1) return;
+    v.layer = (v.pane.layer + delta + v.pane.layers) % v.pane.layers;
+    refreshView(v);
+}
+
+void GuiApp::splitFocused(SplitAxis axis) {
+    mLayout.restore();
+    const int id = mNextView++;
+    if (!mLayout.split(mFocused, axis, id)) return;
+    ViewState& v = mViews[id];
+    const int shown = mViews.at(mFocused).shown;
+    if (mHaveOutput) {
+        const int next = (shown < 0 ? 1 : shown + 1) % contentCount();
+        v.content = contentId(next);
+        v.index = next - 2;
+    }
+    mFocused = id;
+    refreshView(v);
+}
+
+void GuiApp::closeFocused() {
+    if (!mLayout.close(mFocused)) {
+        mNotice = "the last view stays open";
+        return;
+    }
+    mViews.erase(mFocused);
+    mFocused = mLayout.views().front();
+}
+
+void GuiApp::swapFocused(int step) {
+    mLayout.restore();
+    mLayout.swap(mFocused, mLayout.next(mFocused, step));
+}
+
+void GuiApp::toggleDifference() {
+    ViewState& v = focusedView();
+    if (v.pane.id != "final" && v.pane.id != "airlight" && v.display.difference == DifferenceMode::Off) {
+        mNotice = "difference views are for the final frame and L_air";
+        return;
+    }
+    v.display.difference = v.display.difference == DifferenceMode::Off ? DifferenceMode::Absolute : DifferenceMode::Off;
+    refreshView(v);
+}
+
+}  // namespace airlight

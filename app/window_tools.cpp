@@ -1,0 +1,124 @@
+// The comparison grid (G) and exporting a view (E) or the window (F12).
+#include "gui_app.h"
+
+namespace airlight {
+
+void GuiApp::toggleComparison() {
+    if (mComparison.isOpen()) {
+        mComparison.close();
+        return;
+    }
+    viz::scene::Scene scene = mScene;
+    scene.camera = mController.camera();
+    try {
+        mComparison.open(scene, {mOptions.width, mOptions.height}, mIds);
+    } catch (const std::exception& e) {
+        mError = std::string("comparison: ") + e.what();
+        mComparison.close();
+    }
+}
+
+void GuiApp::runComparisonTechniques() {
+    mComparison.runTechniques([this](const std::string& id, const viz::scene::Scene& scene, glm::ivec2 size) {
+        if (!mTechniques.count(id)) mTechniques[id] = viz::makeTechnique(id);
+        viz::Technique& t = *mTechniques.at(id);
+        viz::Settings given = mSession.settings.count(id) ? mSession.settings.at(id) : viz::Settings{};
+        for (const auto& [name, value] : mOptions.settings) given[name] = value;
+        std::string ignored;
+        viz::FrameOutput out = t.run({&scene, size.x, size.y, settingsFor(t, given, ignored), -1});
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        return out;
+    });
+}
+
+void GuiApp::drawComparison(DrawList& dl, const Rect& area) {
+    const float line = mFont->lineHeight(), pad = 4.0f * mScale;
+    const int n = int(mComparison.tiles().size());
+    // One more cell for the plot of error against time.
+    const int cells = n + 1;
+    const int cols = int(std::ceil(std::sqrt(double(cells)))), rows = (cells + cols - 1) / cols;
+    const glm::vec2 cell{area.size().x / float(cols), area.size().y / float(rows)};
+    dl.textClipped({area.min.x, area.min.y - line}, "comparison (G): L_air at the reference's exposure, time of a "
+                   "warm run and relative L2 against the reference", kAccent, area.max.x);
+    {
+        // The plot takes the rest of the last row.
+        const glm::vec2 at = area.min + glm::vec2(float(n % cols), float(n / cols)) * cell;
+        const Rect box{at + pad, at + glm::vec2(float(cols - n % cols), 1.0f) * cell - pad};
+        viz::plot::drawPlot(dl, box, mComparison.errorAgainstTime());
+        mViewRects.push_back({"comparison.error_vs_time", "relative L2 against time", box, -1});
+    }
+    for (int i = 0; i < n; ++i) {
+        ComparisonTile& tile = mComparison.tiles()[std::size_t(i)];
+        const glm::vec2 at = area.min + glm::vec2(float(i % cols), float(i / cols)) * cell;
+        const Rect box{at + pad, at + cell - glm::vec2(pad, pad + 2.0f * line)};
+        const Rect image = fitImage(box, tile.pane.size);
+        if (tile.pane.texture != 0) {
+            DisplayMapping shared;
+            shared.exposure = mComparison.exposure();
+            mPaneDraws.push_back({image, &tile.pane, nullptr, shared});
+        } else if (tile.failure.empty()) {
+            dl.textClipped({box.min.x + 4.0f * mScale, box.min.y + 4.0f * mScale}, mComparison.waitingText(), kDim,
+                           box.max.x);
+        }
+        std::string caption = tile.technique;
+        std::string figures = tile.failure.empty()
+            ? (tile.pane.texture == 0 ? std::string("")
+               : tile.technique == "reference" ? std::string("ground truth")
+                                             : format("%.1f ms", tile.milliseconds) + "   error " +
+                                                   format("%.3g", tile.error.relativeL2))
+            : "failed: " + firstLine(tile.failure);
+        if (tile.error.nanPixels + tile.error.infPixels > 0)
+            figures += "   " + std::to_string(tile.error.nanPixels + tile.error.infPixels) + " NaN/Inf px";
+        dl.textClipped({box.min.x, box.max.y + 2.0f}, caption, kText, at.x + cell.x - pad);
+        dl.textClipped({box.min.x, box.max.y + 2.0f + line}, figures, kDim, at.x + cell.x - pad);
+    }
+}
+
+std::string GuiApp::exportStem(const std::string& what) {
+    std::string name = mScene.name + "-" + technique().id() + "-" + what;
+    for (char& c : name)
+        if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_' && c != '.') c = '_';
+    std::error_code ec;
+    std::filesystem::create_directories(mOptions.exportDir, ec);
+    return (std::filesystem::path(mOptions.exportDir) / name).string();
+}
+
+void GuiApp::exportView() {
+    const PaneImage& pane = focusedView().pane;
+    if (!mHaveOutput || pane.texture == 0) {
+        mNotice = "nothing to export: the view holds no image";
+        return;
+    }
+    viz::Image values = viz::gl::readTexture(pane.texture);  // rows flipped: GL row 0 is the bottom
+    if (!pane.flipY) {
+        // Uploaded CPU images keep row 0 at the top in GL too: undo readTexture's flip.
+        viz::Image flipped = values;
+        for (int y = 0; y < values.height; ++y)
+            for (int x = 0; x < values.width; ++x)
+                for (int c = 0; c < values.channels; ++c) flipped.at(x, y, c) = values.at(x, values.height - 1 - y, c);
+        values = std::move(flipped);
+    }
+    const std::string stem = exportStem(pane.id.empty() ? "view" : pane.id);
+    try {
+        viz::writeImage(values, stem + ".exr");
+        const DisplayMapping m = resolveMapping(pane, focusedView().display, mExposure, focusedView().measured);
+        const bool colour = m.mode == DisplayMode::HdrColor || m.mode == DisplayMode::RangeColor;
+        if (colour) viz::writeImage(values, stem + ".png", std::exp2(m.exposure));
+        else viz::writeImage(viz::toDisplay(values, m.lo, m.hi), stem + ".png");
+        mNotice = "exported " + stem + ".exr and .png";
+    } catch (const viz::InputError& e) {
+        mNotice = e.what();
+    }
+}
+
+void GuiApp::exportWindow() {
+    const std::string path = exportStem("window") + ".png";
+    try {
+        writeScreenshot(path);
+        mNotice = "wrote " + path;
+    } catch (const viz::InputError& e) {
+        mNotice = e.what();
+    }
+}
+
+}  // namespace airlight

@@ -1,0 +1,493 @@
+// Drawing the view grid: each view's title, image, texel values, markers, plots, display strip and
+// histogram, and the dividers between views.
+#include "gui_app.h"
+
+namespace airlight {
+
+Rect GuiApp::fitImage(const Rect& area, glm::ivec2 imageSize) const {
+    if (imageSize.x <= 0 || imageSize.y <= 0) imageSize = {mOptions.width, mOptions.height};
+    const float aspect = float(imageSize.x) / float(std::max(1, imageSize.y));
+    float w = area.size().x, h = w / aspect;
+    if (h > area.size().y) {
+        h = area.size().y;
+        w = h * aspect;
+    }
+    const float x = area.min.x + 0.5f * (area.size().x - w);
+    return {{x, area.min.y}, {x + w, area.min.y + h}};
+}
+
+void GuiApp::listItem(const Rect& r, const std::string& text, bool selected, std::function<void()> onClick) {
+    DrawList& dl = *mDrawList;
+    if (selected) dl.rect(r, kHighlight);
+    else if (r.contains(mHover)) dl.rect(r, kHover);
+    dl.textClipped({r.min.x + 6.0f * mScale, r.min.y + 1.0f * mScale}, text, selected ? kText : kDim, r.max.x - 4.0f * mScale);
+    mHits.push_back({r, std::move(onClick)});
+}
+
+glm::ivec2 GuiApp::texelAt(const PaneImage& pane, const Rect& image, const viz::ui::ImageViewTransform& view,
+                          glm::vec2 p) {
+    const glm::dvec2 uv = view.paneToUv(glm::dvec2((p - image.min) / image.size()));
+    return glm::clamp(glm::ivec2(glm::floor(uv * glm::dvec2(pane.size))), glm::ivec2(0), pane.size - 1);
+}
+
+void GuiApp::texelValues(const PaneImage& pane, const Rect& image, const viz::ui::ImageViewTransform& view) {
+    const float cell = float(view.texelPixels(image.size().x, std::max(1, pane.size.x)));
+    const float line = mFont->lineHeight();
+    if (cell < 4.2f * line || pane.size.x < 1 || pane.size.y < 1) return;
+    const glm::ivec2 lo = texelAt(pane, image, view, image.min), hi = texelAt(pane, image, view, image.max - 1.0f);
+    const glm::ivec2 count = hi - lo + 1;
+    if (count.x * count.y > 4096) return;
+    std::vector<glm::vec4> values(std::size_t(count.x * count.y));
+    // GL rows: flipped textures keep row 0 at the bottom.
+    const int glRow0 = pane.flipY ? pane.size.y - 1 - hi.y : lo.y;
+    glGetTextureSubImage(pane.texture, 0, lo.x, glRow0, 0, count.x, count.y, 1, GL_RGBA, GL_FLOAT,
+                         GLsizei(values.size() * sizeof(glm::vec4)), values.data());
+    const int channels = std::clamp(pane.channels, 1, 3);
+    const bool allChannels = cell >= float(channels) * line + 4.0f * mScale;
+    for (int ty = lo.y; ty <= hi.y; ++ty)
+        for (int tx = lo.x; tx <= hi.x; ++tx) {
+            const int row = pane.flipY ? hi.y - ty : ty - lo.y;
+            const glm::vec4 v = values[std::size_t(row * count.x + (tx - lo.x))];
+            const glm::vec2 corner = image.min + glm::vec2(view.uvToPane(glm::dvec2(tx, ty) / glm::dvec2(pane.size))) * image.size();
+            // The part of the texel inside the view holds the text.
+            const glm::vec2 shownMin = glm::max(corner, image.min), shownMax = glm::min(corner + cell, image.max);
+            if (shownMax.x - shownMin.x < 3.0f * line || shownMax.y - shownMin.y < line + 4.0f * mScale) continue;
+            for (int c = 0; c < (allChannels ? channels : 1); ++c) {
+                const glm::vec2 at = shownMin + glm::vec2(3.0f * mScale, 2.0f * mScale + float(c) * line);
+                if (at.y + line > shownMax.y) break;
+                const std::string text = format("%.3g", v[c]);
+                mDrawList->rect({at - 1.0f, at + glm::vec2(mFont->measure(text) + 1.0f, line)}, {0.0f, 0.0f, 0.0f, 0.55f});
+                mDrawList->textClipped(at, text, kText, shownMax.x - 2.0f);
+            }
+        }
+}
+
+void GuiApp::layoutCell(ViewState& v, const Rect& cell) {
+    const float line = mFont->lineHeight(), s = mScale;
+    v.cell = cell;
+    v.title = {cell.min, {cell.max.x, cell.min.y + 2.0f * line + 4.0f * s}};
+    const float readout = line + 6.0f * s;
+    float stripHeight = 0.0f;
+    if (v.display.stripOpen) {
+        const float rows = (v.display.range == RangeMode::Manual ? 8.0f : 6.0f) +
+                           (v.display.difference != DifferenceMode::Off ? 1.0f : 0.0f);
+        float wanted = rows * (mUi->rowHeight() + 4.0f * s) + 8.0f * s;
+        // A narrow view stacks the histogram under the widgets instead of beside them.
+        if (cell.size().x < kStripSideBySide * s) wanted += kHistogramHeight * s;
+        stripHeight = std::min(wanted, 0.6f * (cell.size().y - v.title.size().y - readout));
+    }
+    const Rect imageArea{{cell.min.x, v.title.max.y}, {cell.max.x, cell.max.y - readout - stripHeight}};
+    v.image = v.pane.plots.empty() ? fitImage(imageArea, v.pane.size) : imageArea;  // plots take the whole area
+    v.strip = stripHeight > 0.0f ? Rect{{cell.min.x, cell.max.y - stripHeight}, cell.max} : Rect{};
+}
+
+void GuiApp::drawDividers(const Rect& area) {
+    const auto dividers = !mComparison.isOpen() ? mLayout.dividers(area, kPad * mScale) : std::vector<ViewDivider>{};
+    std::optional<SplitAxis> over;
+    mDividerRects.clear();
+    for (const ViewDivider& d : dividers) {
+        const std::string name = "divider:" + (d.path.empty() ? std::string("root") : d.path);
+        float fraction = d.fraction;
+        if (mUi->splitter(name, d.track, d.axis == SplitAxis::X, fraction)) mLayout.setFraction(d.path, fraction);
+        if (const auto it = mUi->widgetRects().find(name); it != mUi->widgetRects().end()) {
+            mDividerRects.push_back(it->second);
+            if (it->second.contains(mHover)) over = d.axis;
+        }
+    }
+    setResizeCursor(over);
+}
+
+void GuiApp::setResizeCursor(std::optional<SplitAxis> axis) {
+    if (axis == mCursorAxis) return;
+    mCursorAxis = axis;
+    GLFWcursor*& cursor = !axis ? mArrowCursor : *axis == SplitAxis::X ? mColumnCursor : mRowCursor;
+    if (!cursor && axis)
+        cursor = glfwCreateStandardCursor(*axis == SplitAxis::X ? GLFW_HRESIZE_CURSOR : GLFW_VRESIZE_CURSOR);
+    glfwSetCursor(mWindow.handle(), cursor);  // nullptr: the default arrow
+}
+
+void GuiApp::drawViewGrid(const Rect& area) {
+    mStripRects.clear();
+    // The comparison grid takes the right half; the first view keeps the left.
+    const float half = 0.5f * (area.size().x - kPad * mScale);
+    if (!mComparison.isOpen()) mCells = mLayout.arrange(area, kPad * mScale);
+    else mCells = {{mLayout.views().front(), {area.min, {area.min.x + half, area.max.y}}}};
+    drawDividers(area);
+    for (const ViewCellRect& c : mCells) layoutCell(mViews[c.view], c.rect);
+    // The frame pixel under the cursor, if the cursor is over a screen-space view.
+    mHoveredView = ViewLayout::hit(mCells, mHover);
+    mLinkedPixel.reset();
+    if (mHoveredView >= 0) {
+        const ViewState& h = mViews.at(mHoveredView);
+        if (isScreenSpace(h) && h.image.contains(mHover)) mLinkedPixel = texelAt(h.pane, h.image, h.transform, mHover);
+    }
+    // Camera drags are scaled by the tallest frame-shaped view (the last one when none is shown).
+    float frameHeight = 0.0f;
+    for (const ViewCellRect& c : mCells) {
+        ViewState& v = mViews.at(c.view);
+        if (isScreenSpace(v)) frameHeight = std::max(frameHeight, v.image.size().y);
+        drawView(c.view, v);
+    }
+    if (frameHeight > 1.0f) mImageHeight = frameHeight;
+    if (mComparison.isOpen()) {
+        const Rect grid{{area.max.x - half, area.min.y + mFont->lineHeight()}, area.max};
+        drawComparison(*mDrawList, grid);
+        mViewRects.push_back({"comparison", "comparison grid", grid, -1});
+    }
+}
+
+std::pair<std::string, std::string> GuiApp::viewTitle(const ViewState& v) const {
+    if (!mHaveOutput) return {technique().needsGl() ? "(no view)" : "computing...", ""};
+    std::string title = v.pane.label.empty() ? v.content : v.pane.label;
+    if (v.shown >= 0) title += "   [" + std::to_string(v.shown + 1) + "/" + std::to_string(contentCount()) + "]";
+    if (v.pane.id != "final" && v.pane.id != "airlight") {
+        title += "  " + v.pane.id;
+        // The stage that publishes it (stepping shows it from that stage on).
+        for (const viz::StageInfo& st : technique().stages())
+            if (std::find(st.intermediates.begin(), st.intermediates.end(), v.pane.id) != st.intermediates.end()) {
+                title += "  (stage " + st.id + ")";
+                break;
+            }
+    }
+    if (v.pane.layers > 1) title += "   layer " + std::to_string(v.pane.layer + 1) + "/" + std::to_string(v.pane.layers);
+    std::string note = v.pane.note;
+    if (v.pane.id == "final" && v.display.difference == DifferenceMode::Off)
+        note = "surface radiance * exp(-sigma_t d) + L_air   (exposure " + format("%+.1f EV)", mExposure);
+    const DisplayMapping m = resolveMapping(v.pane, v.display, mExposure, v.measured);
+    if (m.mode != DisplayMode::HdrColor) {
+        note += "   [" + format("%.4g", m.lo) + ", " + format("%.4g", m.hi) + "]" + (v.display.logScale ? " log" : "") +
+                (v.pane.units.empty() ? "" : " " + v.pane.units) + ", " + viz::viewKindName(v.pane.kind);
+    }
+    if (v.error) {
+        const auto figure = [](double x) { return std::isfinite(x) ? format("%.3g", x) : std::string("n/a"); };
+        note = "relative L2 " + figure(v.error->relativeL2) + "   max |a - b| " + figure(v.error->maxAbsolute) +
+               "   RMSE " + figure(v.error->rmse) + "   |   " + note;
+    } else if (!v.differenceNote.empty()) {
+        note = v.differenceNote + "   |   " + note;
+    }
+    if (v.transform.zoom > 1.0) note = format("zoom %.0fx (wheel; drag to pan; 0 fits)   ", v.transform.zoom) + note;
+    return {title, note};
+}
+
+void GuiApp::drawView(int id, ViewState& v) {
+    DrawList& dl = *mDrawList;
+    const float line = mFont->lineHeight(), s = mScale;
+    const bool focused = id == mFocused;
+    const auto [title, note] = viewTitle(v);
+    // Title bar: highlighted when focused (keys and the views list act on it); drag it onto another
+    // view to swap the two.
+    mBackground->rect(v.title, focused ? kHighlight : kPanel);
+    const std::string toggle = v.display.stripOpen ? "display -" : "display +";
+    const float toggleWidth = mFont->measure(toggle) + 16.0f * s;
+    const Rect toggleRect{{v.title.max.x - toggleWidth, v.title.min.y + 1.0f * s},
+                          {v.title.max.x - 2.0f * s, v.title.min.y + line + 2.0f * s}};
+    float x = dl.textClipped({v.title.min.x + 4.0f * s, v.title.min.y + 2.0f * s}, title, kAccent,
+                             toggleRect.min.x - 4.0f * s);
+    // Not the complete algorithm: every view says where the run stopped, in the warning colour.
+    const std::string why = mHaveOutput ? stoppedEarly() : std::string();
+    const std::string early = why.empty() ? why : "   [" + why + "]";
+    if (!early.empty()) x = dl.textClipped({x, v.title.min.y + 2.0f * s}, early, kError, toggleRect.min.x - 4.0f * s);
+    const SpecialCounts& n = v.counts;
+    std::string counts;
+    if (n.nan + n.inf + n.negative > 0) {
+        counts = " ";
+        if (n.negative) counts += " " + std::to_string(n.negative) + " negative";
+        if (n.nan) counts += " " + std::to_string(n.nan) + " NaN";
+        if (n.inf) counts += " " + std::to_string(n.inf) + " Inf";
+        counts += " px";
+        dl.textClipped({x, v.title.min.y + 2.0f * s}, counts, kError, toggleRect.min.x - 4.0f * s);
+    }
+    dl.textClipped({v.title.min.x + 4.0f * s, v.title.min.y + 2.0f * s + line}, note, kDim, v.title.max.x - 4.0f * s);
+    listItem(toggleRect, toggle, v.display.stripOpen, [this, id] {
+        ViewState& w = mViews.at(id);
+        w.display.stripOpen = !w.display.stripOpen;
+        mFocused = id;
+    });
+    mNamedRects["strip:" + std::to_string(id)] = toggleRect;
+    mNamedRects["title:" + std::to_string(id)] = v.title;
+    mNamedRects["cell:" + std::to_string(id)] = v.image;
+
+    // The image, framed; the background batch is drawn before the images.
+    mBackground->rect({v.image.min - 1.0f, v.image.max + 1.0f}, focused ? kHighlight : kPanel);
+    if (!v.pane.plots.empty()) {
+        // The technique's plots of this intermediate, stacked (its image is what `render --layer` writes).
+        drawPlots(v);
+        mViewRects.push_back({v.pane.id, title + early + counts, v.image, id});
+        drawStatusBands(dl, v.image);
+        if (v.display.stripOpen && v.strip.size().y > 0.0f) drawStrip(id, v);
+        return;
+    }
+    mPaneDraws.push_back({v.image, &v.pane, &v.transform, resolveMapping(v.pane, v.display, mExposure, v.measured)});
+    mViewRects.push_back({mHaveOutput ? (v.pane.id.empty() ? v.content : v.pane.id) : std::string("none"),
+                          title + early + counts, v.image, id});
+    if (!v.pane.unavailable.empty())
+        dl.textClipped({v.image.min.x + 8.0f * s, v.image.min.y + 8.0f * s}, v.pane.unavailable, kDim, v.image.max.x);
+    if (v.pane.texture != 0) texelValues(v.pane, v.image, v.transform);
+
+    // Linked cursors: the hovered frame pixel in every other screen-space view; what the technique
+    // can map of it in algorithm-space views (the epipolar row in minmax's rectified map, ...).
+    std::optional<glm::ivec2> readAt;
+    if (v.pane.texture != 0 && id == mHoveredView && v.image.contains(mHover))
+        readAt = texelAt(v.pane, v.image, v.transform, mHover);
+    if (mLinkedPixel && isScreenSpace(v)) {
+        // The hovered view marks its own pixel too (the cross leaves the pixel's centre free), so
+        // that screenshots and a projector show which pixel the others follow.
+        if (id != mHoveredView) readAt = *mLinkedPixel;
+        const glm::dvec2 uv = (glm::dvec2(*mLinkedPixel) + 0.5) / glm::dvec2(v.pane.size);
+        crosshair(dl, v.image.min + glm::vec2(v.transform.uvToPane(uv)) * v.image.size(), v.image);
+    }
+    if (mLinkedPixel && !isScreenSpace(v) && v.pane.texture != 0) drawMarkers(dl, v, markersFor(v));
+    markProbe(dl, v);
+    drawGizmo(dl, id, v);
+
+    // The value under the cursor (or at the linked pixel), from the view's CPU copy.
+    const glm::vec2 readoutAt{v.image.min.x, v.image.max.y + 3.0f * s};
+    if (readAt) {
+        glm::vec4 value(0.0f);
+        if (!valueAt(v, *readAt, value)) {
+            const int glRow = v.pane.flipY ? v.pane.size.y - 1 - readAt->y : readAt->y;
+            glGetTextureSubImage(v.pane.texture, 0, readAt->x, glRow, 0, 1, 1, 1, GL_RGBA, GL_FLOAT, sizeof value,
+                                 &value);
+        }
+        std::string text = (id == mHoveredView ? "pixel (" : "linked (") + std::to_string(readAt->x) + ", " +
+                           std::to_string(readAt->y) + ")  =";
+        for (int c = 0; c < std::clamp(v.pane.channels, 1, 3); ++c) text += format("  %.4g", value[c]);
+        dl.textClipped(readoutAt, text, kText, v.cell.max.x);
+    }
+    drawStatusBands(dl, v.image);
+    if (v.display.stripOpen && v.strip.size().y > 0.0f) drawStrip(id, v);
+}
+
+void GuiApp::drawPlots(const ViewState& v) {
+    const float gap = 4.0f * mScale;
+    const int n = int(v.pane.plots.size());
+    const float h = (v.image.size().y - gap * float(n - 1)) / float(n);
+    for (int i = 0; i < n; ++i) {
+        const float top = v.image.min.y + float(i) * (h + gap);
+        viz::plot::drawPlot(*mDrawList, {{v.image.min.x, top}, {v.image.max.x, top + h}},
+                            plotSpecOf(v.pane.plots[std::size_t(i)]));
+    }
+}
+
+std::vector<viz::ViewMarker> GuiApp::markersFor(const ViewState& v) {
+    if (!mLinkedPixel || !mHaveOutput) return {};
+    auto& cached = mMarkerCache[v.pane.id];
+    if (cached.first == *mLinkedPixel && cached.second) return *cached.second;
+    try {
+        cached = {*mLinkedPixel, technique().markersFor(*mLinkedPixel, v.pane.id)};
+        return *cached.second;
+    } catch (const std::exception& e) {
+        mError = e.what();
+        return {};
+    }
+}
+
+void GuiApp::crosshair(DrawList& dl, glm::vec2 c, const Rect& clip) {
+    if (!clip.contains(c)) return;
+    const float r = 7.0f * mScale, w = 1.5f * mScale;
+    for (int pass = 0; pass < 2; ++pass) {
+        const float width = pass == 0 ? w + 2.0f * mScale : w;
+        const glm::vec4 colour = pass == 0 ? glm::vec4(0.0f, 0.0f, 0.0f, 0.8f) : glm::vec4(0.2f, 1.0f, 1.0f, 1.0f);
+        dl.line({c.x - r, c.y}, {c.x - 2.0f * mScale, c.y}, width, colour);
+        dl.line({c.x + 2.0f * mScale, c.y}, {c.x + r, c.y}, width, colour);
+        dl.line({c.x, c.y - r}, {c.x, c.y - 2.0f * mScale}, width, colour);
+        dl.line({c.x, c.y + 2.0f * mScale}, {c.x, c.y + r}, width, colour);
+    }
+}
+
+void GuiApp::drawMarkers(DrawList& dl, const ViewState& v, const std::vector<viz::ViewMarker>& marks) {
+    const auto toWindow = [&](glm::vec2 data) {
+        const glm::dvec2 uv{data.x, v.pane.glRows ? 1.0 - double(data.y) : double(data.y)};
+        return v.image.min + glm::vec2(v.transform.uvToPane(uv)) * v.image.size();
+    };
+    dl.pushClip(v.image);
+    std::vector<Rect> placed;  // labels drawn so far
+    glm::vec4 colour(0.0f);
+    float width = 1.0f;
+    const float line = mFont->lineHeight();
+    const auto shown = [&](const viz::ViewMarker& m) { return m.layer < 0 || m.layer == v.pane.layer; };
+    // Several labelled points (a ray's crossings lie close together): each gets a number beside it and
+    // its label goes into a key at the image's bottom left, so that labels do not pile up.
+    const auto points = std::count_if(marks.begin(), marks.end(), [&](const viz::ViewMarker& m) {
+        return shown(m) && m.from == m.to && !m.label.empty();
+    });
+    std::vector<std::string> key;
+    for (std::size_t i = 0; i < marks.size(); ++i) {
+        if (!shown(marks[i])) continue;
+        const glm::vec2 a = toWindow(marks[i].from), b = toWindow(marks[i].to);
+        // The first mark thin cyan, the others yellow; an unlabelled one continues the previous (a
+        // polyline).
+        if (i == 0 || !marks[i].label.empty()) {
+            colour = i == 0 ? glm::vec4(0.2f, 1.0f, 1.0f, 0.9f) : glm::vec4(1.0f, 0.85f, 0.2f, 1.0f);
+            width = i == 0 ? 1.0f : 2.0f;
+        }
+        if (a == b) {
+            crosshair(dl, a, v.image);
+        } else {
+            dl.line(a, b, 3.0f * mScale, {0.0f, 0.0f, 0.0f, 0.6f});
+            dl.line(a, b, width * mScale, colour);
+        }
+        const glm::vec2 at{std::max(std::min(a.x, b.x), v.image.min.x) + 4.0f * mScale,
+                           std::min(a.y, b.y) - line - 2.0f * mScale};
+        if (marks[i].label.empty()) continue;  // a piece of a polyline labelled once
+        if (a == b && points > 2) {
+            const std::string tag = std::to_string(key.size() + 1);
+            const glm::vec2 tagAt = a + glm::vec2(5.0f, -line - 1.0f) * glm::vec2(mScale, 1.0f);
+            dl.rect({tagAt - 1.0f, tagAt + glm::vec2(mFont->measure(tag) + 2.0f, line)}, {0.0f, 0.0f, 0.0f, 0.6f});
+            dl.textClipped(tagAt, tag, colour, v.image.max.x);
+            key.push_back(tag + "  " + marks[i].label);
+            continue;
+        }
+        // A label that would run past the image's right edge moves left to end there; one that would
+        // cover a label already placed moves down a line (marks close together, e.g. a ray's crossings).
+        const float labelWidth = mFont->measure(marks[i].label);
+        const float labelX = i == 0 ? at.x : std::max(a.x, b.x) + 4.0f * mScale;
+        glm::vec2 labelAt{std::max(v.image.min.x, std::min(labelX, v.image.max.x - labelWidth - 2.0f)),
+                          std::clamp(i == 0 ? at.y : std::max(a.y, b.y) + 2.0f * mScale, v.image.min.y,
+                                     v.image.max.y - line)};
+        const auto overlaps = [&](const Rect& r) {
+            return labelAt.x < r.max.x && labelAt.x + labelWidth > r.min.x && labelAt.y < r.max.y &&
+                   labelAt.y + line > r.min.y;
+        };
+        for (int tries = 0; tries < 8 && std::any_of(placed.begin(), placed.end(), overlaps); ++tries)
+            labelAt.y += line + 1.0f;
+        placed.push_back({labelAt, labelAt + glm::vec2(labelWidth, line)});
+        dl.rect({labelAt - 1.0f, labelAt + glm::vec2(labelWidth + 2.0f, line)}, {0.0f, 0.0f, 0.0f, 0.6f});
+        dl.textClipped(labelAt, marks[i].label, colour, v.image.max.x);
+    }
+    if (!key.empty()) {
+        float keyWidth = 0.0f;
+        for (const std::string& k : key) keyWidth = std::max(keyWidth, mFont->measure(k));
+        const float pad = 3.0f * mScale;
+        const glm::vec2 origin{v.image.min.x + pad, v.image.max.y - pad - float(key.size()) * line};
+        dl.rect({origin - pad, origin + glm::vec2(keyWidth + pad, float(key.size()) * line + pad)},
+                {0.0f, 0.0f, 0.0f, 0.7f});
+        for (std::size_t k = 0; k < key.size(); ++k)
+            dl.textClipped(origin + glm::vec2(0.0f, float(k) * line), key[k], {1.0f, 0.85f, 0.2f, 1.0f}, v.image.max.x);
+    }
+    dl.popClip();
+}
+
+void GuiApp::drawStatusBands(DrawList& dl, const Rect& image) {
+    const float line = mFont->lineHeight();
+    if (mRendering) {
+        const std::string text = mHaveOutput ? "rendering... (last run " + format("%.1f s)", mLastRunSeconds)
+                                             : std::string("rendering...");
+        const Rect band{{image.min.x, image.max.y - line - 10.0f * mScale}, image.max};
+        dl.rect(band, {0.0f, 0.0f, 0.0f, 0.65f});
+        dl.textClipped({band.min.x + 6.0f * mScale, band.min.y + 3.0f * mScale}, text, kText, band.max.x);
+    }
+    const CpuProgress progress = mWorker->progress();
+    if (progress.busy && !technique().needsGl()) {
+        // Progress of the running pass, estimated from the previous pass's time per pixel.
+        std::string text = "computing... pass " + std::to_string(progress.pass) + "/" + std::to_string(progress.passCount) +
+                           " (" + std::to_string(progress.size.x) + "x" + std::to_string(progress.size.y) + ")  " +
+                           format("%.1f s", progress.elapsed);
+        float fraction = -1.0f;
+        // An estimate the pass has clearly outrun (the previous pass came from the cache, say)
+        // is dropped rather than shown as a full bar.
+        if (progress.estimate > 0.0 && progress.elapsed < 1.5 * progress.estimate) {
+            fraction = float(std::min(0.99, progress.elapsed / progress.estimate));
+            text += format(" of ~%.1f s", progress.estimate);
+        }
+        const Rect band{{image.min.x, image.max.y - line - 10.0f * mScale}, image.max};
+        dl.rect(band, {0.0f, 0.0f, 0.0f, 0.65f});
+        if (fraction >= 0.0f) {
+            dl.rect({{band.min.x, band.max.y - 3.0f * mScale}, {band.min.x + fraction * band.size().x, band.max.y}}, kAccent);
+        }
+        dl.textClipped({band.min.x + 6.0f * mScale, band.min.y + 3.0f * mScale}, text, kText, band.max.x);
+    }
+}
+
+void GuiApp::drawStrip(int id, ViewState& v) {
+    const float s = mScale;
+    const Rect& strip = v.strip;
+    Rect widgets = strip, plot = strip;
+    if (strip.size().x >= kStripSideBySide * s) {
+        const float split = strip.min.x + std::max(0.5f * strip.size().x, std::min(0.62f * strip.size().x, 360.0f * s));
+        widgets.max.x = split - 2.0f * s;
+        plot.min.x = split + 2.0f * s;
+    } else {
+        const float h = std::min(kHistogramHeight * s, 0.45f * strip.size().y);
+        widgets.max.y = strip.max.y - h - 2.0f * s;
+        plot.min.y = strip.max.y - h;
+    }
+    mStripRects.push_back(widgets);
+    const std::string tag = "##v" + std::to_string(id);
+    DisplaySettings& d = v.display;
+    const DisplaySettings before = d;
+    mUi->beginPanel(tag, widgets);
+    int channel = int(d.channel), range = int(d.range), map = int(d.colourMap), difference = int(d.difference);
+    if (mUi->combo("channel" + tag, channel, channelNames())) d.channel = Channel(channel);
+    if (mUi->combo("range" + tag, range, rangeModeNames())) {
+        if (RangeMode(range) == RangeMode::Manual) {
+            // Manual starts from what is shown now.
+            const DisplayMapping m = resolveMapping(v.pane, d, mExposure, v.measured);
+            d.manualMin = m.lo;
+            d.manualMax = m.hi;
+        }
+        d.range = RangeMode(range);
+    }
+    if (d.range == RangeMode::Manual) {
+        const float span = v.finite.valid ? std::max(v.finite.hi - v.finite.lo, 1e-6f) : 1.0f;
+        mUi->dragFloat("min" + tag, d.manualMin, 0.004f * span, -1e30f, 1e30f);
+        mUi->dragFloat("max" + tag, d.manualMax, 0.004f * span, -1e30f, 1e30f);
+    }
+    mUi->checkbox("log scale" + tag, d.logScale);
+    if (mUi->combo("colour map" + tag, map, colourMapNames())) d.colourMap = ColourMap(map);
+    bool negative = resolveMapping(v.pane, d, mExposure, v.measured).markNegative;
+    if (mUi->checkbox("mark negative (green)" + tag, negative)) d.markNegative = negative ? 1 : 0;
+    mUi->tooltip("NaN shows magenta and Inf cyan always; negative values green unless the map is diverging");
+    const bool frameImage = v.content == "final" || v.content == "airlight";
+    if (frameImage && mUi->combo("difference" + tag, difference, differenceModeNames()))
+        d.difference = DifferenceMode(difference);
+    if (frameImage && d.difference != DifferenceMode::Off) {
+        int against = int(std::find(mIds.begin(), mIds.end(), d.against) - mIds.begin());
+        if (against >= int(mIds.size())) against = 0;
+        if (mUi->combo("against" + tag, against, mIds)) d.against = mIds[std::size_t(against)];
+    }
+    mUi->endPanel();
+    if (d.difference != before.difference || d.against != before.against) {
+        refreshView(v);
+    } else if (d.channel != before.channel || d.range != before.range || d.logScale != before.logScale) {
+        updateStatistics(v);
+    }
+    drawHistogram(v, plot);
+}
+
+void GuiApp::drawHistogram(const ViewState& v, const Rect& area) {
+    if (area.size().x < 80.0f * mScale || area.size().y < 4.0f * mFont->lineHeight()) return;
+    const Histogram& h = v.histogram;
+    viz::plot::PlotSpec spec;
+    spec.title = "histogram, " + channelNames()[std::size_t(v.display.channel)] +
+                 (v.values.empty() ? " (no values)" : ", % of values per bin");
+    spec.logX = h.logarithmic;
+    const auto edge = [&](std::size_t i) {
+        const double t = double(i) / double(std::max<std::size_t>(1, h.bins.size()));
+        return h.logarithmic ? std::pow(10.0, std::log10(h.lo) + t * (std::log10(h.hi) - std::log10(h.lo)))
+                             : h.lo + t * (double(h.hi) - double(h.lo));
+    };
+    viz::plot::Series counts{"", {0.85f, 0.45f, 0.05f, 1.0f}, {}, true, false};
+    std::size_t total = h.below + h.above;
+    for (std::size_t c : h.bins) total += c;
+    const double percent = 100.0 / double(std::max<std::size_t>(total, 1));
+    double top = 1.0;
+    for (std::size_t i = 0; i < h.bins.size(); ++i) {
+        counts.points.push_back({edge(i), double(h.bins[i]) * percent});
+        counts.points.push_back({edge(i + 1), double(h.bins[i]) * percent});
+        top = std::max(top, double(h.bins[i]) * percent);
+    }
+    spec.series.push_back(std::move(counts));
+    const DisplayMapping m = resolveMapping(v.pane, v.display, mExposure, v.measured);
+    if (m.mode != DisplayMode::HdrColor && !h.bins.empty()) {
+        viz::plot::Series shown{"range", {0.3f, 0.85f, 1.0f, 1.0f}, {}, true, false};
+        for (double x : {double(m.lo), double(m.hi)}) {
+            if (x < h.lo || x > h.hi) continue;  // outside the data: the axis would stretch to it
+            viz::plot::Series mark{"", shown.color, {{x, 0.0}, {x, top}}, true, false};
+            spec.series.push_back(std::move(mark));
+        }
+    }
+    viz::plot::drawPlot(*mDrawList, area, spec);
+}
+
+}  // namespace airlight
