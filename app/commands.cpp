@@ -9,6 +9,7 @@
 #include <limits>
 #include <string>
 
+#include "command_options.h"
 #include "core/error.h"
 #include "core/image_io.h"
 #include "gui.h"
@@ -26,8 +27,6 @@ namespace airlight {
 using viz::InputError;
 
 namespace {
-
-constexpr const char* kDefaultTechnique = "raymarch";
 
 constexpr const char* kRenderHelp = R"(usage: airlight render --scene S --technique T --size WxH --out F.exr|F.png [options]
 
@@ -87,76 +86,6 @@ Opens the window: the final frame beside one intermediate. Its keys are listed b
                       the window to OUT.png and its views' rectangles (window pixels, origin top-left)
                       to OUT.json, then exit. Runs under xvfb-run without a monitor.
 )";
-
-struct CommonOptions {
-    RenderRequest request;
-    std::string out;
-    std::string layer = "final";
-    int layerIndex = -1;
-    std::string exposure;
-    bool quiet = false;
-    bool strict = false;  // render: NaN/Inf/negative pixels are exit 3 instead of a warning
-    std::string screenshot;  // gui only
-    int frames = 1;
-    std::string state;  // gui only
-    std::string script;  // gui only
-    std::string exportDir;  // gui only
-    std::string lesson;     // gui only
-    bool sceneGiven = false, techniqueGiven = false, sizeGiven = false;
-    std::string preset = "default";  // --preset: "paper" starts from the technique's paperSettings()
-};
-
-// Parses the options shared by render, plan and gui; `allowed` lists the flags this command takes.
-CommonOptions parseOptions(Args& args, const std::string& command, const std::string& allowed) {
-    CommonOptions o;
-    o.request.scene = viz::scene::defaultSceneName();
-    o.request.technique = kDefaultTechnique;
-    o.request.width = 320;
-    o.request.height = 240;
-    while (!args.empty()) {
-        const std::string flag = args.take();
-        if (allowed.find(" " + flag + " ") == std::string::npos)
-            throw InputError("unknown option '" + flag + "' for '" + command + "' (run 'airlight " + command +
-                             " --help')");
-        if (flag == "--scene") o.request.scene = args.next(flag), o.sceneGiven = true;
-        else if (flag == "--technique") o.request.technique = args.next(flag), o.techniqueGiven = true;
-        else if (flag == "--state") o.state = args.next(flag);
-        else if (flag == "--script") o.script = args.next(flag);
-        else if (flag == "--export-dir") o.exportDir = args.next(flag);
-        else if (flag == "--lesson") o.lesson = args.next(flag);
-        else if (flag == "--size") {
-            const glm::ivec2 size = parseSize(args.next(flag));
-            o.request.width = size.x, o.request.height = size.y;
-            o.sizeGiven = true;
-        } else if (flag == "--out") o.out = args.next(flag);
-        else if (flag == "--layer") o.layer = args.next(flag);
-        else if (flag == "--layer-index") o.layerIndex = int(parseNumber(args.next(flag), flag));
-        else if (flag == "--set") parseSetting(args.next(flag), o.request.settings);
-        else if (flag == "--stop-after") o.request.stopAfter = args.next(flag);
-        else if (flag == "--preset") {
-            o.preset = args.next(flag);
-            if (o.preset != "paper" && o.preset != "default")
-                throw InputError("--preset '" + o.preset + "': expected 'paper' or 'default'");
-        }
-        else if (flag == "--exposure") o.exposure = args.next(flag);
-        else if (flag == "--quiet") o.quiet = true;
-        else if (flag == "--no-default-light") o.request.load.defaultLight = false;
-        else if (flag == "--strict") o.strict = true;
-        else if (flag == "--screenshot") o.screenshot = args.next(flag);
-        else if (flag == "--frames") {
-            const double frames = parseNumber(args.next(flag), flag);
-            if (frames != std::floor(frames) || frames < 1 || frames > 1e6)
-                throw InputError("--frames must be a whole number from 1 to 1000000");
-            o.frames = int(frames);
-        }
-    }
-    // The paper's settings under the ones given with --set (those win).
-    if (o.preset == "paper") {
-        for (const auto& [name, value] : viz::makeTechnique(o.request.technique)->paperSettings())
-            o.request.settings.emplace(name, value);
-    }
-    return o;
-}
 
 void printNotes(const viz::scene::Scene& scene) {
     for (const std::string& note : scene.notes) std::fprintf(stderr, "airlight: note: %s\n", note.c_str());

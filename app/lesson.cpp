@@ -13,6 +13,7 @@
 #include "cli_args.h"
 #include "core/error.h"
 #include "core/image_io.h"
+#include "core/staged_folder.h"
 #include "render_job.h"
 #include "report/error_images.h"
 #include "report/text_output.h"
@@ -315,54 +316,10 @@ std::string findLesson(const std::string& nameOrPath) {
     throw InputError("unknown lesson '" + nameOrPath + "' (known: " + known + ")");
 }
 
-namespace {
-
-// Every file of an export is written into a staging folder beside the target; only a complete export
-// is moved into place, so a step that fails halfway leaves no partial folder (and no half-replaced one).
-class StagedFolder {
-public:
-    explicit StagedFolder(const std::string& target) : mTarget(target) {
-        namespace fs = std::filesystem;
-        const fs::path t = fs::path(target).lexically_normal();
-        const fs::path name = t.filename().empty() ? t.parent_path().filename() : t.filename();
-        mStage = (t.has_parent_path() ? t.parent_path() : fs::path(".")) / ("." + name.string() + ".partial");
-        std::error_code ec;
-        fs::remove_all(mStage, ec);
-        fs::create_directories(mStage, ec);
-        if (!fs::is_directory(mStage)) throw InputError("cannot create the folder '" + mStage.string() + "'");
-    }
-    ~StagedFolder() {
-        std::error_code ec;
-        std::filesystem::remove_all(mStage, ec);
-    }
-    StagedFolder(const StagedFolder&) = delete;
-    StagedFolder& operator=(const StagedFolder&) = delete;
-
-    std::string path(const std::string& file) const { return (mStage / file).string(); }
-
-    // Moves every staged file into the target folder (created if needed), replacing same-named files.
-    void commit() {
-        namespace fs = std::filesystem;
-        std::error_code ec;
-        fs::create_directories(mTarget, ec);
-        if (!fs::is_directory(mTarget)) throw InputError("cannot create the folder '" + mTarget + "'");
-        for (const auto& entry : fs::directory_iterator(mStage)) {
-            fs::rename(entry.path(), fs::path(mTarget) / entry.path().filename(), ec);
-            if (ec) throw InputError("cannot move '" + entry.path().string() + "' into '" + mTarget + "': " + ec.message());
-        }
-    }
-
-private:
-    std::string mTarget;
-    std::filesystem::path mStage;
-};
-
-}  // namespace
-
 void exportLesson(const Lesson& lesson, const std::string& folder, glm::ivec2 size) {
     namespace fs = std::filesystem;
     if (folder.empty()) throw InputError("lesson --export needs a folder");
-    StagedFolder staged(folder);
+    viz::StagedFolder staged(folder);
     std::string html = "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>" +
                        viz::report::escapeHtml(lesson.title) +
                        "</title><style>body{font-family:DejaVu Sans,sans-serif;max-width:60em;margin:2em;color:#222}"

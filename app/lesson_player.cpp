@@ -7,7 +7,6 @@
 #include <cctype>
 #include <cmath>
 #include <memory>
-#include <numbers>
 #include <sstream>
 
 #include "core/error.h"
@@ -154,22 +153,6 @@ float flowWords(DrawList* dl, const viz::ui::FontAtlas& font, const std::vector<
     return words.empty() ? 0.0f : y + line;
 }
 
-glm::dvec3 rotateAbout(glm::dvec3 v, glm::dvec3 axis, double angle) {
-    // Rodrigues: v cos + (a x v) sin + a (a . v)(1 - cos), a a unit vector.
-    const double c = std::cos(angle), s = std::sin(angle);
-    return v * c + glm::cross(axis, v) * s + axis * glm::dot(axis, v) * (1.0 - c);
-}
-
-// The axis of the orbit cone: `v` tilted by kOrbitTilt towards the horizontal (or, for a vertical v,
-// towards +x), so that v lies on the cone's surface.
-glm::dvec3 orbitAxis(glm::dvec3 v) {
-    const glm::dvec3 n = glm::normalize(v);
-    glm::dvec3 side = glm::cross(n, glm::dvec3(0.0, 1.0, 0.0));
-    if (glm::length(side) < 1e-6) side = glm::cross(n, glm::dvec3(1.0, 0.0, 0.0));
-    const glm::dvec3 perpendicular = glm::normalize(glm::cross(side, n));
-    return glm::normalize(std::cos(kOrbitTilt) * n + std::sin(kOrbitTilt) * perpendicular);
-}
-
 bool sameCamera(const viz::scene::Camera& a, const viz::scene::Camera& b) {
     // The controller renormalises directions: allow for the last bits.
     const auto near = [](glm::dvec3 p, glm::dvec3 q) { return glm::length(p - q) <= 1e-9 * (1.0 + glm::length(q)); };
@@ -183,26 +166,6 @@ bool sameLight(const viz::scene::Light& a, const viz::scene::Light& b, bool plac
 }
 
 }  // namespace
-
-viz::scene::Light orbitLight(const viz::scene::Light& light, glm::dvec3 centre, double turn) {
-    using viz::scene::LightType;
-    if (light.type == LightType::Area)
-        throw viz::InputError("light orbit: the first light '" + light.name + "' is an area light, which cannot be moved");
-    viz::scene::Light out = light;
-    if (turn <= 0.0 || turn >= 1.0) return out;  // a full turn: exactly where it started
-    const double angle = 2.0 * std::numbers::pi * turn;
-    if (light.type == LightType::Directional) {
-        out.direction = glm::normalize(rotateAbout(light.direction, orbitAxis(light.direction), angle));
-        return out;
-    }
-    glm::dvec3 aim = centre;
-    if (light.type == LightType::Spot) aim = light.position + glm::normalize(light.direction) * glm::length(centre - light.position);
-    const glm::dvec3 offset = light.position - aim;
-    if (glm::length(offset) < 1e-9) return out;
-    out.position = aim + rotateAbout(offset, orbitAxis(offset), angle);
-    if (light.type == LightType::Spot) out.direction = glm::normalize(aim - out.position);
-    return out;
-}
 
 LessonPlayer::LessonPlayer(std::string path, glm::ivec2 sizeOverride)
     : mPath(std::move(path)), mSizeOverride(sizeOverride) {

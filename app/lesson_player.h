@@ -21,6 +21,7 @@
 
 #include "debug/technique.h"
 #include "lesson.h"
+#include "scene/light_orbit.h"
 #include "scene/scene.h"
 #include "session_state.h"
 #include "ui/immediate.h"
@@ -63,13 +64,9 @@ public:
     virtual void restoreSessionOverStep() = 0;
 };
 
-// The first light of a step's `animate: light orbit` at `turn` (0..1, one full turn): it circles its aim
-// point on a cone of half-angle kOrbitTilt whose surface holds its own position, so turn 0 and 1 are
-// where it started. A spot keeps pointing at the aim point (on its axis, as far from the light as
-// `centre`); a point light circles `centre`; a directional light's direction sweeps the same cone.
-// Throws InputError for an area light (its emitter is geometry).
-constexpr double kOrbitTilt = 0.2617993877991494;  // 15 degrees
-viz::scene::Light orbitLight(const viz::scene::Light& light, glm::dvec3 centre, double turn);
+// The first light of a step's `animate: light orbit` at `turn` (0..1, one full turn): scene/light_orbit.h.
+using viz::scene::kOrbitTilt;
+using viz::scene::orbitLight;
 
 class LessonPlayer {
 public:

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "animate_command.h"
 #include "cli_args.h"
 #include "commands.h"
 #include "compare_command.h"
@@ -29,6 +30,8 @@ commands:
   --lesson NAME   open the window with the lesson player (lessons/NAME.md or a .md path; PageUp/
                   PageDown step, T try it, B back to the step, Space play/pause an animation)
   render          render one image:  airlight render --scene S --technique T --size WxH --out F.exr|F.png
+  animate         frames along a motion path:  airlight animate --scene S --technique T --path P --frames N
+                  --size WxH --out F.gif|F.mp4|DIR/
   list            list scenes | techniques | stages T | params T
   plan            show which stages and features a technique runs for a scene, and why
   export-scene    write a scene as glTF:  airlight export-scene NAME out.gltf|out.glb
@@ -54,6 +57,7 @@ int main(int argc, char** argv) {
             return 0;
         }
         if (command == "render") return airlight::runRender(args);
+        if (command == "animate") return airlight::runAnimate(args);
         if (command == "list") return airlight::runList(args);
         if (command == "plan") return airlight::runPlan(args);
         if (command == "export-scene") return airlight::runExportScene(args);

@@ -36,6 +36,9 @@ public:
 
     const viz::FrameOutput& run();
     const viz::scene::Scene& scene() const { return mScene; }
+    // The scene the next run() renders: a caller may move its camera and lights between runs (animate
+    // does, frame by frame), as the window does; techniques read the scene at every run.
+    viz::scene::Scene& scene() { return mScene; }
     const viz::Technique& technique() const { return *mTechnique; }
 
     // "airlight", "final" or an intermediate id; layer selects a cube face / array layer.

@@ -13,6 +13,7 @@
 
 #include "debug/technique.h"
 #include "run_scheduler.h"
+#include "scene/orbit_target.h"
 #include "scene/scene.h"
 #include "ui/immediate.h"
 
@@ -118,50 +119,8 @@ inline std::string skippedLine(const viz::Plan& plan) {
     return line.empty() ? "skipped: none" : line;
 }
 
-// Distance along the ray to the nearest triangle of the scene (Moller-Trumbore, brute force over every
-// triangle: done once per reset, scenes here have a few thousand triangles), or -1 for a miss.
-inline double firstHit(const viz::scene::Scene& scene, glm::dvec3 origin, glm::dvec3 dir) {
-    double best = -1.0;
-    for (const auto& mesh : scene.meshes) {
-        for (std::size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
-            const glm::dvec3 a(mesh.positions[mesh.indices[i]]);
-            const glm::dvec3 e1 = glm::dvec3(mesh.positions[mesh.indices[i + 1]]) - a;
-            const glm::dvec3 e2 = glm::dvec3(mesh.positions[mesh.indices[i + 2]]) - a;
-            const glm::dvec3 p = glm::cross(dir, e2);
-            const double det = glm::dot(e1, p);
-            if (std::abs(det) < 1e-12) continue;
-            const glm::dvec3 s = origin - a;
-            const double u = glm::dot(s, p) / det;
-            if (u < 0.0 || u > 1.0) continue;
-            const glm::dvec3 q = glm::cross(s, e1);
-            const double v = glm::dot(dir, q) / det;
-            if (v < 0.0 || u + v > 1.0) continue;
-            const double t = glm::dot(e2, q) / det;
-            if (t > 1e-6 && (best < 0.0 || t < best)) best = t;
-        }
-    }
-    return best;
-}
-
-// Distance from the scene camera to the orbit target: the first surface on the view axis; failing
-// that, where the axis passes closest to the centre of the scene's bounding box; failing that (the
-// centre is behind the camera), the box's size.
-inline double orbitDistance(const viz::scene::Scene& scene) {
-    const glm::dvec3 forward = glm::normalize(scene.camera.forward);
-    const double hit = firstHit(scene, scene.camera.position, forward);
-    if (hit > 0.0 && hit < scene.camera.zfar) return hit;
-    glm::dvec3 lo(1e300), hi(-1e300);
-    for (const auto& mesh : scene.meshes)
-        for (const glm::vec3& p : mesh.positions) {
-            lo = glm::min(lo, glm::dvec3(p));
-            hi = glm::max(hi, glm::dvec3(p));
-        }
-    if (lo.x > hi.x) return 5.0;
-    const glm::dvec3 centre = 0.5 * (lo + hi);
-    const double radius = std::max(0.5 * glm::length(hi - lo), 1e-3);
-    const double along = glm::dot(centre - scene.camera.position, forward);
-    return along > 0.1 * radius ? along : radius;
-}
+// The orbit target's distance from the scene camera (scene/orbit_target.h).
+using viz::scene::orbitDistance;
 
 // ---- the app ----
 

@@ -27,6 +27,19 @@ static std::uint8_t encodeSrgb8(float linear) {
     return static_cast<std::uint8_t>(std::lround(std::clamp(s, 0.0f, 1.0f) * 255.0f));
 }
 
+std::vector<std::uint8_t> srgb8Pixels(const Image& image, float exposure, int channels) {
+    VIZ_CHECK(channels == 1 || channels == 3, "srgb8Pixels: 1 or 3 channels");
+    std::vector<std::uint8_t> bytes(static_cast<std::size_t>(image.width) * std::size_t(image.height) *
+                                    std::size_t(channels));
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x)
+            for (int c = 0; c < channels; ++c) {
+                const float v = image.at(x, y, image.channels < 3 ? 0 : c);
+                bytes[(std::size_t(y) * std::size_t(image.width) + std::size_t(x)) * std::size_t(channels) +
+                      std::size_t(c)] = encodeSrgb8(v * exposure);
+            }
+    return bytes;
+}
 
 void writeImage(const Image& image, const std::string& path, float exposure) {
     const std::string ext = extensionOf(path);
@@ -49,15 +62,7 @@ void writeImage(const Image& image, const std::string& path, float exposure) {
         // PNG is for looking at: the first channel alone (grey) or RGB. A fourth channel is data in our
         // images (a mask channel, a count), not opacity: written as alpha it made pixels transparent.
         const int channels = image.channels < 3 ? 1 : 3;
-        std::vector<std::uint8_t> bytes(static_cast<std::size_t>(image.width) * std::size_t(image.height) *
-                                        std::size_t(channels));
-        for (int y = 0; y < image.height; ++y)
-            for (int x = 0; x < image.width; ++x)
-                for (int c = 0; c < channels; ++c) {
-                    const float v = image.at(x, y, c);
-                    bytes[(std::size_t(y) * std::size_t(image.width) + std::size_t(x)) * std::size_t(channels) +
-                          std::size_t(c)] = encodeSrgb8(v * exposure);
-                }
+        const std::vector<std::uint8_t> bytes = srgb8Pixels(image, exposure, channels);
         OIIO::ImageSpec spec(image.width, image.height, channels, OIIO::TypeDesc::UINT8);
         ok = out->open(tmp, spec) && out->write_image(OIIO::TypeDesc::UINT8, bytes.data());
     }

@@ -2,7 +2,9 @@
 // renamed into place, so a failed write never leaves a partial file.
 #pragma once
 
+#include <cstdint>
 #include <string>
+#include <vector>
 
 #include "core/image.h"
 
@@ -13,6 +15,11 @@ namespace viz {
 // one- and two-channel images are written grey from their first channel. Throws InputError on an
 // unsupported extension or an unwritable path.
 void writeImage(const Image& image, const std::string& path, float exposure = 1.0f);
+
+// 8-bit sRGB bytes of an image as writeImage encodes a PNG: linear value * exposure, clamped to [0, 1],
+// sRGB-encoded (NaN as 0). channels 3: RGB, a one- or two-channel image as grey from its first channel;
+// channels 1: the first channel. Row 0 at the top, interleaved.
+std::vector<std::uint8_t> srgb8Pixels(const Image& image, float exposure, int channels);
 
 // Scale a scalar image linearly from [lo, hi] to [0, 1] for viewing (NaN/Inf shown as magenta when the
 // result is RGB). Returns an RGB image.

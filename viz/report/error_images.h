@@ -12,4 +12,8 @@ float exposureFor(const Image& image);
 // NaN or Inf pixels in magenta. Returns linear RGB for writeImage.
 Image errorHeatMap(const Image& test, const Image& reference, float scale);
 
+// The same colour map over the first channel of a scalar image (a per-pixel figure such as the flicker of
+// report/temporal_error.h): value * scale, clamped to [0, 1]; NaN or Inf pixels in magenta.
+Image heatMap(const Image& scalar, float scale);
+
 }  // namespace viz::report

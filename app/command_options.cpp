@@ -1,0 +1,71 @@
+#include "command_options.h"
+
+#include <cmath>
+
+#include "core/error.h"
+#include "scene/builtin_scenes.h"
+#include "techniques/registry.h"
+
+namespace airlight {
+
+using viz::InputError;
+
+CommonOptions parseOptions(Args& args, const std::string& command, const std::string& allowed, int maxFrames) {
+    CommonOptions o;
+    o.request.scene = viz::scene::defaultSceneName();
+    o.request.technique = kDefaultTechnique;
+    o.request.width = 320;
+    o.request.height = 240;
+    while (!args.empty()) {
+        const std::string flag = args.take();
+        if (allowed.find(" " + flag + " ") == std::string::npos)
+            throw InputError("unknown option '" + flag + "' for '" + command + "' (run 'airlight " + command +
+                             " --help')");
+        if (flag == "--scene") o.request.scene = args.next(flag), o.sceneGiven = true;
+        else if (flag == "--technique") o.request.technique = args.next(flag), o.techniqueGiven = true;
+        else if (flag == "--state") o.state = args.next(flag);
+        else if (flag == "--script") o.script = args.next(flag);
+        else if (flag == "--export-dir") o.exportDir = args.next(flag);
+        else if (flag == "--lesson") o.lesson = args.next(flag);
+        else if (flag == "--size") {
+            const glm::ivec2 size = parseSize(args.next(flag));
+            o.request.width = size.x, o.request.height = size.y;
+            o.sizeGiven = true;
+        } else if (flag == "--out") o.out = args.next(flag);
+        else if (flag == "--layer") o.layer = args.next(flag);
+        else if (flag == "--layer-index") o.layerIndex = int(parseNumber(args.next(flag), flag));
+        else if (flag == "--set") parseSetting(args.next(flag), o.request.settings);
+        else if (flag == "--stop-after") o.request.stopAfter = args.next(flag);
+        else if (flag == "--preset") {
+            o.preset = args.next(flag);
+            if (o.preset != "paper" && o.preset != "default")
+                throw InputError("--preset '" + o.preset + "': expected 'paper' or 'default'");
+        }
+        else if (flag == "--exposure") o.exposure = args.next(flag);
+        else if (flag == "--quiet") o.quiet = true;
+        else if (flag == "--no-default-light") o.request.load.defaultLight = false;
+        else if (flag == "--strict") o.strict = true;
+        else if (flag == "--screenshot") o.screenshot = args.next(flag);
+        else if (flag == "--frames") {
+            const double frames = parseNumber(args.next(flag), flag);
+            if (frames != std::floor(frames) || frames < 1 || frames > double(maxFrames))
+                throw InputError("--frames must be a whole number from 1 to " + std::to_string(maxFrames));
+            o.frames = int(frames);
+            o.framesGiven = true;
+        } else if (flag == "--path") o.path = args.next(flag);
+        else if (flag == "--exr") o.exr = true;
+        else if (flag == "--fps") {
+            const double fps = parseNumber(args.next(flag), flag);
+            if (fps != std::floor(fps) || fps < 1 || fps > 100) throw InputError("--fps must be a whole number from 1 to 100");
+            o.fps = int(fps);
+        }
+    }
+    // The paper's settings under the ones given with --set (those win).
+    if (o.preset == "paper") {
+        for (const auto& [name, value] : viz::makeTechnique(o.request.technique)->paperSettings())
+            o.request.settings.emplace(name, value);
+    }
+    return o;
+}
+
+}  // namespace airlight

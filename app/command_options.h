@@ -1,0 +1,42 @@
+// The options shared by render, plan, gui and animate, parsed in one place so that every command spells
+// and checks them alike.
+#pragma once
+
+#include <string>
+
+#include "cli_args.h"
+#include "render_job.h"
+
+namespace airlight {
+
+constexpr const char* kDefaultTechnique = "raymarch";
+
+struct CommonOptions {
+    RenderRequest request;
+    std::string out;
+    std::string layer = "final";
+    int layerIndex = -1;
+    std::string exposure;
+    bool quiet = false;
+    bool strict = false;  // render: NaN/Inf/negative pixels are exit 3 instead of a warning
+    std::string screenshot;  // gui only
+    int frames = 1;
+    std::string state;  // gui only
+    std::string script;  // gui only
+    std::string exportDir;  // gui only
+    std::string lesson;     // gui only
+    bool sceneGiven = false, techniqueGiven = false, sizeGiven = false;
+    std::string preset = "default";  // --preset: "paper" starts from the technique's paperSettings()
+    bool framesGiven = false;
+    std::string path;  // animate only: the motion path (scene/motion_path.h)
+    int fps = 25;      // animate only
+    bool exr = false;  // animate only: EXR frames beside the PNGs
+};
+
+// Parses the options; `allowed` lists the flags this command takes (" --scene --size "), any other is an
+// InputError. maxFrames bounds --frames. Starts from the default scene and technique at 320x240; with
+// --preset paper, the technique's paper settings under those given with --set.
+CommonOptions parseOptions(Args& args, const std::string& command, const std::string& allowed,
+                           int maxFrames = 1000000);
+
+}  // namespace airlight
