@@ -1,6 +1,7 @@
 #include "comparison_grid.h"
 
 #include <cmath>
+#include <cstdio>
 
 #include "render_job.h"
 #include "techniques/registry.h"
@@ -89,11 +90,25 @@ nlohmann::json ComparisonGrid::toJson() const {
     for (const ComparisonTile& t : mTiles)
         tiles.push_back({{"technique", t.technique},
                          {"milliseconds", t.milliseconds},
-                         {"relative_l2", std::isfinite(t.error.relativeL2) ? nlohmann::json(t.error.relativeL2)
-                                                                           : nlohmann::json(nullptr)},
                          {"nan_inf_pixels", t.error.nanPixels + t.error.infPixels},
+                         {"error", tileErrorText(t.error)},
                          {"failure", t.failure}});
+    // Figures only where they are defined (the caption says why one is not).
+    for (std::size_t i = 0; i < mTiles.size(); ++i) {
+        if (std::isfinite(mTiles[i].error.relativeL2)) tiles[i]["relative_l2"] = mTiles[i].error.relativeL2;
+        if (std::isfinite(mTiles[i].error.maxAbsolute)) tiles[i]["max_abs"] = mTiles[i].error.maxAbsolute;
+    }
     return tiles;
+}
+
+std::string tileErrorText(const viz::report::ErrorMetrics& error) {
+    char text[96];
+    if (std::isfinite(error.relativeL2)) std::snprintf(text, sizeof text, "error %.3g", error.relativeL2);
+    else if (error.nanPixels + error.infPixels > 0) std::snprintf(text, sizeof text, "error undefined");
+    else if (std::isfinite(error.maxAbsolute))
+        std::snprintf(text, sizeof text, "reference black: max |a - b| %.2g", error.maxAbsolute);
+    else std::snprintf(text, sizeof text, "error undefined");
+    return text;
 }
 
 }  // namespace airlight

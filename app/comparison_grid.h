@@ -28,6 +28,10 @@ struct ComparisonTile {
     viz::report::ErrorMetrics error;
 };
 
+// A tile's error as its caption says it: the relative L2 error, or why there is none (a NaN or Inf
+// pixel; a reference that is black where the technique is not, then the largest absolute difference).
+std::string tileErrorText(const viz::report::ErrorMetrics& error);
+
 class ComparisonGrid {
 public:
     // Runs technique `id` once on `scene` at `size` with the window's settings for it (throws on failure).

@@ -101,6 +101,7 @@ int GuiApp::run() {
         const auto now = Clock::now();
         const double dt = std::min(0.1, std::chrono::duration<double>(now - last).count());
         last = now;
+        loadPendingScene();
         if (mGpuOthersDue) runDueGpuOthers();  // after a frame that said "computing it..."
         if (mComparison.due()) runComparisonTechniques();
         if (mController.mode() == CameraController::Mode::Fly) fly(dt);
@@ -323,8 +324,11 @@ int runGui(const GuiOptions& options) {
 #else
     constexpr bool kDebugContext = true;
 #endif
-    std::unique_ptr<viz::Window> window = viz::Window::create(1280, 720, "Airlight", kDebugContext);
-    if (kDebugContext) viz::gl::installDebugOutput();
+    // AIRLIGHT_GL_DEBUG=1: a debug context whose messages are printed, in optimised builds too.
+    const char* glDebug = std::getenv("AIRLIGHT_GL_DEBUG");
+    const bool debugContext = kDebugContext || (glDebug && std::string(glDebug) == "1");
+    std::unique_ptr<viz::Window> window = viz::Window::create(1280, 720, "Airlight", debugContext);
+    if (debugContext) viz::gl::installDebugOutput();
     int code = 0;
     {
         GuiApp app(effective, std::move(scene), *window, std::move(session), std::move(notice));

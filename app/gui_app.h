@@ -444,6 +444,8 @@ private:
     // the window). Picking one loads it with its own camera, medium and lights; a scene that fails to
     // load leaves the current one and shows the error.
     void scenePicker();
+    // A scene picked in the panel, loaded before the next frame is laid out (scenePicker).
+    void loadPendingScene();
 
     // Where the light points and where it is: azimuth and elevation of the direction for spot and
     // directional lights, position for point and spot lights (an area light's rectangle is scene
@@ -537,6 +539,7 @@ private:
     std::vector<TimelineSegment> mTimeline;  // the stepping timeline as drawn last
     Rect mTimelineRect;
     bool mDragTimeline = false;
+    std::optional<std::string> mPendingScene;  // picked in the panel, loaded by loadPendingScene
     int mScriptHeld = -1;           // the key a script's `hold` keeps down (-1: none)
     bool mScriptHeldShift = false;  // ... with Shift
     std::string mProbeTechnique;

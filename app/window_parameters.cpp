@@ -101,9 +101,17 @@ void GuiApp::scenePicker() {
     if (mUi->combo("stiff case", stiffIndex, mStiffChoices) && stiffIndex > 0)
         picked = mStiffChoices[std::size_t(stiffIndex)];
     mUi->tooltip("the stiff and extreme cases (README: Stiff and extreme cases)");
-    if (picked.empty() || picked == mOptions.scene) return;
+    // Loaded at the start of the next frame: this frame's views (and the comparison grid's tiles) are
+    // queued for drawing with the textures the scene change would release.
+    if (!picked.empty() && picked != mOptions.scene) mPendingScene = picked;
+}
+
+void GuiApp::loadPendingScene() {
+    if (!mPendingScene) return;
+    const std::string name = std::move(*mPendingScene);
+    mPendingScene.reset();
     try {
-        loadLessonScene(picked);
+        loadLessonScene(name);
         replan();
     } catch (const std::exception& e) {
         mError = e.what();

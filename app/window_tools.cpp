@@ -64,8 +64,7 @@ void GuiApp::drawComparison(DrawList& dl, const Rect& area) {
         std::string figures = tile.failure.empty()
             ? (tile.pane.texture == 0 ? std::string("")
                : tile.technique == "reference" ? std::string("ground truth")
-                                             : format("%.1f ms", tile.milliseconds) + "   error " +
-                                                   format("%.3g", tile.error.relativeL2))
+                                             : format("%.1f ms", tile.milliseconds) + "   " + tileErrorText(tile.error))
             : "failed: " + firstLine(tile.failure);
         if (tile.error.nanPixels + tile.error.infPixels > 0)
             figures += "   " + std::to_string(tile.error.nanPixels + tile.error.infPixels) + " NaN/Inf px";

@@ -217,6 +217,20 @@ TEST_F(GuiCli, TheScenePickersLoadABuiltinSceneAndAStiffCase) {
         << "extinction 50 per unit";
 }
 
+// Picking a scene while the comparison grid is open: the grid's tiles were queued for drawing when the
+// pick closed the grid and released their textures (a GL error, and a read of freed tiles, found by the
+// window fuzz). The scene now loads before the next frame is laid out.
+TEST_F(GuiCli, PickingASceneWithTheComparisonGridOpenDrawsNoReleasedTexture) {
+    const fs::path stats = path("stats.jsonl");
+    const fs::path script = writeText("pick.txt", "frames 1\nkey G\nframes 3\nclick scene\nframes 1\n"
+                                                  "click \"scene/colonnade\"\nframes 3\nstats " + stats.string() + "\n");
+    const RunResult r = run("gui --scene grate --technique raymarch --size 24x18 --set samples=16 --script " +
+                            script.string() + " --screenshot " + path("after.png").string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(nlohmann::json::parse(readFile(stats)).at("gl_errors").get<long>(), 0);
+    EXPECT_EQ(nlohmann::json::parse(readFile(path("after.json"))).at("scene"), "colonnade");
+}
+
 // P plays the animation: the first light circles its aim point (a spot keeps aiming at it) and slices'
 // `time` (its scrolling noise) follows the clock, 1/30 s per frame under automation; P again pauses.
 TEST_F(GuiCli, PlayMovesTheLightAndScrollsTheNoiseAndPauseStopsThem) {
