@@ -56,6 +56,12 @@ GuiApp::GuiApp(const GuiOptions& options, viz::scene::Scene scene, viz::Window& 
     glfwSetScrollCallback(mWindow.handle(), [](GLFWwindow* w, double, double dy) {
         static_cast<GuiApp*>(glfwGetWindowUserPointer(w))->onScroll(dy);
     });
+    glfwSetDropCallback(mWindow.handle(), [](GLFWwindow* w, int count, const char** paths) {
+        std::vector<std::string> dropped;
+        for (int i = 0; i < count; ++i) dropped.emplace_back(paths[i]);
+        static_cast<GuiApp*>(glfwGetWindowUserPointer(w))->onDrop(dropped);
+    });
+    mSceneWatch.watch(mOptions.scene);
     selectTechnique(mCurrent);
     applySessionView();
     const std::string lesson = !options.lesson.empty() ? options.lesson : mSession.lesson;
@@ -73,6 +79,7 @@ GuiApp::~GuiApp() {
     glfwSetMouseButtonCallback(mWindow.handle(), nullptr);
     glfwSetCursorPosCallback(mWindow.handle(), nullptr);
     glfwSetScrollCallback(mWindow.handle(), nullptr);
+    glfwSetDropCallback(mWindow.handle(), nullptr);
     glfwSetCursor(mWindow.handle(), nullptr);
     for (GLFWcursor* cursor : {mColumnCursor, mRowCursor})
         if (cursor) glfwDestroyCursor(cursor);
@@ -102,6 +109,7 @@ int GuiApp::run() {
         const double dt = std::min(0.1, std::chrono::duration<double>(now - last).count());
         last = now;
         loadPendingScene();
+        if (mSceneWatch.changed(now)) reloadScene();
         if (mGpuOthersDue) runDueGpuOthers();  // after a frame that said "computing it..."
         if (mComparison.due()) runComparisonTechniques();
         if (mController.mode() == CameraController::Mode::Fly) fly(dt);
@@ -200,7 +208,7 @@ void GuiApp::selectTechnique(int index) {
     mOutput = {};
     mHaveOutput = false;
     mPass = 0;
-    mWindow.setTitle("Airlight - " + mScene.name + " - " + id);
+    mWindow.setTitle("Airlight - " + sceneTitle() + " - " + id);
     mDirty = true;
 }
 

@@ -65,6 +65,7 @@
 
 #include "gui.h"
 #include "input_table.h"
+#include "scene_file.h"
 #include "window_common.h"
 
 namespace airlight {
@@ -309,6 +310,7 @@ private:
     void perform(Command command, int offset);
 
     void onChar(unsigned codepoint);
+    void onDrop(const std::vector<std::string>& paths);
 
     void onMouseButton(int button, int action);
 
@@ -446,6 +448,14 @@ private:
     void scenePicker();
     // A scene picked in the panel, loaded before the next frame is laid out (scenePicker).
     void loadPendingScene();
+    // File > Open, a drop, a script's `drop`: a scene file to load before the next frame (errors in the
+    // status line; the window keeps its scene).
+    void openSceneFile(const std::string& path);
+    // The scene file changed on disk: loaded again keeping the camera, the view grid and the settings.
+    void reloadScene();
+    void openFileWidgets();
+    // The scene as the window names it: a file's name (and its glTF scene's, when that differs).
+    std::string sceneTitle() const;
 
     // Where the light points and where it is: azimuth and elevation of the direction for spot and
     // directional lights, position for point and spot lights (an area light's rectangle is scene
@@ -540,6 +550,9 @@ private:
     Rect mTimelineRect;
     bool mDragTimeline = false;
     std::optional<std::string> mPendingScene;  // picked in the panel, loaded by loadPendingScene
+    SceneFileWatch mSceneWatch;                // the scene file, when the scene is one
+    std::string mOpenPath;                     // File > Open's text field
+    bool mTextTab = false, mTextEnter = false;  // Tab / Enter pressed in a text field this frame
     int mScriptHeld = -1;           // the key a script's `hold` keeps down (-1: none)
     bool mScriptHeldShift = false;  // ... with Shift
     std::string mProbeTechnique;

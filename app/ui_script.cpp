@@ -138,6 +138,10 @@ std::vector<ScriptAction> parseScript(const std::string& path) {
                 fail("frames takes a whole number from 1 to 100000");
             a.kind = ScriptAction::Kind::Frames;
             a.frames = int(n);
+        } else if (w[0] == "type" || w[0] == "drop") {
+            if (w.size() != 2 || w[1].empty()) fail(w[0] + " takes one argument (quote it when it has spaces)");
+            a.kind = w[0] == "type" ? ScriptAction::Kind::Type : ScriptAction::Kind::Drop;
+            a.target = w[1];
         } else if (w[0] == "screenshot") {
             if (w.size() != 2) fail("screenshot takes one path");
             a.kind = ScriptAction::Kind::Screenshot;
@@ -147,7 +151,7 @@ std::vector<ScriptAction> parseScript(const std::string& path) {
             a.kind = ScriptAction::Kind::Stats;
             a.target = w[1];
         } else {
-            fail("unknown action '" + w[0] + "' (known: click, hover, drag, wheel, key, hold, frames, screenshot, stats)");
+            fail("unknown action '" + w[0] + "' (known: click, hover, drag, wheel, key, hold, type, drop, frames, screenshot, stats)");
         }
         actions.push_back(std::move(a));
     }

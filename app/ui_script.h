@@ -15,6 +15,8 @@
 //                        and/or Ctrl+ (Shift+S)
 //   hold NAME N          press a key and keep it down for N frames (fly mode's W A S D Q E), then
 //                        release it
+//   type TEXT            type TEXT (into the text field being edited; else as key characters)
+//   drop PATH            drop a file on the window (as GLFW's drop callback does)
 //   frames N             let N frames pass
 //   screenshot PATH      write the window (PNG) and its sidecar JSON now
 //   stats PATH           append one JSON line to PATH: frame, resident memory, open files, GL objects
@@ -29,7 +31,7 @@
 namespace airlight {
 
 struct ScriptAction {
-    enum class Kind { Click, Hover, Drag, Wheel, Key, Hold, Frames, Screenshot, Stats };
+    enum class Kind { Click, Hover, Drag, Wheel, Key, Hold, Type, Drop, Frames, Screenshot, Stats };
     Kind kind = Kind::Frames;
     std::string target;          // widget / view name, key name or path
     glm::vec2 fraction{0.5f};    // click position within the target's rectangle

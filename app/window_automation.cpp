@@ -67,6 +67,18 @@ bool GuiApp::stepScript() {
                 writeScreenshot(a.target);
                 ++mScriptIndex;
                 break;
+            case ScriptAction::Kind::Type:
+                if (mUi->textFocused()) {
+                    mUiInput.text += a.target;
+                } else {
+                    for (unsigned char c : a.target) onChar(c);
+                }
+                ++mScriptIndex;
+                return true;
+            case ScriptAction::Kind::Drop:
+                onDrop({a.target});
+                ++mScriptIndex;
+                return true;
             case ScriptAction::Kind::Stats: {
                 while (glGetError() != GL_NO_ERROR) ++mGlErrors;
                 std::ofstream out(a.target, std::ios::app);
@@ -153,6 +165,9 @@ void GuiApp::writeScreenshot(const std::string& path) {
     nlohmann::json sidecar = {{"window", {fb.x, fb.y}},
                                     {"scale", mScale},
                                     {"scene", mScene.name},
+                                    {"scene_source", mOptions.scene},
+                                    {"scene_title", sceneTitle()},
+                                    {"error", mError},
                                     {"technique", technique().id()},
                                     {"frames", mFramesDrawn},
                                     {"medium", {{"sigma_s", mScene.medium.sigma_s}, {"sigma_a", mScene.medium.sigma_a},

@@ -33,7 +33,7 @@ void GuiApp::draw() {
 
     // Status lines at the top.
     const CameraController::Mode mode = mController.mode();
-    std::string head = "scene: " + mScene.name + "   technique: " + t.id() + " - " + t.description() +
+    std::string head = "scene: " + sceneTitle() + "   technique: " + t.id() + " - " + t.description() +
                        "   render " + std::to_string(mOptions.width) + "x" + std::to_string(mOptions.height);
     if (mHaveOutput && mReduced) head += "   (interactive: " + std::to_string(mOutputSize.x) + "x" + std::to_string(mOutputSize.y) + ")";
     if (mHaveOutput && mPassCount > 1) {

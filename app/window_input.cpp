@@ -94,6 +94,8 @@ void GuiApp::onKey(int key, int action, int mods) {
     mUiInput.shift = shift;
     mUiInput.ctrl = (mods & GLFW_MOD_CONTROL) != 0;
     const KeyState state{mController.mode() == CameraController::Mode::Fly, mLesson != nullptr, mUi->textFocused()};
+    if (state.text && key == GLFW_KEY_TAB) mTextTab = true;      // completes a path being typed
+    if (state.text && (key == GLFW_KEY_ENTER || key == GLFW_KEY_KP_ENTER)) mTextEnter = true;
     int offset = 0;
     const Command command = commandForKey(key, shift, repeat, state, &offset);
     if (command == Command::LessonKey && mLesson && mLesson->onKey(key, repeat)) return;
@@ -161,7 +163,32 @@ void GuiApp::perform(Command command, int offset) {
 }
 
 void GuiApp::onChar(unsigned codepoint) {
-    if (!mUi->textFocused()) perform(commandForChar(codepoint), 0);
+    if (!mUi->textFocused()) {
+        perform(commandForChar(codepoint), 0);
+        return;
+    }
+    // UTF-8 for the field being edited.
+    std::string& t = mUiInput.text;
+    if (codepoint < 0x80) {
+        t += char(codepoint);
+    } else if (codepoint < 0x800) {
+        t += char(0xc0 | (codepoint >> 6)), t += char(0x80 | (codepoint & 0x3f));
+    } else if (codepoint < 0x10000) {
+        t += char(0xe0 | (codepoint >> 12)), t += char(0x80 | ((codepoint >> 6) & 0x3f)), t += char(0x80 | (codepoint & 0x3f));
+    } else if (codepoint < 0x110000) {
+        t += char(0xf0 | (codepoint >> 18)), t += char(0x80 | ((codepoint >> 12) & 0x3f));
+        t += char(0x80 | ((codepoint >> 6) & 0x3f)), t += char(0x80 | (codepoint & 0x3f));
+    }
+}
+
+// Files dropped on the window: the first scene file (.gltf, .glb) opens.
+void GuiApp::onDrop(const std::vector<std::string>& paths) {
+    for (const std::string& p : paths)
+        if (isSceneFile(p)) {
+            openSceneFile(p);
+            return;
+        }
+    if (!paths.empty()) mError = "dropped '" + paths.front() + "': not a .gltf or .glb file";
 }
 
 void GuiApp::onMouseButton(int button, int action) {

@@ -101,9 +101,61 @@ void GuiApp::scenePicker() {
     if (mUi->combo("stiff case", stiffIndex, mStiffChoices) && stiffIndex > 0)
         picked = mStiffChoices[std::size_t(stiffIndex)];
     mUi->tooltip("the stiff and extreme cases (README: Stiff and extreme cases)");
+    openFileWidgets();
     // Loaded at the start of the next frame: this frame's views (and the comparison grid's tiles) are
     // queued for drawing with the textures the scene change would release.
     if (!picked.empty() && picked != mOptions.scene) mPendingScene = picked;
+}
+
+void GuiApp::openFileWidgets() {
+    const bool wasFocused = mUi->textFocused();
+    mUi->textInput("open glTF##path", mOpenPath);
+    mUi->tooltip("a .gltf or .glb file: Tab completes the path, Enter opens (or drop the file on the window)");
+    const bool editing = mUi->focused() == mUi->lastId();
+    const std::vector<std::string> completions = mOpenPath.empty() ? std::vector<std::string>{} : completePath(mOpenPath, 6);
+    if (editing && mTextTab) mOpenPath = commonCompletion(mOpenPath, completions);
+    const bool entered = wasFocused && !editing && mTextEnter;
+    mTextTab = mTextEnter = false;
+    if (entered && !mOpenPath.empty()) openSceneFile(mOpenPath);
+    // The completions, while the typed path names no file: a click takes one (a file opens).
+    std::error_code ec;
+    if (!mOpenPath.empty() && !std::filesystem::is_regular_file(mOpenPath, ec))
+        for (const std::string& c : completions)
+            if (mUi->button(c + "##complete")) {
+                mOpenPath = c;
+                if (isSceneFile(c)) openSceneFile(c);
+            }
+    if (!mOpenPath.empty() && mUi->button("Open##path")) openSceneFile(mOpenPath);
+}
+
+void GuiApp::openSceneFile(const std::string& path) {
+    std::error_code ec;
+    if (!isSceneFile(path)) mError = "cannot open '" + path + "': not a .gltf or .glb file";
+    else if (!std::filesystem::is_regular_file(path, ec)) mError = "cannot open '" + path + "': no such file";
+    else mPendingScene = path;
+}
+
+void GuiApp::reloadScene() {
+    try {
+        viz::scene::Scene scene = viz::scene::loadScene(mOptions.scene, mOptions.load);
+        mScene = std::move(scene);
+    } catch (const std::exception& e) {
+        mError = "reloading " + sceneTitle() + " failed, the scene is kept as it was: " + firstLine(e.what());
+        return;
+    }
+    mWorker->setScene(mScene);
+    mComparison.close();  // its tiles show the old scene (this runs before the frame is laid out)
+    mNotice = "reloaded " + sceneTitle() + " (changed on disk)";
+    if (const std::string notes = sceneNotesLine(mScene); !notes.empty()) mNotice += "; " + notes;
+    replan();
+    mDirty = true;
+}
+
+std::string GuiApp::sceneTitle() const {
+    if (!isSceneFile(mOptions.scene)) return mScene.name;
+    const std::filesystem::path file(mOptions.scene);
+    const std::string title = file.filename().string();
+    return mScene.name.empty() || mScene.name == file.stem().string() ? title : title + " (glTF scene " + mScene.name + ")";
 }
 
 void GuiApp::loadPendingScene() {

@@ -95,6 +95,7 @@ void GuiApp::loadLessonScene(const std::string& name) {
     viz::scene::Scene scene = viz::scene::loadScene(name, mOptions.load);  // InputError: the window keeps its scene
     mScene = std::move(scene);
     mOptions.scene = name;
+    mSceneWatch.watch(name);
     mController = CameraController(mScene.camera, orbitDistance(mScene));
     mGizmoArm = kGizmoArm * mController.targetDistance();
     mWorker->setScene(mScene);

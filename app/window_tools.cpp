@@ -74,7 +74,9 @@ void GuiApp::drawComparison(DrawList& dl, const Rect& area) {
 }
 
 std::string GuiApp::exportStem(const std::string& what) {
-    std::string name = mScene.name + "-" + technique().id() + "-" + what;
+    // A file's scene is named by the file (the glTF's own scene name may be another scene's).
+    const std::string scene = isSceneFile(mOptions.scene) ? std::filesystem::path(mOptions.scene).stem().string() : mScene.name;
+    std::string name = scene + "-" + technique().id() + "-" + what;
     for (char& c : name)
         if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_' && c != '.') c = '_';
     std::error_code ec;

@@ -1,0 +1,86 @@
+// The user's own scene file in the window: File > Open with path completion, a drop on the window, and
+// the automatic reload when the file changes on disk (the camera and the views are kept).
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <thread>
+
+#include <nlohmann/json.hpp>
+
+#include "cli/cli_fixture.h"
+
+namespace viz::testing {
+namespace {
+
+class GuiSceneFile : public WindowCliTest {
+protected:
+    // grate written as glTF, with its medium's scattering set to `sigmaS`.
+    fs::path sceneFile(const std::string& name, double sigmaS) {
+        const fs::path p = path(name);
+        if (!fs::exists(path("grate.gltf"))) {
+            EXPECT_EQ(run("export-scene grate " + path("grate.gltf").string()).exitCode, 0);
+        }
+        nlohmann::json j = nlohmann::json::parse(readFile(path("grate.gltf")));
+        j["scenes"][0]["extras"]["medium"]["sigma_s"] = sigmaS;
+        std::ofstream(p) << j.dump();
+        return p;
+    }
+    nlohmann::json sidecar(const std::string& name) { return nlohmann::json::parse(readFile(path(name))); }
+};
+
+// Typing a prefix, Tab to complete it, Enter to open: the file's scene, named by the file.
+TEST_F(GuiSceneFile, OpenCompletesThePathAndLoadsTheFile) {
+    const fs::path file = sceneFile("my_hall.gltf", 0.3);
+    const std::string prefix = path("my_h").string();
+    const fs::path script = writeText("open.txt", "frames 2\nclick \"open glTF##path\"\ntype " + prefix +
+                                                      "\nkey Tab\nframes 1\nkey Enter\nframes 3\n");
+    const RunResult r = run("gui --scene colonnade --technique raymarch --size 32x24 --set samples=16 --script " +
+                            script.string() + " --screenshot " + path("opened.png").string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const nlohmann::json j = sidecar("opened.json");
+    EXPECT_EQ(j.at("scene_source"), file.string());
+    EXPECT_DOUBLE_EQ(j.at("medium").at("sigma_s").get<double>(), 0.3);
+    EXPECT_EQ(j.at("scene_title"), "my_hall.gltf (glTF scene grate)") << "named by the file, not only its glTF scene";
+}
+
+// A dropped scene file opens; a dropped file of another kind is a one-line error and the scene stays.
+TEST_F(GuiSceneFile, ADroppedSceneFileOpensAndAnythingElseIsRefused) {
+    const fs::path file = sceneFile("dropped.gltf", 0.2);
+    const fs::path text = writeText("notes.txt", "not a scene");
+    const fs::path script = writeText("drop.txt", "frames 2\ndrop " + text.string() + "\nframes 1\nscreenshot " +
+                                                      path("refused.png").string() + "\ndrop " + file.string() +
+                                                      "\nframes 3\n");
+    const RunResult r = run("gui --scene colonnade --technique raymarch --size 32x24 --set samples=16 --script " +
+                            script.string() + " --screenshot " + path("dropped.png").string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const nlohmann::json refused = sidecar("refused.json");
+    EXPECT_EQ(refused.at("scene"), "colonnade");
+    EXPECT_NE(refused.at("error").get<std::string>().find("not a .gltf or .glb file"), std::string::npos) << refused.at("error");
+    EXPECT_EQ(sidecar("dropped.json").at("scene_source"), file.string());
+}
+
+// The file changes on disk while the window shows it: the window reloads it and keeps its camera.
+TEST_F(GuiSceneFile, AFileChangedOnDiskIsReloadedKeepingTheCamera) {
+    const fs::path file = sceneFile("live.gltf", 0.1);
+    const fs::path script = writeText("live.txt", "frames 2\nkey R\nwheel final 2\nframes 2\nscreenshot " +
+                                                      path("before.png").string() + "\nframes 400\n");
+    // Edit the file once the window has shown it (an editor saving it).
+    std::thread editor([&] {
+        for (int i = 0; i < 600 && !fs::exists(path("before.json")); ++i)
+            std::this_thread::sleep_for(std::chrono::milliseconds(50));
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+        sceneFile("live.gltf", 0.4);
+    });
+    const RunResult r = run("gui --scene " + file.string() + " --technique raymarch --size 32x24 --set samples=16 --script " +
+                            script.string() + " --screenshot " + path("after.png").string());
+    editor.join();
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const nlohmann::json before = sidecar("before.json"), after = sidecar("after.json");
+    EXPECT_DOUBLE_EQ(before.at("medium").at("sigma_s").get<double>(), 0.1);
+    EXPECT_DOUBLE_EQ(after.at("medium").at("sigma_s").get<double>(), 0.4) << "the edit was not reloaded";
+    EXPECT_EQ(after.at("camera"), before.at("camera")) << "the reload must keep the user's camera";
+    EXPECT_NE(after.at("notice").get<std::string>().find("reloaded live.gltf"), std::string::npos) << after.at("notice");
+}
+
+}  // namespace
+}  // namespace viz::testing
