@@ -456,6 +456,10 @@ private:
     void openFileWidgets();
     // The scene as the window names it: a file's name (and its glTF scene's, when that differs).
     std::string sceneTitle() const;
+    // The light the panel and the gizmo edit (the scene's first unless another is picked in the panel).
+    int selectedLightIndex() const { return std::clamp(mLight, 0, std::max(0, int(mScene.lights.size()) - 1)); }
+    viz::scene::Light& selectedLight() { return mScene.lights[std::size_t(selectedLightIndex())]; }
+    const viz::scene::Light& selectedLight() const { return mScene.lights[std::size_t(selectedLightIndex())]; }
 
     // Where the light points and where it is: azimuth and elevation of the direction for spot and
     // directional lights, position for point and spot lights (an area light's rectangle is scene
@@ -550,6 +554,7 @@ private:
     Rect mTimelineRect;
     bool mDragTimeline = false;
     std::optional<std::string> mPendingScene;  // picked in the panel, loaded by loadPendingScene
+    int mLight = 0;                            // selectedLightIndex()
     SceneFileWatch mSceneWatch;                // the scene file, when the scene is one
     std::string mOpenPath;                     // File > Open's text field
     bool mTextTab = false, mTextEnter = false;  // Tab / Enter pressed in a text field this frame

@@ -168,6 +168,7 @@ void GuiApp::writeScreenshot(const std::string& path) {
                                     {"scene_source", mOptions.scene},
                                     {"scene_title", sceneTitle()},
                                     {"error", mError},
+                                    {"selected_light", selectedLightIndex()},
                                     {"technique", technique().id()},
                                     {"frames", mFramesDrawn},
                                     {"medium", {{"sigma_s", mScene.medium.sigma_s}, {"sigma_a", mScene.medium.sigma_a},
@@ -195,7 +196,7 @@ void GuiApp::writeScreenshot(const std::string& path) {
     for (const ViewCellRect& c : mCells) {
         const auto gizmo = gizmoFor(mViews.at(c.view));
         if (!gizmo) continue;
-        const GizmoHandles h = gizmo->handles(mScene.lights[0]);
+        const GizmoHandles h = gizmo->handles(selectedLight());
         const auto point = [](const std::optional<glm::dvec2>& p) {
             return p ? nlohmann::json::array({p->x, p->y}) : nlohmann::json(nullptr);
         };

@@ -119,6 +119,17 @@ inline std::string skippedLine(const viz::Plan& plan) {
     return line.empty() ? "skipped: none" : line;
 }
 
+// A light's kind as the panel names it.
+inline const char* lightTypeName(viz::scene::LightType type) {
+    switch (type) {
+        case viz::scene::LightType::Point: return "point";
+        case viz::scene::LightType::Spot: return "spot";
+        case viz::scene::LightType::Directional: return "directional";
+        case viz::scene::LightType::Area: return "area";
+    }
+    return "light";
+}
+
 // The orbit target's distance from the scene camera (scene/orbit_target.h).
 using viz::scene::orbitDistance;
 

@@ -4,7 +4,7 @@
 namespace airlight {
 
 std::optional<LightGizmo> GuiApp::gizmoFor(const ViewState& v) const {
-    if (!mShowGizmo || !mHaveOutput || mScene.lights.empty() || !LightGizmo::hasHandles(mScene.lights[0])) return {};
+    if (!mShowGizmo || !mHaveOutput || mScene.lights.empty() || !LightGizmo::hasHandles(selectedLight())) return {};
     if ((v.content != "final" && v.content != "airlight") || !isScreenSpace(v)) return {};
     return LightGizmo(mController.camera(), v.pane.size, mGizmoArm, mController.target());
 }
@@ -31,7 +31,7 @@ std::optional<GizmoDrag> GuiApp::gizmoHandleAt(glm::vec2 p) const {
         const ViewState& v = mViews.at(c.view);
         const auto gizmo = gizmoFor(v);
         if (!gizmo || !v.image.contains(p)) continue;
-        const GizmoHandles h = gizmo->handles(mScene.lights[0]);
+        const GizmoHandles h = gizmo->handles(selectedLight());
         bool inside = true;
         const glm::dvec2 cursor = windowToFrame(v, p), size(v.pane.size);
         if (h.tip && glm::length(handlePoint(v, *h.tip, inside) - p) <= grab)
@@ -47,7 +47,7 @@ void GuiApp::dragGizmo(glm::vec2 p) {
     const ViewState& v = mViews.at(mGizmoDrag->view);
     const auto gizmo = gizmoFor(v);
     if (!gizmo) return;
-    viz::scene::Light& light = mScene.lights[0];
+    viz::scene::Light& light = selectedLight();
     const glm::dvec2 px = windowToFrame(v, p) + mGizmoDrag->offset * glm::dvec2(v.pane.size);
     if (mGizmoDrag->direction ? gizmo->dragDirection(light, px) : gizmo->dragPosition(light, px)) sceneEdited();
 }
@@ -55,7 +55,7 @@ void GuiApp::dragGizmo(glm::vec2 p) {
 void GuiApp::drawGizmo(DrawList& dl, int id, const ViewState& v) {
     const auto gizmo = gizmoFor(v);
     if (!gizmo) return;
-    const GizmoHandles h = gizmo->handles(mScene.lights[0]);
+    const GizmoHandles h = gizmo->handles(selectedLight());
     const float r = 5.0f * mScale, w = 1.5f * mScale;
     const glm::vec4 shadow{0.0f, 0.0f, 0.0f, 0.8f}, yellow{1.0f, 0.9f, 0.25f, 1.0f};
     dl.pushClip(v.image);
@@ -84,7 +84,7 @@ void GuiApp::drawGizmo(DrawList& dl, int id, const ViewState& v) {
         // Off the view: a hollow square at the edge nearest the light.
         dl.rect({c - r, c + r}, lit(false));
         if (!inside) dl.rect({c - r + 2.0f * mScale, c + r - 2.0f * mScale}, shadow);
-        const std::string name = (mScene.lights[0].name.empty() ? std::string("light") : mScene.lights[0].name) +
+        const std::string name = (selectedLight().name.empty() ? std::string("light") : selectedLight().name) +
                                  (inside ? "" : " (off view)");
         const float tx = c.x + r + 4.0f * mScale + mFont->measure(name) < v.image.max.x
                              ? c.x + r + 4.0f * mScale

@@ -20,11 +20,23 @@ void GuiApp::drawParameters(glm::ivec2 fb) {
             if (mUi->sliderFloat("g (Henyey-Greenstein)", g, -0.99f, 0.99f)) mScene.medium.g = g, sceneChanged = true;
             mUi->tooltip("phase function asymmetry: > 0 scatters forward, < 0 back");
         }
-        if (!mScene.lights.empty() && mUi->collapsingHeader("Light: " + mScene.lights[0].name, true)) {
+        if (mScene.lights.size() > 1) {
+            // Every light is editable: the panel and the gizmo work on the one picked here.
+            std::vector<std::string> names;
+            for (std::size_t i = 0; i < mScene.lights.size(); ++i)
+                names.push_back(std::to_string(i + 1) + ": " + (mScene.lights[i].name.empty() ? "light" : mScene.lights[i].name) +
+                                " (" + lightTypeName(mScene.lights[i].type) + ")");
+            int picked = selectedLightIndex();
+            if (mUi->combo("light", picked, names)) {
+                mLight = picked;
+                mLightIntensityOff = 0.0;
+            }
+        }
+        if (!mScene.lights.empty() && mUi->collapsingHeader("Light: " + selectedLight().name, true)) {
             // The slider's range is declared, never derived from the light (a light of intensity 0, or
             // one from a millimetre model, once gave an empty or inverted range): a log scale over the
             // intensities scenes use, and "on" for the light switched off (0).
-            double& value = mScene.lights[0].intensity;
+            double& value = selectedLight().intensity;
             bool on = value > 0.0;
             if (mUi->checkbox("on", on)) {
                 if (on) value = mLightIntensityOff > 0.0 ? mLightIntensityOff : 1.0;
@@ -41,7 +53,7 @@ void GuiApp::drawParameters(glm::ivec2 fb) {
         }
         // Folded by default: the technique's parameters stay in view on small windows.
         if (!mScene.lights.empty() && mUi->collapsingHeader("Light placement", false)) {
-            sceneChanged = lightPlacementWidgets(mScene.lights[0]) || sceneChanged;
+            sceneChanged = lightPlacementWidgets(selectedLight()) || sceneChanged;
         }
         if (mUi->collapsingHeader(technique().id() + " parameters", true)) parameterWidgets();
         mUi->endPanel();

@@ -96,6 +96,7 @@ void GuiApp::loadLessonScene(const std::string& name) {
     mScene = std::move(scene);
     mOptions.scene = name;
     mSceneWatch.watch(name);
+    mLight = 0;
     mController = CameraController(mScene.camera, orbitDistance(mScene));
     mGizmoArm = kGizmoArm * mController.targetDistance();
     mWorker->setScene(mScene);

@@ -82,5 +82,29 @@ TEST_F(GuiSceneFile, AFileChangedOnDiskIsReloadedKeepingTheCamera) {
     EXPECT_NE(after.at("notice").get<std::string>().find("reloaded live.gltf"), std::string::npos) << after.at("notice");
 }
 
+// Every light is editable: with a second light picked in the panel, the gizmo moves that light and leaves
+// the first where it was.
+TEST_F(GuiSceneFile, TheGizmoMovesTheLightPickedInThePanel) {
+    sceneFile("two_lights.gltf", 0.12);
+    nlohmann::json j = nlohmann::json::parse(readFile(path("two_lights.gltf")));
+    j["extensions"]["KHR_lights_punctual"]["lights"].push_back(
+        {{"name", "lamp"}, {"type", "point"}, {"intensity", 50.0}, {"color", {1.0, 1.0, 1.0}}});
+    j["nodes"].push_back({{"name", "lamp"}, {"translation", {1.5, 3.0, 1.0}},
+                          {"extensions", {{"KHR_lights_punctual", {{"light", 1}}}}}});
+    j["scenes"][0]["nodes"].push_back(j["nodes"].size() - 1);
+    std::ofstream(path("two_lights.gltf")) << j.dump();
+    const fs::path script = writeText("pick.txt", "frames 2\nscreenshot " + path("before.png").string() +
+                                                      "\nclick light\nframes 1\nclick \"light/2: lamp (point)\"\nframes 2\n"
+                                                      "drag gizmo:position 0.5 0.5 0.5 0.5 cell:0\nframes 3\n");
+    const RunResult r = run("gui --scene " + path("two_lights.gltf").string() + " --technique raymarch --size 64x48 "
+                            "--set samples=16 --script " + script.string() + " --screenshot " + path("after.png").string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const nlohmann::json before = sidecar("before.json"), after = sidecar("after.json");
+    ASSERT_EQ(after.at("lights").size(), 2u);
+    EXPECT_EQ(after.at("selected_light"), 1);
+    EXPECT_EQ(after.at("lights")[0].at("position"), before.at("lights")[0].at("position")) << "the spot stays";
+    EXPECT_NE(after.at("lights")[1].at("position"), before.at("lights")[1].at("position")) << "the lamp moved";
+}
+
 }  // namespace
 }  // namespace viz::testing
