@@ -64,6 +64,7 @@
 #include "ui/text_renderer.h"
 
 #include "gui.h"
+#include "app_state.h"
 #include "input_table.h"
 #include "scene_file.h"
 #include "window_common.h"
@@ -97,6 +98,9 @@ public:
 private:
     // ---- the session file ----
 
+    // The window's state as one value (app_state.h); the session, the lesson state and the sidecar's
+    // state part are derived from it.
+    AppState appState() const;
     SessionState currentSession() const;
 
     void saveSessionNow();

@@ -165,15 +165,9 @@ void GuiApp::writeScreenshot(const std::string& path) {
     nlohmann::json sidecar = {{"window", {fb.x, fb.y}},
                                     {"scale", mScale},
                                     {"scene", mScene.name},
-                                    {"scene_source", mOptions.scene},
                                     {"scene_title", sceneTitle()},
                                     {"error", mError},
-                                    {"selected_light", selectedLightIndex()},
-                                    {"technique", technique().id()},
                                     {"frames", mFramesDrawn},
-                                    {"medium", {{"sigma_s", mScene.medium.sigma_s}, {"sigma_a", mScene.medium.sigma_a},
-                                                {"g", mScene.medium.g}}},
-                                    {"settings", mSettings},
                                     {"stage", technique().stages()[std::size_t(stageShown())].id},
                                     {"last_stage_run", mHaveOutput ? mOutput.lastStageRun : -1},
                                     {"first_stage_run", mHaveOutput ? mOutput.firstStageRun : -1},
@@ -182,6 +176,7 @@ void GuiApp::writeScreenshot(const std::string& path) {
                                     {"stopped_early", stoppedEarly()},
                                     {"notice", mNotice},
                                     {"views", views}};
+    sidecar.update(sidecarStateOf(appState()));  // the app state: one function, as the session file
     {
         nlohmann::json lights = nlohmann::json::array();
         for (const auto& l : mScene.lights)
@@ -213,12 +208,6 @@ void GuiApp::writeScreenshot(const std::string& path) {
         break;
     }
     sidecar["animation"] = {{"playing", mPlaying}, {"seconds", mPlayClock}, {"light_turn", mPlayTurn}};
-    {
-        const viz::scene::Camera& c = mController.camera();
-        sidecar["camera"] = {{"mode", mController.mode() == CameraController::Mode::Fly ? "fly" : "orbit"},
-                             {"position", {c.position.x, c.position.y, c.position.z}},
-                             {"forward", {c.forward.x, c.forward.y, c.forward.z}}};
-    }
     sidecar["view_grid"] = {{"layout", mLayout.toText()}, {"focused", mFocused},
                             {"maximised", mLayout.maximised()},
                             {"cpu_ms_last_frame", mGridMilliseconds},

@@ -4,47 +4,42 @@
 
 namespace airlight {
 
-SessionState GuiApp::currentSession() const {
-    SessionState s = mSession;
-    s.scene = mOptions.scene;
-    s.technique = mIds[std::size_t(mCurrent)];
-    s.width = mOptions.width;
-    s.height = mOptions.height;
-    s.camera = mController.camera();
-    s.orbitTarget = mController.target();
-    s.medium = mScene.medium;
-    s.lights = lightPlacements(mScene);
-    // Only what differs from the technique's defaults is kept, per technique.
-    const auto defaults = viz::completeSettings(technique(), {});
-    viz::Settings changed;
-    for (const auto& [name, value] : mSettings)
-        if (!defaults.count(name) || defaults.at(name) != value) changed[name] = value;
-    s.settings[s.technique] = changed;
-    // The first view in reading order that is not the final frame, for files read by older builds.
-    s.view = "airlight";
-    for (int id : mLayout.views())
-        if (mViews.at(id).content != "final") {
-            s.view = mViews.at(id).content;
-            s.viewZoom = mViews.at(id).transform.zoom;
-            s.viewCenter = mViews.at(id).transform.center;
-            break;
-        }
-    s.layout = mLayout.toText();
-    s.focusedView = mFocused;
-    s.maximisedView = mLayout.maximised();
-    s.gridViews.clear();
+AppState GuiApp::appState() const {
+    AppState a;
+    a.scene = mOptions.scene;
+    a.technique = mIds[std::size_t(mCurrent)];
+    a.size = {mOptions.width, mOptions.height};
+    a.settings = mSettings;
+    a.defaults = viz::completeSettings(technique(), {});
+    a.cursor = mCursor;
+    a.stageShown = stageShown();
+    a.steppedSettings = mSettings;
+    if (mCursor.substep > 0) (void)viz::setSubstep(technique(), a.stageShown, a.steppedSettings, mCursor.substep);
+    a.camera = mController.camera();
+    a.orbitTarget = mController.target();
+    a.flyCamera = mController.mode() == CameraController::Mode::Fly;
+    a.medium = mScene.medium;
+    a.lights = mScene.lights;
+    a.selectedLight = selectedLightIndex();
+    a.exposure = mExposure;
+    a.exposureSet = mExposureSet;
+    a.layout = mLayout.toText();
+    a.focusedView = mFocused;
+    a.maximisedView = mLayout.maximised();
     for (int id : mLayout.views()) {
         const ViewState& v = mViews.at(id);
-        const DisplaySettings& d = v.display;
-        s.gridViews.push_back({id, v.content, v.layer, v.transform.zoom, v.transform.center, int(d.channel),
-                               int(d.range), int(d.colourMap), int(d.difference), d.manualMin, d.manualMax,
-                               d.markNegative, d.logScale, d.stripOpen, d.against});
+        a.views.push_back({id, v.content, v.layer, v.transform.zoom, v.transform.center, v.display});
     }
-    s.exposure = mExposure;
-    s.exposureSet = mExposureSet;
-    s.lesson.clear();
-    if (mLesson) mLesson->saveTo(s);
-    return s;
+    a.inspected = mPendingInspect;
+    if (mProbe) a.inspected = glm::ivec2(mProbe->x, mProbe->y);
+    return a;
+}
+
+SessionState GuiApp::currentSession() const {
+    SessionState base = mSession;
+    base.lesson.clear();
+    if (mLesson) mLesson->saveTo(base);
+    return sessionOf(appState(), std::move(base));
 }
 
 void GuiApp::saveSessionNow() {
@@ -107,24 +102,7 @@ void GuiApp::loadLessonScene(const std::string& name) {
     mDirty = true;
 }
 
-LessonWindowState GuiApp::lessonWindowState() const {
-    LessonWindowState s;
-    s.scene = mOptions.scene;
-    s.technique = mIds[std::size_t(mCurrent)];
-    s.size = {mOptions.width, mOptions.height};
-    s.settings = mSettings;
-    s.stage = stageShown();
-    // The lesson speaks in settings: the cursor's sub-step is its stage's parameter there.
-    if (mCursor.substep > 0) (void)viz::setSubstep(technique(), s.stage, s.settings, mCursor.substep);
-    s.view = mViews.count(mFocused) ? mViews.at(mFocused).content : std::string("airlight");
-    s.inspect = mPendingInspect;
-    if (mProbe) s.inspect = glm::ivec2(mProbe->x, mProbe->y);
-    s.camera = mController.camera();
-    s.orbitTarget = mController.target();
-    s.medium = mScene.medium;
-    s.lights = mScene.lights;
-    return s;
-}
+LessonWindowState GuiApp::lessonWindowState() const { return lessonStateOf(appState()); }
 
 void GuiApp::applyLessonWindowState(const LessonWindowState& s) {
     bool lighting = s.medium.sigma_s != mScene.medium.sigma_s || s.medium.sigma_a != mScene.medium.sigma_a ||

@@ -98,7 +98,7 @@ TEST_P(WindowFuzz, RandomActionsNeitherAbortNorRaiseGlErrorsNorPutNaNInTheState)
     findBadNumbers(nlohmann::json::parse(readFile(state)), "session", {}, bad);
     // The sidecar's null entries that mean "none": no cursor over a view, no linked pixel, no gizmo, a gizmo
     // handle that does not apply (a directional light has no position) or is behind the camera.
-    findBadNumbers(nlohmann::json::parse(readFile(path("end.json"))), "sidecar", {"cursor", "linked_pixel", "gizmo", "position", "tip", "root", "position_grab", "tip_grab"}, bad);
+    findBadNumbers(nlohmann::json::parse(readFile(path("end.json"))), "sidecar", {"cursor", "linked_pixel", "gizmo", "position", "tip", "root", "position_grab", "tip_grab", "inspected"}, bad);
     for (const std::string& b : bad) ADD_FAILURE() << scene << " (seed " << seed << "): " << b;
     if (HasFailure()) {  // keep the script to replay: airlight gui --scene S --size 32x24 --script FILE
         const fs::path kept = fs::current_path() / ("window_fuzz_" + std::to_string(seed) + ".txt");
