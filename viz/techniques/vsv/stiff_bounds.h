@@ -26,8 +26,8 @@ inline std::optional<StiffBound> stiffBound(const std::string& caseClass) {
         {"geometry", {0.05, "the grid resamples the shared shadow map: slivers it drops, vsv drops too"}},
         {"depth-range", {0.025, "the voxelizer applies the shared lookup's bias, so 500-unit texels do not "
                                 "shadow their own receivers"}},
-        {"leak", {0.15, "the voxelizer reads the shared medium lookup, but a 128-cell grid places the grazing "
-                         "ceiling's shadow by whole cells: light shows under it (0.073; 0.036 at 256 cells)"}},
+        {"leak", {0.15, "the voxelizer reads the shared medium lookup, but the grid places the grazing ceiling's "
+                         "shadow by whole cells: light shows under it (0.0175 at the stiff settings' 512 cells)"}},
         {"phase", {0.045, "each lit run integrates the HG lobe analytically; g = 0.99 peaks near the solar "
                           "epipole, where the sun's light lines are coarsest"}},
     };
