@@ -154,7 +154,7 @@ std::vector<KeyBinding> makeTable() {
             "pause / replay the step's animation (when it has one)"))
         .repeats = true;
     add(row({}, C::None, C::None, X::Text, H::None, "any key", "",
-            "goes to the field (`Home` / `End`: its start / end); no shortcut fires"));
+            "goes to the field (`Home` / `End`: its start / end; `Enter` or `Esc` ends the editing); no shortcut fires"));
     return t;
 }
 

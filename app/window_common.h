@@ -148,6 +148,7 @@ inline std::optional<viz::ui::Key> uiKey(int key) {
         case GLFW_KEY_DELETE: return viz::ui::Key::Delete;
         case GLFW_KEY_HOME: return viz::ui::Key::Home;
         case GLFW_KEY_END: return viz::ui::Key::End;
+        case GLFW_KEY_ESCAPE: return viz::ui::Key::Escape;
         default: return std::nullopt;
     }
 }

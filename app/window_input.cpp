@@ -99,9 +99,9 @@ void GuiApp::onKey(int key, int action, int mods) {
     int offset = 0;
     const Command command = commandForKey(key, shift, repeat, state, &offset);
     if (command == Command::LessonKey && mLesson && mLesson->onKey(key, repeat)) return;
-    // Widgets take arrows, Enter, Space and the editing keys (Home / End only while a field is edited).
-    if (const auto k = uiKey(key);
-        k && (state.text || (command != Command::FirstSubstep && command != Command::LastSubstep))) {
+    // Widgets take arrows, Enter, Space and the editing keys where the key table binds nothing else (Home,
+    // End and Escape reach a widget only while a text field is edited: Escape ends the editing there).
+    if (const auto k = uiKey(key); k && (state.text || command == Command::None || command == Command::LessonKey)) {
         mUiInput.keys.push_back(*k);
         return;
     }

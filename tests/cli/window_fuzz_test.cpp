@@ -61,7 +61,8 @@ std::string fuzzScript(unsigned seed, int actions, const std::string& statsPath)
         else if (r < 0.93) out << "hold " << "WASDQE"[pick(6)] << " " << 1 + pick(3) << "\n";
         else out << "frames " << 1 + pick(3) << "\n";
     }
-    out << "stats " << statsPath << "\nkey F5\nframes 1\n";  // F5: the session file is the app state
+    // Enter ends any text editing (a focused field takes every key), then F5 saves the session: the app state.
+    out << "stats " << statsPath << "\nkey Enter\nframes 1\nkey F5\nframes 1\n";
     return out.str();
 }
 
@@ -94,6 +95,7 @@ TEST_P(WindowFuzz, RandomActionsNeitherAbortNorRaiseGlErrorsNorPutNaNInTheState)
     EXPECT_EQ(r.err.find("internal error"), std::string::npos) << r.err;
     const nlohmann::json line = nlohmann::json::parse(readFile(stats));
     EXPECT_EQ(line.at("gl_errors").get<long>(), 0) << scene;
+    ASSERT_TRUE(fs::exists(state)) << scene << " (seed " << seed << "): F5 wrote no session file";
     std::vector<std::string> bad;
     findBadNumbers(nlohmann::json::parse(readFile(state)), "session", {}, bad);
     // The sidecar's null entries that mean "none": no cursor over a view, no linked pixel, no gizmo, a gizmo
