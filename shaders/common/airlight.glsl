@@ -8,6 +8,8 @@
 #ifndef AIRLIGHT_GLSL
 #define AIRLIGHT_GLSL
 
+#include "common/constants.glsl"
+
 // ---- Precision-dependent knobs (Precision<float> in airlight.h) ---------------------------------------
 const int AIRLIGHT_NODES = 8;
 const float AIRLIGHT_NEAR_WIDTH = 2.0;
@@ -244,14 +246,13 @@ float naiveSunF(float u, float v) {
 // exp(-Tsv cos gamma) overflows for a light far behind the ray, and gamma = 0 (a ray through the light)
 // gives inf * 0. The phase function is isotropic whatever g is: the closed form has no HG version.
 float pointSegmentNaive(vec3 D, vec3 w, float x0, float x1, float sigma_s, float sigma_t, float I0) {
-    const float pi = 3.14159265358979323846;
     float Dsv = length(D);
     float gamma = acos(clamp(dot(D, w) / Dsv, -1.0, 1.0));
     float Tsv = sigma_t * Dsv;
-    float A0 = sigma_s * sigma_t * I0 * exp(-Tsv * cos(gamma)) / (2.0 * pi * Tsv * sin(gamma));
+    float A0 = sigma_s * sigma_t * I0 * exp(-Tsv * cos(gamma)) / (2.0 * kPi * Tsv * sin(gamma));
     float A1 = Tsv * sin(gamma);
-    float xi0 = 0.25 * pi + 0.5 * atan((sigma_t * x0 - Tsv * cos(gamma)) / A1);
-    float xi1 = 0.25 * pi + 0.5 * atan((sigma_t * x1 - Tsv * cos(gamma)) / A1);
+    float xi0 = 0.25 * kPi + 0.5 * atan((sigma_t * x0 - Tsv * cos(gamma)) / A1);
+    float xi1 = 0.25 * kPi + 0.5 * atan((sigma_t * x1 - Tsv * cos(gamma)) / A1);
     return A0 * (naiveSunF(A1, xi1) - naiveSunF(A1, xi0));
 }
 #endif  // AIRLIGHT_NAIVE_CLOSED_FORM

@@ -9,6 +9,7 @@
 // "beta < S" and shadowVisibility agree for every point of the ray.
 layout(local_size_x = 64, local_size_y = 1) in;
 
+#include "common/constants.glsl"
 #include "common/host_device.glsl"
 #include "common/lights.glsl"
 #include "common/shadow_map.glsl"
@@ -37,7 +38,7 @@ void main() {
         return;
     }
 #endif
-    if (uKind == kKindSpot && (gamma <= 0.0 || gamma >= 3.14159265)) {
+    if (uKind == kKindSpot && (gamma <= 0.0 || gamma >= kPi)) {
         S = kOutsideCone;
     } else {
         vec3 p = lightRayPoint(alpha, gamma);

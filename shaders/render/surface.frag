@@ -2,6 +2,7 @@
 // Surface pass: per pixel, the Euclidean eye distance and the unattenuated surface radiance of the
 // definition: L_e on the emitting side of an emitter + albedo / pi * sum_lights E * max(0, n.l) * V,
 // n the interpolated normal flipped toward the eye. Surfaces beyond uZfar count as misses (sky).
+#include "common/constants.glsl"
 #include "common/shadow_map.glsl"
 #include "render/materials.glsl"
 
@@ -16,8 +17,6 @@ flat in uint vMaterial;
 
 layout(location = 0) out float oDistance;
 layout(location = 1) out vec4 oRadiance;
-
-const float kPi = 3.14159265358979;
 
 void main() {
     float dist = length(vPosition);

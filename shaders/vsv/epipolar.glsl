@@ -4,7 +4,7 @@
 #ifndef VSV_EPIPOLAR_GLSL
 #define VSV_EPIPOLAR_GLSL
 
-const float kPi = 3.14159265358979;
+#include "common/constants.glsl"
 
 struct EpiSpace {
     vec3 b;          // baseline direction eye -> light
