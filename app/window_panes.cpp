@@ -156,13 +156,13 @@ viz::Settings GuiApp::otherSettings(const std::string& id) const {
 }
 
 std::string GuiApp::otherRunKey(const std::string& id) const {
-    std::string key = id + " " + std::to_string(mOutputSize.x) + "x" + std::to_string(mOutputSize.y);
-    const viz::scene::Camera c = mController.camera();
-    char buf[512];
-    std::snprintf(buf, sizeof buf, " %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g", c.position.x,
-                  c.position.y, c.position.z, c.forward.x, c.forward.y, c.forward.z, c.up.x, c.up.y, c.up.z, c.yfov);
-    key += buf;
-    key += " " + sceneOnlyKey();
+    // Everything the run depends on: the scene's content (geometry, materials, lights, medium) with the
+    // window's camera, the size and the settings. The geometry matters too: a scene file reloaded with a
+    // moved mesh but the same lights must not keep the old image.
+    viz::scene::Scene scene = mScene;
+    scene.camera = mController.camera();
+    std::string key = id + " " + std::to_string(mOutputSize.x) + "x" + std::to_string(mOutputSize.y) + " " +
+                      viz::scene::sceneContentHash(scene);
     for (const auto& [name, value] : otherSettings(id)) key += " " + name + "=" + format("%.17g", value);
     return key;
 }
@@ -193,9 +193,10 @@ void GuiApp::runDueGpuOthers() {
 }
 
 std::string GuiApp::sceneOnlyKey() const {
-    char buf[96];
-    std::snprintf(buf, sizeof buf, "%.17g %.17g %.17g", mScene.medium.sigma_s, mScene.medium.sigma_a,
-                  mScene.medium.g);
+    char buf[128];
+    std::snprintf(buf, sizeof buf, "%016llx %.17g %.17g %.17g",
+                  static_cast<unsigned long long>(viz::scene::geometryContentHash(mScene)), mScene.medium.sigma_s,
+                  mScene.medium.sigma_a, mScene.medium.g);
     std::string key = buf;
     for (const auto& l : mScene.lights)
         for (const double x : {l.position.x, l.position.y, l.position.z, l.direction.x, l.direction.y,

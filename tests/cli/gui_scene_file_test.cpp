@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cstdio>
 #include <thread>
 
 #include <nlohmann/json.hpp>
@@ -14,14 +15,18 @@ namespace {
 
 class GuiSceneFile : public WindowCliTest {
 protected:
-    // grate written as glTF, with its medium's scattering set to `sigmaS`.
-    fs::path sceneFile(const std::string& name, double sigmaS) {
+    // grate written as glTF, with its medium's scattering set to `sigmaS` (and its grate moved up by
+    // `lift` when not 0).
+    fs::path sceneFile(const std::string& name, double sigmaS, double lift = 0.0) {
         const fs::path p = path(name);
         if (!fs::exists(path("grate.gltf"))) {
             EXPECT_EQ(run("export-scene grate " + path("grate.gltf").string()).exitCode, 0);
         }
         nlohmann::json j = nlohmann::json::parse(readFile(path("grate.gltf")));
         j["scenes"][0]["extras"]["medium"]["sigma_s"] = sigmaS;
+        if (lift != 0.0)
+            for (auto& node : j["nodes"])
+                if (node.value("name", "") == "grate") node["translation"] = {0.0, lift, 0.0};
         std::ofstream(p) << j.dump();
         return p;
     }
@@ -104,6 +109,36 @@ TEST_F(GuiSceneFile, TheGizmoMovesTheLightPickedInThePanel) {
     EXPECT_EQ(after.at("selected_light"), 1);
     EXPECT_EQ(after.at("lights")[0].at("position"), before.at("lights")[0].at("position")) << "the spot stays";
     EXPECT_NE(after.at("lights")[1].at("position"), before.at("lights")[1].at("position")) << "the lamp moved";
+}
+
+// A difference view against the reference follows a reload that moved geometry only (same lights and
+// medium): its reference runs again, so raymarch and the reference still agree.
+TEST_F(GuiSceneFile, ADifferenceViewFollowsAReloadThatMovedGeometry) {
+    const fs::path file = sceneFile("moved.gltf", 0.12);
+    const fs::path script = writeText("diff.txt", "frames 2\nkey F\nframes 30\nscreenshot " + path("before.png").string() +
+                                                      "\nframes 400\n");
+    std::thread editor([&] {
+        for (int i = 0; i < 600 && !fs::exists(path("before.json")); ++i)
+            std::this_thread::sleep_for(std::chrono::milliseconds(50));
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+        sceneFile("moved.gltf", 0.12, 2.5);  // the grate up by 2.5: other shadows, the same lights
+    });
+    const RunResult r = run("gui --scene " + file.string() + " --technique raymarch --size 32x24 --set samples=64 --script " +
+                            script.string() + " --screenshot " + path("after.png").string());
+    editor.join();
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const auto differenceL2 = [](const nlohmann::json& j) {
+        for (const auto& v : j.at("views"))
+            if (v.contains("difference") && v.at("difference").contains("relative_l2"))
+                return v.at("difference").at("relative_l2").get<double>();
+        return -1.0;
+    };
+    const nlohmann::json before = sidecar("before.json"), after = sidecar("after.json");
+    ASSERT_NE(after.at("notice").get<std::string>().find("reloaded"), std::string::npos) << after.at("notice");
+    const double agreeBefore = differenceL2(before), agreeAfter = differenceL2(after);
+    std::printf("raymarch vs reference, relative L2 of L_air: %.4f before, %.4f after the reload\n", agreeBefore, agreeAfter);
+    EXPECT_GT(agreeBefore, 0.0);
+    EXPECT_LT(agreeAfter, 2.0 * agreeBefore + 0.01) << "the difference view kept the reference of the old geometry";
 }
 
 }  // namespace
