@@ -27,6 +27,11 @@ CommonOptions parseOptions(Args& args, const std::string& command, const std::st
         else if (flag == "--script") o.script = args.next(flag);
         else if (flag == "--export-dir") o.exportDir = args.next(flag);
         else if (flag == "--lesson") o.lesson = args.next(flag);
+        else if (flag == "--ui-scale") {
+            const double scale = parseNumber(args.next(flag), flag);
+            if (!(scale >= 0.5 && scale <= 4.0)) throw InputError("--ui-scale must be a number from 0.5 to 4");
+            o.uiScale = float(scale);
+        }
         else if (flag == "--size") {
             const glm::ivec2 size = parseSize(args.next(flag));
             o.request.width = size.x, o.request.height = size.y;

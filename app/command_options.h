@@ -25,6 +25,7 @@ struct CommonOptions {
     std::string script;  // gui only
     std::string exportDir;  // gui only
     std::string lesson;     // gui only
+    float uiScale = 1.0f;   // gui only
     bool sceneGiven = false, techniqueGiven = false, sizeGiven = false;
     std::string preset = "default";  // --preset: "paper" starts from the technique's paperSettings()
     bool framesGiven = false;

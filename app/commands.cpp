@@ -67,7 +67,7 @@ lights as KHR_lights_punctual, area lights as emissive meshes, the medium in sce
 
 constexpr const char* kGuiHelp = R"(usage: airlight gui [--scene S] [--technique T] [--size WxH] [--set name=value]...
                     [--state FILE] [--script FILE] [--export-dir DIR] [--screenshot OUT.png [--frames N]]
-                    [--lesson NAME]
+                    [--lesson NAME] [--ui-scale S]
 
 Opens the window: the final frame beside one intermediate. Its keys are listed below.
 
@@ -76,6 +76,8 @@ Opens the window: the final frame beside one intermediate. Its keys are listed b
                       Without --state the file is ~/.local/state/airlight/session.json.
 --script FILE         replay window actions (click NAME [FX FY], key NAME, hold NAME N, frames N,
                       screenshot PATH; one per line), then exit (after writing --screenshot if given)
+--ui-scale S          text and widgets S times larger (0.5 to 4; default 1, times the display's HiDPI
+                      scale) for a projector; Ctrl+= and Ctrl+- change it in the window, F11 is full screen
 --export-dir DIR      where E (the intermediate view as EXR and PNG) and F12 (the window) write
                       (default airlight-exports/)
 --lesson NAME         open the lesson player beside the views: lessons/NAME.md or a path to a .md file
@@ -257,7 +259,7 @@ int runGuiCommand(Args& args) {
         std::printf("\nKeys and mouse (where a key applies only in one context, it is named):\n%s", plainKeyTable().c_str());
         return 0;
     }
-    CommonOptions o = parseOptions(args, "gui", " --scene --technique --size --set --preset --screenshot --frames --state --script --export-dir --lesson --no-default-light ");
+    CommonOptions o = parseOptions(args, "gui", " --scene --technique --size --set --preset --screenshot --frames --state --script --export-dir --lesson --no-default-light --ui-scale ");
     if (!o.screenshot.empty() && viz::extensionOf(o.screenshot) != ".png")
         throw InputError("--screenshot '" + o.screenshot + "' must end in .png");
     if (o.frames < 1) throw InputError("--frames must be at least 1");
@@ -291,6 +293,7 @@ int runGuiCommand(Args& args) {
     g.techniqueGiven = o.techniqueGiven;
     g.sizeGiven = o.sizeGiven;
     if (!o.exportDir.empty()) g.exportDir = o.exportDir;
+    g.uiScale = o.uiScale;
     // An unknown lesson name fails here; a malformed lesson file opens and shows its error in the panel.
     if (!o.lesson.empty()) g.lesson = findLesson(o.lesson);
     return runGui(g);

@@ -23,7 +23,9 @@ GuiApp::GuiApp(const GuiOptions& options, viz::scene::Scene scene, viz::Window& 
     if (mNotice.empty()) mNotice = sceneNotesLine(mScene);
     float sx = 1.0f, sy = 1.0f;
     glfwGetWindowContentScale(mWindow.handle(), &sx, &sy);
-    mScale = std::max(1.0f, std::max(sx, sy));
+    mContentScale = std::max(1.0f, std::max(sx, sy));
+    mUiScale = std::clamp(options.uiScale, kMinUiScale, kMaxUiScale);
+    mScale = mContentScale * mUiScale;
     mFont = std::make_unique<viz::ui::FontAtlas>(
         viz::ui::FontAtlas::bake(viz::ui::FontAtlas::kDefaultFontPath, kFontSize * mScale));
     mTextRenderer = std::make_unique<viz::ui::TextRenderer>(*mFont);
@@ -261,6 +263,39 @@ void GuiApp::acceptCpuResult(CpuResult result) {
     mPass = result.pass;
     mPassCount = result.passCount;
     refreshPanes();
+}
+
+void GuiApp::setUiScale(float scale) {
+    scale = std::clamp(scale, kMinUiScale, kMaxUiScale);
+    if (scale == mUiScale) {
+        mNotice = "UI scale " + format("%.2f", double(mUiScale)) + " (the limit)";
+        return;
+    }
+    mUiScale = scale;
+    mScale = mContentScale * mUiScale;
+    // The glyphs are baked at the new size into the same atlas (the draw lists and widgets keep their
+    // reference to it); the text renderer uploads them again.
+    *mFont = viz::ui::FontAtlas::bake(viz::ui::FontAtlas::kDefaultFontPath, kFontSize * mScale);
+    mTextRenderer = std::make_unique<viz::ui::TextRenderer>(*mFont);
+    mNotice = "UI scale " + format("%.2f", double(mUiScale));
+}
+
+void GuiApp::toggleFullscreen() {
+    GLFWwindow* w = mWindow.handle();
+    if (GLFWmonitor* monitor = glfwGetWindowMonitor(w)) {
+        (void)monitor;
+        glfwSetWindowMonitor(w, nullptr, mWindowedRect.x, mWindowedRect.y, mWindowedRect.z, mWindowedRect.w, 0);
+        return;
+    }
+    GLFWmonitor* primary = glfwGetPrimaryMonitor();
+    const GLFWvidmode* mode = primary ? glfwGetVideoMode(primary) : nullptr;
+    if (!mode) {
+        mNotice = "full screen: no monitor found";
+        return;
+    }
+    glfwGetWindowPos(w, &mWindowedRect.x, &mWindowedRect.y);
+    glfwGetWindowSize(w, &mWindowedRect.z, &mWindowedRect.w);
+    glfwSetWindowMonitor(w, primary, 0, 0, mode->width, mode->height, mode->refreshRate);
 }
 
 void GuiApp::sceneEdited() {

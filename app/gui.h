@@ -36,6 +36,7 @@ struct GuiOptions {
     // A lesson's .md file: the lesson player's panel opens beside the views (lesson_player.h). With
     // sizeGiven, every step renders at width x height.
     std::string lesson;
+    float uiScale = 1.0f;  // --ui-scale: times the display's content scale (Ctrl+= / Ctrl+- change it)
     bool loadStateAtStart = false;
     bool sceneGiven = false, techniqueGiven = false, sizeGiven = false;
 };

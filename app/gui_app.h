@@ -452,6 +452,8 @@ private:
     void scenePicker();
     // A scene picked in the panel, loaded before the next frame is laid out (scenePicker).
     void loadPendingScene();
+    void setUiScale(float scale);
+    void toggleFullscreen();
     // File > Open, a drop, a script's `drop`: a scene file to load before the next frame (errors in the
     // status line; the window keeps its scene).
     void openSceneFile(const std::string& path);
@@ -502,7 +504,12 @@ private:
     std::unique_ptr<DrawList> mBackground;  // panels behind the images
     std::unique_ptr<ImageDisplay> mImageDisplay;
     std::unique_ptr<CpuWorker> mWorker;
-    float mScale = 1.0f;
+    float mScale = 1.0f;           // sizes' factor: the display's content scale times the UI scale
+    float mContentScale = 1.0f;    // from GLFW (HiDPI)
+    float mUiScale = 1.0f;         // --ui-scale, Ctrl+= / Ctrl+-
+    static constexpr float kMinUiScale = 0.5f, kMaxUiScale = 4.0f;
+    glm::ivec4 mWindowedRect{0, 0, 1280, 720};  // position and size before full screen (F11)
+    int mElidedTitles = 0;         // view titles shortened to fit in the last frame (sidecar)
 
     viz::FrameOutput mOutput;
     bool mHaveOutput = false;

@@ -98,6 +98,17 @@ std::vector<KeyBinding> makeTable() {
         b.repeats = true;
     }
     add(pointer(X::Fly, H::Frame, "middle drag", "middle drag pan", "pan the camera"));
+    {
+        KeyBinding& b = add(row({GLFW_KEY_EQUAL, GLFW_KEY_KP_ADD}, C::UiScaleUp, C::UiScaleUp, X::Any, H::None,
+                                "`Ctrl+=` / `Ctrl+-`", "", "UI scale up / down (x1.25 a step, 0.5 to 4; also --ui-scale)"));
+        b.backKeys = {GLFW_KEY_MINUS, GLFW_KEY_KP_SUBTRACT};
+        b.shifted = C::UiScaleDown;
+        b.sameWithShift = true;
+        b.ctrl = true;
+        b.repeats = true;
+    }
+    add(row({GLFW_KEY_F11}, C::ToggleFullscreen, C::None, X::Any, H::None, "`F11`", "",
+            "full screen on the primary monitor, and back"));
     add(row({GLFW_KEY_ESCAPE}, C::Quit, C::Quit, X::Any, H::Frame, "`Esc`", "Esc quit",
             "quit (the session is saved)"));
 
@@ -203,7 +214,9 @@ Command commandForKey(int key, bool shift, bool repeat, const KeyState& state, i
     Command command = Command::None;
     int index = 0;
     for (const KeyBinding& b : keyBindings()) {
-        if (!applies(b.context, state) || (best && precedence(b.context) >= precedence(best->context))) continue;
+        if (!applies(b.context, state) || b.ctrl != state.ctrl ||
+            (best && precedence(b.context) >= precedence(best->context)))
+            continue;
         const auto k = std::find(b.keys.begin(), b.keys.end(), key);
         const bool back = std::find(b.backKeys.begin(), b.backKeys.end(), key) != b.backKeys.end();
         if (k == b.keys.end() && !back) continue;

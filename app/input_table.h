@@ -20,6 +20,7 @@ enum class Command {
     ToggleDifference, ToggleGizmo, InspectPixel, ToggleComparison, PlayPause,
     ExportView, ExportWindow, SaveSession, LoadSession,
     ToggleCameraMode, ResetCamera, AutoExposure, ExposureUp, ExposureDown,
+    UiScaleUp, UiScaleDown, ToggleFullscreen,
     FlyMove,         // held W A S D Q E in fly mode: the frame loop reads them (documentation row)
     LessonKey,       // handed to the lesson player (which knows whether its step has an animation)
     Pointer,         // a mouse gesture: documentation row, handled by the pointer handlers
@@ -46,6 +47,7 @@ struct KeyBinding {
     Command shifted = Command::None;  // `keys` with Shift held (unless sameWithShift), and `backKeys`
     bool sameWithShift = false;       // Shift+key is `command` too
     bool repeats = false;           // a held key repeats the command
+    bool ctrl = false;              // only with Ctrl held (and bindings without it only without Ctrl)
     KeyContext context = KeyContext::Any;
     HelpLine line = HelpLine::None;
     std::string label;              // as the README shows the keys: "`S` / `Shift+S`", "drag a gap"
@@ -61,6 +63,7 @@ struct KeyState {
     bool fly = false;         // the camera is in fly mode
     bool lesson = false;      // a lesson is open
     bool text = false;        // a text field is being edited
+    bool ctrl = false;        // Ctrl is held
 };
 
 // The command for a key press, with the binding's context rules applied (a Fly binding wins in fly mode,

@@ -52,7 +52,7 @@ int scriptKeyCode(const std::string& name) {
         {"Left", GLFW_KEY_LEFT},   {"Right", GLFW_KEY_RIGHT}, {"Up", GLFW_KEY_UP},         {"Down", GLFW_KEY_DOWN},
         {"[", GLFW_KEY_LEFT_BRACKET}, {"]", GLFW_KEY_RIGHT_BRACKET}, {"PageUp", GLFW_KEY_PAGE_UP},
         {"PageDown", GLFW_KEY_PAGE_DOWN}, {",", GLFW_KEY_COMMA}, {".", GLFW_KEY_PERIOD}, {"Home", GLFW_KEY_HOME},
-        {"End", GLFW_KEY_END}};
+        {"End", GLFW_KEY_END}, {"=", GLFW_KEY_EQUAL}, {"-", GLFW_KEY_MINUS}};
     for (const auto& [n, code] : kNamed)
         if (name == n) return code;
     if (name.size() == 1 && std::isdigit(static_cast<unsigned char>(name[0]))) return GLFW_KEY_0 + (name[0] - '0');

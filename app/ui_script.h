@@ -11,7 +11,7 @@
 //                        the centre of a view or widget
 //   key NAME             press a key: Tab, Enter, Escape, Space, Left, Right, Up, Down, PageUp,
 //                        PageDown, Home, End, F1-F12, 0-9,
-//                        A-Z, [ and ], , and . (previous / next layer), optionally after Shift+
+//                        A-Z, [ and ], , and . (previous / next layer), = and -, optionally after Shift+
 //                        and/or Ctrl+ (Shift+S)
 //   hold NAME N          press a key and keep it down for N frames (fly mode's W A S D Q E), then
 //                        release it

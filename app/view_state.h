@@ -36,6 +36,7 @@ struct ViewState {
     // Difference mode: the figures against the other technique, and why there is no difference image.
     std::optional<viz::report::ErrorMetrics> error;
     std::string differenceNote;
+    bool titleElided = false, noteElided = false;  // shortened to fit the last frame (sidecar)
 
     // Where the last frame drew it (window pixels).
     viz::ui::Rect cell, title, image, strip;

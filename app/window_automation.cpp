@@ -164,6 +164,8 @@ void GuiApp::writeScreenshot(const std::string& path) {
     }
     nlohmann::json sidecar = {{"window", {fb.x, fb.y}},
                                     {"scale", mScale},
+                                    {"ui_scale", mUiScale},
+                                    {"titles_elided", mElidedTitles},
                                     {"scene", mScene.name},
                                     {"scene_title", sceneTitle()},
                                     {"error", mError},
@@ -272,6 +274,8 @@ nlohmann::json GuiApp::viewSidecar(int id, const ViewState& v) {
                                      {"colour_map", colourMapNames()[std::size_t(d.colourMap)]},
                                      {"mode", int(m.mode)}, {"mark_negative", m.markNegative},
                                      {"strip_open", d.stripOpen}}},
+                        {"title_elided", v.titleElided},
+                        {"note_elided", v.noteElided},
                         {"negative_pixels", v.counts.negative},
                         {"nan_pixels", v.counts.nan},
                         {"inf_pixels", v.counts.inf}};

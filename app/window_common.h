@@ -15,6 +15,7 @@
 #include "run_scheduler.h"
 #include "scene/orbit_target.h"
 #include "scene/scene.h"
+#include "ui/font.h"
 #include "ui/immediate.h"
 
 namespace airlight {
@@ -117,6 +118,25 @@ inline std::string skippedLine(const viz::Plan& plan) {
         line += (line.empty() ? "skipped: " : ";  ") + st.stage + (st.why.empty() ? "" : " (" + st.why + ")");
     }
     return line.empty() ? "skipped: none" : line;
+}
+
+// `text` shortened in the middle ("start ... end") to fit `width` pixels in `font`; unchanged when it fits.
+inline std::string elideMiddle(const viz::ui::FontAtlas& font, const std::string& text, float width) {
+    if (font.measure(text) <= width) return text;
+    const std::string dots = " ... ";
+    const auto boundary = [&](std::size_t i) {  // never inside a UTF-8 sequence
+        while (i > 0 && i < text.size() && (static_cast<unsigned char>(text[i]) & 0xc0) == 0x80) --i;
+        return i;
+    };
+    std::size_t lo = 0, hi = text.size();  // characters kept in all, found by bisection
+    while (lo < hi) {
+        const std::size_t keep = (lo + hi + 1) / 2;
+        const std::size_t head = boundary((keep + 1) / 2), tail = boundary(text.size() - keep / 2);
+        if (font.measure(text.substr(0, head) + dots + text.substr(tail)) <= width) lo = keep;
+        else hi = keep - 1;
+    }
+    if (lo == 0) return dots.substr(1, 3);
+    return text.substr(0, boundary((lo + 1) / 2)) + dots + text.substr(boundary(text.size() - lo / 2));
 }
 
 // A light's kind as the panel names it.

@@ -25,6 +25,7 @@ void GuiApp::draw() {
     mPaneDraws.clear();
     mViewRects.clear();
     mNamedRects.clear();
+    mElidedTitles = 0;
     mNamedRects["window"] = Rect{{0.0f, 0.0f}, glm::vec2(fb)};  // scripts: any point, by window fraction
     const float s = mScale;
     const float pad = kPad * s;

@@ -93,7 +93,8 @@ void GuiApp::onKey(int key, int action, int mods) {
     const bool repeat = action == GLFW_REPEAT, shift = (mods & GLFW_MOD_SHIFT) != 0;
     mUiInput.shift = shift;
     mUiInput.ctrl = (mods & GLFW_MOD_CONTROL) != 0;
-    const KeyState state{mController.mode() == CameraController::Mode::Fly, mLesson != nullptr, mUi->textFocused()};
+    const KeyState state{mController.mode() == CameraController::Mode::Fly, mLesson != nullptr, mUi->textFocused(),
+                         (mods & GLFW_MOD_CONTROL) != 0};
     if (state.text && key == GLFW_KEY_TAB) mTextTab = true;      // completes a path being typed
     if (state.text && (key == GLFW_KEY_ENTER || key == GLFW_KEY_KP_ENTER)) mTextEnter = true;
     int offset = 0;
@@ -159,10 +160,14 @@ void GuiApp::perform(Command command, int offset) {
             break;
         case Command::ExposureUp: mExposure += kExposureStep; break;
         case Command::ExposureDown: mExposure -= kExposureStep; break;
+        case Command::UiScaleUp: setUiScale(mUiScale * 1.25f); break;
+        case Command::UiScaleDown: setUiScale(mUiScale / 1.25f); break;
+        case Command::ToggleFullscreen: toggleFullscreen(); break;
     }
 }
 
 void GuiApp::onChar(unsigned codepoint) {
+    if (mUiInput.ctrl) return;  // Ctrl+= is the UI scale, not exposure
     if (!mUi->textFocused()) {
         perform(commandForChar(codepoint), 0);
         return;

@@ -181,12 +181,9 @@ void GuiApp::drawView(int id, ViewState& v) {
     const float toggleWidth = mFont->measure(toggle) + 16.0f * s;
     const Rect toggleRect{{v.title.max.x - toggleWidth, v.title.min.y + 1.0f * s},
                           {v.title.max.x - 2.0f * s, v.title.min.y + line + 2.0f * s}};
-    float x = dl.textClipped({v.title.min.x + 4.0f * s, v.title.min.y + 2.0f * s}, title, kAccent,
-                             toggleRect.min.x - 4.0f * s);
     // Not the complete algorithm: every view says where the run stopped, in the warning colour.
     const std::string why = mHaveOutput ? stoppedEarly() : std::string();
     const std::string early = why.empty() ? why : "   [" + why + "]";
-    if (!early.empty()) x = dl.textClipped({x, v.title.min.y + 2.0f * s}, early, kError, toggleRect.min.x - 4.0f * s);
     const SpecialCounts& n = v.counts;
     std::string counts;
     if (n.nan + n.inf + n.negative > 0) {
@@ -195,9 +192,25 @@ void GuiApp::drawView(int id, ViewState& v) {
         if (n.nan) counts += " " + std::to_string(n.nan) + " NaN";
         if (n.inf) counts += " " + std::to_string(n.inf) + " Inf";
         counts += " px";
-        dl.textClipped({x, v.title.min.y + 2.0f * s}, counts, kError, toggleRect.min.x - 4.0f * s);
     }
-    dl.textClipped({v.title.min.x + 4.0f * s, v.title.min.y + 2.0f * s + line}, note, kDim, v.title.max.x - 4.0f * s);
+    // Too long for the bar (a small view, a large UI scale): each part shortened in the middle, the
+    // warnings first kept whole, and the full text shown while the title is hovered.
+    const float left = v.title.min.x + 4.0f * s, width = toggleRect.min.x - 4.0f * s - left;
+    const float warnings = mFont->measure(early + counts);
+    const std::string shownTitle = elideMiddle(*mFont, title, std::max(0.35f * width, width - warnings));
+    const float rest = width - mFont->measure(shownTitle);
+    const std::string shownEarly = elideMiddle(*mFont, early, std::max(0.0f, rest - mFont->measure(counts)));
+    const std::string shownNote = elideMiddle(*mFont, note, v.title.max.x - 4.0f * s - left);
+    float x = dl.textClipped({left, v.title.min.y + 2.0f * s}, shownTitle, kAccent, toggleRect.min.x - 4.0f * s);
+    if (!shownEarly.empty()) x = dl.textClipped({x, v.title.min.y + 2.0f * s}, shownEarly, kError, toggleRect.min.x - 4.0f * s);
+    if (!counts.empty()) dl.textClipped({x, v.title.min.y + 2.0f * s}, counts, kError, toggleRect.min.x - 4.0f * s);
+    dl.textClipped({left, v.title.min.y + 2.0f * s + line}, shownNote, kDim, v.title.max.x - 4.0f * s);
+    v.titleElided = shownTitle != title || shownEarly != early;
+    v.noteElided = shownNote != note;
+    const bool elided = v.titleElided || v.noteElided;
+    if (elided && v.title.contains(mHover) && !toggleRect.contains(mHover))
+        mUi->tooltipNow({title + early + counts, note});
+    mElidedTitles += v.titleElided ? 1 : 0;
     listItem(toggleRect, toggle, v.display.stripOpen, [this, id] {
         ViewState& w = mViews.at(id);
         w.display.stripOpen = !w.display.stripOpen;

@@ -563,4 +563,16 @@ void Context::tooltip(std::string_view text) {
     mOverlay.text(at + pad, text, mStyle.text);
 }
 
+void Context::tooltipNow(const std::vector<std::string>& lines) {
+    if (lines.empty()) return;
+    const float pad = kPadding * mScale, line = mFont->lineHeight();
+    float width = 0.0f;
+    for (const std::string& l : lines) width = std::max(width, mFont->measure(l));
+    const glm::vec2 size{width + 2.0f * pad, float(lines.size()) * line + 2.0f * pad};
+    glm::vec2 at = mInput.mouse + glm::vec2(12.0f, 16.0f) * mScale;
+    at = glm::max(glm::min(at, mDisplay - size), glm::vec2(0.0f));
+    mOverlay.rect({at, at + size}, {0.05f, 0.05f, 0.06f, 0.95f});
+    for (std::size_t i = 0; i < lines.size(); ++i) mOverlay.text(at + pad + glm::vec2(0.0f, float(i) * line), lines[i], mStyle.text);
+}
+
 }  // namespace viz::ui

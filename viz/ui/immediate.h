@@ -88,6 +88,9 @@ public:
     bool splitter(std::string_view label, const Rect& area, bool verticalDivider, float& fraction);
     // Shown next to the mouse when the previous widget has been hovered for a moment (0.5 s).
     void tooltip(std::string_view text);
+    // Shown next to the mouse this frame, one row per line, over everything (a title elided to fit shows
+    // its full text while hovered).
+    void tooltipNow(const std::vector<std::string>& lines);
 
     // ---- keyboard ----
     // True when `key` was pressed this frame (with Ctrl if asked) and no text input holds the focus.

@@ -60,6 +60,10 @@ TEST(InputTable, RangesPairsAndTextFields) {
     EXPECT_EQ(commandForKey(GLFW_KEY_COMMA, false, false, orbit), Command::PrevLayer);
     EXPECT_EQ(commandForKey(GLFW_KEY_END, false, false, orbit), Command::LastSubstep);
     EXPECT_EQ(commandForKey(GLFW_KEY_F9, false, false, orbit), Command::LoadSession);
+    const KeyState ctrl{false, false, false, true};
+    EXPECT_EQ(commandForKey(GLFW_KEY_EQUAL, false, false, ctrl), Command::UiScaleUp);
+    EXPECT_EQ(commandForKey(GLFW_KEY_MINUS, false, false, ctrl), Command::UiScaleDown);
+    EXPECT_EQ(commandForKey(GLFW_KEY_S, false, false, ctrl), Command::None) << "Ctrl+S is not S";
     EXPECT_EQ(commandForChar('+'), Command::ExposureUp);
     EXPECT_EQ(commandForChar('-'), Command::ExposureDown);
     EXPECT_EQ(commandForChar(0x263a), Command::None);
@@ -77,8 +81,9 @@ TEST(InputTable, RangesPairsAndTextFields) {
 TEST(InputTable, NoKeyMeansTwoThingsAndEveryCommandHasAKey) {
     std::set<Command> reached;
     for (bool fly : {false, true})
-        for (bool lesson : {false, true}) {
-            const KeyState state{fly, lesson, false};
+        for (bool lesson : {false, true})
+            for (bool ctrl : {false, true}) {
+            const KeyState state{fly, lesson, false, ctrl};
             for (int key = GLFW_KEY_SPACE; key <= GLFW_KEY_LAST; ++key)
                 for (bool shift : {false, true}) {
                     std::map<int, int> claims;  // context rank -> rows claiming the key
@@ -88,12 +93,12 @@ TEST(InputTable, NoKeyMeansTwoThingsAndEveryCommandHasAKey) {
                         const bool applies = b.context == KeyContext::Any || (b.context == KeyContext::Fly && fly) ||
                                              (b.context == KeyContext::Orbit && !fly) ||
                                              (b.context == KeyContext::Lesson && lesson);
-                        if (mine && applies) ++claims[b.context == KeyContext::Any ? 2 : b.context == KeyContext::Lesson ? 0 : 1];
+                        if (mine && applies && b.ctrl == ctrl) ++claims[b.context == KeyContext::Any ? 2 : b.context == KeyContext::Lesson ? 0 : 1];
                     }
                     for (const auto& [rank, n] : claims) EXPECT_LE(n, 1) << "key " << key << " rank " << rank;
                     reached.insert(commandForKey(key, shift, false, state));
                 }
-        }
+            }
     for (unsigned c = 0; c < 128; ++c) reached.insert(commandForChar(c));
     for (const KeyBinding& b : keyBindings()) {
         if (b.command == Command::Pointer || b.command == Command::None) continue;
