@@ -75,9 +75,7 @@ class GuiApp : public LessonHost {
 public:
     GuiApp(const GuiOptions& options, viz::scene::Scene scene, viz::Window& window, SessionState session,
            std::string notice);
-
     ~GuiApp();
-
     int run();
 
     // ---- scripted actions (ui_script.h) ----
@@ -89,7 +87,6 @@ public:
     // A widget named by a script action is scrolled into view first, as a user would: the request is
     // served on the next frame and the new rectangle known the frame after. Returns true while waiting.
     bool revealScriptTarget(const ScriptAction& a);
-
     bool stepScript();
 
     // The back buffer as drawn (before the swap) to the PNG, and the views' rectangles beside it.
@@ -102,9 +99,7 @@ private:
     // state part are derived from it.
     AppState appState() const;
     SessionState currentSession() const;
-
     void saveSessionNow();
-
     void loadSessionNow();
 
     // The session's medium, technique (with its settings), camera, view and exposure over the scene.
@@ -113,16 +108,12 @@ private:
     // ---- the lesson player's hooks (lesson_player.h): the window's own state changes ----
 
     void loadLessonScene(const std::string& name) override;
-
     LessonWindowState lessonWindowState() const override;
-
     void applyLessonWindowState(const LessonWindowState& s) override;
-
     void showLessonView(const std::string& id) override;
 
     // A lesson's view goes to the focused view of the grid (the right-hand one by default).
     void showInFocusedView(const std::string& id);
-
     void setLessonSetting(const std::string& name, double value) override;
 
     // ---- animation (P): the first light circles its aim point, and a technique with a `time`
@@ -132,9 +123,7 @@ private:
     static constexpr double kLightTurnSeconds = 8.0;
 
     void togglePlaying();
-
     void advanceAnimation(double dt);
-
     void setLessonLight(const viz::scene::Light& light) override;
 
     // Camera, view and exposure of the session (the scene, medium and technique are applied before).
@@ -147,7 +136,6 @@ private:
 
     // The grid's techniques with the window's instances and settings (this thread holds the GL context).
     void runComparisonTechniques();
-
     void drawComparison(DrawList& dl, const Rect& area);
 
     // ---- export ----
@@ -174,7 +162,6 @@ private:
     // Whether the frame is the complete algorithm: the last stage, whole, and no sub-step parameter a
     // lesson (or --set) left cutting an earlier stage short.
     std::string stoppedEarly() const;
-
     void moveCursor(StepCursor c);
 
     // S / Shift+S: the next / previous stage, wrapping (the last stage is the complete frame). A stage
@@ -193,9 +180,7 @@ private:
     // The exact ground truth along the ray of the final image's pixel under the cursor, beside the current
     // technique's value for that pixel. The cursor elsewhere clears it.
     void inspectPixelUnderCursor();
-
     void inspectPixel(int x, int y);
-
     void drawInspector(DrawList& dl, const Rect& area);
 
     // A cross on the inspected pixel in a screen-space view.
@@ -208,9 +193,7 @@ private:
     const viz::Technique& technique() const { return mRunners.at(mIds[std::size_t(mCurrent)])->technique(); }
 
     void selectTechnique(int index);
-
     void render();
-
     void acceptCpuResult(CpuResult result);
 
     // ---- the view grid: what each view shows ----
@@ -227,9 +210,7 @@ private:
     int contentCount() const;
     std::string contentId(int index) const;
     std::string contentLabel(int index) const;
-
     ViewState& focusedView();
-
     void clearPanes();
 
     // The default grid: the final frame on the left, `content` on the right (focused).
@@ -274,21 +255,16 @@ private:
 
     // The difference worker's full-size pass: the other side of the difference views it was asked for.
     void pollOtherWorker();
-
     bool otherPending() const;
-
     void refreshView(ViewState& v);
 
     // The technique's view of the inspected pixel in the last run, read back once per run and pixel.
     const PixelInspection& probeInspection();
-
     void refreshPanes();
 
     // [ ] and the views list: what the focused view shows.
     void stepView(int delta);
-
     void selectView(int index);
-
     void stepLayer(int delta);
 
     // H / J: a new view beside / below the focused one, showing the content after the focused one's.
@@ -310,33 +286,23 @@ private:
     // Keys are dispatched from one table (input_table.h), which also writes the help lines and the
     // README's key table.
     void onKey(int key, int action, int mods);
-
     void perform(Command command, int offset);
-
     void onChar(unsigned codepoint);
     void onDrop(const std::vector<std::string>& paths);
-
     void onMouseButton(int button, int action);
-
     void onMouseButtonAt(int button, int action, glm::vec2 p);
-
     void onCursor(double x, double y);
 
     // Orbit views (render::MeshView: polyvol's light volume, slices' planes) turn with a left drag:
     // their mesh_yaw / mesh_pitch parameters, 0.4 degrees per pixel.
     bool isOrbitView(const ViewState& v) const;
-
     void turnOrbitView(glm::vec2 d);
-
     void onCursorPixels(glm::vec2 p);
-
     void onScroll(double dy);
 
     // A key held down, by the user or by a script's `hold`.
     bool keyDown(int key) const;
-
     bool anyFlyKeyDown() const;
-
     void fly(double dt);
 
     // ---- drawing ----
@@ -377,7 +343,6 @@ private:
     // The handle under `p` (the direction handle first: it is the smaller target), within 8 pixels.
     // Drags are relative: a handle off the view is grabbed at the view's edge and follows the cursor.
     std::optional<GizmoDrag> gizmoHandleAt(glm::vec2 p) const;
-
     void dragGizmo(glm::vec2 p);
 
     // The first light's handles: a square at its position (point, spot), a diamond at the end of its
@@ -396,14 +361,11 @@ private:
 
     // The window's cursor shows a divider can be dragged.
     void setResizeCursor(std::optional<SplitAxis> axis);
-
     void drawViewGrid(const Rect& area);
 
     // "name  [i/n]  id  layer k/n  |  3 negative px" and the note with the range or the error figures.
     std::pair<std::string, std::string> viewTitle(const ViewState& v) const;
-
     void drawView(int id, ViewState& v);
-
     void drawPlots(const ViewState& v);
 
     // The technique's marks for the linked pixel, asked once per pixel and run (a GPU technique may
@@ -430,7 +392,6 @@ private:
 
     // What the sidecar says of a view (tests assert on it).
     nlohmann::json viewSidecar(int id, const ViewState& v);
-
     void draw();
 
     // ---- scene and technique controls (immediate-mode widgets) ----
@@ -438,7 +399,6 @@ private:
     // Medium and light sliders and the technique's parameters, generated from its declarations.
     // The widgets' frame starts before the view grid (its display strips) and ends after this panel.
     void beginWidgets(glm::ivec2 fb);
-
     void drawParameters(glm::ivec2 fb);
 
     // The preset picker: "ours" (the defaults) or "paper" (the technique's paperSettings(), as --preset
@@ -471,9 +431,7 @@ private:
     // directional lights, position for point and spot lights (an area light's rectangle is scene
     // geometry and stays put). Returns whether the light changed.
     bool lightPlacementWidgets(viz::scene::Light& light);
-
     void parameterWidgets();
-
     void replan();
 
     GuiOptions mOptions;
