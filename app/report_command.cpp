@@ -1,4 +1,5 @@
 #include "report_command.h"
+#include "report_temporal.h"
 
 #include <unistd.h>
 
@@ -24,6 +25,7 @@
 #include "report/report_table.h"
 #include "scene/stiff_scenes.h"
 #include "report/stiff_suite.h"
+#include "report/temporal_report.h"
 #include "report/text_output.h"
 #include "report/tradeoff.h"
 #include "scene/builtin_scenes.h"
@@ -38,6 +40,7 @@ using viz::InputError;
 namespace {
 
 constexpr const char* kReportHelp = R"(usage: airlight report [--scenes A,B,..] [--techniques T1,T2,..] [--size WxH] --out DIR [--quick] [--runs N]
+                       [--temporal [--frames N] [--path P]]
 
 Sweeps each technique's quality knobs on each scene, times every setting (median of N runs after one
 warm-up; N = 5 by default) and compares its L_air with the reference (cached on disk). Writes into DIR:
@@ -51,6 +54,15 @@ brute-force raymarch at equal error.
   --size        image size (default 160x120)
   --quick       a shorter sweep per technique (all built-in scenes in a few minutes at 160x120)
   --runs        timed runs per setting (default 5)
+  --temporal    also render each setting on every frame of a motion path per scene, with the reference
+                on the same frames (cached), and score the frame-to-frame change of the error: per scene a
+                temporal table (mean per-frame error, temporal RMS, worst flicker, ms per frame), a flicker
+                heat map per setting, a plot of temporal RMS against time, and the techniques ranked by
+                stability. Every sweep setting and paper preset; with --quick each technique's cheapest setting
+  --frames N    frames per path, 2 to 240 (default 12; 6 with --quick); needs --temporal
+  --path P      the motion path for every scene (as for animate: camera-orbit:A, camera-dolly:D,
+                light-orbit:A, light-sweep:A or a keyframe .json); default per scene: light-sweep:10deg, or
+                camera-orbit:10deg on grate and where the first light is an area light; needs --temporal
 
 airlight report --suite stiff --out DIR [--techniques T1,T2,..]
   runs the stiff and extreme cases (extreme media, intensities and scales, rays through the light,
@@ -147,6 +159,9 @@ struct Options {
     bool quick = false;
     int runs = 5;
     std::string suite;  // "" or "stiff"
+    bool temporal = false;
+    int frames = 0;     // 0: kTemporalFrames, or kQuickTemporalFrames with --quick
+    std::string path;   // "" : defaultMotionPath per scene
 };
 
 Options parseReportOptions(Args& args) {
@@ -169,9 +184,23 @@ Options parseReportOptions(Args& args) {
             if (runs < 1 || runs > 1000 || runs != std::floor(runs))
                 throw InputError("--runs must be a whole number from 1 to 1000, not '" + std::to_string(runs) + "'");
             o.runs = int(runs);
-        } else throw InputError("unknown option '" + flag + "' for 'report' (run 'airlight report --help')");
+        } else if (flag == "--temporal") o.temporal = true;
+        else if (flag == "--frames") {
+            const std::string text = args.next(flag);
+            const double frames = parseNumber(text, flag);
+            if (frames < 2 || frames > kMaxTemporalFrames || frames != std::floor(frames))
+                throw InputError("--frames must be a whole number from 2 to " + std::to_string(kMaxTemporalFrames) +
+                                 ", not '" + text + "'");
+            o.frames = int(frames);
+        } else if (flag == "--path") o.path = args.next(flag);
+        else throw InputError("unknown option '" + flag + "' for 'report' (run 'airlight report --help')");
     }
     if (o.out.empty()) throw InputError("report needs --out DIR (the folder to write the report into)");
+    if (o.temporal && !o.suite.empty())
+        throw InputError("--temporal does not apply to --suite " + o.suite + " (its cases are single frames)");
+    if (!o.temporal && o.frames) throw InputError("--frames needs --temporal (it sets the frames of the motion path)");
+    if (!o.temporal && !o.path.empty()) throw InputError("--path needs --temporal (it sets the motion path)");
+    if (o.temporal && !o.frames) o.frames = o.quick ? kQuickTemporalFrames : kTemporalFrames;
     if (o.scenes.empty()) o.scenes = viz::scene::builtinSceneNames();
     if (o.techniques.empty())
         for (const std::string& t : viz::techniqueIds())
@@ -193,6 +222,7 @@ viz::report::ReportMeta describeRun(const Options& o, const std::string& command
                     reinterpret_cast<const char*>(glGetString(GL_VERSION));
     meta.width = o.width, meta.height = o.height, meta.runs = o.runs, meta.quick = o.quick;
     if (o.quick) meta.referenceSettings = "area_samples=" + std::to_string(int(kQuickReferenceAreaSamples));
+    meta.temporal = o.temporal;
     return meta;
 }
 
@@ -282,6 +312,7 @@ struct SweepPoint {
     std::string technique;
     viz::QualitySetting setting;
     std::string series;  // the report's series: the technique, or "T (paper)" for its paper preset
+    int indexInSeries = 0;
 };
 
 }  // namespace
@@ -302,13 +333,25 @@ int runReportCommand(Args& args, const std::string& commandLine) {
         const auto technique = viz::makeTechnique(id);
         for (viz::QualitySetting& q : technique->qualitySweep(o.quick)) {
             viz::completeSettings(*technique, q.settings);  // throws if a declared sweep is invalid
-            sweep.push_back({id, std::move(q), id});
+            const int index = int(std::count_if(sweep.begin(), sweep.end(), [&](const SweepPoint& p) { return p.series == id; }));
+            sweep.push_back({id, std::move(q), id, index});
         }
         // The paper's configuration beside ours: its own series, one point.
         if (const viz::Settings paper = technique->paperSettings(); !paper.empty()) {
             viz::completeSettings(*technique, paper);
-            sweep.push_back({id, {"paper preset", paper}, id + " (paper)"});
+            sweep.push_back({id, {"paper preset", paper}, id + " (paper)", 0});
         }
+    }
+    // --temporal: every scene's path and poses, so that a path that cannot move a scene fails here.
+    std::vector<viz::scene::MotionPath> paths;
+    int temporalSteps = 0;
+    if (o.temporal) {
+        for (std::size_t si = 0; si < scenes.size(); ++si) {
+            paths.push_back(viz::scene::parseMotionPath(o.path.empty() ? defaultMotionPath(o.scenes[si], scenes[si]) : o.path));
+            for (int i = 0; i < o.frames; ++i) (void)viz::scene::poseAt(paths.back(), scenes[si], i, o.frames);
+        }
+        temporalSteps = o.frames;
+        for (const SweepPoint& p : sweep) temporalSteps += measuredAlongPath(o.quick, p.series != p.technique, p.indexInSeries) ? 1 : 0;
     }
     const std::filesystem::path dir = createOutputFolder(o.out);
     auto context = viz::HeadlessContext::create(false);
@@ -318,7 +361,7 @@ int runReportCommand(Args& args, const std::string& commandLine) {
     std::vector<viz::report::ReportRow> rows;
     std::vector<viz::report::ScenePage> pages;
     std::vector<viz::report::PlanSaving> savings;
-    Progress progress(int(scenes.size() * (sweep.size() + 1 + o.techniques.size())));
+    Progress progress(int(scenes.size() * (sweep.size() + 1 + o.techniques.size() + std::size_t(temporalSteps))));
     int done = 0;
     for (std::size_t si = 0; si < scenes.size(); ++si) {
         const viz::scene::Scene& scene = scenes[si];
@@ -335,9 +378,13 @@ int runReportCommand(Args& args, const std::string& commandLine) {
         }
         ++done;
         const float exposure = viz::report::exposureFor(reference);
-        viz::report::ScenePage page{sceneName, stem + "-plot.png", stem + "-reference.png"};
+        viz::report::ScenePage page;
+        page.scene = sceneName;
+        page.plot = stem + "-plot.png";
+        page.referenceImage = stem + "-reference.png";
         viz::writeImage(reference, (dir / page.referenceImage).string(), exposure);
 
+        std::vector<TemporalJob> temporalJobs;
         // Keep the most accurate image of each technique for the page.
         std::map<std::string, std::pair<std::size_t, viz::Image>> bestImage;
         std::unique_ptr<viz::Technique> technique;
@@ -379,6 +426,8 @@ int runReportCommand(Args& args, const std::string& commandLine) {
             const double e = row.error.relativeL2;
             if (it == bestImage.end() || (std::isfinite(e) && !(rows[it->second.first].error.relativeL2 <= e)))
                 bestImage[point.series] = {rows.size(), output.airlight};
+            if (o.temporal && measuredAlongPath(o.quick, point.series != point.technique, point.indexInSeries))
+                temporalJobs.push_back({rows.size(), point.technique, in.settings});
             rows.push_back(std::move(row));
             ++done;
         }
@@ -395,6 +444,15 @@ int runReportCommand(Args& args, const std::string& commandLine) {
             viz::writeImage(best.second, (dir / row.image).string(), exposure);
             viz::writeImage(viz::report::errorHeatMap(best.second, reference, exposure * 10.0f),
                             (dir / row.errorImage).string());
+        }
+        if (o.temporal) {
+            page.motionPath = paths[si].text;
+            page.frames = o.frames;
+            page.temporalPlot = stem + "-temporal-plot.png";
+            const viz::Settings referenceSettings =
+                o.quick ? viz::Settings{{"area_samples", kQuickReferenceAreaSamples}} : viz::Settings{};
+            runTemporal(scene, paths[si], o.frames, o.width, o.height, referenceSettings, temporalJobs, rows, dir, stem,
+                        exposure, [&](const std::string& what) { progress.show(done++, sceneName + " | temporal | " + what); });
         }
         pages.push_back(page);
     }
@@ -432,6 +490,13 @@ int runReportCommand(Args& args, const std::string& commandLine) {
         const glm::ivec2 size{760, 480};
         viz::plot::drawPlot(list, {{0.0f, 0.0f}, glm::vec2(size)}, spec);
         viz::writeImage(viz::ui::renderOffscreen(list, size, {1, 1, 1, 1}), (dir / page.plot).string());
+        if (!page.temporalPlot.empty()) {
+            std::vector<std::string> series;  // the paper presets too: with --quick they are half the points
+            for (const auto& r : rows)
+                if (r.scene == page.scene && r.temporal && std::find(series.begin(), series.end(), r.technique) == series.end())
+                    series.push_back(r.technique);
+            writeTemporalPlot(font, rows, page, series, o.width, o.height, dir / page.temporalPlot);
+        }
     }
     viz::report::writeCsv((dir / "results.csv").string(), rows);
     viz::report::writeJson((dir / "results.json").string(), meta, rows, savings);
@@ -443,6 +508,17 @@ int runReportCommand(Args& args, const std::string& commandLine) {
                 std::printf("%-14s %-10s %s than raymarch at error %.3g (%s)\n", page.scene.c_str(), t.c_str(),
                             viz::report::speedupPhrase(*best->speedup).c_str(), best->error.relativeL2,
                             best->setting.c_str());
+    if (o.temporal)
+        for (const viz::report::ScenePage& page : pages) {
+            std::vector<viz::report::TechniqueRank> ranks = viz::report::rankTechniques(rows, page.scene);
+            std::stable_sort(ranks.begin(), ranks.end(), [](const auto& a, const auto& b) {
+                return (a.stabilityRank ? a.stabilityRank : 1 << 20) < (b.stabilityRank ? b.stabilityRank : 1 << 20);
+            });
+            std::printf("%-14s most stable along %s:", page.scene.c_str(), page.motionPath.c_str());
+            for (const auto& t : ranks)
+                if (t.stabilityRank) std::printf(" %d. %s %.3g", t.stabilityRank, t.technique.c_str(), t.mostStable);
+            std::printf("\n");
+        }
     std::printf("wrote %s\n", (dir / "index.html").string().c_str());
     return 0;
 }

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "report/report_table.h"
+#include "report/temporal_report.h"
 #include "report/text_output.h"
 
 namespace viz::report {
@@ -81,6 +82,8 @@ void writeHtml(const std::string& path, const ReportMeta& meta, const std::vecto
     h << "</table>\n<p class=\"note\">&ndash;: no setting of the technique has an error inside raymarch's measured "
          "range (or it is raymarch itself).</p>\n";
 
+    appendRankingHtml(h, rows, scenes);
+
     if (!savings.empty()) {
         h << "<h2>What each plan leaves out, and what that saves</h2>\n<p class=\"note\">The technique's cheapest sweep "
              "setting, timed as planned and with <code>force_features=1</code> (everything the plan leaves out for the scene runs "
@@ -104,6 +107,10 @@ void writeHtml(const std::string& path, const ReportMeta& meta, const std::vecto
         if (!s.plot.empty())
             h << "<figure><img src=\"" << escapeHtml(s.plot) << "\" alt=\"error against time, " << escapeHtml(s.scene)
               << "\"><figcaption>relative L2 error against time per frame (log-log)</figcaption></figure>\n";
+        if (!s.temporalPlot.empty())
+            h << "<figure><img src=\"" << escapeHtml(s.temporalPlot) << "\" alt=\"temporal error against time, "
+              << escapeHtml(s.scene) << "\"><figcaption>temporal RMS along " << escapeHtml(s.motionPath)
+              << " against time per frame (log-log)</figcaption></figure>\n";
         h << "<table><tr><th class=\"l\">technique</th><th class=\"l\">setting</th><th>time ms</th><th>wall ms</th>"
              "<th>rel. L2</th><th>RMSE</th><th>max abs</th><th>p99.9 rel.</th><th>PSNR dB</th><th>NaN/Inf/neg px</th>"
              "<th>speed-up</th></tr>\n";
@@ -120,6 +127,7 @@ void writeHtml(const std::string& path, const ReportMeta& meta, const std::vecto
               << "</td></tr>\n";
         }
         h << "</table>\n";
+        appendTemporalHtml(h, rows, s);
         if (!s.referenceImage.empty())
             h << "<figure><img src=\"" << escapeHtml(s.referenceImage) << "\" alt=\"reference\"><figcaption>reference"
               << "</figcaption></figure>\n";

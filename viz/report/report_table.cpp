@@ -19,6 +19,18 @@ std::string number(double v) { return formatFigure(v); }
 
 nlohmann::json jsonNumber(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
 
+nlohmann::json temporalJson(const std::optional<TemporalFigures>& t) {
+    if (!t) return nullptr;
+    return {{"path", t->path},
+            {"frames", t->frames},
+            {"mean_frame_error", jsonNumber(t->meanFrameError)},
+            {"temporal_rms", jsonNumber(t->temporalRms)},
+            {"worst_flicker", jsonNumber(t->worstFlicker)},
+            {"ms_per_frame", jsonNumber(t->msPerFrame)},
+            {"excluded_differences", t->excludedDifferences},
+            {"flicker_image", t->flickerImage}};
+}
+
 }  // namespace
 
 void annotateTradeoffs(std::vector<ReportRow>& rows, const std::string& baseline) {
@@ -53,7 +65,10 @@ const std::vector<std::string>& csvColumns() {
     static const std::vector<std::string> kColumns = {
         "scene", "technique", "setting", "settings", "width", "height", "runs", "clock", "total_ms", "wall_ms",
         "relative_l2", "rmse", "max_abs", "relative_p999", "psnr_db", "nan_pixels", "inf_pixels",
-        "negative_pixels", "speedup_vs_raymarch", "pareto", "stage_ms"};
+        "negative_pixels", "speedup_vs_raymarch", "pareto", "stage_ms",
+        // --temporal (empty on rows it does not measure): report/temporal_error.h's figures on a motion path
+        "temporal_path", "temporal_frames", "mean_frame_error", "temporal_rms", "worst_flicker", "ms_per_frame",
+        "flicker_image"};
     return kColumns;
 }
 
@@ -65,13 +80,17 @@ void writeCsv(const std::string& path, const std::vector<ReportRow>& rows) {
     for (const ReportRow& r : rows) {
         std::string stages;
         for (const StageTime& s : r.stages) stages += (stages.empty() ? "" : ";") + s.stage + "=" + number(s.milliseconds);
+        const std::optional<TemporalFigures>& t = r.temporal;
         const std::vector<std::string> fields = {
             r.scene, r.technique, r.setting, r.settings, std::to_string(r.width), std::to_string(r.height),
             std::to_string(r.runs), r.clock, number(r.totalMilliseconds), number(r.wallMilliseconds),
             number(r.error.relativeL2), number(r.error.rmse), number(r.error.maxAbsolute),
             number(r.error.relativeP999), number(r.error.psnr), std::to_string(r.error.nanPixels),
             std::to_string(r.error.infPixels), std::to_string(r.error.negativePixels),
-            r.speedup ? number(*r.speedup) : "", r.pareto ? "1" : "0", stages};
+            r.speedup ? number(*r.speedup) : "", r.pareto ? "1" : "0", stages,
+            t ? t->path : "", t ? std::to_string(t->frames) : "", t ? number(t->meanFrameError) : "",
+            t ? number(t->temporalRms) : "", t ? number(t->worstFlicker) : "", t ? number(t->msPerFrame) : "",
+            t ? t->flickerImage : ""};
         for (std::size_t i = 0; i < fields.size(); ++i) out << (i ? "," : "") << csvField(fields[i]);
         out << "\n";
     }
@@ -87,7 +106,14 @@ void writeJson(const std::string& path, const ReportMeta& meta, const std::vecto
                  {"reference_settings", meta.referenceSettings},
                  {"error_of", "L_air (RGB radiance) against the reference technique's L_air"},
                  {"tone_map", "PSNR on v*k/(1+v*k), k = 0.18 / mean of the reference, peak 1"},
-                 {"relative_p999", "99.9th percentile of sum_c|t-r| / max(sum_c|r|, 0.01 * mean sum_c|r|)"}};
+                 {"relative_p999", "99.9th percentile of sum_c|t-r| / max(sum_c|r|, 0.01 * mean sum_c|r|)"},
+                 {"temporal", meta.temporal}};
+    if (meta.temporal)
+        j["meta"]["temporal_of"] =
+            "rows' 'temporal': the setting on every frame of its scene's motion path against the reference on the "
+            "same frames; e_t = T_t - R_t, d_t = e_t - e_{t-1}; temporal_rms = sqrt(mean d_t^2) / 2 / mean(R), "
+            "worst_flicker = 99th percentile over pixels of sqrt(mean over t, c of d_t^2) / 2 / mean(R); "
+            "ms_per_frame = median over frames of the sum of stage times";
     nlohmann::json list = nlohmann::json::array();
     for (const ReportRow& r : rows) {
         nlohmann::json stages = nlohmann::json::object();
@@ -115,7 +141,8 @@ void writeJson(const std::string& path, const ReportMeta& meta, const std::vecto
                         {"speedup_vs_raymarch", r.speedup ? jsonNumber(*r.speedup) : nlohmann::json(nullptr)},
                         {"pareto", r.pareto},
                         {"image", r.image},
-                        {"error_image", r.errorImage}});
+                        {"error_image", r.errorImage},
+                        {"temporal", temporalJson(r.temporal)}});
     }
     j["rows"] = list;
     nlohmann::json planList = nlohmann::json::array();

@@ -2,6 +2,7 @@
 // results.csv, results.json and index.html. Pure CPU; the runner that fills the rows lives in the app.
 #pragma once
 
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <vector>
@@ -13,6 +14,19 @@ namespace viz::report {
 struct StageTime {
     std::string stage;  // stage id, e.g. "raymarch.march"
     double milliseconds = 0.0;
+};
+
+// The row's setting rendered on every frame of its scene's motion path (`report --temporal`): the figures
+// of report/temporal_error.h against the reference on the same frames, and the time per frame.
+struct TemporalFigures {
+    std::string path;             // the motion path, as given to --path
+    int frames = 0;
+    double meanFrameError = 0.0;  // mean over frames of the relative L2
+    double temporalRms = 0.0;     // relative to the reference's mean
+    double worstFlicker = 0.0;    // 99th percentile over pixels of the per-pixel flicker, relative
+    double msPerFrame = 0.0;      // median over the frames of the sum of stage times (each frame run once)
+    std::size_t excludedDifferences = 0;  // frame-to-frame differences left out (NaN or Inf)
+    std::string flickerImage;     // PNG next to index.html: per-pixel temporal RMS as a heat map
 };
 
 struct ReportRow {
@@ -30,6 +44,7 @@ struct ReportRow {
     bool pareto = false;            // on its scene's Pareto front, all techniques together
     std::string image;              // files next to index.html (PNG), empty when not written
     std::string errorImage;
+    std::optional<TemporalFigures> temporal{};  // with --temporal, on the settings it measures
 };
 
 // What a technique's plan saves on a scene: its cheapest sweep setting timed as planned and with
@@ -48,6 +63,7 @@ struct ReportMeta {
     int width = 0, height = 0, runs = 0;
     bool quick = false;
     std::string referenceSettings;  // the reference's settings that differ from its defaults ("" = none)
+    bool temporal = false;          // --temporal: rows may carry TemporalFigures
 };
 
 // Per scene: marks the Pareto front over all techniques (time = totalMilliseconds, error = relative L2)
@@ -71,6 +87,9 @@ struct ScenePage {
     std::string scene;
     std::string plot;            // PNG file name
     std::string referenceImage;  // PNG file name
+    std::string motionPath{};    // with --temporal: the scene's path, its frame count and plot
+    int frames = 0;
+    std::string temporalPlot{};  // PNG file name
 };
 void writeHtml(const std::string& path, const ReportMeta& meta, const std::vector<ReportRow>& rows,
                const std::vector<ScenePage>& scenes, const std::vector<PlanSaving>& savings = {});
