@@ -235,11 +235,14 @@ std::filesystem::path createOutputFolder(const std::string& out) {
 
 // The stiff suite: every case, the reference once per case, then each technique.
 int runStiffSuite(const Options& o, const std::string& commandLine) {
-    std::vector<std::unique_ptr<viz::Technique>> techniques;
-    for (const std::string& id : o.techniques) techniques.push_back(viz::makeTechnique(id));
+    std::vector<std::unique_ptr<viz::Technique>> made;  // an unknown id fails here, before any folder exists
+    for (const std::string& id : o.techniques) made.push_back(viz::makeTechnique(id));
     const auto& cases = viz::scene::stiffCases();
     const std::filesystem::path dir = createOutputFolder(o.out);
     auto context = viz::HeadlessContext::create(false);
+    // Declared after the context, so the techniques' GL objects are deleted while it is current (the
+    // other order aborted at exit in libepoxy, exit 134, after the files were written).
+    const std::vector<std::unique_ptr<viz::Technique>> techniques = std::move(made);
     const viz::report::ReportMeta meta = describeRun(o, commandLine);
 
     std::vector<viz::report::StiffOutcome> outcomes;

@@ -90,5 +90,21 @@ TEST_F(CliTest, ReportRejectsBadInputBeforeWritingAnything) {
     EXPECT_FALSE(fs::exists(out));
 }
 
+// The stiff suite runs every case against the reference and exits cleanly: it once wrote its files and
+// then aborted (exit 134) deleting the techniques' GL objects after its GL context was gone.
+TEST_F(CliTest, TheStiffSuiteRunsEveryCaseAndExitsCleanly) {
+    const fs::path out = path("stiff");
+    const RunResult r = run("report --suite stiff --techniques raymarch --out " + out.string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(r.err.find("Assertion"), std::string::npos) << r.err;
+    std::istringstream csv(readFile(out / "stiff.csv"));
+    std::string line;
+    int rows = -1;  // the header
+    while (std::getline(csv, line))
+        if (!line.empty()) ++rows;
+    EXPECT_EQ(rows, 21) << "one row per stiff case for raymarch";
+    EXPECT_NE(r.out.find("21 of 21 cells pass"), std::string::npos) << r.out;
+}
+
 }  // namespace
 }  // namespace viz::testing
