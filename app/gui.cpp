@@ -64,6 +64,7 @@ GuiApp::GuiApp(const GuiOptions& options, viz::scene::Scene scene, viz::Window& 
         static_cast<GuiApp*>(glfwGetWindowUserPointer(w))->onDrop(dropped);
     });
     mSceneWatch.watch(mOptions.scene);
+    mGeometryHash = viz::scene::geometryContentHash(mScene);
     selectTechnique(mCurrent);
     applySessionView();
     const std::string lesson = !options.lesson.empty() ? options.lesson : mSession.lesson;

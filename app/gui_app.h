@@ -524,6 +524,9 @@ private:
     bool mDragTimeline = false;
     std::optional<std::string> mPendingScene;  // picked in the panel, loaded by loadPendingScene
     int mLight = 0;                            // selectedLightIndex()
+    // geometryContentHash(mScene), computed when a scene is loaded (the window never edits geometry):
+    // the difference views' keys read it instead of hashing every mesh and texture per refresh.
+    std::uint64_t mGeometryHash = 0;
     SceneFileWatch mSceneWatch;                // the scene file, when the scene is one
     std::string mOpenPath;                     // File > Open's text field
     bool mTextTab = false, mTextEnter = false;  // Tab / Enter pressed in a text field this frame

@@ -106,7 +106,6 @@ private:
     bool matches(const LessonWindowState& now) const;
     std::vector<std::string> rightViews() const;  // the step's views the right-hand pane may show
     const LessonStep* step() const { return mLesson && mStep < int(mLesson->steps.size()) ? &mLesson->steps[std::size_t(mStep)] : nullptr; }
-    float drawProse(viz::ui::DrawList& dl, const std::string& markdown, glm::vec2 at, float width, float scale) const;
 
     std::string mPath;
     glm::ivec2 mSizeOverride{0};

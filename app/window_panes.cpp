@@ -156,13 +156,16 @@ viz::Settings GuiApp::otherSettings(const std::string& id) const {
 }
 
 std::string GuiApp::otherRunKey(const std::string& id) const {
-    // Everything the run depends on: the scene's content (geometry, materials, lights, medium) with the
-    // window's camera, the size and the settings. The geometry matters too: a scene file reloaded with a
-    // moved mesh but the same lights must not keep the old image.
-    viz::scene::Scene scene = mScene;
-    scene.camera = mController.camera();
-    std::string key = id + " " + std::to_string(mOutputSize.x) + "x" + std::to_string(mOutputSize.y) + " " +
-                      viz::scene::sceneContentHash(scene);
+    // Everything the run depends on: the scene (sceneOnlyKey: its geometry too, so a file reloaded with a
+    // moved mesh but the same lights does not keep the old image), the window's camera, the size and the
+    // settings.
+    std::string key = id + " " + std::to_string(mOutputSize.x) + "x" + std::to_string(mOutputSize.y);
+    const viz::scene::Camera c = mController.camera();
+    char buf[512];
+    std::snprintf(buf, sizeof buf, " %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g", c.position.x,
+                  c.position.y, c.position.z, c.forward.x, c.forward.y, c.forward.z, c.up.x, c.up.y, c.up.z, c.yfov);
+    key += buf;
+    key += " " + sceneOnlyKey();
     for (const auto& [name, value] : otherSettings(id)) key += " " + name + "=" + format("%.17g", value);
     return key;
 }
@@ -195,7 +198,7 @@ void GuiApp::runDueGpuOthers() {
 std::string GuiApp::sceneOnlyKey() const {
     char buf[128];
     std::snprintf(buf, sizeof buf, "%016llx %.17g %.17g %.17g",
-                  static_cast<unsigned long long>(viz::scene::geometryContentHash(mScene)), mScene.medium.sigma_s,
+                  static_cast<unsigned long long>(mGeometryHash), mScene.medium.sigma_s,
                   mScene.medium.sigma_a, mScene.medium.g);
     std::string key = buf;
     for (const auto& l : mScene.lights)

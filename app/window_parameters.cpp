@@ -151,6 +151,7 @@ void GuiApp::reloadScene() {
     try {
         viz::scene::Scene scene = viz::scene::loadScene(mOptions.scene, mOptions.load);
         mScene = std::move(scene);
+        mGeometryHash = viz::scene::geometryContentHash(mScene);
     } catch (const std::exception& e) {
         mError = "reloading " + sceneTitle() + " failed, the scene is kept as it was: " + firstLine(e.what());
         return;

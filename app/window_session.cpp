@@ -91,6 +91,7 @@ void GuiApp::loadLessonScene(const std::string& name) {
     mScene = std::move(scene);
     mOptions.scene = name;
     mSceneWatch.watch(name);
+    mGeometryHash = viz::scene::geometryContentHash(mScene);
     mLight = 0;
     mController = CameraController(mScene.camera, orbitDistance(mScene));
     mGizmoArm = kGizmoArm * mController.targetDistance();

@@ -1,0 +1,34 @@
+// A lesson's prose as the lesson panel draws it: paragraphs, headings, lists, formulas and rules of the
+// lessons' Markdown, with `code`, *emphasis* and **strong** inline, wrapped to the panel's width. Also the
+// panel's colours, which the player's own text uses.
+#pragma once
+
+#include <string>
+
+#include <glm/glm.hpp>
+
+#include "ui/text_renderer.h"
+
+namespace airlight {
+
+// Display colours: the window's text colours on the widgets' panel colour, contrast for a projector.
+namespace lesson_style {
+inline constexpr glm::vec4 kText{0.92f, 0.92f, 0.92f, 1.0f};
+inline constexpr glm::vec4 kDim{0.66f, 0.68f, 0.72f, 1.0f};
+inline constexpr glm::vec4 kAccent{0.98f, 0.78f, 0.35f, 1.0f};
+inline constexpr glm::vec4 kError{1.0f, 0.50f, 0.45f, 1.0f};
+inline constexpr glm::vec4 kRule{0.30f, 0.32f, 0.36f, 1.0f};
+}  // namespace lesson_style
+
+// How a run of text is drawn (colour, box, bold).
+enum class SpanStyle { Normal, Code, Emphasis, Strong, Heading, Formula, Dim };
+
+// One line of text in `style` with its inline Markdown, wrapped within `width` from `at`; returns the
+// height it took.
+float drawLessonText(viz::ui::DrawList& dl, const std::string& text, SpanStyle style, glm::vec2 at, float width,
+                     float scale);
+
+// Draws `markdown` from `at` (top left) within `width` pixels; returns the height it took.
+float drawLessonProse(viz::ui::DrawList& dl, const std::string& markdown, glm::vec2 at, float width, float scale);
+
+}  // namespace airlight
