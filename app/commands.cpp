@@ -160,6 +160,7 @@ int runRender(Args& args) {
     if (outPath.has_parent_path() && !std::filesystem::is_directory(outPath.parent_path()))
         throw InputError("--out '" + o.out + "': folder '" + outPath.parent_path().string() + "' does not exist");
 
+    o.request.views = {o.layer};
     RenderJob job(o.request);
     if (!o.quiet) printNotes(job.scene());
     const viz::FrameOutput& out = job.run();
@@ -206,9 +207,19 @@ int runList(Args& args) {
                 for (const auto& p : s.params) std::printf("    param %s\n", p.c_str());
             }
         } else {
-            for (const auto& p : technique->params())
+            for (const auto& p : technique->params()) {
+                if (!p.choices.empty()) {
+                    // A named parameter: its names (--set takes them, or their index).
+                    std::string names;
+                    for (std::size_t i = 0; i < p.choices.size(); ++i) names += (i ? " | " : "") + p.choices[i];
+                    std::printf("%-20s default %-8s one of %s  %s\n", p.name.c_str(),
+                                viz::settingText(technique->params(), p.name, p.defaultValue).substr(p.name.size() + 1).c_str(),
+                                names.c_str(), p.help.c_str());
+                    continue;
+                }
                 std::printf("%-20s default %-8g range [%g, %g]%s  %s\n", p.name.c_str(), p.defaultValue,
                             p.minValue, p.maxValue, p.integer ? " integer" : "", p.help.c_str());
+            }
         }
         if (!args.empty()) throw InputError("unexpected argument '" + args.peek() + "'");
         return 0;
@@ -317,6 +328,9 @@ int runDefault() {
     request.technique = kDefaultTechnique;
     request.width = 640;
     request.height = 480;
+    // Every intermediate is written, those drawn on demand too.
+    for (const viz::StageInfo& st : viz::makeTechnique(request.technique)->stages())
+        request.views.insert(request.views.end(), st.onDemand.begin(), st.onDemand.end());
     RenderJob job(request);
     printNotes(job.scene());
     const viz::FrameOutput& out = job.run();

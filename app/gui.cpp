@@ -120,6 +120,11 @@ int GuiApp::run() {
         if (mLesson) mLesson->update(*this, automated ? 1.0 / 30.0 : dt);
         if (mPlaying) advanceAnimation(automated ? 1.0 / 30.0 : dt);
         if (mReduced && mDragButton < 0 && !mGizmoDrag && !anyFlyKeyDown()) mDirty = true;
+        // A view now shows (or no longer shows) something the technique draws only on demand.
+        if (!mDirty && mHaveOutput && technique().needsGl()) {
+            const StageRunner& runner = *mRunners.at(technique().id());
+            if (runner.onDemandAmong(shownContents()) != runner.lastViews()) mDirty = true;
+        }
         if (mDirty) {
             // A slow GPU run blocks this thread: first show a frame that says so.
             if (technique().needsGl() && (!mHaveOutput || mLastRunSeconds > 0.3)) {
@@ -234,7 +239,7 @@ void GuiApp::render() {
     const auto start = Clock::now();
     try {
         // The scheduler re-runs only the stages whose inputs changed (a sub-step: its stage alone).
-        mOutput = mRunners.at(t.id())->run(mScene, size.x, size.y, mSettings, mCursor);
+        mOutput = mRunners.at(t.id())->run(mScene, size.x, size.y, mSettings, mCursor, shownContents());
         mError.clear();
         mHaveOutput = true;
         mPass = 1;

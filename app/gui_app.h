@@ -90,7 +90,10 @@ public:
     bool stepScript();
 
     // The back buffer as drawn (before the swap) to the PNG, and the views' rectangles beside it.
-    void writeScreenshot(const std::string& path);
+    // The window as PNG (when `image`) and its sidecar JSON (the same path, .json).
+    void writeScreenshot(const std::string& path, bool image = true);
+    void writeWindowImage(const std::string& path);
+    void writeSidecar(const std::string& path);
 
 private:
     // ---- the session file ----
@@ -208,6 +211,8 @@ private:
 
     // Contents in the views list: the final frame, L_air, then every intermediate of the run.
     int contentCount() const;
+    // What the grid's views show (content ids), for the run's on-demand views.
+    std::vector<std::string> shownContents() const;
     std::string contentId(int index) const;
     std::string contentLabel(int index) const;
     ViewState& focusedView();
@@ -386,6 +391,9 @@ private:
     // The display strip: channel, range (auto or manual), log scale, colour map, negative overlay and
     // difference mode as widgets on the left; the histogram of the shown values on the right.
     void drawStrip(int id, ViewState& v);
+    // The colour bar under an image view (window_colour_bar.cpp).
+    void drawColourBar(int id, ViewState& v);
+    float colourBarHeight(const ViewState& v) const;
 
     // Counts of the shown channel's finite values over their range, with the display range marked.
     void drawHistogram(const ViewState& v, const Rect& area);

@@ -14,7 +14,10 @@
 #include "core/error.h"
 #include "core/image_io.h"
 #include "core/staged_folder.h"
+#include "platform/context_egl.h"
 #include "render_job.h"
+#include "ui/font.h"
+#include "view_figure.h"
 #include "report/error_images.h"
 #include "report/text_output.h"
 #include "techniques/registry.h"
@@ -320,11 +323,14 @@ void exportLesson(const Lesson& lesson, const std::string& folder, glm::ivec2 si
     namespace fs = std::filesystem;
     if (folder.empty()) throw InputError("lesson --export needs a folder");
     viz::StagedFolder staged(folder);
+    const viz::ui::FontAtlas font = viz::ui::FontAtlas::bake(viz::ui::FontAtlas::kDefaultFontPath, 15.0f);
+    std::unique_ptr<viz::HeadlessContext> figureContext;  // for the figures of CPU techniques' steps
     std::string html = "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>" +
                        viz::report::escapeHtml(lesson.title) +
                        "</title><style>body{font-family:DejaVu Sans,sans-serif;max-width:60em;margin:2em;color:#222}"
-                       "figure{display:inline-block;margin:0.3em;text-align:center}img{image-rendering:pixelated;"
-                       "border:1px solid #ccc;min-width:320px}code{background:#f2f2f2}.state{color:#555;font-size:0.85em}</style>"
+                       "figure{display:inline-block;margin:0.3em;text-align:center;max-width:100%}img{image-rendering:pixelated;"
+                       "border:1px solid #ccc;max-width:100%;height:auto}code{background:#f2f2f2}.state{color:#555;font-size:0.85em}"
+                       ".range{color:#555;font-size:0.8em}</style>"
                        "</head><body>\n<h1>" + viz::report::escapeHtml(lesson.title) + "</h1>\n" +
                        markdownToHtml(lesson.intro);
     for (std::size_t k = 0; k < lesson.steps.size(); ++k) {
@@ -336,6 +342,7 @@ void exportLesson(const Lesson& lesson, const std::string& folder, glm::ivec2 si
         request.height = size.y > 0 ? size.y : s.height;
         request.settings = s.settings;
         request.stopAfter = s.stage;
+        request.views = s.views;
         RenderJob job(request);
         const viz::FrameOutput& out = job.run();
         for (const std::string& line : job.badPixelWarnings()) {
@@ -353,23 +360,51 @@ void exportLesson(const Lesson& lesson, const std::string& folder, glm::ivec2 si
             state += "; animated in the window: " + describeAnimation(s.animation) + " (shown: its last frame)";
         html += "<p class=\"state\">" + viz::report::escapeHtml(state) + "</p>\n";
         const std::vector<std::string> views = s.views.empty() ? std::vector<std::string>{"final", "airlight"} : s.views;
-        const float exposure = out.final.empty() ? 1.0f : viz::report::exposureFor(out.final);
+        // The window's exposure for this frame: the final image's automatic exposure in stops, rounded to
+        // the window's half stops.
+        const float exposure =
+            out.final.empty() ? 0.0f : std::round(std::log2(std::max(autoExposure(out.final), 1e-30f)) / 0.5f) * 0.5f;
+        // Figures are drawn through the window's own shaders: a CPU technique's step needs a context too.
+        if (!job.technique().needsGl()) {
+            if (!figureContext) figureContext = viz::HeadlessContext::create(false);
+            figureContext->makeCurrent();
+        }
         for (const std::string& view : views) {
-            viz::Image image;
             const viz::Intermediate* in = view == "final" || view == "airlight" ? nullptr : job.findIntermediate(view);
+            ViewState shown;
             try {
-                image = job.layerImage(view);
+                if (in) {
+                    makePane(shown.pane, *in, 0);
+                } else {
+                    shown.pane.id = view;
+                    shown.pane.label = view == "final" ? "Final image" : "Airlight L_air";
+                    shown.pane.units = "radiance";
+                    shown.pane.kind = viz::ViewKind::Color;
+                    shown.pane.mode = DisplayMode::HdrColor;
+                    uploadImage(shown.pane, job.layerImage(view));
+                }
             } catch (const InputError& e) {
                 throw InputError(lesson.path + ":" + std::to_string(s.line) + ": step '" + s.title + "': " + e.what());
+            }
+            shown.display.channel = defaultChannel(shown.pane);
+            const Figure figure = renderFigure(shown, exposure, font);
+            if (figure.image.empty()) {
+                throw InputError(lesson.path + ":" + std::to_string(s.line) + ": step '" + s.title + "': view '" + view +
+                                 "' has nothing to show: " + figure.caption);
             }
             std::string file = "step" + std::to_string(k + 1) + "-";
             for (char c : view) file += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
             file += ".png";
-            const bool colour = !in || in->kind == viz::ViewKind::Color;
-            if (colour) viz::writeImage(image, staged.path(file), view == "final" ? exposure : viz::report::exposureFor(image));
-            else viz::writeImage(viz::toDisplay(image, in->rangeMin, in->rangeMax), staged.path(file));
-            html += "<figure><img src=\"" + file + "\" alt=\"" + viz::report::escapeHtml(view) + "\"><figcaption>" +
-                    viz::report::escapeHtml(in ? in->label : view) + "</figcaption></figure>\n";
+            viz::writeImage(figure.image, staged.path(file));
+            // A plot says what it drew (plots and curves), an image its scale (screen pixels per texel).
+            const std::string what = figure.plots > 0
+                                         ? " class=\"plot\" data-plots=\"" + std::to_string(figure.plots) + "\" data-series=\"" +
+                                               std::to_string(figure.series) + "\""
+                                         : " data-texel-scale=\"" + std::to_string(figure.texelScale) + "\"";
+            html += "<figure><img src=\"" + file + "\" alt=\"" + viz::report::escapeHtml(view) + "\" width=\"" +
+                    std::to_string(figure.image.width) + "\" height=\"" + std::to_string(figure.image.height) + "\"" + what +
+                    "><figcaption>" + viz::report::escapeHtml(in ? in->label : shown.pane.label) +
+                    "<br><span class=\"range\">" + viz::report::escapeHtml(figure.caption) + "</span></figcaption></figure>\n";
         }
     }
     html += "</body></html>\n";

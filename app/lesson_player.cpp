@@ -367,9 +367,10 @@ void LessonPlayer::draw(viz::ui::Context& ui, DrawList& dl, DrawList& background
     dl.rect({{left, y}, {left + width, y + std::max(1.0f, scale)}}, kRule);
     y += 0.6f * line;
 
-    // The prose: clipped to what is left, scrolled by the wheel; the key line at the bottom.
+    // The prose: clipped to what is left, scrolled by the wheel; a row for the "more below" marker under
+    // it (never over its last line), then the key line at the bottom.
     const float keysY = area.max.y - pad - line;
-    const Rect prose{{area.min.x, y}, {area.max.x, keysY - 0.5f * line}};
+    const Rect prose{{area.min.x, y}, {area.max.x, keysY - 1.3f * line}};
     const float visible = std::max(0.0f, prose.size().y);
     mScroll = std::clamp(mScroll, 0.0f, std::max(0.0f, mContentHeight - visible));
     dl.pushClip(prose);
@@ -387,7 +388,7 @@ void LessonPlayer::draw(viz::ui::Context& ui, DrawList& dl, DrawList& background
         const float at = prose.min.y + (visible - h) * mScroll / std::max(1.0f, mContentHeight - visible);
         dl.rect({{area.max.x - 5.0f * scale, at}, {area.max.x - 2.0f * scale, at + h}}, kDim);
         if (mScroll + visible < mContentHeight - 1.0f)
-            dl.textClipped({left, keysY - 1.1f * line}, "(more below: wheel)", kDim, area.max.x - pad);
+            dl.textClipped({left, keysY - 1.15f * line}, "(more below: wheel)", kDim, area.max.x - pad);
     }
     dl.textClipped({left, keysY}, "PgUp/PgDn step   T try it   B back" +
                                       std::string(s.animation.kind != LessonAnimation::Kind::None ? "   Space play" : ""),

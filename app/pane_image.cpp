@@ -32,13 +32,34 @@ const std::vector<std::string>& colourMapNames() {
     return names;
 }
 
+Channel defaultChannel(const PaneImage& pane) { return pane.channelInfo.empty() ? Channel::Rgb : Channel::R; }
+
+const viz::ChannelInfo* declaredChannel(const PaneImage& pane, Channel channel) {
+    const int c = int(channel) - 1;
+    if (channel < Channel::R || channel > Channel::A || c >= int(pane.channelInfo.size())) return nullptr;
+    return &pane.channelInfo[std::size_t(c)];
+}
+
+std::vector<std::string> channelChoices(const PaneImage& pane) {
+    std::vector<std::string> names = channelNames();
+    if (pane.channelInfo.empty()) return names;
+    static const char* kLetters[] = {"r", "g", "b", "a"};
+    names[0] = "all (r g b)";
+    for (int c = 0; c < 4; ++c)
+        names[std::size_t(c + 1)] = c < int(pane.channelInfo.size())
+                                        ? std::string(kLetters[c]) + ": " + pane.channelInfo[std::size_t(c)].name
+                                        : std::string(kLetters[c]) + " (unused)";
+    return names;
+}
+
 DisplayMapping resolveMapping(const PaneImage& pane, const DisplaySettings& settings, float exposure,
                               const std::optional<ValueRange>& autoRange) {
     DisplayMapping m;
     m.channel = settings.channel;
     m.logScale = settings.logScale;
+    const viz::ChannelInfo* declared = declaredChannel(pane, settings.channel);
     switch (settings.colourMap) {
-        case ColourMap::Auto: m.mode = pane.mode; break;
+        case ColourMap::Auto: m.mode = declared ? displayModeFor(declared->kind) : pane.mode; break;
         case ColourMap::Grey: m.mode = DisplayMode::Grey; break;
         case ColourMap::Sequential: m.mode = DisplayMode::Heat; break;
         case ColourMap::Ramp: m.mode = DisplayMode::FalseColor; break;
@@ -46,8 +67,8 @@ DisplayMapping resolveMapping(const PaneImage& pane, const DisplaySettings& sett
         case ColourMap::Bits: m.mode = DisplayMode::Bits; break;
         case ColourMap::Categorical: m.mode = DisplayMode::Categorical; break;
     }
-    m.lo = pane.rangeMin;
-    m.hi = pane.rangeMax;
+    m.lo = declared ? declared->rangeMin : pane.rangeMin;
+    m.hi = declared ? declared->rangeMax : pane.rangeMax;
     const bool measured = settings.range == RangeMode::MinMax || settings.range == RangeMode::Percentiles;
     if (settings.range == RangeMode::Manual) {
         m.lo = settings.manualMin;
@@ -126,6 +147,8 @@ void makePane(PaneImage& pane, const viz::Intermediate& in, int layer) {
     pane.mode = displayModeFor(in.kind);
     pane.rangeMin = in.rangeMin;
     pane.rangeMax = in.rangeMax;
+    pane.sentinels = in.sentinels;
+    pane.channelInfo = in.channels;
     if (in.image) {
         uploadImage(pane, *in.image);
         return;
@@ -190,6 +213,11 @@ void ImageDisplay::draw(const PaneImage& pane, const viz::ui::Rect& rect, glm::i
     mProgram.set("uExposure", mapping.exposure);
     mProgram.set("uFlipY", pane.flipY);
     mProgram.set("uChannels", pane.channels);
+    glm::vec4 sentinels(0.0f);
+    const int count = std::min(int(pane.sentinels.size()), 4);
+    for (int k = 0; k < count; ++k) sentinels[k] = pane.sentinels[std::size_t(k)].value;
+    mProgram.set("uSentinels", sentinels);
+    mProgram.set("uSentinelCount", count);
     mProgram.use();
     glBindTextureUnit(0, pane.texture);
     mSampler.bindUnit(0);

@@ -45,7 +45,17 @@ struct PaneImage {
     int layer = 0, layers = 1;
     std::string unavailable;  // non-empty: nothing to draw, and why
     std::vector<viz::PlotData> plots;  // drawn instead of the texture when not empty (the technique's plots)
+    std::vector<viz::Sentinel> sentinels;       // values that mean "nothing here" (hatched, not counted)
+    std::vector<viz::ChannelInfo> channelInfo;  // the quantities packed in r, g, b, a; empty: one quantity
 };
+
+// The channel a view starts on for a pane: the first declared quantity of a multi-quantity pane, else all.
+Channel defaultChannel(const PaneImage& pane);
+// The channel picker's entries for a pane (index = Channel): the declared quantities' names in place of
+// R, G, B, A ("r: faces crossed"), and only the entries that show something.
+std::vector<std::string> channelChoices(const PaneImage& pane);
+// The declared quantity a channel shows, or nullptr (RGB, luminance, or an undeclared pane).
+const viz::ChannelInfo* declaredChannel(const PaneImage& pane, Channel channel);
 
 // A technique's plot as the plot module draws it (colours from the categorical palette).
 viz::plot::PlotSpec plotSpecOf(const viz::PlotData& data);
@@ -82,7 +92,8 @@ struct DisplayMapping {
     bool logScale = false, markNegative = false;
 };
 
-// `autoRange`: the view's finite min/max or percentiles (per the settings), when known.
+// `autoRange`: the view's finite min/max or percentiles (per the settings), when known. A declared
+// channel brings its own suggested range and colour map.
 DisplayMapping resolveMapping(const PaneImage& pane, const DisplaySettings& settings, float exposure,
                               const std::optional<ValueRange>& autoRange);
 

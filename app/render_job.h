@@ -25,6 +25,9 @@ struct RenderRequest {
     viz::Settings settings;
     std::string stopAfter;  // stage id or empty
     viz::scene::LoadOptions load;  // what a file lacking a light gets (--no-default-light)
+    // What the caller writes or shows: the intermediates a stage draws only on demand are drawn for
+    // these (StageInfo::onDemand; `render --layer polyvol.mesh`).
+    std::vector<std::string> views;
 };
 
 class RenderJob {

@@ -33,6 +33,12 @@ ResumePoint resumePoint(const viz::Technique& t, const RunKey& previous, int pre
     int changed = n;
     std::set<std::string> declared;
     for (const auto& st : stages) declared.insert(st.params.begin(), st.params.end());
+    // A stage with an on-demand view asked for by one run and not the other computes again.
+    for (int k = 0; k < n; ++k)
+        for (const std::string& id : stages[std::size_t(k)].onDemand) {
+            const bool before = std::binary_search(previous.views.begin(), previous.views.end(), id);
+            if (before != std::binary_search(next.views.begin(), next.views.end(), id)) changed = std::min(changed, k);
+        }
     for (const auto& [name, value] : next.settings) {
         const auto it = previous.settings.find(name);
         if (it != previous.settings.end() && it->second == value) continue;
@@ -53,9 +59,17 @@ ResumePoint resumePoint(const viz::Technique& t, const RunKey& previous, int pre
     return r;
 }
 
+std::vector<std::string> StageRunner::onDemandAmong(const std::vector<std::string>& shown) const {
+    std::set<std::string> wanted;
+    for (const viz::StageInfo& st : mTechnique->stages())
+        for (const std::string& id : st.onDemand)
+            if (std::find(shown.begin(), shown.end(), id) != shown.end()) wanted.insert(id);
+    return {wanted.begin(), wanted.end()};
+}
+
 viz::FrameOutput StageRunner::run(const viz::scene::Scene& scene, int width, int height, const viz::Settings& settings,
-                                  StepCursor cursor) {
-    RunKey key{viz::scene::sceneContentHash(scene), width, height, settings, cursor};
+                                  StepCursor cursor, const std::vector<std::string>& views) {
+    RunKey key{viz::scene::sceneContentHash(scene), width, height, settings, cursor, onDemandAmong(views)};
     mResume = mPrevious ? resumePoint(*mTechnique, *mPrevious, mPreviousLastStage, key) : ResumePoint{};
     viz::FrameInput input;
     input.scene = &scene;
@@ -69,6 +83,8 @@ viz::FrameOutput StageRunner::run(const viz::scene::Scene& scene, int width, int
     input.substep = cursor.substep;
     input.resumeAtStage = mResume.stage;
     input.substepOnly = mResume.substepOnly;
+    input.views = key.views;
+    mLastViews = key.views;
     mPrevious.reset();  // a run that throws leaves nothing to resume from
     viz::FrameOutput out = mTechnique->run(input);
     mPrevious = std::move(key);

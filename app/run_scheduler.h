@@ -13,6 +13,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "debug/technique.h"
 #include "scene/scene.h"
@@ -32,6 +33,7 @@ struct RunKey {
     int width = 0, height = 0;
     viz::Settings settings;  // complete
     StepCursor cursor;
+    std::vector<std::string> views;  // the on-demand intermediates asked for (FrameInput::views), sorted
 };
 
 struct ResumePoint {
@@ -42,7 +44,8 @@ struct ResumePoint {
 // Where a run with key `next` may start after the same instance's run with key `previous` computed
 // stages 0 .. previousLastStage (FrameOutput::lastStageRun; -1: it failed). Stage k's output stands when
 // the scene, the size and every parameter of stages 0 .. k are unchanged and the previous run finished
-// stage k whole (not stopped at an earlier sub-step of it). The run always computes the cursor's stage.
+// stage k whole (not stopped at an earlier sub-step of it), and asks for the same on-demand views of it
+// (StageInfo::onDemand). The run always computes the cursor's stage.
 ResumePoint resumePoint(const viz::Technique& technique, const RunKey& previous, int previousLastStage,
                         const RunKey& next);
 
@@ -53,9 +56,14 @@ public:
     const viz::Technique& technique() const { return *mTechnique; }
 
     // Runs the technique on `scene` (its camera included) at `width` x `height` with complete `settings`,
-    // stopping at `cursor`, resuming after the previous run where resumePoint allows.
+    // stopping at `cursor`, resuming after the previous run where resumePoint allows. `views`: the
+    // intermediates the caller shows; those the stages draw on demand are asked for.
     viz::FrameOutput run(const viz::scene::Scene& scene, int width, int height, const viz::Settings& settings,
-                         StepCursor cursor);
+                         StepCursor cursor, const std::vector<std::string>& views = {});
+    // The on-demand intermediates among `shown` (sorted, once each): what a run asked to show them draws.
+    std::vector<std::string> onDemandAmong(const std::vector<std::string>& shown) const;
+    // The on-demand views the last run drew.
+    const std::vector<std::string>& lastViews() const { return mLastViews; }
     // Where the last run started (for the status line and the tests).
     ResumePoint lastResume() const { return mResume; }
     // The next run starts from stage 0 (its textures were touched by someone else, a GL reset, ...).
@@ -66,6 +74,7 @@ private:
     std::optional<RunKey> mPrevious;
     int mPreviousLastStage = -1;
     ResumePoint mResume;
+    std::vector<std::string> mLastViews;
 };
 
 }  // namespace airlight

@@ -142,16 +142,16 @@ std::vector<ScriptAction> parseScript(const std::string& path) {
             if (w.size() != 2 || w[1].empty()) fail(w[0] + " takes one argument (quote it when it has spaces)");
             a.kind = w[0] == "type" ? ScriptAction::Kind::Type : ScriptAction::Kind::Drop;
             a.target = w[1];
-        } else if (w[0] == "screenshot") {
-            if (w.size() != 2) fail("screenshot takes one path");
-            a.kind = ScriptAction::Kind::Screenshot;
+        } else if (w[0] == "screenshot" || w[0] == "sidecar") {
+            if (w.size() != 2) fail(w[0] + " takes one path");
+            a.kind = w[0] == "screenshot" ? ScriptAction::Kind::Screenshot : ScriptAction::Kind::Sidecar;
             a.target = w[1];
         } else if (w[0] == "stats") {
             if (w.size() != 2) fail("stats takes one path");
             a.kind = ScriptAction::Kind::Stats;
             a.target = w[1];
         } else {
-            fail("unknown action '" + w[0] + "' (known: click, hover, drag, wheel, key, hold, type, drop, frames, screenshot, stats)");
+            fail("unknown action '" + w[0] + "' (known: click, hover, drag, wheel, key, hold, type, drop, frames, screenshot, sidecar, stats)");
         }
         actions.push_back(std::move(a));
     }

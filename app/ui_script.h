@@ -19,6 +19,7 @@
 //   drop PATH            drop a file on the window (as GLFW's drop callback does)
 //   frames N             let N frames pass
 //   screenshot PATH      write the window (PNG) and its sidecar JSON now
+//   sidecar PATH         write only the sidecar JSON (PATH with .json) now
 //   stats PATH           append one JSON line to PATH: frame, resident memory, open files, GL objects
 //                        our wrappers own and GL errors so far (process_stats.h; the soak test)
 #pragma once
@@ -31,7 +32,7 @@
 namespace airlight {
 
 struct ScriptAction {
-    enum class Kind { Click, Hover, Drag, Wheel, Key, Hold, Type, Drop, Frames, Screenshot, Stats };
+    enum class Kind { Click, Hover, Drag, Wheel, Key, Hold, Type, Drop, Frames, Screenshot, Sidecar, Stats };
     Kind kind = Kind::Frames;
     std::string target;          // widget / view name, key name or path
     glm::vec2 fraction{0.5f};    // click position within the target's rectangle

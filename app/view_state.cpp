@@ -40,8 +40,11 @@ void updateStatistics(ViewState& view) {
     view.measured.reset();
     view.histogram = {};
     if (view.values.empty()) return;
-    view.counts = countSpecial(view.values, view.meaningful);
-    const std::vector<float> values = channelValues(view.values, view.display.channel, view.meaningful);
+    std::vector<float> sentinels;
+    for (const viz::Sentinel& s : view.pane.sentinels) sentinels.push_back(s.value);
+    view.counts = countSpecial(view.values, view.meaningful, sentinels);
+    const std::vector<float> values =
+        withoutSentinels(channelValues(view.values, view.display.channel, view.meaningful), sentinels);
     view.finite = finiteRange(values);
     if (view.display.range == RangeMode::Percentiles) view.measured = percentileRange(values, 0.001, 0.999);
     else view.measured = view.finite;

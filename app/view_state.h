@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "colour_bar.h"
 #include "core/image.h"
 #include "pane_image.h"
 #include "report/error_metrics.h"
@@ -38,8 +39,15 @@ struct ViewState {
     std::string differenceNote;
     bool titleElided = false, noteElided = false;  // shortened to fit the last frame (sidecar)
 
+    // Its colour bar as last drawn, and the tiny images its ramp and legend swatches are drawn from (the
+    // values uploaded last, to upload only on change).
+    ColourBar colourBar;
+    PaneImage barRamp, barSwatches;
+    std::vector<float> barUploaded, swatchesUploaded;
+    std::vector<viz::ui::ImageViewTransform> swatchViews;
+
     // Where the last frame drew it (window pixels).
-    viz::ui::Rect cell, title, image, strip;
+    viz::ui::Rect cell, title, image, strip, bar, ramp;  // bar: the colour bar, ramp: its colour strip
 };
 
 // Reads the pane's texture back into `values` (rows flipped so row 0 is the top row shown) and

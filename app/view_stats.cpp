@@ -46,9 +46,38 @@ std::vector<float> channelValues(const viz::Image& image, Channel channel, int m
     return out;
 }
 
-SpecialCounts countSpecial(const viz::Image& image, int meaningful) {
-    const viz::PixelCensus c = viz::census(image, std::max(meaningful, 1));  // -Inf counts as Inf and negative
-    return {c.nan, c.inf, c.negative};
+SpecialCounts countSpecial(const viz::Image& image, int meaningful, const std::vector<float>& sentinels) {
+    SpecialCounts out;
+    out.sentinel.assign(sentinels.size(), 0);
+    if (sentinels.empty()) {
+        const viz::PixelCensus c = viz::census(image, std::max(meaningful, 1));  // -Inf counts as Inf and negative
+        out.nan = c.nan, out.inf = c.inf, out.negative = c.negative;
+        return out;
+    }
+    // The census of the image with its sentinel values set to 0, and each sentinel's pixels counted apart.
+    viz::Image cleaned = image;
+    const int n = std::clamp(meaningful, 1, std::max(image.channels, 1));
+    const std::size_t pixels = std::size_t(image.width) * std::size_t(image.height);
+    for (std::size_t p = 0; p < pixels; ++p) {
+        unsigned long long holds = 0;  // bit k: sentinel k (the first 64 are counted)
+        for (int c = 0; c < n; ++c) {
+            float& v = cleaned.pixels[p * std::size_t(image.channels) + std::size_t(c)];
+            for (std::size_t k = 0; k < sentinels.size(); ++k)
+                if (v == sentinels[k]) holds |= k < 64 ? 1ull << k : 0ull, v = 0.0f;
+        }
+        for (std::size_t k = 0; k < std::min<std::size_t>(sentinels.size(), 64); ++k) out.sentinel[k] += (holds >> k) & 1u;
+    }
+    const viz::PixelCensus c = viz::census(cleaned, n);
+    out.nan = c.nan, out.inf = c.inf, out.negative = c.negative;
+    return out;
+}
+
+std::vector<float> withoutSentinels(std::vector<float> values, const std::vector<float>& sentinels) {
+    if (sentinels.empty()) return values;
+    values.erase(std::remove_if(values.begin(), values.end(),
+                                [&](float v) { return std::find(sentinels.begin(), sentinels.end(), v) != sentinels.end(); }),
+                 values.end());
+    return values;
 }
 
 ValueRange finiteRange(const std::vector<float>& values) {

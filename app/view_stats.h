@@ -26,10 +26,15 @@ inline constexpr float kLuminance[3] = {0.2126f, 0.7152f, 0.0722f};
 std::vector<float> channelValues(const viz::Image& image, Channel channel, int meaningful);
 
 // Pixels with at least one NaN / Inf / negative value among their first `meaningful` channels.
+// Values equal to one of `sentinels` (a pane's "nothing here" values) are not counted as negative; each
+// sentinel's own count is the pixels holding it in one of those channels.
 struct SpecialCounts {
     std::size_t nan = 0, inf = 0, negative = 0;
+    std::vector<std::size_t> sentinel;  // one per sentinel value, in the order given
 };
-SpecialCounts countSpecial(const viz::Image& image, int meaningful);
+SpecialCounts countSpecial(const viz::Image& image, int meaningful, const std::vector<float>& sentinels = {});
+// `values` without the sentinel values (the range, the percentiles and the histogram leave them out).
+std::vector<float> withoutSentinels(std::vector<float> values, const std::vector<float>& sentinels);
 
 struct ValueRange {
     float lo = 0.0f, hi = 1.0f;

@@ -64,7 +64,8 @@ bool GuiApp::stepScript() {
                 return true;
             }
             case ScriptAction::Kind::Screenshot:
-                writeScreenshot(a.target);
+            case ScriptAction::Kind::Sidecar:
+                writeScreenshot(a.target, a.kind == ScriptAction::Kind::Screenshot);
                 ++mScriptIndex;
                 break;
             case ScriptAction::Kind::Type:
@@ -139,7 +140,12 @@ bool GuiApp::stepScript() {
     return false;
 }
 
-void GuiApp::writeScreenshot(const std::string& path) {
+void GuiApp::writeScreenshot(const std::string& path, bool image) {
+    if (image) writeWindowImage(path);
+    writeSidecar(path);
+}
+
+void GuiApp::writeWindowImage(const std::string& path) {
     const glm::ivec2 fb = mWindow.framebufferSize();
     std::vector<std::uint8_t> bytes(std::size_t(fb.x) * std::size_t(fb.y) * 4);
     glReadBuffer(GL_BACK);
@@ -155,6 +161,10 @@ void GuiApp::writeScreenshot(const std::string& path) {
                 image.at(x, y, c) = v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f);
             }
     viz::writeImage(image, path);
+}
+
+void GuiApp::writeSidecar(const std::string& path) {
+    const glm::ivec2 fb = mWindow.framebufferSize();
     nlohmann::json views = nlohmann::json::array();
     for (const auto& v : mViewRects) {
         nlohmann::json entry = {{"name", v.name}, {"title", v.title},
@@ -268,17 +278,39 @@ nlohmann::json GuiApp::viewSidecar(int id, const ViewState& v) {
                         {"center", {v.transform.center.x, v.transform.center.y}},
                         {"size", {v.pane.size.x, v.pane.size.y}},
                         {"screen_space", isScreenSpace(v)},
-                        {"display", {{"channel", channelNames()[std::size_t(d.channel)]},
+                        {"display", {{"channel", channelChoices(v.pane)[std::size_t(d.channel)]},
                                      {"range", rangeModeNames()[std::size_t(d.range)]},
                                      {"lo", m.lo}, {"hi", m.hi}, {"log", d.logScale},
                                      {"colour_map", colourMapNames()[std::size_t(d.colourMap)]},
                                      {"mode", int(m.mode)}, {"mark_negative", m.markNegative},
                                      {"strip_open", d.stripOpen}}},
+                        {"plots", v.pane.plots.size()},
                         {"title_elided", v.titleElided},
                         {"note_elided", v.noteElided},
                         {"negative_pixels", v.counts.negative},
                         {"nan_pixels", v.counts.nan},
                         {"inf_pixels", v.counts.inf}};
+    if (v.colourBar.kind != ColourBar::Kind::None) {
+        // What the bar under the view says, as drawn in the last frame (non-finite numbers as null).
+        const auto number = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
+        const ColourBar& b = v.colourBar;
+        nlohmann::json bar = {{"kind", b.kind == ColourBar::Kind::Ramp ? "ramp" : "classes"},
+                              {"lo", number(b.lo)}, {"hi", number(b.hi)}, {"log", b.logarithmic},
+                              {"units", b.units}, {"caption", b.caption},
+                              {"rect", {v.bar.min.x, v.bar.min.y, v.bar.max.x, v.bar.max.y}},
+                              {"ramp_rect", {v.ramp.min.x, v.ramp.min.y, v.ramp.max.x, v.ramp.max.y}}};
+        nlohmann::json ticks = nlohmann::json::array(), at = nlohmann::json::array();
+        for (std::size_t i = 0; i < b.ticks.size(); ++i) ticks.push_back(number(b.ticks[i])), at.push_back(b.tickAt[i]);
+        bar["ticks"] = ticks;
+        bar["tick_labels"] = b.tickLabels;
+        bar["tick_at"] = at;
+        if (b.kind == ColourBar::Kind::Classes) bar["classes"] = b.classLabels;
+        nlohmann::json legend = nlohmann::json::array();
+        for (const LegendSwatch& sw : b.legend)
+            legend.push_back({{"label", sw.label}, {"value", number(sw.value)}, {"pixels", sw.pixels}, {"sentinel", sw.sentinel}});
+        bar["legend"] = legend;
+        j["colour_bar"] = std::move(bar);
+    }
     if (d.difference != DifferenceMode::Off) {
         // Figures only where they were computed and are defined (relative L2 is not against a black
         // reference); the note says why one is missing.

@@ -6,6 +6,13 @@ namespace airlight {
 
 int GuiApp::contentCount() const { return 2 + int(mOutput.intermediates.size()); }
 
+std::vector<std::string> GuiApp::shownContents() const {
+    std::vector<std::string> shown;
+    for (int id : mLayout.views())
+        if (const auto it = mViews.find(id); it != mViews.end()) shown.push_back(it->second.content);
+    return shown;
+}
+
 std::string GuiApp::contentId(int index) const {
     return index == 0 ? "final" : index == 1 ? "airlight" : mOutput.intermediates[std::size_t(index - 2)].id;
 }
@@ -24,6 +31,7 @@ bool GuiApp::isScreenSpace(const ViewState& v) const {
 }
 
 void GuiApp::buildPane(ViewState& v) {
+    const std::string before = v.pane.id;
     v.pane = {};
     v.error.reset();
     v.differenceNote.clear();
@@ -42,11 +50,25 @@ void GuiApp::buildPane(ViewState& v) {
         }
         if (index < 0) content = "airlight";  // not in this run: L_air (the choice is kept for later runs)
     }
-    // Stepped to a stage before L_air exists: show what that stage published instead.
+    // Stepped to a stage before the final frame or L_air exists: show what that stage published instead
+    // (preferring what no other view shows), rather than an empty "(not produced by this run)" pane.
+    if (content == "final" && mOutput.final.empty() && mOutput.lastStageRun >= 0) content = "airlight";
     if (content == "airlight" && mOutput.airlight.empty() && mOutput.lastStageRun >= 0) {
         const auto& declared = technique().stages()[std::size_t(mOutput.lastStageRun)].intermediates;
-        for (int i = int(all.size()) - 1; i >= 0; --i)
-            if (std::find(declared.begin(), declared.end(), all[std::size_t(i)].id) != declared.end()) index = i;
+        std::vector<std::string> others;
+        for (int id : mLayout.views())
+            if (const auto it = mViews.find(id); it != mViews.end() && &it->second != &v) {
+                others.push_back(it->second.content);
+                others.push_back(it->second.pane.id);  // what it shows in its stead (built before this one)
+            }
+        int first = -1, unshown = -1;
+        for (int i = 0; i < int(all.size()); ++i) {
+            const std::string& id = all[std::size_t(i)].id;
+            if (std::find(declared.begin(), declared.end(), id) == declared.end()) continue;
+            if (first < 0) first = i;
+            if (unshown < 0 && std::find(others.begin(), others.end(), id) == others.end()) unshown = i;
+        }
+        index = unshown >= 0 ? unshown : first;
         if (index >= 0) content = all[std::size_t(index)].id;
     }
     if (index >= 0) v.index = index;
@@ -71,6 +93,11 @@ void GuiApp::buildPane(ViewState& v) {
         makePane(v.pane, all[std::size_t(index)], v.layer);
         v.layer = v.pane.layer;
     }
+    // A view that moves to other content starts on that content's channel (a multi-quantity pane: its
+    // first quantity); one restored or re-run keeps the channel it has, unless that shows nothing here.
+    const bool unusable = !v.pane.channelInfo.empty() && v.display.channel != Channel::Rgb &&
+                          !declaredChannel(v.pane, v.display.channel);
+    if ((!before.empty() && before != v.pane.id) || unusable) v.display.channel = defaultChannel(v.pane);
     if (v.display.difference != DifferenceMode::Off && (content == "final" || content == "airlight"))
         makeDifference(v, content);
     else if (v.display.difference != DifferenceMode::Off)

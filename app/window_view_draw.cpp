@@ -76,8 +76,12 @@ void GuiApp::layoutCell(ViewState& v, const Rect& cell) {
         if (cell.size().x < kStripSideBySide * s) wanted += kHistogramHeight * s;
         stripHeight = std::min(wanted, 0.6f * (cell.size().y - v.title.size().y - readout));
     }
-    const Rect imageArea{{cell.min.x, v.title.max.y}, {cell.max.x, cell.max.y - readout - stripHeight}};
+    // The colour bar goes under the image when the cell leaves the image most of its height.
+    float barHeight = colourBarHeight(v);
+    if (barHeight > 0.25f * (cell.size().y - v.title.size().y - readout - stripHeight)) barHeight = 0.0f;
+    const Rect imageArea{{cell.min.x, v.title.max.y}, {cell.max.x, cell.max.y - readout - stripHeight - barHeight}};
     v.image = v.pane.plots.empty() ? fitImage(imageArea, v.pane.size) : imageArea;  // plots take the whole area
+    v.bar = barHeight > 0.0f ? Rect{{cell.min.x, v.image.max.y + 2.0f * s}, {cell.max.x, v.image.max.y + barHeight}} : Rect{};
     v.strip = stripHeight > 0.0f ? Rect{{cell.min.x, cell.max.y - stripHeight}, cell.max} : Rect{};
 }
 
@@ -155,8 +159,12 @@ std::pair<std::string, std::string> GuiApp::viewTitle(const ViewState& v) const 
         note = "surface radiance * exp(-sigma_t d) + L_air   (exposure " + format("%+.1f EV)", mExposure);
     const DisplayMapping m = resolveMapping(v.pane, v.display, mExposure, v.measured);
     if (m.mode != DisplayMode::HdrColor) {
+        // A multi-quantity pane names the channel shown, with that quantity's units.
+        const viz::ChannelInfo* declared = declaredChannel(v.pane, v.display.channel);
+        const std::string& units = declared ? declared->units : v.pane.units;
         note += "   [" + format("%.4g", m.lo) + ", " + format("%.4g", m.hi) + "]" + (v.display.logScale ? " log" : "") +
-                (v.pane.units.empty() ? "" : " " + v.pane.units) + ", " + viz::viewKindName(v.pane.kind);
+                (units.empty() ? "" : " " + units) + ", " +
+                (declared ? "showing " + declared->name : std::string(viz::viewKindName(v.pane.kind)));
     }
     if (v.error) {
         const auto figure = [](double x) { return std::isfinite(x) ? format("%.3g", x) : std::string("n/a"); };
@@ -253,8 +261,9 @@ void GuiApp::drawView(int id, ViewState& v) {
     markProbe(dl, v);
     drawGizmo(dl, id, v);
 
+    drawColourBar(id, v);
     // The value under the cursor (or at the linked pixel), from the view's CPU copy.
-    const glm::vec2 readoutAt{v.image.min.x, v.image.max.y + 3.0f * s};
+    const glm::vec2 readoutAt{v.image.min.x, std::max(v.image.max.y, v.bar.max.y) + 3.0f * s};
     if (readAt) {
         glm::vec4 value(0.0f);
         if (!valueAt(v, *readAt, value)) {
@@ -431,7 +440,7 @@ void GuiApp::drawStrip(int id, ViewState& v) {
     const DisplaySettings before = d;
     mUi->beginPanel(tag, widgets);
     int channel = int(d.channel), range = int(d.range), map = int(d.colourMap), difference = int(d.difference);
-    if (mUi->combo("channel" + tag, channel, channelNames())) d.channel = Channel(channel);
+    if (mUi->combo("channel" + tag, channel, channelChoices(v.pane))) d.channel = Channel(channel);
     if (mUi->combo("range" + tag, range, rangeModeNames())) {
         if (RangeMode(range) == RangeMode::Manual) {
             // Manual starts from what is shown now.
@@ -472,7 +481,7 @@ void GuiApp::drawHistogram(const ViewState& v, const Rect& area) {
     if (area.size().x < 80.0f * mScale || area.size().y < 4.0f * mFont->lineHeight()) return;
     const Histogram& h = v.histogram;
     viz::plot::PlotSpec spec;
-    spec.title = "histogram, " + channelNames()[std::size_t(v.display.channel)] +
+    spec.title = "histogram, " + channelChoices(v.pane)[std::size_t(v.display.channel)] +
                  (v.values.empty() ? " (no values)" : ", % of values per bin");
     spec.logX = h.logarithmic;
     const auto edge = [&](std::size_t i) {

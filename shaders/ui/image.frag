@@ -3,7 +3,9 @@
 // intermediate mapped from the range [uRange.x, uRange.y] (linear or log10) to grey or a colour map.
 // Texels are fetched without filtering, so the internal resolution is upscaled nearest-neighbour.
 // NaN shows magenta, +-Inf cyan, and (when asked) negative values green, so that each stands out on
-// every colour map. Integer and depth textures arrive here converted to float.
+// every colour map. Values the intermediate declares as sentinels ("nothing here": -1 outside a spot's
+// cone, say) show as grey diagonal stripes and are never marked negative. Integer and depth textures
+// arrive here converted to float.
 layout(binding = 0) uniform sampler2D uImage;
 
 // Display modes, mirrored by DisplayMode in app/pane_image.h.
@@ -28,6 +30,8 @@ uniform bool uFlipY;      // GL-rendered textures keep row 0 at the bottom
 uniform int uChannels;    // meaningful channels; a single channel shows as grey in the colour modes
 uniform vec4 uView;       // pan and zoom (ui/image_view.h): image uv = uView.xy + (pane - 0.5) / uView.z
 uniform float uTexelPixels;  // screen pixels per texel: a grid is drawn between texels above 8
+uniform vec4 uSentinels;     // the pane's sentinel values (PaneImage::sentinels), the first uSentinelCount
+uniform int uSentinelCount;
 
 in vec2 vPane;
 out vec4 fragColor;
@@ -71,6 +75,17 @@ vec3 hashColor(uint v) {
 
 bool anyOf(bvec4 a, bvec4 mask) { return any(bvec4(uvec4(a) & uvec4(mask))); }
 
+bool isSentinel(float x) {
+    for (int k = 0; k < uSentinelCount; ++k)
+        if (x == uSentinels[k]) return true;
+    return false;
+}
+
+// The sentinel hatch: grey diagonal stripes 3 pixels wide, fixed to the screen.
+vec3 sentinelHatch() {
+    return mod(floor((gl_FragCoord.x + gl_FragCoord.y) / 3.0), 2.0) < 1.0 ? vec3(0.36, 0.35, 0.40) : vec3(0.17, 0.16, 0.20);
+}
+
 // Position of x in the range, unclamped (mirrors mapToUnit in app/view_stats.cpp).
 float unit(float x) {
     float span = max(uRange.y - uRange.x, 1e-30);
@@ -103,7 +118,8 @@ void main() {
         fragColor = vec4(0.0, 1.0, 1.0, 1.0);
         return;
     }
-    if (uMarkNegative && anyOf(lessThan(v, vec4(0.0)), meaningful)) {
+    bvec4 sentinel = bvec4(isSentinel(v.r), isSentinel(v.g), isSentinel(v.b), isSentinel(v.a));
+    if (uMarkNegative && anyOf(bvec4(uvec4(lessThan(v, vec4(0.0))) & uvec4(not(sentinel))), meaningful)) {
         fragColor = vec4(0.3, 1.0, 0.2, 1.0);
         return;
     }
@@ -112,6 +128,10 @@ void main() {
         v.rgb = vec3(v[uChannel - 1]);
     } else if (uChannel == 5) {
         v.rgb = vec3(dot(v.rgb, vec3(0.2126, 0.7152, 0.0722)));
+    }
+    if (uMode != kHdrColor && isSentinel(v.r)) {
+        fragColor = vec4(sentinelHatch(), 1.0);
+        return;
     }
     uvec4 raw = uvec4(max(v, 0.0));
     float t = unit(v.r);

@@ -293,6 +293,8 @@ TEST_F(GuiCli, TheRayInspectorShowsTheValuesAirlightRenderGivesAtThatPixel) {
     const auto& in = j.at("inspector");
     const int x = in.at("pixel")[0].get<int>(), y = in.at("pixel")[1].get<int>();
     EXPECT_EQ(x, 20);  // the middle column of 40
+    // The light gizmo would cover the inspected pixel: it is hidden while the inspector is open.
+    EXPECT_TRUE(j.at("gizmo").is_null()) << j.at("gizmo");
     // The same pixel from the command line: the reference and the technique, rendered on their own.
     ASSERT_EQ(run("render --scene grate --technique reference --size 40x30 --layer airlight --out " +
                   path("ref.exr").string()).exitCode, 0);

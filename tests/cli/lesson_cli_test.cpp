@@ -9,6 +9,7 @@
 #include <string>
 
 #include "cli/cli_fixture.h"
+#include "core/image_io.h"
 #include "techniques/registry.h"
 
 namespace viz::testing {
@@ -41,12 +42,37 @@ TEST_F(CliTest, EveryLessonExportsAPageWithAllItsImages) {
         ASSERT_EQ(r.exitCode, 0) << name << ": " << r.err;
         const std::string page = readFile(out / "index.html");
         // Every image the page names exists, and there is at least one per step.
-        const std::regex img("<img src=\"([^\"]+)\"");
+        const std::regex img("<img src=\"([^\"]+)\" alt=\"([^\"]+)\" width=\"([0-9]+)\" height=\"([0-9]+)\"([^>]*)>");
         int images = 0;
         for (auto it = std::sregex_iterator(page.begin(), page.end(), img); it != std::sregex_iterator(); ++it) {
             ++images;
-            EXPECT_TRUE(fs::exists(out / (*it)[1].str())) << name << ": " << (*it)[1].str();
+            const std::string file = (*it)[1].str(), view = (*it)[2].str(), rest = (*it)[5].str();
+            ASSERT_TRUE(fs::exists(out / file)) << name << ": " << file;
+            // The figure is what the window draws: at least 480 px wide (a very tall map is scaled down
+            // to fit the height instead), the size the page says.
+            const Image png = readImage((out / file).string());
+            EXPECT_EQ(png.width, std::stoi((*it)[3].str())) << name << ": " << file;
+            EXPECT_EQ(png.height, std::stoi((*it)[4].str())) << name << ": " << file;
+            if (rest.find("data-texel-scale=\"0\"") == std::string::npos) {
+                EXPECT_GE(png.width, 480) << name << ": " << file;
+            }
+            // minmax's singular values and basis functions are plots in the window: plots here too, with
+            // the curves the plot writer says it drew.
+            if (view == "minmax.singular_values" || view == "minmax.basis") {
+                EXPECT_NE(rest.find("class=\"plot\""), std::string::npos) << name << ": " << view;
+                const std::size_t at = rest.find("data-series=\"");
+                ASSERT_NE(at, std::string::npos) << name << ": " << view;
+                EXPECT_GE(std::stoi(rest.substr(at + 13)), 1) << name << ": " << view;
+            }
         }
+        // Every figure says what its colours mean (range, units, exposure or plot titles).
+        const std::regex caption("<span class=\"range\">([^<]*)</span>");
+        int captions = 0;
+        for (auto it = std::sregex_iterator(page.begin(), page.end(), caption); it != std::sregex_iterator(); ++it) {
+            ++captions;
+            EXPECT_FALSE((*it)[1].str().empty()) << name;
+        }
+        EXPECT_EQ(captions, images) << name;
         // Settings are shown as the prose names them: a parameter with named values never as a number.
         // (A plain scan: std::regex recurses per character and overflows the stack on a whole page.)
         int namedShown = 0;

@@ -103,3 +103,30 @@ TEST_F(MeshViewRender, PolyvolAndSlicesDrawTheirMeshesWithTheCameraAndLight) {
     const viz::FrameOutput plain = render(scene, "slices", {{"planes", 16}}, 160, 120);
     EXPECT_EQ(plain.airlight.pixels, slices.airlight.pixels);
 }
+
+// Shown, polyvol's light volume mesh has a picture without any setting: asked for as a view
+// (FrameInput::views, as the window does for the views in its grid), the volume stage draws the orbit
+// view; not asked for, it draws nothing (the report's timed runs pay nothing for it). The airlight is
+// the same either way.
+TEST_F(MeshViewRender, PolyvolDrawsItsOrbitViewWhenTheCallerShowsTheMesh) {
+    const viz::scene::Scene scene = viz::scene::makeBuiltinScene("grate");
+    auto polyvol = viz::makeTechnique("polyvol");
+    viz::FrameInput in{&scene, 160, 120, viz::completeSettings(*polyvol, {{"shadow_map", 64}}), -1};
+    const viz::FrameOutput plain = polyvol->run(in);
+    const viz::Intermediate* bare = find(plain, "polyvol.mesh");
+    ASSERT_TRUE(bare);
+    EXPECT_EQ(bare->glTexture, 0u);
+    EXPECT_EQ(bare->kind, viz::ViewKind::Mesh);
+    const viz::Image airlight = plain.airlight;
+
+    in.views = {"polyvol.mesh"};
+    const viz::FrameOutput shown = polyvol->run(in);
+    const viz::Intermediate* mesh = find(shown, "polyvol.mesh");
+    ASSERT_TRUE(mesh && mesh->glTexture != 0);
+    EXPECT_TRUE(mesh->orbit);
+    const viz::Image picture = viz::gl::readTexture(mesh->glTexture);
+    EXPECT_GT(pixelsNear(picture, {0.35f, 0.65f, 1.0f}), 10) << "the camera frustum";
+    EXPECT_GT(pixelsNear(picture, {0.9f, 0.15f, 0.1f}), 20) << "faces where rays enter the volume";
+    EXPECT_NE(mesh->note.find("this view is shown"), std::string::npos) << mesh->note;
+    EXPECT_EQ(shown.airlight.pixels, airlight.pixels);
+}

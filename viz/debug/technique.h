@@ -49,6 +49,10 @@ struct StageInfo {
     // value is the number of sub-steps when that depends on the settings (else `substeps`).
     std::string substepParam{};
     std::string substepCountParam{};
+    // Intermediates the stage draws only for a caller that shows them (FrameInput::views), beyond what
+    // its settings ask for: polyvol's orbit view of its light volume mesh, say. Drawing one costs time
+    // inside the stage, so a caller that does not show it (the report) does not pay for it.
+    std::vector<std::string> onDemand{};
 };
 
 // A plot a technique publishes with an intermediate (singular values, basis functions, per-plane values
@@ -64,6 +68,25 @@ struct PlotData {
     std::string title, xLabel, yLabel;
     bool logX = false, logY = false;
     std::vector<PlotCurve> curves;
+};
+
+// A value an intermediate stores to mean "nothing here" rather than a measurement (minmax's -1 outside
+// the spot's cone, vsv's -1 for "no occluder", 0 for a hole in an ISM): the window shows it in the
+// sentinel hatch with its meaning in the colour bar's legend, and leaves it out of the value range, the
+// histogram and the NaN / Inf / negative counts. It applies to every channel of the intermediate.
+struct Sentinel {
+    float value = 0.0f;
+    std::string meaning;  // "outside the spot's cone"
+};
+
+// One quantity of an intermediate that packs several into its channels (polyvol's crossings: faces
+// crossed, signed count, clamped faces): the window shows one channel at a time, picked by name, with
+// its own units, range and colour map.
+struct ChannelInfo {
+    std::string name;   // "faces crossed"
+    std::string units;  // "count"
+    ViewKind kind = ViewKind::Scalar;
+    float rangeMin = 0.0f, rangeMax = 1.0f;
 };
 
 // A published intermediate: either a CPU image or a GL texture owned by the technique (valid until the
@@ -87,6 +110,10 @@ struct Intermediate {
     // Shows the picked pixel's ray (the technique's pick_x / pick_y): a walk, a voxel column, per-VPL
     // terms, the planes along it. The ray inspector lists these by id.
     bool rayView = false;
+    std::vector<Sentinel> sentinels{};
+    // Empty: the channels are one quantity (a colour, or a scalar in r). Else channel i (r, g, b, a) is
+    // channels[i]; the window starts on the first.
+    std::vector<ChannelInfo> channels{};
 };
 
 using Settings = std::map<std::string, double>;
@@ -152,6 +179,8 @@ struct FrameInput {
     // what it did.
     int resumeAtStage = 0;
     bool substepOnly = false;
+    // The on-demand intermediates (StageInfo::onDemand) the caller will show.
+    std::vector<std::string> views{};
 };
 
 struct FrameOutput {

@@ -76,7 +76,7 @@ void SceneViewPasses::renderSurface(const scene::Scene& scene, int width, int he
     mSurfaceCurrent = true;
     out.push_back(textureIntermediate(prefix + ".distance", "Distance d",
                                       "Euclidean distance to the first surface along the pixel ray (zfar: sky)",
-                                      "scene units", ViewKind::Scalar, 0.0f, float(scene.camera.zfar),
+                                      "scene units", ViewKind::Depth, 0.0f, float(scene.camera.zfar),
                                       mSurface->distance()));
     out.push_back(textureIntermediate(prefix + ".surface", "Surface radiance",
                                       "emission + Lambert with shadow maps, before the medium's attenuation",

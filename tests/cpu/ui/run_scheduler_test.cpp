@@ -20,7 +20,7 @@ public:
         mParams = {{"a", "", 1, 0, 100, true},  {"b", "", 2, 0, 100, true},  {"c", "", 3, 0, 100, true},
                    {"step", "", 0, 0, 4, true}, {"look", "", 0, 0, 1, true}};
         mStages = {{"fake.a", "A", "", {"a"}, {"fake.a"}, 1},
-                   {"fake.b", "B", "", {"b"}, {"fake.b"}, 1},
+                   {"fake.b", "B", "", {"b"}, {"fake.b", "fake.b_view"}, 1, "", "", {"fake.b_view"}},
                    {"fake.c", "C", "", {"c", "step"}, {"fake.c"}, 5, "step"},
                    {"fake.d", "D", "", {}, {"fake.d"}, 1}};
     }
@@ -129,6 +129,24 @@ TEST(RunScheduler, AParameterOfStageThreeRerunsFromStageThree) {
     // A parameter no stage declares: everything (nothing can be vouched for).
     f.run(f.settings({{"c", 8}, {"b", 5}, {"look", 1}}), {});
     EXPECT_EQ(f.counted(), (Counts{1, 1, 1, 1}));
+}
+
+// A view stage b draws only on demand: showing it (or no longer showing it) re-runs from stage b; other
+// views shown or hidden change nothing.
+TEST(RunScheduler, ShowingAnOnDemandViewRerunsFromTheStageThatDrawsIt) {
+    Fixture f;
+    f.runner.run(f.scene, 4, 3, f.settings(), {});
+    f.counted();
+    EXPECT_EQ(f.runner.onDemandAmong({"final", "fake.b_view", "fake.c", "fake.b_view"}),
+              (std::vector<std::string>{"fake.b_view"}));
+    f.runner.run(f.scene, 4, 3, f.settings(), {}, {"final", "fake.b_view"});
+    EXPECT_EQ(f.counted(), (Counts{0, 1, 1, 1}));
+    EXPECT_EQ(f.runner.lastViews(), (std::vector<std::string>{"fake.b_view"}));
+    f.runner.run(f.scene, 4, 3, f.settings(), {}, {"fake.b_view", "fake.c"});
+    EXPECT_EQ(f.counted(), (Counts{0, 0, 0, 1}));  // the same on-demand view: only the last stage, as always
+    f.runner.run(f.scene, 4, 3, f.settings(), {}, {"fake.c"});
+    EXPECT_EQ(f.counted(), (Counts{0, 1, 1, 1}));
+    EXPECT_TRUE(f.runner.lastViews().empty());
 }
 
 TEST(RunScheduler, ASceneEditRerunsEverything) {

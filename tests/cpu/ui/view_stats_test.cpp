@@ -48,6 +48,20 @@ TEST(ViewStats, SpecialPixelsAreCountedOncePerPixelOverTheMeaningfulChannels) {
     EXPECT_EQ(countSpecial(image, 1).negative, 2u);  // -Inf and -2 in red
 }
 
+TEST(ViewStats, SentinelValuesAreCountedApartAndNeverAsNegative) {
+    // -1 and 4 are sentinels: a pixel holding one is counted under it (once, whatever channels hold it),
+    // and a negative that is not a sentinel still counts.
+    const viz::Image image = rgba({{-1, 2, 0, 1}, {-1, -1, 4, 1}, {-2, 0, 0, 1}, {1, 1, 1, -1}, {kNaN, -1, 0, 1}});
+    const SpecialCounts c = countSpecial(image, 3, {-1.0f, 4.0f});
+    EXPECT_EQ(c.negative, 1u);  // the -2 only; alpha is not meaningful here
+    EXPECT_EQ(c.nan, 1u);
+    ASSERT_EQ(c.sentinel.size(), 2u);
+    EXPECT_EQ(c.sentinel[0], 3u);  // pixels 0, 1 and 4
+    EXPECT_EQ(c.sentinel[1], 1u);
+    EXPECT_EQ(countSpecial(image, 3).negative, 4u);  // without sentinels every -1 is negative
+    EXPECT_EQ(withoutSentinels({-1, 0.5f, 4, 3, -1}, {-1.0f, 4.0f}), (std::vector<float>{0.5f, 3}));
+}
+
 TEST(ViewStats, RangesSkipNonFiniteValues) {
     const std::vector<float> values = {3, kNaN, -2, kInf, 7, -kInf};
     const ValueRange r = finiteRange(values);

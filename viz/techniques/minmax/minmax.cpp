@@ -30,6 +30,11 @@
 namespace viz {
 namespace {
 
+// The two values S stores that are not an occluder's beta.
+std::vector<Sentinel> outsideAndUnblocked() {
+    return {{minmax::kOutsideCone, "outside the spot's cone"}, {minmax::kUnblocked, "unblocked light ray"}};
+}
+
 using minmax::LightKind;
 
 // ---- ids (stable: lessons and tests use them) ----
@@ -804,6 +809,7 @@ private:
             kRectified, "Rectified shadow map S", "rows: slices alpha; columns: light rays gamma; value: beta of the "
             "occluder (4 = unblocked, -1 = outside the cone)", "radians", ViewKind::Scalar, 0.0f,
             float(std::numbers::pi), w.rectified));
+        out.intermediates.back().sentinels = outsideAndUnblocked();
         const gl::Texture& t = w.rectified;
         auto img = std::make_shared<Image>(minmax::rectifiedView([&](int r) { return readRow(t, r, 1); }, t.size().x,
                                                                  t.size().y, pickedRow(input)));
@@ -873,6 +879,9 @@ private:
             kTree, "Min-max mipmaps", "row = slice, x = Ahnentafel node (1 = root, leaves at columns..2 columns-1); "
             "r = min, g = max of S below the node", "radians", ViewKind::Color, 0.0f, float(std::numbers::pi),
             w.tree));
+        out.intermediates.back().sentinels = outsideAndUnblocked();
+        out.intermediates.back().channels = {{"min S below the node", "radians", ViewKind::Scalar, 0.0f, float(std::numbers::pi)},
+                                             {"max S below the node", "radians", ViewKind::Scalar, 0.0f, float(std::numbers::pi)}};
         out.intermediates.push_back(minmax::imageIntermediate(
             kPyramid, "Min-max pyramid, picked row",
             "level 0 (root) at the top; each band: min (upper half), max (lower half) as beta / pi; blue = level "
@@ -893,6 +902,12 @@ private:
         out.intermediates.push_back(render::textureIntermediate(
             kRayCoords, "Ray coordinates", "first epipolar light: (slice row, beta, end column cEnd, d) per pixel",
             "", ViewKind::Color, 0.0f, 1.0f, mRayCoords));
+        const glm::ivec3 map = mWork.empty() ? glm::ivec3(1) : mWork.front().rectified.size();  // columns x slices
+        out.intermediates.back().channels = {
+            {"slice row", "rows", ViewKind::Scalar, 0.0f, float(std::max(1, map.y))},
+            {"beta", "radians", ViewKind::Scalar, 0.0f, float(std::numbers::pi)},
+            {"end column cEnd", "columns", ViewKind::Scalar, 0.0f, float(std::max(1, map.x))},
+            {"distance d", "scene units", ViewKind::Depth, 0.0f, float(input.scene->camera.zfar)}};
         if (mWork.empty() || input.scene->medium.sigma_s == 0.0) return;
         // The picked ray against its row's heightfield (Figure 4), from the GPU's own (row, beta, cEnd).
         const LightWork& w = mWork.front();

@@ -97,12 +97,12 @@ public:
              true},
             {"origin", "eye: each crossing adds +-L(0, x); surface: -+L(x, d), plus c L(0, d) once per pixel "
              "(crossings clamped to d add exactly 0)", 0, 0, 1, true, {"eye", "surface"}},
-            {"wireframe", "also draw the volume mesh as a wireframe (polyvol.mesh): 1 from the camera, 2 from the "
-             "first 2D light, 3 from an orbit camera of its own (mesh_yaw, mesh_pitch, mesh_zoom) with the scene, "
-             "the camera frustum and the lights", 0, 0, 3, true},
-            {"mesh_yaw", "wireframe=3: orbit camera's angle about the vertical (degrees)", 35, -360, 360, false},
-            {"mesh_pitch", "wireframe=3: orbit camera's angle above the horizon (degrees)", 25, -89, 89, false},
-            {"mesh_zoom", "wireframe=3: orbit camera's zoom (1 fits the scene and the camera)", 1, 0.05, 50, false},
+            {"wireframe", "also draw the volume mesh as a wireframe (polyvol.mesh): camera (from the camera), light "
+             "(from the first 2D light), orbit (from an orbit camera of its own: mesh_yaw, mesh_pitch, mesh_zoom; with "
+             "the scene, the camera frustum and the lights)", 0, 0, 3, true, {"off", "camera", "light", "orbit"}},
+            {"mesh_yaw", "wireframe=orbit: orbit camera's angle about the vertical (degrees)", 35, -360, 360, false},
+            {"mesh_pitch", "wireframe=orbit: orbit camera's angle above the horizon (degrees)", 25, -89, 89, false},
+            {"mesh_zoom", "wireframe=orbit: orbit camera's zoom (1 fits the scene and the camera)", 1, 0.05, 50, false},
             {"stop_level", "adaptive stepping: quads of this level are not refined further (-1: refine fully)", -1, -1,
              13, true},
             {"cookie_mask", "cookie texels darker than this (brightest channel, linear) close the volume", 1.0 / 512.0,
@@ -118,7 +118,7 @@ public:
              {"tessellation", "airlight", "threshold", "spot_pieces", "crack_check", "draw_triangles", "origin",
               "wireframe", "mesh_yaw", "mesh_pitch", "mesh_zoom", "stop_level", "cookie_mask", "force_features"},
              {kEdgeMap, kTessLevels, kMesh, kCrossings, kPositive, kNegative, kTotal, kCracks, kLut, kLutError},
-             1, "stop_level"},
+             1, "stop_level", "", {kMesh}},
             render::SceneViewPasses::composeStage("polyvol"),
         };
     }
@@ -303,6 +303,10 @@ public:
         out.plan = plan(scene, s);
         out.timing.clock = gl::StageClock::method();
         const int stop = input.stopAfterStage < 0 ? kComposeIndex : input.stopAfterStage;
+        // The light volume mesh view: as `wireframe` says, or (wireframe=off) from the orbit camera when
+        // the caller shows polyvol.mesh, so that the view always has a picture.
+        mWireMode = int(s.at("wireframe"));
+        if (mWireMode == 0 && std::find(input.views.begin(), input.views.end(), kMesh) != input.views.end()) mWireMode = 3;
         gl::StageClock clock;
 
         mMarkZfar = scene.camera.zfar;
@@ -336,6 +340,8 @@ public:
                 "s = tau_h / (1 + tau_h) (left edge: the foot point), y: log tau_h (1e-9 .. 200; below: closed "
                 "form), g = " + std::to_string(scene.medium.g) + ", built in " + std::to_string(mLutMs) + " ms",
                 "", ViewKind::Color, 0.0f, 2.0f, mLut));
+            out.intermediates.back().channels = {{"A (near side)", "", ViewKind::Scalar, 0.0f, 2.0f},
+                                                 {"B (far side)", "", ViewKind::Scalar, 0.0f, 2.0f}};
             const float worst = lutError(input);
             out.intermediates.push_back(render::textureIntermediate(
                 kLutError, "Lookup table error",
@@ -566,7 +572,7 @@ private:
         const int n = mView.shadows().size();
         // wireframe=3: the mesh from an orbit camera of its own, over the scene, the camera frustum and
         // the lights (render::MeshView); set up before the volume pass's state.
-        if (int(s.at("wireframe")) == 3)
+        if (mWireMode == 3)
             mMeshView.begin(scene, mView.gpuScene(),
                             {s.at("mesh_yaw"), s.at("mesh_pitch"), s.at("mesh_zoom")}, input.width, input.height);
         // Each light's ball radius, before the volume pass's state: nearRadius runs a compute pass.
@@ -609,7 +615,7 @@ private:
         glBlendFunc(GL_ONE, GL_ONE);
         const std::int64_t limit = std::int64_t(s.at("draw_triangles"));
         const bool adaptiveWanted = featureEnabled(plan, "ADAPTIVE");
-        const int wire = int(s.at("wireframe"));
+        const int wire = mWireMode;
         mWireDrawn = false;
         if (wire) {
             if (!mWire || mWire.size().x != input.width || mWire.size().y != input.height) {
@@ -688,7 +694,7 @@ private:
     // first 2D light (wireframe=2, through its shadow matrix). Restores the volume pass's state.
     void drawWire(const FrameInput& input, const render::GpuLightCpu& L, const polyvol::VolumeGrid& grid,
                   std::int64_t gridTriangles, std::int64_t extraTriangles, bool adaptive) {
-        const int wire = int(input.settings.at("wireframe"));
+        const int wire = mWireMode;
         glm::mat4 viewProj = render::eyeRelativeViewProjection(input.scene->camera, input.width, input.height);
         if (wire == 2) {
             if (grid.mode == polyvol::kModeCube || mWireDrawn) return;
@@ -839,28 +845,33 @@ private:
                 count, "", ViewKind::Scalar, 0.0f, float(mTess.levels()) / 16.0f, mTess.levelMap()));
         }
         Intermediate mesh;
-        if (s.at("wireframe") == 3.0) {
+        if (mWireMode == 3) {
             mesh = render::textureIntermediate(kMesh, "Light volume mesh", "", "", ViewKind::Color, 0.0f, 1.0f,
                                                mMeshView.texture());
-        } else if (s.at("wireframe") != 0.0 && mWire) {
+        } else if (mWireMode != 0 && mWire) {
             mesh = render::textureIntermediate(kMesh, "Light volume mesh", "", "", ViewKind::Color, 0.0f, 1.0f, mWire);
         }
         mesh.id = kMesh;
         mesh.label = "Light volume mesh";
         mesh.note = count + " (grid: one vertex per shadow-map texel; closure to the light / cap; cube seams)" +
-                    (s.at("wireframe") != 0.0 ? "; wireframe: green = rays leave (+L), red = rays enter (-L)" +
-                                                    std::string(s.at("wireframe") == 3.0
+                    (mWireMode != 0 ? "; wireframe: green = rays leave (+L), red = rays enter (-L)" +
+                                                    std::string(mWireMode == 3
                                                                     ? "; blue: camera frustum, yellow: lights"
                                                                     : "")
-                                              : "; wireframe=1|2|3 draws it (3: orbit view)");
-        mesh.kind = s.at("wireframe") != 0.0 ? ViewKind::Color : ViewKind::Mesh;
-        mesh.orbit = s.at("wireframe") == 3.0;
+                                              : "; wireframe=camera|light|orbit draws it (orbit: a view of its own)") +
+                    (mWireMode == 3 && s.at("wireframe") == 0.0 ? "; drawn because this view is shown (its time counts in the volume stage)" : "");
+        mesh.kind = mWireMode != 0 ? ViewKind::Color : ViewKind::Mesh;
+        mesh.orbit = mWireMode == 3;
         out.intermediates.push_back(mesh);
         out.intermediates.push_back(render::textureIntermediate(
             kCrossings, "Crossings",
             "r: volume faces crossed by each pixel's ray (overdraw), g: signed count, b: crossings in front of the "
             "near plane (kept by the depth clamp), a: crossings beyond the surface (clamped to d); " + count, "",
             ViewKind::Scalar, 0.0f, 16.0f, mCrossings));
+        out.intermediates.back().channels = {{"faces crossed (overdraw)", "faces", ViewKind::Scalar, 0.0f, 16.0f},
+                                             {"signed count", "faces", ViewKind::Signed, -4.0f, 4.0f},
+                                             {"crossings before the near plane", "faces", ViewKind::Scalar, 0.0f, 4.0f},
+                                             {"crossings beyond the surface", "faces", ViewKind::Scalar, 0.0f, 4.0f}};
         const std::string units = constant ? "scene units (lit length)" : "radiance";
         out.intermediates.push_back(render::textureIntermediate(
             kPositive, "Positive terms", "sum of +L(0, x) where rays leave the lit volume, plus the chord through the ball around the light", units, ViewKind::Color,
@@ -915,6 +926,7 @@ private:
     std::map<std::pair<int, int>, Extra> mExtras;
     polyvol::AdaptiveTessellation mTess;
     bool mAdaptiveUsed = false, mAdaptiveOverflow = false, mWireDrawn = false;
+    int mWireMode = 0;  // this run's wireframe: the setting, or orbit for a caller showing polyvol.mesh
     // markersFor: the light whose edge map and levels are shown (the last adaptive 2D light), the camera's
     // zfar and cookie_mask of the last run (they place the volume's vertices).
     int mEdgeLight = -1;

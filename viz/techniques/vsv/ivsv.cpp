@@ -337,6 +337,7 @@ public:
             out.intermediates.push_back(render::textureIntermediate(
                 kIsmRaw, "ISM atlas (splatted)", "one paraboloid tile per VPL: distance of the nearest point, 0 = hole",
                 "scene units", ViewKind::Depth, 0.0f, 8.0f, mIsmRaw));
+            out.intermediates.back().sentinels = {{0.0f, "hole: no point splatted"}};
             out.intermediates.push_back(render::textureIntermediate(
                 kIsm, "ISM atlas (after push-pull)", "holes filled from coarser levels (mean of valid samples)",
                 "scene units", ViewKind::Depth, 0.0f, 8.0f, mIsm));

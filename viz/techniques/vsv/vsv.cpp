@@ -250,7 +250,8 @@ public:
             out.intermediates.push_back(render::textureIntermediate(
                 kOccluder, "Occluder alpha",
                 "per light ray (x = phi bit, y = theta cell): alpha cell of its first occluder (-1: none in the grid)",
-                "cells", ViewKind::Scalar, -1.0f, float(size.alpha), mOccluder[std::size_t(shown)]));
+                "cells", ViewKind::Scalar, 0.0f, float(size.alpha), mOccluder[std::size_t(shown)]));
+            out.intermediates.back().sentinels = {{-1.0f, "no occluder in the grid"}};
             out.intermediates.push_back(cpuIntermediate(
                 kVoxelSlice, "Voxels (before scan)",
                 "alpha (x) x phi (y, eye at the top) slice at theta cell " + std::to_string(pickTheta) +
@@ -315,6 +316,11 @@ public:
             "r: phi-uniform lit fraction of the ray's bits; g: interpolated visibility of the fragment's voxel; "
             "b: alpha cell; a: theta cell, -1 where the epipole case replaced the grid",
             "", ViewKind::Scalar, 0.0f, 1.0f, mVisibility));
+        out.intermediates.back().sentinels = {{-1.0f, "epipole case: a direct ray replaced the grid"}};
+        out.intermediates.back().channels = {{"lit fraction of the ray", "", ViewKind::Scalar, 0.0f, 1.0f},
+                                             {"visibility of the fragment", "", ViewKind::Scalar, 0.0f, 1.0f},
+                                             {"alpha cell", "cells", ViewKind::Scalar, 0.0f, float(size.alpha)},
+                                             {"theta cell", "cells", ViewKind::Scalar, 0.0f, float(size.theta)}};
         out.airlight = render::readRgb(mAirlight);
         out.lastStageRun = kGatherIndex;
         if (stop == kGatherIndex) return out;

@@ -1,0 +1,53 @@
+// What a view's colours mean: the colour bar under each image view (and in handouts). It is computed from
+// the view's pane and display mapping only, with no GL: the window draws its ramp and swatches as tiny
+// images through the view's own shader (shaders/ui/image.frag), so the bar cannot disagree with the
+// picture, and the screenshot sidecar lists its ticks for tests.
+//
+//   Ramp     a continuous map (grey, ramp, heat, diverging, or an HDR image's exposure): values from lo
+//            to hi, ticks in the intermediate's units (decades on a log scale)
+//   Classes  a discrete map (bits, categorical, mask): one swatch per class with its value
+// Every bar also carries the legend: each declared sentinel value with its meaning and count, then the
+// NaN, Inf and (when marked) negative overlays with their pixel counts.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "pane_image.h"
+#include "view_stats.h"
+
+namespace airlight {
+
+struct LegendSwatch {
+    std::string label;      // "NaN", "-1: outside the spot's cone"
+    float value = 0.0f;     // the value drawn in the swatch (through the view's mapping and sentinels)
+    std::size_t pixels = 0; // how many of the view's pixels it marks
+    bool sentinel = false;
+};
+
+struct ColourBar {
+    enum class Kind { None, Ramp, Classes };
+    Kind kind = Kind::None;
+    // Ramp: values from left to right in data units (kRampTexels of them), drawn one texel each, RGB equal
+    // (an HDR image's greys). Classes: one value per class.
+    std::vector<float> values;
+    std::vector<std::string> classLabels;  // Classes: one per value
+    double lo = 0.0, hi = 1.0;             // Ramp: the values at the two ends
+    bool logarithmic = false;
+    // Ramp ticks: value, its label and where it sits along the bar (0 left, 1 right); every tick lies
+    // inside [lo, hi].
+    std::vector<double> ticks;
+    std::vector<std::string> tickLabels;
+    std::vector<float> tickAt;
+    std::string units;    // of the quantity shown (a declared channel's own)
+    std::string caption;  // e.g. "exposure +1.3 EV: white at 0.41", "each value its own colour, 0 black"
+    std::vector<LegendSwatch> legend;
+};
+
+inline constexpr int kRampTexels = 128;
+
+// `counts`: the view's NaN / Inf / negative / sentinel pixel counts (view_stats.h).
+ColourBar colourBarFor(const PaneImage& pane, const DisplayMapping& mapping, const SpecialCounts& counts);
+
+}  // namespace airlight

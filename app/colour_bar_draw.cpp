@@ -1,0 +1,69 @@
+#include "colour_bar_draw.h"
+
+#include <algorithm>
+
+#include "plot/plot.h"
+#include "window_common.h"
+
+namespace airlight {
+
+float colourBarHeight(const viz::ui::FontAtlas& font, float scale) { return 2.0f * font.lineHeight() + 8.0f * scale; }
+
+ColourBarLayout drawColourBarText(const ColourBar& bar, const Rect& area, const viz::ui::FontAtlas& font, float scale,
+                                  DrawList& text, DrawList& frames, const ColourBarColours& colours) {
+    ColourBarLayout out;
+    const float line = font.lineHeight(), s = scale;
+    // Left: the ramp over about half the width (at least 120 px), ticks under it; right: the legend
+    // under the units and caption.
+    const float rampWidth = std::min(area.size().x - 8.0f * s, std::max(120.0f * s, 0.5f * area.size().x));
+    out.ramp = {{area.min.x + 4.0f * s, area.min.y + 3.0f * s},
+                {area.min.x + 4.0f * s + rampWidth, area.min.y + 3.0f * s + 0.8f * line}};
+    const Rect& ramp = out.ramp;
+    frames.rect({ramp.min - 1.0f, ramp.max + 1.0f}, colours.frame);
+    const float labelY = ramp.max.y + 2.0f * s;
+    if (bar.kind == ColourBar::Kind::Ramp) {
+        std::vector<float> centres, widths;
+        for (std::size_t i = 0; i < bar.ticks.size(); ++i) {
+            centres.push_back(ramp.min.x + bar.tickAt[i] * ramp.size().x);
+            widths.push_back(font.measure(bar.tickLabels[i]));
+        }
+        const std::vector<bool> kept = viz::plot::keptTickLabels(centres, widths, 6.0f * s);
+        for (std::size_t i = 0; i < bar.ticks.size(); ++i) {
+            text.line({centres[i], ramp.max.y - 3.0f * s}, {centres[i], ramp.max.y + 1.0f * s}, 1.0f * s, colours.text);
+            if (!kept[i]) continue;
+            const float x = std::clamp(centres[i] - 0.5f * widths[i], area.min.x, ramp.max.x - widths[i]);
+            text.textClipped({x, labelY}, bar.tickLabels[i], colours.text, area.max.x);
+        }
+    } else {
+        // One segment per class, its label centred under it.
+        const float segment = ramp.size().x / float(std::max<std::size_t>(1, bar.values.size()));
+        for (std::size_t i = 0; i < bar.classLabels.size(); ++i) {
+            const float w = font.measure(bar.classLabels[i]);
+            if (w > segment) continue;
+            text.textClipped({ramp.min.x + (float(i) + 0.5f) * segment - 0.5f * w, labelY}, bar.classLabels[i],
+                             colours.text, area.max.x);
+        }
+    }
+    const float right = ramp.max.x + 10.0f * s;
+    std::string heading = bar.units.empty() ? bar.caption : (bar.caption.empty() ? bar.units : bar.units + "   " + bar.caption);
+    if (bar.logarithmic) heading += "   (log)";
+    out.heading = elideMiddle(font, heading, area.max.x - right - 2.0f * s);
+    text.textClipped({right, area.min.y + 1.0f * s}, out.heading, colours.dim, area.max.x);
+    float x = right;
+    const float box = line - 4.0f * s;
+    for (std::size_t i = 0; i < bar.legend.size(); ++i) {
+        const LegendSwatch& sw = bar.legend[i];
+        const std::string entry = sw.label + " " + std::to_string(sw.pixels);
+        out.legend += (out.legend.empty() ? "" : "   ") + entry + " px";
+        if (x + box + font.measure(entry) > area.max.x) continue;
+        const Rect swatch{{x, labelY + 2.0f * s}, {x + box, labelY + 2.0f * s + box}};
+        frames.rect({swatch.min - 1.0f, swatch.max + 1.0f}, colours.frame);
+        out.swatches.push_back({swatch, i});
+        x += box + 3.0f * s;
+        const bool alarming = !sw.sentinel && sw.pixels > 0;
+        x = text.textClipped({x, labelY}, entry, alarming ? colours.alarm : colours.dim, area.max.x) + 10.0f * s;
+    }
+    return out;
+}
+
+}  // namespace airlight

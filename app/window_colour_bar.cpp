@@ -1,0 +1,29 @@
+// The colour bar under each image view: its text and frames (colour_bar_draw.h), its ramp and legend
+// swatches drawn as tiny images through the view's own shader.
+#include "gui_app.h"
+
+#include "colour_bar_draw.h"
+#include "colour_bar_images.h"
+
+namespace airlight {
+
+float GuiApp::colourBarHeight(const ViewState& v) const {
+    if (!v.pane.plots.empty() || v.pane.texture == 0 || !mHaveOutput) return 0.0f;
+    return airlight::colourBarHeight(*mFont, mScale);
+}
+
+void GuiApp::drawColourBar(int id, ViewState& v) {
+    v.colourBar = {};
+    if (v.bar.size().y <= 0.0f) return;
+    const DisplayMapping mapping = resolveMapping(v.pane, v.display, mExposure, v.measured);
+    v.colourBar = colourBarFor(v.pane, mapping, v.counts);
+    if (v.colourBar.kind == ColourBar::Kind::None) return;
+    const ColourBarLayout layout =
+        drawColourBarText(v.colourBar, v.bar, *mFont, mScale, *mDrawList, *mBackground, {kText, kDim, kError, kDim});
+    v.ramp = layout.ramp;
+    for (const BarImageDraw& d : barImageDraws(v, layout, mapping)) mPaneDraws.push_back({d.rect, d.pane, d.view, d.mapping});
+    mNamedRects["colour_bar:" + std::to_string(id)] = v.bar;
+    if (v.bar.contains(mHover)) mUi->tooltipNow({layout.heading, layout.legend});
+}
+
+}  // namespace airlight

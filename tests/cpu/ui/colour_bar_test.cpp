@@ -1,0 +1,138 @@
+// The colour bar a view draws (app/colour_bar.h): a ramp whose values the view's mapping takes evenly
+// from one end of the map to the other (checked through mapToUnit and signedUnit, the CPU mirrors of
+// the shader's mapping), ticks inside the range at the places that mapping gives them, classes for the
+// discrete maps, and a legend that names the sentinels with their counts.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "colour_bar.h"
+
+namespace airlight {
+namespace {
+
+PaneImage paneOf(viz::ViewKind kind, float lo, float hi, std::string units = "scene units") {
+    PaneImage p;
+    p.id = "test.pane";
+    p.kind = kind;
+    p.mode = displayModeFor(kind);
+    p.rangeMin = lo, p.rangeMax = hi;
+    p.units = std::move(units);
+    p.texture = 1;  // any texture: the bar only needs to know there is an image
+    p.size = {8, 8};
+    return p;
+}
+
+// The ramp's texels land evenly across [0, 1] under `unit` (texel centres at (i + 0.5) / n).
+template <class Unit>
+void expectEvenRamp(const ColourBar& bar, Unit unit) {
+    ASSERT_EQ(bar.kind, ColourBar::Kind::Ramp);
+    ASSERT_EQ(int(bar.values.size()), kRampTexels);
+    for (int i = 0; i < kRampTexels; i += 17)
+        EXPECT_NEAR(unit(bar.values[std::size_t(i)]), (i + 0.5) / kRampTexels, 1e-4) << "texel " << i;
+}
+
+TEST(ColourBar, ALinearRampSpansTheMappedRangeWithTicksWhereTheMappingPutsThem) {
+    const PaneImage pane = paneOf(viz::ViewKind::Depth, 0.0f, 40.0f);
+    const DisplayMapping m = resolveMapping(pane, {}, 0.0f, std::nullopt);
+    const ColourBar bar = colourBarFor(pane, m, {});
+    expectEvenRamp(bar, [&](float v) { return mapToUnit(v, m.lo, m.hi, false); });
+    EXPECT_EQ(bar.lo, 0.0);
+    EXPECT_EQ(bar.hi, 40.0);
+    EXPECT_EQ(bar.units, "scene units");
+    ASSERT_GE(bar.ticks.size(), 3u);
+    for (std::size_t i = 0; i < bar.ticks.size(); ++i) {
+        EXPECT_GE(bar.ticks[i], 0.0);
+        EXPECT_LE(bar.ticks[i], 40.0);
+        EXPECT_NEAR(bar.tickAt[i], mapToUnit(float(bar.ticks[i]), 0.0f, 40.0f, false), 1e-6);
+        EXPECT_EQ(std::stod(bar.tickLabels[i]), bar.ticks[i]);
+    }
+}
+
+TEST(ColourBar, ALogRampHasDecadeTicksAndALogSafeLowEnd) {
+    const PaneImage pane = paneOf(viz::ViewKind::Scalar, 0.0f, 100.0f);
+    DisplaySettings d;
+    d.logScale = true;
+    const DisplayMapping m = resolveMapping(pane, d, 0.0f, std::nullopt);
+    const ColourBar bar = colourBarFor(pane, m, {});
+    expectEvenRamp(bar, [&](float v) { return mapToUnit(v, m.lo, m.hi, true); });
+    EXPECT_TRUE(bar.logarithmic);
+    EXPECT_NEAR(bar.lo, 1e-4, 1e-9);  // 0 is replaced by hi * 1e-6, as the shader does
+    for (std::size_t i = 0; i < bar.ticks.size(); ++i) {
+        const double decade = std::log10(bar.ticks[i]);
+        EXPECT_NEAR(decade, std::round(decade), 1e-9) << bar.ticks[i];
+        EXPECT_NEAR(bar.tickAt[i], mapToUnit(float(bar.ticks[i]), m.lo, m.hi, true), 1e-5);
+    }
+}
+
+TEST(ColourBar, TheDivergingRampIsSymmetricAndInvertsTheSymmetricLog) {
+    const PaneImage pane = paneOf(viz::ViewKind::Signed, -0.5f, 2.0f, "radiance");
+    for (bool log : {false, true}) {
+        DisplaySettings d;
+        d.logScale = log;
+        const DisplayMapping m = resolveMapping(pane, d, 0.0f, std::nullopt);
+        const ColourBar bar = colourBarFor(pane, m, {});
+        expectEvenRamp(bar, [&](float v) { return 0.5f * (signedUnit(v, m.lo, m.hi, log) + 1.0f); });
+        EXPECT_EQ(bar.lo, -2.0);
+        EXPECT_EQ(bar.hi, 2.0);
+        bool zero = false;
+        for (std::size_t i = 0; i < bar.ticks.size(); ++i) {
+            zero = zero || bar.ticks[i] == 0.0;
+            if (bar.ticks[i] == 0.0) {
+                EXPECT_FLOAT_EQ(bar.tickAt[i], 0.5f);
+            }
+        }
+        EXPECT_TRUE(zero) << "0 is always a tick of a diverging bar";
+    }
+}
+
+TEST(ColourBar, AnHdrImagesBarEndsWhereTheExposureReachesWhite) {
+    PaneImage pane = paneOf(viz::ViewKind::Color, 0.0f, 1.0f, "radiance");
+    pane.mode = DisplayMode::HdrColor;
+    const DisplayMapping m = resolveMapping(pane, {}, 2.0f, std::nullopt);  // +2 EV: white at 0.25
+    const ColourBar bar = colourBarFor(pane, m, {});
+    EXPECT_EQ(bar.lo, 0.0);
+    EXPECT_DOUBLE_EQ(bar.hi, 0.25);
+    EXPECT_NE(bar.caption.find("0.25"), std::string::npos) << bar.caption;
+}
+
+TEST(ColourBar, DiscreteMapsGetClassesAndSentinelsLeadTheLegend) {
+    PaneImage mask = paneOf(viz::ViewKind::Mask, 0.0f, 1.0f, "");
+    EXPECT_EQ(colourBarFor(mask, resolveMapping(mask, {}, 0.0f, std::nullopt), {}).values, (std::vector<float>{0, 1}));
+    PaneImage map = paneOf(viz::ViewKind::Scalar, 0.0f, 3.14f, "radians");
+    map.sentinels = {{-1.0f, "outside the cone"}, {4.0f, "unblocked"}};
+    SpecialCounts counts;
+    counts.nan = 2;
+    counts.sentinel = {10, 0};
+    const ColourBar bar = colourBarFor(map, resolveMapping(map, {}, 0.0f, std::nullopt), counts);
+    ASSERT_GE(bar.legend.size(), 4u);
+    EXPECT_TRUE(bar.legend[0].sentinel);
+    EXPECT_EQ(bar.legend[0].value, -1.0f);
+    EXPECT_EQ(bar.legend[0].pixels, 10u);
+    EXPECT_NE(bar.legend[0].label.find("outside the cone"), std::string::npos);
+    EXPECT_EQ(bar.legend[2].label, "NaN");
+    EXPECT_EQ(bar.legend[2].pixels, 2u);
+    // No image, or a plot: no bar.
+    PaneImage none = paneOf(viz::ViewKind::Scalar, 0.0f, 1.0f);
+    none.texture = 0;
+    EXPECT_EQ(colourBarFor(none, resolveMapping(none, {}, 0.0f, std::nullopt), {}).kind, ColourBar::Kind::None);
+}
+
+TEST(ColourBar, ADeclaredChannelBringsItsOwnRangeUnitsAndMap) {
+    PaneImage pane = paneOf(viz::ViewKind::Scalar, 0.0f, 16.0f, "");
+    pane.channelInfo = {{"faces crossed", "faces", viz::ViewKind::Scalar, 0.0f, 16.0f},
+                        {"signed count", "faces", viz::ViewKind::Signed, -4.0f, 4.0f}};
+    EXPECT_EQ(defaultChannel(pane), Channel::R);
+    EXPECT_EQ(channelChoices(pane)[2], "g: signed count");
+    DisplaySettings d;
+    d.channel = Channel::G;
+    const DisplayMapping m = resolveMapping(pane, d, 0.0f, std::nullopt);
+    EXPECT_EQ(m.mode, DisplayMode::Signed);
+    const ColourBar bar = colourBarFor(pane, m, {});
+    EXPECT_EQ(bar.lo, -4.0);
+    EXPECT_EQ(bar.units, "faces");
+    EXPECT_EQ(bar.caption, "signed count");
+}
+
+}  // namespace
+}  // namespace airlight
