@@ -107,6 +107,7 @@ private:
 
     // The session's medium, technique (with its settings), camera, view and exposure over the scene.
     void restoreSessionOverStep() override;
+    void showLessonComparison(const std::vector<std::string>& techniques) override;
 
     // ---- the lesson player's hooks (lesson_player.h): the window's own state changes ----
 

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "cli_args.h"
+#include "comparison_grid.h"
 #include "core/error.h"
 #include "core/image_io.h"
 #include "core/staged_folder.h"
@@ -217,6 +218,7 @@ Lesson parseLesson(const std::string& path) {
                 } else if (key == "animate") step->animation = parseAnimation(value, number);
                 else if (key == "stage") step->stage = value;
                 else if (key == "views") step->views = splitList(value);
+                else if (key == "compare") step->compare = splitList(value);
                 else if (key == "inspect") {
                     std::istringstream xy(value);
                     int x = -1, y = -1;
@@ -224,7 +226,7 @@ Lesson parseLesson(const std::string& path) {
                         fail(number, "inspect takes one pixel 'x y', got '" + value + "'");
                     step->inspect = glm::ivec2(x, y);
                 } else {
-                    fail(number, "unknown key '" + key + "' (known: scene, technique, size, set, stage, views, inspect, animate)");
+                    fail(number, "unknown key '" + key + "' (known: scene, technique, size, set, stage, views, inspect, animate, compare)");
                 }
             } catch (const InputError& e) {
                 const std::string what = e.what();
@@ -272,6 +274,9 @@ Lesson parseLesson(const std::string& path) {
             for (const std::string& id : ids) known += (known.empty() ? "" : ", ") + id;
             fail(s.line, where + "unknown technique '" + s.technique + "' (known: " + known + ")");
         }
+        for (const std::string& id : s.compare)
+            if (std::find(ids.begin(), ids.end(), id) == ids.end() || id == "reference")
+                fail(s.line, where + "compare: '" + id + "' is not a technique to compare with the reference");
         // What the window and the export would reject later is reported here, at the step.
         const std::unique_ptr<viz::Technique> technique = viz::makeTechnique(s.technique);
         try {
@@ -319,6 +324,59 @@ std::string findLesson(const std::string& nameOrPath) {
     throw InputError("unknown lesson '" + nameOrPath + "' (known: " + known + ")");
 }
 
+namespace {
+
+// A step's `compare:` measured now, on the machine writing the handout: each technique's time (median
+// of three runs after a warm-up, the stages' glFinish + steady clock) and the relative L2 error of its
+// L_air against the reference's, as an HTML table with the machine it was measured on.
+std::string liveComparison(const LessonStep& s, glm::ivec2 size) {
+    const auto request = [&](const std::string& technique) {
+        RenderRequest r;
+        r.scene = s.scene;
+        r.technique = technique;
+        r.width = size.x;
+        r.height = size.y;
+        if (technique == s.technique) r.settings = s.settings;
+        return r;
+    };
+    viz::Image reference;
+    {
+        RenderJob job(request("reference"));
+        reference = job.run().airlight;
+    }
+    std::string rows, renderer = "CPU only", clock;
+    double baseline = 0.0;
+    for (const std::string& id : s.compare) {
+        RenderJob job(request(id));
+        (void)job.run();  // warm-up: shaders, allocations
+        std::vector<double> times;
+        viz::Image airlight;
+        for (int run = 0; run < 3; ++run) {
+            const viz::FrameOutput& out = job.run();
+            times.push_back(out.timing.totalMilliseconds());
+            clock = out.timing.clock;
+            if (run == 2) airlight = out.airlight;
+        }
+        if (job.technique().needsGl()) {
+            if (const auto* name = reinterpret_cast<const char*>(glGetString(GL_RENDERER))) renderer = name;
+        }
+        std::sort(times.begin(), times.end());
+        const double ms = times[1];
+        if (id == s.compare.front()) baseline = ms;
+        char cells[160];
+        std::snprintf(cells, sizeof cells, "<td>%.1f</td><td>%s</td><td>%.2f</td>", ms,
+                      tileErrorText(viz::report::compareImages(airlight, reference)).c_str(), ms / std::max(baseline, 1e-9));
+        rows += "<tr><td>" + viz::report::escapeHtml(id) + "</td>" + cells + "</tr>\n";
+    }
+    return "<table class=\"compare\"><tr><th>technique</th><th>time (ms, median of 3)</th><th>L_air against the "
+           "reference</th><th>time / " + viz::report::escapeHtml(s.compare.front()) + "</th></tr>\n" + rows +
+           "</table>\n<p class=\"state\">Measured when this page was written, at " + std::to_string(size.x) + "x" +
+           std::to_string(size.y) + " on " + viz::report::escapeHtml(renderer) + " (" + viz::report::escapeHtml(clock) +
+           "). Another machine gives other figures: in the window this step times them live (the comparison grid).</p>\n";
+}
+
+}  // namespace
+
 void exportLesson(const Lesson& lesson, const std::string& folder, glm::ivec2 size) {
     namespace fs = std::filesystem;
     if (folder.empty()) throw InputError("lesson --export needs a folder");
@@ -330,7 +388,8 @@ void exportLesson(const Lesson& lesson, const std::string& folder, glm::ivec2 si
                        "</title><style>body{font-family:DejaVu Sans,sans-serif;max-width:60em;margin:2em;color:#222}"
                        "figure{display:inline-block;margin:0.3em;text-align:center;max-width:100%}img{image-rendering:pixelated;"
                        "border:1px solid #ccc;max-width:100%;height:auto}code{background:#f2f2f2}.state{color:#555;font-size:0.85em}"
-                       ".range{color:#555;font-size:0.8em}</style>"
+                       ".range{color:#555;font-size:0.8em}table.compare{border-collapse:collapse}"
+                       "table.compare td,table.compare th{border:1px solid #ccc;padding:0.2em 0.6em;text-align:right}</style>"
                        "</head><body>\n<h1>" + viz::report::escapeHtml(lesson.title) + "</h1>\n" +
                        markdownToHtml(lesson.intro);
     for (std::size_t k = 0; k < lesson.steps.size(); ++k) {
@@ -406,6 +465,7 @@ void exportLesson(const Lesson& lesson, const std::string& folder, glm::ivec2 si
                     "><figcaption>" + viz::report::escapeHtml(in ? in->label : shown.pane.label) +
                     "<br><span class=\"range\">" + viz::report::escapeHtml(figure.caption) + "</span></figcaption></figure>\n";
         }
+        if (!s.compare.empty()) html += liveComparison(s, {request.width, request.height});
     }
     html += "</body></html>\n";
     viz::report::writeTextFile(staged.path("index.html"), html);

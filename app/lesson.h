@@ -11,6 +11,8 @@
 //   stage: raymarch.march     stop after this stage (default: run everything)
 //   views: final, raymarch.airlight   what to show (final, airlight or intermediate ids)
 //   inspect: 80 60            a pixel for the ray inspector
+//   compare: raymarch, slices time these techniques live on the reader's machine (the window's comparison
+//                             grid; a table in the handout): run time and error against the reference
 //   animate: substeps 2s      optional: in the window, run the stage's sub-steps 1..N over 2 seconds
 //                             (the stage must declare them, StageInfo::substepParam), or
 //   animate: light orbit 4s   move the first light once round a cone about its aim point (GPU
@@ -53,6 +55,8 @@ struct LessonStep {
     std::vector<std::string> views;  // empty: final and airlight
     std::optional<glm::ivec2> inspect;
     LessonAnimation animation;
+    // Techniques to time and compare live (never figures measured elsewhere): empty for none.
+    std::vector<std::string> compare;
 };
 
 struct Lesson {

@@ -126,6 +126,7 @@ void LessonPlayer::applyStep(LessonHost& host) {
             mOrbitCentre = w.orbitTarget;
         }
         host.applyLessonWindowState(w);
+        host.showLessonComparison(s->compare);
         mWanted = w;
         if (mRestoreTryIt) host.restoreSessionOverStep();
         else if (s->animation.kind != LessonAnimation::Kind::None) {

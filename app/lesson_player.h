@@ -62,6 +62,9 @@ public:
     virtual void setLessonLight(const viz::scene::Light& light) = 0;
     // A session restored in try-it mode: its technique, settings, medium, camera and view over the step.
     virtual void restoreSessionOverStep() = 0;
+    // The step's live comparison (`compare:`): the comparison grid with the reference and these
+    // techniques, timed on this machine; empty: no grid.
+    virtual void showLessonComparison(const std::vector<std::string>& techniques) = 0;
 };
 
 // The first light of a step's `animate: light orbit` at `turn` (0..1, one full turn): scene/light_orbit.h.

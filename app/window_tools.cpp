@@ -18,6 +18,21 @@ void GuiApp::toggleComparison() {
     }
 }
 
+void GuiApp::showLessonComparison(const std::vector<std::string>& techniques) {
+    mComparison.close();
+    if (techniques.empty()) return;
+    std::vector<std::string> ids = {"reference"};
+    ids.insert(ids.end(), techniques.begin(), techniques.end());
+    viz::scene::Scene scene = mScene;
+    scene.camera = mController.camera();
+    try {
+        mComparison.open(scene, {mOptions.width, mOptions.height}, ids);
+    } catch (const std::exception& e) {
+        mError = std::string("comparison: ") + e.what();
+        mComparison.close();
+    }
+}
+
 void GuiApp::runComparisonTechniques() {
     mComparison.runTechniques([this](const std::string& id, const viz::scene::Scene& scene, glm::ivec2 size) {
         if (!mTechniques.count(id)) mTechniques[id] = viz::makeTechnique(id);

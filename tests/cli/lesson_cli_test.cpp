@@ -2,6 +2,7 @@
 // browser loads with no missing image); malformed lessons are one-line errors naming file and line.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cctype>
 #include <filesystem>
 #include <regex>
@@ -73,6 +74,27 @@ TEST_F(CliTest, EveryLessonExportsAPageWithAllItsImages) {
             EXPECT_FALSE((*it)[1].str().empty()) << name;
         }
         EXPECT_EQ(captions, images) << name;
+        // A step that compares techniques gets a table measured while the page was written (one row per
+        // technique, each with a time and an error), not figures from elsewhere.
+        const std::string source = readFile(entry.path());
+        int compares = 0, tables = 0, rows = 0;
+        for (std::size_t at = source.find("\ncompare:"); at != std::string::npos; at = source.find("\ncompare:", at + 1)) {
+            const std::size_t end = source.find('\n', at + 1);
+            const std::string list = source.substr(at + 9, end - at - 9);
+            compares += 1;
+            rows += int(std::count(list.begin(), list.end(), ',')) + 1;
+        }
+        for (std::size_t at = page.find("<table class=\"compare\">"); at != std::string::npos;
+             at = page.find("<table class=\"compare\">", at + 1))
+            ++tables;
+        EXPECT_EQ(tables, compares) << name;
+        const std::regex row("<tr><td>([a-z]+)</td><td>([0-9.]+)</td><td>error ([0-9.e+-]+)</td>");
+        int measured = 0;
+        for (auto it = std::sregex_iterator(page.begin(), page.end(), row); it != std::sregex_iterator(); ++it) {
+            ++measured;
+            EXPECT_GT(std::stod((*it)[2].str()), 0.0) << name << ": " << (*it)[1].str();
+        }
+        EXPECT_EQ(measured, rows) << name;
         // Settings are shown as the prose names them: a parameter with named values never as a number.
         // (A plain scan: std::regex recurses per character and overflows the stack on a whole page.)
         int namedShown = 0;
@@ -124,6 +146,10 @@ TEST_F(CliTest, MalformedLessonsNameTheFileAndLine) {
     EXPECT_FALSE(fs::exists(path("o5")));
     EXPECT_FALSE(fs::exists(path(".o5.partial")));
     expectUserError(run("lesson no-such-lesson --export " + path("o6").string()), "no-such-lesson");
+    expectUserError(run("lesson " + lesson("cmp.md", "# T\n## one\n```airlight\nscene: grate\ntechnique: raymarch\n"
+                                                      "compare: raymarch, reference\n```\n") +
+                        " --export " + path("o9").string()),
+                    "compare: 'reference'");
     expectUserError(run("lesson " + lesson("inspect3.md", good + "## two\n```airlight\ninspect: 5 5 5\n```\n") +
                         " --export " + path("o7").string()),
                     "inspect3.md:13: inspect takes one pixel 'x y', got '5 5 5'");

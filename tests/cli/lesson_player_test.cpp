@@ -393,3 +393,37 @@ TEST_F(CliTest, AStepsTechniqueStageAndSettingsAreCheckedAtItsHeading) {
 
 }  // namespace
 }  // namespace viz::testing
+
+namespace viz::testing {
+namespace {
+
+// Lesson 7 quotes no timing of its own: its `compare:` steps open the comparison grid with the reference
+// and the techniques they name, each run, timed and compared on this machine; the first step without
+// one closes the grid.
+TEST_F(LessonPlayer, ACompareStepTimesItsTechniquesLiveAndALaterStepClosesTheGrid) {
+    const fs::path script = writeText("cmp.txt", "key PageDown\nframes 1\nkey PageDown\nframes 2\nscreenshot " +
+                                                     path("cmp.png").string() +
+                                                     "\nkey PageDown\nframes 1\nkey PageDown\nframes 1\nkey PageDown\n"
+                                                     "frames 2\nscreenshot " + path("after.png").string() + "\n");
+    const RunResult r = run("--lesson 07-choosing-a-technique --size 32x24 --script " + script.string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const json j = sidecar("cmp.png");
+    EXPECT_EQ(j.at("lesson").at("step"), 3);
+    ASSERT_TRUE(j.contains("comparison"));
+    std::vector<std::string> names;
+    for (const json& t : j.at("comparison")) {
+        names.push_back(t.at("technique"));
+        EXPECT_EQ(t.at("failure"), "") << t.dump();
+        if (t.at("technique") == "reference") continue;
+        EXPECT_GT(t.at("milliseconds").get<double>(), 0.0) << t.dump();
+        ASSERT_TRUE(t.contains("relative_l2")) << t.dump();
+        EXPECT_TRUE(std::isfinite(t.at("relative_l2").get<double>()));
+    }
+    EXPECT_EQ(names, (std::vector<std::string>{"reference", "raymarch", "slices"}));
+    const json after = sidecar("after.png");
+    EXPECT_EQ(after.at("lesson").at("step"), 6);
+    EXPECT_FALSE(after.contains("comparison"));
+}
+
+}  // namespace
+}  // namespace viz::testing

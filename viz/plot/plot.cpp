@@ -163,7 +163,16 @@ void drawPlot(ui::DrawList& list, const ui::Rect& area, const PlotSpec& spec) {
     frame.min = {area.min.x + pad + line + pad + yLabelWidth + pad,
                  area.min.y + pad + (spec.title.empty() ? 0.0f : line + pad) + (spec.yLabel.empty() ? 0.0f : line + pad)};
     frame.max = {area.max.x - pad - legendWidth, area.max.y - pad - line - pad - line - pad};
-    if (frame.max.x - frame.min.x < 10.0f || frame.max.y - frame.min.y < 10.0f) return;  // too small to draw
+    // A narrow area drops the legend before the plot; one too small for any plot says so.
+    bool legend = true;
+    if (frame.max.x - frame.min.x < 10.0f && legendWidth > 0.0f) {
+        frame.max.x += legendWidth;
+        legend = false;
+    }
+    if (frame.max.x - frame.min.x < 10.0f || frame.max.y - frame.min.y < 10.0f) {
+        list.textClipped(area.min + pad, "(too small for the plot)", kInk, area.max.x - pad);
+        return;
+    }
 
     const AxisMap mx{xt.lo, xt.hi, spec.logX, frame.min.x, frame.max.x};
     const AxisMap my{yt.lo, yt.hi, spec.logY, frame.max.y, frame.min.y};
@@ -242,6 +251,7 @@ void drawPlot(ui::DrawList& list, const ui::Rect& area, const PlotSpec& spec) {
     const float x = frame.max.x + pad;
     int entries = int(spec.bands.size()) + (spec.highlighted.empty() ? 0 : 1);
     for (const Series& s : spec.series) entries += s.name.empty() ? 0 : 1;
+    if (!legend) entries = 0;
     const int rows = std::max(1, int((area.max.y - pad - y) / line));
     int room = entries > rows ? rows - 1 : entries;
     const auto fits = [&]() { return room-- > 0; };
