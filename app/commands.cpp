@@ -329,7 +329,8 @@ int runDefault() {
     request.width = 640;
     request.height = 480;
     // Every intermediate is written, those drawn on demand too.
-    for (const viz::StageInfo& st : viz::makeTechnique(request.technique)->stages())
+    const auto declaring = viz::makeTechnique(request.technique);  // alive while its stages are read
+    for (const viz::StageInfo& st : declaring->stages())
         request.views.insert(request.views.end(), st.onDemand.begin(), st.onDemand.end());
     RenderJob job(request);
     printNotes(job.scene());

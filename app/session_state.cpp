@@ -2,10 +2,12 @@
 
 #include "core/json_check.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -13,6 +15,7 @@
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "cli_args.h"
+#include "techniques/registry.h"
 #include "view_layout.h"
 
 namespace airlight {
@@ -22,6 +25,36 @@ namespace {
 using nlohmann::json;
 
 json vec3(glm::dvec3 v) { return json::array({v.x, v.y, v.z}); }
+
+// The named values of a technique's parameter (ParamInfo::choices); empty for a plain number or an
+// unknown technique or parameter.
+std::vector<std::string> choicesOf(const std::string& technique, const std::string& name) {
+    const std::vector<std::string> ids = viz::techniqueIds();
+    if (std::find(ids.begin(), ids.end(), technique) == ids.end()) return {};
+    const std::unique_ptr<viz::Technique> t = viz::makeTechnique(technique);  // alive while its params are read
+    for (const viz::ParamInfo& p : t->params())
+        if (p.name == name) return p.choices;
+    return {};
+}
+
+// A setting as the file writes it: a named value by its name, anything else as a number.
+json settingJson(const std::string& technique, const std::string& name, double value) {
+    const std::vector<std::string> choices = choicesOf(technique, name);
+    if (value >= 0.0 && value == std::floor(value) && value < double(choices.size())) return choices[std::size_t(value)];
+    return value;
+}
+
+// A setting as read: a number, or one of the parameter's names.
+double settingValue(const std::string& technique, const std::string& name, const json& value) {
+    if (!value.is_string()) return value.get<double>();
+    const std::vector<std::string> choices = choicesOf(technique, name);
+    for (std::size_t i = 0; i < choices.size(); ++i)
+        if (choices[i] == value.get<std::string>()) return double(i);
+    std::string known;
+    for (const std::string& c : choices) known += (known.empty() ? "" : ", ") + c;
+    throw std::runtime_error("setting " + technique + "." + name + " is '" + value.get<std::string>() + "'" +
+                             (known.empty() ? std::string(" (it takes a number)") : " (known: " + known + ")"));
+}
 
 // Reads a finite 3-vector or throws with the key's name.
 glm::dvec3 readVec3(const json& j, const char* key) {
@@ -80,7 +113,8 @@ std::string sessionToJson(const SessionState& s) {
         j["lights"] = lights;
     }
     json settings = json::object();
-    for (const auto& [technique, values] : s.settings) settings[technique] = values;
+    for (const auto& [technique, values] : s.settings)
+        for (const auto& [name, value] : values) settings[technique][name] = settingJson(technique, name, value);
     j["settings"] = settings;
     j["view"] = s.view;
     j["view_zoom"] = s.viewZoom;
@@ -160,7 +194,7 @@ SessionState sessionFromJson(const std::string& text, std::string& problem) {
         }
         for (const auto& [technique, values] : j.at("settings").items())
             for (const auto& [name, value] : values.items()) {
-                const double v = value.get<double>();
+                const double v = settingValue(technique, name, value);
                 if (!std::isfinite(v)) throw std::runtime_error("setting " + technique + "." + name + " is not finite");
                 s.settings[technique][name] = v;
             }

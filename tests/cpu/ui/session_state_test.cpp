@@ -66,6 +66,27 @@ TEST(SessionState, RoundTripKeepsEverything) {
     EXPECT_TRUE(b.exposureSet);
 }
 
+// Named values are written by name and read by name or number; an unknown name is a broken file.
+TEST(SessionState, NamedSettingsAreWrittenAsNamesAndReadEitherWay) {
+    const SessionState a = sample();  // slices accum = 1: "rgba8-mask"
+    const std::string text = sessionToJson(a);
+    EXPECT_NE(text.find("\"rgba8-mask\""), std::string::npos) << text;
+    EXPECT_NE(text.find("\"planes\": 256"), std::string::npos) << text;
+    nlohmann::json j = nlohmann::json::parse(text);
+    j["settings"]["slices"]["accum"] = 2;  // a number still reads
+    j["settings"]["slices"]["weighting"] = "artistic";
+    std::string problem;
+    SessionState b = sessionFromJson(j.dump(), problem);
+    EXPECT_EQ(problem, "");
+    EXPECT_EQ(b.settings["slices"]["accum"], 2.0);
+    EXPECT_EQ(b.settings["slices"]["weighting"], 0.0);
+    j["settings"]["slices"]["accum"] = "rgba9";
+    b = sessionFromJson(j.dump(), problem);
+    EXPECT_NE(problem.find("rgba9"), std::string::npos) << problem;
+    EXPECT_NE(problem.find("rgba8-mask"), std::string::npos) << problem;  // the known names
+    EXPECT_TRUE(b.settings.empty());
+}
+
 TEST(SessionState, TheLessonPositionRoundTripsAndABadOneGivesTheDefaults) {
     SessionState a = sample();
     a.lesson = "lessons/02-ray-marching.md";
