@@ -95,7 +95,11 @@ ColourBar colourBarFor(const PaneImage& pane, const DisplayMapping& m, const Spe
     const viz::ChannelInfo* declared = declaredChannel(pane, m.channel);
     bar.units = declared ? declared->units : pane.units;
     if (declared) bar.caption = declared->name;
-    switch (m.mode) {
+    const bool mapped = m.mode != DisplayMode::HdrColor && m.mode != DisplayMode::RangeColor;
+    if (pane.picture && !mapped) {
+        bar.kind = ColourBar::Kind::Picture;
+        bar.caption = "a picture drawn by the technique: the note above says what its colours mean";
+    } else switch (m.mode) {
         case DisplayMode::HdrColor:
         case DisplayMode::RangeColor: {
             // Colour images: each channel on its own; the bar shows the greys, up to the value that the

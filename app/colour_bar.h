@@ -6,6 +6,8 @@
 //   Ramp     a continuous map (grey, ramp, heat, diverging, or an HDR image's exposure): values from lo
 //            to hi, ticks in the intermediate's units (decades on a log scale)
 //   Classes  a discrete map (bits, categorical, mask): one swatch per class with its value
+//   Picture  a picture the technique draws (a chart, an orbit view): no map; the caption points to the
+//            view's note, which says what its colours mean
 // Every bar also carries the legend: each declared sentinel value with its meaning and count, then the
 // NaN, Inf and (when marked) negative overlays with their pixel counts.
 #pragma once
@@ -27,7 +29,7 @@ struct LegendSwatch {
 };
 
 struct ColourBar {
-    enum class Kind { None, Ramp, Classes };
+    enum class Kind { None, Ramp, Classes, Picture };
     Kind kind = Kind::None;
     // Ramp: values from left to right in data units (kRampTexels of them), drawn one texel each, RGB equal
     // (an HDR image's greys). Classes: one value per class.

@@ -15,11 +15,12 @@ ColourBarLayout drawColourBarText(const ColourBar& bar, const Rect& area, const 
     const float line = font.lineHeight(), s = scale;
     // Left: the ramp over about half the width (at least 120 px), ticks under it; right: the legend
     // under the units and caption.
-    const float rampWidth = std::min(area.size().x - 8.0f * s, std::max(120.0f * s, 0.5f * area.size().x));
+    const bool picture = bar.kind == ColourBar::Kind::Picture;  // no map: the caption and legend alone
+    const float rampWidth = picture ? 0.0f : std::min(area.size().x - 8.0f * s, std::max(120.0f * s, 0.5f * area.size().x));
     out.ramp = {{area.min.x + 4.0f * s, area.min.y + 3.0f * s},
                 {area.min.x + 4.0f * s + rampWidth, area.min.y + 3.0f * s + 0.8f * line}};
     const Rect& ramp = out.ramp;
-    frames.rect({ramp.min - 1.0f, ramp.max + 1.0f}, colours.frame);
+    if (!picture) frames.rect({ramp.min - 1.0f, ramp.max + 1.0f}, colours.frame);
     const float labelY = ramp.max.y + 2.0f * s;
     if (bar.kind == ColourBar::Kind::Ramp) {
         std::vector<float> centres, widths;
@@ -34,7 +35,7 @@ ColourBarLayout drawColourBarText(const ColourBar& bar, const Rect& area, const 
             const float x = std::clamp(centres[i] - 0.5f * widths[i], area.min.x, ramp.max.x - widths[i]);
             text.textClipped({x, labelY}, bar.tickLabels[i], colours.text, area.max.x);
         }
-    } else {
+    } else if (bar.kind == ColourBar::Kind::Classes) {
         // One segment per class, its label centred under it.
         const float segment = ramp.size().x / float(std::max<std::size_t>(1, bar.values.size()));
         for (std::size_t i = 0; i < bar.classLabels.size(); ++i) {
@@ -44,7 +45,7 @@ ColourBarLayout drawColourBarText(const ColourBar& bar, const Rect& area, const 
                              colours.text, area.max.x);
         }
     }
-    const float right = ramp.max.x + 10.0f * s;
+    const float right = picture ? area.min.x + 4.0f * s : ramp.max.x + 10.0f * s;
     std::string heading = bar.units.empty() ? bar.caption : (bar.caption.empty() ? bar.units : bar.units + "   " + bar.caption);
     if (bar.logarithmic) heading += "   (log)";
     out.heading = elideMiddle(font, heading, area.max.x - right - 2.0f * s);

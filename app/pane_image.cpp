@@ -149,6 +149,7 @@ void makePane(PaneImage& pane, const viz::Intermediate& in, int layer) {
     pane.rangeMax = in.rangeMax;
     pane.sentinels = in.sentinels;
     pane.channelInfo = in.channels;
+    pane.picture = in.picture;
     if (in.image) {
         uploadImage(pane, *in.image);
         return;

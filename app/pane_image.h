@@ -47,6 +47,7 @@ struct PaneImage {
     std::vector<viz::PlotData> plots;  // drawn instead of the texture when not empty (the technique's plots)
     std::vector<viz::Sentinel> sentinels;       // values that mean "nothing here" (hatched, not counted)
     std::vector<viz::ChannelInfo> channelInfo;  // the quantities packed in r, g, b, a; empty: one quantity
+    bool picture = false;                       // drawn by the technique: its note explains its colours
 };
 
 // The channel a view starts on for a pane: the first declared quantity of a multi-quantity pane, else all.

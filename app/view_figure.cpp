@@ -27,6 +27,10 @@ std::string captionOf(const ColourBar& bar, const DisplayMapping& m) {
         text = "range [" + figure(bar.lo) + ", " + figure(bar.hi) + "]" + (bar.logarithmic ? " log" : "");
     } else if (bar.kind == ColourBar::Kind::Classes) {
         text = "classes " + figure(bar.lo) + " .. " + figure(bar.hi);
+    } else if (bar.kind == ColourBar::Kind::Picture) {
+        text = "a picture drawn by the technique (its caption's note explains the colours)";
+        for (const LegendSwatch& sw : bar.legend) text += "; " + sw.label + ": " + std::to_string(sw.pixels) + " px";
+        return text;
     }
     if (!bar.units.empty()) text += " " + bar.units;
     if (!bar.caption.empty()) text += "; " + bar.caption;

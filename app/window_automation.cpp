@@ -294,7 +294,8 @@ nlohmann::json GuiApp::viewSidecar(int id, const ViewState& v) {
         // What the bar under the view says, as drawn in the last frame (non-finite numbers as null).
         const auto number = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
         const ColourBar& b = v.colourBar;
-        nlohmann::json bar = {{"kind", b.kind == ColourBar::Kind::Ramp ? "ramp" : "classes"},
+        const char* kind = b.kind == ColourBar::Kind::Ramp ? "ramp" : b.kind == ColourBar::Kind::Classes ? "classes" : "picture";
+        nlohmann::json bar = {{"kind", kind},
                               {"lo", number(b.lo)}, {"hi", number(b.hi)}, {"log", b.logarithmic},
                               {"units", b.units}, {"caption", b.caption},
                               {"rect", {v.bar.min.x, v.bar.min.y, v.bar.max.x, v.bar.max.y}},

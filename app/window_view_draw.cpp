@@ -158,7 +158,8 @@ std::pair<std::string, std::string> GuiApp::viewTitle(const ViewState& v) const 
     if (v.pane.id == "final" && v.display.difference == DifferenceMode::Off)
         note = "surface radiance * exp(-sigma_t d) + L_air   (exposure " + format("%+.1f EV)", mExposure);
     const DisplayMapping m = resolveMapping(v.pane, v.display, mExposure, v.measured);
-    if (m.mode != DisplayMode::HdrColor) {
+    const bool picture = v.pane.picture && m.mode == DisplayMode::RangeColor;  // no range to state
+    if (m.mode != DisplayMode::HdrColor && !picture) {
         // A multi-quantity pane names the channel shown, with that quantity's units.
         const viz::ChannelInfo* declared = declaredChannel(v.pane, v.display.channel);
         const std::string& units = declared ? declared->units : v.pane.units;

@@ -111,6 +111,9 @@ struct Intermediate {
     // terms, the planes along it. The ray inspector lists these by id.
     bool rayView = false;
     std::vector<Sentinel> sentinels{};
+    // A picture the technique draws (a chart, an orbit view, a schematic): its colours are explained in
+    // its note, not by a colour map, and the window's colour bar says so.
+    bool picture = false;
     // Empty: the channels are one quantity (a colour, or a scalar in r). Else channel i (r, g, b, a) is
     // channels[i]; the window starts on the first.
     std::vector<ChannelInfo> channels{};

@@ -118,6 +118,18 @@ TEST(ColourBar, DiscreteMapsGetClassesAndSentinelsLeadTheLegend) {
     EXPECT_EQ(colourBarFor(none, resolveMapping(none, {}, 0.0f, std::nullopt), {}).kind, ColourBar::Kind::None);
 }
 
+TEST(ColourBar, APictureHasNoMapUnlessTheUserPicksOne) {
+    PaneImage chart = paneOf(viz::ViewKind::Color, 0.0f, 1.0f, "");
+    chart.picture = true;
+    const ColourBar bar = colourBarFor(chart, resolveMapping(chart, {}, 0.0f, std::nullopt), {});
+    EXPECT_EQ(bar.kind, ColourBar::Kind::Picture);
+    EXPECT_TRUE(bar.values.empty());
+    EXPECT_NE(bar.caption.find("note"), std::string::npos);
+    DisplaySettings grey;
+    grey.colourMap = ColourMap::Grey;
+    EXPECT_EQ(colourBarFor(chart, resolveMapping(chart, grey, 0.0f, std::nullopt), {}).kind, ColourBar::Kind::Ramp);
+}
+
 TEST(ColourBar, ADeclaredChannelBringsItsOwnRangeUnitsAndMap) {
     PaneImage pane = paneOf(viz::ViewKind::Scalar, 0.0f, 16.0f, "");
     pane.channelInfo = {{"faces crossed", "faces", viz::ViewKind::Scalar, 0.0f, 16.0f},

@@ -817,6 +817,7 @@ private:
             kRectifiedView, "Rectified map, picked row",
             "S / pi as grey (row 0 at the top = slice 0; nearest rows and columns when larger than 1024), the "
             "picked pixel's slice in red", ViewKind::Color, img));
+        out.intermediates.back().picture = true;
     }
 
     // Singular values, B_i(beta) and Gamma_i(gamma) as plots, the rank-N reconstruction error and the
@@ -887,6 +888,7 @@ private:
             "level 0 (root) at the top; each band: min (upper half), max (lower half) as beta / pi; blue = level "
             "not built yet (mip_levels)", ViewKind::Color,
             std::make_shared<Image>(minmax::pyramidView(readTreeRow(w.tree, pickedRow(input)), w.levelsBuilt))));
+        out.intermediates.back().picture = true;
     }
 
     void publishTraverse(FrameOutput& out, const FrameInput& input) {
@@ -926,6 +928,7 @@ private:
             std::make_shared<Image>(minmax::traceView(readTreeRow(w.tree, row), coords[1], coords[2],
                                                       int(substepLimit(input, kTraverseIndex))))));
         out.intermediates.back().rayView = true;
+        out.intermediates.back().picture = true;
     }
 
     std::vector<ParamInfo> mParams;

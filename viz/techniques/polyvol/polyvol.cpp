@@ -862,6 +862,7 @@ private:
                     (mWireMode == 3 && s.at("wireframe") == 0.0 ? "; drawn because this view is shown (its time counts in the volume stage)" : "");
         mesh.kind = mWireMode != 0 ? ViewKind::Color : ViewKind::Mesh;
         mesh.orbit = mWireMode == 3;
+        mesh.picture = mWireMode != 0;
         out.intermediates.push_back(mesh);
         out.intermediates.push_back(render::textureIntermediate(
             kCrossings, "Crossings",

@@ -422,6 +422,7 @@ public:
                 "lights (yellow); mesh_yaw, mesh_pitch, mesh_zoom move the camera",
                 "", ViewKind::Color, 0.0f, 1.0f, mMeshView.texture());
             view.orbit = true;  // the window turns it by dragging
+            view.picture = true;
             out.intermediates.push_back(std::move(view));
         }
         if (mRayPlanes) {
@@ -452,6 +453,7 @@ public:
             chart.image = std::make_shared<Image>(slices::rayPlanesChart(*mRayPlanes));
             chart.extent = {chart.image->width, chart.image->height, 1};
             chart.rayView = true;
+            chart.picture = true;
             out.intermediates.push_back(std::move(chart));
         }
         if (t.count) {

@@ -312,6 +312,7 @@ public:
             out.intermediates.push_back(vsv::cpuIntermediate(
                 kVplImage, "VPLs on the emitter", "emitter uv square (u right, v down): each VPL's L_e as a dot",
                 ViewKind::Color, vplImage()));
+        if (area) out.intermediates.back().picture = true;
         out.lastStageRun = kVplsIndex;
         if (stop == kVplsIndex) return out;
 
