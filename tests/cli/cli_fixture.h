@@ -117,4 +117,20 @@ inline std::string imagesLoadedInBrowser(const fs::path& page, const fs::path& s
     return text.substr(start, text.find('"', start) - start);
 }
 
+// Headless Chromium's screenshot of `page` (width x height CSS pixels) into `png`; false when no
+// browser is installed or it wrote nothing.
+inline bool screenshotInBrowser(const fs::path& page, const fs::path& scratch, const fs::path& png, int width,
+                                int height) {
+    const char* browser = "/usr/bin/chromium";
+    if (!fs::exists(browser)) return false;
+    const std::string cmd = std::string(browser) +
+                            " --headless --no-sandbox --disable-gpu --disable-quic --no-first-run "
+                            "--disable-background-networking --disable-component-update --disable-sync "
+                            "--hide-scrollbars --user-data-dir=" + (scratch / "profile").string() +
+                            " --virtual-time-budget=5000 --window-size=" + std::to_string(width) + "," +
+                            std::to_string(height) + " --screenshot=" + png.string() + " file://" + page.string() +
+                            " >/dev/null 2>&1";
+    return std::system(cmd.c_str()) == 0 && fs::exists(png);
+}
+
 }  // namespace viz::testing

@@ -119,6 +119,19 @@ TEST_F(CliTest, EveryLessonExportsAPageWithAllItsImages) {
             continue;
         }
         EXPECT_EQ(loaded, "images=" + std::to_string(images) + " missing=0") << name;
+        // The page as a reader sees it: the first screenful shows its figures (coloured pixels), not
+        // just text on white.
+        const fs::path shot = mDir / (name + "-page.png");
+        ASSERT_TRUE(screenshotInBrowser(out / "index.html", mDir, shot, 1000, 1600)) << name;
+        const Image seen = readImage(shot.string());
+        std::size_t coloured = 0;
+        for (int y = 0; y < seen.height; ++y)
+            for (int x = 0; x < seen.width; ++x) {
+                const float red = seen.at(x, y, 0), green = seen.at(x, y, 1), blue = seen.at(x, y, 2);
+                const float top = std::max({red, green, blue}), low = std::min({red, green, blue});
+                coloured += top - low > 0.1f || top < 0.5f ? 1 : 0;  // a colour, or dark (a figure, not paper)
+            }
+        EXPECT_GT(double(coloured) / double(seen.width * seen.height), 0.10) << name << ": " << shot;
     }
     EXPECT_GE(lessons, 2);
     EXPECT_GT(namedTotal, 0) << "no lesson sets a parameter with named values: the check above checked nothing";
