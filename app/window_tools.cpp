@@ -83,7 +83,15 @@ void GuiApp::drawComparison(DrawList& dl, const Rect& area) {
             : "failed: " + firstLine(tile.failure);
         if (tile.error.nanPixels + tile.error.infPixels > 0)
             figures += "   " + std::to_string(tile.error.nanPixels + tile.error.infPixels) + " NaN/Inf px";
-        dl.textClipped({box.min.x, box.max.y + 2.0f}, caption, kText, at.x + cell.x - pad);
+        float captionX = box.min.x;
+        if (tile.technique != "reference") {
+            // The colour of its point in the error-against-time plot (whose legend a small cell leaves out).
+            const float mark = line - 6.0f * mScale;
+            dl.rect({{captionX, box.max.y + 5.0f * mScale}, {captionX + mark, box.max.y + 5.0f * mScale + mark}},
+                    viz::plot::categoricalColor(i));
+            captionX += mark + 4.0f * mScale;
+        }
+        dl.textClipped({captionX, box.max.y + 2.0f}, caption, kText, at.x + cell.x - pad);
         dl.textClipped({box.min.x, box.max.y + 2.0f + line}, figures, kDim, at.x + cell.x - pad);
     }
 }
