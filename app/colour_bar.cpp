@@ -11,11 +11,7 @@
 namespace airlight {
 namespace {
 
-std::string figure(double v) {
-    char buf[48];
-    std::snprintf(buf, sizeof buf, "%.3g", v);
-    return buf;
-}
+std::string figure(double v) { return shortNumber(v, 3); }
 
 // The plot module's ticks for [lo, hi] that lie inside it, placed along the bar by `at`; when fewer than
 // two fall inside, the two ends themselves.
@@ -88,6 +84,12 @@ void classes(ColourBar& bar, const std::vector<float>& values, const std::vector
 }
 
 }  // namespace
+
+std::string shortNumber(double v, int digits) {
+    char buf[48];
+    std::snprintf(buf, sizeof buf, "%.*g", digits, v);
+    return buf;
+}
 
 ColourBar colourBarFor(const PaneImage& pane, const DisplayMapping& m, const SpecialCounts& counts) {
     ColourBar bar;

@@ -49,6 +49,9 @@ struct ColourBar {
 
 inline constexpr int kRampTexels = 128;
 
+// `v` with `digits` significant digits (%g), as the bar and its captions print numbers.
+std::string shortNumber(double v, int digits = 3);
+
 // `counts`: the view's NaN / Inf / negative / sentinel pixel counts (view_stats.h).
 ColourBar colourBarFor(const PaneImage& pane, const DisplayMapping& mapping, const SpecialCounts& counts);
 

@@ -14,11 +14,7 @@
 namespace airlight {
 namespace {
 
-std::string figure(double v) {
-    char buf[48];
-    std::snprintf(buf, sizeof buf, "%.4g", v);
-    return buf;
-}
+std::string figure(double v) { return shortNumber(v, 4); }
 
 // What the colour bar says, as one line of text.
 std::string captionOf(const ColourBar& bar, const DisplayMapping& m) {
@@ -37,18 +33,6 @@ std::string captionOf(const ColourBar& bar, const DisplayMapping& m) {
     if (m.mode == DisplayMode::HdrColor || m.mode == DisplayMode::RangeColor) text += "; exposure " + figure(m.exposure) + " EV";
     for (const LegendSwatch& sw : bar.legend) text += "; " + sw.label + ": " + std::to_string(sw.pixels) + " px";
     return text;
-}
-
-// The linear-RGB readback of an RGBA8 display target (sRGB-encoded values).
-viz::Image linearOf(const viz::Image& display) {
-    viz::Image linear(display.width, display.height, 3);
-    for (int y = 0; y < display.height; ++y)
-        for (int x = 0; x < display.width; ++x)
-            for (int c = 0; c < 3; ++c) {
-                const float s = display.at(x, y, c);
-                linear.at(x, y, c) = s <= 0.04045f ? s / 12.92f : std::pow((s + 0.055f) / 1.055f, 2.4f);
-            }
-    return linear;
 }
 
 Figure plotFigure(const PaneImage& pane, const viz::ui::FontAtlas& font) {
@@ -115,7 +99,7 @@ Figure renderFigure(ViewState& view, float exposureStops, const viz::ui::FontAtl
     for (const BarImageDraw& d : bars) display.draw(*d.pane, d.rect, size, d.mapping, d.view ? *d.view : viz::ui::ImageViewTransform{});
     renderer.draw(text, size);
     viz::gl::Framebuffer::bindDefault();
-    f.image = linearOf(viz::gl::readTexture(target));
+    f.image = viz::ui::linearFromDisplay(viz::gl::readTexture(target));
     return f;
 }
 

@@ -8,10 +8,14 @@ void GuiApp::toggleComparison() {
         mComparison.close();
         return;
     }
+    openComparison(mIds);
+}
+
+void GuiApp::openComparison(const std::vector<std::string>& ids) {
     viz::scene::Scene scene = mScene;
     scene.camera = mController.camera();
     try {
-        mComparison.open(scene, {mOptions.width, mOptions.height}, mIds);
+        mComparison.open(scene, {mOptions.width, mOptions.height}, ids);
     } catch (const std::exception& e) {
         mError = std::string("comparison: ") + e.what();
         mComparison.close();
@@ -23,14 +27,7 @@ void GuiApp::showLessonComparison(const std::vector<std::string>& techniques) {
     if (techniques.empty()) return;
     std::vector<std::string> ids = {"reference"};
     ids.insert(ids.end(), techniques.begin(), techniques.end());
-    viz::scene::Scene scene = mScene;
-    scene.camera = mController.camera();
-    try {
-        mComparison.open(scene, {mOptions.width, mOptions.height}, ids);
-    } catch (const std::exception& e) {
-        mError = std::string("comparison: ") + e.what();
-        mComparison.close();
-    }
+    openComparison(ids);
 }
 
 void GuiApp::runComparisonTechniques() {

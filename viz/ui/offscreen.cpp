@@ -20,7 +20,10 @@ Image renderOffscreen(const DrawList& list, glm::ivec2 size, glm::vec4 backgroun
     renderer.draw(list, size);
     gl::Framebuffer::bindDefault();
 
-    const Image display = gl::readTexture(target);
+    return linearFromDisplay(gl::readTexture(target));
+}
+
+Image linearFromDisplay(const Image& display) {
     Image linear(display.width, display.height, 3);
     for (int y = 0; y < display.height; ++y)
         for (int x = 0; x < display.width; ++x)

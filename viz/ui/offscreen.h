@@ -14,4 +14,8 @@ namespace viz::ui {
 // gives back the colours the list asked for.
 Image renderOffscreen(const DrawList& list, glm::ivec2 size, glm::vec4 background);
 
+// Display values (sRGB-encoded, as a display target holds them) as linear RGB: what writeImage's PNG
+// encoding turns back into those display values.
+Image linearFromDisplay(const Image& display);
+
 }  // namespace viz::ui
