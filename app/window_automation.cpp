@@ -308,7 +308,11 @@ nlohmann::json GuiApp::viewSidecar(int id, const ViewState& v) {
         if (b.kind == ColourBar::Kind::Classes) bar["classes"] = b.classLabels;
         nlohmann::json legend = nlohmann::json::array();
         for (const LegendSwatch& sw : b.legend)
-            legend.push_back({{"label", sw.label}, {"value", number(sw.value)}, {"pixels", sw.pixels}, {"sentinel", sw.sentinel}});
+            // The overlays' values are NaN and Inf themselves: named, not null.
+            legend.push_back({{"label", sw.label},
+                              {"value", std::isfinite(sw.value) ? nlohmann::json(sw.value)
+                                                                : nlohmann::json(std::isnan(sw.value) ? "NaN" : sw.value > 0 ? "Inf" : "-Inf")},
+                              {"pixels", sw.pixels}, {"sentinel", sw.sentinel}});
         bar["legend"] = legend;
         j["colour_bar"] = std::move(bar);
     }

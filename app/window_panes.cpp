@@ -61,11 +61,16 @@ void GuiApp::buildPane(ViewState& v) {
                 others.push_back(it->second.content);
                 others.push_back(it->second.pane.id);  // what it shows in its stead (built before this one)
             }
+        // An L_air view elsewhere in the grid takes the stage's first intermediate (the one closest to
+        // L_air): a final-frame view standing in leaves it to that view.
+        const bool leaveFirst = v.content == "final" && std::find(others.begin(), others.end(), "airlight") != others.end();
         int first = -1, unshown = -1;
         for (int i = 0; i < int(all.size()); ++i) {
             const std::string& id = all[std::size_t(i)].id;
             if (std::find(declared.begin(), declared.end(), id) == declared.end()) continue;
-            if (first < 0) first = i;
+            const bool isFirst = first < 0;
+            if (isFirst) first = i;
+            if (isFirst && leaveFirst) continue;
             if (unshown < 0 && std::find(others.begin(), others.end(), id) == others.end()) unshown = i;
         }
         index = unshown >= 0 ? unshown : first;
