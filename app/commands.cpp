@@ -328,10 +328,7 @@ int runDefault() {
     request.technique = kDefaultTechnique;
     request.width = 640;
     request.height = 480;
-    // Every intermediate is written, those drawn on demand too.
-    const auto declaring = viz::makeTechnique(request.technique);  // alive while its stages are read
-    for (const viz::StageInfo& st : declaring->stages())
-        request.views.insert(request.views.end(), st.onDemand.begin(), st.onDemand.end());
+    request.allViews = true;  // every intermediate is written, those drawn on demand too
     RenderJob job(request);
     printNotes(job.scene());
     const viz::FrameOutput& out = job.run();

@@ -34,9 +34,7 @@ RenderJob::RenderJob(const RenderRequest& request) {
     mInput.scene = &mScene;
     mInput.width = request.width;
     mInput.height = request.height;
-    for (const viz::StageInfo& st : mTechnique->stages())
-        for (const std::string& id : st.onDemand)
-            if (std::find(request.views.begin(), request.views.end(), id) != request.views.end()) mInput.views.push_back(id);
+    mInput.views = viz::onDemandAmong(*mTechnique, request.views, request.allViews);
     if (mTechnique->needsGl()) {
         // Debug builds ask for a debug context and log GL errors through the debug-output callback.
 #ifdef NDEBUG

@@ -28,6 +28,7 @@ struct RenderRequest {
     // What the caller writes or shows: the intermediates a stage draws only on demand are drawn for
     // these (StageInfo::onDemand; `render --layer polyvol.mesh`).
     std::vector<std::string> views;
+    bool allViews = false;  // every intermediate is wanted (the headless default render writes them all)
 };
 
 class RenderJob {

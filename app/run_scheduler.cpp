@@ -60,11 +60,7 @@ ResumePoint resumePoint(const viz::Technique& t, const RunKey& previous, int pre
 }
 
 std::vector<std::string> StageRunner::onDemandAmong(const std::vector<std::string>& shown) const {
-    std::set<std::string> wanted;
-    for (const viz::StageInfo& st : mTechnique->stages())
-        for (const std::string& id : st.onDemand)
-            if (std::find(shown.begin(), shown.end(), id) != shown.end()) wanted.insert(id);
-    return {wanted.begin(), wanted.end()};
+    return viz::onDemandAmong(*mTechnique, shown);
 }
 
 viz::FrameOutput StageRunner::run(const viz::scene::Scene& scene, int width, int height, const viz::Settings& settings,

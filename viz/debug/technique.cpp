@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 #include <sstream>
 
 #include "core/error.h"
@@ -41,6 +42,15 @@ std::string settingText(const std::vector<ParamInfo>& params, const std::string&
     char number[32];
     std::snprintf(number, sizeof(number), "%g", value);
     return name + "=" + number;
+}
+
+std::vector<std::string> onDemandAmong(const Technique& technique, const std::vector<std::string>& shown,
+                                       bool everything) {
+    std::set<std::string> wanted;
+    for (const StageInfo& st : technique.stages())
+        for (const std::string& id : st.onDemand)
+            if (everything || std::find(shown.begin(), shown.end(), id) != shown.end()) wanted.insert(id);
+    return {wanted.begin(), wanted.end()};
 }
 
 Settings completeSettings(const Technique& technique, const Settings& given) {

@@ -267,6 +267,11 @@ Settings completeSettings(const Technique& technique, const Settings& given);
 // accum=rgba8), any other value as a number (%g). Unknown names and out-of-range indices stay numbers.
 std::string settingText(const std::vector<ParamInfo>& params, const std::string& name, double value);
 
+// The intermediates among `shown` that a stage of `technique` draws only on demand (StageInfo::onDemand),
+// sorted, once each: what FrameInput::views should ask for. `everything`: all of them.
+std::vector<std::string> onDemandAmong(const Technique& technique, const std::vector<std::string>& shown,
+                                       bool everything = false);
+
 // The `force_features` parameter every technique that prunes by scene offers: 1 runs every stage and
 // compiles in every feature its plan would leave out for the scene, so `airlight report` can measure
 // what each plan saves. The image must not change.
