@@ -9,6 +9,7 @@
 #define AIRLIGHT_GLSL
 
 #include "common/constants.glsl"
+#include "common/sort.glsl"
 
 // ---- Precision-dependent knobs (Precision<float> in airlight.h) ---------------------------------------
 const int AIRLIGHT_NODES = 8;
@@ -191,15 +192,7 @@ float pointSegment(float tP, float h, float x0, float x1, float sigma_s, float s
     for (int i = 0; i < 12; ++i) {
         breaks[i] = clamp(breaks[i], lo, hi);
     }
-    for (int i = 1; i < 12; ++i) {
-        float v = breaks[i];
-        int j = i - 1;
-        while (j >= 0 && breaks[j] > v) {
-            breaks[j + 1] = breaks[j];
-            --j;
-        }
-        breaks[j + 1] = v;
-    }
+    SORT_ASCENDING(breaks, 12);
     float sum = pointPanel(lo, breaks[0], y0, nu, g) + pointPanel(breaks[11], hi, y0, nu, g);
     for (int i = 0; i < 11; ++i) {
         sum += pointPanel(breaks[i], breaks[i + 1], y0, nu, g);

@@ -28,7 +28,8 @@ VIZ_HD_CONST kFirstFreeSsboBinding = 4;
 // block: on llvmpipe a light loop over a UBO ran 3.8x faster than over the SSBO (surface pass, 19 lights,
 // 160x120, machine shared with builds: 69 ms vs 263 ms). A uniform block needs a fixed size, hence kMaxGpuLights (48 KB).
 VIZ_HD_CONST kBindingLightsUniform = 1;     // UBO: GpuLight gLights[kMaxGpuLights]
-VIZ_HD_CONST kFirstFreeUboBinding = 2;
+VIZ_HD_CONST kBindingMedium = 2;            // UBO: GpuMedium (common/medium.glsl)
+VIZ_HD_CONST kFirstFreeUboBinding = 3;
 VIZ_HD_CONST kMaxGpuLights = 256;           // lights after area lights became VPLs
 
 VIZ_HD_CONST kUnitMaterialTextures = 0;     // sampler2DArray, RGBA8 sRGB bytes: base colour + emission
@@ -43,6 +44,13 @@ VIZ_HD_CONST kLightPoint = 0;
 VIZ_HD_CONST kLightSpot = 1;
 VIZ_HD_CONST kLightDirectional = 2;
 VIZ_HD_CONST kLightVpl = 3;  // one node of an area light's quadrature, cosine emission lobe
+
+// The homogeneous medium, one uniform block for every shader (filled by render::MediumBlock): x = sigma_s,
+// y = sigma_t, z = g (Henyey-Greenstein), w unused. common/medium.glsl declares the same 16 bytes as three
+// floats, which std140 places at offsets 0, 4 and 8.
+struct GpuMedium {
+    vec4 coefficients;
+};
 
 // One material. Colours are linear. Texture layers index the material texture array; a layer whose
 // image is smaller than the array uses only the [0, size) corner, hence the per-layer size.

@@ -32,9 +32,7 @@ uniform int uPieces;         // spot: gamma pieces across the cone with their ow
 uniform int uMarchSamples;   // brute-force samples per ray
 uniform vec4 uEpipoles;      // xy epipole, zw anti-epipole, GL pixel coordinates (y up); far away if none
 uniform float uEpipoleRadius;
-uniform float uSigmaS;
-uniform float uSigmaT;
-uniform float uG;
+#include "common/medium.glsl"  // uSigmaS, uSigmaT, uG
 
 // Brute force for lights without an epipolar path (raymarch's midpoint rule): uMarchSamples samples
 // uniform in t, each the integrand sigma_s p E V exp(-sigma_t t) dt at its interval's middle. No loops

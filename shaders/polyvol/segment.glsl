@@ -7,12 +7,11 @@
 #include "common/host_device.glsl"
 #include "common/airlight.glsl"
 #include "common/lights.glsl"
+#include "common/sort.glsl"
 #include "polyvol/airlight_lut.glsl"
 #include "common/camera_ray.glsl"
 
-uniform float uSigmaS;
-uniform float uSigmaT;
-uniform float uG;
+#include "common/medium.glsl"  // uSigmaS, uSigmaT, uG
 uniform int uSpotPieces;   // spot lights: equal-angle pieces per penumbra part (see angularSegment)
 
 // Unit-intensity isotropic-source airlight of [x0, x1] (closed form or lookup table).
@@ -135,15 +134,7 @@ vec3 angularSegment(GpuLight L, vec3 w, RayLightGeometry g, float x0, float x1) 
         if (tPlane > x0 && tPlane < x1 && n < 8) breaks[n++] = tPlane;
     }
     // Insertion sort (at most 6 interior points), then x1.
-    for (int i = 1; i < n; ++i) {
-        float v = breaks[i];
-        int j = i - 1;
-        while (j >= 0 && breaks[j] > v) {
-            breaks[j + 1] = breaks[j];
-            --j;
-        }
-        breaks[j + 1] = v;
-    }
+    SORT_ASCENDING(breaks, n);
     bool cookie = L.info.y >= 0;
     vec3 sum = vec3(0.0);
     for (int i = 0; i < n; ++i) {

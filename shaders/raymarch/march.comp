@@ -27,9 +27,7 @@ layout(r32f, binding = 1) uniform image2D uLitFraction;     // running count of 
 
 uniform int uSamples;
 uniform int uLightCount;
-uniform float uSigmaS;
-uniform float uSigmaT;
-uniform float uG;
+#include "common/medium.glsl"  // uSigmaS, uSigmaT, uG
 uniform uint uSeed;
 uniform int uPairBegin;  // first (light, sample) pair of this dispatch
 uniform int uPairEnd;    // one past the last

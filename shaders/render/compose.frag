@@ -4,7 +4,7 @@
 layout(binding = 0) uniform sampler2D uSurface;
 layout(binding = 1) uniform sampler2D uDistance;
 layout(binding = 2) uniform sampler2D uAirlight;
-uniform float uSigmaT;
+#include "common/medium.glsl"  // uSigmaS, uSigmaT, uG
 
 layout(location = 0) out vec4 oFinal;
 

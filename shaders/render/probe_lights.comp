@@ -14,7 +14,7 @@ layout(std430, binding = kFirstFreeSsboBinding + 1) writeonly buffer OutBlock { 
 uniform int uMode;
 uniform int uLight;
 uniform int uCount;
-uniform float uSigmaT;
+#include "common/medium.glsl"  // uSigmaS, uSigmaT, uG
 
 void main() {
     if (uMode == 0) {

@@ -7,7 +7,7 @@
 #include "render/materials.glsl"
 
 uniform float uZfar;
-uniform float uSigmaT;
+#include "common/medium.glsl"  // uSigmaS, uSigmaT, uG
 uniform int uLightCount;
 
 in vec3 vPosition;  // eye-relative: the eye is at the origin

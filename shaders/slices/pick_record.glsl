@@ -1,6 +1,6 @@
 // slices/pick_record.glsl: the picked pixel's record of one sampling plane (slices.ray_planes), one per
 // plane and draw set. plane.frag writes the planes that made a fragment at the pixel; pick_replay.frag
-// says why the others made none. The status codes are mirrored by PickStatus in slices.cpp.
+// says why the others made none. The status codes are mirrored by PickStatus in viz/techniques/slices/ray_planes.h.
 #include "common/host_device.glsl"
 
 struct PickRecord {

@@ -29,9 +29,7 @@ uniform vec2 uSize;           // image size in pixels
 uniform float uTanHalf;       // tan(yfov / 2)
 uniform float uAspect;
 uniform float uSpacing;       // delta s, view depth between planes
-uniform float uSigmaS;
-uniform float uSigmaT;
-uniform float uG;
+#include "common/medium.glsl"  // uSigmaS, uSigmaT, uG
 uniform float uStoreScale;    // value -> stored value
 uniform float uArtisticUnits; // paper units per scene unit (the paper's constants assume its world)
 uniform float uFractionOfMaxShells;  // N / 100 (the paper's maximum of 100 planes)

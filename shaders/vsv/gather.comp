@@ -34,9 +34,7 @@ layout(rgba32f, binding = 1) uniform image2D uAirlight;
 layout(rgba32f, binding = 2) uniform writeonly image2D uVisibility;
 
 uniform int uLight;
-uniform float uSigmaS;
-uniform float uSigmaT;
-uniform float uG;
+#include "common/medium.glsl"  // uSigmaS, uSigmaT, uG
 uniform int uRunBins;
 uniform int uAccumulate;     // 0: first light (overwrite), 1: add
 uniform int uEpipoleToward;  // the alpha = 0 epipole is in view and the grid starts at alpha = 0

@@ -28,9 +28,7 @@ uniform ivec3 uCells;
 uniform int uFirstVpl;
 uniform int uVplCount;    // VPLs [uFirstVpl, uFirstVpl + uVplCount)
 uniform int uVplStride;   // 1 or 9
-uniform float uSigmaS;
-uniform float uSigmaT;
-uniform float uG;
+#include "common/medium.glsl"  // uSigmaS, uSigmaT, uG
 uniform int uChunkBits;
 uniform float uDiscScale;  // 1: VPLs as discs of their area near the emitter (vpl_disc), 0: points  // phi bits per quadrature node
 uniform int uAccumulate;

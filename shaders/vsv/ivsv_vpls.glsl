@@ -1,5 +1,5 @@
 // The VPLs of ivsv and their epipolar spaces (one std430 array, filled by IvsvTechnique; every member a
-// vec4 or ivec4 so that C++ and GLSL agree, see ivsv.cpp's static_asserts).
+// vec4 or ivec4 so that C++ and GLSL agree, see the static_assert in ivsv_technique.h).
 #ifndef VSV_IVSV_VPLS_GLSL
 #define VSV_IVSV_VPLS_GLSL
 

@@ -13,6 +13,7 @@
 #include "gl/gl_test_fixture.h"
 #include "render/gpu_lights.h"
 #include "render/gpu_scene.h"
+#include "render/medium_block.h"
 #include "render/shadow_maps.h"
 #include "scene/texture_sampling.h"
 
@@ -51,10 +52,35 @@ std::vector<glm::vec4> probe(const GpuScene& gpuScene, const GpuLights& lights, 
     program.set("uMode", mode);
     program.set("uLight", light);
     program.set("uCount", mode == 0 ? lights.count() : int(points.size()));
-    program.set("uSigmaT", sigma_t);
+    MediumBlock medium;  // alive until the dispatch: deleting a buffer unbinds it
+    medium.bind(scene::Medium{.sigma_s = 0.0, .sigma_a = double(sigma_t), .g = 0.0});
     glDispatchCompute(1, 1, 1);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     return out.download<glm::vec4>();
+}
+
+// The medium block as the GLSL compiler lays it out: three floats at the offsets of GpuMedium's x, y, z
+// (std140), in a block no larger than GpuMedium, at the binding host_device.glsl declares.
+TEST_F(RenderLights, MediumBlockLayoutMatchesGpuMedium) {
+    auto program = gl::Program::compile({.stages = {"render/probe_lights.comp"}, .label = "test.medium_layout"});
+    const GLuint block = glGetProgramResourceIndex(program.id(), GL_UNIFORM_BLOCK, "GpuMediumBlock");
+    ASSERT_NE(block, GL_INVALID_INDEX);
+    const GLenum blockProps[] = {GL_BUFFER_BINDING, GL_BUFFER_DATA_SIZE};
+    GLint blockValues[2] = {-1, -1};
+    glGetProgramResourceiv(program.id(), GL_UNIFORM_BLOCK, block, 2, blockProps, 2, nullptr, blockValues);
+    EXPECT_EQ(blockValues[0], hd::kBindingMedium);
+    EXPECT_GE(blockValues[1], 12);
+    EXPECT_LE(blockValues[1], GLint(sizeof(hd::GpuMedium)));
+    const char* names[] = {"uSigmaS", "uSigmaT", "uG"};
+    for (int i = 0; i < 3; ++i) {
+        const GLuint index = glGetProgramResourceIndex(program.id(), GL_UNIFORM, names[i]);
+        ASSERT_NE(index, GL_INVALID_INDEX) << names[i];
+        const GLenum props[] = {GL_OFFSET, GL_BLOCK_INDEX};
+        GLint values[2] = {-1, -1};
+        glGetProgramResourceiv(program.id(), GL_UNIFORM, index, 2, props, 2, nullptr, values);
+        EXPECT_EQ(values[0], GLint(i * sizeof(float))) << names[i];
+        EXPECT_EQ(values[1], GLint(block)) << names[i];
+    }
 }
 
 TEST_F(RenderLights, GpuLightAndMaterialLayoutsMatchGlsl) {

@@ -573,7 +573,8 @@ TEST_F(RenderPipeline, ComposeFinalAttenuatesTheSurfaceAndAddsAirlight) {
     const auto a = make(GL_RGBA32F, GL_RGBA, air);
     auto out = gl::Texture::create({.format = GL_RGBA32F, .size = {w, h, 1}, .label = "test.final"});
     const float sigma_t = 0.3f;
-    composeFinal(s, d, a, sigma_t, out);
+    const scene::Medium medium{.sigma_s = 0.0, .sigma_a = 0.3, .g = 0.0};  // sigma_t() = 0.3
+    composeFinal(s, d, a, medium, out);
     const Image img = gl::readTexture(out);
     for (int y = 0; y < h; ++y) {
         for (int x = 0; x < w; ++x) {

@@ -17,7 +17,7 @@ Composer::Composer()
       mFramebuffer(gl::Framebuffer::create("render.compose_fbo")) {}
 
 void Composer::run(const gl::Texture& surfaceRadiance, const gl::Texture& distance, const gl::Texture& airlight,
-                   float sigma_t, const gl::Texture& out) {
+                   const scene::Medium& medium, const gl::Texture& out) {
     const glm::ivec2 size(out.size());
     VIZ_CHECK(glm::ivec2(surfaceRadiance.size()) == size && glm::ivec2(distance.size()) == size &&
                   glm::ivec2(airlight.size()) == size,
@@ -33,15 +33,15 @@ void Composer::run(const gl::Texture& surfaceRadiance, const gl::Texture& distan
     distance.bindUnit(1);
     airlight.bindUnit(2);
     mProgram.use();
-    mProgram.set("uSigmaT", sigma_t);
+    mMedium.bind(medium);
     mTriangle.draw();
     gl::Framebuffer::bindDefault();
 }
 
 void composeFinal(const gl::Texture& surfaceRadiance, const gl::Texture& distance, const gl::Texture& airlight,
-                  float sigma_t, const gl::Texture& out) {
+                  const scene::Medium& medium, const gl::Texture& out) {
     Composer composer;
-    composer.run(surfaceRadiance, distance, airlight, sigma_t, out);
+    composer.run(surfaceRadiance, distance, airlight, medium, out);
 }
 
 }  // namespace viz::render

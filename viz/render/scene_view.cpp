@@ -88,7 +88,7 @@ Image SceneViewPasses::compose(const scene::Scene& scene, const gl::Texture& air
     const glm::ivec3 size = airlight.size();
     if (!mFinal || mFinal.size() != size)
         mFinal = gl::Texture::create({.target = GL_TEXTURE_2D, .format = GL_RGBA32F, .size = size, .label = prefix + ".final"});
-    mComposer->run(mSurface->surfaceRadiance(), mSurface->distance(), airlight, float(scene.medium.sigma_t()), mFinal);
+    mComposer->run(mSurface->surfaceRadiance(), mSurface->distance(), airlight, scene.medium, mFinal);
     out.push_back(textureIntermediate(prefix + ".final", "Final", "surface * exp(-sigma_t d) + L_air", "radiance",
                                       ViewKind::Color, 0.0f, 1.0f, mFinal));
     return readRgb(mFinal);

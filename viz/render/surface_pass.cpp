@@ -40,7 +40,7 @@ void SurfacePass::run(const GpuScene& gpuScene, const GpuLights& lights, const S
     mProgram.set("uModel", eyeRelativeModel(camera.position));
     mProgram.set("uViewProj", eyeRelativeViewProjection(camera, width, height));
     mProgram.set("uZfar", float(camera.zfar));
-    mProgram.set("uSigmaT", float(scene.medium.sigma_t()));
+    mMedium.bind(scene.medium);
     mProgram.set("uLightCount", lights.count());
 
     mFramebuffer.bind();

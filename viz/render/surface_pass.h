@@ -9,6 +9,7 @@
 #include "gl/texture.h"
 #include "render/gpu_lights.h"
 #include "render/gpu_scene.h"
+#include "render/medium_block.h"
 #include "render/shadow_maps.h"
 #include "scene/scene.h"
 
@@ -30,6 +31,7 @@ public:
 
 private:
     gl::Program mProgram;
+    MediumBlock mMedium;
     gl::Texture mDistance, mRadiance, mDepth;
     gl::Framebuffer mFramebuffer;
     int mWidth = 0, mHeight = 0;

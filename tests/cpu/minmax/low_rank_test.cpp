@@ -10,7 +10,7 @@
 
 #include "shared/airlight.h"
 #include "techniques/minmax/low_rank.h"
-#include "techniques/minmax/views.h"
+#include "techniques/minmax/charts.h"
 
 namespace {
 
@@ -97,7 +97,7 @@ TEST(MinmaxLowRank, TablesReachTheOptimalRankNError) {
 
 }  // namespace
 
-// The plots the window shows for the low-rank integrand (views.h) carry its numbers: every positive
+// The plots the window shows for the low-rank integrand (charts.h) carry its numbers: every positive
 // singular value once (kept ones first, the dropped curve starting at the last kept value), and each
 // kept B_i / Gamma_i at its grid abscissa, in degrees, or for a directional light gamma = rho in scene units.
 TEST(MinmaxLowRank, ThePlotsCarryTheSingularValuesAndBasisFunctions) {

@@ -11,9 +11,11 @@
 #include "gl/program.h"
 #include "gl/stage_clock.h"
 #include "gl/texture.h"
+#include "render/camera_ray.h"
 #include "render/host_device.h"
 #include "render/intermediates.h"
 #include "render/light_culling.h"
+#include "render/medium_block.h"
 #include "render/scene_view.h"
 #include "scene/camera.h"
 
@@ -253,17 +255,10 @@ private:
         const scene::Camera& cam = scene.camera;
         const Settings& s = input.settings;
         program.use();
-        program.set("uSize", glm::ivec2(input.width, input.height));
-        program.set("uForward", glm::vec3(cam.forward));
-        program.set("uRight", glm::vec3(scene::cameraRight(cam)));
-        program.set("uUp", glm::vec3(cam.up));
-        program.set("uTanHalf", float(std::tan(cam.yfov * 0.5)));
-        program.set("uAspect", float(scene::aspectOf(cam, input.width, input.height)));
+        render::bindCameraRay(program, cam, input.width, input.height);
         program.set("uSamples", int(s.at("samples")));
         program.set("uLightCount", mView.lights().count());
-        program.set("uSigmaS", float(scene.medium.sigma_s));
-        program.set("uSigmaT", float(scene.medium.sigma_t()));
-        program.set("uG", float(scene.medium.g));
+        mMedium.bind(scene.medium);
         program.set("uSeed", unsigned(s.at("seed")));
         mView.lights().bind();
         mView.shadows().bind();
@@ -289,6 +284,7 @@ private:
     std::vector<ParamInfo> mParams;
     std::vector<StageInfo> mStages;
     render::SceneViewPasses mView;
+    render::MediumBlock mMedium;  // sigma_s, sigma_t, g for the shaders (common/medium.glsl)
     StageReuse mReuse;  // stages carried over from the last run (FrameInput::resumeAtStage)
     static std::int64_t pairsPerDispatch(const Settings& s) {
         return s.at("exact") != 0.0 ? kPairsPerDispatchExact : kPairsPerDispatchPlain;

@@ -30,7 +30,7 @@ enum RayPlaneColumn {
 // The table as a picture (RGB, row 0 at the top): one column band per plane, nearest plane at the left
 // (t grows to the right; draw sets side by side). Top: each plane's L_air as shaded (grey) and as stored
 // (orange), scaled to the largest; under it a status strip and a shadow-test strip (see the note in
-// slices.cpp).
+// slices.cpp, where the run publishes the chart).
 Image rayPlanesChart(const Image& table);
 
 }  // namespace viz::slices

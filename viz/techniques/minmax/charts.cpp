@@ -1,4 +1,4 @@
-#include "techniques/minmax/views.h"
+#include "techniques/minmax/charts.h"
 
 #include <algorithm>
 #include <bit>

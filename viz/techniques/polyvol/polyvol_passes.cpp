@@ -1,0 +1,343 @@
+// polyvol's GL passes: targets, the lookup table, the light volumes' meshes and their rasterisation, the
+// wireframe, the resolve near the light and the final clamp.
+#include "techniques/polyvol/polyvol_technique.h"
+
+#include <list>
+
+namespace viz::polyvol_detail {
+
+void PolyvolTechnique::allocateTargets(int width, int height) {
+    if (mTotal && mTotal.size().x == width && mTotal.size().y == height) return;
+    auto make = [&](GLenum format, const char* label) {
+        return gl::Texture::create(
+            {.target = GL_TEXTURE_2D, .format = format, .size = {width, height, 1}, .levels = 1, .label = label});
+    };
+    mTotal = make(GL_RGBA32F, kTotal);
+    mPositive = make(GL_RGBA32F, kPositive);
+    mNegative = make(GL_RGBA32F, kNegative);
+    mCrossings = make(GL_RGBA32F, kCrossings);
+    mAirlight = make(GL_RGBA32F, "polyvol.airlight");
+    mFramebuffer = gl::Framebuffer::create("polyvol.volume_fbo");
+    mFramebuffer.attachColor(0, mTotal);
+    mFramebuffer.attachColor(1, mPositive);
+    mFramebuffer.attachColor(2, mNegative);
+    mFramebuffer.attachColor(3, mCrossings);
+    mFramebuffer.checkComplete();
+}
+
+void PolyvolTechnique::ensureLut(double g) {
+    if (mLut && mLutG == g) return;
+    // Built once per process and g (the table depends on nothing else), then uploaded per technique. The
+    // last kLutCacheSize tables stay, most recently used first: a user dragging g does not grow it without
+    // bound (each table is kLutWidth x kLutHeight x 2 floats).
+    struct Cached {
+        double g;
+        polyvol::AirlightLut table;
+        double ms;
+    };
+    constexpr std::size_t kLutCacheSize = 4;
+    static std::list<Cached> cache;
+    auto it = std::find_if(cache.begin(), cache.end(), [g](const Cached& c) { return c.g == g; });
+    if (it == cache.end()) {
+        const auto start = std::chrono::steady_clock::now();
+        polyvol::AirlightLut built = polyvol::buildAirlightLut(g, kLutWidth, kLutHeight);
+        const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+        cache.push_front({g, std::move(built), ms});
+        if (cache.size() > kLutCacheSize) cache.pop_back();
+    } else {
+        cache.splice(cache.begin(), cache, it);
+    }
+    it = cache.begin();
+    const polyvol::AirlightLut& table = it->table;
+    mLutMs = it->ms;
+    mLut = gl::Texture::create({.target = GL_TEXTURE_2D, .format = GL_RG32F, .size = {kLutWidth, kLutHeight, 1},
+                                .levels = 1, .label = kLut});
+    mLut.upload(GL_RG, GL_FLOAT, table.rg.data());
+    mLut.setFilter(GL_NEAREST, GL_NEAREST);  // read with texelFetch, interpolated in the shader
+    mLut.setWrap(GL_CLAMP_TO_EDGE);
+    mLutG = g;
+}
+
+const gl::Program& PolyvolTechnique::volumeProgram(const Plan& plan) {
+    std::string key;
+    const gl::ShaderDefines defines = permutationDefines(plan, kDefines, &key);
+    mDefines = defines;
+    if (key != mProgramKey || !mProgram) {
+        mProgram = gl::Program::compile({.stages = {"polyvol/volume.vert", "polyvol/volume.frag"},
+                                         .defines = defines,
+                                         .label = "polyvol.volume"});
+        mWireProgram = gl::Program::compile({.stages = {"polyvol/volume.vert", "polyvol/wire.frag"},
+                                             .defines = defines,
+                                             .label = "polyvol.wire"});
+        mProgramKey = key;
+    }
+    return mProgram;
+}
+
+const gl::Buffer& PolyvolTechnique::extraKeys(ExtraKind kind, int stride, std::int64_t& triangles) {
+    Extra& e = mExtras[{int(kind), stride}];
+    if (!e.buffer) {
+        const bool cube = kind == ExtraKind::Seams;
+        const std::vector<std::uint32_t> keys = cube ? polyvol::cubeSeams(stride) : polyvol::gridClosure(stride);
+        e.buffer = gl::Buffer::create({.bytes = keys.size() * sizeof(std::uint32_t),
+                                       .data = keys.data(),
+                                       .flags = 0,
+                                       .label = cube ? "polyvol.cube_seams" : "polyvol.grid_closure"});
+        e.triangles = std::int64_t(keys.size() / 3);
+    }
+    triangles = e.triangles;
+    return e.buffer;
+}
+
+polyvol::VolumeGrid PolyvolTechnique::describe(const render::GpuLightCpu& L, int index, int n, double zfar, float cookieMask) const {
+    polyvol::VolumeGrid v;
+    v.lightIndex = index;
+    v.layer = L.info.z;
+    v.mapSize = n;
+    v.keyStride = n;
+    v.cookieMask = cookieMask;
+    v.range = L.shadow.y - L.shadow.x;
+    const glm::dvec3 pos(L.position);
+    if (L.info.x == render::hd::kLightPoint || L.info.x == render::hd::kLightVpl) {
+        v.mode = kModeCube;
+        v.faces = 6;
+        v.vplCube = L.info.x == render::hd::kLightVpl;
+        if (v.vplCube) v.mapSize = v.keyStride = mView.shadows().vplSize();
+        v.noHit = float((glm::length(pos) + zfar) * 1.01);
+        return v;
+    }
+    const glm::dmat4 inv = glm::inverse(glm::dmat4(L.shadowMatrix));
+    auto unproject = [&](double x, double y, double z) {
+        const glm::dvec4 q = inv * glm::dvec4(x, y, z, 1.0);
+        return glm::dvec3(q) / q.w;
+    };
+    if (L.info.x == render::hd::kLightSpot) {
+        v.mode = kModeSpot;
+        const glm::dvec3 axis(L.direction);
+        auto plane = [&](double x, double y) {
+            const glm::dvec3 d = unproject(x, y, 0.0) - pos;
+            return d / glm::dot(d, axis);
+        };
+        const glm::dvec3 o = plane(0, 0);
+        v.planeOrigin = glm::vec3(o);
+        v.planeX = glm::vec3(plane(1, 0) - o);
+        v.planeY = glm::vec3(plane(0, 1) - o);
+        v.noHit = float((glm::length(pos) + zfar) * 1.01);
+        return v;
+    }
+    v.mode = kModeDirectional;
+    const glm::dvec3 o = unproject(0, 0, -1);
+    const glm::dvec3 x = unproject(1, 0, -1) - o, y = unproject(0, 1, -1) - o;
+    v.planeOrigin = glm::vec3(o), v.planeX = glm::vec3(x), v.planeY = glm::vec3(y);
+    // Every point the camera can see is within zfar of the eye (the origin): the border ring is
+    // pushed out far enough to cover them, empty texels reach past them, the cap lies behind them.
+    const double half = std::min(glm::length(x), glm::length(y));
+    const double reach = glm::length(o) + zfar;
+    v.skirt = float(1.0 + (reach + half) / half);
+    const double margin = 0.01 * (reach + half);
+    v.noHit = float(std::max(double(L.shadow.y), zfar) + margin);
+    v.capDepth = float(std::min(double(L.shadow.x), -zfar) - margin);
+    return v;
+}
+
+std::int64_t PolyvolTechnique::drawVolumes(const scene::Scene& scene, const FrameInput& input, const Plan& plan) {
+    const Settings& s = input.settings;
+    const scene::Camera& cam = scene.camera;
+    const gl::Program& program = volumeProgram(plan);
+    const int n = mView.shadows().size();
+    // wireframe=3: the mesh from an orbit camera of its own, over the scene, the camera frustum and
+    // the lights (render::MeshView); set up before the volume pass's state.
+    if (mWireMode == 3)
+        mMeshView.begin(scene, mView.gpuScene(),
+                        {s.at("mesh_yaw"), s.at("mesh_pitch"), s.at("mesh_zoom")}, input.width, input.height);
+    // Each light's ball radius, before the volume pass's state: nearRadius runs a compute pass.
+    mNearRadii.clear();
+    for (const render::GpuLightCpu& L : mView.lights().lights())
+        mNearRadii.push_back(L.info.z < 0 || s.at("crack_check") != 0.0 ? 0.0f : nearRadius(L, cam, input.height));
+    program.use();
+    program.set("uViewProj", render::eyeRelativeViewProjection(cam, input.width, input.height));
+    render::bindCameraRay(program, cam, input.width, input.height);
+    program.set("uNear", float(cam.znear));
+    mMedium.bind(scene.medium);
+    program.set("uSpotPieces", int(s.at("spot_pieces")));
+    program.set("uConstant", int(s.at("crack_check")));
+    const bool atSurface = s.at("origin") != 0.0;
+    program.set("uOriginAtSurface", atSurface ? 1 : 0);
+    mView.lights().bind();
+    mView.shadows().bind();
+    mView.surface().distance().bindUnit(render::hd::kFirstFreeTextureUnit);
+    if (mLut) mLut.bindUnit(render::hd::kFirstFreeTextureUnit + 1);
+    if (mVao.id() == 0) mVao = gl::VertexArray::create("polyvol.vao");
+    mVao.bind();
+    mFramebuffer.bind();
+    glViewport(0, 0, input.width, input.height);
+    glDisable(GL_DEPTH_TEST);
+    glDepthMask(GL_FALSE);
+    glDisable(GL_CULL_FACE);
+    // Faces between the eye and the near plane must still count (ours: Billeter Sec. 5 disables the depth
+    // test and clamps each fragment to the depth buffer, which volume.frag does, but is silent on the
+    // near plane).
+    glEnable(GL_DEPTH_CLAMP);
+    glEnable(GL_BLEND);
+    glBlendEquation(GL_FUNC_ADD);
+    glBlendFunc(GL_ONE, GL_ONE);
+    const std::int64_t limit = std::int64_t(s.at("draw_triangles"));
+    const bool adaptiveWanted = featureEnabled(plan, "ADAPTIVE");
+    const int wire = mWireMode;
+    mWireDrawn = false;
+    if (wire) {
+        if (!mWire || mWire.size().x != input.width || mWire.size().y != input.height) {
+            mWire = gl::Texture::create({.target = GL_TEXTURE_2D, .format = GL_RGBA8,
+                                         .size = {input.width, input.height, 1}, .levels = 1,
+                                         .label = kMesh});
+            mWireFramebuffer = gl::Framebuffer::create("polyvol.wire_fbo");
+            mWireFramebuffer.attachColor(0, mWire);
+            mWireFramebuffer.checkComplete();
+        }
+        mWire.clear(glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+    }
+    std::int64_t drawn = 0;
+    mAdaptiveUsed = false;
+    mAdaptiveOverflow = false;
+    const auto& lights = mView.lights().lights();
+    for (int i = 0; i < int(lights.size()); ++i) {
+        const render::GpuLightCpu& L = lights[std::size_t(i)];
+        const int type = L.info.x;
+        if (L.info.z < 0) continue;
+        (void)type;
+        polyvol::VolumeGrid grid = describe(L, i, n, cam.zfar, float(s.at("cookie_mask")));
+        const bool adaptive = adaptiveWanted && grid.mode != kModeCube;
+        // The crack detector counts crossings of the whole mesh: no ball there.
+        const float radius = mNearRadii[std::size_t(i)];
+        program.set("uNearRadius", radius);
+        std::int64_t extraTriangles = 0;
+        if (adaptive) {
+            // Compute passes in between: the draw state is set again afterwards.
+            grid.keyStride = n + 1;
+            mTess.build(grid, s.at("threshold"), int(substepLimit(input, kVolumeIndex)), mDefines, mProgramKey);
+            mAdaptiveUsed = true;
+            mEdgeLight = i;
+            mAdaptiveLights.push_back(i);
+            mAdaptiveOverflow = mAdaptiveOverflow || mTess.overflowed();
+            mView.lights().bind();
+            mView.shadows().bind();
+            mFramebuffer.bind();
+            mVao.bind();
+            program.use();
+            setGridUniforms(program, grid);
+            program.set("uGridVertices", 0);
+            mTess.keys().bindBase(GL_SHADER_STORAGE_BUFFER, render::hd::kFirstFreeSsboBinding);
+            mTess.counters().bind(GL_DRAW_INDIRECT_BUFFER);
+            glDrawArraysIndirect(GL_TRIANGLES, reinterpret_cast<const void*>(polyvol::AdaptiveTessellation::drawOffset()));
+            drawn += mTess.triangles();
+            const gl::Buffer& closure = extraKeys(ExtraKind::Closure, n + 1, extraTriangles);
+            closure.bindBase(GL_SHADER_STORAGE_BUFFER, render::hd::kFirstFreeSsboBinding);
+            glDrawArrays(GL_TRIANGLES, 0, GLsizei(3 * extraTriangles));
+            drawn += extraTriangles;
+            if (wire) drawWire(input, L, grid, 0, extraTriangles, true);
+            if (atSurface || radius > 0.0f) resolve(input, i, radius);
+            continue;
+        }
+        const std::int64_t gridTriangles = polyvol::gridTriangleCount(grid.mapSize, grid.faces);
+        const gl::Buffer& keys = extraKeys(grid.mode == kModeCube ? ExtraKind::Seams : ExtraKind::Closure,
+                                           grid.mapSize, extraTriangles);
+        keys.bindBase(GL_SHADER_STORAGE_BUFFER, render::hd::kFirstFreeSsboBinding);
+        setGridUniforms(program, grid);
+        program.set("uGridVertices", int(3 * gridTriangles));
+        std::int64_t count = gridTriangles + extraTriangles;
+        if (limit > 0) count = std::min(count, limit);
+        glDrawArrays(GL_TRIANGLES, 0, GLsizei(3 * count));
+        drawn += count;
+        if (wire) drawWire(input, L, grid, gridTriangles, std::min(count, gridTriangles + extraTriangles) - gridTriangles, false);
+        if (atSurface || radius > 0.0f) resolve(input, i, radius);
+    }
+    glDisable(GL_DEPTH_CLAMP);
+    glDisable(GL_BLEND);
+    glDepthMask(GL_TRUE);
+    gl::Framebuffer::bindDefault();
+    return drawn;
+}
+
+void PolyvolTechnique::drawWire(const FrameInput& input, const render::GpuLightCpu& L, const polyvol::VolumeGrid& grid,
+              std::int64_t gridTriangles, std::int64_t extraTriangles, bool adaptive) {
+    const int wire = mWireMode;
+    glm::mat4 viewProj = render::eyeRelativeViewProjection(input.scene->camera, input.width, input.height);
+    if (wire == 2) {
+        if (grid.mode == polyvol::kModeCube || mWireDrawn) return;
+        viewProj = L.shadowMatrix;
+    }
+    if (wire == 3) viewProj = mMeshView.viewProj();
+    mWireDrawn = true;
+    mWireProgram.use();
+    setGridUniforms(mWireProgram, grid);
+    mWireProgram.set("uViewProj", viewProj);
+    if (wire == 3) mMeshView.bindTarget();
+    else mWireFramebuffer.bind();
+    glDisable(GL_BLEND);
+    glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+    if (adaptive) {
+        mWireProgram.set("uGridVertices", 0);
+        mTess.keys().bindBase(GL_SHADER_STORAGE_BUFFER, render::hd::kFirstFreeSsboBinding);
+        mTess.counters().bind(GL_DRAW_INDIRECT_BUFFER);
+        glDrawArraysIndirect(GL_TRIANGLES, reinterpret_cast<const void*>(polyvol::AdaptiveTessellation::drawOffset()));
+        std::int64_t closure = 0;
+        extraKeys(ExtraKind::Closure, grid.keyStride, closure).bindBase(GL_SHADER_STORAGE_BUFFER,
+                                                                          render::hd::kFirstFreeSsboBinding);
+        glDrawArrays(GL_TRIANGLES, 0, GLsizei(3 * closure));
+    } else {
+        mWireProgram.set("uGridVertices", int(3 * gridTriangles));
+        glDrawArrays(GL_TRIANGLES, 0, GLsizei(3 * (gridTriangles + extraTriangles)));
+    }
+    glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+    glEnable(GL_BLEND);
+    mFramebuffer.bind();
+    mProgram.use();
+}
+
+float PolyvolTechnique::nearRadius(const render::GpuLightCpu& L, const scene::Camera& cam, int height) const {
+    const int type = L.info.x;
+    if (type == render::hd::kLightDirectional || L.info.z < 0) return 0.0f;
+    const float nearest = mView.shadows().nearest(L, L.shadow.y);
+    const double footprint = glm::length(glm::dvec3(L.position)) * 2.0 * std::tan(cam.yfov * 0.5) / double(height);
+    return float(std::min(0.5 * double(std::max(nearest, 0.0f)), kBallPixels * footprint));
+}
+
+void PolyvolTechnique::resolve(const FrameInput& input, int light, float radius) {
+    const Settings& s = input.settings;
+    const scene::Scene& scene = *input.scene;
+    const scene::Camera& cam = scene.camera;
+    if (!mResolve || mResolveKey != mProgramKey) {
+        mResolve = gl::Program::compile(
+            {.stages = {"polyvol/resolve.comp"}, .defines = mDefines, .label = "polyvol.resolve"});
+        mResolveKey = mProgramKey;
+    }
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
+    mResolve.use();
+    render::bindCameraRay(mResolve, cam, input.width, input.height);
+    mMedium.bind(scene.medium);
+    mResolve.set("uSpotPieces", int(s.at("spot_pieces")));
+    mResolve.set("uLightIndex", light);
+    mResolve.set("uConstant", int(s.at("crack_check")));
+    mResolve.set("uOriginAtSurface", s.at("origin") != 0.0 ? 1 : 0);
+    mResolve.set("uNearRadius", radius);
+    mTotal.bindImage(0, GL_READ_WRITE);
+    mPositive.bindImage(1, GL_READ_WRITE);
+    mNegative.bindImage(2, GL_READ_WRITE);
+    const glm::ivec3 groups = gl::groupCount({input.width, input.height, 1}, mResolve.workGroupSize());
+    glDispatchCompute(GLuint(groups.x), GLuint(groups.y), 1);
+    glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    mProgram.use();
+}
+
+void PolyvolTechnique::clampAirlight() {
+    if (!mClamp) mClamp = gl::Program::compile({.stages = {"polyvol/clamp.comp"}, .label = "polyvol.clamp"});
+    mClamp.use();
+    mClamp.set("uSize", glm::ivec2(mTotal.size().x, mTotal.size().y));
+    mTotal.bindImage(0, GL_READ_ONLY);
+    mAirlight.bindImage(1, GL_WRITE_ONLY);
+    const glm::ivec3 groups = gl::groupCount({mTotal.size().x, mTotal.size().y, 1}, mClamp.workGroupSize());
+    glDispatchCompute(GLuint(groups.x), GLuint(groups.y), 1);
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+}
+
+}  // namespace viz::polyvol_detail

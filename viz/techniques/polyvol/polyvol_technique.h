@@ -1,0 +1,233 @@
+// The polyvol technique (Billeter, Sintorn, Assarsson 2010 and its supplement) as one class, declared here for
+// its three files: polyvol.cpp (parameters, stages, plan, run), polyvol_passes.cpp (the GL passes: the light
+// volumes' meshes, their rasterisation, the resolve) and polyvol_views.cpp (what it shows: intermediates,
+// the lookup table's error, markers). Only those files include it; the rest of the program knows polyvol
+// through polyvol.h.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <chrono>
+#include <cstdio>
+#include <cmath>
+#include <map>
+#include <memory>
+#include <string>
+
+#include "core/error.h"
+#include "gl/buffer.h"
+#include "gl/framebuffer.h"
+#include "debug/permutations.h"
+#include "gl/program.h"
+#include "gl/readback.h"
+#include "gl/stage_clock.h"
+#include "gl/texture.h"
+#include "gl/vertex_array.h"
+#include "render/camera_ray.h"
+#include "render/eye_space.h"
+#include "render/host_device.h"
+#include "render/intermediates.h"
+#include "render/light_culling.h"
+#include "render/medium_block.h"
+#include "render/scene_view.h"
+#include "render/shadow_map_markers.h"
+#include "scene/camera.h"
+#include "render/mesh_view.h"
+#include "techniques/polyvol/adaptive_tessellation.h"
+#include "techniques/polyvol/airlight_lut.h"
+#include "techniques/polyvol/crack_check.h"
+#include "techniques/polyvol/light_volume_mesh.h"
+#include "techniques/polyvol/volume_crossings.h"
+#include "techniques/polyvol/volume_grid.h"
+
+namespace viz::polyvol_detail {
+
+// ---- ids (stable: lessons and tests use them) ----
+constexpr const char* kStageVolume = "polyvol.volume";
+constexpr const char* kMesh = "polyvol.mesh";
+constexpr const char* kCrossings = "polyvol.crossings";
+constexpr const char* kPositive = "polyvol.positive";
+constexpr const char* kNegative = "polyvol.negative";
+constexpr const char* kTotal = "polyvol.total";
+constexpr const char* kCracks = "polyvol.cracks";
+constexpr const char* kLut = "polyvol.lut";
+constexpr const char* kLutError = "polyvol.lut_error";
+constexpr const char* kEdgeMap = "polyvol.edge_map";
+constexpr const char* kTessLevels = "polyvol.tess_levels";
+
+// Lookup table size (asinh(|u| / s) x log tau_h samples), built from the double closed form at first use.
+constexpr int kLutWidth = polyvol::AirlightLut::kWidth, kLutHeight = polyvol::AirlightLut::kHeight;
+
+enum StageIndex { kShadowMapsIndex = 0, kSurfaceIndex = 1, kVolumeIndex = 2, kComposeIndex = 3 };
+
+using polyvol::kModeCube;
+using polyvol::kModeDirectional;
+using polyvol::kModeSpot;
+
+// Shader permutations: feature -> {define when enabled, define when disabled}. Others are run-time.
+inline const PermutationTable kDefines = {
+    {"SPOT", {nullptr, "LIGHTS_NO_SPOT"}},
+    {"COOKIE", {nullptr, "LIGHTS_NO_COOKIE"}},
+    {"SHADOW_MAPS_CUBE", {nullptr, "SHADOW_NO_CUBE"}},
+    {"SHADOW_MAPS_2D", {nullptr, "SHADOW_NO_2D"}},
+    {"AIRLIGHT_LUT", {"AIRLIGHT_LUT", nullptr}},
+};
+
+// The smallest shadow map at which adaptive tessellation paid off on every built-in scene measured
+// (README, benchmark: forest broke even between 256^2 and 512^2).
+constexpr int kAdaptivePaysFrom = 512;
+
+// Whether the settings ask for adaptive tessellation at a size where the plan keeps it (or force it);
+// the plan also needs a 2D map in the scene.
+inline bool adaptiveBySettings(const Settings& s) {
+    return s.at("tessellation") != 0.0 &&
+           (int(s.at("shadow_map")) >= kAdaptivePaysFrom || s.at("force_features") != 0.0);
+}
+
+class PolyvolTechnique final : public Technique {
+public:
+    PolyvolTechnique();
+
+    // Stepping the adaptive refinement coarse to fine: stop_level = the coarse grid's level (16^2 quads),
+    // then one level finer per step, then -1 (refined fully). No sub-steps with static tessellation or
+    // when the plan leaves adaptive out below its break-even size.
+    std::vector<double> substepValues(int stage, const Settings& s) const override;
+
+    std::string id() const override { return "polyvol"; }
+    std::string description() const override {
+        return "polygonal light volumes from the shadow map, signed airlight per crossing (Billeter 2010)";
+    }
+    const std::vector<StageInfo>& stages() const override { return mStages; }
+    const std::vector<ParamInfo>& params() const override { return mParams; }
+    bool needsGl() const override { return true; }
+
+    // Issue 9's knobs: the shadow-map size (the volume's resolution, one vertex per texel) with static
+    // tessellation, then adaptive at the sizes where it was measured to pay off (README, benchmark).
+    // The quick sweep also takes area lights as one VPL (area_samples=1, label "1vpl"): tv-room's 16 VPL
+    // cube volumes cost ~6 s per run in Release on llvmpipe (every crossing integrates the cosine lobe
+    // in 8 pieces), which alone would exceed the quick report's budget; other scenes have no area light.
+    std::vector<QualitySetting> qualitySweep(bool quick) const override;
+
+    // The accurate end: 1024^2 (at 512^2 a ray passing the light within a texel of the plate's shadow
+    // boundary in occluder-touching-light is misclassified next to the 1/r^2 singularity: 0.25), adaptive
+    // (the same image, half the time), origin=surface (crossings behind d add exactly 0, so a camera
+    // inside a closed occluder gets exactly 0 instead of a 4e-9 blend-order residue).
+    // Billeter et al. 2010 and its supplement: the airlight lookup table, adaptive tessellation, 1024^2
+    // shadow maps (Table 1's smallest size).
+    Settings paperSettings() const override {
+        return {{"airlight", 1.0}, {"tessellation", 1.0}, {"shadow_map", 1024.0}};
+    }
+    Settings stiffSettings() const override {
+        return {{"shadow_map", 1024.0}, {"tessellation", 1.0}, {"origin", 1.0}};
+    }
+
+    // Measured by `airlight report --suite stiff` at 33x25 (figures in README.md), bounds about twice that.
+    std::optional<StiffBound> stiffBound(const std::string& caseClass) const override;
+
+    Plan plan(const scene::Scene& scene, const Settings& settings) const override;
+
+    FrameOutput run(const FrameInput& input) override;
+
+    // Linked cursors. In each light's shadow map, and in the edge map and tessellation levels (the last
+    // adaptive 2D light's): the pixel's eye ray projected into the map (cubes: per face) and every crossing
+    // of the ray with that light's volume mesh (volume_crossings.h), signed as the volume pass adds it
+    // (+1 leaving the lit volume, -1 entering), also those beyond d, so that they add up to the pixel's
+    // polyvol.crossings (r: count, g: signed sum) in a one-light scene. Cube marks carry their face.
+    std::vector<ViewMarker> markersFor(glm::ivec2 pixel, const std::string& id) const override;
+
+private:
+    // The keys of the last adaptive light's triangles (3 per triangle), read back once per run.
+    const std::vector<std::uint32_t>& adaptiveKeys() const;
+
+    static std::int64_t gridTriangleCountFor(int n, int faces) { return polyvol::gridTriangleCount(n, faces); }
+
+    void allocateTargets(int width, int height);
+
+    // The table for the medium's g, built from the double closed form when g changes.
+    void ensureLut(double g);
+
+    const gl::Program& volumeProgram(const Plan& plan);
+
+    // Extra key lists, uploaded once per kind and size: the closure of a 2D grid of `stride` texels per row
+    // (N static, N + 1 adaptive) or the seams of a cube.
+    enum class ExtraKind { Closure, Seams };
+    const gl::Buffer& extraKeys(ExtraKind kind, int stride, std::int64_t& triangles);
+
+    // Per light: the draw's geometry. Spot: the unit-depth view plane of the shadow matrix; directional:
+    // its near plane, the far depth of empty texels and the cap behind the scene; all from the inverse
+    // shadow matrix in double, so the mesh samples exactly the directions the map was rendered with.
+    polyvol::VolumeGrid describe(const render::GpuLightCpu& L, int index, int n, double zfar, float cookieMask) const;
+
+    std::int64_t drawVolumes(const scene::Scene& scene, const FrameInput& input, const Plan& plan);
+
+    // The wireframe of one light's volume into polyvol.mesh, from the camera (wireframe=1) or from the
+    // first 2D light (wireframe=2, through its shadow matrix). Restores the volume pass's state.
+    void drawWire(const FrameInput& input, const render::GpuLightCpu& L, const polyvol::VolumeGrid& grid,
+                  std::int64_t gridTriangles, std::int64_t extraTriangles, bool adaptive);
+
+    // The radius of the ball around a light whose part of each ray is integrated once per pixel by the
+    // resolve instead of between rasterised crossings (README, "Rays next to the light"): at most half the
+    // nearest distance the light's shadow map stores (nothing occludes within it; an empty map: half its
+    // far plane), and at most kBallPixels pixel footprints at the light's distance (the crossings' rounding,
+    // ~1/256 pixel, matters only that close to the light; a larger ball costs two segment integrals per
+    // crossing term on more pixels for nothing: +22 % volume time on grate with half the nearest
+    // distance alone). 0 for directional lights.
+    static constexpr double kBallPixels = 16.0;
+    float nearRadius(const render::GpuLightCpu& L, const scene::Camera& cam, int height) const;
+
+    // Per light, after its volume: origin=surface adds c L(0, d) (without the ball's chord) and zeroes the
+    // light's signed count; every origin adds the airlight of the ray's chord through the ball of radius
+    // `radius` around the light. The volume program and blend state are restored for the next light.
+    void resolve(const FrameInput& input, int light, float radius);
+
+    // The table against the closed form per pixel (lut_error.comp); returns the image's maximum.
+    float lutError(const FrameInput& input);
+
+    // L_air = max(0, total) (clamp.comp).
+    void clampAirlight();
+
+    void publishVolume(FrameOutput& out, const Settings& s, std::int64_t triangles);
+
+    struct Extra {
+        std::int64_t triangles = 0;
+        gl::Buffer buffer;
+    };
+
+    std::vector<ParamInfo> mParams;
+    std::vector<StageInfo> mStages;
+    render::SceneViewPasses mView;
+    render::MediumBlock mMedium;  // sigma_s, sigma_t, g for the shaders (common/medium.glsl)
+    StageReuse mReuse;  // stages carried over from the last run (FrameInput::resumeAtStage)
+    gl::Program mProgram;
+    std::string mProgramKey;
+    gl::Texture mTotal, mPositive, mNegative, mCrossings;
+    gl::Framebuffer mFramebuffer;
+    gl::VertexArray mVao;
+    std::map<std::pair<int, int>, Extra> mExtras;
+    polyvol::AdaptiveTessellation mTess;
+    bool mAdaptiveUsed = false, mAdaptiveOverflow = false, mWireDrawn = false;
+    int mWireMode = 0;  // this run's wireframe: the setting, or orbit for a caller showing polyvol.mesh
+    // markersFor: the light whose edge map and levels are shown (the last adaptive 2D light), the camera's
+    // zfar and cookie_mask of the last run (they place the volume's vertices).
+    int mEdgeLight = -1;
+    std::vector<int> mAdaptiveLights;  // lights drawn with adaptive tessellation in the last run
+    mutable std::vector<std::uint32_t> mMarkKeys;
+    mutable bool mMarkKeysRead = false;
+    double mMarkZfar = 0.0;
+    float mMarkCookieMask = 0.0f;
+    std::int64_t mTriangles = 0;
+    std::vector<float> mNearRadii;  // per drawn light: the ball radius left to the resolve (README)
+    gl::ShaderDefines mDefines;
+    gl::Program mResolve, mWireProgram, mClamp;
+    gl::Texture mAirlight;
+    gl::Texture mWire;
+    gl::Framebuffer mWireFramebuffer;
+    render::MeshView mMeshView;
+    std::string mResolveKey;
+    gl::Texture mLut, mLutError;
+    gl::Program mLutErrorProgram;
+    double mLutG = 0.0, mLutMs = 0.0;
+};
+
+}  // namespace viz::polyvol_detail

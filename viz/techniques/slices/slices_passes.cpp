@@ -1,0 +1,259 @@
+// slices' GL passes: shader permutations, targets, the sampling planes drawn back to front and the resolve.
+#include "techniques/slices/slices_technique.h"
+
+namespace viz::slices_detail {
+
+gl::ShaderDefines SlicesTechnique::planeDefines(const Terms& t, bool pick) {
+    gl::ShaderDefines d;
+    if (t.physical) d.push_back({"PHYSICAL", "1"});
+    if (t.spot) d.push_back({"SPOT_FALLOFF", "1"});
+    if (t.cookie) d.push_back({"COOKIE", "1"});
+    else d.push_back({"LIGHTS_NO_COOKIE", "1"});
+    if (t.shadow) d.push_back({"SHADOW", "1"});
+    if (t.pcf) d.push_back({"PCF", "1"});
+    if (t.noise) d.push_back({"NOISE", "1"});
+    if (t.mask) d.push_back({"CHANNEL_MASK", "1"});
+    if (t.count && !pick) d.push_back({"COUNT_OUTSIDE", "1"});
+    if (t.clip) d.push_back({"CLIP", "1"});
+    if (t.userClip) d.push_back({"USER_CLIP", "1"});
+    if (pick) d.push_back({"PICK_RAY", "1"});
+    // Cube maps serve point lights and area-light VPLs only.
+    if (!t.cubes) d.push_back({"SHADOW_NO_CUBE", "1"});
+    return d;
+}
+
+std::string SlicesTechnique::permutationKey(const Terms& t, bool pick) {
+    std::string key;
+    for (const auto& [name, value] : planeDefines(t, pick)) key += (key.empty() ? "" : ";") + name;
+    return key;
+}
+
+void SlicesTechnique::allocateTargets(int width, int height, SlicesAccum accum) {
+    const GLenum format = accum == SlicesAccum::Rgba32f ? GL_RGBA32F
+                          : accum == SlicesAccum::Rgba16f ? GL_RGBA16F
+                                                          : GL_RGBA8;
+    if (mAccum && mAccum.size().x == width && mAccum.size().y == height && mAccum.format() == format) return;
+    mAccum = gl::Texture::create(
+        {.target = GL_TEXTURE_2D, .format = format, .size = {width, height, 1}, .label = kAccum});
+    mPlane = gl::Texture::create(
+        {.target = GL_TEXTURE_2D, .format = GL_RGBA32F, .size = {width, height, 1}, .label = kPlane});
+    mAirlight = gl::Texture::create(
+        {.target = GL_TEXTURE_2D, .format = GL_RGBA32F, .size = {width, height, 1}, .label = kAirlight});
+}
+
+double SlicesTechnique::storeScale(const Terms& t, const Settings& s) const {
+    const SlicesAccum accum = SlicesAccum(int(s.at("accum")));
+    if (accum == SlicesAccum::Rgba8) return 1.0 / s.at("accum_range");
+    if (accum == SlicesAccum::Rgba8Mask) return 4.0 / s.at("accum_range");
+    (void)t;
+    return 1.0;
+}
+
+const gl::Program& SlicesTechnique::planeProgram(const Terms& t, bool pick) {
+    const std::string key = permutationKey(t, pick);
+    auto it = mPlanePrograms.find(key);
+    if (it == mPlanePrograms.end()) {
+        it = mPlanePrograms
+                 .emplace(key, gl::Program::compile({.stages = {"slices/plane.vert", "slices/plane.frag"},
+                                                     .defines = planeDefines(t, pick),
+                                                     .label = "slices.plane_program"}))
+                 .first;
+    }
+    return it->second;
+}
+
+glm::dmat4 SlicesTechnique::cameraVolume(const scene::Camera& cam, int width, int height) {
+    const glm::dmat4 view = glm::lookAt(glm::dvec3(0.0), cam.forward, cam.up);
+    return glm::perspective(cam.yfov, scene::aspectOf(cam, width, height), cam.znear, cam.zfar) * view;
+}
+
+void SlicesTechnique::drawPlanes(const scene::Scene& scene, const FrameInput& input, const Terms& t) {
+    const Settings& s = input.settings;
+    const scene::Camera& cam = scene.camera;
+    const int n = int(s.at("planes"));
+    const gl::Program& program = planeProgram(t, false);
+    // The pick draw's program: the same shader with PICK_RAY; both get every uniform.
+    const gl::Program* pick = t.pick ? &planeProgram(t, true) : nullptr;
+    auto setBoth = [&](const char* name, auto value) {
+        program.set(name, value);
+        if (pick) pick->set(name, value);
+    };
+    mPlanesUsed.clear();
+    mPolygons.clear();
+    const CameraBasis basis{cam.forward, scene::cameraRight(cam), cam.up};
+
+    program.use();
+    setBoth("uViewProj", render::eyeRelativeViewProjection(cam, input.width, input.height));
+    setBoth("uRight", glm::vec3(basis.right));
+    setBoth("uUp", glm::vec3(basis.up));
+    setBoth("uForward", glm::vec3(basis.forward));
+    setBoth("uSize", glm::vec2(float(input.width), float(input.height)));
+    setBoth("uTanHalf", float(std::tan(cam.yfov * 0.5)));
+    setBoth("uAspect", float(scene::aspectOf(cam, input.width, input.height)));
+    mMedium.bind(scene.medium);
+    mLastStoreScale = storeScale(t, s);
+    setBoth("uStoreScale", float(mLastStoreScale));
+    setBoth("uArtisticUnits", float(s.at("artistic_units")));
+    setBoth("uAmbient", float(s.at("ambient") != 0.0 ? kPaperAmbient : 0.0));
+    setBoth("uFalloff", int(s.at("falloff")));
+    setBoth("uNoiseTiles", float(s.at("noise_tiles")));
+    // Two layers scrolling in different directions (slowly: a few hundredths of a tile per second).
+    const float time = float(s.at("time"));
+    setBoth("uScroll", glm::vec4(0.031f * time, 0.017f * time, -0.023f * time, 0.029f * time));
+    setBoth("uPlaneWeight", 1.0f);
+    // User planes: world y >= clip_y_min and y <= clip_y_max, written in eye-relative space.
+    const double eyeY = cam.position.y;
+    setBoth("uUserPlane0", glm::vec4(0, 1, 0, float(eyeY - s.at("clip_y_min"))));
+    setBoth("uUserPlane1", glm::vec4(0, -1, 0, float(s.at("clip_y_max") - eyeY)));
+
+    mView.lights().bind();
+    mView.shadows().bind();
+    mView.surface().distance().bindUnit(render::hd::kFirstFreeTextureUnit);
+    mNoise.bindUnit(render::hd::kFirstFreeTextureUnit + 1);
+    mCounters.bindBase(GL_ATOMIC_COUNTER_BUFFER, 0);
+    mVao.bind();
+
+    glViewport(0, 0, input.width, input.height);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_CULL_FACE);
+    // Additive blending: dst = dst + src (the paper's accumulation; saturates in RGBA8).
+    glEnable(GL_BLEND);
+    glBlendEquation(GL_FUNC_ADD);
+    glBlendFunc(GL_ONE, GL_ONE);
+    const int clipPlanes = (t.clip ? 6 : 0) + (t.userClip ? 2 : 0);
+    for (int i = 0; i < 8; ++i)
+        i < clipPlanes ? glEnable(GLenum(GL_CLIP_DISTANCE0 + i)) : glDisable(GLenum(GL_CLIP_DISTANCE0 + i));
+
+    const auto& lights = mView.lights().lights();
+    const bool boxedDirectional = s.at("directional_box") != 0.0;
+    // Channel mask: one scalar per plane (mean of rgb); the colour ratio of the first light is put back
+    // on resolve (exact for one light colour, the paper's monochrome assumption).
+    mMaskColor = glm::vec3(1.0f);
+    if (!lights.empty()) {
+        const glm::dvec3 c = scene.lights[std::size_t(lights.front().info.w)].color;
+        const double mean = (c.r + c.g + c.b) / 3.0;
+        if (mean > 0.0) mMaskColor = glm::vec3(c / mean);
+    }
+    // Draw sets: each spot light (and, with directional_box, each directional light) gets N planes in
+    // its own frustum's box, clipped to it. Every other light (point, area-light VPL, directional) lights
+    // unbounded space: they share one set of N planes over the camera frustum up to zfar, unclipped
+    // (a directional map's box only bounds where shadows are known; outside it V = 1).
+    struct DrawSet {
+        int light;  // index into lights, or -1: the unbounded lights together
+        glm::dmat4 volume;
+    };
+    std::vector<DrawSet> sets;
+    bool unbounded = false;
+    for (std::size_t li = 0; li < lights.size(); ++li) {
+        const int type = lights[li].info.x;
+        if (type == render::hd::kLightSpot || (type == render::hd::kLightDirectional && boxedDirectional))
+            sets.push_back({int(li), glm::dmat4(lights[li].shadowMatrix)});
+        else
+            unbounded = true;
+    }
+    if (unbounded) sets.push_back({-1, cameraVolume(cam, input.width, input.height)});
+    setBoth("uLightCount", mView.lights().count());
+    setBoth("uBoxedDirectional", boxedDirectional ? 1 : 0);
+    // The picked pixel's records: at most N per draw set (distance scaling only lowers the count).
+    mPickSets.clear();
+    mPickPixel = pickedPixel(input);
+    int pickBase = 0;
+    if (t.pick) {
+        const std::size_t need = std::max<std::size_t>(1, sets.size() * std::size_t(n)) * sizeof(PickRecord);
+        if (!mPickRecords || mPickRecords.bytes() < need)
+            mPickRecords = gl::Buffer::create({.bytes = need, .label = "slices.pick_records"});
+        mPickRecords.clearZero();
+        mPickRecords.bindBase(GL_SHADER_STORAGE_BUFFER, render::hd::kFirstFreeSsboBinding);
+        pick->set("uPickPixel", glm::ivec2(mPickPixel.x, input.height - 1 - mPickPixel.y));
+    }
+
+    for (const DrawSet& set : sets) {
+        const bool boxed = set.light >= 0;
+        PlaneRange range = planeRange(set.volume, basis, cam.znear, cam.zfar, n);
+        if (range.empty) continue;
+        // Fewer planes far from the light volume (eye at the origin; distance to the view-space box).
+        const glm::dvec3 lo(range.minXY, range.near), hi(range.maxXY, range.far);
+        const double distance = glm::length(glm::max(glm::max(lo, -hi), glm::dvec3(0.0)));
+        const int planes = scaledPlaneCount(n, distance, s.at("distance_scale"), kMinScaledPlanes);
+        range = planeRange(set.volume, basis, cam.znear, cam.zfar, planes);
+        const int drawnLimit = int(substepLimit(input, kPlanesIndex));
+        const int drawn = drawnLimit > 0 ? std::min(planes, drawnLimit) : planes;
+        mPlanesUsed.push_back(planes);
+        for (auto& poly : planePolygons(range, basis, set.volume, drawn, t.clip && boxed))
+            mPolygons.push_back(std::move(poly));
+        setBoth("uClipLight", boxed ? 1 : 0);
+        setBoth("uFractionOfMaxShells", float(double(planes) / kPaperMaxPlanes));
+        setBoth("uLight", set.light);
+        setBoth("uLightMatrix", glm::mat4(set.volume));
+        setBoth("uBoxMinXY", glm::vec2(range.minXY));
+        setBoth("uBoxMaxXY", glm::vec2(range.maxXY));
+        setBoth("uDepthFar", float(range.far));
+        setBoth("uSpacing", float(range.spacing));
+        setBoth("uDrawNear", float(range.drawNear));
+        if (t.pick) {
+            mPickSets.push_back({boxed ? lights[std::size_t(set.light)].info.w : -1, pickBase, drawn,
+                                 t.clip && boxed, float(range.far), float(range.spacing), float(range.drawNear),
+                                 glm::vec2(range.minXY), glm::vec2(range.maxXY), glm::mat4(set.volume)});
+            pick->set("uPickBase", pickBase);
+            pickBase += drawn;
+        }
+        // Back to front: plane 0 is the farthest, so the first k planes are the k farthest.
+        mFramebuffer.attachColor(0, mAccum);
+        mFramebuffer.checkComplete();
+        mFramebuffer.bind();
+        glDrawArrays(GL_TRIANGLES, 0, 6 * drawn);
+        // The last plane alone, for stepping and the per-plane readback.
+        mFramebuffer.attachColor(0, mPlane);
+        mFramebuffer.bind();
+        glDrawArrays(GL_TRIANGLES, 6 * (drawn - 1), 6);
+        if (pick) {
+            // The picked pixel alone with colour writes off: the same planes through the same shader
+            // (PICK_RAY), which records what each plane computes there. The frame pays one pixel.
+            const glm::ivec2 glPixel(mPickPixel.x, input.height - 1 - mPickPixel.y);
+            pick->use();
+            glEnable(GL_SCISSOR_TEST);
+            glScissor(glPixel.x, glPixel.y, 1, 1);
+            glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+            glDrawArrays(GL_TRIANGLES, 0, 6 * drawn);
+            glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+            glDisable(GL_SCISSOR_TEST);
+            program.use();
+        }
+        if (t.count) countFragments(program, drawn);
+    }
+    for (int i = 0; i < 8; ++i) glDisable(GLenum(GL_CLIP_DISTANCE0 + i));
+    if (t.pick) replayPick(input, basis, t);
+    glDisable(GL_BLEND);
+    glMemoryBarrier(GL_ATOMIC_COUNTER_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+    gl::Framebuffer::bindDefault();
+}
+
+void SlicesTechnique::resolve(const Terms& t) {
+    gl::ShaderDefines defines;
+    if (t.mask) defines.push_back({"CHANNEL_MASK", "1"});
+    if (t.blur) defines.push_back({"BLUR", "1"});
+    std::string key = std::string(t.mask ? "m" : "") + (t.blur ? "b" : "");
+    auto it = mResolvePrograms.find(key);
+    if (it == mResolvePrograms.end()) {
+        it = mResolvePrograms
+                 .emplace(key, gl::Program::compile({.stages = {"render/fullscreen.vert", "slices/resolve.frag"},
+                                                     .defines = defines,
+                                                     .label = "slices.resolve_program"}))
+                 .first;
+    }
+    const gl::Program& program = it->second;
+    program.use();
+    program.set("uInvStoreScale", float(1.0 / mLastStoreScale));
+    program.set("uMaskColor", mMaskColor);
+    mFramebuffer.attachColor(0, mAirlight);
+    mFramebuffer.checkComplete();
+    mFramebuffer.bind();
+    glViewport(0, 0, mAirlight.size().x, mAirlight.size().y);
+    glDisable(GL_BLEND);
+    glDisable(GL_DEPTH_TEST);
+    mAccum.bindUnit(0);
+    mTriangle->draw();
+    gl::Framebuffer::bindDefault();
+}
+
+}  // namespace viz::slices_detail

@@ -1,0 +1,229 @@
+// The slices technique (Mitchell 2004) as one class, declared here for its files: slices.cpp (parameters,
+// stages, plan, run), slices_passes.cpp (the GL passes: sampling planes, accumulation, resolve),
+// slices_views.cpp (what it shows: the planes' polygons, fragment counts, markers) and slices_pick.cpp (the
+// picked pixel's ray replayed against the planes). Only those files include it; the rest of the program
+// knows slices through slices.h.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "gl/buffer.h"
+#include "gl/framebuffer.h"
+#include "gl/program.h"
+#include "gl/readback.h"
+#include "gl/stage_clock.h"
+#include "gl/texture.h"
+#include "gl/vertex_array.h"
+#include "render/mesh_view.h"
+#include "render/compose.h"
+#include "render/eye_space.h"
+#include "render/gpu_lights.h"
+#include "render/gpu_scene.h"
+#include "render/intermediates.h"
+#include "render/light_culling.h"
+#include "render/medium_block.h"
+#include "render/scene_view.h"
+#include "render/shadow_maps.h"
+#include "render/surface_pass.h"
+#include "scene/camera.h"
+#include "techniques/slices/ray_planes.h"
+#include "techniques/slices/slice_geometry.h"
+#include "techniques/slices/slices.h"
+
+namespace viz::slices_detail {
+
+// ---- ids (stable: lessons and tests use them) ----
+constexpr const char* kStagePlanes = "slices.planes";
+constexpr const char* kStageResolve = "slices.resolve";
+constexpr const char* kNoise = "slices.noise";
+constexpr const char* kCookies = "slices.cookie";
+constexpr const char* kAccum = "slices.accumulation";
+constexpr const char* kPlane = "slices.plane";
+constexpr const char* kFragments = "slices.fragments";
+constexpr const char* kPlaneMesh = "slices.plane_mesh";
+constexpr const char* kPlaneView = "slices.plane_view";
+constexpr const char* kAirlight = "slices.airlight";
+constexpr const char* kRayPlanes = "slices.ray_planes";
+constexpr const char* kRayPlanesChart = "slices.ray_planes_chart";
+// The pick replay target's width: each record's quad covers the rest of its row (work: count x width / 2
+// fragments); each further row is seeded with the accumulation at the end of the one before.
+constexpr int kReplayColumns = 64;
+
+// The picked pixel's record of one plane, as shaders/slices/pick_record.glsl lays it out (std430).
+struct PickRecord {
+    glm::vec4 where;  // plane i, view depth s_i, t along the ray, dt
+    glm::vec4 test;   // status (PickStatus), V (-1: not tested), channel (-1: all), surface distance d
+    glm::vec4 value;  // the fragment's output (stored units), before the blend quantises it
+};
+static_assert(sizeof(PickRecord) == 48);
+
+enum StageIndex { kShadowMapsIndex = 0, kSurfaceIndex, kPlanesIndex, kResolveIndex, kComposeIndex };
+
+// The paper's example draws at most 100 planes; its per-plane scale is 9 / (N / 100).
+constexpr double kPaperMaxPlanes = 100.0;
+constexpr double kPaperAmbient = 0.35;
+constexpr int kNoiseSize = 64;
+// distance_scale never goes below this many planes.
+constexpr int kMinScaledPlanes = 8;
+
+
+// Deterministic integer hash -> [0, 1).
+inline float hashUnit(std::uint32_t x, std::uint32_t y, std::uint32_t seed) {
+    std::uint32_t h = x * 0x8da6b343u ^ y * 0xd8163841u ^ seed * 0xcb1ab31fu;
+    h ^= h >> 13;
+    h *= 0x5bd1e995u;
+    h ^= h >> 15;
+    return float(h >> 8) * (1.0f / 16777216.0f);
+}
+
+// Tileable value noise (period = size): two octaves of smoothly interpolated lattice values on periodic
+// lattices of 8 and 16 cells. Channel r and g use different seeds (the paper's two noise maps in one texture).
+inline std::vector<std::uint8_t> makeNoise(int size) {
+    std::vector<std::uint8_t> rg(std::size_t(size * size * 2));
+    auto octave = [&](int x, int y, int cells, std::uint32_t seed) {
+        const float fx = float(x) * float(cells) / float(size), fy = float(y) * float(cells) / float(size);
+        const int x0 = int(std::floor(fx)), y0 = int(std::floor(fy));
+        float ax = fx - float(x0), ay = fy - float(y0);
+        ax = ax * ax * (3.0f - 2.0f * ax);
+        ay = ay * ay * (3.0f - 2.0f * ay);
+        auto v = [&](int i, int j) {
+            return hashUnit(std::uint32_t((i % cells + cells) % cells), std::uint32_t((j % cells + cells) % cells), seed);
+        };
+        const float a = v(x0, y0) + (v(x0 + 1, y0) - v(x0, y0)) * ax;
+        const float b = v(x0, y0 + 1) + (v(x0 + 1, y0 + 1) - v(x0, y0 + 1)) * ax;
+        return a + (b - a) * ay;
+    };
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x)
+            for (int c = 0; c < 2; ++c) {
+                const std::uint32_t seed = std::uint32_t(17 + 101 * c);
+                const float n = 0.65f * octave(x, y, 8, seed) + 0.35f * octave(x, y, 16, seed + 7);
+                rg[std::size_t((y * size + x) * 2 + c)] = std::uint8_t(std::clamp(n, 0.0f, 1.0f) * 255.0f + 0.5f);
+            }
+    return rg;
+}
+
+struct Terms {
+    bool physical = true;
+    bool spot = false, cookie = false, shadow = false, pcf = false, noise = false;
+    bool mask = false, blur = false, clip = true, userClip = false, count = false, cubes = false;
+    bool pick = false;  // record the picked pixel's planes (slices.ray_planes)
+};
+
+// One draw set as the pick replay needs it again.
+struct PickSet {
+    int light = -1;  // index into Scene::lights, -1: the unbounded lights together
+    int base = 0;    // first record
+    int drawn = 0;
+    bool clipLight = false;
+    float depthFar = 0.0f, spacing = 0.0f, drawNear = 0.0f;
+    glm::vec2 boxMin{0.0f}, boxMax{0.0f};
+    glm::mat4 volume{1.0f};
+};
+
+class SlicesTechnique final : public Technique {
+public:
+    SlicesTechnique();
+
+    std::string id() const override { return "slices"; }
+    std::string description() const override {
+        return "Mitchell 2004: view-aligned sampling planes through the light frustum, additively blended";
+    }
+    const std::vector<StageInfo>& stages() const override { return mStages; }
+    const std::vector<ParamInfo>& params() const override { return mParams; }
+    bool needsGl() const override { return true; }
+
+    // Plane count in float accumulation, then the precision lab's targets at one plane count.
+    std::vector<QualitySetting> qualitySweep(bool quick) const override;
+
+    Settings stiffSettings() const override { return {{"planes", 512.0}, {"ray_planes", 0.0}}; }
+    // Mitchell 2004: the artistic formula and constants, the RGBA8 target with the channel mask, 100
+    // planes (the example application's count, Figure 8.1.11c).
+    Settings paperSettings() const override { return {{"weighting", 0.0}, {"accum", 1.0}, {"planes", 100.0}}; }
+
+    // Measured by `airlight report --suite stiff` at 33x25 (figures in README.md), bounds about twice that.
+    std::optional<StiffBound> stiffBound(const std::string& caseClass) const override;
+
+    // Linked cursors: in every light's shadow map the pixel's eye ray and where it enters or leaves
+    // shadow by the map's own test (render/shadow_map_markers.h). They follow the camera-view stage.
+    std::vector<ViewMarker> markersFor(glm::ivec2 pixel, const std::string& id) const override;
+
+    Plan plan(const scene::Scene& scene, const Settings& s) const override;
+
+    FrameOutput run(const FrameInput& input) override;
+
+private:
+    static Terms terms(const scene::Scene& scene, const Settings& s);
+
+    // The defines of the plane shader, in a fixed order: also the cache key and what plan() reports.
+    // pick: the picked pixel's recording draw (PICK_RAY, no fragment counting); the frame's draw is without.
+    static gl::ShaderDefines planeDefines(const Terms& t, bool pick = false);
+    static std::string permutationKey(const Terms& t, bool pick = false);
+
+    void allocateTargets(int width, int height, SlicesAccum accum);
+
+    double storeScale(const Terms& t, const Settings& s) const;
+
+    const gl::Program& planeProgram(const Terms& t, bool pick);
+
+    // The camera's view volume up to zfar as a clip matrix (eye-relative world -> clip), for planeRange.
+    static glm::dmat4 cameraVolume(const scene::Camera& cam, int width, int height);
+
+    void drawPlanes(const scene::Scene& scene, const FrameInput& input, const Terms& t);
+
+    glm::ivec2 pickedPixel(const FrameInput& input) const;
+
+    // The picked pixel's blend replayed (pick_replay.*): every record in drawing order (draw sets in turn)
+    // over a target in the accumulation's format, so texel k holds the pixel's accumulation after records
+    // 0..k as this blend quantises it. Then the records and the replay are read back into mRayPlanes.
+    // Runs with the plane pass's blend state (dst + src).
+    void replayPick(const FrameInput& input, const CameraBasis& basis, const Terms& t);
+
+    // slices.ray_planes as a table: one row per record, RayPlaneColumn columns of four channels.
+    std::shared_ptr<Image> rayPlaneTable(const std::vector<PickRecord>& records, const Image& replay,
+                                         const Terms& t) const;
+
+    // The drawn planes as polygons (rows: planes back to front, light after light; columns: vertices;
+    // rgb = eye-relative world xyz; NaN pads unused vertices), for viewing the slab stack from outside.
+    Intermediate polygonIntermediate() const;
+
+    // Occlusion queries over the same planes with colour writes off: all fragments, then only those the
+    // shader finds outside the light frustum (it discards the rest). Adds to mQueryCounts.
+    void countFragments(const gl::Program& program, int drawn);
+
+    void resolve(const Terms& t);
+
+    std::vector<ParamInfo> mParams;
+    std::vector<StageInfo> mStages;
+    render::SceneViewPasses mView;
+    render::MediumBlock mMedium;  // sigma_s, sigma_t, g for the shaders (common/medium.glsl)
+    StageReuse mReuse;  // stages carried over from the last run (FrameInput::resumeAtStage)
+    std::unique_ptr<render::FullscreenTriangle> mTriangle;
+    std::map<std::string, gl::Program> mPlanePrograms, mResolvePrograms;
+    gl::VertexArray mVao;
+    gl::Framebuffer mFramebuffer;
+    gl::Buffer mCounters;
+    gl::Texture mNoise, mAccum, mPlane, mAirlight;
+    double mLastStoreScale = 1.0;
+    std::vector<int> mPlanesUsed;                         // per drawn light, after distance scaling
+    render::MeshView mMeshView;
+    std::vector<std::vector<glm::dvec3>> mPolygons;       // drawn planes, clipped (eye-relative world)
+    double mQueryCounts[2] = {0.0, 0.0};  // occlusion queries: outside the frustum, all
+    glm::vec3 mMaskColor{1.0f};
+    // The picked pixel's planes (slices.ray_planes).
+    gl::Buffer mPickRecords;
+    gl::Texture mReplay;
+    gl::Program mReplayProgram;
+    std::vector<PickSet> mPickSets;
+    glm::ivec2 mPickPixel{0};
+    std::shared_ptr<Image> mRayPlanes;
+};
+
+}  // namespace viz::slices_detail

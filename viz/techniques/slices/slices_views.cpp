@@ -1,0 +1,48 @@
+// What slices shows beside its textures: the drawn planes as polygons, the fragments they shaded and the
+// markers of a picked pixel.
+#include "techniques/slices/slices_technique.h"
+
+namespace viz::slices_detail {
+
+std::vector<ViewMarker> SlicesTechnique::markersFor(glm::ivec2 pixel, const std::string& id) const {
+    return mView.shadowMapMarkers(pixel, id, "slices");
+}
+
+Intermediate SlicesTechnique::polygonIntermediate() const {
+    std::size_t width = 1;
+    for (const auto& p : mPolygons) width = std::max(width, p.size());
+    auto img = std::make_shared<Image>(int(width), int(std::max<std::size_t>(mPolygons.size(), 1)), 3);
+    std::fill(img->pixels.begin(), img->pixels.end(), std::nanf(""));
+    for (std::size_t row = 0; row < mPolygons.size(); ++row)
+        for (std::size_t v = 0; v < mPolygons[row].size(); ++v)
+            for (int c = 0; c < 3; ++c) img->at(int(v), int(row), c) = float(mPolygons[row][v][c]);
+    Intermediate i;
+    i.id = kPlaneMesh, i.label = "Sampling planes (mesh)";
+    i.note = "the drawn planes clipped to the light frustum (when clip=1): rows planes, columns vertices, "
+             "xyz eye-relative world";
+    i.units = "scene units";
+    i.kind = ViewKind::Mesh;
+    i.image = img;
+    i.extent = {img->width, img->height, 1};
+    return i;
+}
+
+void SlicesTechnique::countFragments(const gl::Program& program, int drawn) {
+    GLuint query = 0;
+    glCreateQueries(GL_SAMPLES_PASSED, 1, &query);
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    for (int pass = 1; pass <= 2; ++pass) {
+        program.set("uCountPass", pass);
+        glBeginQuery(GL_SAMPLES_PASSED, query);
+        glDrawArrays(GL_TRIANGLES, 0, 6 * drawn);
+        glEndQuery(GL_SAMPLES_PASSED);
+        GLuint samples = 0;
+        glGetQueryObjectuiv(query, GL_QUERY_RESULT, &samples);
+        mQueryCounts[pass == 1 ? 1 : 0] += double(samples);
+    }
+    program.set("uCountPass", 0);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glDeleteQueries(1, &query);
+}
+
+}  // namespace viz::slices_detail

@@ -1,0 +1,167 @@
+// ivsv's GL passes after the ISMs: rectification into epipolar grids, the voxel scan, the gather and the
+// scene's other lights.
+#include "techniques/vsv/ivsv_technique.h"
+
+namespace viz::ivsv_detail {
+
+void IvsvTechnique::setRectifyCommon(const gl::Program& p, const Settings& s, int cells, int tile) const {
+    p.use();
+    p.set("uCells", glm::ivec3(cells, cells, kPhiBits));
+    p.set("uTileSize", tile);
+    p.set("uAlphaBias", float(s.at("alpha_bias")));
+    p.set("uPhiBias", float(s.at("phi_bias")));
+}
+
+void IvsvTechnique::rectify(const Settings& s, int count, int cells, int tile, bool naive) {
+    const GLuint zero = 0;
+    mWords.clear(GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+    mVplBuffer.bindBase(GL_SHADER_STORAGE_BUFFER, 4);
+    mWords.bindImage(0, GL_READ_WRITE);
+    const glm::ivec3 groups = gl::groupCount({kPhiBits, cells, 1}, glm::ivec3(8, 8, 1));
+    if (naive) {
+        mNaiveView.shadows().bind();
+        setRectifyCommon(mRectifyCube, s, cells, tile);
+        for (int i = 0; i < count; ++i) {
+            mRectifyCube.set("uFirstVpl", i);
+            glDispatchCompute(GLuint(groups.x), GLuint(groups.y), 1);
+            glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+            pack(tileOrigin(i, cells), {cells, cells, 1});
+            mRectifyCube.use();
+            mWords.bindImage(0, GL_READ_WRITE);
+        }
+    } else {
+        mIsm.bindUnit(render::hd::kFirstFreeTextureUnit + 1);
+        setRectifyCommon(mRectifyIsm, s, cells, tile);
+        mRectifyIsm.set("uFirstVpl", 0);
+        glDispatchCompute(GLuint(groups.x), GLuint(groups.y), GLuint(count));
+        glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+        pack({0, 0}, {mTilesX * cells, mTilesY * cells, 1});
+    }
+}
+
+void IvsvTechnique::pack(glm::ivec2 origin, glm::ivec3 size) {
+    mPack.use();
+    mPack.set("uSize", size);
+    mPack.set("uOrigin", origin);
+    mWords.bindImage(0, GL_READ_ONLY);
+    mGrid.bindImage(1, GL_WRITE_ONLY);
+    const glm::ivec3 groups = gl::groupCount(size, mPack.workGroupSize());
+    glDispatchCompute(GLuint(groups.x), GLuint(groups.y), GLuint(groups.z));
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+}
+
+void IvsvTechnique::scan(int count, int cells, int passLimit, bool naive) {
+    const int passes = std::min(passLimit, scanPassCount(cells));
+    mScan.use();
+    mScan.set("uSegment", cells);
+    auto run = [&](glm::ivec2 origin, glm::ivec3 size, gl::Texture* a, gl::Texture* b) {
+        mScan.set("uOrigin", origin);
+        mScan.set("uSize", size);
+        const glm::ivec3 groups = gl::groupCount(size, mScan.workGroupSize());
+        gl::Texture* src = a;
+        gl::Texture* dst = b;
+        for (int p = 0; p < passes; ++p) {
+            mScan.set("uOffset", 1 << p);
+            src->bindImage(0, GL_READ_ONLY);
+            dst->bindImage(1, GL_WRITE_ONLY);
+            glDispatchCompute(GLuint(groups.x), GLuint(groups.y), GLuint(groups.z));
+            glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+            std::swap(src, dst);
+        }
+        return src;
+    };
+    if (naive) {
+        for (int i = 0; i < count; ++i) mResult = run(tileOrigin(i, cells), {cells, cells, 1}, &mGrid, &mPong);
+    } else {
+        mResult = run({0, 0}, {mTilesX * cells, mTilesY * cells, 1}, &mGrid, &mPong);
+    }
+}
+
+void IvsvTechnique::allocateOutputs(int width, int height) {
+    if (mAirlight && mAirlight.size().x == width && mAirlight.size().y == height) return;
+    auto rgba = [](int w, int h, const char* label) {
+        return gl::Texture::create(
+            {.target = GL_TEXTURE_2D, .format = GL_RGBA32F, .size = {w, h, 1}, .levels = 1, .label = label});
+    };
+    mAirlight = rgba(width, height, kAirlight);
+    mRaw = rgba(width, height, "ivsv.gather_raw");
+    mLow = rgba((width + 1) / 2, (height + 1) / 2, "ivsv.gather_quarter");
+    mVisibility = gl::Texture::create(
+        {.target = GL_TEXTURE_2D, .format = GL_R32F, .size = {width, height, 1}, .levels = 1, .label = kVisibility});
+}
+
+const gl::Program& IvsvTechnique::gatherProgram(bool exact, bool interp) {
+    const std::string key = std::string(exact ? "E" : "F") + (interp ? "I" : "N");
+    if (key != mGatherKey || !mGather) {
+        gl::ShaderDefines defines;
+        if (exact) defines.push_back({"COMBINE_EXACT", "1"});
+        if (interp) defines.push_back({"INTERP", "1"});
+        mGather = gl::Program::compile({.stages = {"vsv/ivsv_gather.comp"}, .defines = defines, .label = "ivsv.gather"});
+        mGatherKey = key;
+    }
+    return mGather;
+}
+
+void IvsvTechnique::gather(const scene::Scene& scene, const FrameInput& input, int mode, int gathered, int cells, bool naive,
+            glm::ivec2 pickGl) {
+    const Settings& s = input.settings;
+    const scene::Camera& cam = scene.camera;
+    const gl::Program& program = gatherProgram(s.at("combine") != 0.0, s.at("interp") != 0.0);
+    const int w = input.width, h = input.height;
+    gl::Texture& target = mode == kGatherFull ? mAirlight : (mode == kGatherInterleaved ? mRaw : mLow);
+    const glm::ivec2 outSize = mode == kGatherQuarter ? glm::ivec2((w + 1) / 2, (h + 1) / 2) : glm::ivec2(w, h);
+    program.use();
+    program.set("uOutSize", outSize);
+    render::bindCameraRay(program, cam, w, h);
+    program.set("uScale", mode == kGatherQuarter ? 2 : 1);
+    program.set("uCells", glm::ivec3(cells, cells, kPhiBits));
+    program.set("uVplStride", mode == kGatherInterleaved ? 9 : 1);
+    mMedium.bind(scene.medium);
+    program.set("uChunkBits", int(s.at("chunk_bits")));
+    program.set("uDiscScale", float(s.at("vpl_disc")));
+    program.set("uPick", pickGl);
+    mVplBuffer.bindBase(GL_SHADER_STORAGE_BUFFER, 4);
+    mPick.bindBase(GL_SHADER_STORAGE_BUFFER, 6);
+    mView.surface().distance().bindUnit(render::hd::kFirstFreeTextureUnit);
+    mResult->bindImage(0, GL_READ_ONLY);
+    target.bindImage(1, GL_READ_WRITE);
+    mVisibility.bindImage(2, GL_READ_WRITE);
+    const glm::ivec3 groups = gl::groupCount({outSize.x, outSize.y, 1}, program.workGroupSize());
+    // Naive: one gather pass per VPL, accumulating; imperfect: one pass over all of them.
+    const int passes = naive ? gathered : 1;
+    for (int i = 0; i < passes; ++i) {
+        program.set("uFirstVpl", naive ? i : 0);
+        program.set("uVplCount", naive ? 1 : gathered);
+        program.set("uAccumulate", i > 0 ? 1 : 0);
+        glDispatchCompute(GLuint(groups.x), GLuint(groups.y), 1);
+        glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT |
+                        GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+    }
+    if (mode == kGatherFull) return;
+    mBilateral.use();
+    mBilateral.set("uSize", glm::ivec2(w, h));
+    mBilateral.set("uSourceSize", outSize);
+    mBilateral.set("uMode", mode == kGatherInterleaved ? 0 : 1);
+    mBilateral.set("uSigma", float(s.at("bilateral_sigma")));
+    target.bindImage(0, GL_READ_ONLY);
+    mAirlight.bindImage(1, GL_WRITE_ONLY);
+    const glm::ivec3 g2 = gl::groupCount({w, h, 1}, mBilateral.workGroupSize());
+    glDispatchCompute(GLuint(g2.x), GLuint(g2.y), 1);
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT |
+                    GL_TEXTURE_UPDATE_BARRIER_BIT);
+}
+
+void IvsvTechnique::addOtherLights(const FrameInput& input) {
+    const scene::Scene others = withoutAreaLights(*input.scene);
+    if (!mVsv) mVsv = makeVsvTechnique();
+    FrameInput in;
+    in.scene = &others;
+    in.width = input.width;
+    in.height = input.height;
+    in.settings = completeSettings(*mVsv, {{"voxels", input.settings.at("voxels")}});
+    in.stopAfterStage = 4;  // vsv.gather: L_air exists, no compose needed
+    const FrameOutput extra = mVsv->run(in);
+    vsv::addAirlight(mAirlight, extra.airlight);
+}
+
+}  // namespace viz::ivsv_detail

@@ -1,0 +1,208 @@
+// The vsv technique (Wyman 2011, voxelized shadow volumes) as one class, declared here for its three files:
+// vsv.cpp (parameters, stages, plan, run), vsv_passes.cpp (the GL passes: voxelization, scan, gather) and
+// vsv_views.cpp (what it shows: the picked pixel's voxel column, markers). Only those files include it; the
+// rest of the program knows vsv through vsv.h.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/error.h"
+#include "gl/program.h"
+#include "gl/stage_clock.h"
+#include "gl/texture.h"
+#include "render/camera_ray.h"
+#include "render/host_device.h"
+#include "render/intermediates.h"
+#include "render/light_culling.h"
+#include "render/medium_block.h"
+#include "render/scene_view.h"
+#include "render/shadow_map_markers.h"
+#include "scene/camera.h"
+#include "techniques/vsv/add_airlight.h"
+#include "techniques/vsv/bits128.h"
+#include "techniques/vsv/epipolar_setup.h"
+#include "techniques/vsv/grid_readback.h"
+#include "techniques/vsv/ivsv.h"
+#include "techniques/vsv/stiff_bounds.h"
+
+namespace viz::vsv_detail {
+
+// ---- ids (stable: lessons and tests use them) ----
+constexpr const char* kStageVoxelize = "vsv.voxelize";
+constexpr const char* kStageScan = "vsv.scan";
+constexpr const char* kStageGather = "vsv.gather";
+constexpr const char* kOccluder = "vsv.occluder_alpha";
+constexpr const char* kVoxelSlice = "vsv.voxels";
+constexpr const char* kScanSlice = "vsv.scanned";
+constexpr const char* kColumn = "vsv.column";
+constexpr const char* kAirlight = "vsv.airlight";
+constexpr const char* kVisibility = "vsv.visibility";
+
+enum StageIndex {
+    kShadowMapsIndex = 0,
+    kSurfaceIndex = 1,
+    kVoxelizeIndex = 2,
+    kScanIndex = 3,
+    kGatherIndex = 4,
+    kComposeIndex = 5
+};
+
+constexpr int kMaxScanPasses = 10;  // 2^10 = 1024 alpha cells, the largest `voxels`
+
+// Shader permutations: feature -> {define when enabled, define when disabled}.
+inline const std::map<std::string, std::pair<const char*, const char*>> kDefines = {
+    {"COMBINE_EXACT", {"COMBINE_EXACT", nullptr}},
+    {"INTERP", {"INTERP", nullptr}},
+    {"EPIPOLE", {"EPIPOLE", nullptr}},
+    {"SPOT", {nullptr, "LIGHTS_NO_SPOT"}},
+    {"COOKIE", {nullptr, "LIGHTS_NO_COOKIE"}},
+    {"SHADOW_MAPS_CUBE", {nullptr, "SHADOW_NO_CUBE"}},
+    {"SHADOW_MAPS_2D", {nullptr, "SHADOW_NO_2D"}},
+};
+
+struct GridSize {
+    int alpha = 128, theta = 128, phi = 128;
+};
+
+inline GridSize gridSize(const Settings& s) {
+    const int n = int(s.at("voxels"));
+    GridSize g{n, n, n};
+    if (s.at("voxels_alpha") > 0) g.alpha = int(s.at("voxels_alpha"));
+    if (s.at("voxels_theta") > 0) g.theta = int(s.at("voxels_theta"));
+    if (s.at("voxels_phi") > 0) g.phi = int(s.at("voxels_phi"));
+    if (g.phi % 32 != 0)
+        throw InputError("vsv: the phi resolution (" + std::to_string(g.phi) +
+                         ") must be a multiple of 32 (phi bits are packed in 32-bit words)");
+    return g;
+}
+
+// The scene lights vsv shades itself: point, spot, directional, except those culled because their lit
+// volume misses the view (render/light_culling.h: they have no GPU light and add nothing). Area lights
+// go to an inner ivsv.
+inline std::vector<int> shadedLights(const scene::Scene& scene) {
+    std::vector<int> out;
+    for (int i = 0; i < int(scene.lights.size()); ++i) {
+        const scene::Light& l = scene.lights[std::size_t(i)];
+        if (l.type != scene::LightType::Area && render::lightReachesView(l, scene.camera)) out.push_back(i);
+    }
+    return out;
+}
+
+inline scene::Scene onlyAreaLights(const scene::Scene& scene) {
+    scene::Scene out = scene;
+    out.lights.clear();
+    for (const scene::Light& l : scene.lights)
+        if (l.type == scene::LightType::Area) out.lights.push_back(l);
+    return out;
+}
+
+using vsv::scanPassCount;
+
+using vsv::cpuIntermediate;
+
+class VsvTechnique final : public Technique {
+public:
+    VsvTechnique();
+
+    // Stepping the scan pass by pass: scan_passes = 0 (the voxelized grid before any pass), 1, ...,
+    // then -1 (all log2(alpha cells) passes).
+    std::vector<double> substepValues(int stage, const Settings& s) const override;
+
+    std::string id() const override { return "vsv"; }
+    std::string description() const override {
+        return "voxelized shadow volumes (Wyman 2011): epipolar voxel grid, prefix-OR extrusion, one texel per ray";
+    }
+    const std::vector<StageInfo>& stages() const override { return mStages; }
+    const std::vector<ParamInfo>& params() const override { return mParams; }
+    bool needsGl() const override { return true; }
+
+    // Voxel resolution per axis, the one quality knob (issue 9): the grid's alpha, theta and phi cells
+    // bound how finely shadow edges and the light's falloff along each ray are resolved.
+    std::vector<QualitySetting> qualitySweep(bool quick) const override;
+
+    Settings stiffSettings() const override { return {{"voxels", 512.0}, {"combine", 1.0}}; }
+    // Wyman 2011: the lit fraction times the unshadowed airlight, alpha and phi biases of -2.25 and -1
+    // cells.
+    Settings paperSettings() const override {
+        return {{"combine", 0.0}, {"alpha_bias", -2.25}, {"phi_bias", -1.0}};
+    }
+
+    std::optional<StiffBound> stiffBound(const std::string& caseClass) const override {
+        return vsv::stiffBound(caseClass);
+    }
+
+    Plan plan(const scene::Scene& scene, const Settings& settings) const override;
+
+    FrameOutput run(const FrameInput& input) override;
+
+    // A screen pixel in the grid of the shown light: its eye ray's theta cell as a row of the occluder
+    // map (x = phi bit, y = theta cell), and in the alpha x phi voxel slices, when the slice shown is
+    // the pixel's (theta cell = pick_theta's), its eye ray as the column at its alpha.
+    // In every light's shadow map: the eye ray and its lit/shadow changes (render/shadow_map_markers.h).
+    std::vector<ViewMarker> markersFor(glm::ivec2 pixel, const std::string& id) const override;
+
+private:
+    struct MarkState {
+        vsv::EpipolarFrame frame;
+        vsv::EpipolarGrid grid;
+        scene::Camera camera;
+        glm::ivec2 size{0};
+        int pickTheta = 0;
+    };
+    std::optional<MarkState> mMark;  // the shown light's grid in the last run, for markersFor
+
+    Plan planFor(const scene::Scene& scene, const Settings& settings, int width, int height) const;
+
+    void allocate(const GridSize& size, int width, int height, int lightCount);
+
+    // Area lights through ivsv (its defaults, this run's `voxels` for alpha and theta), added to L_air.
+    void addAreaLights(const FrameInput& input);
+
+    int gpuLightIndex(int sceneLight) const;
+
+    static void setEpipolar(const gl::Program& program, const vsv::EpipolarFrame& f, const vsv::EpipolarGrid& g);
+
+    void voxelize(const scene::Scene& scene, const Settings& s, int sceneLight, const vsv::EpipolarGrid& g, int slot);
+
+    // Hillis-Steele passes with offsets 1, 2, 4, ...: ping-pong between the grid and its partner; the
+    // result pointer follows the last pass written.
+    void scan(int slot, const GridSize& size, int passLimit);
+
+    const gl::Program& gatherProgram(const Plan& plan);
+
+    void gather(const gl::Program& program, const scene::Scene& scene, const FrameInput& input, int sceneLight,
+                const vsv::EpipolarGrid& g, int slot);
+
+    // The phi bits the picked pixel's eye ray reads (nearest theta cell), marked 0.5 beyond its fragment.
+    // The alpha cell (x) and theta cell (y) of pixel (x, y)'s eye ray in light `sceneLight`'s grid.
+    static glm::ivec2 pickedCell(const scene::Scene& scene, const FrameInput& input, int sceneLight,
+                                 const vsv::EpipolarGrid& g, int x, int y);
+
+    // Two rows of phi bits along pixel (x, y)'s column: row 0 as voxelized (mPreScanColumn), row 1 after the
+    // scan; 0.5 beyond the pixel's fragment (the gather does not read them).
+    std::shared_ptr<Image> columnImage(const scene::Scene& scene, const FrameInput& input, int sceneLight,
+                                       const vsv::EpipolarGrid& g, int slot, int x, int y) const;
+
+    std::vector<ParamInfo> mParams;
+    std::vector<StageInfo> mStages;
+    render::SceneViewPasses mView;
+    render::MediumBlock mMedium;  // sigma_s, sigma_t, g for the shaders (common/medium.glsl)
+    StageReuse mReuse;  // stages carried over from the last run (FrameInput::resumeAtStage)
+    gl::Program mVoxelize, mPack, mScan, mGather;
+    std::string mGatherKey;
+    glm::ivec3 mGridSize{0};
+    std::vector<gl::Texture> mGrid, mPong, mOccluder;  // per light
+    std::vector<const gl::Texture*> mResult;           // per light: where the scan left the grid
+    std::vector<vsv::Bits128> mPreScanColumn;           // the picked pixel's texels before the scan
+    gl::Texture mWords;                                // voxelization scratch, one light at a time
+    gl::Texture mAirlight, mVisibility;
+    std::unique_ptr<Technique> mIvsv;  // the scene's area lights
+};
+
+}  // namespace viz::vsv_detail
