@@ -108,6 +108,7 @@ private:
     // The session's medium, technique (with its settings), camera, view and exposure over the scene.
     void restoreSessionOverStep() override;
     void showLessonComparison(const std::vector<std::string>& techniques) override;
+    std::string lessonViewCaption(const std::string& id) const override;
     // Opens the comparison grid on the current view for these techniques (an error goes to the status).
     void openComparison(const std::vector<std::string>& ids);
 

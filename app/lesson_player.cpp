@@ -248,7 +248,7 @@ float LessonPlayer::panelWidth(float windowWidth, float scale) {
 }
 
 
-void LessonPlayer::draw(viz::ui::Context& ui, DrawList& dl, DrawList& background, float scale) {
+void LessonPlayer::draw(const LessonHost& host, viz::ui::Context& ui, DrawList& dl, DrawList& background, float scale) {
     const Rect& area = mArea;
     if (area.size().x <= 0.0f || area.size().y <= 0.0f) return;
     const viz::ui::FontAtlas& font = dl.font();
@@ -352,7 +352,8 @@ void LessonPlayer::draw(viz::ui::Context& ui, DrawList& dl, DrawList& background
                 const Rect cell{{area.min.x + pad * 0.5f, y}, {area.max.x - pad * 0.5f, y + rowH}};
                 ui.beginPanel("##lesson.view." + std::to_string(i), cell);
                 const bool shown = views[i] == mShownView;
-                if (ui.button((shown ? "shown: " : "show ") + views[i])) mActions.push_back({Action::ShowView, views[i]});
+                // The window's caption of the view: one name per view everywhere.
+                if (ui.button((shown ? "shown: " : "show ") + host.lessonViewCaption(views[i]))) mActions.push_back({Action::ShowView, views[i]});
                 ui.endPanel();
                 y += rowH;
             }

@@ -65,6 +65,9 @@ public:
     // The step's live comparison (`compare:`): the comparison grid with the reference and these
     // techniques, timed on this machine; empty: no grid.
     virtual void showLessonComparison(const std::vector<std::string>& techniques) = 0;
+    // The caption the window's view title gives a view id ("final", "airlight" or an intermediate of the
+    // last run); the id itself when the last run did not publish it.
+    virtual std::string lessonViewCaption(const std::string& id) const = 0;
 };
 
 // The first light of a step's `animate: light orbit` at `turn` (0..1, one full turn): scene/light_orbit.h.
@@ -91,8 +94,10 @@ public:
     void place(const viz::ui::Rect& area) { mArea = area; }
     const viz::ui::Rect& area() const { return mArea; }
     // Draws the panel: backgrounds into `background`, text into `text`, buttons with `ui` (inside its
-    // frame). Clicks are queued and run at the next update().
-    void draw(viz::ui::Context& ui, viz::ui::DrawList& text, viz::ui::DrawList& background, float scale);
+    // frame). Clicks are queued and run at the next update(). `host` names the step's views as the
+    // window does.
+    void draw(const LessonHost& host, viz::ui::Context& ui, viz::ui::DrawList& text, viz::ui::DrawList& background,
+              float scale);
 
     bool animating() const { return mPlaying; }
     // Position in the session file, and back.

@@ -21,6 +21,14 @@ std::string GuiApp::contentLabel(int index) const {
     return index == 0 ? "Final image" : index == 1 ? "Airlight L_air" : mOutput.intermediates[std::size_t(index - 2)].label;
 }
 
+std::string GuiApp::lessonViewCaption(const std::string& id) const {
+    if (id == "final") return contentLabel(0);
+    if (id == "airlight") return contentLabel(1);
+    for (const viz::Intermediate& im : mOutput.intermediates)
+        if (im.id == id) return im.label.empty() ? id : im.label;
+    return id;
+}
+
 ViewState& GuiApp::focusedView() {
     if (!mViews.count(mFocused)) mFocused = mLayout.views().front();
     return mViews[mFocused];

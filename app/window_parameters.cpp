@@ -59,7 +59,7 @@ void GuiApp::drawParameters(glm::ivec2 fb) {
         mUi->endPanel();
         if (sceneChanged) sceneEdited();
     }
-    if (mLesson) mLesson->draw(*mUi, *mDrawList, *mBackground, mScale);
+    if (mLesson) mLesson->draw(*this, *mUi, *mDrawList, *mBackground, mScale);
     mUi->endFrame();
 }
 

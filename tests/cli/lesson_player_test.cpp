@@ -186,7 +186,7 @@ TEST_F(LessonPlayer, TheStepsOtherViewsAreButtonsAndOtherViewsAreTryingSomething
     const fs::path lesson = writeText("views.md", "# Views\n\n## one\n```airlight\nscene: grate\ntechnique: raymarch\n"
                                                   "set: samples=8\nviews: final, airlight, raymarch.lit_fraction\n```\ntext\n");
     const fs::path script = writeText("views.txt", "screenshot " + path("first.png").string() +
-                                                       "\nclick \"show raymarch.lit_fraction\"\nframes 2\nscreenshot " +
+                                                       "\nclick \"show Lit fraction\"\nframes 2\nscreenshot " +
                                                        path("second.png").string() + "\nclick \"view:Spot shadow map\"\nframes 2\n");
     const RunResult r = run("--lesson " + lesson.string() + " --size 40x30 --script " + script.string() + " --screenshot " +
                             path("other.png").string());

@@ -277,7 +277,7 @@ struct TableCase {
     double sigma_t, sigma_s, I0, x0, x1, g, reference;
 };
 
-std::vector<TableCase> readNumericsTable() {
+std::vector<TableCase> readReferenceValues() {
     const std::string path = std::string(VIZ_TEST_DATA_DIR) + "/math/airlight_ref_cases.txt";
     std::ifstream in(path);
     EXPECT_TRUE(in.good()) << "cannot read " << path;
@@ -296,8 +296,8 @@ std::vector<TableCase> readNumericsTable() {
     return cases;
 }
 
-TEST(AirlightPointSegment, MatchesMpmathTableOfNumericsSection9) {
-    const std::vector<TableCase> cases = readNumericsTable();
+TEST(AirlightPointSegment, MatchesTheMpmathReferenceValuesOfDocsNumerics) {
+    const std::vector<TableCase> cases = readReferenceValues();
     ASSERT_EQ(cases.size(), 16u);
     double worstDouble = 0, worstFloat = 0;
     for (const TableCase& c : cases) {
@@ -314,7 +314,7 @@ TEST(AirlightPointSegment, MatchesMpmathTableOfNumericsSection9) {
         worstDouble = std::max(worstDouble, error);
         worstFloat = std::max(worstFloat, errorF);
     }
-    std::printf("  NUMERICS section 9 table (mpmath): worst relative error double %.2e, float %.2e\n",
+    std::printf("  docs/numerics.md#reference-values (mpmath): worst relative error double %.2e, float %.2e\n",
                 worstDouble, worstFloat);
 }
 
