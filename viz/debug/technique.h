@@ -13,29 +13,13 @@
 
 #include <glm/glm.hpp>
 
-#include "core/image.h"
+#include "debug/intermediate.h"
+#include "debug/params.h"
+#include "debug/plan.h"
 #include "debug/timing.h"
 #include "scene/scene.h"
 
 namespace viz {
-
-// How an intermediate is best shown.
-enum class ViewKind { Color, Scalar, Signed, BitField, Mask, Depth, Mesh, Buffer };
-const char* viewKindName(ViewKind kind);
-
-struct ParamInfo {
-    std::string name;  // "samples", "jitter", "shadow_map", ...
-    std::string help;  // one line
-    double defaultValue = 0.0;
-    double minValue = 0.0;
-    double maxValue = 0.0;
-    bool integer = true;
-    // Named values: choices[i] stands for the value i (e.g. weighting=physical); empty for plain numbers.
-    std::vector<std::string> choices{};
-    // A per-axis form: `name=AxBxC` sets these parameters in order (e.g. voxels -> voxels_alpha,
-    // voxels_theta, voxels_phi); empty when the parameter takes one number only.
-    std::vector<std::string> components{};
-};
 
 struct StageInfo {
     std::string id;                          // "raymarch.march": stable, used by lessons and tests
@@ -53,100 +37,6 @@ struct StageInfo {
     // its settings ask for: polyvol's orbit view of its light volume mesh, say. Drawing one costs time
     // inside the stage, so a caller that does not show it (the report) does not pay for it.
     std::vector<std::string> onDemand{};
-};
-
-// A plot a technique publishes with an intermediate (singular values, basis functions, per-plane values
-// along a ray, ...): the window draws it with axes, ticks and a legend (viz/plot) in place of the
-// intermediate's image, which stays what `airlight render --layer` writes.
-struct PlotCurve {
-    std::string name;                // legend entry
-    std::vector<glm::dvec2> points;  // data units, drawn in order
-    bool lines = true, markers = false;
-    int colour = -1;                 // index into the categorical palette; -1: the curve's own index
-};
-struct PlotData {
-    std::string title, xLabel, yLabel;
-    bool logX = false, logY = false;
-    std::vector<PlotCurve> curves;
-};
-
-// A value an intermediate stores to mean "nothing here" rather than a measurement (minmax's -1 outside
-// the spot's cone, vsv's -1 for "no occluder", 0 for a hole in an ISM): the window shows it in the
-// sentinel hatch with its meaning in the colour bar's legend, and leaves it out of the value range, the
-// histogram and the NaN / Inf / negative counts. It applies to every channel of the intermediate.
-struct Sentinel {
-    float value = 0.0f;
-    std::string meaning;  // "outside the spot's cone"
-};
-
-// One quantity of an intermediate that packs several into its channels (polyvol's crossings: faces
-// crossed, signed count, clamped faces): the window shows one channel at a time, picked by name, with
-// its own units, range and colour map.
-struct ChannelInfo {
-    std::string name;   // "faces crossed"
-    std::string units;  // "count"
-    ViewKind kind = ViewKind::Scalar;
-    float rangeMin = 0.0f, rangeMax = 1.0f;
-};
-
-// A published intermediate: either a CPU image or a GL texture owned by the technique (valid until the
-// next run()). Meshes and buffers carry a GL name and a short description of their layout.
-struct Intermediate {
-    std::string id;       // "raymarch.shadow_map"
-    std::string label;    // "Shadow map"
-    std::string note;     // one-line explanation
-    std::string units;    // "scene units", "W/(m^2 sr)", ...
-    ViewKind kind = ViewKind::Scalar;
-    float rangeMin = 0.0f, rangeMax = 1.0f;  // suggested display range
-    std::shared_ptr<const Image> image;      // CPU storage, or
-    unsigned glTexture = 0;                  // GL texture name (GL_TEXTURE_2D, or a cube map/array: layers)
-    unsigned glTarget = 0;
-    glm::ivec3 extent{0};
-    // An orbit view (render::MeshView): the window turns it by dragging (the technique's mesh_yaw and
-    // mesh_pitch parameters).
-    bool orbit = false;
-    // Plots of the same data, stacked top to bottom in the window's view (empty: the image is shown).
-    std::vector<PlotData> plots{};
-    // Shows the picked pixel's ray (the technique's pick_x / pick_y): a walk, a voxel column, per-VPL
-    // terms, the planes along it. The ray inspector lists these by id.
-    bool rayView = false;
-    std::vector<Sentinel> sentinels{};
-    // A picture the technique draws (a chart, an orbit view, a schematic): its colours are explained in
-    // its note, not by a colour map, and the window's colour bar says so.
-    bool picture = false;
-    // Empty: the channels are one quantity (a colour, or a scalar in r). Else channel i (r, g, b, a) is
-    // channels[i]; the window starts on the first.
-    std::vector<ChannelInfo> channels{};
-};
-
-using Settings = std::map<std::string, double>;
-
-// A mark a technique can draw in one of its algorithm-space intermediates for a screen pixel (the
-// window's linked cursors: the epipolar row of the pixel in a rectified map, say). A segment from
-// `from` to `to` (equal: a point) in the intermediate's data uv: [0,1]^2 over its columns and its rows
-// as stored (row 0 = the first row; a GL texture, and each layer of a GL array or cube map, shows it at
-// the bottom).
-struct ViewMarker {
-    glm::vec2 from{0.0f}, to{0.0f};
-    std::string label;  // short, e.g. "slice 37"
-    // The layer (array layer, cube face 0..5 = +X -X +Y -Y +Z -Z) the mark belongs to; -1: every layer.
-    int layer = -1;
-};
-
-// Which stages run for a scene and settings, and for each one left out, why.
-struct StagePlan {
-    std::string stage;
-    bool runs = true;
-    std::string why;  // for a skipped stage: the reason; for a running one: optional detail
-};
-struct FeaturePlan {
-    std::string feature;  // shader feature / code path, e.g. "SPOT_FALLOFF"
-    bool enabled = true;
-    std::string why;
-};
-struct Plan {
-    std::vector<StagePlan> stages;
-    std::vector<FeaturePlan> features;
 };
 
 // One point of a technique's quality sweep (`airlight report`): a short label and the settings that
@@ -263,24 +153,9 @@ bool setSubstep(const Technique& technique, int stage, Settings& settings, int k
 // Fills in defaults and rejects unknown names and out-of-range values with an InputError.
 Settings completeSettings(const Technique& technique, const Settings& given);
 
-// "name=value" as a user writes it in --set and lessons: a named value by its name (integrand=svd,
-// accum=rgba8), any other value as a number (%g). Unknown names and out-of-range indices stay numbers.
-std::string settingText(const std::vector<ParamInfo>& params, const std::string& name, double value);
-
 // The intermediates among `shown` that a stage of `technique` draws only on demand (StageInfo::onDemand),
 // sorted, once each: what FrameInput::views should ask for. `everything`: all of them.
 std::vector<std::string> onDemandAmong(const Technique& technique, const std::vector<std::string>& shown,
                                        bool everything = false);
-
-// The `force_features` parameter every technique that prunes by scene offers: 1 runs every stage and
-// compiles in every feature its plan would leave out for the scene, so `airlight report` can measure
-// what each plan saves. The image must not change.
-ParamInfo forceFeaturesParam();
-// With force = true, turns every skipped stage on and every listed scene-pruned feature on, keeping
-// the reason it would have been skipped in `why`. Features chosen by settings are not touched.
-void forcePlan(Plan& plan, bool force, const std::vector<std::string>& scenePrunedFeatures);
-
-// Whether the plan lists feature `name` as enabled (false when it does not list it).
-bool featureEnabled(const Plan& plan, const std::string& name);
 
 }  // namespace viz

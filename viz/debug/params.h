@@ -1,0 +1,35 @@
+// A technique's parameters: what each is (ParamInfo) and the values a run gets (Settings).
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace viz {
+
+struct ParamInfo {
+    std::string name;  // "samples", "jitter", "shadow_map", ...
+    std::string help;  // one line
+    double defaultValue = 0.0;
+    double minValue = 0.0;
+    double maxValue = 0.0;
+    bool integer = true;
+    // Named values: choices[i] stands for the value i (e.g. weighting=physical); empty for plain numbers.
+    std::vector<std::string> choices{};
+    // A per-axis form: `name=AxBxC` sets these parameters in order (e.g. voxels -> voxels_alpha,
+    // voxels_theta, voxels_phi); empty when the parameter takes one number only.
+    std::vector<std::string> components{};
+};
+
+using Settings = std::map<std::string, double>;
+
+// "name=value" as a user writes it in --set and lessons: a named value by its name (integrand=svd,
+// accum=rgba8), any other value as a number (%g). Unknown names and out-of-range indices stay numbers.
+std::string settingText(const std::vector<ParamInfo>& params, const std::string& name, double value);
+
+// The `force_features` parameter every technique that prunes by scene offers: 1 runs every stage and
+// compiles in every feature its plan would leave out for the scene, so `airlight report` can measure
+// what each plan saves. The image must not change.
+ParamInfo forceFeaturesParam();
+
+}  // namespace viz
