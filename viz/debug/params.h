@@ -27,6 +27,11 @@ using Settings = std::map<std::string, double>;
 // accum=rgba8), any other value as a number (%g). Unknown names and out-of-range indices stay numbers.
 std::string settingText(const std::vector<ParamInfo>& params, const std::string& name, double value);
 
+// The picked pixel a technique's per-pixel intermediates follow (the ray inspector's pixel): `axis` 'x'
+// gives pick_x (column, 0 = left), 'y' pick_y (row, 0 = top); -1 is the image centre. Declared here once,
+// with one range, for every technique that has them; `what` names what the technique shows for it.
+ParamInfo pickParam(char axis, const std::string& what);
+
 // The `force_features` parameter every technique that prunes by scene offers: 1 runs every stage and
 // compiles in every feature its plan would leave out for the scene, so `airlight report` can measure
 // what each plan saves. The image must not change.

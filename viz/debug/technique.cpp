@@ -78,6 +78,22 @@ Settings completeSettings(const Technique& technique, const Settings& given) {
     return result;
 }
 
+ParamInfo pickParam(char axis, const std::string& what) {
+    // 16384: twice the largest image `--size` accepts, as both techniques with a 16384 maximum had.
+    const bool x = axis == 'x';
+    return {x ? "pick_x" : "pick_y",
+            std::string(x ? "picked pixel's column (0 = left)" : "picked pixel's row (0 = top)") + ", whose " + what +
+                " the views show; -1: image centre",
+            -1, -1, 16384, true};
+}
+
+glm::ivec2 pickedPixel(const FrameInput& input) {
+    int x = int(input.settings.at("pick_x")), y = int(input.settings.at("pick_y"));
+    if (x < 0) x = input.width / 2;
+    if (y < 0) y = input.height / 2;
+    return {std::min(x, input.width - 1), std::min(y, input.height - 1)};
+}
+
 ParamInfo forceFeaturesParam() {
     return {"force_features",
             "1: run every stage and compile every feature the plan would leave out for this scene (to measure "

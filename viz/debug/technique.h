@@ -150,6 +150,10 @@ SubstepPosition substepPosition(const Technique& technique, int stage, const Set
 // the stage whole). Returns false (and changes nothing) when the stage has no sub-steps.
 bool setSubstep(const Technique& technique, int stage, Settings& settings, int k);
 
+// The pixel pick_x / pick_y (pickParam) name in the run's image: -1 is the centre, values past the edge
+// clamp to the last column or row.
+glm::ivec2 pickedPixel(const FrameInput& input);
+
 // Fills in defaults and rejects unknown names and out-of-range values with an InputError.
 Settings completeSettings(const Technique& technique, const Settings& given);
 

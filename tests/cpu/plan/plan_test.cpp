@@ -97,5 +97,47 @@ TEST(Plan, NothingScattersWithoutScattering) {
     EXPECT_TRUE(skipped);
 }
 
+// The picked pixel is one declaration: every technique that follows it has pick_x and pick_y with the
+// same range, and each one's run maps -1 to the centre and clamps past the edge, checked against the
+// image's own centre and corner here (not against pickParam's numbers).
+TEST(Params, EveryTechniqueWithAPickedPixelDeclaresTheSameRange) {
+    int withPick = 0;
+    std::vector<std::pair<double, double>> ranges;
+    for (const std::string& id : techniqueIds()) {
+        const auto t = makeTechnique(id);
+        const ParamInfo* x = nullptr;
+        const ParamInfo* y = nullptr;
+        for (const ParamInfo& p : t->params()) {
+            if (p.name == "pick_x") x = &p;
+            if (p.name == "pick_y") y = &p;
+        }
+        ASSERT_EQ(x == nullptr, y == nullptr) << id << " declares only one of pick_x / pick_y";
+        if (!x) continue;
+        ++withPick;
+        EXPECT_EQ(x->defaultValue, -1.0) << id;
+        EXPECT_EQ(y->defaultValue, -1.0) << id;
+        EXPECT_TRUE(x->integer && y->integer) << id;
+        ranges.push_back({x->minValue, x->maxValue});
+        ranges.push_back({y->minValue, y->maxValue});
+        // The largest image a user can ask for (--size up to 8192) can be picked to its last pixel.
+        EXPECT_GE(x->maxValue, 8191.0) << id;
+        EXPECT_GE(y->maxValue, 8191.0) << id;
+    }
+    EXPECT_GE(withPick, 4);  // slices, minmax, vsv, ivsv
+    for (const auto& r : ranges) EXPECT_EQ(r, ranges.front());
+}
+
+TEST(Params, ThePickedPixelIsTheCentreByDefaultAndClampsAtTheEdge) {
+    FrameInput input;
+    input.width = 33;
+    input.height = 20;
+    input.settings = {{"pick_x", -1}, {"pick_y", -1}};
+    EXPECT_EQ(pickedPixel(input), glm::ivec2(16, 10));
+    input.settings = {{"pick_x", 1000}, {"pick_y", 7}};
+    EXPECT_EQ(pickedPixel(input), glm::ivec2(32, 7));
+    input.settings = {{"pick_x", 0}, {"pick_y", 5000}};
+    EXPECT_EQ(pickedPixel(input), glm::ivec2(0, 19));
+}
+
 }  // namespace
 }  // namespace viz

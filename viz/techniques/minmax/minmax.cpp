@@ -34,9 +34,8 @@ MinmaxTechnique::MinmaxTechnique() {
          512, 1, 16384, true},
         {"mip_levels", "mipmap passes to run (0: all); fewer stops the frame after the mipmap stage", 0, 0, 13,
          true},
-        {"pick_x", "picked pixel (column, 0 = left) for the per-ray intermediates; -1: image centre", -1, -1,
-         16384, true},
-        {"pick_y", "picked pixel (row, 0 = top); -1: image centre", -1, -1, 16384, true},
+        pickParam('x', "slice row, tree walk and ray chart"),
+        pickParam('y', "slice row, tree walk and ray chart"),
         {"trace_steps", "picked pixel's walk: show its first k nodes (0: all); steps the traversal node by node",
          0, 0, 100000, true},
     };

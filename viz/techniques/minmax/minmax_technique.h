@@ -160,8 +160,6 @@ public:
 private:
     static int levelCount(const LightWork& w) { return std::bit_width(unsigned(w.setup.frame.columns)) - 1; }
 
-    glm::ivec2 pickedPixel(const FrameInput& input) const;
-
     // Epipolar setup of every spot, directional and point light with a shadow map; others are marched.
     // `notes` gets one line per light whose slices leave some camera ray farther from its slice than the
     // settings promise (the slice cap reached, or a fixed count too low for the image).

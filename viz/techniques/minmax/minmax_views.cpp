@@ -31,13 +31,6 @@ std::vector<ViewMarker> MinmaxTechnique::markersFor(glm::ivec2 pixel, const std:
     return marks;
 }
 
-glm::ivec2 MinmaxTechnique::pickedPixel(const FrameInput& input) const {
-    int x = int(input.settings.at("pick_x")), y = int(input.settings.at("pick_y"));
-    if (x < 0) x = input.width / 2;
-    if (y < 0) y = input.height / 2;
-    return {std::min(x, input.width - 1), std::min(y, input.height - 1)};
-}
-
 std::vector<float> MinmaxTechnique::readRow(const gl::Texture& t, int row, int channels) {
     const int width = t.size().x;
     std::vector<float> v(std::size_t(width * channels));

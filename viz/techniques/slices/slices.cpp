@@ -42,9 +42,8 @@ SlicesTechnique::SlicesTechnique() {
         {"mesh_yaw", "mesh_view: orbit camera's angle about the vertical (degrees)", 35, -360, 360, false},
         {"mesh_pitch", "mesh_view: orbit camera's angle above the horizon (degrees)", 25, -89, 89, false},
         {"mesh_zoom", "mesh_view: orbit camera's zoom (1 fits the scene and the camera)", 1, 0.05, 50, false},
-        {"pick_x", "picked pixel (column, 0 = left) whose planes slices.ray_planes lists; -1: image centre", -1,
-         -1, 16384, true},
-        {"pick_y", "picked pixel (row, 0 = top); -1: image centre", -1, -1, 16384, true},
+        pickParam('x', "planes slices.ray_planes lists"),
+        pickParam('y', "planes slices.ray_planes lists"),
         {"ray_planes", "1: record the picked pixel's planes (slices.ray_planes: the planes drawn again at that "
          "pixel alone, a replay of its blend, a readback); 0: off", 1, 0, 1, true},
         forceFeaturesParam(),

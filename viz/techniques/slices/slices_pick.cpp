@@ -4,13 +4,6 @@
 
 namespace viz::slices_detail {
 
-glm::ivec2 SlicesTechnique::pickedPixel(const FrameInput& input) const {
-    int x = int(input.settings.at("pick_x")), y = int(input.settings.at("pick_y"));
-    if (x < 0) x = input.width / 2;
-    if (y < 0) y = input.height / 2;
-    return {std::min(x, input.width - 1), std::min(y, input.height - 1)};
-}
-
 void SlicesTechnique::replayPick(const FrameInput& input, const CameraBasis& basis, const Terms& t) {
     mRayPlanes.reset();
     if (mPickSets.empty()) return;

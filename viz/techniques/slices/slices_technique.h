@@ -178,8 +178,6 @@ private:
 
     void drawPlanes(const scene::Scene& scene, const FrameInput& input, const Terms& t);
 
-    glm::ivec2 pickedPixel(const FrameInput& input) const;
-
     // The picked pixel's blend replayed (pick_replay.*): every record in drawing order (draw sets in turn)
     // over a target in the accumulation's format, so texel k holds the pixel's accumulation after records
     // 0..k as this blend quantises it. Then the records and the replay are read back into mRayPlanes.

@@ -37,8 +37,8 @@ IvsvTechnique::IvsvTechnique() {
          kMaxScanPasses, true},
         {"vpl_step", "gather only VPLs 0 .. k (-1: all; stepping VPL by VPL)", -1, -1, kMaxVpls - 1, true},
         {"pick_vpl", "VPL whose shadow map, grid and column the intermediates show", 0, 0, kMaxVpls - 1, true},
-        {"pick_x", "pixel whose voxel column and per-VPL contributions are shown (-1: centre)", -1, -1, 1e6, true},
-        {"pick_y", "pixel row (0 = top) (-1: centre)", -1, -1, 1e6, true},
+        pickParam('x', "voxel column and per-VPL contributions"),
+        pickParam('y', "voxel column and per-VPL contributions"),
         {"pick_theta", "theta cell of the unwrapped alpha x phi slices (-1: that of the picked pixel)", -1, -1, 512,
          true},
     };
@@ -235,8 +235,8 @@ FrameOutput IvsvTechnique::run(const FrameInput& input) {
     out.lastStageRun = kSurfaceIndex;
     if (stop == kSurfaceIndex) return out;
 
-    const int pickX = s.at("pick_x") < 0 ? input.width / 2 : std::min(int(s.at("pick_x")), input.width - 1);
-    const int pickY = s.at("pick_y") < 0 ? input.height / 2 : std::min(int(s.at("pick_y")), input.height - 1);
+    const glm::ivec2 pick = pickedPixel(input);
+    const int pickX = pick.x, pickY = pick.y;
     const glm::dvec3 pickRay = scene::pixelRay(scene.camera, input.width, input.height, pickX, pickY);
     int pickTheta = 0;
     if (area) {

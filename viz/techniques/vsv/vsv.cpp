@@ -33,8 +33,8 @@ VsvTechnique::VsvTechnique() {
          true},
         {"scan_passes", "stop the alpha scan after this many passes (-1: all; stepping)", -1, -1, kMaxScanPasses,
          true},
-        {"pick_x", "pixel whose voxel column is shown (-1: image centre)", -1, -1, 1e6, true},
-        {"pick_y", "pixel row (0 = top) whose voxel column is shown (-1: image centre)", -1, -1, 1e6, true},
+        pickParam('x', "voxel column"),
+        pickParam('y', "voxel column"),
         {"pick_theta", "theta cell of the unwrapped alpha x phi slices (-1: that of the picked pixel)", -1, -1,
          1024, true},
         {"light", "which light's grid the intermediates show (index among the scene's lights)", 0, 0, 255, true},
@@ -109,8 +109,8 @@ FrameOutput VsvTechnique::run(const FrameInput& input) {
                                           size.alpha, size.theta, size.phi, dynamic));
     allocate(size, input.width, input.height, int(lights.size()));
     const bool gatherRuns = out.plan.stages[kGatherIndex].runs;
-    const int pickX = s.at("pick_x") < 0 ? input.width / 2 : std::min(int(s.at("pick_x")), input.width - 1);
-    const int pickY = s.at("pick_y") < 0 ? input.height / 2 : std::min(int(s.at("pick_y")), input.height - 1);
+    const glm::ivec2 pick = pickedPixel(input);
+    const int pickX = pick.x, pickY = pick.y;
     int pickTheta = 0;
     if (!lights.empty()) {
         const vsv::EpipolarGrid& g = grids[std::size_t(shown)];
