@@ -219,6 +219,9 @@ private:
     std::vector<std::string> shownContents() const;
     std::string contentId(int index) const;
     std::string contentLabel(int index) const;
+    // The content index (0 final, 1 L_air, 2 + i intermediate i) of the first content with this id in the
+    // last run; -1 when it has none.
+    int contentIndexOf(const std::string& id) const;
     ViewState& focusedView();
     void clearPanes();
 

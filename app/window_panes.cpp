@@ -21,12 +21,19 @@ std::string GuiApp::contentLabel(int index) const {
     return index == 0 ? "Final image" : index == 1 ? "Airlight L_air" : mOutput.intermediates[std::size_t(index - 2)].label;
 }
 
+int GuiApp::contentIndexOf(const std::string& id) const {
+    if (id == "final") return 0;
+    if (id == "airlight") return 1;
+    const auto& all = mOutput.intermediates;
+    for (std::size_t i = 0; i < all.size(); ++i)
+        if (all[i].id == id) return 2 + int(i);
+    return -1;
+}
+
 std::string GuiApp::lessonViewCaption(const std::string& id) const {
-    if (id == "final") return contentLabel(0);
-    if (id == "airlight") return contentLabel(1);
-    for (const viz::Intermediate& im : mOutput.intermediates)
-        if (im.id == id) return im.label.empty() ? id : im.label;
-    return id;
+    const int index = contentIndexOf(id);
+    const std::string label = index < 0 ? std::string() : contentLabel(index);
+    return label.empty() ? id : label;  // as the view title falls back to the id
 }
 
 ViewState& GuiApp::focusedView() {
@@ -52,9 +59,8 @@ void GuiApp::buildPane(ViewState& v) {
         // Ids may repeat (one shadow map per light): prefer the same position, then the first match.
         if (v.index >= 0 && v.index < int(all.size()) && all[std::size_t(v.index)].id == content) {
             index = v.index;
-        } else {
-            for (int i = int(all.size()) - 1; i >= 0; --i)
-                if (all[std::size_t(i)].id == content) index = i;
+        } else if (const int first = contentIndexOf(content); first >= 2) {
+            index = first - 2;
         }
         if (index < 0) content = "airlight";  // not in this run: L_air (the choice is kept for later runs)
     }

@@ -5,6 +5,46 @@
 
 namespace viz::slices_detail {
 
+namespace {
+
+// Deterministic integer hash -> [0, 1).
+float hashUnit(std::uint32_t x, std::uint32_t y, std::uint32_t seed) {
+    std::uint32_t h = x * 0x8da6b343u ^ y * 0xd8163841u ^ seed * 0xcb1ab31fu;
+    h ^= h >> 13;
+    h *= 0x5bd1e995u;
+    h ^= h >> 15;
+    return float(h >> 8) * (1.0f / 16777216.0f);
+}
+
+// Tileable value noise (period = size): two octaves of smoothly interpolated lattice values on periodic
+// lattices of 8 and 16 cells. Channel r and g use different seeds (the paper's two noise maps in one texture).
+std::vector<std::uint8_t> makeNoise(int size) {
+    std::vector<std::uint8_t> rg(std::size_t(size * size * 2));
+    auto octave = [&](int x, int y, int cells, std::uint32_t seed) {
+        const float fx = float(x) * float(cells) / float(size), fy = float(y) * float(cells) / float(size);
+        const int x0 = int(std::floor(fx)), y0 = int(std::floor(fy));
+        float ax = fx - float(x0), ay = fy - float(y0);
+        ax = ax * ax * (3.0f - 2.0f * ax);
+        ay = ay * ay * (3.0f - 2.0f * ay);
+        auto v = [&](int i, int j) {
+            return hashUnit(std::uint32_t((i % cells + cells) % cells), std::uint32_t((j % cells + cells) % cells), seed);
+        };
+        const float a = v(x0, y0) + (v(x0 + 1, y0) - v(x0, y0)) * ax;
+        const float b = v(x0, y0 + 1) + (v(x0 + 1, y0 + 1) - v(x0, y0 + 1)) * ax;
+        return a + (b - a) * ay;
+    };
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x)
+            for (int c = 0; c < 2; ++c) {
+                const std::uint32_t seed = std::uint32_t(17 + 101 * c);
+                const float n = 0.65f * octave(x, y, 8, seed) + 0.35f * octave(x, y, 16, seed + 7);
+                rg[std::size_t((y * size + x) * 2 + c)] = std::uint8_t(std::clamp(n, 0.0f, 1.0f) * 255.0f + 0.5f);
+            }
+    return rg;
+}
+
+}  // namespace
+
 SlicesTechnique::SlicesTechnique() {
     mParams = {
         {"planes", "N, sampling planes per light (substeps of the planes stage)", 128, 1, 4096, true},

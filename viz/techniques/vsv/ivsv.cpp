@@ -148,11 +148,7 @@ Plan IvsvTechnique::plan(const scene::Scene& scene, const Settings& settings) co
     render::planCulledLights(scene, p);
     // Scene-pruned: the inner vsv without other lights (force_features=1 runs it on none: it adds zero).
     forcePlan(p, settings.at("force_features") != 0.0, {"OTHER_LIGHTS_BY_VSV"});
-    for (FeaturePlan& f : p.features) {
-        const auto it = kDefines.find(f.feature);
-        const char* define = it == kDefines.end() ? nullptr : (f.enabled ? it->second.first : it->second.second);
-        if (define) f.why += std::string(f.enabled ? " (compiled in: " : " (compiled out: ") + define + ")";
-    }
+    annotatePermutations(p, kDefines);
     return p;
 }
 

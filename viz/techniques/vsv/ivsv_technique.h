@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "debug/permutations.h"
 #include "gl/buffer.h"
 #include "gl/program.h"
 #include "gl/stage_clock.h"
@@ -82,7 +83,7 @@ struct GpuVpl {
 };
 static_assert(sizeof(GpuVpl) == 13 * 16);
 
-inline const std::map<std::string, std::pair<const char*, const char*>> kDefines = {
+inline const PermutationTable kDefines = {
     {"COMBINE_EXACT", {"COMBINE_EXACT", nullptr}},
     {"INTERP", {"INTERP", nullptr}},
 };

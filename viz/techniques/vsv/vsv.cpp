@@ -285,11 +285,7 @@ Plan VsvTechnique::planFor(const scene::Scene& scene, const Settings& settings, 
     std::vector<std::string> pruned = {"SPOT", "COOKIE", "SHADOW_MAPS_CUBE", "SHADOW_MAPS_2D", "AREA_LIGHTS_BY_IVSV"};
     if (settings.at("epipole") != 0.0) pruned.push_back("EPIPOLE");
     forcePlan(p, settings.at("force_features") != 0.0, pruned);
-    for (FeaturePlan& f : p.features) {
-        const auto it = kDefines.find(f.feature);
-        const char* define = it == kDefines.end() ? nullptr : (f.enabled ? it->second.first : it->second.second);
-        if (define) f.why += std::string(f.enabled ? " (compiled in: " : " (compiled out: ") + define + ")";
-    }
+    annotatePermutations(p, kDefines);
     return p;
 }
 

@@ -122,16 +122,8 @@ void VsvTechnique::scan(int slot, const GridSize& size, int passLimit) {
 }
 
 const gl::Program& VsvTechnique::gatherProgram(const Plan& plan) {
-    gl::ShaderDefines defines;
     std::string key;
-    for (const FeaturePlan& f : plan.features) {
-        const auto it = kDefines.find(f.feature);
-        if (it == kDefines.end()) continue;
-        const char* define = f.enabled ? it->second.first : it->second.second;
-        if (!define) continue;
-        defines.push_back({define, "1"});
-        key += std::string(define) + ";";
-    }
+    const gl::ShaderDefines defines = permutationDefines(plan, kDefines, &key);
     if (key != mGatherKey || !mGather) {
         mGather = gl::Program::compile({.stages = {"vsv/gather.comp"}, .defines = defines, .label = "vsv.gather"});
         mGatherKey = key;

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "debug/permutations.h"
 #include "gl/program.h"
 #include "gl/stage_clock.h"
 #include "gl/texture.h"
@@ -56,7 +57,7 @@ enum StageIndex {
 constexpr int kMaxScanPasses = 10;  // 2^10 = 1024 alpha cells, the largest `voxels`
 
 // Shader permutations: feature -> {define when enabled, define when disabled}.
-inline const std::map<std::string, std::pair<const char*, const char*>> kDefines = {
+inline const PermutationTable kDefines = {
     {"COMBINE_EXACT", {"COMBINE_EXACT", nullptr}},
     {"INTERP", {"INTERP", nullptr}},
     {"EPIPOLE", {"EPIPOLE", nullptr}},
