@@ -27,7 +27,7 @@ GuiApp::GuiApp(const GuiOptions& options, viz::scene::Scene scene, viz::Window& 
     mUiScale = std::clamp(options.uiScale, kMinUiScale, kMaxUiScale);
     mScale = mContentScale * mUiScale;
     mFont = std::make_unique<viz::ui::FontAtlas>(
-        viz::ui::FontAtlas::bake(viz::ui::FontAtlas::kDefaultFontPath, kFontSize * mScale));
+        viz::ui::FontAtlas::bake(viz::ui::FontAtlas::defaultFontPath(), kFontSize * mScale));
     mTextRenderer = std::make_unique<viz::ui::TextRenderer>(*mFont);
     mUi = std::make_unique<viz::ui::Context>(*mFont);
     mDrawList = std::make_unique<DrawList>(*mFont);
@@ -281,7 +281,7 @@ void GuiApp::setUiScale(float scale) {
     mScale = mContentScale * mUiScale;
     // The glyphs are baked at the new size into the same atlas (the draw lists and widgets keep their
     // reference to it); the text renderer uploads them again.
-    *mFont = viz::ui::FontAtlas::bake(viz::ui::FontAtlas::kDefaultFontPath, kFontSize * mScale);
+    *mFont = viz::ui::FontAtlas::bake(viz::ui::FontAtlas::defaultFontPath(), kFontSize * mScale);
     mTextRenderer = std::make_unique<viz::ui::TextRenderer>(*mFont);
     mNotice = "UI scale " + format("%.2f", double(mUiScale));
 }

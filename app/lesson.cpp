@@ -4,6 +4,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -309,16 +310,23 @@ Lesson parseLesson(const std::string& path) {
     return lesson;
 }
 
+std::string lessonDirectory() {
+    if (const char* env = std::getenv("AIRLIGHT_LESSON_DIR"); env != nullptr && env[0] != '\0') {
+        return env;
+    }
+    return std::string(VIZ_SOURCE_DIR) + "/lessons";
+}
+
 std::string findLesson(const std::string& nameOrPath) {
     namespace fs = std::filesystem;
     if (nameOrPath.size() > 3 && nameOrPath.substr(nameOrPath.size() - 3) == ".md") return nameOrPath;
-    for (const fs::path& dir : {fs::path(VIZ_SOURCE_DIR) / "lessons", fs::path("lessons")}) {
+    for (const fs::path& dir : {fs::path(lessonDirectory()), fs::path("lessons")}) {
         const fs::path p = dir / (nameOrPath + ".md");
         if (fs::exists(p)) return p.string();
     }
     std::string known;
     std::error_code ec;
-    for (const auto& entry : fs::directory_iterator(fs::path(VIZ_SOURCE_DIR) / "lessons", ec))
+    for (const auto& entry : fs::directory_iterator(fs::path(lessonDirectory()), ec))
         if (entry.path().extension() == ".md" && entry.path().filename() != "README.md")
             known += (known.empty() ? "" : ", ") + entry.path().stem().string();
     throw InputError("unknown lesson '" + nameOrPath + "' (known: " + known + ")");
@@ -381,7 +389,7 @@ void exportLesson(const Lesson& lesson, const std::string& folder, glm::ivec2 si
     namespace fs = std::filesystem;
     if (folder.empty()) throw InputError("lesson --export needs a folder");
     viz::StagedFolder staged(folder);
-    const viz::ui::FontAtlas font = viz::ui::FontAtlas::bake(viz::ui::FontAtlas::kDefaultFontPath, 15.0f);
+    const viz::ui::FontAtlas font = viz::ui::FontAtlas::bake(viz::ui::FontAtlas::defaultFontPath(), 15.0f);
     std::unique_ptr<viz::HeadlessContext> figureContext;  // for the figures of CPU techniques' steps
     std::string html = "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>" +
                        viz::report::escapeHtml(lesson.title) +

@@ -69,7 +69,10 @@ struct Lesson {
 // play, a second block in one step, an unclosed block or a lesson without steps.
 Lesson parseLesson(const std::string& path);
 
-// A lesson by name: lessons/NAME.md in the source tree or the working folder, or a path to a .md file.
+// The lessons/ folder: $AIRLIGHT_LESSON_DIR when set, else the source tree's lessons/.
+std::string lessonDirectory();
+
+// A lesson by name: NAME.md in lessonDirectory() or the working folder's lessons/, or a path to a .md file.
 std::string findLesson(const std::string& nameOrPath);
 
 // Renders every step headlessly (each named view as PNG) and writes DIR/index.html with the text and the

@@ -13,6 +13,7 @@
 #include "commands.h"
 #include "compare_command.h"
 #include "lesson.h"
+#include "bench_command.h"
 #include "report_command.h"
 #include "core/error.h"
 #include "gl/gl_error.h"
@@ -36,6 +37,8 @@ commands:
   plan            show which stages and features a technique runs for a scene, and why
   export-scene    write a scene as glTF:  airlight export-scene NAME out.gltf|out.glb
   report          error against run time of every technique on each scene (CSV, JSON, plots, HTML)
+  bench           how each technique's cost per stage grows with image size, shadow-map size, VPL
+                  count and scene triangles (CSV, log-log plots with fitted exponents, HTML)
   compare         error figures of one image against another:  airlight compare TEST.exr REFERENCE.exr
   lesson          a guided walkthrough: airlight lesson NAME opens it in the window (as --lesson NAME);
                   airlight lesson NAME --export DIR [--size WxH] renders every step and writes
@@ -97,6 +100,11 @@ int main(int argc, char** argv) {
             airlight::exportLesson(lesson, folder, size);
             std::printf("wrote %s/index.html (%zu steps)\n", folder.c_str(), lesson.steps.size());
             return 0;
+        }
+        if (command == "bench") {
+            std::string line = "airlight";
+            for (const std::string& w : words) line += " " + w;
+            return airlight::runBenchCommand(args, line);
         }
         if (command == "report") {
             std::string line = "airlight";

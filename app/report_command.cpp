@@ -1,5 +1,6 @@
 #include "report_command.h"
 #include "report_temporal.h"
+#include "run_info.h"
 
 #include <unistd.h>
 
@@ -72,85 +73,16 @@ airlight report --suite stiff --out DIR [--techniques T1,T2,..]
   technique declares for the case's class. Exit code 3 when any cell fails.
 )";
 
-std::vector<std::string> splitList(const std::string& text, const std::string& flag) {
-    std::vector<std::string> items;
-    std::size_t start = 0;
-    while (start <= text.size()) {
-        const std::size_t comma = std::min(text.find(',', start), text.size());
-        const std::string item = text.substr(start, comma - start);
-        if (item.empty()) throw InputError(flag + " '" + text + "' has an empty entry");
-        items.push_back(item);
-        start = comma + 1;
-    }
-    return items;
-}
-
-double median(std::vector<double> v) {
-    if (v.empty()) return 0.0;
-    std::sort(v.begin(), v.end());
-    const std::size_t n = v.size();
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
 std::string settingsText(const std::vector<viz::ParamInfo>& params, const viz::Settings& s) {
     std::string text;
     for (const auto& [name, value] : s) text += (text.empty() ? "" : " ") + viz::settingText(params, name, value);
     return text;
 }
 
-std::string utcNow() {
-    const std::time_t now = std::time(nullptr);
-    char buffer[32];
-    std::strftime(buffer, sizeof buffer, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
-    return buffer;
-}
-
 // --quick renders the reference with 4 x 4 emitter cells per area light instead of 8 x 8: 2.3e-3 relative
 // L2 from 32 x 32 on tv-room (viz/techniques/reference/README.md), far below the errors a quick sweep
 // separates, at about 2.5 times less time. Only scenes with an area light are affected.
 constexpr double kQuickReferenceAreaSamples = 4.0;
-
-std::string machineDescription() {
-    char host[256] = {};
-    gethostname(host, sizeof host - 1);
-    std::string cpu = "unknown CPU";
-    std::ifstream info("/proc/cpuinfo");
-    for (std::string line; std::getline(info, line);)
-        if (line.rfind("model name", 0) == 0) {
-            cpu = line.substr(line.find(':') + 2);
-            break;
-        }
-    return std::string(host) + ", " + cpu + ", " + std::to_string(std::thread::hardware_concurrency()) + " threads";
-}
-
-// File-name friendly: letters, digits, '-' and '_' kept, anything else becomes '_'.
-std::string fileStem(const std::string& text) {
-    std::string out;
-    for (char c : text) out += (std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_') ? c : '_';
-    return out;
-}
-
-// One line on the terminal, redrawn in place when stderr is a terminal.
-class Progress {
-public:
-    explicit Progress(int total) : mTotal(total), mTty(isatty(STDERR_FILENO)) {}
-    void show(int done, const std::string& what) {
-        constexpr int kWidth = 24;
-        const int filled = mTotal > 0 ? done * kWidth / mTotal : kWidth;
-        std::string bar(std::size_t(filled), '#');
-        bar.resize(kWidth, '.');
-        std::fprintf(stderr, "%s[%s] %d/%d %s%s", mTty ? "\r\033[K" : "", bar.c_str(), done, mTotal, what.c_str(),
-                     mTty ? "" : "\n");
-        std::fflush(stderr);
-    }
-    void finish() {
-        if (mTty) std::fputc('\n', stderr);
-    }
-
-private:
-    int mTotal;
-    bool mTty;
-};
 
 struct Options {
     std::vector<std::string> scenes, techniques;
@@ -360,7 +292,7 @@ int runReportCommand(Args& args, const std::string& commandLine) {
     auto context = viz::HeadlessContext::create(false);
     const viz::report::ReportMeta meta = describeRun(o, commandLine);
 
-    const viz::ui::FontAtlas font = viz::ui::FontAtlas::bake(viz::ui::FontAtlas::kDefaultFontPath, 15.0f);
+    const viz::ui::FontAtlas font = viz::ui::FontAtlas::bake(viz::ui::FontAtlas::defaultFontPath(), 15.0f);
     std::vector<viz::report::ReportRow> rows;
     std::vector<viz::report::ScenePage> pages;
     std::vector<viz::report::PlanSaving> savings;
@@ -398,20 +330,8 @@ int runReportCommand(Args& args, const std::string& commandLine) {
                 technique = viz::makeTechnique(point.technique);
             }
             viz::FrameInput in{&scene, o.width, o.height, viz::completeSettings(*technique, point.setting.settings), -1};
-            viz::FrameOutput output = technique->run(in);  // warm-up: shader compiles, uploads, caches
-            std::vector<double> totals, walls;
-            std::map<std::string, std::vector<double>> stageTimes;
-            std::vector<std::string> stageOrder;
-            for (int r = 0; r < o.runs; ++r) {
-                const auto start = std::chrono::steady_clock::now();
-                output = technique->run(in);
-                walls.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
-                totals.push_back(output.timing.totalMilliseconds());
-                for (const viz::StageTiming& s : output.timing.stages) {
-                    if (!stageTimes.count(s.stage)) stageOrder.push_back(s.stage);
-                    stageTimes[s.stage].push_back(s.milliseconds);
-                }
-            }
+            const TimedRuns timed = timeRuns(*technique, in, o.runs);
+            const viz::FrameOutput& output = timed.last;
             viz::report::ReportRow row;
             row.scene = sceneName;
             row.technique = point.series;
@@ -419,9 +339,9 @@ int runReportCommand(Args& args, const std::string& commandLine) {
             row.settings = settingsText(technique->params(), point.setting.settings);
             row.width = o.width, row.height = o.height, row.runs = o.runs;
             row.clock = output.timing.clock;
-            for (const std::string& s : stageOrder) row.stages.push_back({s, median(stageTimes[s])});
-            row.totalMilliseconds = median(totals);
-            row.wallMilliseconds = median(walls);
+            for (const TimedRuns::Stage& s : timed.stages) row.stages.push_back({s.id, s.milliseconds});
+            row.totalMilliseconds = timed.totalMilliseconds;
+            row.wallMilliseconds = timed.wallMilliseconds;
             if (output.airlight.empty()) throw std::runtime_error(point.technique + " produced no L_air image");
             row.error = viz::report::compareImages(output.airlight, reference);
             // The page shows each technique's most accurate image (a finite error beats an undefined one).

@@ -14,25 +14,10 @@
 #include "techniques/registry.h"
 #include "ui/offscreen.h"
 #include "ui/text_renderer.h"
+#include "run_info.h"
 
 namespace airlight {
 
-namespace {
-
-double median(std::vector<double> v) {
-    if (v.empty()) return 0.0;
-    std::sort(v.begin(), v.end());
-    const std::size_t n = v.size();
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
-std::string fileStem(const std::string& text) {
-    std::string out;
-    for (char c : text) out += (std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_') ? c : '_';
-    return out;
-}
-
-}  // namespace
 
 std::string defaultMotionPath(const std::string& sceneName, const viz::scene::Scene& scene) {
     const bool lightMoves = !scene.lights.empty() && scene.lights.front().type != viz::scene::LightType::Area;

@@ -14,6 +14,8 @@ pkg_check_modules(STB REQUIRED IMPORTED_TARGET stb)
 # OpenImageIO through pkg-config: Debian's CMake package config names /usr/include/opencv4 as an include
 # directory, which exists only when libopencv-dev happens to be installed.
 pkg_check_modules(OIIO REQUIRED IMPORTED_TARGET OpenImageIO)
+# OpenEXR alone: the portable image codec of the bundle (viz/core/image_codec.h).
+find_package(OpenEXR 3 REQUIRED)
 find_package(Boost 1.74 REQUIRED)
 if(VIZ_BUILD_TESTS)
     find_package(GTest REQUIRED)

@@ -8,7 +8,7 @@ preset="${1:-release}"
 packages=(
     build-essential cmake ninja-build pkg-config
     libglfw3-dev libglm-dev libepoxy-dev libegl-dev libgl1-mesa-dri libegl-mesa0
-    libtinygltf-dev libstb-dev nlohmann-json3-dev libopenimageio-dev
+    libtinygltf-dev libstb-dev nlohmann-json3-dev libopenimageio-dev libopenexr-dev
     libembree-dev libeigen3-dev fonts-dejavu-core
     libgtest-dev libboost-math-dev
     xvfb xauth python3-mpmath chromium

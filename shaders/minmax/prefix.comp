@@ -23,13 +23,16 @@ uniform int uRows;
 uniform int uTexels;
 uniform int uRank;
 uniform bool uSharedRow;
-uniform float uGammaBasis[8 * 64];  // Gamma_i at 64 gamma samples (inclusive ends), rank-major
+// Gamma_i at 64 gamma samples (inclusive ends), rank-major, four to a vec4: a float array of 512 takes 512
+// vec4 slots of NVIDIA's default uniform block and fails to link there.
+uniform vec4 uGammaBasis[8 * 16];
+float gammaBasisAt(int j) { return uGammaBasis[j >> 2][j & 3]; }
 
 float gammaBasis(int i, float gamma) {
     float x = clamp((gamma - uGammaLo) / (uGammaHi - uGammaLo), 0.0, 1.0) * 63.0;
     int k = min(int(floor(x)), 62);
     float f = x - float(k);
-    return mix(uGammaBasis[i * 64 + k], uGammaBasis[i * 64 + k + 1], f);
+    return mix(gammaBasisAt(i * 64 + k), gammaBasisAt(i * 64 + k + 1), f);
 }
 
 void main() {

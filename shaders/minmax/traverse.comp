@@ -162,7 +162,9 @@ uniform int uPrefixTexels;
 uniform int uPrefixRows;
 uniform float uBetaLo;
 uniform float uBetaHi;
-uniform float uBetaBasis[8 * 64];  // B_i at 64 beta samples (inclusive ends), rank-major
+// B_i at 64 beta samples (inclusive ends), rank-major, four to a vec4 (see prefix.comp).
+uniform vec4 uBetaBasis[8 * 16];
+float betaBasisAt(int j) { return uBetaBasis[j >> 2][j & 3]; }
 vec4 gAccumulated[6];
 int gPrefixRow = 0;
 
@@ -180,7 +182,7 @@ void accumulateRun(float c0, float c1) {
 float betaBasis(int i, float beta) {
     float x = clamp((beta - uBetaLo) / (uBetaHi - uBetaLo), 0.0, 1.0) * 63.0;
     int k = min(int(floor(x)), 62);
-    return mix(uBetaBasis[i * 64 + k], uBetaBasis[i * 64 + k + 1], x - float(k));
+    return mix(betaBasisAt(i * 64 + k), betaBasisAt(i * 64 + k + 1), x - float(k));
 }
 
 vec3 lowRankResult(float beta) {

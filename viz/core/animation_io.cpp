@@ -1,7 +1,5 @@
 #include "core/animation_io.h"
 
-#include <OpenImageIO/imageio.h>
-
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -10,6 +8,7 @@
 
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "core/image_codec.h"
 #include "core/image_io.h"
 #include "core/process_pipe.h"
 #include "core/staged_folder.h"
@@ -58,43 +57,24 @@ private:
 
 class GifSink : public AnimationWriter::Sink {
 public:
-    GifSink(const std::string& out, const AnimationSpec& spec) : mOut(out), mFile(out), mSpec(spec) {
-        mOutput = OIIO::ImageOutput::create(mFile.path());
-        if (!mOutput || !mOutput->supports("multiimage") || !mOutput->supports("appendsubimage"))
-            throw InputError("cannot write '" + out + "': this OpenImageIO writes no animated GIF");
-    }
-    ~GifSink() override {
-        if (mOutput) mOutput->close();
-    }
+    GifSink(const std::string& out, const AnimationSpec& spec)
+        : mOut(out), mFile(out), mWriter(codec::openGif(mFile.path(), spec.width, spec.height, spec.frames, spec.fps)) {}
     void add(const Image& frame, float exposure, int index) override {
-        OIIO::ImageSpec spec(mSpec.width, mSpec.height, 3, OIIO::TypeDesc::UINT8);
-        const int rate[2] = {mSpec.fps, 1};
-        spec.attribute("FramesPerSecond", OIIO::TypeRational, rate);
-        spec.attribute("oiio:LoopCount", 0);  // loop for ever
-        bool ok = true;
-        if (index == 0) {
-            const std::vector<OIIO::ImageSpec> specs(std::size_t(mSpec.frames), spec);
-            ok = mOutput->open(mFile.path(), mSpec.frames, specs.data());
-        } else {
-            ok = mOutput->open(mFile.path(), spec, OIIO::ImageOutput::AppendSubimage);
-        }
         const std::vector<std::uint8_t> bytes = srgb8Pixels(frame, exposure, 3);
-        ok = ok && mOutput->write_image(OIIO::TypeDesc::UINT8, bytes.data());
-        if (!ok) throw InputError("cannot write '" + mOut + "': " + mOutput->geterror());
+        if (const std::string error = mWriter->addFrame(bytes.data(), index); !error.empty())
+            throw InputError("cannot write '" + mOut + "': " + error);
     }
     void commit() override {
-        const bool ok = mOutput->close();
-        const std::string error = mOutput->geterror();
-        mOutput.reset();
-        if (!ok) throw InputError("cannot write '" + mOut + "': " + (error.empty() ? "write failed" : error));
+        const std::string error = mWriter->close();
+        mWriter.reset();
+        if (!error.empty()) throw InputError("cannot write '" + mOut + "': " + error);
         mFile.commit();
     }
 
 private:
     std::string mOut;
     TemporaryFile mFile;
-    AnimationSpec mSpec;
-    std::unique_ptr<OIIO::ImageOutput> mOutput;
+    std::unique_ptr<codec::GifWriter> mWriter;
 };
 
 class VideoSink : public AnimationWriter::Sink {
@@ -204,20 +184,7 @@ void AnimationWriter::commit() {
 }
 
 AnimationInfo readAnimationInfo(const std::string& path) {
-    auto in = OIIO::ImageInput::open(path);
-    if (!in) throw InputError("cannot read '" + path + "': " + OIIO::geterror());
-    AnimationInfo info;
-    info.width = in->spec().width;
-    info.height = in->spec().height;
-    const OIIO::ParamValue* rate = in->spec().find_attribute("FramesPerSecond", OIIO::TypeRational);
-    if (rate) {
-        const int* r = static_cast<const int*>(rate->data());
-        if (r[1] != 0) info.fps = double(r[0]) / double(r[1]);
-    }
-    int frames = 1;
-    while (in->seek_subimage(frames, 0)) ++frames;
-    info.frames = frames;
-    return info;
+    return codec::readAnimationFileInfo(path);
 }
 
 }  // namespace viz

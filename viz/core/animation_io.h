@@ -53,7 +53,7 @@ private:
     std::unique_ptr<Sink> mSink;
 };
 
-// What OpenImageIO reads back from an animation file: the first frame's size, how many frames
+// What is read back from an animation file (OpenImageIO builds; the portable one reads none): the first frame's size, how many frames
 // (subimages) and the frame rate (0 when the file states none). Throws InputError when it cannot read it.
 struct AnimationInfo {
     int width = 0;

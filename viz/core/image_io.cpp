@@ -1,7 +1,5 @@
 #include "core/image_io.h"
 
-#include <OpenImageIO/imageio.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -11,6 +9,7 @@
 
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "core/image_codec.h"
 
 namespace viz {
 
@@ -51,29 +50,22 @@ void writeImage(const Image& image, const std::string& path, float exposure) {
         throw InputError("cannot write '" + path + "': folder '" + target.parent_path().string() + "' does not exist");
 
     const std::string tmp = temporaryPathFor(target).string();
-    auto out = OIIO::ImageOutput::create(tmp);
-    if (!out) throw InputError("cannot write '" + path + "': " + OIIO::geterror());
-    bool ok = false;
+    std::string err;
     if (ext == ".exr") {
-        OIIO::ImageSpec spec(image.width, image.height, image.channels, OIIO::TypeDesc::FLOAT);
-        spec.attribute("compression", "zip");
-        ok = out->open(tmp, spec) && out->write_image(OIIO::TypeDesc::FLOAT, image.pixels.data());
+        err = codec::writeExr(tmp, image);
     } else {
         // PNG is for looking at: the first channel alone (grey) or RGB. A fourth channel is data in our
         // images (a mask channel, a count), not opacity: written as alpha it made pixels transparent.
         const int channels = image.channels < 3 ? 1 : 3;
         const std::vector<std::uint8_t> bytes = srgb8Pixels(image, exposure, channels);
-        OIIO::ImageSpec spec(image.width, image.height, channels, OIIO::TypeDesc::UINT8);
-        ok = out->open(tmp, spec) && out->write_image(OIIO::TypeDesc::UINT8, bytes.data());
+        err = codec::writePng(tmp, image.width, image.height, channels, bytes.data());
     }
-    const std::string err = out->geterror();
-    ok = out->close() && ok;
-    out.reset();
+    const bool ok = err.empty();
     std::error_code ec;
     if (ok) std::filesystem::rename(tmp, target, ec);
     if (!ok || ec) {
         std::filesystem::remove(tmp, ec);
-        throw InputError("cannot write '" + path + "': " + (err.empty() ? std::string("write failed") : err));
+        throw InputError("cannot write '" + path + "': " + (err.empty() ? ec.message() : err));
     }
 }
 
@@ -99,14 +91,6 @@ Image toDisplay(const Image& image, float lo, float hi) {
     return out;
 }
 
-Image readImage(const std::string& path) {
-    auto in = OIIO::ImageInput::open(path);
-    if (!in) throw InputError("cannot read image '" + path + "': " + OIIO::geterror());
-    const OIIO::ImageSpec& spec = in->spec();
-    Image image(spec.width, spec.height, spec.nchannels);
-    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, image.pixels.data()))
-        throw InputError("cannot read image '" + path + "': " + in->geterror());
-    return image;
-}
+Image readImage(const std::string& path) { return codec::readImageFile(path); }
 
 }  // namespace viz

@@ -1,4 +1,5 @@
-// Writing images with OpenImageIO. Every write goes to a temporary file in the target folder and is
+// Writing and reading images (through core/image_codec.h: OpenImageIO, or stb_image and OpenEXR in the
+// portable bundle). Every write goes to a temporary file in the target folder and is
 // renamed into place, so a failed write never leaves a partial file.
 #pragma once
 

@@ -10,7 +10,11 @@ namespace viz {
 
 struct StageTiming {
     std::string stage;
-    double milliseconds = 0.0;
+    double milliseconds = 0.0;  // by the record's clock (GPU time where GL timer queries are trusted)
+    // Wall time on the CPU from the stage's start until its time was known (gl::StageClock: the GPU's
+    // result waited for), so CPU work inside the stage shows where the GPU time does not; -1 where it is
+    // not measured apart (CPU stages, whose milliseconds are wall time already).
+    double wallMilliseconds = -1.0;
 };
 
 struct Timing {

@@ -18,12 +18,13 @@ StageClock::StageClock(ClockMethod method) : mMethod(method) {
 void StageClock::begin() {
     VIZ_CHECK(!mRunning, "StageClock::begin called twice without endMilliseconds");
     mRunning = true;
+    mWallStart = std::chrono::steady_clock::now();
     if (mMethod == ClockMethod::TimeElapsedQuery) {
         glBeginQuery(GL_TIME_ELAPSED, mQuery.get());
     } else {
         // Earlier work must not be billed to this stage.
         glFinish();
-        mStart = std::chrono::steady_clock::now();
+        mStart = mWallStart = std::chrono::steady_clock::now();
     }
 }
 
@@ -40,6 +41,12 @@ double StageClock::endMilliseconds() {
     glFinish();
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - mStart)
         .count();
+}
+
+StageTiming StageClock::end(const std::string& stage) {
+    const double ms = endMilliseconds();
+    const double wall = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - mWallStart).count();
+    return {stage, ms, wall};
 }
 
 std::string StageClock::method() {

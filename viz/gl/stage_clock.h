@@ -10,6 +10,7 @@
 #include <chrono>
 #include <string>
 
+#include "debug/timing.h"
 #include "gl/handle.h"
 
 namespace viz::gl {
@@ -25,6 +26,9 @@ public:
     // Ends the stage and returns its duration in milliseconds. Waits for the GPU (glFinish, or the
     // query result).
     double endMilliseconds();
+    // endMilliseconds() as a record of `stage`, with the CPU wall time from begin() until the result was
+    // known (debug/timing.h).
+    StageTiming end(const std::string& stage);
 
     ClockMethod clockMethod() const { return mMethod; }
     // "glFinish+steady_clock" or "GL_TIME_ELAPSED" for the current context.
@@ -35,7 +39,7 @@ public:
 private:
     ClockMethod mMethod;
     Handle<QueryTraits> mQuery;
-    std::chrono::steady_clock::time_point mStart;
+    std::chrono::steady_clock::time_point mStart, mWallStart;
     bool mRunning = false;
 };
 

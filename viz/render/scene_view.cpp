@@ -103,7 +103,7 @@ bool SceneViewPasses::runSharedStages(const FrameInput& input, int stop, const s
         // The scene upload is counted with the shadow maps: it is part of the technique's cost.
         clock.begin();
         buildShadows(*input.scene, input.settings, out.intermediates, prefix);
-        out.timing.stages.push_back({stages[0].id, clock.endMilliseconds()});
+        out.timing.stages.push_back(clock.end(stages[0].id));
         reuse.ran(0, out);
     }
     mFrameSize = {input.width, input.height};
@@ -115,7 +115,7 @@ bool SceneViewPasses::runSharedStages(const FrameInput& input, int stop, const s
     } else {
         clock.begin();
         renderSurface(*input.scene, input.width, input.height, out.intermediates, prefix);
-        out.timing.stages.push_back({stages[1].id, clock.endMilliseconds()});
+        out.timing.stages.push_back(clock.end(stages[1].id));
         reuse.ran(1, out);
     }
     out.lastStageRun = 1;

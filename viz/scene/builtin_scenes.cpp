@@ -150,7 +150,7 @@ Texture tvTexture() {
 
 // ---- scenes ----
 
-Scene grate() {
+Scene grate(double detail) {
     Scene s;
     s.name = "grate";
     const int floorMat = addMaterial(s, "floor", {0.6f, 0.6f, 0.6f});
@@ -162,8 +162,16 @@ Scene grate() {
     addMesh(s, floor);
 
     // Grate at y = 3 over x, z in [-2, 2]: 10 bars along z (pitch 0.4 m, 0.24 m gaps) and 2 cross bars.
+    // With detail k, 10k bars at pitch 0.4/k m, each 0.16/k m wide: the same open fraction, k times the
+    // triangles.
     MeshBuilder bars("grate", ironMat);
-    for (int i = 0; i < 10; ++i) bars.box({-1.8 + 0.4 * i, 3.0, 0.0}, {0.08, 0.05, 2.0});
+    const int barCount = int(std::lround(10.0 * detail));
+    const double pitch = 4.0 / barCount;
+    for (int i = 0; i < barCount; ++i) {
+        // detail 1 keeps the original expressions, so that the default scene is bit for bit the same.
+        const double x = detail == 1.0 ? -1.8 + 0.4 * i : -2.0 + pitch * (i + 0.5);
+        bars.box({x, 3.0, 0.0}, {detail == 1.0 ? 0.08 : 0.2 * pitch, 0.05, 2.0});
+    }
     for (double z : {-1.2, 1.2}) bars.box({0.0, 3.0, z}, {2.0, 0.05, 0.08});
     addMesh(s, bars);
 
@@ -215,7 +223,7 @@ Scene colonnade() {
     return s;
 }
 
-Scene forest() {
+Scene forest(double detail) {
     Scene s;
     s.name = "forest";
     const int groundMat = addMaterial(s, "ground", {0.35f, 0.3f, 0.2f});
@@ -225,13 +233,16 @@ Scene forest() {
     ground.quad({-30, 0, 30}, {30, 0, 30}, {30, 0, -30}, {-30, 0, -30});
     addMesh(s, ground);
 
-    // 320 trunks, 0.2-0.4 m thick and 10 m tall, kept out of a clearing around the camera.
+    // 320 trunks, 0.2-0.4 m thick and 10 m tall, kept out of a clearing around the camera. With detail k,
+    // 320k trunks 1/sqrt(k) as thick: about the same ground covered, k times the triangles.
     MeshBuilder trunks("trunks", barkMat);
     Rng rng(7);
     int placed = 0;
-    while (placed < 320) {
+    const int trunkCount = int(std::lround(320.0 * detail));
+    const double thickness = 1.0 / std::sqrt(detail);
+    while (placed < trunkCount) {
         const double x = rng.range(-26, 26), z = rng.range(-26, 26);
-        const double r = rng.range(0.1, 0.2), yaw = rng.range(0.0, kPi);
+        const double r = rng.range(0.1, 0.2) * thickness, yaw = rng.range(0.0, kPi);
         if (glm::length(glm::dvec2(x - 18.0, z - 6.0)) < 6.0) continue;
         trunks.box({x, 5.0, z}, {r, 5.0, r}, yaw);
         ++placed;
@@ -250,11 +261,12 @@ double terrainHeight(double x, double z) {
            0.5 * std::sin(0.61 * x - 0.43 * z) + 1.5 * std::exp(-0.01 * (x + 5.0) * (x + 5.0)) * 2.0;
 }
 
-Scene terrain() {
+Scene terrain(double detail) {
     Scene s;
     s.name = "terrain";
     const int groundMat = addMaterial(s, "terrain", {0.45f, 0.42f, 0.35f});
-    const int n = 64;
+    // A 64 x 64 grid of samples; with detail k, about sqrt(k) times as many along each side.
+    const int n = detail == 1.0 ? 64 : 1 + int(std::lround(63.0 * std::sqrt(detail)));
     const double extent = 30.0, step = 2.0 * extent / (n - 1);
     MeshBuilder builder("heightfield", groundMat);
     Mesh& mesh = builder.mesh();
@@ -381,14 +393,28 @@ bool isBuiltinScene(const std::string& name) {
 
 Scene makeBuiltinScene(const std::string& name) {
     if (name == "colonnade") return colonnade();
-    if (name == "grate") return grate();
-    if (name == "forest") return forest();
-    if (name == "terrain") return terrain();
+    if (name == "grate") return grate(1.0);
+    if (name == "forest") return forest(1.0);
+    if (name == "terrain") return terrain(1.0);
     if (name == "stained-glass") return stainedGlass();
     if (name == "tv-room") return tvRoom();
     std::string known;
     for (const std::string& n : builtinSceneNames()) known += (known.empty() ? "" : ", ") + n;
     throw InputError("unknown built-in scene '" + name + "' (known: " + known + ")");
+}
+
+std::vector<std::string> detailedSceneNames() { return {"grate", "forest", "terrain"}; }
+
+Scene makeDetailedScene(const std::string& name, double detail) {
+    if (!(detail >= kMinSceneDetail && detail <= kMaxSceneDetail))
+        throw InputError("scene detail " + std::to_string(detail) + " is outside [" + std::to_string(kMinSceneDetail) +
+                         ", " + std::to_string(kMaxSceneDetail) + "]");
+    if (name == "grate") return grate(detail);
+    if (name == "forest") return forest(detail);
+    if (name == "terrain") return terrain(detail);
+    makeBuiltinScene(name);  // an unknown name fails there, listing the known ones
+    throw InputError("scene '" + name + "' has no detail parameter (grate, forest and terrain have: more bars, "
+                     "trees or heightfield samples)");
 }
 
 Scene makeTestScene() {

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <iterator>
 
@@ -71,6 +72,13 @@ char32_t nextCodepoint(std::string_view s, std::size_t& pos) {
     }
     pos += static_cast<std::size_t>(extra) + 1;
     return cp;
+}
+
+std::string FontAtlas::defaultFontPath() {
+    if (const char* env = std::getenv("AIRLIGHT_FONT"); env != nullptr && env[0] != '\0') {
+        return env;
+    }
+    return kDefaultFontPath;
 }
 
 FontAtlas FontAtlas::bake(const std::string& ttfPath, float pixelHeight) {

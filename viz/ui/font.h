@@ -23,6 +23,8 @@ class FontAtlas {
 public:
     // The font the app uses (Debian package fonts-dejavu-core).
     static constexpr const char* kDefaultFontPath = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+    // $AIRLIGHT_FONT when set, else kDefaultFontPath.
+    static std::string defaultFontPath();
 
     // Bakes printable ASCII, Latin-1, Greek and a few math symbols at pixelHeight (ascender to
     // descender, in pixels). Throws InputError naming the path when the file is missing or not a font.

@@ -135,4 +135,34 @@ TEST(BuiltinScenes, TvRoomHasATexturedAreaLight) {
 }
 
 }  // namespace
+// The detail parameter of `airlight bench`'s triangles axis: detail 1 is the listed scene exactly, and
+// detail k multiplies the triangles of the part that grows (counted, not taken from the generator).
+TEST(BuiltinScenes, DetailOneIsTheListedSceneAndDetailKScalesTheTriangles) {
+    for (const std::string& name : viz::scene::detailedSceneNames()) {
+        const viz::scene::Scene listed = viz::scene::makeBuiltinScene(name);
+        const viz::scene::Scene one = viz::scene::makeDetailedScene(name, 1.0);
+        ASSERT_EQ(one.meshes.size(), listed.meshes.size()) << name;
+        for (std::size_t i = 0; i < one.meshes.size(); ++i) {
+            EXPECT_EQ(one.meshes[i].positions, listed.meshes[i].positions) << name;
+            EXPECT_EQ(one.meshes[i].indices, listed.meshes[i].indices) << name;
+        }
+        const std::size_t base = triangleCount(one);
+        for (double k : {3.0, 10.0, 100.0}) {
+            const viz::scene::Scene more = viz::scene::makeDetailedScene(name, k);
+            const double ratio = double(triangleCount(more)) / double(base);
+            // The floor, cube, cross bars and ground do not grow, so the ratio is under k (grate: 7.8 at k = 10); the heightfield's
+            // side is rounded to whole samples.
+            EXPECT_GT(ratio, 0.7 * k) << name << " detail " << k;
+            EXPECT_LT(ratio, 1.1 * k) << name << " detail " << k;
+            // The lights, medium and camera do not change with the detail.
+            EXPECT_EQ(more.lights.size(), one.lights.size());
+            EXPECT_EQ(more.camera.position, one.camera.position);
+        }
+    }
+    EXPECT_THROW(viz::scene::makeDetailedScene("colonnade", 2.0), viz::InputError);
+    EXPECT_THROW(viz::scene::makeDetailedScene("nowhere", 2.0), viz::InputError);
+    EXPECT_THROW(viz::scene::makeDetailedScene("grate", 0.0), viz::InputError);
+    EXPECT_THROW(viz::scene::makeDetailedScene("grate", 1e6), viz::InputError);
+}
+
 }  // namespace viz::scene

@@ -263,7 +263,7 @@ FrameOutput MinmaxTechnique::run(const FrameInput& input) {
                 if (svd) prefixSums(w, scene, input);
             }
         }
-        out.timing.stages.push_back({kStageRectify, clock.endMilliseconds()});
+        out.timing.stages.push_back(clock.end(kStageRectify));
         publishRectified(out, input);
         if (runs(kRectifyIndex)) publishRowGamma(out);
         if (svd && runs(kRectifyIndex)) publishLowRank(out);
@@ -286,7 +286,7 @@ FrameOutput MinmaxTechnique::run(const FrameInput& input) {
                 complete = complete && w.levelsBuilt == levelCount(w);
             }
         }
-        out.timing.stages.push_back({kStageMipmap, clock.endMilliseconds()});
+        out.timing.stages.push_back(clock.end(kStageMipmap));
         publishTree(out, input);
         mReuse.ran(kMipmapIndex, out);
     }
@@ -309,13 +309,13 @@ FrameOutput MinmaxTechnique::run(const FrameInput& input) {
                 traverse(program, scene, input, &mWork[i], mWork[i].gpuIndex, i == 0);
             for (int li : mBruteLights) traverse(program, scene, input, nullptr, li, false);
         }
-        out.timing.stages.push_back({kStageTraverse, clock.endMilliseconds()});
+        out.timing.stages.push_back(clock.end(kStageTraverse));
         mMarkTraversed = runs(kTraverseIndex) && !mWork.empty();
     } else {
         clock.begin();
     }
     publishTraverse(out, input);
-    if (mReuse.substepOnly(kTraverseIndex)) out.timing.stages.push_back({kStageTraverse, clock.endMilliseconds()});
+    if (mReuse.substepOnly(kTraverseIndex)) out.timing.stages.push_back(clock.end(kStageTraverse));
     out.airlight = render::readRgb(mAirlight);
     mReuse.ran(kTraverseIndex, out);
     out.lastStageRun = kTraverseIndex;
@@ -323,7 +323,7 @@ FrameOutput MinmaxTechnique::run(const FrameInput& input) {
 
     clock.begin();
     out.final = mView.compose(scene, mAirlight, out.intermediates, "minmax");
-    out.timing.stages.push_back({mStages[kComposeIndex].id, clock.endMilliseconds()});
+    out.timing.stages.push_back(clock.end(mStages[kComposeIndex].id));
     out.lastStageRun = kComposeIndex;
     return out;
 }

@@ -153,7 +153,8 @@ void MinmaxTechnique::prefixSums(LightWork& w, const scene::Scene& scene, const 
     program.set("uTexels", texels);
     program.set("uRank", rank);
     program.set("uSharedRow", !perRow);
-    glProgramUniform1fv(program.id(), program.location("uGammaBasis[0]"), GLsizei(w.lowRank.basisGamma.size()),
+    VIZ_CHECK(w.lowRank.basisGamma.size() % 4 == 0, "minmax: the gamma basis is packed four floats to a vec4");
+    glProgramUniform4fv(program.id(), program.location("uGammaBasis[0]"), GLsizei(w.lowRank.basisGamma.size() / 4),
                         w.lowRank.basisGamma.data());
     mView.lights().bind();
     if (w.point()) w.rowGamma.bindBase(GL_SHADER_STORAGE_BUFFER, render::hd::kFirstFreeSsboBinding);
@@ -241,7 +242,8 @@ void MinmaxTechnique::traverse(const gl::Program& program, const scene::Scene& s
             program.set("uPrefixRows", work->prefixRows);
             program.set("uBetaLo", float(lr.betaLo));
             program.set("uBetaHi", float(lr.betaHi));
-            glProgramUniform1fv(program.id(), program.location("uBetaBasis[0]"), GLsizei(lr.basisB.size()),
+            VIZ_CHECK(lr.basisB.size() % 4 == 0, "minmax: the beta basis is packed four floats to a vec4");
+            glProgramUniform4fv(program.id(), program.location("uBetaBasis[0]"), GLsizei(lr.basisB.size() / 4),
                                 lr.basisB.data());
             work->prefix.bindUnit(render::hd::kFirstFreeTextureUnit + 2);
         }

@@ -225,7 +225,7 @@ FrameOutput PolyvolTechnique::run(const FrameInput& input) {
     if (lut) ensureLut(scene.medium.g);
     if (out.plan.stages[kVolumeIndex].runs) triangles = drawVolumes(scene, input, out.plan);
     clampAirlight();
-    out.timing.stages.push_back({kStageVolume, clock.endMilliseconds()});
+    out.timing.stages.push_back(clock.end(kStageVolume));
     publishVolume(out, s, triangles);
     if (lut) {
         out.intermediates.push_back(render::textureIntermediate(
@@ -248,7 +248,7 @@ FrameOutput PolyvolTechnique::run(const FrameInput& input) {
 
     clock.begin();
     out.final = mView.compose(scene, mAirlight, out.intermediates, "polyvol");
-    out.timing.stages.push_back({mStages[kComposeIndex].id, clock.endMilliseconds()});
+    out.timing.stages.push_back(clock.end(mStages[kComposeIndex].id));
     out.lastStageRun = kComposeIndex;
     return out;
 }

@@ -200,7 +200,7 @@ public:
             mAirlight.clear(glm::vec4(0.0f));
             mLitFraction.clear(glm::vec4(0.0f));
         }
-        out.timing.stages.push_back({kStageMarch, clock.endMilliseconds()});
+        out.timing.stages.push_back(clock.end(kStageMarch));
         out.intermediates.push_back(render::textureIntermediate(
             kAirlight, "L_air", "single-scattered light reaching the eye (the quantity every technique computes)",
             "radiance", ViewKind::Color, 0.0f, 1.0f, mAirlight));
@@ -214,7 +214,7 @@ public:
         // ---- compose ----
         clock.begin();
         out.final = mView.compose(scene, mAirlight, out.intermediates, "raymarch");
-        out.timing.stages.push_back({mStages[kComposeIndex].id, clock.endMilliseconds()});
+        out.timing.stages.push_back(clock.end(mStages[kComposeIndex].id));
         out.lastStageRun = kComposeIndex;
         return out;
     }

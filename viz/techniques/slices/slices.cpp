@@ -250,7 +250,7 @@ FrameOutput SlicesTechnique::run(const FrameInput& input) {
             mNoise.setWrap(GL_REPEAT);
         }
         mView.buildShadows(scene, s, out.intermediates, "slices");
-        out.timing.stages.push_back({mStages[kShadowMapsIndex].id, clock.endMilliseconds()});
+        out.timing.stages.push_back(clock.end(mStages[kShadowMapsIndex].id));
         out.intermediates.push_back(render::textureIntermediate(kCookies, "Cookies", "spot cookie textures (sRGB bytes), one layer per cookie", "",
                                                         ViewKind::Color, 0.0f, 1.0f, mView.lights().cookies()));
         out.intermediates.push_back(render::textureIntermediate(
@@ -267,7 +267,7 @@ FrameOutput SlicesTechnique::run(const FrameInput& input) {
     } else {
         clock.begin();
         mView.renderSurface(scene, input.width, input.height, out.intermediates, "slices");
-        out.timing.stages.push_back({mStages[kSurfaceIndex].id, clock.endMilliseconds()});
+        out.timing.stages.push_back(clock.end(mStages[kSurfaceIndex].id));
         mReuse.ran(kSurfaceIndex, out);
     }
     out.lastStageRun = kSurfaceIndex;
@@ -286,7 +286,7 @@ FrameOutput SlicesTechnique::run(const FrameInput& input) {
     mPolygons.clear();
     mRayPlanes.reset();
     if (out.plan.stages[kPlanesIndex].runs) drawPlanes(scene, input, t);
-    out.timing.stages.push_back({kStagePlanes, clock.endMilliseconds()});
+    out.timing.stages.push_back(clock.end(kStagePlanes));
     const int n = mPlanesUsed.empty() ? int(s.at("planes")) : mPlanesUsed.front();
     const int drawnLimit = int(substepLimit(input, kPlanesIndex));
     const int drawn = drawnLimit > 0 ? std::min(n, drawnLimit) : n;
@@ -378,7 +378,7 @@ FrameOutput SlicesTechnique::run(const FrameInput& input) {
     // ---- resolve ----
     clock.begin();
     resolve(t);
-    out.timing.stages.push_back({kStageResolve, clock.endMilliseconds()});
+    out.timing.stages.push_back(clock.end(kStageResolve));
     out.intermediates.push_back(render::textureIntermediate(
         kAirlight, "L_air", "single-scattered light reaching the eye, decoded from the accumulation",
         "radiance", ViewKind::Color, 0.0f, 1.0f, mAirlight));
@@ -389,7 +389,7 @@ FrameOutput SlicesTechnique::run(const FrameInput& input) {
     // ---- compose ----
     clock.begin();
     out.final = mView.compose(scene, mAirlight, out.intermediates, "slices");
-    out.timing.stages.push_back({mStages[kComposeIndex].id, clock.endMilliseconds()});
+    out.timing.stages.push_back(clock.end(mStages[kComposeIndex].id));
     out.lastStageRun = kComposeIndex;
     return out;
 }

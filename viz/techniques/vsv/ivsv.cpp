@@ -46,6 +46,7 @@ IvsvTechnique::IvsvTechnique() {
         if (p.name == "shadow_map") {
             p.help = "imperfect shadow-map tile / naive cube-face size in texels (power of two <= 512)";
             p.defaultValue = 128;
+            p.maxValue = 512;
         }
         mParams.push_back(std::move(p));
     }
@@ -179,7 +180,7 @@ FrameOutput IvsvTechnique::run(const FrameInput& input) {
     }
     layOut(std::max(count, 1), cells, tile);
     uploadVpls(scene, input.width, input.height, cells, tile);
-    out.timing.stages.push_back({kStageVpls, clock.endMilliseconds()});
+    out.timing.stages.push_back(clock.end(kStageVpls));
     if (area)
         out.intermediates.push_back(vsv::cpuIntermediate(
             kVplImage, "VPLs on the emitter", "emitter uv square (u right, v down): each VPL's L_e as a dot",
@@ -205,7 +206,7 @@ FrameOutput IvsvTechnique::run(const FrameInput& input) {
     } else if (area) {
         buildIsm(scene, *area, int(s.at("points")), count, tile, int(s.at("fill_levels")));
     }
-    out.timing.stages.push_back({kStageShadows, clock.endMilliseconds()});
+    out.timing.stages.push_back(clock.end(kStageShadows));
     if (area && !naive) {
         out.intermediates.push_back(render::textureIntermediate(
             kIsmRaw, "ISM atlas (splatted)", "one paraboloid tile per VPL: distance of the nearest point, 0 = hole",
@@ -227,7 +228,7 @@ FrameOutput IvsvTechnique::run(const FrameInput& input) {
     mView.buildShadows(scene, s, out.intermediates, "ivsv");
     mView.renderSurface(scene, input.width, input.height, out.intermediates, "ivsv");
     mSurfaceRan = true;
-    out.timing.stages.push_back({kStageSurface, clock.endMilliseconds()});
+    out.timing.stages.push_back(clock.end(kStageSurface));
     out.lastStageRun = kSurfaceIndex;
     if (stop == kSurfaceIndex) return out;
 
@@ -247,7 +248,7 @@ FrameOutput IvsvTechnique::run(const FrameInput& input) {
     // ---- rectify ----
     clock.begin();
     if (area) rectify(s, count, cells, tile, naive);
-    out.timing.stages.push_back({kStageVoxelize, clock.endMilliseconds()});
+    out.timing.stages.push_back(clock.end(kStageVoxelize));
     if (area)
         out.intermediates.push_back(vsv::cpuIntermediate(
         kVoxelSlice, "Voxels of VPL " + std::to_string(shown) + " (before scan)",
@@ -268,7 +269,7 @@ FrameOutput IvsvTechnique::run(const FrameInput& input) {
     const int passSetting = int(substepLimit(input, kScanIndex));
     const int passLimit = passSetting < 0 ? kMaxScanPasses : passSetting;
     if (area) scan(count, cells, passLimit, naive);
-    out.timing.stages.push_back({kStageScan, clock.endMilliseconds()});
+    out.timing.stages.push_back(clock.end(kStageScan));
     if (area)
         out.intermediates.push_back(vsv::cpuIntermediate(
         kScanSlice,
@@ -294,7 +295,7 @@ FrameOutput IvsvTechnique::run(const FrameInput& input) {
     }
     // Point, spot and directional lights: vsv, added to the VPLs' airlight.
     if (otherLightsOn(out.plan) && out.plan.stages[kGatherIndex].runs) addOtherLights(input);
-    out.timing.stages.push_back({kStageGather, clock.endMilliseconds()});
+    out.timing.stages.push_back(clock.end(kStageGather));
     if (area) {
         out.intermediates.push_back(vsv::cpuIntermediate(
             kColumn, "Voxel column of pixel (" + std::to_string(pickX) + ", " + std::to_string(pickY) + "), VPL " +
@@ -327,7 +328,7 @@ FrameOutput IvsvTechnique::run(const FrameInput& input) {
     // ---- compose ----
     clock.begin();
     out.final = mView.compose(scene, mAirlight, out.intermediates, "ivsv");
-    out.timing.stages.push_back({mStages[kComposeIndex].id, clock.endMilliseconds()});
+    out.timing.stages.push_back(clock.end(mStages[kComposeIndex].id));
     out.lastStageRun = kComposeIndex;
     return out;
 }

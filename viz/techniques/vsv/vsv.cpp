@@ -124,7 +124,7 @@ FrameOutput VsvTechnique::run(const FrameInput& input) {
     // ---- voxelize ----
     clock.begin();
     for (std::size_t i = 0; i < lights.size(); ++i) voxelize(scene, s, lights[i], grids[i], int(i));
-    out.timing.stages.push_back({kStageVoxelize, clock.endMilliseconds()});
+    out.timing.stages.push_back(clock.end(kStageVoxelize));
     if (!lights.empty()) {
         out.intermediates.push_back(render::textureIntermediate(
             kOccluder, "Occluder alpha",
@@ -152,7 +152,7 @@ FrameOutput VsvTechnique::run(const FrameInput& input) {
     const int passSetting = int(substepLimit(input, kScanIndex));
     const int passLimit = passSetting < 0 ? kMaxScanPasses : passSetting;
     for (std::size_t i = 0; i < lights.size(); ++i) scan(int(i), size, passLimit);
-    out.timing.stages.push_back({kStageScan, clock.endMilliseconds()});
+    out.timing.stages.push_back(clock.end(kStageScan));
     if (!lights.empty()) {
         const int passes = std::min(passLimit, scanPassCount(size.alpha));
         out.intermediates.push_back(cpuIntermediate(
@@ -176,7 +176,7 @@ FrameOutput VsvTechnique::run(const FrameInput& input) {
         }
         if (featureEnabled(out.plan, "AREA_LIGHTS_BY_IVSV")) addAreaLights(input);
     }
-    out.timing.stages.push_back({kStageGather, clock.endMilliseconds()});
+    out.timing.stages.push_back(clock.end(kStageGather));
     if (!lights.empty()) {
         out.intermediates.push_back(cpuIntermediate(
             kColumn, "Voxel column of pixel (" + std::to_string(pickX) + ", " + std::to_string(pickY) + ")",
@@ -207,7 +207,7 @@ FrameOutput VsvTechnique::run(const FrameInput& input) {
     // ---- compose ----
     clock.begin();
     out.final = mView.compose(scene, mAirlight, out.intermediates, "vsv");
-    out.timing.stages.push_back({mStages[kComposeIndex].id, clock.endMilliseconds()});
+    out.timing.stages.push_back(clock.end(mStages[kComposeIndex].id));
     out.lastStageRun = kComposeIndex;
     return out;
 }

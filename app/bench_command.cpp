@@ -1,0 +1,336 @@
+#include "bench_command.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <memory>
+
+#include "core/error.h"
+#include "core/image_io.h"
+#include "core/staged_folder.h"
+#include "debug/technique.h"
+#include "gl/gl.h"
+#include "platform/context_egl.h"
+#include "plot/plot.h"
+#include "report/bench_table.h"
+#include "run_info.h"
+#include "scene/builtin_scenes.h"
+#include "scene/scene_source.h"
+#include "techniques/registry.h"
+#include "ui/offscreen.h"
+
+namespace airlight {
+
+using viz::InputError;
+
+namespace {
+
+constexpr const char* kBenchHelp = R"(usage: airlight bench [--scenes A,B] [--techniques T1,T2] [--axes size,shadow_map,vpls,triangles]
+                      [--size WxH] [--runs N] [--quick] --out DIR
+
+Measures how each technique's cost per stage grows as one kind of work grows, everything else fixed at
+the defaults: the median of N timed runs after one warm-up run, per stage, with the clock named (GL timer
+queries on a GPU; glFinish and a steady clock on a software renderer). Writes DIR/bench.csv (scene,
+technique, axis, value, stage, ms, clock, renderer, work, runs, wall_ms: the stage's CPU wall time from its start
+until its GPU time was known), DIR/bench.html with a log-log plot per
+axis and a fitted exponent k per technique and stage (cost ~ work^k), and the plots as PNG.
+
+  --scenes      built-in scene names or glTF paths, comma-separated, for every axis (default: grate
+                for size, shadow_map and triangles; tv-room, the scene with an area light, for vpls)
+  --techniques  comma-separated (default: every technique but the CPU reference)
+  --axes        which kinds of work to grow (default: all four):
+                  size        image size 160x120, 320x240, 640x480, 1280x720, 1920x1080 (work: pixels)
+                  shadow_map  256^2 to 4096^2, techniques with a shadow_map setting (work: texels)
+                  vpls        1 to 256 virtual point lights, ivsv on scenes with an area light
+                  triangles   the scene generator's detail 1x to 100x (grate's bars, forest's trees,
+                              terrain's heightfield; work: triangles)
+  --sizes LIST  the size axis's points instead (WxH,WxH,...)
+  --size WxH    the image size of the other axes (default 640x480; 160x120 with --quick)
+  --runs N      timed runs per point (default 5; 3 with --quick)
+  --quick       fewer, smaller points: sizes 160x120, 240x180, 320x240; shadow maps 256 to 1024;
+                4 to 64 VPLs; detail 1 and 10; the other axes at 160x120; 3 runs)
+)";
+
+struct Options {
+    std::vector<std::string> scenes, techniques, axes;  // scenes empty: each axis's default scene
+    int width = 0, height = 0;
+    std::vector<glm::ivec2> sizes;  // --sizes: the size axis's points
+    int runs = 0;
+    bool quick = false;
+    std::string out;
+};
+
+Options parseBenchOptions(Args& args) {
+    Options o;
+    while (!args.empty()) {
+        const std::string flag = args.take();
+        if (flag == "--scenes") o.scenes = splitList(args.next(flag), flag);
+        else if (flag == "--techniques") o.techniques = splitList(args.next(flag), flag);
+        else if (flag == "--axes") o.axes = splitList(args.next(flag), flag);
+        else if (flag == "--size") {
+            const glm::ivec2 size = parseSize(args.next(flag));
+            o.width = size.x, o.height = size.y;
+        } else if (flag == "--sizes") {
+            for (const std::string& item : splitList(args.next(flag), flag)) o.sizes.push_back(parseSize(item));
+        } else if (flag == "--runs") {
+            const std::string text = args.next(flag);
+            const double runs = parseNumber(text, flag);
+            if (runs < 1 || runs > 1000 || runs != std::floor(runs))
+                throw InputError("--runs must be a whole number from 1 to 1000, not '" + text + "'");
+            o.runs = int(runs);
+        } else if (flag == "--quick") o.quick = true;
+        else if (flag == "--out") o.out = args.next(flag);
+        else throw InputError("unknown option '" + flag + "' for 'bench' (run 'airlight bench --help')");
+    }
+    if (o.out.empty()) throw InputError("bench needs --out DIR (the folder to write bench.csv and bench.html into)");
+    if (o.techniques.empty())
+        for (const std::string& t : viz::techniqueIds())
+            if (t != "reference") o.techniques.push_back(t);
+    if (o.axes.empty())
+        for (const auto& a : viz::report::benchAxes()) o.axes.push_back(a.id);
+    for (const std::string& a : o.axes)
+        if (!viz::report::findBenchAxis(a)) {
+            std::string known;
+            for (const auto& k : viz::report::benchAxes()) known += (known.empty() ? "" : ", ") + k.id;
+            throw InputError("--axes: unknown axis '" + a + "' (known: " + known + ")");
+        }
+    if (!o.width) {
+        o.width = o.quick ? 160 : 640;
+        o.height = o.quick ? 120 : 480;
+    }
+    if (!o.runs) o.runs = o.quick ? 3 : 5;
+    return o;
+}
+
+// One point of an axis: what the user would set, and what changes in the run.
+struct AxisPoint {
+    std::string value;
+    int width = 0, height = 0;
+    viz::Settings settings;  // on top of the technique's defaults
+    double detail = 1.0;     // the scene generator's detail (triangles axis)
+};
+
+// The axis's points within what the technique accepts (`limit`: the maximum of its setting, 0 for none).
+std::vector<AxisPoint> axisPoints(const std::string& axis, const Options& o, double limit) {
+    std::vector<AxisPoint> points;
+    if (axis == "size") {
+        std::vector<glm::ivec2> sizes = o.quick ? std::vector<glm::ivec2>{{160, 120}, {240, 180}, {320, 240}}
+                                                : std::vector<glm::ivec2>{{160, 120}, {320, 240}, {640, 480}, {1280, 720}, {1920, 1080}};
+        if (!o.sizes.empty()) sizes = o.sizes;
+        for (glm::ivec2 s : sizes) points.push_back({std::to_string(s.x) + "x" + std::to_string(s.y), s.x, s.y, {}, 1.0});
+        return points;
+    }
+    std::vector<int> values;
+    if (axis == "shadow_map") values = o.quick ? std::vector<int>{256, 512, 1024} : std::vector<int>{256, 512, 1024, 2048, 4096};
+    if (axis == "vpls") values = o.quick ? std::vector<int>{4, 16, 64} : std::vector<int>{1, 4, 16, 64, 256};
+    if (axis == "triangles") values = o.quick ? std::vector<int>{1, 10} : std::vector<int>{1, 3, 10, 30, 100};
+    for (int v : values) {
+        if (limit > 0.0 && v > limit) continue;
+        AxisPoint p{std::to_string(v), o.width, o.height, {}, 1.0};
+        if (axis == "shadow_map") p.settings["shadow_map"] = v;
+        if (axis == "vpls") p.settings["vpls"] = v;
+        if (axis == "triangles") p.detail = v;
+        points.push_back(p);
+    }
+    return points;
+}
+
+const viz::ParamInfo* findParam(const viz::Technique& t, const std::string& name) {
+    for (const viz::ParamInfo& p : t.params())
+        if (p.name == name) return &p;
+    return nullptr;
+}
+
+bool hasAreaLight(const viz::scene::Scene& s) {
+    return std::any_of(s.lights.begin(), s.lights.end(),
+                       [](const viz::scene::Light& l) { return l.type == viz::scene::LightType::Area; });
+}
+
+double triangleCount(const viz::scene::Scene& s) {
+    double n = 0;
+    for (const auto& m : s.meshes) n += double(m.indices.size() / 3);
+    return n;
+}
+
+// Whether an axis applies to a technique on a scene, and the reason when it does not.
+std::string whyNot(const std::string& axis, const viz::Technique& t, const std::string& sceneName,
+                   const viz::scene::Scene& scene) {
+    if (axis == "shadow_map" && !findParam(t, "shadow_map")) return t.id() + " has no shadow map";
+    if (axis == "vpls" && !findParam(t, "vpls")) return t.id() + " has no VPLs";
+    if (axis == "vpls" && !hasAreaLight(scene)) return sceneName + " has no area light (VPLs sample area lights)";
+    if (axis == "triangles") {
+        const auto names = viz::scene::detailedSceneNames();
+        if (std::find(names.begin(), names.end(), sceneName) == names.end())
+            return sceneName + " has no detail parameter (grate, forest and terrain have)";
+    }
+    return "";
+}
+
+std::string shortExponent(double k) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.2f", k);
+    return text;
+}
+
+struct Job {
+    std::size_t scene;
+    std::string technique, axis;
+    std::vector<AxisPoint> points;
+};
+
+}  // namespace
+
+int runBenchCommand(Args& args, const std::string& commandLine) {
+    if (!args.empty() && isHelpFlag(args.peek())) {
+        std::fputs(kBenchHelp, stdout);
+        return 0;
+    }
+    const Options o = parseBenchOptions(args);
+    // Everything named is checked, and the plan of work made, before any file or context exists.
+    std::vector<viz::scene::Scene> scenes;
+    // Without --scenes each axis runs on its own scene: grate (a spot light through bars; the triangles
+    // axis grows its bars) and, for VPLs, tv-room (the built-in scene with an area light).
+    const bool defaultScenes = o.scenes.empty();
+    const std::vector<std::string> sceneNames = defaultScenes ? std::vector<std::string>{"grate", "tv-room"} : o.scenes;
+    auto defaultSceneOf = [](const std::string& axis) { return axis == "vpls" ? "tv-room" : "grate"; };
+    for (const std::string& name : sceneNames) scenes.push_back(viz::scene::loadScene(name));
+    std::vector<Job> jobs;
+    std::vector<std::string> skipped;
+    int steps = 0;
+    for (std::size_t si = 0; si < scenes.size(); ++si)
+        for (const std::string& id : o.techniques) {
+            const auto technique = viz::makeTechnique(id);
+            for (const std::string& axis : o.axes) {
+                if (defaultScenes && sceneNames[si] != defaultSceneOf(axis)) continue;
+                if (const std::string why = whyNot(axis, *technique, sceneNames[si], scenes[si]); !why.empty()) {
+                    skipped.push_back(sceneNames[si] + " " + axis + " " + id + ": " + why);
+                    continue;
+                }
+                const viz::ParamInfo* param = findParam(*technique, axis);  // shadow_map, vpls
+                Job job{si, id, axis, axisPoints(axis, o, param ? param->maxValue : 0.0)};
+                for (const AxisPoint& p : job.points) viz::completeSettings(*technique, p.settings);
+                steps += int(job.points.size());
+                jobs.push_back(std::move(job));
+            }
+        }
+    if (jobs.empty())
+        throw InputError("nothing to measure: no axis of --axes applies to these techniques and scenes (" +
+                         (skipped.empty() ? std::string("none given") : skipped.front()) + ")");
+    viz::StagedFolder folder(o.out);
+    auto context = viz::HeadlessContext::create(false);
+    const std::string renderer = std::string(reinterpret_cast<const char*>(glGetString(GL_RENDERER))) + ", OpenGL " +
+                                 reinterpret_cast<const char*>(glGetString(GL_VERSION));
+
+    std::vector<viz::report::BenchRow> rows;
+    std::vector<std::string> clocks;
+    Progress progress(steps);
+    int done = 0;
+    std::map<std::pair<std::size_t, double>, viz::scene::Scene> detailed;  // (scene, detail) -> generated scene
+    for (const Job& job : jobs) {
+        auto technique = viz::makeTechnique(job.technique);
+        for (const AxisPoint& point : job.points) {
+            progress.show(done++, sceneNames[job.scene] + " | " + job.axis + " " + point.value + " | " + job.technique);
+            const viz::scene::Scene* scene = &scenes[job.scene];
+            if (point.detail != 1.0) {
+                auto [it, added] = detailed.try_emplace({job.scene, point.detail});
+                if (added) it->second = viz::scene::makeDetailedScene(sceneNames[job.scene], point.detail);
+                scene = &it->second;
+            }
+            const viz::FrameInput in{scene, point.width, point.height, viz::completeSettings(*technique, point.settings), -1};
+            const TimedRuns timed = timeRuns(*technique, in, o.runs);
+            double work = 0.0;
+            if (job.axis == "size") work = double(point.width) * point.height;
+            if (job.axis == "shadow_map") work = std::pow(point.settings.at("shadow_map"), 2.0);
+            if (job.axis == "vpls") work = point.settings.at("vpls");
+            if (job.axis == "triangles") work = triangleCount(*scene);
+            const std::string& clock = timed.last.timing.clock;
+            if (std::find(clocks.begin(), clocks.end(), clock) == clocks.end()) clocks.push_back(clock);
+            auto add = [&](const std::string& stage, double ms, double wallMs) {
+                rows.push_back({sceneNames[job.scene], job.technique, job.axis, point.value, work, stage, ms, clock,
+                                renderer, o.runs, wallMs});
+            };
+            for (const TimedRuns::Stage& s : timed.stages) add(s.id, s.milliseconds, s.wallMilliseconds);
+            add("total", timed.totalMilliseconds, timed.wallMilliseconds);
+            add("wall", timed.wallMilliseconds, timed.wallMilliseconds);
+        }
+    }
+    progress.show(done, "writing bench.csv, bench.html and the plots");
+    progress.finish();
+
+    const std::vector<viz::report::BenchFit> fits = viz::report::fitSeries(rows);
+    const viz::ui::FontAtlas font = viz::ui::FontAtlas::bake(viz::ui::FontAtlas::defaultFontPath(), 15.0f);
+    std::vector<viz::report::BenchPlot> plots;
+    auto plotOf = [&](const Job& job, const std::string& techniqueFilter) {
+        const viz::report::BenchAxis& axis = *viz::report::findBenchAxis(job.axis);
+        viz::plot::PlotSpec spec;
+        const std::string& sceneName = sceneNames[job.scene];
+        spec.title = sceneName + ": " + (techniqueFilter.empty() ? "total per technique" : techniqueFilter + " by stage") +
+                     " against " + job.axis;
+        spec.xLabel = axis.workUnit;
+        spec.yLabel = "ms (median)";
+        spec.logX = spec.logY = true;
+        std::vector<std::string> names;  // techniques (totals) or stages
+        for (const auto& r : rows) {
+            if (r.scene != sceneName || r.axis != job.axis) continue;
+            const bool wanted = techniqueFilter.empty() ? r.stage == "total" : r.technique == techniqueFilter;
+            const std::string& name = techniqueFilter.empty() ? r.technique : r.stage;
+            if (wanted && std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+        }
+        for (std::size_t i = 0; i < names.size(); ++i) {
+            viz::plot::Series series{names[i], viz::plot::categoricalColor(int(i)), {}, true, true};
+            for (const viz::report::BenchFit& f : fits)
+                if (f.scene == sceneName && f.axis == job.axis &&
+                    (techniqueFilter.empty() ? f.technique == names[i] && f.stage == "total"
+                                             : f.technique == techniqueFilter && f.stage == names[i]))
+                    series.name += "  k=" + (std::isfinite(f.fit.exponent) ? shortExponent(f.fit.exponent) : "?");
+            for (const auto& r : rows)
+                if (r.scene == sceneName && r.axis == job.axis &&
+                    (techniqueFilter.empty() ? r.technique == names[i] && r.stage == "total"
+                                             : r.technique == techniqueFilter && r.stage == names[i]))
+                    series.points.push_back({r.work, r.milliseconds});
+            spec.series.push_back(std::move(series));
+        }
+        const std::string file = fileStem(sceneName) + "-" + job.axis + (techniqueFilter.empty() ? "" : "-" + fileStem(techniqueFilter)) + ".png";
+        viz::ui::DrawList list(font);
+        const glm::ivec2 size = techniqueFilter.empty() ? glm::ivec2(640, 420) : glm::ivec2(480, 340);
+        viz::plot::drawPlot(list, {{0.0f, 0.0f}, glm::vec2(size)}, spec);
+        viz::writeImage(viz::ui::renderOffscreen(list, size, {1, 1, 1, 1}), folder.path(file));
+        plots.push_back({sceneName, job.axis, techniqueFilter, file});
+    };
+    for (const Job& job : jobs) {
+        const bool first = std::none_of(plots.begin(), plots.end(), [&](const viz::report::BenchPlot& p) {
+            return p.scene == sceneNames[job.scene] && p.axis == job.axis && p.technique.empty();
+        });
+        if (first) plotOf(job, "");
+        plotOf(job, job.technique);
+    }
+
+    viz::report::BenchMeta meta;
+    meta.date = utcNow();
+    meta.command = commandLine;
+    meta.machine = machineDescription();
+    meta.renderer = renderer;
+    for (const std::string& c : clocks) meta.clock += (meta.clock.empty() ? "" : ", ") + c;
+    meta.runs = o.runs;
+    meta.quick = o.quick;
+    meta.fixed = "Fixed: each technique's default settings; the axes other than size at " + std::to_string(o.width) +
+                 "x" + std::to_string(o.height) + "; the scene at detail 1 except on the triangles axis.";
+    if (!skipped.empty()) {
+        meta.fixed += " Not measured:";
+        for (const std::string& s : skipped) meta.fixed += " " + s + ";";
+    }
+    viz::report::writeBenchCsv(folder.path("bench.csv"), rows);
+    viz::report::writeBenchHtml(folder.path("bench.html"), meta, rows, fits, plots);
+    folder.commit();
+
+    for (const viz::report::BenchFit& f : fits)
+        if (f.stage == "total")
+            std::printf("%-14s %-10s %-9s total ~ work^%s (r2 %.2f, %d points)\n", f.scene.c_str(), f.axis.c_str(),
+                        f.technique.c_str(), std::isfinite(f.fit.exponent) ? shortExponent(f.fit.exponent).c_str() : "?",
+                        f.fit.r2, f.fit.points);
+    std::printf("wrote %s/bench.html (%s)\n", o.out.c_str(), meta.clock.c_str());
+    return 0;
+}
+
+}  // namespace airlight

@@ -1,0 +1,103 @@
+#include "run_info.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <ctime>
+#include <fstream>
+#include <map>
+#include <thread>
+
+#include "core/error.h"
+
+namespace airlight {
+
+std::vector<std::string> splitList(const std::string& text, const std::string& flag) {
+    std::vector<std::string> items;
+    std::size_t start = 0;
+    while (start <= text.size()) {
+        const std::size_t comma = std::min(text.find(',', start), text.size());
+        const std::string item = text.substr(start, comma - start);
+        if (item.empty()) throw viz::InputError(flag + " '" + text + "' has an empty entry");
+        items.push_back(item);
+        start = comma + 1;
+    }
+    return items;
+}
+
+double median(std::vector<double> v) {
+    if (v.empty()) return 0.0;
+    std::sort(v.begin(), v.end());
+    const std::size_t n = v.size();
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+std::string utcNow() {
+    const std::time_t now = std::time(nullptr);
+    char buffer[32];
+    std::strftime(buffer, sizeof buffer, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
+    return buffer;
+}
+
+std::string machineDescription() {
+    char host[256] = {};
+    gethostname(host, sizeof host - 1);
+    std::string cpu = "unknown CPU";
+    std::ifstream info("/proc/cpuinfo");
+    for (std::string line; std::getline(info, line);)
+        if (line.rfind("model name", 0) == 0) {
+            cpu = line.substr(line.find(':') + 2);
+            break;
+        }
+    return std::string(host) + ", " + cpu + ", " + std::to_string(std::thread::hardware_concurrency()) + " threads";
+}
+
+std::string fileStem(const std::string& text) {
+    std::string out;
+    for (char c : text) out += (std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_') ? c : '_';
+    return out;
+}
+
+TimedRuns timeRuns(viz::Technique& technique, const viz::FrameInput& input, int runs) {
+    TimedRuns timed;
+    timed.last = technique.run(input);  // warm-up
+    std::vector<double> totals, walls;
+    std::vector<std::string> order;
+    std::map<std::string, std::pair<std::vector<double>, std::vector<double>>> stages;
+    for (int r = 0; r < runs; ++r) {
+        const auto start = std::chrono::steady_clock::now();
+        timed.last = technique.run(input);
+        walls.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+        totals.push_back(timed.last.timing.totalMilliseconds());
+        for (const viz::StageTiming& s : timed.last.timing.stages) {
+            auto [it, added] = stages.try_emplace(s.stage);
+            if (added) order.push_back(s.stage);
+            it->second.first.push_back(s.milliseconds);
+            it->second.second.push_back(s.wallMilliseconds >= 0.0 ? s.wallMilliseconds : s.milliseconds);
+        }
+    }
+    for (const std::string& id : order) timed.stages.push_back({id, median(stages[id].first), median(stages[id].second)});
+    timed.totalMilliseconds = median(totals);
+    timed.wallMilliseconds = median(walls);
+    return timed;
+}
+
+Progress::Progress(int total) : mTotal(total), mTty(isatty(STDERR_FILENO)) {}
+
+void Progress::show(int done, const std::string& what) {
+    constexpr int kWidth = 24;
+    const int filled = mTotal > 0 ? std::clamp(done * kWidth / mTotal, 0, kWidth) : kWidth;
+    std::string bar(std::size_t(filled), '#');
+    bar.resize(kWidth, '.');
+    std::fprintf(stderr, "%s[%s] %d/%d %s%s", mTty ? "\r\033[K" : "", bar.c_str(), done, mTotal, what.c_str(),
+                 mTty ? "" : "\n");
+    std::fflush(stderr);
+}
+
+void Progress::finish() {
+    if (mTty) std::fputc('\n', stderr);
+}
+
+}  // namespace airlight
