@@ -427,7 +427,7 @@ TEST_F(GlRuntime, ClockMethodMatchesTheRenderer) {
               "glFinish+steady_clock");
     EXPECT_EQ(
         StageClock::methodName(StageClock::methodForRenderer("NVIDIA GeForce RTX 3060/PCIe/SSE2")),
-        "GL_TIME_ELAPSED");
+        "GL_TIMESTAMP");
     if (context()->renderer().find("llvmpipe") != std::string::npos) {
         EXPECT_EQ(StageClock::method(), "glFinish+steady_clock");
         StageClock clock;
@@ -435,6 +435,23 @@ TEST_F(GlRuntime, ClockMethodMatchesTheRenderer) {
         clock.begin();
         EXPECT_GE(clock.endMilliseconds(), 0.0);
     }
+}
+
+// A stage that runs another technique inside it times its inner stages with clocks of their own (ivsv's
+// gather runs vsv): the GPU clocks must nest without a GL error (two active GL_TIME_ELAPSED queries are
+// GL_INVALID_OPERATION) and the outer interval must cover the inner one.
+TEST_F(GlRuntime, GpuStageClocksNest) {
+    while (glGetError() != GL_NO_ERROR) {
+    }
+    StageClock outer(ClockMethod::TimestampQuery), inner(ClockMethod::TimestampQuery);
+    outer.begin();
+    inner.begin();
+    glFinish();
+    const double innerMs = inner.endMilliseconds();
+    const double outerMs = outer.endMilliseconds();
+    EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+    EXPECT_GE(innerMs, 0.0);
+    EXPECT_GE(outerMs, innerMs);
 }
 
 }  // namespace

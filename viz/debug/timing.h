@@ -18,7 +18,7 @@ struct StageTiming {
 };
 
 struct Timing {
-    std::string clock;  // "steady_clock" (CPU), "glFinish+steady_clock", "GL_TIME_ELAPSED"
+    std::string clock;  // "steady_clock" (CPU), "glFinish+steady_clock", "GL_TIMESTAMP"
     std::vector<StageTiming> stages;
     double totalMilliseconds() const {
         double t = 0.0;

@@ -8,10 +8,11 @@ namespace viz::gl {
 StageClock::StageClock() : StageClock(methodForRenderer(contextInfo().renderer)) {}
 
 StageClock::StageClock(ClockMethod method) : mMethod(method) {
-    if (mMethod == ClockMethod::TimeElapsedQuery) {
-        GLuint id = 0;
-        glCreateQueries(GL_TIME_ELAPSED, 1, &id);
-        mQuery = Handle<QueryTraits>(id);
+    if (mMethod == ClockMethod::TimestampQuery) {
+        GLuint ids[2] = {0, 0};
+        glCreateQueries(GL_TIMESTAMP, 2, ids);
+        mStartQuery = Handle<QueryTraits>(ids[0]);
+        mEndQuery = Handle<QueryTraits>(ids[1]);
     }
 }
 
@@ -19,8 +20,8 @@ void StageClock::begin() {
     VIZ_CHECK(!mRunning, "StageClock::begin called twice without endMilliseconds");
     mRunning = true;
     mWallStart = std::chrono::steady_clock::now();
-    if (mMethod == ClockMethod::TimeElapsedQuery) {
-        glBeginQuery(GL_TIME_ELAPSED, mQuery.get());
+    if (mMethod == ClockMethod::TimestampQuery) {
+        glQueryCounter(mStartQuery.get(), GL_TIMESTAMP);
     } else {
         // Earlier work must not be billed to this stage.
         glFinish();
@@ -31,12 +32,13 @@ void StageClock::begin() {
 double StageClock::endMilliseconds() {
     VIZ_CHECK(mRunning, "StageClock::endMilliseconds called without begin");
     mRunning = false;
-    if (mMethod == ClockMethod::TimeElapsedQuery) {
-        glEndQuery(GL_TIME_ELAPSED);
-        GLuint64 nanoseconds = 0;
+    if (mMethod == ClockMethod::TimestampQuery) {
+        glQueryCounter(mEndQuery.get(), GL_TIMESTAMP);
+        GLuint64 start = 0, end = 0;
         // GL_QUERY_RESULT waits until the result is available.
-        glGetQueryObjectui64v(mQuery.get(), GL_QUERY_RESULT, &nanoseconds);
-        return static_cast<double>(nanoseconds) * 1e-6;
+        glGetQueryObjectui64v(mStartQuery.get(), GL_QUERY_RESULT, &start);
+        glGetQueryObjectui64v(mEndQuery.get(), GL_QUERY_RESULT, &end);
+        return end > start ? static_cast<double>(end - start) * 1e-6 : 0.0;
     }
     glFinish();
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - mStart)
@@ -54,12 +56,12 @@ std::string StageClock::method() {
 }
 
 std::string StageClock::methodName(ClockMethod method) {
-    return method == ClockMethod::TimeElapsedQuery ? "GL_TIME_ELAPSED" : "glFinish+steady_clock";
+    return method == ClockMethod::TimestampQuery ? "GL_TIMESTAMP" : "glFinish+steady_clock";
 }
 
 ClockMethod StageClock::methodForRenderer(const std::string& renderer) {
     return isSoftwareRenderer(renderer) ? ClockMethod::FinishSteadyClock
-                                        : ClockMethod::TimeElapsedQuery;
+                                        : ClockMethod::TimestampQuery;
 }
 
 }  // namespace viz::gl

@@ -1,8 +1,12 @@
 // gl::StageClock: wall time of one GPU stage. On Mesa llvmpipe/softpipe GL timer queries do not
 // measure the rasterization work (it runs in worker threads the query does not see), so the stage
 // is bracketed by glFinish and std::chrono::steady_clock ("glFinish+steady_clock"); on other
-// drivers a GL_TIME_ELAPSED query is used ("GL_TIME_ELAPSED"). The method is chosen when the clock
+// drivers GPU timestamp queries are used ("GL_TIMESTAMP"). The method is chosen when the clock
 // is created (needs a current context) from the renderer string.
+// The GPU method reads two GL_TIMESTAMP queries (glQueryCounter) around the stage rather than a
+// GL_TIME_ELAPSED query: only one GL_TIME_ELAPSED query may be active at a time, and a stage that runs
+// another technique inside it (ivsv's gather runs vsv for the point, spot and directional lights) then
+// made GL_INVALID_OPERATION and lost its inner times on an NVIDIA driver; timestamps nest.
 #pragma once
 
 #include <epoxy/gl.h>
@@ -15,7 +19,7 @@
 
 namespace viz::gl {
 
-enum class ClockMethod { FinishSteadyClock, TimeElapsedQuery };
+enum class ClockMethod { FinishSteadyClock, TimestampQuery };
 
 class StageClock {
 public:
@@ -31,14 +35,14 @@ public:
     StageTiming end(const std::string& stage);
 
     ClockMethod clockMethod() const { return mMethod; }
-    // "glFinish+steady_clock" or "GL_TIME_ELAPSED" for the current context.
+    // "glFinish+steady_clock" or "GL_TIMESTAMP" for the current context.
     static std::string method();
     static std::string methodName(ClockMethod method);
     static ClockMethod methodForRenderer(const std::string& renderer);
 
 private:
     ClockMethod mMethod;
-    Handle<QueryTraits> mQuery;
+    Handle<QueryTraits> mStartQuery, mEndQuery;
     std::chrono::steady_clock::time_point mStart, mWallStart;
     bool mRunning = false;
 };
