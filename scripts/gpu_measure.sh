@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Measures Airlight on a machine with an NVIDIA GPU and none of Debian's packages: the bundle from
-# scripts/bundle.sh (build/bundle/airlight.tar.xz) and the GLVND loader packages in .gl/ (downloaded as
-# .deb files, see README) travel with the working tree. Writes everything into $OUT (default: gpu-out/) as
+# scripts/bundle.sh (build/bundle/airlight.tar.xz) and the GLVND loader packages in .gl/ travel with the
+# working tree. The packages are downloaded on a Debian machine, without installing them, with
+#   mkdir -p .gl && (cd .gl && apt-get download libegl1 libglvnd0 libopengl0 libgl1 libglx0 libgles2)
+# and unpacked here into / (the machine has the NVIDIA driver's own EGL vendor library). Writes everything into $OUT (default: gpu-out/) as
 # one archive, gpu.tar.gz, and prints a summary last.
 # Usage: scripts/gpu_measure.sh [SECONDS]   (a budget for the whole run, default 420)
 # Environment: SCENES (the bench's scenes, default all six), SIZES (its sizes, default 480x270,1920x1080),
