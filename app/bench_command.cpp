@@ -10,7 +10,6 @@
 #include "core/image_io.h"
 #include "core/staged_folder.h"
 #include "debug/technique.h"
-#include "gl/gl.h"
 #include "platform/context_egl.h"
 #include "plot/plot.h"
 #include "report/bench_table.h"
@@ -136,12 +135,6 @@ std::vector<AxisPoint> axisPoints(const std::string& axis, const Options& o, dou
     return points;
 }
 
-const viz::ParamInfo* findParam(const viz::Technique& t, const std::string& name) {
-    for (const viz::ParamInfo& p : t.params())
-        if (p.name == name) return &p;
-    return nullptr;
-}
-
 bool hasAreaLight(const viz::scene::Scene& s) {
     return std::any_of(s.lights.begin(), s.lights.end(),
                        [](const viz::scene::Light& l) { return l.type == viz::scene::LightType::Area; });
@@ -156,8 +149,8 @@ double triangleCount(const viz::scene::Scene& s) {
 // Whether an axis applies to a technique on a scene, and the reason when it does not.
 std::string whyNot(const std::string& axis, const viz::Technique& t, const std::string& sceneName,
                    const viz::scene::Scene& scene) {
-    if (axis == "shadow_map" && !findParam(t, "shadow_map")) return t.id() + " has no shadow map";
-    if (axis == "vpls" && !findParam(t, "vpls")) return t.id() + " has no VPLs";
+    if (axis == "shadow_map" && !viz::findParam(t, "shadow_map")) return t.id() + " has no shadow map";
+    if (axis == "vpls" && !viz::findParam(t, "vpls")) return t.id() + " has no VPLs";
     if (axis == "vpls" && !hasAreaLight(scene)) return sceneName + " has no area light (VPLs sample area lights)";
     if (axis == "triangles") {
         const auto names = viz::scene::detailedSceneNames();
@@ -207,7 +200,7 @@ int runBenchCommand(Args& args, const std::string& commandLine) {
                     skipped.push_back(sceneNames[si] + " " + axis + " " + id + ": " + why);
                     continue;
                 }
-                const viz::ParamInfo* param = findParam(*technique, axis);  // shadow_map, vpls
+                const viz::ParamInfo* param = viz::findParam(*technique, axis);  // shadow_map, vpls
                 Job job{si, id, axis, axisPoints(axis, o, param ? param->maxValue : 0.0)};
                 for (const AxisPoint& p : job.points) viz::completeSettings(*technique, p.settings);
                 steps += int(job.points.size());
@@ -219,8 +212,7 @@ int runBenchCommand(Args& args, const std::string& commandLine) {
                          (skipped.empty() ? std::string("none given") : skipped.front()) + ")");
     viz::StagedFolder folder(o.out);
     auto context = viz::HeadlessContext::create(false);
-    const std::string renderer = std::string(reinterpret_cast<const char*>(glGetString(GL_RENDERER))) + ", OpenGL " +
-                                 reinterpret_cast<const char*>(glGetString(GL_VERSION));
+    const std::string renderer = rendererDescription();
 
     std::vector<viz::report::BenchRow> rows;
     std::vector<std::string> clocks;
@@ -278,17 +270,18 @@ int runBenchCommand(Args& args, const std::string& commandLine) {
             if (wanted && std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
         }
         for (std::size_t i = 0; i < names.size(); ++i) {
+            // The series: a technique's totals, or one stage of the filtered technique.
+            const std::string& technique = techniqueFilter.empty() ? names[i] : techniqueFilter;
+            const std::string& stage = techniqueFilter.empty() ? std::string("total") : names[i];
+            auto inSeries = [&](const auto& x) {
+                return x.scene == sceneName && x.axis == job.axis && x.technique == technique && x.stage == stage;
+            };
             viz::plot::Series series{names[i], viz::plot::categoricalColor(int(i)), {}, true, true};
             for (const viz::report::BenchFit& f : fits)
-                if (f.scene == sceneName && f.axis == job.axis &&
-                    (techniqueFilter.empty() ? f.technique == names[i] && f.stage == "total"
-                                             : f.technique == techniqueFilter && f.stage == names[i]))
+                if (inSeries(f))
                     series.name += "  k=" + (std::isfinite(f.fit.exponent) ? shortExponent(f.fit.exponent) : "?");
             for (const auto& r : rows)
-                if (r.scene == sceneName && r.axis == job.axis &&
-                    (techniqueFilter.empty() ? r.technique == names[i] && r.stage == "total"
-                                             : r.technique == techniqueFilter && r.stage == names[i]))
-                    series.points.push_back({r.work, r.milliseconds});
+                if (inSeries(r)) series.points.push_back({r.work, r.milliseconds});
             spec.series.push_back(std::move(series));
         }
         const std::string file = fileStem(sceneName) + "-" + job.axis + (techniqueFilter.empty() ? "" : "-" + fileStem(techniqueFilter)) + ".png";

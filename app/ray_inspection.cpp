@@ -11,11 +11,6 @@ namespace airlight {
 
 namespace {
 
-bool hasParam(const viz::Technique& technique, const std::string& name) {
-    return std::any_of(technique.params().begin(), technique.params().end(),
-                       [&](const viz::ParamInfo& p) { return p.name == name; });
-}
-
 // Width and height of an intermediate: its CPU image, its GL 2D texture's level 0, else its extent.
 glm::ivec2 sizeOf(const viz::Intermediate& in) {
     if (in.image) return {in.image->width, in.image->height};
@@ -58,7 +53,7 @@ std::vector<PixelReading> readingsAtPixel(const viz::FrameOutput& out, glm::ivec
 }
 
 bool pickPixel(const viz::Technique& technique, viz::Settings& settings, glm::ivec2 pixel) {
-    if (!hasParam(technique, "pick_x") || !hasParam(technique, "pick_y")) return false;
+    if (!viz::findParam(technique, "pick_x") || !viz::findParam(technique, "pick_y")) return false;
     const double x = double(pixel.x), y = double(pixel.y);
     const bool changed = settings["pick_x"] != x || settings["pick_y"] != y;
     settings["pick_x"] = x;
@@ -68,7 +63,7 @@ bool pickPixel(const viz::Technique& technique, viz::Settings& settings, glm::iv
 
 std::vector<std::string> pickedRayViews(const viz::Technique& technique, const viz::FrameOutput& out) {
     std::vector<std::string> ids;
-    if (!hasParam(technique, "pick_x")) return ids;
+    if (!viz::findParam(technique, "pick_x")) return ids;
     for (const viz::Intermediate& in : out.intermediates)
         if (in.rayView) ids.push_back(in.id);
     return ids;

@@ -150,8 +150,7 @@ viz::report::ReportMeta describeRun(const Options& o, const std::string& command
     meta.date = utcNow();
     meta.command = commandLine;
     meta.machine = machineDescription();
-    meta.renderer = std::string(reinterpret_cast<const char*>(glGetString(GL_RENDERER))) + ", OpenGL " +
-                    reinterpret_cast<const char*>(glGetString(GL_VERSION));
+    meta.renderer = rendererDescription();
     meta.width = o.width, meta.height = o.height, meta.runs = o.runs, meta.quick = o.quick;
     if (o.quick) meta.referenceSettings = "area_samples=" + std::to_string(int(kQuickReferenceAreaSamples));
     meta.temporal = o.temporal;
@@ -204,12 +203,6 @@ int runStiffSuite(const Options& o, const std::string& commandLine) {
     std::printf("%d of %zu cells pass; wrote %s\n", int(outcomes.size()) - failures, outcomes.size(),
                 (dir / "stiff.html").string().c_str());
     return failures ? 3 : 0;
-}
-
-bool hasParam(const viz::Technique& t, const std::string& name) {
-    for (const viz::ParamInfo& p : t.params())
-        if (p.name == name) return true;
-    return false;
 }
 
 // The technique at its cheapest sweep setting, timed as planned and with force_features=1.
@@ -357,7 +350,7 @@ int runReportCommand(Args& args, const std::string& commandLine) {
         technique.reset();
         for (const std::string& id : o.techniques) {
             progress.show(done++, sceneName + " | " + id + " | plan savings");
-            if (hasParam(*viz::makeTechnique(id), "force_features"))
+            if (viz::findParam(*viz::makeTechnique(id), "force_features"))
                 savings.push_back(measurePlanSaving(id, scene, sceneName, o));
         }
         for (auto& [id, best] : bestImage) {

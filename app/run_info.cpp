@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "core/error.h"
+#include "gl/context_info.h"
 
 namespace airlight {
 
@@ -52,6 +53,11 @@ std::string machineDescription() {
             break;
         }
     return std::string(host) + ", " + cpu + ", " + std::to_string(std::thread::hardware_concurrency()) + " threads";
+}
+
+std::string rendererDescription() {
+    const viz::gl::ContextInfo info = viz::gl::contextInfo();
+    return info.renderer + ", OpenGL " + info.version;
 }
 
 std::string fileStem(const std::string& text) {

@@ -14,6 +14,8 @@ std::vector<std::string> splitList(const std::string& text, const std::string& f
 double median(std::vector<double> v);  // 0 for no values
 std::string utcNow();                  // "2026-11-26T16:41:38Z"
 std::string machineDescription();      // "host, CPU model, N threads"
+// "RENDERER, OpenGL VERSION" of the current GL context.
+std::string rendererDescription();
 // File-name friendly: letters, digits, '-' and '_' kept, anything else becomes '_'.
 std::string fileStem(const std::string& text);
 

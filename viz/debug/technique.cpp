@@ -53,13 +53,17 @@ std::vector<std::string> onDemandAmong(const Technique& technique, const std::ve
     return {wanted.begin(), wanted.end()};
 }
 
+const ParamInfo* findParam(const Technique& technique, const std::string& name) {
+    for (const ParamInfo& p : technique.params())
+        if (p.name == name) return &p;
+    return nullptr;
+}
+
 Settings completeSettings(const Technique& technique, const Settings& given) {
     Settings result;
     for (const ParamInfo& p : technique.params()) result[p.name] = p.defaultValue;
     for (const auto& [name, value] : given) {
-        const ParamInfo* info = nullptr;
-        for (const ParamInfo& p : technique.params())
-            if (p.name == name) info = &p;
+        const ParamInfo* info = findParam(technique, name);
         if (!info)
             throw InputError("unknown parameter '" + name + "' for technique '" + technique.id() +
                              "' (known: " + knownParams(technique) + ")");

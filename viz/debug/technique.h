@@ -154,6 +154,9 @@ bool setSubstep(const Technique& technique, int stage, Settings& settings, int k
 // clamp to the last column or row.
 glm::ivec2 pickedPixel(const FrameInput& input);
 
+// The technique's declared parameter `name`, or null.
+const ParamInfo* findParam(const Technique& technique, const std::string& name);
+
 // Fills in defaults and rejects unknown names and out-of-range values with an InputError.
 Settings completeSettings(const Technique& technique, const Settings& given);
 
