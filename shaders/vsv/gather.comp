@@ -14,8 +14,13 @@
 //       all of it falls into a bin or two) reads too few visibility samples. Such a ray skips the grid and
 //       tests the shadow map itself (the shared lookup) at the middle of uDirectSegments segments: equal
 //       steps of phi for a point or spot light (dense near the light, where the integrand peaks), equal
-//       steps of t for a directional one. The paper's rule (compare the fragment with the light) is
-//       wrong when an occluder touches the light, and there the airlight is largest.
+//       steps of t for a directional one (uEpipoleRule 1, march).
+//   The paper's rule (uEpipoleRule 2, Wyman and Dai 2013 Sec. 5): at the epipole a shadow query only asks
+//       whether anything lies between the eye and the light, so a ray in the cell toward the light is lit
+//       over all of [0, d] when its fragment lies beyond the light (for a sun: the ray reaches the sky,
+//       d = uZfar) and dark otherwise; a ray in the cell away from the light is lit when the eye is.
+//       One lookup instead of uDirectSegments, but wrong when an occluder touches the light or the
+//       fragment is an occluder beside it, and there the airlight is largest.
 // Also writes (lit fraction, interpolated visibility of the fragment's own voxel, alpha cell, theta cell
 // or -1 where a direct ray replaced the grid).
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -41,6 +46,8 @@ uniform int uEpipoleToward;  // the alpha = 0 epipole is in view and the grid st
 uniform int uEpipoleAway;    // the alpha = pi epipole is in view and the grid ends at alpha = pi
 uniform float uDirectBins;    // rays crossing fewer phi bins skip the grid (0: only epipole rays)
 uniform int uDirectSegments;  // shadow-map tests per direct ray
+uniform int uEpipoleRule;     // 1: march the shadow map (direct ray); 2: the paper's fragment-vs-light test
+uniform float uZfar;          // the sky's distance (a ray with d >= uZfar hit nothing)
 
 // Airlight of the ray over [ta, tb] for the whole bin run: the isotropic-source segment integral times
 // the light's angular factor (spot falloff, cookie) averaged by Simpson's rule over the run.
@@ -81,8 +88,22 @@ void main() {
 
     bool direct = d > 0.0 && phiD < uDirectBins * uEpiPhi.y;
 #ifdef EPIPOLE
-    if (uEpipoleToward != 0 && alpha < uEpiAlpha.x + uEpiAlpha.y) direct = true;
-    if (uEpipoleAway != 0 && alpha > uEpiAlpha.x + (float(uEpiCells.x) - 1.0) * uEpiAlpha.y) direct = true;
+    bool towardCell = uEpipoleToward != 0 && alpha < uEpiAlpha.x + uEpiAlpha.y;
+    bool awayCell = uEpipoleAway != 0 && alpha > uEpiAlpha.x + (float(uEpiCells.x) - 1.0) * uEpiAlpha.y;
+    if (uEpipoleRule == 2 && d > 0.0 && (towardCell || awayCell)) {
+        float v;
+        if (towardCell)  // beyond the light (its foot point on the ray), or the sky for a sun
+            v = (L.info.x == kLightDirectional ? d >= uZfar * (1.0 - 1.0e-6) : d > dot(L.position.xyz, w)) ? 1.0
+                                                                                                          : 0.0;
+        else  // the eye's own visibility (the eye is at the origin)
+            v = shadowVisibilityMedium(L, vec3(0.0));
+        vec3 lit = v * runAirlight(L, geo, w, 0.0, d);
+        vec4 previous = uAccumulate != 0 ? imageLoad(uAirlight, texel) : vec4(0.0);
+        imageStore(uAirlight, texel, vec4(previous.rgb + lit, 1.0));
+        imageStore(uVisibility, texel, vec4(v, shadowVisibility(L, d * w), float(ia), -1.0));
+        return;
+    }
+    if (towardCell || awayCell) direct = true;
 #endif
     if (direct) {
         vec3 lit = vec3(0.0), unlit = vec3(0.0);

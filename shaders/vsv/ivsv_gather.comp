@@ -9,14 +9,24 @@
 // Variants: the invocation's pixel is uScale * id of the full image (uScale = 2 for the quarter-resolution
 // gather); with 3x3 interleaving (uVplStride = 9) a pixel gathers one ninth of the VPLs (the subset of
 // its place in the 3x3 pattern), scaled by 9, and a bilateral filter recombines the nine.
+// EPIPOLE (the paper's rule, Wyman and Dai 2013 Sec. 5): within one alpha cell of a VPL's epipole its grid
+// is degenerate (one texel holds every ray there), so the ray's visibility is one test instead: toward the
+// VPL, lit when the fragment lies beyond the VPL's foot point on the ray, less 4 alpha cells of depth (the
+// emitter the VPL sits on is not an occluder); away from it, lit when the eye sees the VPL (its shadow map
+// at the eye). The VPL's flags (extra.y toward, extra.z away) say which epipole its grid reaches.
 layout(local_size_x = 8, local_size_y = 8) in;
 
+#include "common/host_device.glsl"
+#include "common/lights.glsl"
+#include "common/shadow_map.glsl"
+#include "vsv/ism.glsl"
 #include "common/airlight.glsl"
 #include "vsv/bits128.glsl"
 #include "common/camera_ray.glsl"
 #include "vsv/ivsv_vpls.glsl"
 
-layout(binding = 8) uniform sampler2D uDistance;
+layout(binding = kFirstFreeTextureUnit) uniform sampler2D uDistance;
+layout(binding = kFirstFreeTextureUnit + 1) uniform sampler2D uIsm;  // filled atlas (EPIPOLE, not CUBE)
 layout(rgba32ui, binding = 0) uniform readonly uimage2DArray uGrid;
 layout(rgba32f, binding = 1) uniform image2D uAirlight;   // at the invocation's resolution
 layout(r32f, binding = 2) uniform image2D uVisibility;    // mean lit fraction over the VPLs gathered
@@ -33,6 +43,24 @@ uniform int uChunkBits;
 uniform float uDiscScale;  // 1: VPLs as discs of their area near the emitter (vpl_disc), 0: points  // phi bits per quadrature node
 uniform int uAccumulate;
 uniform ivec2 uPick;      // full-resolution pixel whose per-VPL contributions go to gPick (-1: none)
+uniform int uTileSize;    // ISM tile size (EPIPOLE)
+
+// Whether the eye (the origin) sees VPL v: its shadow map toward the eye against the eye's distance.
+float eyeVisibility(IvsvVpl v) {
+    vec3 dir = -v.position.xyz;
+    float D = length(dir);
+    if (!(D > 0.0)) return 1.0;
+    dir /= D;
+#ifdef CUBE
+    float r = cubeLookup(uShadowCube, v.extra.x, dir);
+    if (r >= 1.0e29) r = 0.0;
+#else
+    ivec2 texel;
+    if (!ismTexel(dir, v.tangent.xyz, v.bitangent.xyz, v.normal.xyz, v.tile.zw, uTileSize, texel)) return 1.0;
+    float r = texelFetch(uIsm, texel, 0).r;
+#endif
+    return r <= 0.0 || r >= 0.98 * D ? 1.0 : 0.0;  // no sample there (a hole that stayed empty): lit
+}
 
 // Lit (clear) fraction of bits [first, last) of a column.
 float litBits(uvec4 c, int first, int last) {
@@ -106,6 +134,14 @@ void main() {
         float fraction = mix(litBits(c0, 0, lastBit), litBits(c1, 0, lastBit), wTheta);
 #ifndef COMBINE_EXACT
         sum = fraction * unshadowed;
+#endif
+#ifdef EPIPOLE
+        bool towardCell = v.extra.y != 0 && alpha < S.alpha.x + S.alpha.y;
+        bool awayCell = v.extra.z != 0 && alpha > S.alpha.x + (float(uCells.x) - 1.0) * S.alpha.y;
+        if (towardCell || awayCell) {
+            fraction = towardCell ? (d > dot(v.position.xyz, w) - 4.0 * D * S.alpha.y ? 1.0 : 0.0) : eyeVisibility(v);
+            sum = fraction * unshadowed;
+        }
 #endif
         vec3 contribution = float(uVplStride) * sum * v.weight.rgb;
         total += contribution;

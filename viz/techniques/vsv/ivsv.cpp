@@ -28,6 +28,9 @@ IvsvTechnique::IvsvTechnique() {
         {"phi_bias", "light-ray phi offset in cells (negative: shadow moves away from the eye)", -1, -16, 16,
          false},
         {"interp", "1: two texels along theta; 0: nearest", 1, 0, 1, true},
+        {"epipole", "rays within one alpha cell of a VPL's epipole: off reads its grid; paper compares the "
+                    "fragment with the VPL (the eye's visibility at the antipode), Wyman and Dai Sec. 5",
+         1, 0, 1, true, {"off", "paper"}},
         {"chunk_bits", "phi bits per quadrature node of the airlight (1, 2, 4, ..., 128)", 8, 1, 128, true},
         {"vpl_disc", "near the emitter each VPL acts as a disc of this many times its area (bounds the 1/r^2 "
                      "spike of rays grazing it); 0: points",
@@ -67,7 +70,7 @@ IvsvTechnique::IvsvTechnique() {
         {kStageScan, "Extrude (segmented scan)", "prefix OR along alpha restarting at every tile boundary",
          {"scan_passes"}, {kScanSlice}, kMaxScanPasses, "scan_passes"},
         {kStageGather, "Gather", "per pixel: sum over VPLs of visibility x airlight (full, interleaved, quarter)",
-         {"combine", "gather", "interp", "chunk_bits", "vpl_disc", "bilateral_sigma", "vpl_step", "pick_x", "pick_y",
+         {"combine", "gather", "interp", "epipole", "chunk_bits", "vpl_disc", "bilateral_sigma", "vpl_step", "pick_x", "pick_y",
           "force_features"},
          {kColumn, kPerVpl, kInterleave, kAirlight, kVisibility}, 1, "vpl_step"},
         render::SceneViewPasses::composeStage("ivsv"),
@@ -140,6 +143,11 @@ Plan IvsvTechnique::plan(const scene::Scene& scene, const Settings& settings) co
                           exact ? "each phi quadrature node weighted by the lit fraction of its own bits"
                                 : "combine=fraction: lit fraction x unshadowed airlight per VPL"});
     p.features.push_back({"INTERP", interp, interp ? "two texels along theta" : "nearest texel"});
+    const bool epipole = hasArea && settings.at("epipole") != 0.0;
+    p.features.push_back({"EPIPOLE", epipole,
+                          epipole ? "rays within one alpha cell of a VPL's epipole (VPLs in view, or behind the eye) "
+                                    "compare the fragment with the VPL instead of reading its grid"
+                                  : (hasArea ? "epipole=off: every ray reads the grids" : "no area light")});
     p.features.push_back({"INTERLEAVED_GATHER", gather == kGatherInterleaved,
                           gather == kGatherInterleaved ? "1/9 of the VPLs per pixel, 3x3 bilateral filter"
                                                        : "every pixel gathers its VPLs"});

@@ -77,7 +77,10 @@ void IvsvTechnique::uploadVpls(const scene::Scene& scene, int width, int height,
         o.epiTheta = glm::vec4(float(g.thetaCentre), float(g.thetaHalf), float(g.dTheta()), g.thetaFull ? 1.0f : 0.0f);
         o.epiPhi = glm::vec4(float(g.phi0), float(g.dPhi()), 0.0f, 0.0f);
         o.tile = glm::ivec4(tileOrigin(i, cells), tileOrigin(i, tile));
-        o.extra = glm::ivec4(i, 0, 0, 0);  // mode=naive: VPL i is point light i, cube i
+        // x: mode=naive's point light and cube (VPL i is light i); y, z: the grid reaches the epipole
+        // toward / away from the VPL (the gather's EPIPOLE case).
+        o.extra = glm::ivec4(i, g.epipoleToward && g.alpha0 == 0.0 ? 1 : 0,
+                             g.epipoleAway && g.alpha1 >= std::numbers::pi ? 1 : 0, 0);
         gpu.push_back(o);
     }
     if (!gpu.empty()) mVplBuffer.upload(0, gpu.size() * sizeof(GpuVpl), gpu.data());

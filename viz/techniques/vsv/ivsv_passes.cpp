@@ -90,12 +90,15 @@ void IvsvTechnique::allocateOutputs(int width, int height) {
         {.target = GL_TEXTURE_2D, .format = GL_R32F, .size = {width, height, 1}, .levels = 1, .label = kVisibility});
 }
 
-const gl::Program& IvsvTechnique::gatherProgram(bool exact, bool interp) {
-    const std::string key = std::string(exact ? "E" : "F") + (interp ? "I" : "N");
+const gl::Program& IvsvTechnique::gatherProgram(bool exact, bool interp, bool epipole, bool naive) {
+    const std::string key =
+        std::string(exact ? "E" : "F") + (interp ? "I" : "N") + (epipole ? "P" : "-") + (naive ? "C" : "-");
     if (key != mGatherKey || !mGather) {
         gl::ShaderDefines defines;
         if (exact) defines.push_back({"COMBINE_EXACT", "1"});
         if (interp) defines.push_back({"INTERP", "1"});
+        if (epipole) defines.push_back({"EPIPOLE", "1"});
+        if (naive) defines.push_back({"CUBE", "1"});
         mGather = gl::Program::compile({.stages = {"vsv/ivsv_gather.comp"}, .defines = defines, .label = "ivsv.gather"});
         mGatherKey = key;
     }
@@ -106,7 +109,8 @@ void IvsvTechnique::gather(const scene::Scene& scene, const FrameInput& input, i
             glm::ivec2 pickGl) {
     const Settings& s = input.settings;
     const scene::Camera& cam = scene.camera;
-    const gl::Program& program = gatherProgram(s.at("combine") != 0.0, s.at("interp") != 0.0);
+    const bool epipole = s.at("epipole") != 0.0;
+    const gl::Program& program = gatherProgram(s.at("combine") != 0.0, s.at("interp") != 0.0, epipole, naive);
     const int w = input.width, h = input.height;
     gl::Texture& target = mode == kGatherFull ? mAirlight : (mode == kGatherInterleaved ? mRaw : mLow);
     const glm::ivec2 outSize = mode == kGatherQuarter ? glm::ivec2((w + 1) / 2, (h + 1) / 2) : glm::ivec2(w, h);
@@ -123,6 +127,9 @@ void IvsvTechnique::gather(const scene::Scene& scene, const FrameInput& input, i
     mVplBuffer.bindBase(GL_SHADER_STORAGE_BUFFER, 4);
     mPick.bindBase(GL_SHADER_STORAGE_BUFFER, 6);
     mView.surface().distance().bindUnit(render::hd::kFirstFreeTextureUnit);
+    program.set("uTileSize", int(s.at("shadow_map")));
+    if (epipole && naive) mNaiveView.shadows().bind();
+    if (epipole && !naive) mIsm.bindUnit(render::hd::kFirstFreeTextureUnit + 1);
     mResult->bindImage(0, GL_READ_ONLY);
     target.bindImage(1, GL_READ_WRITE);
     mVisibility.bindImage(2, GL_READ_WRITE);

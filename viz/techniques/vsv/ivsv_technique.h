@@ -86,6 +86,7 @@ static_assert(sizeof(GpuVpl) == 13 * 16);
 inline const PermutationTable kDefines = {
     {"COMBINE_EXACT", {"COMBINE_EXACT", nullptr}},
     {"INTERP", {"INTERP", nullptr}},
+    {"EPIPOLE", {"EPIPOLE", nullptr}},
 };
 
 using vsv::scanPassCount;
@@ -134,9 +135,10 @@ public:
     // The stiff cases have no area light: ivsv hands every light to its inner vsv at this resolution.
     Settings stiffSettings() const override { return {{"voxels", 512.0}, {"vpls", 256.0}}; }
     // Wyman and Dai 2013: 256 VPLs with imperfect shadow maps, the lit fraction, the 3x3 interleaved
-    // gather with its bilateral filter (ours offers it or the quarter-size gather, not both at once).
+    // gather with its bilateral filter (ours offers it or the quarter-size gather, not both at once), the
+    // fragment-against-light test at each VPL's epipole.
     Settings paperSettings() const override {
-        return {{"vpls", 256.0}, {"mode", 0.0}, {"combine", 0.0}, {"gather", 1.0}};
+        return {{"vpls", 256.0}, {"mode", 0.0}, {"combine", 0.0}, {"gather", 1.0}, {"epipole", 1.0}};
     }
     std::optional<StiffBound> stiffBound(const std::string& caseClass) const override {
         return vsv::stiffBound(caseClass);
@@ -189,7 +191,7 @@ private:
 
     void allocateOutputs(int width, int height);
 
-    const gl::Program& gatherProgram(bool exact, bool interp);
+    const gl::Program& gatherProgram(bool exact, bool interp, bool epipole, bool naive);
 
     void gather(const scene::Scene& scene, const FrameInput& input, int mode, int gathered, int cells, bool naive,
                 glm::ivec2 pickGl);

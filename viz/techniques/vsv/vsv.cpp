@@ -22,8 +22,10 @@ VsvTechnique::VsvTechnique() {
         {"interp", "1: two texels along theta; 0: nearest", 1, 0, 1, true},
         {"dynamic_range", "1: the grid covers only the visible part of epipolar space; 0: all of it", 1, 0, 1,
          true},
-        {"epipole", "1: near an epipole compare the fragment with the light instead of reading the grid", 1, 0, 1,
-         true},
+        {"epipole", "rays within one alpha cell of an epipole: off reads the grid; march tests the shadow map "
+                    "along the ray (direct_segments); paper compares the fragment with the light (the eye's "
+                    "visibility at the antipode), Wyman and Dai Sec. 5",
+         1, 0, 2, true, {"off", "march", "paper"}},
         {"direct_bins", "rays crossing fewer phi bins than this test the shadow map directly (0: only rays at "
                         "an epipole)",
          4, 0, 1024, false},
@@ -258,8 +260,11 @@ Plan VsvTechnique::planFor(const scene::Scene& scene, const Settings& settings, 
                                  : "interp=0: nearest texel"});
     p.features.push_back(
         {"EPIPOLE", epipole,
-         epipole ? "an epipole is in view: rays within one alpha cell of it test the shadow map directly"
-                 : (epipoleInView ? "epipole=0: the grid is read even at the epipole"
+         epipole ? (settings.at("epipole") == 2.0
+                        ? "an epipole is in view: rays within one alpha cell of it compare the fragment with the "
+                          "light (the paper's rule)"
+                        : "an epipole is in view: rays within one alpha cell of it test the shadow map directly")
+                 : (epipoleInView ? "epipole=off: the grid is read even at the epipole"
                                   : "no epipole in view (the light and its antipode are off screen)")});
     p.features.push_back({"DYNAMIC_RANGE", settings.at("dynamic_range") != 0.0,
                           settings.at("dynamic_range") != 0.0

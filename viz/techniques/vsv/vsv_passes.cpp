@@ -146,6 +146,8 @@ void VsvTechnique::gather(const gl::Program& program, const scene::Scene& scene,
     program.set("uEpipoleAway", g.epipoleAway && g.alpha1 >= 3.141592653589793 ? 1 : 0);
     program.set("uDirectBins", float(input.settings.at("direct_bins")));
     program.set("uDirectSegments", int(input.settings.at("direct_segments")));
+    program.set("uEpipoleRule", int(input.settings.at("epipole")));
+    program.set("uZfar", float(cam.zfar));
     mView.lights().bind();
     mView.shadows().bind();
     mView.surface().distance().bindUnit(render::hd::kFirstFreeTextureUnit);

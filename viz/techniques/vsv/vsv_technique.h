@@ -129,9 +129,9 @@ public:
 
     Settings stiffSettings() const override { return {{"voxels", 512.0}, {"combine", 1.0}}; }
     // Wyman 2011: the lit fraction times the unshadowed airlight, alpha and phi biases of -2.25 and -1
-    // cells.
+    // cells, and at an epipole the fragment compared with the light (Wyman and Dai 2013 Sec. 5).
     Settings paperSettings() const override {
-        return {{"combine", 0.0}, {"alpha_bias", -2.25}, {"phi_bias", -1.0}};
+        return {{"combine", 0.0}, {"alpha_bias", -2.25}, {"phi_bias", -1.0}, {"epipole", 2.0}};
     }
 
     std::optional<StiffBound> stiffBound(const std::string& caseClass) const override {
