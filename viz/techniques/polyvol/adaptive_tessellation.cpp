@@ -28,7 +28,7 @@ constexpr GLuint kBindingCounters = 4, kBindingIn = 5, kBindingOut = 6, kBinding
 
 std::size_t AdaptiveTessellation::drawOffset() { return kDrawOffset; }
 
-void AdaptiveTessellation::build(const VolumeGrid& grid, double threshold, int stopLevel,
+void AdaptiveTessellation::build(const VolumeGrid& grid, EdgeMeasure measure, double threshold, int stopLevel,
                                  const gl::ShaderDefines& defines, const std::string& definesKey) {
     const int n = grid.mapSize;
     if (n < 16 || !std::has_single_bit(unsigned(n)))
@@ -70,6 +70,7 @@ void AdaptiveTessellation::build(const VolumeGrid& grid, double threshold, int s
     mEdgesProgram.use();
     setGridUniforms(mEdgesProgram, grid);
     mEdgesProgram.set("uRange", std::max(grid.range, 1e-20f));
+    mEdgesProgram.set("uMeasure", int(measure));
     mEdges.bindImage(0, GL_WRITE_ONLY);
     glDispatchCompute(GLuint((n + 7) / 8), GLuint((n + 7) / 8), 1);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);

@@ -1,5 +1,6 @@
 // Adaptive tessellation of a 2D light volume grid (Billeter et al. 2010, section 4.1) on the GPU:
-//   1. Laplacian edge map of the vertex distances (tess_edges.comp);
+//   1. edge map of the vertex distances: the paper's Laplacian or our sum of absolute second differences,
+//      which also refines curved receivers the Laplacian misses (saddles) (tess_edges.comp);
 //   2. mip-like hierarchy of "needs subdivision" flags with the one-level balance rule (tess_levels.comp);
 //   3. refinement from a coarse grid of 16 x 16 quads, one compute step per level with indirect dispatch,
 //      leaves emitting one of 16 T-junction-free patterns (<= 6 triangles) (tess_refine.comp);
@@ -19,16 +20,20 @@
 
 namespace viz::polyvol {
 
+// Which vertices need the finest level: the paper's Laplacian, or the absolute second differences along
+// x, y and both diagonals (zero only where the vertices lie on a plane).
+enum class EdgeMeasure { Laplacian = 0, SecondDifferences = 1 };
+
 class AdaptiveTessellation {
 public:
     // Coarse grid: quads of 2^(log2 N - kCoarseSteps) texels (16 x 16 quads).
     static constexpr int kCoarseSteps = 4;
 
-    // Builds the mesh of one light. The light buffer and shadow maps must be bound. threshold: Laplacian
-    // relative to the map's range above which a vertex needs the finest level; stopLevel: quads of this
-    // level are leaves (stepping; -1 = refine fully).
+    // Builds the mesh of one light. The light buffer and shadow maps must be bound. threshold: the edge
+    // measure relative to the map's range above which a vertex needs the finest level; stopLevel: quads
+    // of this level are leaves (stepping; -1 = refine fully).
     // defines: the light feature switches of the volume program (LIGHTS_NO_SPOT, ...), key: their id.
-    void build(const VolumeGrid& grid, double threshold, int stopLevel, const gl::ShaderDefines& defines,
+    void build(const VolumeGrid& grid, EdgeMeasure measure, double threshold, int stopLevel, const gl::ShaderDefines& defines,
                const std::string& definesKey);
 
     // The emitted keys (bind at kFirstFreeSsboBinding) and the indirect draw (GL_DRAW_INDIRECT_BUFFER at

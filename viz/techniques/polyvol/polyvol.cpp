@@ -7,13 +7,17 @@ namespace viz::polyvol_detail {
 
 PolyvolTechnique::PolyvolTechnique() {
     mParams = {
-        {"tessellation", "static: one vertex per shadow-map texel; adaptive: refined where the Laplacian is large",
+        {"tessellation", "static: one vertex per shadow-map texel; adaptive: refined where the edge measure is "
+                         "large",
          0, 0, 1, true, {"static", "adaptive"}},
+        {"edge_measure", "adaptive: laplacian (the paper: misses saddles, z = xy) or curvature (the absolute second "
+                         "differences along x, y and both diagonals: zero only on a plane)",
+         1, 0, 1, true, {"laplacian", "curvature"}},
         {"airlight", "analytic: the stable segment integral (common/airlight.glsl: Gauss-Legendre panels for "
                     "point and spot lights, closed form for suns); lut: 2D lookup table (supplement)",
          0, 0, 1, true, {"analytic", "lut"}},
-        {"threshold", "adaptive: Laplacian of the vertex distances, relative to the map's depth range, above which a "
-         "vertex needs the finest level", 1e-4, 0, 1e3, false},
+        {"threshold", "adaptive: edge measure of the vertex distances, relative to the map's depth range, above "
+         "which a vertex needs the finest level", 1e-4, 0, 1e3, false},
         {"spot_pieces", "spot and VPL lights: equal-angle pieces per penumbra (or lobe) part of a segment", 8, 1, 256,
          true},
         {"crack_check", "1: constant integrand; the signed crossing count per pixel reveals holes", 0, 0, 1, true},
@@ -39,7 +43,7 @@ PolyvolTechnique::PolyvolTechnique() {
         render::SceneViewPasses::surfaceStage("polyvol"),
         {kStageVolume, "Light volume",
          "closed mesh from the shadow map, drawn with signed additive airlight terms at each crossing",
-         {"tessellation", "airlight", "threshold", "spot_pieces", "crack_check", "draw_triangles", "origin",
+         {"tessellation", "airlight", "edge_measure", "threshold", "spot_pieces", "crack_check", "draw_triangles", "origin",
           "wireframe", "mesh_yaw", "mesh_pitch", "mesh_zoom", "stop_level", "cookie_mask", "force_features"},
          {kEdgeMap, kTessLevels, kMesh, kCrossings, kPositive, kNegative, kTotal, kCracks, kLut, kLutError},
          1, "stop_level", "", {kMesh}},

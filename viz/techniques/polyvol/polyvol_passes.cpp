@@ -214,7 +214,7 @@ std::int64_t PolyvolTechnique::drawVolumes(const scene::Scene& scene, const Fram
         if (adaptive) {
             // Compute passes in between: the draw state is set again afterwards.
             grid.keyStride = n + 1;
-            mTess.build(grid, s.at("threshold"), int(substepLimit(input, kVolumeIndex)), mDefines, mProgramKey);
+            mTess.build(grid, polyvol::EdgeMeasure(int(s.at("edge_measure"))), s.at("threshold"), int(substepLimit(input, kVolumeIndex)), mDefines, mProgramKey);
             mAdaptiveUsed = true;
             mEdgeLight = i;
             mAdaptiveLights.push_back(i);

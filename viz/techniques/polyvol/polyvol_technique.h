@@ -114,9 +114,9 @@ public:
     // (the same image, half the time), origin=surface (crossings behind d add exactly 0, so a camera
     // inside a closed occluder gets exactly 0 instead of a 4e-9 blend-order residue).
     // Billeter et al. 2010 and its supplement: the airlight lookup table, adaptive tessellation, 1024^2
-    // shadow maps (Table 1's smallest size).
+    // shadow maps (Table 1's smallest size), refined where the Laplacian is large (section 4.1).
     Settings paperSettings() const override {
-        return {{"airlight", 1.0}, {"tessellation", 1.0}, {"shadow_map", 1024.0}};
+        return {{"airlight", 1.0}, {"tessellation", 1.0}, {"shadow_map", 1024.0}, {"edge_measure", 0.0}};
     }
     Settings stiffSettings() const override {
         return {{"shadow_map", 1024.0}, {"tessellation", 1.0}, {"origin", 1.0}};
