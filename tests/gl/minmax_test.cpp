@@ -17,6 +17,7 @@
 #include "scene/stiff_scenes.h"
 #include "techniques/minmax/epipolar_setup.h"
 #include "techniques/minmax/pixel_mirror.h"
+#include "techniques/reference/ray_tracer.h"
 #include "techniques/registry.h"
 
 namespace {
@@ -98,8 +99,8 @@ TEST_F(MinmaxTest, MatchesRaymarchWithManySamples) {
 }
 
 // integrand=svd with N = 8 singular vectors: within 2 % of raymarch with a very large sample count, and
-// the textured light (stained-glass: prefix sums of Gamma_i T per slice) within 3 %; rank 1 is worse than
-// rank 8 (the low-rank approximation is what changes).
+// the textured light (stained-glass: prefix sums of Gamma_i T per slice) within 3 %; rank 1 is further
+// from raymarch than rank 8 (the low-rank approximation is what changes).
 TEST_F(MinmaxTest, LowRankIntegrandMatchesRaymarch) {
     for (const char* name : {"grate", "terrain", "stained-glass"}) {
         const viz::scene::Scene scene = viz::scene::makeBuiltinScene(name);
@@ -114,13 +115,15 @@ TEST_F(MinmaxTest, LowRankIntegrandMatchesRaymarch) {
         std::printf("minmax svd vs raymarch (4096 samples) on %s (80x60): rank 8 %.4f, rank 1 %.4f\n", name, e, e1);
         EXPECT_LT(e, std::string(name) == "stained-glass" ? 0.03 : 0.02) << name;
         EXPECT_LT(e, e1) << name;
-        // The published rank-N error of the factorisation falls from rank 1 to rank 8.
+        // The published rank-N error of the factorisation (that it falls with the rank holds by Eckart-Young
+        // whatever the code does; tests/cpu/minmax/low_rank_test.cpp checks the tables reach the optimum
+        // of an independent SVD): published and finite.
         const auto* r8 = find(out, "minmax.reconstruction_error");
         const auto* r1 = find(rank1, "minmax.reconstruction_error");
         ASSERT_TRUE(r8 && r8->image && r1 && r1->image) << name;
         std::printf("  reconstruction error of I sin(beta): rank 1 %.2e, rank 8 %.2e\n", r1->image->at(0, 0),
                     r8->image->at(0, 0));
-        EXPECT_LT(r8->image->at(0, 0), r1->image->at(0, 0)) << name;
+        EXPECT_TRUE(std::isfinite(r8->image->at(0, 0)) && std::isfinite(r1->image->at(0, 0))) << name;
     }
 }
 
@@ -143,67 +146,72 @@ TEST_F(MinmaxTest, TreeWalkEqualsLinearScan) {
     EXPECT_LT(nodes, texels);
 }
 
-// The depth shadowStored2D (shaders/common/shadow_map.glsl) reads at ndc: the nearest texel, moved along
-// each axis by that axis's slope where the texel's one-sided differences agree within a quarter.
-float storedAt(const viz::Image& map, glm::vec2 ndc, float far, float constantBias) {
-    const glm::vec2 f = (ndc * 0.5f + 0.5f) * float(map.width);
-    const glm::ivec2 c = glm::clamp(glm::ivec2(glm::floor(f)), glm::ivec2(0), glm::ivec2(map.width - 1));
-    const float s0 = texel(map, c.x, c.y);
-    if (!(s0 < far)) return s0;
-    const glm::vec2 offset = glm::clamp(f - (glm::vec2(c) + 0.5f), glm::vec2(-0.5f), glm::vec2(0.5f));
-    float corrected = s0;
-    for (int axis = 0; axis < 2; ++axis) {
-        const glm::ivec2 e = axis == 0 ? glm::ivec2(1, 0) : glm::ivec2(0, 1);
-        const glm::ivec2 lo = c - e, hi = c + e;
-        if (lo[axis] < 0 || hi[axis] >= map.width) continue;
-        const float sl = texel(map, lo.x, lo.y), sh = texel(map, hi.x, hi.y);
-        if (!(sl < far && sh < far)) continue;
-        const float dl = s0 - sl, dh = sh - s0;
-        if (std::abs(dh - dl) > 0.25f * std::max(std::abs(dl), std::abs(dh)) + constantBias) continue;
-        corrected += (offset[axis] >= 0.0f ? dh : dl) * offset[axis];
-    }
-    return corrected;
-}
-
-// S[alpha, gamma] equals the occluder's beta computed on the CPU from a direct lookup of the shadow map
-// along the same light ray (read as shadowStored2D does, biased as shadowVisibility does). This mirrors the
-// shader's rule; an independent check against ray casting is still to be written.
-TEST_F(MinmaxTest, RectifiedMapAgreesWithShadowMapLookups) {
+// S[alpha, gamma] against ray casting: Embree follows light ray (alpha, gamma) from the light (spot) or
+// from beyond the scene (sun) to its first hit; S must hold the beta (angle at the eye) of that hit, or
+// kUnblocked when nothing is hit. Independent of the shadow map and of its lookup: the map resolves a
+// light ray only to its texel, so S may be the beta of any hit of the light rays within two columns
+// (gamma +- 2 column widths) and the shadow bias along the ray; where one of those rays hits nothing (a
+// silhouette against the sky) kUnblocked is also right.
+TEST_F(MinmaxTest, RectifiedMapAgreesWithRayCasting) {
     for (const char* name : {"grate", "terrain"}) {
         const viz::scene::Scene scene = viz::scene::makeBuiltinScene(name);
+        const viz::reference::RayTracer tracer(scene);
         const int w = 80, h = 60, size = 512;
-        const viz::FrameOutput out = render(scene, "minmax", {{"shadow_map", size}}, w, h, 2,
-                                            {"minmax.rectified", "minmax.shadow_map"});
+        const viz::FrameOutput out = render(scene, "minmax", {{"shadow_map", size}}, w, h, 2, {"minmax.rectified"});
         const auto* S = find(out, "minmax.rectified");
-        const auto* map = find(out, "minmax.shadow_map");
-        ASSERT_TRUE(S && S->image && map && map->image);
+        ASSERT_TRUE(S && S->image);
         viz::render::GpuLightCpu L{};
         const auto f = viz::testing::minmaxFrame(scene, 0, w, h, size, &L);
         ASSERT_EQ(S->image->width, f.columns);
         ASSERT_EQ(S->image->height, f.slices);
-        int compared = 0, agree = 0;
+        const bool sun = f.kind == viz::minmax::LightKind::Directional;
+        const glm::dvec3 eye = scene.camera.position, axis(f.axis);
+        int compared = 0, agree = 0, blocked = 0;
         for (int row = 0; row < f.slices; row += 7) {
             for (int col = 0; col < f.columns; col += 5) {
-                const float alpha = f.sliceAlpha(row);
-                const float gamma = viz::minmax::gammaOfColumn(f, float(col) + 0.5f);
-                const glm::vec3 p = viz::minmax::lightRayPoint(f, alpha, gamma);
-                const glm::vec4 clip = L.shadowMatrix * glm::vec4(p, 1.0f);
-                const glm::vec2 ndc = glm::vec2(clip) / clip.w;
-                if (clip.w <= 0.0f || std::abs(ndc.x) > 1.0f || std::abs(ndc.y) > 1.0f) continue;
                 const float got = texel(*S->image, col, row);
-                if (got < 0.0f) continue;  // outside the spot's cone
-                const float stored = storedAt(*map->image, ndc, L.shadow.y, L.shadow.w);
-                const float threshold = f.kind == viz::minmax::LightKind::Spot
-                                            ? (stored + L.shadow.w) / (1.0f - L.shadow.z / float(size))
-                                            : stored + L.shadow.w + L.shadow.z / float(size);
-                const float expected = viz::minmax::occluderBeta(f, gamma, threshold);
+                if (got == viz::minmax::kOutsideCone) continue;
+                const double alpha = f.sliceAlpha(row);
+                const glm::dvec3 e = std::cos(alpha) * glm::dvec3(f.u) + std::sin(alpha) * glm::dvec3(f.v);
+                const glm::dvec3 n = glm::cross(axis, e);  // normal of the slice's plane
+                const double gamma = viz::minmax::gammaOfColumn(f, float(col) + 0.5f), step = 2.0 * f.columnWidth();
+                double lo = 1e9, hi = -1e9;
+                bool miss = false, centreHit = false;
+                // The light ray and its neighbours two columns away, in the slice and across it.
+                for (int k = 0; k < 5; ++k) {
+                    const double dg = k == 1 ? -step : (k == 2 ? step : 0.0), dn = k == 3 ? -step : (k == 4 ? step : 0.0);
+                    // Eye-relative origin and unit direction; the sun's axis points at the sun.
+                    glm::dvec3 dir = sun ? -axis : -std::cos(gamma + dg) * axis + std::sin(gamma + dg) * e;
+                    glm::dvec3 origin = sun ? (gamma + dg) * e + dn * n - 1e3 * dir : double(f.lightDistance) * axis;
+                    if (!sun) dir = glm::normalize(dir + dn * n);
+                    const viz::reference::Hit hit = tracer.intersect(eye + origin, dir, 4e3);
+                    if (!hit.found) {
+                        miss = true;
+                        continue;
+                    }
+                    centreHit = centreHit || k == 0;
+                    // The map's bias (GpuLight::shadow, common/host_device.glsl): lit up to (stored + w) / (1 - z / size) from a spot
+                    // or point, to depth stored + w + z / size for a sun.
+                    const double bias = sun ? double(L.shadow.w) + double(L.shadow.z) / size
+                                            : (hit.t + double(L.shadow.w)) / (1.0 - double(L.shadow.z) / size) - hit.t;
+                    for (double t : {hit.t - 0.5 * bias, hit.t + 1.5 * bias}) {
+                        const double b = viz::minmax::betaOf(f, glm::vec3(origin + t * dir));
+                        lo = std::min(lo, b);
+                        hi = std::max(hi, b);
+                    }
+                }
                 ++compared;
-                if (std::abs(got - expected) <= 1e-4f * (1.0f + std::abs(expected))) ++agree;
+                blocked += centreHit ? 1 : 0;
+                // Nothing on the light ray: kUnblocked, or for a sun the beta of its far end (pi).
+                const bool unblocked = got == viz::minmax::kUnblocked || (sun && got > 3.14f);
+                const bool ok = (miss && unblocked) || (got >= lo - 1e-4 && got <= hi + 1e-4);
+                agree += ok ? 1 : 0;
             }
         }
-        std::printf("%s: %d of %d rectified texels agree with the direct lookup\n", name, agree, compared);
+        std::printf("%s: %d of %d rectified texels agree with ray casting (%d of them blocked)\n", name, agree,
+                    compared, blocked);
         EXPECT_GT(compared, 1000) << name;
-        // Float rounding may put a light ray on the neighbouring shadow texel at a texel boundary.
+        EXPECT_GT(blocked, compared / 10) << name;
         EXPECT_GE(agree, compared * 99 / 100) << name;
     }
 }

@@ -194,6 +194,70 @@ TEST_F(SlicesTest, PointLightsUseCameraFrustumPlanesAndConverge) {
     for (std::size_t i = 1; i < errors.size(); ++i) EXPECT_LT(errors[i], errors[i - 1]) << "step " << i;
 }
 
+// The paper's artistic formula against its closed forms (Mitchell 2004, "Light Shaft Pixel Shader"): each
+// plane in front of the surface adds compositeNoise 0.015 x scale 9 / (N / 100) x atten x colour, colour
+// the light's normalised to a maximum of 1. With a sun and the shadow test off, atten = 1, so every pixel
+// is k x 13.5 / N x colour for a whole number k of planes in 0..N, and the image hardly depends on N (the
+// fraction of planes in front). With a point light, atten = ambient 0.35 + 20000 / |p - L|^2 in paper
+// units (artistic_units per scene unit): the ambient adds exactly 0.35 x the constant-intensity image,
+// and the 1/d^2 part scales as 1 / artistic_units^2.
+TEST_F(SlicesTest, ArtisticWeightingFollowsThePapersFormula) {
+    const int w = 64, h = 48;
+    {
+        const viz::scene::Scene terrain = viz::scene::makeBuiltinScene("terrain");
+        const glm::dvec3 c = terrain.lights[0].color;
+        const double top = std::max({c.r, c.g, c.b});
+        std::vector<double> means;
+        for (int n : {50, 100, 200}) {
+            const viz::FrameOutput out =
+                render(terrain, "slices", {{"weighting", 0}, {"shadow", 0}, {"planes", n}}, w, h);
+            double worst = 0.0, mean = 0.0;
+            int kMax = 0;
+            for (int y = 0; y < h; ++y)
+                for (int x = 0; x < w; ++x)
+                    for (int ch = 0; ch < 3; ++ch) {
+                        const double k = out.airlight.at(x, y, ch) * n / (13.5 * c[ch] / top);
+                        worst = std::max(worst, std::abs(k - std::round(k)));
+                        kMax = std::max(kMax, int(std::lround(k)));
+                        ASSERT_GE(k, -1e-3);
+                        ASSERT_LE(k, n + 1e-3);
+                        if (ch == 0) mean += k / n / (w * h);
+                    }
+            std::printf("slices artistic, terrain, N=%d: planes in front, furthest from a whole number %.2e, most "
+                        "%d, mean fraction %.4f\n", n, worst, kMax, mean);
+            EXPECT_LT(worst, 2e-3) << n;
+            EXPECT_GT(kMax, n / 4) << n;
+            means.push_back(mean);
+        }
+        EXPECT_NEAR(means[0], means[2], 2.0 / 50.0);
+        EXPECT_NEAR(means[1], means[2], 2.0 / 100.0);
+    }
+    viz::scene::Scene point = viz::scene::makeBuiltinScene("grate");
+    point.lights[0].type = viz::scene::LightType::Point;
+    const viz::Settings base = {{"weighting", 0}, {"shadow", 0}, {"planes", 64}};
+    auto with = [&](std::initializer_list<std::pair<const std::string, double>> extra) {
+        viz::Settings s = base;
+        for (const auto& [k, v] : extra) s[k] = v;
+        return render(point, "slices", s, w, h).airlight;
+    };
+    const viz::Image both = with({{"falloff", 1}, {"ambient", 1}});
+    const viz::Image inverseSquare = with({{"falloff", 1}, {"ambient", 0}});
+    const viz::Image constant = with({{"falloff", 0}});
+    const viz::Image coarserUnits = with({{"falloff", 1}, {"ambient", 0}, {"artistic_units", 200}});
+    double ambientWorst = 0.0, unitsWorst = 0.0, peak = 0.0;
+    for (std::size_t i = 0; i < both.pixels.size(); ++i) {
+        peak = std::max(peak, double(both.pixels[i]));
+        ambientWorst = std::max(ambientWorst, std::abs(double(both.pixels[i]) - inverseSquare.pixels[i] -
+                                                       0.35 * constant.pixels[i]));
+        unitsWorst = std::max(unitsWorst, std::abs(4.0 * coarserUnits.pixels[i] - inverseSquare.pixels[i]));
+    }
+    std::printf("slices artistic, point-light grate: |both - 1/d^2 - 0.35 constant| %.2e, |4 x (units 200) - "
+                "(units 100)| %.2e, of a peak %.3g\n", ambientWorst, unitsWorst, peak);
+    ASSERT_GT(maxValue(constant), 0.0f);
+    EXPECT_LT(ambientWorst, 1e-5 * peak);
+    EXPECT_LT(unitsWorst, 1e-5 * peak);
+}
+
 // Artistic weighting (the paper's constants), noise, cookie, PCF and blur all produce finite light.
 TEST_F(SlicesTest, ArtisticWeightingAndOptionalTermsGiveFiniteLight) {
     const viz::scene::Scene scene = viz::scene::makeBuiltinScene("stained-glass");
