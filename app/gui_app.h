@@ -227,6 +227,9 @@ private:
 
     // The default grid: the final frame on the left, `content` on the right (focused).
     void resetLayout(const std::string& content);
+    // A lesson step's views: the final frame and up to three of the step's right-hand views fill the
+    // grid (one view: the grid keeps its layout and the focused view shows it).
+    void layOutLessonViews(const std::vector<std::string>& views);
 
     // The session's grid, or the default one around its `view`.
     void applySessionGrid();
@@ -493,6 +496,7 @@ private:
     std::map<int, ViewState> mViews;  // by the layout's view number
     int mFocused = 1;                 // keys, the views list and exports act on it
     int mNextView = 2;
+    bool mLessonGrid = false;         // the grid is a lesson step's layout of several views
     std::vector<ViewCellRect> mCells;        // where the last frame put each view
     std::optional<glm::ivec2> mLinkedPixel;  // frame pixel under the cursor (a screen-space view)
     int mHoveredView = -1;

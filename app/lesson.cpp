@@ -278,6 +278,13 @@ Lesson parseLesson(const std::string& path) {
         for (const std::string& id : s.compare)
             if (std::find(ids.begin(), ids.end(), id) == ids.end() || id == "reference")
                 fail(s.line, where + "compare: '" + id + "' is not a technique to compare with the reference");
+        // The comparison grid takes the right-hand side of the window, where its tiles show the step's L_air:
+        // a view it would hide is refused here rather than left unseen.
+        if (!s.compare.empty())
+            for (const std::string& v : s.views)
+                if (v != "final" && v != "airlight")
+                    fail(s.line, where + "compare: shows L_air beside the final frame; the view '" + v +
+                                     "' would be hidden behind the comparison (use final and airlight)");
         // What the window and the export would reject later is reported here, at the step.
         const std::unique_ptr<viz::Technique> technique = viz::makeTechnique(s.technique);
         try {

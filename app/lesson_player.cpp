@@ -105,7 +105,8 @@ void LessonPlayer::applyStep(LessonHost& host) {
         w.stage = int(stages.size()) - 1;
         for (int i = 0; i < int(stages.size()); ++i)
             if (stages[std::size_t(i)].id == s->stage) w.stage = i;
-        w.view = rightViews().front();
+        w.views = rightViews();
+        w.view = w.views.front();
         w.inspect = s->inspect;
         if (mSizeOverride.x > 0 && mSizeOverride.y > 0) {
             if (w.inspect) w.inspect = *w.inspect * mSizeOverride / w.size;
@@ -343,17 +344,18 @@ void LessonPlayer::draw(const LessonHost& host, viz::ui::Context& ui, DrawList& 
         y += 8.0f * scale;
     }
     {
-        // The step's views: the right-hand pane shows the first; a click shows another.
+        // The step's views: the grid shows up to three beside the final frame; a click focuses one (or shows
+        // it in the focused view when it is not in the grid).
         const std::vector<std::string> views = rightViews();
         if (views.size() > 1) {
-            dl.text({left, y}, "this step's views (the right-hand pane):", kDim);
+            dl.text({left, y}, "this step's views (in the grid; a click focuses one):", kDim);
             y += line;
             for (std::size_t i = 0; i < views.size(); ++i) {
                 const Rect cell{{area.min.x + pad * 0.5f, y}, {area.max.x - pad * 0.5f, y + rowH}};
                 ui.beginPanel("##lesson.view." + std::to_string(i), cell);
                 const bool shown = views[i] == mShownView;
                 // The window's caption of the view: one name per view everywhere.
-                if (ui.button((shown ? "shown: " : "show ") + host.lessonViewCaption(views[i]))) mActions.push_back({Action::ShowView, views[i]});
+                if (ui.button((shown ? "focused: " : "show ") + host.lessonViewCaption(views[i]))) mActions.push_back({Action::ShowView, views[i]});
                 ui.endPanel();
                 y += rowH;
             }

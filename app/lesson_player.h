@@ -37,6 +37,9 @@ struct LessonWindowState {
     viz::Settings settings;  // complete: every parameter of the technique
     int stage = -1;          // index of the last stage run (the last index: everything runs)
     std::string view;        // the right-hand view: "airlight" or an intermediate id
+    // Every right-hand view of the step, `view` first (the player fills it; the window lays out up to
+    // three of them beside the final frame). Empty in a state read back from the window.
+    std::vector<std::string> views;
     std::optional<glm::ivec2> inspect;  // the ray inspector's pixel (image convention, row 0 at the top)
     viz::scene::Camera camera;
     glm::dvec3 orbitTarget{0.0};

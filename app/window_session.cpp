@@ -131,14 +131,42 @@ void GuiApp::applyLessonWindowState(const LessonWindowState& s) {
     if (auto c = takeSubsteps(technique(), mSettings, stageShown()); c && c->stage == stageShown())
         mCursor.substep = c->substep;
     replan();
-    showInFocusedView(s.view);
+    layOutLessonViews(s.views.empty() ? std::vector<std::string>{s.view} : s.views);
     mProbe.reset();
     mPendingInspect = s.inspect;
     mExposureSet = false;
     mComparison.close();
 }
 
-void GuiApp::showLessonView(const std::string& id) { showInFocusedView(id); }
+void GuiApp::layOutLessonViews(const std::vector<std::string>& views) {
+    if (views.size() < 2) {
+        if (mLessonGrid) resetLayout(views.empty() ? std::string() : views.front());
+        mLessonGrid = false;
+        if (!views.empty()) showInFocusedView(views.front());
+        return;
+    }
+    // Two views: three columns (the final frame first), as tall as the frame-shaped cells of the usual
+    // two; three: a 2 x 2 grid.
+    const std::string text = views.size() == 2 ? "x(0.3333,0,x(0.5,1,2))" : "y(0.5,x(0.5,0,1),x(0.5,2,3))";
+    mLayout = ViewLayout::fromText(text);
+    mViews.clear();
+    mViews[0].content = "final";
+    for (int i = 0; i < int(std::min<std::size_t>(views.size(), 3)); ++i) mViews[i + 1].content = views[std::size_t(i)];
+    mFocused = 1;
+    mNextView = int(mViews.size());
+    mLessonGrid = true;
+    for (auto& [id, v] : mViews) refreshView(v);
+}
+
+// A view of the step already in the grid takes the focus; otherwise the focused view shows it.
+void GuiApp::showLessonView(const std::string& id) {
+    for (auto& [view, state] : mViews)
+        if (state.content == id) {
+            mFocused = view;
+            return;
+        }
+    showInFocusedView(id);
+}
 
 void GuiApp::showInFocusedView(const std::string& id) {
     ViewState& v = focusedView();
@@ -195,6 +223,7 @@ void GuiApp::resetLayout(const std::string& content) {
     mViews[1].content = content.empty() ? "airlight" : content;
     mFocused = 1;
     mNextView = 2;
+    mLessonGrid = false;
 }
 
 void GuiApp::applySessionGrid() {

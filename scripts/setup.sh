@@ -11,7 +11,7 @@ packages=(
     libtinygltf-dev libstb-dev nlohmann-json3-dev libopenimageio-dev libopenexr-dev
     libembree-dev libeigen3-dev fonts-dejavu-core
     libgtest-dev libboost-math-dev
-    xvfb xauth python3-mpmath chromium
+    xvfb xauth python3-mpmath chromium tidy
     clang libclang-rt-14-dev
 )
 missing=()

@@ -93,6 +93,7 @@ TEST_F(CliTest, BenchWritesPerStageTimesFitsAndPlotsForEachAxis) {
             EXPECT_GT(viz::readImage(entry.path().string()).width, 200);
         }
     EXPECT_EQ(plots, 3 * (1 + 2));  // per axis: the totals and one per technique
+    EXPECT_EQ(htmlValidatorComplaints(out / "bench.html", mDir), "");
     const std::string loaded = imagesLoadedInBrowser(out / "bench.html", mDir);
     if (!loaded.empty()) {
         EXPECT_EQ(loaded, "images=9 missing=0");

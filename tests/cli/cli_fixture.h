@@ -117,6 +117,20 @@ inline std::string imagesLoadedInBrowser(const fs::path& page, const fs::path& s
     return text.substr(start, text.find('"', start) - start);
 }
 
+// What an HTML validator (Debian's `tidy`, errors and warnings) says about `page`: empty when the page is
+// valid, "no tidy" when tidy is not installed (a failure where VIZ_REQUIRE_BROWSER is set, as in CI).
+inline std::string htmlValidatorComplaints(const fs::path& page, const fs::path& scratch) {
+    if (!fs::exists("/usr/bin/tidy")) {
+        if (std::getenv("VIZ_REQUIRE_BROWSER")) return "VIZ_REQUIRE_BROWSER is set but /usr/bin/tidy is missing";
+        return {};
+    }
+    const fs::path report = scratch / "tidy.txt";
+    const std::string cmd = "/usr/bin/tidy -q -e --gnu-emacs yes " + page.string() + " >/dev/null 2>" + report.string();
+    const int status = std::system(cmd.c_str());
+    const std::string text = readFile(report);
+    return status == 0 && text.empty() ? std::string() : (text.empty() ? "tidy failed" : text);
+}
+
 // Headless Chromium's screenshot of `page` (width x height CSS pixels) into `png`; false when no
 // browser is installed or it wrote nothing.
 inline bool screenshotInBrowser(const fs::path& page, const fs::path& scratch, const fs::path& png, int width,

@@ -113,6 +113,7 @@ TEST_F(CliTest, EveryLessonExportsAPageWithAllItsImages) {
         for (std::size_t at = page.find("<h2>"); at != std::string::npos; at = page.find("<h2>", at + 1)) ++steps;
         EXPECT_GE(images, steps) << name;
         EXPECT_GT(steps, 0) << name;
+        EXPECT_EQ(htmlValidatorComplaints(out / "index.html", mDir), "") << name;
         const std::string loaded = imagesLoadedInBrowser(out / "index.html", mDir);
         if (loaded.empty()) {
             if (std::getenv("VIZ_REQUIRE_BROWSER")) FAIL() << "VIZ_REQUIRE_BROWSER is set but /usr/bin/chromium is missing";

@@ -182,23 +182,43 @@ frames 2
     EXPECT_NE(autoTry.at("medium"), step.at("medium"));
 }
 
-TEST_F(LessonPlayer, TheStepsOtherViewsAreButtonsAndOtherViewsAreTryingSomething) {
+// A step's views fill the grid beside the final frame (up to three); its buttons focus them; a view picked
+// from the sidebar is trying something else.
+TEST_F(LessonPlayer, TheStepsViewsFillTheGridAndOtherViewsAreTryingSomething) {
     const fs::path lesson = writeText("views.md", "# Views\n\n## one\n```airlight\nscene: grate\ntechnique: raymarch\n"
-                                                  "set: samples=8\nviews: final, airlight, raymarch.lit_fraction\n```\ntext\n");
+                                                  "set: samples=8\nviews: final, airlight, raymarch.lit_fraction\n```\ntext\n"
+                                                  "## two\n```airlight\nviews: raymarch.shadow_map\n```\ntext\n");
     const fs::path script = writeText("views.txt", "screenshot " + path("first.png").string() +
                                                        "\nclick \"show Lit fraction\"\nframes 2\nscreenshot " +
-                                                       path("second.png").string() + "\nclick \"view:Spot shadow map\"\nframes 2\n");
+                                                       path("second.png").string() + "\nclick \"view:Spot shadow map\"\nframes 2\n"
+                                                       "screenshot " + path("other.png").string() +
+                                                       "\nkey PageDown\nframes 2\n");
     const RunResult r = run("--lesson " + lesson.string() + " --size 40x30 --script " + script.string() + " --screenshot " +
-                            path("other.png").string());
+                            path("single.png").string());
     ASSERT_EQ(r.exitCode, 0) << r.err;
-    const json first = sidecar("first.png"), second = sidecar("second.png"), other = sidecar("other.png");
-    EXPECT_EQ(first.at("views")[1].at("name"), "airlight");  // the first view that is not the final image
-    EXPECT_EQ(second.at("views")[1].at("name"), "raymarch.lit_fraction");
+    const json first = sidecar("first.png"), second = sidecar("second.png"), other = sidecar("other.png"),
+               single = sidecar("single.png");
+    // Three columns: the final frame, then the step's two views.
+    EXPECT_EQ(first.at("view_grid").at("layout"), "x(0.3333,0,x(0.5,1,2))");
+    ASSERT_EQ(first.at("views").size(), 3u);
+    EXPECT_EQ(first.at("views")[0].at("name"), "final");
+    EXPECT_EQ(first.at("views")[1].at("name"), "airlight");
+    EXPECT_EQ(first.at("views")[2].at("name"), "raymarch.lit_fraction");
+    EXPECT_TRUE(first.at("views")[1].at("focused").get<bool>());
+    EXPECT_TRUE(first.at("lesson").at("matches_step").get<bool>());
+    // The button focuses the view already in the grid; nothing is replaced.
+    EXPECT_EQ(second.at("views")[1].at("name"), "airlight");
+    EXPECT_TRUE(second.at("views")[2].at("focused").get<bool>());
     EXPECT_TRUE(second.at("lesson").at("matches_step").get<bool>());
     EXPECT_FALSE(second.at("lesson").at("try_it").get<bool>());
-    EXPECT_EQ(other.at("views")[1].at("name"), "raymarch.shadow_map");
+    // The sidebar shows another view in the focused cell: trying something.
+    EXPECT_EQ(other.at("views")[2].at("name"), "raymarch.shadow_map");
     EXPECT_FALSE(other.at("lesson").at("matches_step").get<bool>());
     EXPECT_TRUE(other.at("lesson").at("try_it").get<bool>());
+    // A step with one view gets the two-cell grid back.
+    EXPECT_EQ(single.at("view_grid").at("layout"), "x(0.5,0,1)");
+    ASSERT_EQ(single.at("views").size(), 2u);
+    EXPECT_EQ(single.at("views")[1].at("name"), "raymarch.shadow_map");
 }
 
 TEST_F(LessonPlayer, AMalformedLessonShowsFileAndLineAndTheWindowStaysUsable) {
@@ -389,6 +409,11 @@ TEST_F(CliTest, AStepsTechniqueStageAndSettingsAreCheckedAtItsHeading) {
     expectUserError(run("lesson " + lesson("set.md", "technique: raymarch\nset: planes=8\n") + " --export " +
                         path("o3").string()),
                     "set.md:3: step 'one':");
+    // The comparison grid would hide a view other than the final frame and L_air.
+    expectUserError(run("lesson " + lesson("cmp.md", "technique: raymarch\nviews: final, raymarch.lit_fraction\n"
+                                                     "compare: raymarch\n") +
+                        " --export " + path("o4").string()),
+                    "cmp.md:3: step 'one': compare: shows L_air beside the final frame; the view 'raymarch.lit_fraction'");
 }
 
 }  // namespace

@@ -71,6 +71,7 @@ TEST_F(CliTest, ReportWritesResultsPlotsImagesAndAPageThatLoads) {
     const std::string page = readFile(out / "index.html");
     EXPECT_EQ(page.find("<script"), std::string::npos);
     EXPECT_EQ(page.find("http"), std::string::npos);  // nothing fetched from anywhere
+    EXPECT_EQ(htmlValidatorComplaints(out / "index.html", mDir), "");
     const std::string loaded = imagesLoadedInBrowser(out / "index.html", mDir);
     if (loaded.empty()) {
         if (std::getenv("VIZ_REQUIRE_BROWSER")) FAIL() << "VIZ_REQUIRE_BROWSER is set but /usr/bin/chromium is missing";

@@ -98,6 +98,7 @@ TEST_F(ReportTemporalTest, QuickWritesFiniteTemporalFiguresForEveryTechniqueWith
     // The page: the temporal table, the ranking by stability and the plot beside the error plot.
     const std::string page = readFile(out / "index.html");
     EXPECT_NE(page.find("Temporal error along camera-orbit:10deg (6 frames)"), std::string::npos);
+    EXPECT_EQ(htmlValidatorComplaints(out / "index.html", mDir), "");
     EXPECT_NE(page.find("<th>stability</th>"), std::string::npos);
     EXPECT_NE(page.find("src=\"grate-temporal-plot.png\""), std::string::npos);
     const Image plot = readImage((out / "grate-temporal-plot.png").string());

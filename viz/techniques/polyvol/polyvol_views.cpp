@@ -109,7 +109,9 @@ void PolyvolTechnique::publishVolume(FrameOutput& out, const Settings& s, std::i
     mTriangles = triangles;
     if (mAdaptiveUsed) {
         out.intermediates.push_back(render::textureIntermediate(
-            kEdgeMap, "Edge map", "|Laplacian| of the vertex distances / the map's depth range (last 2D light)",
+            kEdgeMap, "Edge map",
+            std::string(s.at("edge_measure") == 0.0 ? "|Laplacian|" : "sum of |second differences| (x, y, diagonals)") +
+                " of the vertex distances / the map's depth range (last 2D light)",
             "", ViewKind::Scalar, 0.0f, float(std::max(1e-6, 10.0 * s.at("threshold"))), mTess.edgeMap()));
         out.intermediates.push_back(render::textureIntermediate(
             kTessLevels, "Tessellation level", "leaf level k of each texel's quad (2^k texels wide), stored k/16; " +
