@@ -220,6 +220,11 @@ void GuiApp::writeSidecar(const std::string& path) {
         break;
     }
     sidecar["animation"] = {{"playing", mPlaying}, {"seconds", mPlayClock}, {"light_turn", mPlayTurn}};
+    // The scene and parameter panel under the grid (null when there is no room for it).
+    sidecar["parameters_panel"] = mParamsRect.size().y > 0.0f
+                                      ? nlohmann::json::array({mParamsRect.min.x, mParamsRect.min.y, mParamsRect.max.x,
+                                                               mParamsRect.max.y})
+                                      : nlohmann::json(nullptr);
     sidecar["view_grid"] = {{"layout", mLayout.toText()}, {"focused", mFocused},
                             {"maximised", mLayout.maximised()},
                             {"cpu_ms_last_frame", mGridMilliseconds},

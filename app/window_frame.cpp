@@ -125,6 +125,12 @@ void GuiApp::draw() {
     if (mProbe) gridHeight = std::min(gridHeight, 0.56f * panes.size().y);
     // The stepping timeline sits between the grid and the panels.
     const float timelineHeight = line + 8.0f * s;
+    // The panels below keep room for six lines (the parameter panel's header and a few rows, which then
+    // scroll): at a large UI scale the grid gives up height, down to 45 % of the area, rather than hide
+    // them.
+    const float bottomRoom = panes.size().y - gridHeight - timelineHeight - 1.5f * pad;
+    if (bottomRoom < 6.0f * line)
+        gridHeight = std::max(0.45f * panes.size().y, gridHeight - (6.0f * line - bottomRoom));
     const Rect gridArea{panes.min, {panes.max.x, panes.min.y + gridHeight}};
     mViewArea = gridArea;
     mTimelineRect = {{panes.min.x, gridArea.max.y + 0.5f * pad}, {panes.max.x, gridArea.max.y + 0.5f * pad + timelineHeight}};

@@ -58,6 +58,11 @@ TEST_F(GuiPresentation, TitlesAreShortenedInTheMiddleNotCut) {
     }
     EXPECT_GE(views, 2);
     EXPECT_EQ(a.at("titles_elided"), 0);
+    // The grid leaves the scene and parameter panel room for six lines of text (about 160 px at 1.5; it
+    // used to be hidden there).
+    ASSERT_FALSE(a.at("parameters_panel").is_null()) << "no room for the parameter panel at scale 1.5";
+    const auto& p = a.at("parameters_panel");
+    EXPECT_GE(p[3].get<double>() - p[1].get<double>(), 120.0);
     EXPECT_GT(b.at("titles_elided").get<int>(), 0) << "at scale 3 the titles cannot fit whole";
 }
 
