@@ -43,6 +43,8 @@ void updateStatistics(ViewState& view) {
     std::vector<float> sentinels;
     for (const viz::Sentinel& s : view.pane.sentinels) sentinels.push_back(s.value);
     view.counts = countSpecial(view.values, view.meaningful, sentinels);
+    // Vertex positions and signed quantities are negative by nature: only the other kinds report them.
+    if (view.pane.kind == viz::ViewKind::Mesh || view.pane.kind == viz::ViewKind::Signed) view.counts.negative = 0;
     const std::vector<float> values =
         withoutSentinels(channelValues(view.values, view.display.channel, view.meaningful), sentinels);
     view.finite = finiteRange(values);

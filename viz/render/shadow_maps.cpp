@@ -236,6 +236,8 @@ void ShadowMaps::publish(std::vector<Intermediate>& out, const std::string& pref
                 break;
             }
         }
+        // One caption per map: the second and later maps carry their index, as their ids do.
+        if (i > 0) im.label += " " + std::to_string(i);
         out.push_back(std::move(im));
     }
 }

@@ -261,7 +261,7 @@ FrameOutput IvsvTechnique::run(const FrameInput& input) {
         out.intermediates.push_back(vsv::cpuIntermediate(
         kVoxelSlice, "Voxels of VPL " + std::to_string(shown) + " (before scan)",
         "alpha (x) x phi (y, eye at the top) at theta cell " + std::to_string(pickTheta) + ": white = occluder",
-        ViewKind::BitField, vsv::sliceImage(mGrid, shownTile.x, cells, shownTile.y + pickTheta, kPhiBits)));
+        ViewKind::Mask, vsv::sliceImage(mGrid, shownTile.x, cells, shownTile.y + pickTheta, kPhiBits)));
     out.lastStageRun = kVoxelizeIndex;
     if (stop == kVoxelizeIndex) return out;
 
@@ -283,7 +283,7 @@ FrameOutput IvsvTechnique::run(const FrameInput& input) {
         kScanSlice,
         "Voxels of VPL " + std::to_string(shown) + " after " +
             std::to_string(std::min(passLimit, scanPassCount(cells))) + " scan passes",
-        "alpha x phi at theta cell " + std::to_string(pickTheta) + ": white = shadowed", ViewKind::BitField,
+        "alpha x phi at theta cell " + std::to_string(pickTheta) + ": white = shadowed", ViewKind::Mask,
         vsv::sliceImage(*mResult, shownTile.x, cells, shownTile.y + pickTheta, kPhiBits)));
     out.lastStageRun = kScanIndex;
     if (stop == kScanIndex) return out;
@@ -309,9 +309,10 @@ FrameOutput IvsvTechnique::run(const FrameInput& input) {
             kColumn, "Voxel column of pixel (" + std::to_string(pickX) + ", " + std::to_string(pickY) + "), VPL " +
                          std::to_string(shown),
             "its 128 phi bits; top row as voxelized (1 occluder), bottom row after the scan (1 shadowed, 0 lit); "
-            "0.5 beyond the fragment (not read)", ViewKind::BitField,
+            "0.5 beyond the fragment (not read)", ViewKind::Mask,
             columnImage(scene, input, shown, cells, pickX, pickY)));
         out.intermediates.back().rayView = true;
+        out.intermediates.back().sentinels = {{0.5f, "beyond the fragment: not read"}};
         const std::shared_ptr<Image> perVpl = perVplImage(count);
         out.intermediates.push_back(vsv::cpuIntermediate(
             kPerVpl, "Per-VPL airlight of pixel (" + std::to_string(pickX) + ", " + std::to_string(pickY) + ")",

@@ -137,7 +137,7 @@ FrameOutput VsvTechnique::run(const FrameInput& input) {
             kVoxelSlice, "Voxels (before scan)",
             "alpha (x) x phi (y, eye at the top) slice at theta cell " + std::to_string(pickTheta) +
                 ": white = occluder voxel",
-            ViewKind::BitField, vsv::sliceImage(mGrid[std::size_t(shown)], 0, size.alpha, pickTheta, size.phi)));
+            ViewKind::Mask, vsv::sliceImage(mGrid[std::size_t(shown)], 0, size.alpha, pickTheta, size.phi)));
     }
     out.lastStageRun = kVoxelizeIndex;
     if (stop == kVoxelizeIndex) return out;
@@ -161,7 +161,7 @@ FrameOutput VsvTechnique::run(const FrameInput& input) {
             kScanSlice, "Voxels after " + std::to_string(passes) + " scan passes",
             "alpha x phi slice at theta cell " + std::to_string(pickTheta) +
                 ": white = shadowed (after all passes: one run from the occluder to the end of alpha)",
-            ViewKind::BitField, vsv::sliceImage(*mResult[std::size_t(shown)], 0, size.alpha, pickTheta, size.phi)));
+            ViewKind::Mask, vsv::sliceImage(*mResult[std::size_t(shown)], 0, size.alpha, pickTheta, size.phi)));
     }
     out.lastStageRun = kScanIndex;
     if (stop == kScanIndex) return out;
@@ -184,10 +184,11 @@ FrameOutput VsvTechnique::run(const FrameInput& input) {
             kColumn, "Voxel column of pixel (" + std::to_string(pickX) + ", " + std::to_string(pickY) + ")",
             "the 128 phi bits its eye ray reads; top row as voxelized (1 occluder), bottom row after the scan "
             "(1 shadowed, 0 lit); 0.5 beyond the fragment (not read)",
-            ViewKind::BitField,
+            ViewKind::Mask,
             columnImage(scene, input, lights[std::size_t(shown)], grids[std::size_t(shown)], shown, pickX,
                         pickY)));
         out.intermediates.back().rayView = true;
+        out.intermediates.back().sentinels = {{0.5f, "beyond the fragment: not read"}};
     }
     out.intermediates.push_back(render::textureIntermediate(
         kAirlight, "L_air", "single-scattered light reaching the eye", "radiance", ViewKind::Color, 0.0f, 1.0f,
