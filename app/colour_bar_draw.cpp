@@ -23,17 +23,20 @@ ColourBarLayout drawColourBarText(const ColourBar& bar, const Rect& area, const 
     if (!picture) frames.rect({ramp.min - 1.0f, ramp.max + 1.0f}, colours.frame);
     const float labelY = ramp.max.y + 2.0f * s;
     if (bar.kind == ColourBar::Kind::Ramp) {
-        std::vector<float> centres, widths;
+        // Tick marks at the values; labels centred under them but kept inside the bar, and dropped where
+        // they would touch a neighbour where they are drawn (the last one is pushed left at the end).
+        std::vector<float> centres, widths, placed;
         for (std::size_t i = 0; i < bar.ticks.size(); ++i) {
             centres.push_back(ramp.min.x + bar.tickAt[i] * ramp.size().x);
             widths.push_back(font.measure(bar.tickLabels[i]));
+            const float x = std::clamp(centres[i] - 0.5f * widths[i], area.min.x, ramp.max.x - widths[i]);
+            placed.push_back(x + 0.5f * widths[i]);
         }
-        const std::vector<bool> kept = viz::plot::keptTickLabels(centres, widths, 6.0f * s);
+        const std::vector<bool> kept = viz::plot::keptTickLabels(placed, widths, 6.0f * s);
         for (std::size_t i = 0; i < bar.ticks.size(); ++i) {
             text.line({centres[i], ramp.max.y - 3.0f * s}, {centres[i], ramp.max.y + 1.0f * s}, 1.0f * s, colours.text);
             if (!kept[i]) continue;
-            const float x = std::clamp(centres[i] - 0.5f * widths[i], area.min.x, ramp.max.x - widths[i]);
-            text.textClipped({x, labelY}, bar.tickLabels[i], colours.text, area.max.x);
+            text.textClipped({placed[i] - 0.5f * widths[i], labelY}, bar.tickLabels[i], colours.text, area.max.x);
         }
     } else if (bar.kind == ColourBar::Kind::Classes) {
         // One segment per class, its label centred under it.

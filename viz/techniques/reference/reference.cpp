@@ -338,16 +338,18 @@ private:
                 f.litFraction, 0.0f, 1.0f);
         }
         if (stopAfter >= kAirlightStage) {
-            add(kAirlight, "Airlight L_air", "single scattering along [0, d], every light", "radiance",
-                ViewKind::Color, f.airlight, 0.0f, maxOf(f.airlight));
+            // Radiance as the GPU techniques publish it: [0, 1] at the window's exposure, so the same
+            // quantity looks the same in every technique; the caption is theirs too.
+            add(kAirlight, "L_air", "single scattering along [0, d], every light", "radiance", ViewKind::Color,
+                f.airlight, 0.0f, 1.0f);
             out.airlight = f.airlight;
         }
         if (stopAfter >= kSurfaceStage)
             add(kSurface, "Surface radiance", "Lambert + emitted, before attenuation by exp(-sigma_t d)", "radiance",
-                ViewKind::Color, f.surface, 0.0f, maxOf(f.surface));
+                ViewKind::Color, f.surface, 0.0f, 1.0f);
         if (stopAfter >= kFinalStage) {
             add(kFinal, "Final", "surface * exp(-sigma_t d) + L_air", "radiance", ViewKind::Color, f.final, 0.0f,
-                maxOf(f.final));
+                1.0f);
             out.final = f.final;
         }
         out.lastStageRun = stopAfter;
