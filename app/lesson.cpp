@@ -434,10 +434,11 @@ void exportLesson(const Lesson& lesson, const std::string& folder, glm::ivec2 si
             state += "; animated in the window: " + describeAnimation(s.animation) + " (shown: its last frame)";
         html += "<p class=\"state\">" + viz::report::escapeHtml(state) + "</p>\n";
         const std::vector<std::string> views = s.views.empty() ? std::vector<std::string>{"final", "airlight"} : s.views;
-        // The window's exposure for this frame: the final image's automatic exposure in stops, rounded to
-        // the window's half stops.
+        // The window's exposure for this frame: the final image's automatic exposure in stops (L_air's
+        // while a stopped run has no final image yet), rounded to the window's half stops.
+        const viz::Image& exposed = out.final.empty() ? out.airlight : out.final;
         const float exposure =
-            out.final.empty() ? 0.0f : std::round(std::log2(std::max(autoExposure(out.final), 1e-30f)) / 0.5f) * 0.5f;
+            exposed.empty() ? 0.0f : std::round(std::log2(std::max(autoExposure(exposed), 1e-30f)) / 0.5f) * 0.5f;
         // Figures are drawn through the window's own shaders: a CPU technique's step needs a context too.
         if (!job.technique().needsGl()) {
             if (!figureContext) figureContext = viz::HeadlessContext::create(false);

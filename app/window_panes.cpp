@@ -297,8 +297,10 @@ const PixelInspection& GuiApp::probeInspection() {
 void GuiApp::refreshPanes() {
     mMarkerCache.clear();
     mProbeInspection.reset();
-    if (mHaveOutput && !mExposureSet && !mOutput.final.empty()) {
-        mExposure = std::round(std::log2(autoExposure(mOutput.final)) / kExposureStep) * kExposureStep;
+    // Automatic exposure from the final image, or from L_air while a stopped run has none yet.
+    const viz::Image& exposed = mOutput.final.empty() ? mOutput.airlight : mOutput.final;
+    if (mHaveOutput && !mExposureSet && !exposed.empty()) {
+        mExposure = std::round(std::log2(autoExposure(exposed)) / kExposureStep) * kExposureStep;
         mExposureSet = true;
     }
     for (auto& [id, v] : mViews) refreshView(v);
