@@ -162,8 +162,29 @@ float drawLessonProse(DrawList& dl, const std::string& markdown, glm::vec2 at, f
         paragraph.clear();
     };
     const float bulletIndent = 1.2f * font.measure("M");
+    // A list item: "- " and the lines after it up to a blank line or the next item (continuation lines,
+    // indented or not, belong to it, as in Markdown).
+    std::string item;
+    bool inItem = false;
+    const auto flushItem = [&] {
+        if (!inItem) return;
+        inItem = false;
+        if (pendingGap) y += gap * 0.5f;
+        pendingGap = false;
+        // The bullet: a small square at the first line's mid-height (the atlas has no U+2022).
+        const float b = std::max(2.0f, 0.22f * line), mid = at.y + y + 0.5f * line;
+        dl.rect({{at.x + 3.0f * scale, mid - 0.5f * b}, {at.x + 3.0f * scale + b, mid + 0.5f * b}}, kAccent);
+        y += flowWords(&dl, font, inlineWords(item, SpanStyle::Normal), {at.x, at.y + y}, bulletIndent, bulletIndent,
+                       width, scale);
+        item.clear();
+        pendingGap = true;
+    };
     while (std::getline(in, raw)) {
         const std::string t = trim(raw);
+        if (inItem && !t.empty() && t.rfind("- ", 0) != 0) {
+            item += " " + t;
+            continue;
+        }
         if (raw.rfind("    ", 0) == 0 && !t.empty() && paragraph.empty()) {
             // A formula line: its own box, wrapped with a hanging indent.
             if (pendingGap) y += gap;
@@ -177,6 +198,7 @@ float drawLessonProse(DrawList& dl, const std::string& markdown, glm::vec2 at, f
             continue;
         }
         if (t.empty()) {
+            flushItem();
             flush();
         } else if (t[0] == '#') {
             flush();
@@ -184,19 +206,15 @@ float drawLessonProse(DrawList& dl, const std::string& markdown, glm::vec2 at, f
             const std::string heading = trim(t.substr(t.find_first_not_of('#')));
             block(flowWords(&dl, font, inlineWords(heading, SpanStyle::Heading), {at.x, at.y + y}, 0.0f, 0.0f, width, scale));
         } else if (t.rfind("- ", 0) == 0) {
+            flushItem();
             flush();
-            if (pendingGap) y += gap * 0.5f;
-            pendingGap = false;
-            // The bullet: a small square at the first line's mid-height (the atlas has no U+2022).
-            const float b = std::max(2.0f, 0.22f * line), mid = at.y + y + 0.5f * line;
-            dl.rect({{at.x + 3.0f * scale, mid - 0.5f * b}, {at.x + 3.0f * scale + b, mid + 0.5f * b}}, kAccent);
-            y += flowWords(&dl, font, inlineWords(t.substr(2), SpanStyle::Normal), {at.x, at.y + y}, bulletIndent,
-                           bulletIndent, width, scale);
-            pendingGap = true;
+            inItem = true;
+            item = t.substr(2);
         } else {
             paragraph += t + " ";
         }
     }
+    flushItem();
     flush();
     return y;
 }
