@@ -16,6 +16,7 @@
 #include "core/error.h"
 #include "core/image_io.h"
 #include "core/staged_folder.h"
+#include "lesson_markdown.h"
 #include "platform/context_egl.h"
 #include "render_job.h"
 #include "ui/font.h"
@@ -48,32 +49,6 @@ std::vector<std::string> splitList(const std::string& text) {
             item += c;
         }
     }
-    return out;
-}
-
-// **strong**, *em* and `code` inside one line of already escaped text.
-std::string inlineMarkup(const std::string& escaped) {
-    std::string out;
-    bool strong = false, em = false, code = false;
-    for (std::size_t i = 0; i < escaped.size(); ++i) {
-        const char c = escaped[i];
-        if (c == '`') {
-            out += code ? "</code>" : "<code>";
-            code = !code;
-        } else if (!code && c == '*' && i + 1 < escaped.size() && escaped[i + 1] == '*') {
-            out += strong ? "</strong>" : "<strong>";
-            strong = !strong;
-            ++i;
-        } else if (!code && c == '*') {
-            out += em ? "</em>" : "<em>";
-            em = !em;
-        } else {
-            out += c;
-        }
-    }
-    if (code) out += "</code>";
-    if (strong) out += "</strong>";
-    if (em) out += "</em>";
     return out;
 }
 
@@ -121,56 +96,7 @@ std::string describeAnimation(const LessonAnimation& animation) {
     return {};
 }
 
-std::string markdownToHtml(const std::string& markdown) {
-    std::istringstream in(markdown);
-    std::string html, paragraph, line, pre;
-    bool list = false;
-    const auto flushPre = [&] {
-        if (!pre.empty()) html += "<pre>" + viz::report::escapeHtml(pre) + "</pre>\n";
-        pre.clear();
-    };
-    const auto flush = [&] {
-        if (!paragraph.empty()) html += "<p>" + inlineMarkup(viz::report::escapeHtml(trim(paragraph))) + "</p>\n";
-        paragraph.clear();
-    };
-    const auto closeList = [&] {
-        if (list) html += "</ul>\n";
-        list = false;
-    };
-    while (std::getline(in, line)) {
-        const std::string t = trim(line);
-        // Lines indented by four spaces are preformatted (formulas).
-        if (line.rfind("    ", 0) == 0 && !t.empty() && paragraph.empty() && !list) {
-            pre += line.substr(4) + "\n";
-            continue;
-        }
-        flushPre();
-        if (t.empty()) {
-            flush();
-            closeList();
-        } else if (t[0] == '#') {
-            flush();
-            closeList();
-            std::size_t level = 0;
-            while (level < t.size() && t[level] == '#') ++level;
-            level = std::min<std::size_t>(level + 1, 6);  // the lesson's own title is h1
-            html += "<h" + std::to_string(level) + ">" + inlineMarkup(viz::report::escapeHtml(trim(t.substr(t.find_first_not_of('#'))))) +
-                    "</h" + std::to_string(level) + ">\n";
-        } else if (t.rfind("- ", 0) == 0) {
-            flush();
-            if (!list) html += "<ul>\n";
-            list = true;
-            html += "<li>" + inlineMarkup(viz::report::escapeHtml(t.substr(2))) + "</li>\n";
-        } else {
-            closeList();
-            paragraph += t + " ";
-        }
-    }
-    flushPre();
-    flush();
-    closeList();
-    return html;
-}
+std::string markdownToHtml(const std::string& markdown) { return proseHtml(parseProse(markdown)); }
 
 Lesson parseLesson(const std::string& path) {
     std::ifstream in(path);

@@ -21,13 +21,6 @@ constexpr glm::vec4 kStrong{1.0f, 1.0f, 1.0f, 1.0f};       // **strong**: drawn 
 constexpr glm::vec4 kFormula{0.80f, 0.86f, 0.95f, 1.0f};
 constexpr glm::vec4 kFormulaBox{0.17f, 0.18f, 0.22f, 1.0f};
 
-std::string trim(const std::string& s) {
-    std::size_t a = 0, b = s.size();
-    while (a < b && std::isspace(static_cast<unsigned char>(s[a]))) ++a;
-    while (b > a && std::isspace(static_cast<unsigned char>(s[b - 1]))) --b;
-    return s.substr(a, b - a);
-}
-
 // A word of running text: consecutive pieces without a space between them stay on one line.
 struct Piece {
     std::string text;
@@ -37,52 +30,53 @@ struct Word {
     std::vector<Piece> pieces;
 };
 
-// Splits a line of Markdown into words with `code`, *emphasis* and **strong** (as in markdownToHtml).
-std::vector<Word> inlineWords(const std::string& text, SpanStyle base) {
+// Words of running text from parsed spans: a span's Normal text takes `base` (a heading's, a formula's);
+// pieces with no space between them (`code`, and the comma after it) stay one word.
+std::vector<Word> wordsOf(const std::vector<ProseSpan>& spans, SpanStyle base) {
     std::vector<Word> words;
-    bool code = false, em = false, strong = false;
     Word word;
-    Piece piece;
-    const auto style = [&] {
-        if (code) return SpanStyle::Code;
-        if (strong) return SpanStyle::Strong;
-        if (em) return SpanStyle::Emphasis;
-        return base;
-    };
-    const auto endPiece = [&] {
-        if (!piece.text.empty()) word.pieces.push_back(piece);
-        piece = {};
-        piece.style = style();
-    };
     const auto endWord = [&] {
-        endPiece();
         if (!word.pieces.empty()) words.push_back(word);
         word = {};
     };
-    piece.style = style();
-    for (std::size_t i = 0; i < text.size(); ++i) {
-        const char c = text[i];
-        if (c == '`') {
-            endPiece();
-            code = !code;
-            piece.style = style();
-        } else if (!code && base != SpanStyle::Formula && c == '*' && i + 1 < text.size() && text[i + 1] == '*') {
-            endPiece();
-            strong = !strong;
-            piece.style = style();
-            ++i;
-        } else if (!code && base != SpanStyle::Formula && c == '*') {
-            endPiece();
-            em = !em;
-            piece.style = style();
-        } else if (std::isspace(static_cast<unsigned char>(c))) {
-            endWord();
-        } else {
-            piece.text += c;
+    for (const ProseSpan& span : spans) {
+        const SpanStyle style = span.style == SpanStyle::Normal ? base : span.style;
+        Piece piece{{}, style};
+        for (char c : span.text) {
+            if (std::isspace(static_cast<unsigned char>(c))) {
+                if (!piece.text.empty()) word.pieces.push_back(piece);
+                piece.text.clear();
+                endWord();
+            } else {
+                piece.text += c;
+            }
         }
+        if (!piece.text.empty()) word.pieces.push_back(piece);
     }
     endWord();
     return words;
+}
+
+// A single line's words: its inline Markdown parsed like prose. A line is one paragraph whatever it starts
+// with: a step title "1. Rectification" is not a list, "# 3" not a heading (the marker is escaped).
+std::vector<Word> lineWords(const std::string& text, SpanStyle base) {
+    std::string line = text;
+    const std::size_t start = line.find_first_not_of(' ');
+    if (start != std::string::npos) {
+        std::size_t marker = start;
+        while (marker < line.size() && std::isdigit(static_cast<unsigned char>(line[marker]))) ++marker;
+        const bool numbered = marker > start && marker < line.size() && (line[marker] == '.' || line[marker] == ')');
+        const char c = line[start];
+        const bool bullet = (c == '-' || c == '+' || c == '*') && (start + 1 == line.size() || line[start + 1] == ' ');
+        if (numbered || bullet || c == '#' || c == '>') {
+            const std::size_t at = numbered ? marker : start;
+            line = line.substr(0, at) + "\\" + line.substr(at);
+        }
+    }
+    std::vector<ProseSpan> spans;
+    for (const ProseBlock& b : parseProse(line))
+        for (const ProseSpan& s : b.spans) spans.push_back(s);
+    return wordsOf(spans, base);
 }
 
 glm::vec4 colourOf(SpanStyle s) {
@@ -141,81 +135,57 @@ float flowWords(DrawList* dl, const viz::ui::FontAtlas& font, const std::vector<
 }  // namespace
 
 float drawLessonText(DrawList& dl, const std::string& text, SpanStyle style, glm::vec2 at, float width, float scale) {
-    return flowWords(&dl, dl.font(), inlineWords(text, style), at, 0.0f, 0.0f, width, scale);
+    return flowWords(&dl, dl.font(), lineWords(text, style), at, 0.0f, 0.0f, width, scale);
 }
 
 float drawLessonProse(DrawList& dl, const std::string& markdown, glm::vec2 at, float width, float scale) {
     const viz::ui::FontAtlas& font = dl.font();
     const float line = font.lineHeight(), gap = 0.45f * line;
-    std::istringstream in(markdown);
-    std::string raw, paragraph;
-    float y = 0.0f;
-    bool pendingGap = false;
-    const auto block = [&](float height) {
-        y += height;
-        pendingGap = true;
-    };
-    const auto flush = [&] {
-        if (paragraph.empty()) return;
-        if (pendingGap) y += gap;
-        block(flowWords(&dl, font, inlineWords(paragraph, SpanStyle::Normal), {at.x, at.y + y}, 0.0f, 0.0f, width, scale));
-        paragraph.clear();
-    };
     const float bulletIndent = 1.2f * font.measure("M");
-    // A list item: "- " and the lines after it up to a blank line or the next item (continuation lines,
-    // indented or not, belong to it, as in Markdown).
-    std::string item;
-    bool inItem = false;
-    const auto flushItem = [&] {
-        if (!inItem) return;
-        inItem = false;
-        if (pendingGap) y += gap * 0.5f;
-        pendingGap = false;
-        // The bullet: a small square at the first line's mid-height (the atlas has no U+2022).
-        const float b = std::max(2.0f, 0.22f * line), mid = at.y + y + 0.5f * line;
-        dl.rect({{at.x + 3.0f * scale, mid - 0.5f * b}, {at.x + 3.0f * scale + b, mid + 0.5f * b}}, kAccent);
-        y += flowWords(&dl, font, inlineWords(item, SpanStyle::Normal), {at.x, at.y + y}, bulletIndent, bulletIndent,
-                       width, scale);
-        item.clear();
-        pendingGap = true;
-    };
-    while (std::getline(in, raw)) {
-        const std::string t = trim(raw);
-        if (inItem && !t.empty() && t.rfind("- ", 0) != 0) {
-            item += " " + t;
-            continue;
-        }
-        if (raw.rfind("    ", 0) == 0 && !t.empty() && paragraph.empty()) {
-            // A formula line: its own box, wrapped with a hanging indent.
-            if (pendingGap) y += gap;
-            pendingGap = false;
-            const float pad = 6.0f * scale;
-            const std::vector<Word> words = inlineWords(t, SpanStyle::Formula);
-            const float h = flowWords(nullptr, font, words, {}, pad, pad + 2.0f * font.measure(" "), width - pad, scale);
-            dl.rect({{at.x, at.y + y - 2.0f * scale}, {at.x + width, at.y + y + h + 2.0f * scale}}, kFormulaBox);
-            flowWords(&dl, font, words, {at.x, at.y + y}, pad, pad + 2.0f * font.measure(" "), width - pad, scale);
-            y += h + 4.0f * scale;
-            continue;
-        }
-        if (t.empty()) {
-            flushItem();
-            flush();
-        } else if (t[0] == '#') {
-            flush();
-            if (pendingGap) y += gap;
-            const std::string heading = trim(t.substr(t.find_first_not_of('#')));
-            block(flowWords(&dl, font, inlineWords(heading, SpanStyle::Heading), {at.x, at.y + y}, 0.0f, 0.0f, width, scale));
-        } else if (t.rfind("- ", 0) == 0) {
-            flushItem();
-            flush();
-            inItem = true;
-            item = t.substr(2);
-        } else {
-            paragraph += t + " ";
+    float y = 0.0f;
+    ProseBlock::Kind previous = ProseBlock::Kind::Paragraph;
+    bool first = true;
+    for (const ProseBlock& b : parseProse(markdown)) {
+        // A gap between blocks; half of one between the items of a list.
+        if (!first) y += b.kind == ProseBlock::Kind::Item && previous == ProseBlock::Kind::Item ? 0.5f * gap : gap;
+        first = false;
+        previous = b.kind;
+        switch (b.kind) {
+            case ProseBlock::Kind::Paragraph:
+                y += flowWords(&dl, font, wordsOf(b.spans, SpanStyle::Normal), {at.x, at.y + y}, 0.0f, 0.0f, width, scale);
+                break;
+            case ProseBlock::Kind::Heading:
+                y += flowWords(&dl, font, wordsOf(b.spans, SpanStyle::Heading), {at.x, at.y + y}, 0.0f, 0.0f, width, scale);
+                break;
+            case ProseBlock::Kind::Item: {
+                // The bullet: a small square at the first line's mid-height (the atlas has no U+2022).
+                const float s = std::max(2.0f, 0.22f * line), mid = at.y + y + 0.5f * line;
+                dl.rect({{at.x + 3.0f * scale, mid - 0.5f * s}, {at.x + 3.0f * scale + s, mid + 0.5f * s}}, kAccent);
+                y += flowWords(&dl, font, wordsOf(b.spans, SpanStyle::Normal), {at.x, at.y + y}, bulletIndent,
+                               bulletIndent, width, scale);
+                break;
+            }
+            case ProseBlock::Kind::Formula: {
+                // Each line of a formula in its own box, wrapped with a hanging indent.
+                std::istringstream lines(b.spans.front().text);
+                std::string text;
+                bool firstLine = true;
+                while (std::getline(lines, text)) {
+                    if (!firstLine) y += 4.0f * scale;
+                    firstLine = false;
+                    const float pad = 6.0f * scale;
+                    const std::vector<Word> words = wordsOf({{text, SpanStyle::Normal}}, SpanStyle::Formula);
+                    const float hang = pad + 2.0f * font.measure(" ");
+                    const float h = flowWords(nullptr, font, words, {}, pad, hang, width - pad, scale);
+                    dl.rect({{at.x, at.y + y - 2.0f * scale}, {at.x + width, at.y + y + h + 2.0f * scale}}, kFormulaBox);
+                    flowWords(&dl, font, words, {at.x, at.y + y}, pad, hang, width - pad, scale);
+                    y += h;
+                }
+                y += 4.0f * scale;
+                break;
+            }
         }
     }
-    flushItem();
-    flush();
     return y;
 }
 

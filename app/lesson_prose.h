@@ -1,5 +1,5 @@
-// A lesson's prose as the lesson panel draws it: paragraphs, headings, lists, formulas and rules of the
-// lessons' Markdown, with `code`, *emphasis* and **strong** inline, wrapped to the panel's width. Also the
+// A lesson's prose as the lesson panel draws it: the blocks of lesson_markdown.h (paragraphs, headings,
+// list items, formulas) with `code`, *emphasis* and **strong** inline, wrapped to the panel's width. Also the
 // panel's colours, which the player's own text uses.
 #pragma once
 
@@ -7,6 +7,7 @@
 
 #include <glm/glm.hpp>
 
+#include "lesson_markdown.h"
 #include "ui/text_renderer.h"
 
 namespace airlight {
@@ -20,8 +21,6 @@ inline constexpr glm::vec4 kError{1.0f, 0.50f, 0.45f, 1.0f};
 inline constexpr glm::vec4 kRule{0.30f, 0.32f, 0.36f, 1.0f};
 }  // namespace lesson_style
 
-// How a run of text is drawn (colour, box, bold).
-enum class SpanStyle { Normal, Code, Emphasis, Strong, Heading, Formula, Dim };
 
 // One line of text in `style` with its inline Markdown, wrapped within `width` from `at`; returns the
 // height it took.

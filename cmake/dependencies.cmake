@@ -17,6 +17,9 @@ pkg_check_modules(OIIO REQUIRED IMPORTED_TARGET OpenImageIO)
 # OpenEXR alone: the portable image codec of the bundle (viz/core/image_codec.h).
 find_package(OpenEXR 3 REQUIRED)
 find_package(Boost 1.74 REQUIRED)
+# md4c: the lessons' Markdown (app/lesson_markdown.h). Through pkg-config: Debian's CMake package
+# config also names libmd4c-html, a package of its own that we do not need.
+pkg_check_modules(MD4C REQUIRED IMPORTED_TARGET md4c)
 if(VIZ_BUILD_TESTS)
     find_package(GTest REQUIRED)
 endif()
