@@ -221,7 +221,7 @@ FrameOutput IvsvTechnique::run(const FrameInput& input) {
             "scene units", ViewKind::Depth, 0.0f, 8.0f, mIsmRaw));
         out.intermediates.back().sentinels = {{0.0f, "hole: no point splatted"}};
         out.intermediates.push_back(render::textureIntermediate(
-            kIsm, "ISM atlas (after push-pull)", "holes filled from coarser levels (mean of valid samples)",
+            kIsm, "ISM atlas (after push-pull)", "holes filled from coarser levels (mean of valid samples within 2^fill_levels texels; wider holes stay empty)",
             "scene units", ViewKind::Depth, 0.0f, 8.0f, mIsm));
         out.intermediates.push_back(vsv::cpuIntermediate(
             kPointCloud, "Point cloud of VPL " + std::to_string(shown),
