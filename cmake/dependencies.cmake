@@ -6,6 +6,8 @@ find_package(glfw3 3.3 REQUIRED)
 find_package(glm REQUIRED)
 find_package(TinyGLTF REQUIRED)
 find_package(embree 3 REQUIRED)
+# oneTBB (Embree's own dependency): the reference's row-parallel loop.
+find_package(TBB REQUIRED)
 find_package(Eigen3 REQUIRED NO_MODULE)
 find_package(nlohmann_json 3 REQUIRED)
 pkg_check_modules(EPOXY REQUIRED IMPORTED_TARGET epoxy)

@@ -9,7 +9,7 @@ packages=(
     build-essential cmake ninja-build pkg-config
     libglfw3-dev libglm-dev libepoxy-dev libegl-dev libgl1-mesa-dri libegl-mesa0
     libtinygltf-dev libstb-dev nlohmann-json3-dev libopenimageio-dev libopenexr-dev
-    libembree-dev libeigen3-dev libmd4c-dev fonts-dejavu-core
+    libembree-dev libtbb-dev libeigen3-dev libmd4c-dev fonts-dejavu-core
     libgtest-dev libboost-math-dev
     xvfb xauth python3-mpmath chromium tidy
     clang libclang-rt-14-dev

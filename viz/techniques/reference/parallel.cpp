@@ -2,15 +2,16 @@
 
 #include <unistd.h>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
 #include <algorithm>
 #include <atomic>
 #include <chrono>
-#include <condition_variable>
 #include <cstdio>
-#include <exception>
 #include <mutex>
 #include <thread>
-#include <vector>
 
 namespace viz::reference {
 
@@ -50,47 +51,31 @@ int resolveThreadCount(int threads) {
 void parallelRows(int rows, int threads, const std::function<void(int)>& row, ProgressBar* progress,
                   const std::string& label) {
     if (rows <= 0) return;
-    const int count = std::min(resolveThreadCount(threads), rows);
-    std::atomic<int> next{0};
-    std::atomic<int> done{0};
-    std::atomic<bool> failed{false};
-    std::exception_ptr error;
-    std::mutex mutex;
-    std::condition_variable finished;
-
-    auto worker = [&] {
-        for (;;) {
-            const int y = next.fetch_add(1);
-            if (y >= rows || failed.load()) break;
-            try {
-                row(y);
-            } catch (...) {
-                std::lock_guard<std::mutex> lock(mutex);
-                if (!error) error = std::current_exception();
-                failed = true;
-            }
-            if (done.fetch_add(1) + 1 == rows) {
-                std::lock_guard<std::mutex> lock(mutex);
-                finished.notify_all();
-            }
-        }
-    };
-
+    // oneTBB's loop in an arena of the asked-for size: rows are handed out one by one (grain 1), each row
+    // to one thread, so the image is the same for any thread count. A row's exception cancels the rest
+    // and is rethrown here by parallel_for.
+    tbb::task_arena arena(std::min(resolveThreadCount(threads), rows));
     const auto start = std::chrono::steady_clock::now();
-    std::vector<std::thread> pool;
-    pool.reserve(std::size_t(count));
-    for (int i = 0; i < count; ++i) pool.emplace_back(worker);
-    if (progress && progress->enabled()) {
-        // The calling thread only redraws the progress line, a few times a second.
-        std::unique_lock<std::mutex> lock(mutex);
-        while (done.load() < rows && !failed.load()) {
-            finished.wait_for(lock, std::chrono::milliseconds(250));
-            const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-            progress->update(label, double(done.load()) / rows, elapsed);
-        }
-    }
-    for (auto& t : pool) t.join();
-    if (error) std::rethrow_exception(error);
+    std::atomic<int> done{0};
+    std::atomic<long long> lastDrawn{-1000};  // ms since start of the last progress line
+    std::mutex drawing;
+    const bool show = progress && progress->enabled();
+    arena.execute([&] {
+        tbb::parallel_for(tbb::blocked_range<int>(0, rows, 1), [&](const tbb::blocked_range<int>& range) {
+            for (int y = range.begin(); y != range.end(); ++y) {
+                row(y);
+                const int finished = done.fetch_add(1) + 1;
+                if (!show) continue;
+                // A few times a second, by whichever thread finishes a row then and finds the line free.
+                const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+                const long long ms = (long long)(elapsed * 1000.0);
+                long long last = lastDrawn.load();
+                if (ms - last < 250 || !lastDrawn.compare_exchange_strong(last, ms)) continue;
+                if (std::unique_lock<std::mutex> lock(drawing, std::try_to_lock); lock.owns_lock())
+                    progress->update(label, double(finished) / rows, elapsed);
+            }
+        });
+    });
 }
 
 }  // namespace viz::reference

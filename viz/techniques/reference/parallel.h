@@ -1,5 +1,6 @@
-// Row-parallel loops for the reference, with an optional terminal progress line. Each row is computed
-// by exactly one thread and writes only its own pixels, so results do not depend on the thread count.
+// Row-parallel loops for the reference (oneTBB), with an optional terminal progress line. Each row is
+// computed by exactly one thread and writes only its own pixels, so results do not depend on the thread
+// count.
 #pragma once
 
 #include <functional>
@@ -24,8 +25,8 @@ private:
 // Whether stderr is a terminal (progress lines would otherwise litter logs).
 bool stderrIsTerminal();
 
-// threads <= 0: std::thread::hardware_concurrency(). Calls row(y) for y in [0, rows); the first
-// exception thrown by a row is rethrown here after every thread has stopped.
+// threads <= 0: std::thread::hardware_concurrency(). Calls row(y) for y in [0, rows) on that many
+// threads; an exception thrown by a row stops the others and is rethrown here.
 void parallelRows(int rows, int threads, const std::function<void(int)>& row, ProgressBar* progress,
                   const std::string& label);
 
