@@ -14,6 +14,7 @@
 #include "cli_args.h"
 #include "comparison_grid.h"
 #include "core/error.h"
+#include "core/text.h"
 #include "core/image_io.h"
 #include "core/staged_folder.h"
 #include "lesson_markdown.h"
@@ -31,12 +32,7 @@ using viz::InputError;
 
 namespace {
 
-std::string trim(const std::string& s) {
-    std::size_t a = 0, b = s.size();
-    while (a < b && std::isspace(static_cast<unsigned char>(s[a]))) ++a;
-    while (b > a && std::isspace(static_cast<unsigned char>(s[b - 1]))) --b;
-    return s.substr(a, b - a);
-}
+using viz::trim;
 
 std::vector<std::string> splitList(const std::string& text) {
     std::vector<std::string> out;

@@ -13,6 +13,7 @@
 #include <GLFW/glfw3.h>
 
 #include "core/error.h"
+#include "core/text.h"
 #include "debug/technique.h"
 #include "run_scheduler.h"
 #include "scene/orbit_target.h"
@@ -99,11 +100,7 @@ inline std::string firstLine(const std::string& text) {
     return end == std::string::npos ? text : text.substr(0, end) + "  (...)";
 }
 
-inline std::string format(const char* fmt, double a) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, fmt, a);
-    return buf;
-}
+using viz::format;
 
 inline std::string timingLine(const viz::Timing& timing) {
     if (timing.stages.empty()) return "timings: (none yet)";

@@ -4,17 +4,14 @@
 #include <cstdio>
 
 #include "core/error.h"
+#include "core/text.h"
 #include "scene/camera.h"
 
 namespace viz::report {
 
 namespace {
 
-std::string format(const char* fmt, double v) {
-    char buffer[64];
-    std::snprintf(buffer, sizeof buffer, fmt, v);
-    return buffer;
-}
+using viz::format;
 
 }  // namespace
 

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "core/error.h"
+#include "core/text.h"
 
 namespace viz::ui {
 
@@ -24,11 +25,7 @@ Id hashBytes(std::string_view text, Id seed) {
 
 bool contains(const Rect& r, glm::vec2 p) { return r.contains(p); }
 
-std::string format(const char* fmt, double value) {
-    char buffer[64];
-    std::snprintf(buffer, sizeof buffer, fmt, value);
-    return buffer;
-}
+using viz::format;
 
 // Byte position of the code point before / after `pos` in UTF-8 text.
 std::size_t previousCodepoint(const std::string& text, std::size_t pos) {
