@@ -92,8 +92,6 @@ std::string describeAnimation(const LessonAnimation& animation) {
     return {};
 }
 
-std::string markdownToHtml(const std::string& markdown) { return proseHtml(parseProse(markdown)); }
-
 Lesson parseLesson(const std::string& path) {
     std::ifstream in(path);
     if (!in) throw InputError("cannot read lesson '" + path + "'");
@@ -107,7 +105,10 @@ Lesson parseLesson(const std::string& path) {
     const auto fail = [&](int at, const std::string& why) {
         throw InputError(path + ":" + std::to_string(at) + ": " + why);
     };
-    std::string* prose = &lesson.intro;
+    // The Markdown before the first step and of each step, parsed once read.
+    std::string introText;
+    std::vector<std::string> stepTexts;
+    std::string* prose = &introText;
     std::set<std::string> blockSettings;  // names set in the current block: a second one is a mistake
     while (std::getline(in, line)) {
         ++number;
@@ -171,7 +172,8 @@ Lesson parseLesson(const std::string& path) {
             next.line = number;
             lesson.steps.push_back(next);
             step = &lesson.steps.back();
-            prose = &step->prose;
+            stepTexts.emplace_back();
+            prose = &stepTexts.back();
             stepHasBlock = false;
         } else if (t == "```airlight") {
             if (!step) fail(number, "an airlight block belongs in a step (after a '## ' heading)");
@@ -185,6 +187,8 @@ Lesson parseLesson(const std::string& path) {
         }
     }
     if (inBlock) fail(blockLine, "the airlight block is not closed with ```");
+    lesson.intro = parseProse(introText);
+    for (std::size_t i = 0; i < lesson.steps.size(); ++i) lesson.steps[i].prose = parseProse(stepTexts[i]);
     if (lesson.title.empty()) fail(1, "a lesson starts with a '# Title' line");
     if (lesson.steps.empty()) fail(number, "a lesson needs at least one step ('## ' heading with an airlight block)");
     const std::vector<std::string> ids = viz::techniqueIds();
@@ -328,7 +332,7 @@ void exportLesson(const Lesson& lesson, const std::string& folder, glm::ivec2 si
                        ".range{color:#555;font-size:0.8em}table.compare{border-collapse:collapse}"
                        "table.compare td,table.compare th{border:1px solid #ccc;padding:0.2em 0.6em;text-align:right}</style>"
                        "</head><body>\n<h1>" + viz::report::escapeHtml(lesson.title) + "</h1>\n" +
-                       markdownToHtml(lesson.intro);
+                       proseHtml(lesson.intro);
     for (std::size_t k = 0; k < lesson.steps.size(); ++k) {
         const LessonStep& s = lesson.steps[k];
         RenderRequest request;
@@ -345,7 +349,7 @@ void exportLesson(const Lesson& lesson, const std::string& folder, glm::ivec2 si
             std::fprintf(stderr, "airlight: warning: %s:%d: step '%s': %s\n", lesson.path.c_str(), s.line, s.title.c_str(),
                          line.c_str());
         }
-        html += "<h2>" + viz::report::escapeHtml(s.title) + "</h2>\n" + markdownToHtml(s.prose);
+        html += "<h2>" + viz::report::escapeHtml(s.title) + "</h2>\n" + proseHtml(s.prose);
         std::string state = s.technique + " on " + s.scene;
         if (!s.stage.empty()) state += ", stopped after " + s.stage;
         const std::vector<viz::ParamInfo> params = viz::makeTechnique(s.technique)->params();

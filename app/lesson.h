@@ -32,6 +32,7 @@
 
 #include <glm/glm.hpp>
 
+#include "lesson_markdown.h"
 #include "debug/technique.h"
 
 namespace airlight {
@@ -46,7 +47,7 @@ struct LessonAnimation {
 
 struct LessonStep {
     std::string title;
-    std::string prose;  // Markdown
+    std::vector<ProseBlock> prose;  // its Markdown, parsed once (lesson_markdown.h)
     int line = 0;       // of the heading, for messages
     std::string scene, technique;
     int width = 160, height = 120;
@@ -60,7 +61,8 @@ struct LessonStep {
 };
 
 struct Lesson {
-    std::string path, title, intro;
+    std::string path, title;
+    std::vector<ProseBlock> intro;  // the text before the first step, parsed once
     std::vector<LessonStep> steps;
 };
 
@@ -78,10 +80,6 @@ std::string findLesson(const std::string& nameOrPath);
 // Renders every step headlessly (each named view as PNG) and writes DIR/index.html with the text and the
 // images. `size` (if non-zero) overrides every step's image size. Checks that every named view exists.
 void exportLesson(const Lesson& lesson, const std::string& folder, glm::ivec2 size = glm::ivec2(0));
-
-// Minimal Markdown to HTML for lesson prose: paragraphs, #/##/### headings, `code`, *em*, **strong**,
-// "- " lists and four-space indented lines as preformatted text; everything else is escaped text.
-std::string markdownToHtml(const std::string& markdown);
 
 // "substeps over 2 s", "light orbit over 4 s", or empty.
 std::string describeAnimation(const LessonAnimation& animation);

@@ -3,6 +3,7 @@
 #include <md4c.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cstdlib>
 
 #include "report/text_output.h"
@@ -156,6 +157,27 @@ std::vector<ProseBlock> parseProse(const std::string& markdown) {
     for (ProseBlock& block : b.blocks)
         if (!block.spans.empty()) out.push_back(std::move(block));
     return out;
+}
+
+std::vector<ProseSpan> parseLine(const std::string& text) {
+    // A leading list or heading marker is escaped, so that CommonMark reads the line as a paragraph.
+    std::string line = text;
+    const std::size_t start = line.find_first_not_of(' ');
+    if (start != std::string::npos) {
+        std::size_t marker = start;
+        while (marker < line.size() && std::isdigit(static_cast<unsigned char>(line[marker]))) ++marker;
+        const bool numbered = marker > start && marker < line.size() && (line[marker] == '.' || line[marker] == ')');
+        const char c = line[start];
+        const bool bullet = (c == '-' || c == '+' || c == '*') && (start + 1 == line.size() || line[start + 1] == ' ');
+        if (numbered || bullet || c == '#' || c == '>') {
+            const std::size_t at = numbered ? marker : start;
+            line = line.substr(0, at) + "\\" + line.substr(at);
+        }
+    }
+    std::vector<ProseSpan> spans;
+    for (const ProseBlock& b : parseProse(line))
+        for (const ProseSpan& s : b.spans) spans.push_back(s);
+    return spans;
 }
 
 std::string proseHtml(const std::vector<ProseBlock>& blocks) {

@@ -27,6 +27,10 @@ struct ProseBlock {
 // however indented, are one item.
 std::vector<ProseBlock> parseProse(const std::string& markdown);
 
+// One line of text (a step's title, a state line) as styled spans: its inline Markdown parsed, but never a
+// block of its own: "1. Rectification" keeps its number (not a list item), "# 3" its '#'.
+std::vector<ProseSpan> parseLine(const std::string& line);
+
 // The blocks as HTML: <p>, <h2>.. (a '#' heading is h2: the page's title is h1), <ul><li>, <pre>, with
 // <code>, <em> and <strong> inline; text escaped.
 std::string proseHtml(const std::vector<ProseBlock>& blocks);

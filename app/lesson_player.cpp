@@ -380,7 +380,7 @@ void LessonPlayer::draw(const LessonHost& host, viz::ui::Context& ui, DrawList& 
     dl.pushClip(prose);
     // The first step follows the lesson's introduction.
     float introHeight = 0.0f;
-    if (mStep == 0 && mLesson->intro.find_first_not_of(" \t\r\n") != std::string::npos) {
+    if (mStep == 0 && !mLesson->intro.empty()) {
         introHeight = drawLessonProse(dl, mLesson->intro, {left, prose.min.y - mScroll}, width - 6.0f * scale, scale) + 0.5f * line;
         dl.rect({{left, prose.min.y - mScroll + introHeight}, {left + width, prose.min.y - mScroll + introHeight + std::max(1.0f, scale)}}, kRule);
         introHeight += 0.5f * line;

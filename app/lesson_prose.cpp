@@ -57,28 +57,6 @@ std::vector<Word> wordsOf(const std::vector<ProseSpan>& spans, SpanStyle base) {
     return words;
 }
 
-// A single line's words: its inline Markdown parsed like prose. A line is one paragraph whatever it starts
-// with: a step title "1. Rectification" is not a list, "# 3" not a heading (the marker is escaped).
-std::vector<Word> lineWords(const std::string& text, SpanStyle base) {
-    std::string line = text;
-    const std::size_t start = line.find_first_not_of(' ');
-    if (start != std::string::npos) {
-        std::size_t marker = start;
-        while (marker < line.size() && std::isdigit(static_cast<unsigned char>(line[marker]))) ++marker;
-        const bool numbered = marker > start && marker < line.size() && (line[marker] == '.' || line[marker] == ')');
-        const char c = line[start];
-        const bool bullet = (c == '-' || c == '+' || c == '*') && (start + 1 == line.size() || line[start + 1] == ' ');
-        if (numbered || bullet || c == '#' || c == '>') {
-            const std::size_t at = numbered ? marker : start;
-            line = line.substr(0, at) + "\\" + line.substr(at);
-        }
-    }
-    std::vector<ProseSpan> spans;
-    for (const ProseBlock& b : parseProse(line))
-        for (const ProseSpan& s : b.spans) spans.push_back(s);
-    return wordsOf(spans, base);
-}
-
 glm::vec4 colourOf(SpanStyle s) {
     switch (s) {
         case SpanStyle::Code: return kCode;
@@ -135,17 +113,17 @@ float flowWords(DrawList* dl, const viz::ui::FontAtlas& font, const std::vector<
 }  // namespace
 
 float drawLessonText(DrawList& dl, const std::string& text, SpanStyle style, glm::vec2 at, float width, float scale) {
-    return flowWords(&dl, dl.font(), lineWords(text, style), at, 0.0f, 0.0f, width, scale);
+    return flowWords(&dl, dl.font(), wordsOf(parseLine(text), style), at, 0.0f, 0.0f, width, scale);
 }
 
-float drawLessonProse(DrawList& dl, const std::string& markdown, glm::vec2 at, float width, float scale) {
+float drawLessonProse(DrawList& dl, const std::vector<ProseBlock>& prose, glm::vec2 at, float width, float scale) {
     const viz::ui::FontAtlas& font = dl.font();
     const float line = font.lineHeight(), gap = 0.45f * line;
     const float bulletIndent = 1.2f * font.measure("M");
     float y = 0.0f;
     ProseBlock::Kind previous = ProseBlock::Kind::Paragraph;
     bool first = true;
-    for (const ProseBlock& b : parseProse(markdown)) {
+    for (const ProseBlock& b : prose) {
         // A gap between blocks; half of one between the items of a list.
         if (!first) y += b.kind == ProseBlock::Kind::Item && previous == ProseBlock::Kind::Item ? 0.5f * gap : gap;
         first = false;

@@ -27,7 +27,8 @@ inline constexpr glm::vec4 kRule{0.30f, 0.32f, 0.36f, 1.0f};
 float drawLessonText(viz::ui::DrawList& dl, const std::string& text, SpanStyle style, glm::vec2 at, float width,
                      float scale);
 
-// Draws `markdown` from `at` (top left) within `width` pixels; returns the height it took.
-float drawLessonProse(viz::ui::DrawList& dl, const std::string& markdown, glm::vec2 at, float width, float scale);
+// Draws parsed prose from `at` (top left) within `width` pixels; returns the height it took.
+float drawLessonProse(viz::ui::DrawList& dl, const std::vector<ProseBlock>& prose, glm::vec2 at, float width,
+                      float scale);
 
 }  // namespace airlight

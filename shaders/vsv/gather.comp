@@ -63,6 +63,13 @@ vec3 runAirlight(GpuLight L, RayLightGeometry geo, vec3 w, float ta, float tb) {
     return angular * pointSegment(geo.tP, geo.h, ta, tb, uSigmaS, uSigmaT, uG, 1.0);
 }
 
+// This light's airlight added to the pixel's (overwritten for the first light), and its visibility record.
+void writePixel(ivec2 texel, vec3 airlight, vec4 visibility) {
+    vec4 previous = uAccumulate != 0 ? imageLoad(uAirlight, texel) : vec4(0.0);
+    imageStore(uAirlight, texel, vec4(previous.rgb + airlight, 1.0));
+    imageStore(uVisibility, texel, visibility);
+}
+
 void main() {
     ivec2 texel = ivec2(gl_GlobalInvocationID.xy);
     if (any(greaterThanEqual(texel, uSize))) return;
@@ -98,9 +105,7 @@ void main() {
         else  // the eye's own visibility (the eye is at the origin)
             v = shadowVisibilityMedium(L, vec3(0.0));
         vec3 lit = v * runAirlight(L, geo, w, 0.0, d);
-        vec4 previous = uAccumulate != 0 ? imageLoad(uAirlight, texel) : vec4(0.0);
-        imageStore(uAirlight, texel, vec4(previous.rgb + lit, 1.0));
-        imageStore(uVisibility, texel, vec4(v, shadowVisibility(L, d * w), float(ia), -1.0));
+        writePixel(texel, lit, vec4(v, shadowVisibility(L, d * w), float(ia), -1.0));
         return;
     }
     if (towardCell || awayCell) direct = true;
@@ -123,9 +128,7 @@ void main() {
 #ifndef COMBINE_EXACT
         lit = f * unlit;  // the factorisation, with the fraction weighted by airlight
 #endif
-        vec4 previous = uAccumulate != 0 ? imageLoad(uAirlight, texel) : vec4(0.0);
-        imageStore(uAirlight, texel, vec4(previous.rgb + lit, 1.0));
-        imageStore(uVisibility, texel, vec4(f, shadowVisibility(L, d * w), float(ia), -1.0));
+        writePixel(texel, lit, vec4(f, shadowVisibility(L, d * w), float(ia), -1.0));
         return;
     }
 
@@ -189,7 +192,5 @@ void main() {
         surfaceV = litFractionFast(s0, s1, k0 & 127, wTheta, wPhi);
     }
 
-    vec4 previous = uAccumulate != 0 ? imageLoad(uAirlight, texel) : vec4(0.0);
-    imageStore(uAirlight, texel, vec4(previous.rgb + sum, 1.0));
-    imageStore(uVisibility, texel, vec4(fraction, surfaceV, float(ia), float(j0)));
+    writePixel(texel, sum, vec4(fraction, surfaceV, float(ia), float(j0)));
 }

@@ -14,7 +14,7 @@ namespace {
 float height(const std::string& markdown, float width) {
     static const viz::ui::FontAtlas font = viz::ui::FontAtlas::bake(viz::ui::FontAtlas::kDefaultFontPath, 14.0f);
     viz::ui::DrawList dl(font);
-    return drawLessonProse(dl, markdown, {0.0f, 0.0f}, width, 1.0f);
+    return drawLessonProse(dl, parseProse(markdown), {0.0f, 0.0f}, width, 1.0f);
 }
 
 TEST(LessonProse, AListItemsContinuationLinesFlowWithIt) {

@@ -10,7 +10,6 @@
 #include <atomic>
 #include <chrono>
 #include <cstdio>
-#include <mutex>
 #include <thread>
 
 namespace viz::reference {
@@ -58,7 +57,6 @@ void parallelRows(int rows, int threads, const std::function<void(int)>& row, Pr
     const auto start = std::chrono::steady_clock::now();
     std::atomic<int> done{0};
     std::atomic<long long> lastDrawn{-1000};  // ms since start of the last progress line
-    std::mutex drawing;
     const bool show = progress && progress->enabled();
     arena.execute([&] {
         tbb::parallel_for(tbb::blocked_range<int>(0, rows, 1), [&](const tbb::blocked_range<int>& range) {
@@ -66,13 +64,12 @@ void parallelRows(int rows, int threads, const std::function<void(int)>& row, Pr
                 row(y);
                 const int finished = done.fetch_add(1) + 1;
                 if (!show) continue;
-                // A few times a second, by whichever thread finishes a row then and finds the line free.
+                // At most four times a second: the thread that moves lastDrawn on draws the line.
                 const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
                 const long long ms = (long long)(elapsed * 1000.0);
                 long long last = lastDrawn.load();
                 if (ms - last < 250 || !lastDrawn.compare_exchange_strong(last, ms)) continue;
-                if (std::unique_lock<std::mutex> lock(drawing, std::try_to_lock); lock.owns_lock())
-                    progress->update(label, double(finished) / rows, elapsed);
+                progress->update(label, double(finished) / rows, elapsed);
             }
         });
     });
