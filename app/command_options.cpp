@@ -50,6 +50,17 @@ CommonOptions parseOptions(Args& args, const std::string& command, const std::st
         else if (flag == "--quiet") o.quiet = true;
         else if (flag == "--no-default-light") o.request.load.defaultLight = false;
         else if (flag == "--strict") o.strict = true;
+        else if (flag == "--count-work") o.countWork = true;
+        else if (flag == "--count-pixel") {
+            const std::string text = args.next(flag);
+            const std::size_t comma = text.find(',');
+            if (comma == std::string::npos) throw InputError("--count-pixel expects X,Y (column, row from the top), got '" + text + "'");
+            const double x = parseNumber(text.substr(0, comma), flag), y = parseNumber(text.substr(comma + 1), flag);
+            if (x != std::floor(x) || y != std::floor(y) || x < 0 || y < 0)
+                throw InputError("--count-pixel expects two whole numbers X,Y from 0, got '" + text + "'");
+            o.countPixel = glm::ivec2(int(x), int(y));
+            o.countWork = true;
+        }
         else if (flag == "--screenshot") o.screenshot = args.next(flag);
         else if (flag == "--frames") {
             const double frames = parseNumber(args.next(flag), flag);

@@ -2,7 +2,10 @@
 // and checks them alike.
 #pragma once
 
+#include <optional>
 #include <string>
+
+#include <glm/vec2.hpp>
 
 #include "cli_args.h"
 #include "render_job.h"
@@ -19,6 +22,8 @@ struct CommonOptions {
     std::string exposure;
     bool quiet = false;
     bool strict = false;  // render: NaN/Inf/negative pixels are exit 3 instead of a warning
+    bool countWork = false;                 // render --count-work: a counting run (gl/work_counters.h)
+    std::optional<glm::ivec2> countPixel;   // render --count-pixel X,Y: only that pixel (row 0 at the top)
     std::string screenshot;  // gui only
     int frames = 1;
     std::string state;  // gui only

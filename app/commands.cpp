@@ -7,11 +7,13 @@
 #include <filesystem>
 #include <iostream>
 #include <limits>
+#include <optional>
 #include <string>
 
 #include "command_options.h"
 #include "core/error.h"
 #include "core/image_io.h"
+#include "gl/work_counters.h"
 #include "gui.h"
 #include "lesson.h"
 #include "platform/window_glfw.h"
@@ -48,6 +50,11 @@ constexpr const char* kRenderHelp = R"(usage: airlight render --scene S --techni
                      negative pixels; without it they are a warning on stderr
   --no-default-light a .gltf/.glb without a light is an error (default: a spot light is added above
                      the model, with a note)
+  --count-work       a counting run: every shader counts its work (shadow-map lookups and texels, ray
+                     samples, closed-form segments, tree nodes, fragments, voxels; units no GPU
+                     changes) and each stage's counts are printed after the timing, which then
+                     means nothing; the image is the same
+  --count-pixel X,Y  a counting run for pixel X,Y alone (row 0 at the top; per-pixel stages only)
 )";
 
 constexpr const char* kListHelp = R"(usage: airlight list scenes | techniques | stages T | params T
@@ -91,6 +98,31 @@ Opens the window: the final frame beside one intermediate. Its keys are listed b
 
 void printNotes(const viz::scene::Scene& scene) {
     for (const std::string& note : scene.notes) std::fprintf(stderr, "airlight: note: %s\n", note.c_str());
+}
+
+// A counting run's work per stage: the counters that are not zero, then the whole frame's.
+void printWork(const viz::FrameOutput& out, const std::optional<glm::ivec2>& pixel) {
+    if (pixel)
+        std::printf("work of pixel %d,%d (counting run):\n", pixel->x, pixel->y);
+    else
+        std::printf("work (counting run):\n");
+    viz::WorkCounts total;
+    for (const auto& s : out.timing.stages) {
+        std::printf("  %-26s", s.stage.c_str());
+        bool any = false;
+        total.resize(std::max(total.size(), s.work.size()), 0);
+        for (std::size_t c = 0; c < s.work.size(); ++c) {
+            total[c] += s.work[c];
+            if (s.work[c] == 0) continue;
+            std::printf(" %s %llu", viz::gl::WorkCounters::name(int(c)), static_cast<unsigned long long>(s.work[c]));
+            any = true;
+        }
+        std::printf(any ? "\n" : " (nothing counted)\n");
+    }
+    std::printf("  %-26s", "total");
+    for (std::size_t c = 0; c < total.size(); ++c)
+        std::printf(" %s %llu", viz::gl::WorkCounters::name(int(c)), static_cast<unsigned long long>(total[c]));
+    std::printf("\n");
 }
 
 void printTiming(const viz::FrameOutput& out) {
@@ -152,7 +184,7 @@ int runRender(Args& args) {
         return 0;
     }
     CommonOptions o = parseOptions(
-        args, "render", " --scene --technique --size --out --layer --layer-index --set --preset --stop-after --exposure --quiet --no-default-light --strict ");
+        args, "render", " --scene --technique --size --out --layer --layer-index --set --preset --stop-after --exposure --quiet --no-default-light --strict --count-work --count-pixel ");
     if (o.out.empty()) throw InputError("render needs --out F.exr or --out F.png");
     const std::string ext = viz::extensionOf(o.out);
     if (ext != ".exr" && ext != ".png") throw InputError("--out '" + o.out + "' must end in .exr or .png");
@@ -161,6 +193,13 @@ int runRender(Args& args) {
         throw InputError("--out '" + o.out + "': folder '" + outPath.parent_path().string() + "' does not exist");
 
     o.request.views = {o.layer};
+    if (o.countPixel && (o.countPixel->x >= o.request.width || o.countPixel->y >= o.request.height))
+        throw InputError("--count-pixel " + std::to_string(o.countPixel->x) + "," + std::to_string(o.countPixel->y) +
+                         " lies outside the " + std::to_string(o.request.width) + "x" + std::to_string(o.request.height) +
+                         " image");
+    // Before the job compiles anything: every program of a counting run counts.
+    viz::gl::WorkCounters::setEnabled(o.countWork);
+    if (o.countPixel) viz::gl::WorkCounters::countPixel(glm::ivec2(o.countPixel->x, o.request.height - 1 - o.countPixel->y));
     RenderJob job(o.request);
     if (!o.quiet) printNotes(job.scene());
     const viz::FrameOutput& out = job.run();
@@ -175,6 +214,7 @@ int runRender(Args& args) {
     writeLayer(job, o.layer, o.layerIndex, o.out, o.exposure);
     if (!o.quiet) {
         printTiming(out);
+        if (o.countWork) printWork(out, o.countPixel);
         std::printf("wrote %s (%s, %dx%d)\n", o.out.c_str(), o.layer.c_str(), o.request.width, o.request.height);
     }
     return 0;

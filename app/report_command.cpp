@@ -19,6 +19,7 @@
 #include "core/image_io.h"
 #include "debug/technique.h"
 #include "gl/gl.h"
+#include "gl/work_counters.h"
 #include "platform/context_egl.h"
 #include "plot/plot.h"
 #include "report/error_images.h"
@@ -224,8 +225,9 @@ viz::report::PlanSaving measurePlanSaving(const std::string& id, const viz::scen
     viz::FrameInput in{&scene, o.width, o.height, planned, -1};
     viz::FrameInput inForced{&scene, o.width, o.height, forced, -1};
     // Two blocks, each after its own warm-up: a technique that keeps one compiled program at a time
-    // would otherwise recompile on every alternation and time its compiler. --quick: 3 runs of each.
-    const int runs = o.quick ? std::min(o.runs, 3) : o.runs;
+    // would otherwise recompile on every alternation and time its compiler. At least 7 runs of each (the
+    // cheapest setting is cheap), so that the ranges the page compares are not two or three samples.
+    const int runs = std::max(o.runs, 7);
     std::vector<double> plannedTimes, forcedTimes;
     technique->run(in);
     for (int r = 0; r < runs; ++r) plannedTimes.push_back(technique->run(in).timing.totalMilliseconds());
@@ -233,7 +235,21 @@ viz::report::PlanSaving measurePlanSaving(const std::string& id, const viz::scen
     for (int r = 0; r < runs; ++r) forcedTimes.push_back(technique->run(inForced).timing.totalMilliseconds());
     saving.plannedMilliseconds = median(plannedTimes);
     saving.forcedMilliseconds = median(forcedTimes);
+    saving.plannedRuns = plannedTimes;
+    saving.forcedRuns = forcedTimes;
     return saving;
+}
+
+// A counting run's work summed over its stages, named by counter.
+std::vector<std::pair<std::string, std::uint64_t>> namedWork(const viz::FrameOutput& out) {
+    viz::WorkCounts total;
+    for (const viz::StageTiming& s : out.timing.stages) {
+        total.resize(std::max(total.size(), s.work.size()), 0);
+        for (std::size_t c = 0; c < s.work.size(); ++c) total[c] += s.work[c];
+    }
+    std::vector<std::pair<std::string, std::uint64_t>> named;
+    for (std::size_t c = 0; c < total.size(); ++c) named.push_back({viz::gl::WorkCounters::name(int(c)), total[c]});
+    return named;
 }
 
 struct SweepPoint {
@@ -289,7 +305,7 @@ int runReportCommand(Args& args, const std::string& commandLine) {
     std::vector<viz::report::ReportRow> rows;
     std::vector<viz::report::ScenePage> pages;
     std::vector<viz::report::PlanSaving> savings;
-    Progress progress(int(scenes.size() * (sweep.size() + 1 + o.techniques.size() + std::size_t(temporalSteps))));
+    Progress progress(int(scenes.size() * (2 * sweep.size() + 1 + o.techniques.size() + std::size_t(temporalSteps))));
     int done = 0;
     for (std::size_t si = 0; si < scenes.size(); ++si) {
         const viz::scene::Scene& scene = scenes[si];
@@ -316,6 +332,7 @@ int runReportCommand(Args& args, const std::string& commandLine) {
         // Keep the most accurate image of each technique for the page.
         std::map<std::string, std::pair<std::size_t, viz::Image>> bestImage;
         std::unique_ptr<viz::Technique> technique;
+        const std::size_t firstRow = rows.size();
         for (const SweepPoint& point : sweep) {
             progress.show(done, sceneName + " | " + point.technique + " | " + point.setting.label);
             if (!technique || technique->id() != point.technique) {
@@ -348,6 +365,22 @@ int runReportCommand(Args& args, const std::string& commandLine) {
             ++done;
         }
         technique.reset();
+        // The work of every setting (gl/work_counters.h): one counting run each, in an instance per
+        // technique made while counting is on, so that every program it compiles counts.
+        viz::gl::WorkCounters::setEnabled(true);
+        for (std::size_t k = 0; k < sweep.size(); ++k) {
+            const SweepPoint& point = sweep[k];
+            progress.show(done, sceneName + " | " + point.technique + " | work of " + point.setting.label);
+            if (!technique || technique->id() != point.technique) {
+                technique.reset();
+                technique = viz::makeTechnique(point.technique);
+            }
+            viz::FrameInput in{&scene, o.width, o.height, viz::completeSettings(*technique, point.setting.settings), -1};
+            rows[firstRow + k].work = namedWork(technique->run(in));
+            ++done;
+        }
+        technique.reset();
+        viz::gl::WorkCounters::setEnabled(false);
         for (const std::string& id : o.techniques) {
             progress.show(done++, sceneName + " | " + id + " | plan savings");
             if (viz::findParam(*viz::makeTechnique(id), "force_features"))
@@ -418,12 +451,23 @@ int runReportCommand(Args& args, const std::string& commandLine) {
     viz::report::writeJson((dir / "results.json").string(), meta, rows, savings);
     viz::report::writeHtml((dir / "index.html").string(), meta, rows, pages, savings);
 
-    for (const viz::report::ScenePage& page : pages)
-        for (const std::string& t : o.techniques)
-            if (const auto* best = viz::report::bestSpeedup(rows, page.scene, t); best && t != "raymarch")
-                std::printf("%-14s %-10s %s than raymarch at error %.3g (%s)\n", page.scene.c_str(), t.c_str(),
-                            viz::report::speedupPhrase(*best->speedup).c_str(), best->error.relativeL2,
-                            best->setting.c_str());
+    // Every series (a technique, or its paper preset) against raymarch at each error target.
+    std::vector<std::string> series;
+    for (const auto& r : rows)
+        if (std::find(series.begin(), series.end(), r.technique) == series.end()) series.push_back(r.technique);
+    if (std::find(o.techniques.begin(), o.techniques.end(), "raymarch") != o.techniques.end())
+        for (const viz::report::ScenePage& page : pages)
+            for (const std::string& t : series)
+                for (double target : viz::report::errorTargets())
+                    if (t != "raymarch")
+                        std::printf("%-14s %-16s at %4.3g %% error: %s; %s\n", page.scene.c_str(), t.c_str(), 100.0 * target,
+                                    viz::report::targetSpeedupPhrase(viz::report::targetSpeedup(rows, page.scene, t, target))
+                                        .c_str(),
+                                    viz::report::targetSpeedupPhrase(
+                                        viz::report::targetSpeedup(rows, page.scene, t, target, "raymarch",
+                                                                   viz::report::Measure::Work),
+                                        "raymarch", viz::report::Measure::Work)
+                                        .c_str());
     if (o.temporal)
         for (const viz::report::ScenePage& page : pages) {
             std::vector<viz::report::TechniqueRank> ranks = viz::report::rankTechniques(rows, page.scene);

@@ -3,14 +3,16 @@
 # scripts/bundle.sh (build/bundle/airlight.tar.xz) and the GLVND loader packages in .gl/ travel with the
 # working tree. The packages are downloaded on a Debian machine, without installing them, with
 #   mkdir -p .gl && (cd .gl && apt-get download libegl1 libglvnd0 libopengl0 libgl1 libglx0 libgles2)
-# and unpacked here into / (the machine has the NVIDIA driver's own EGL vendor library). Writes everything into $OUT (default: gpu-out/) as
-# one archive, gpu.tar.gz, and prints a summary last.
-# Usage: scripts/gpu_measure.sh [SECONDS]   (a budget for the whole run, default 420)
-# Environment: SCENES (the bench's scenes, default all six), SIZES (its sizes, default 480x270,1920x1080),
-# REPORT_SCENES (default grate), REPORT_SIZE (default 320x240).
+# and unpacked here into / (the machine has the NVIDIA driver's own EGL vendor library). Writes everything
+# into $OUT (default: gpu-out/) as one archive, gpu.tar.gz, and prints a summary last.
+# Usage: scripts/gpu_measure.sh [SECONDS]   (a budget for the whole run, default 540)
+# Environment: SCENES (default all six), TECHNIQUES (default all six GPU techniques), SIZES (the size
+# axis, default 480x270,1920x1080), REPORT_SCENES (default colonnade), REPORT_SIZE (default 1920x1080).
+# Each scene and technique is its own bench run with its own time limit, so that one slow pair leaves
+# the others' figures.
 set -uo pipefail
 cd "$(dirname "$0")/.."
-budget="${1:-420}"
+budget="${1:-540}"
 out="${OUT:-$PWD/gpu-out}"
 mkdir -p "$out"
 work=/tmp/airlight-gpu
@@ -19,6 +21,11 @@ start=$(date +%s)
 left() { echo $(( budget - ($(date +%s) - start) )); }
 log="$work/log.txt"
 say() { echo "$@" | tee -a "$log"; }
+pack() {
+    (cd "$work" && find . -path ./cache -prune -o -path ./airlight -prune -o -type f \( -name '*.csv' -o -name '*.html' \
+        -o -name '*.txt' -o -name '*.err' -o -name '*.json' -o -name '*.png' \) -print |
+        tar czf "$out/gpu.tar.gz" -T -) 2>/dev/null
+}
 
 if ls .gl/*.deb >/dev/null 2>&1; then
     for f in .gl/*.deb; do dpkg -x "$f" /; done
@@ -33,29 +40,56 @@ export AIRLIGHT_CACHE_DIR="$work/cache"
 if [ -d gpu-cache ]; then cp -r gpu-cache "$AIRLIGHT_CACHE_DIR"; fi
 
 { nvidia-smi --query-gpu=name,driver_version,memory.total,clocks.sm,clocks.max.sm --format=csv; nproc; } >"$work/machine.txt" 2>&1
-say "== machine"; cat "$work/machine.txt" | tee -a "$log"
+say "== machine"; tee -a "$log" <"$work/machine.txt"
+# The SM clock every 200 ms: the GPU lowers it while the CPU side (the reference, read-backs) keeps it
+# idle, and every GPU time depends on it. The log's lines carry the time of day to match them up.
+nvidia-smi --query-gpu=timestamp,clocks.sm,utilization.gpu --format=csv -lms 200 >"$work/clocks.csv" 2>/dev/null &
+sampler=$!
+say() { echo "$(date +%T) $*" | tee -a "$log"; }
 
-# 1. Per-stage times of every technique on every built-in scene, default settings, at two image sizes
-#    up to 1920x1080 (SIZES; the two also give a scaling exponent). One run per scene, so that a scene
-#    that runs out of time leaves the others' files.
+# 0. Plots drawn off-screen: one tiny bench in a fresh process with the GL debug output on, and a count
+#    of the pixels of each plot that are not the background.
+say "== plot check ($(left) s left)"
+AIRLIGHT_GL_DEBUG=1 timeout 40 "$A" bench --scenes grate --techniques raymarch --axes size --sizes 160x120,320x240 --runs 1 \
+    --out "$work/plotcheck" >"$work/plotcheck.txt" 2>"$work/plotcheck.err"
+say "exit $?"
+python3 - "$work/plotcheck" <<'PY' 2>&1 | tee -a "$log"
+import sys, pathlib
+from PIL import Image
+for p in sorted(pathlib.Path(sys.argv[1]).glob('*.png')):
+    im = Image.open(p).convert('RGB')
+    px = im.getdata()
+    print(p.name, im.size, 'pixels not white:', sum(1 for c in px if c != (255, 255, 255)))
+PY
+grep -v '^#' "$work/plotcheck.err" | sort | uniq -c | sort -rn | head -n 12 | tee -a "$log"
+
+# 1. Per-stage times of every technique on every built-in scene, default settings, at two image sizes.
 sizes="${SIZES:-480x270,1920x1080}"
 scenes="${SCENES:-colonnade grate forest terrain stained-glass tv-room}"
-count=$(echo $scenes | wc -w)
+techniques="${TECHNIQUES:-raymarch slices polyvol minmax vsv ivsv}"
 for scene in $scenes; do
-    say "== bench size $scene ($(left) s left)"
-    timeout $(( budget * 66 / 100 / count )) "$A" bench --scenes "$scene" --axes size --sizes "$sizes" --runs 3 \
-        --out "$work/bench-size-$scene" >"$work/bench-size-$scene.txt" 2>"$work/bench-size-$scene.err"
-    say "exit $?"
+    for t in $techniques; do
+        [ "$(left)" -gt 200 ] || { say "skip $scene $t: too little time left"; continue; }
+        cap=30; case "$t" in minmax|polyvol) cap=50 ;; esac
+        timeout $cap "$A" bench --scenes "$scene" --techniques "$t" --axes size --sizes "$sizes" --runs 3 \
+            --out "$work/bench-$scene-$t" >"$work/bench-$scene-$t.txt" 2>"$work/bench-$scene-$t.err"
+        say "bench $scene $t exit $? ($(left) s left)"
+    done
+    pack
 done
-# 2. Error against time (the reference on the CPU, cached on disk): speed-ups at equal error.
+# 2. Error against time at the report's size (the reference on the CPU's threads, cached on disk).
 say "== report ($(left) s left)"
-timeout $(( $(left) - 20 )) "$A" report --scenes "${REPORT_SCENES:-grate}" --size "${REPORT_SIZE:-320x240}" --quick --runs 3 \
+timeout $(( $(left) - 70 )) "$A" report --scenes "${REPORT_SCENES:-colonnade}" --size "${REPORT_SIZE:-1920x1080}" --quick --runs 3 \
     --out "$work/report" >"$work/report.txt" 2>"$work/report.err"
 say "exit $?"
-(cd "$work" && find . -path ./cache -prune -o -path ./airlight -prune -o -type f \( -name '*.csv' -o -name '*.html' \
-    -o -name '*.txt' -o -name '*.err' -o -name '*.json' -o -name '*-size*.png' -o -name '*plot.png' \) -print |
-    tar czf "$out/gpu.tar.gz" -T -) 2>/dev/null
+pack
+# 3. The bench's own quick run (grate and tv-room, small sizes).
+say "== bench --quick ($(left) s left)"
+timeout $(( $(left) - 15 )) "$A" bench --quick --out "$work/bench-quick" >"$work/bench-quick.txt" 2>"$work/bench-quick.err"
+say "exit $?"
+pack
+kill "$sampler" 2>/dev/null
+pack
 say "== summary"
-grep -h 'total ~\|faster\|slower\|wrote' "$work"/bench-*.txt "$work"/report.txt 2>/dev/null | tail -n 70
-tail -n 2 "$work"/bench-*.err 2>/dev/null | tail -n 24
-grep -v '^#\|^!!\|^[A-Z]*[ .]\|^ *$' "$work/report.err" | head -n 8
+grep -h 'faster\|slower' "$work"/report.txt 2>/dev/null | head -n 20
+tail -n 3 "$work"/report.err "$work"/bench-quick.err 2>/dev/null

@@ -10,6 +10,7 @@
 
 #include "common/constants.glsl"
 #include "common/sort.glsl"
+#include "common/work_counters.glsl"
 
 // ---- Precision-dependent knobs (Precision<float> in airlight.h) ---------------------------------------
 const int AIRLIGHT_NODES = 8;
@@ -143,6 +144,7 @@ float pointPanel(float a, float b, float y0, float nu, float g) {
 // derivation, the h floor for rays through the light, and the quadrature windows.
 float pointSegment(float tP, float h, float x0, float x1, float sigma_s, float sigma_t, float g, float I0) {
     if (!(x1 > x0) || !(sigma_s > 0.0) || !(I0 > 0.0)) return 0.0;
+    WORK_COUNT(kWorkClosedFormSegments, 1);
 
     // Positions relative to the foot point P; s1 = +inf for the sky.
     float s0 = x0 - tP;
@@ -239,6 +241,7 @@ float naiveSunF(float u, float v) {
 // exp(-Tsv cos gamma) overflows for a light far behind the ray, and gamma = 0 (a ray through the light)
 // gives inf * 0. The phase function is isotropic whatever g is: the closed form has no HG version.
 float pointSegmentNaive(vec3 D, vec3 w, float x0, float x1, float sigma_s, float sigma_t, float I0) {
+    WORK_COUNT(kWorkClosedFormSegments, 1);
     float Dsv = length(D);
     float gamma = acos(clamp(dot(D, w) / Dsv, -1.0, 1.0));
     float Tsv = sigma_t * Dsv;
@@ -255,6 +258,7 @@ float pointSegmentNaive(vec3 D, vec3 w, float x0, float x1, float sigma_s, float
 // int_x0^x1 sigma_s p(cosTheta) E exp(-sigma_t x) dx; sigma_t -> 0 and x1 = +inf via expm1.
 float directionalSegment(float cosTheta, float x0, float x1, float sigma_s, float sigma_t, float g, float E) {
     if (!(x1 > x0) || !(sigma_s > 0.0) || !(E > 0.0)) return 0.0;
+    WORK_COUNT(kWorkClosedFormSegments, 1);
     float length_ = x1 - x0;
     float tau = sigma_t * length_;
     float pathIntegral = tau > 0.0 ? -stableExpm1(-tau) / sigma_t : length_;

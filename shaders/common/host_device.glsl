@@ -21,6 +21,7 @@ using mat4 = glm::mat4;
 // ---- binding points (fixed; techniques use SSBO bindings and texture units from kFirst* on) ----
 VIZ_HD_CONST kBindingMaterials = 0;         // SSBO: GpuMaterial materials[]
 VIZ_HD_CONST kBindingLights = 1;            // SSBO: GpuLight lights[] (std430)
+VIZ_HD_CONST kBindingWorkCounters = 3;      // SSBO: work counters, only with COUNT_WORK (common/work_counters.glsl)
 VIZ_HD_CONST kFirstFreeSsboBinding = 4;
 
 // The same light buffer is also bound as a uniform block (std140 and std430 agree for GpuLight: every
@@ -38,6 +39,17 @@ VIZ_HD_CONST kUnitShadow2D = 2;             // sampler2DArray, R32F: spot and di
 VIZ_HD_CONST kUnitShadowCube = 3;           // sampler2DArray, R32F: point-light cubes, 6 layers each
 VIZ_HD_CONST kUnitShadowCubeVpl = 4;        // sampler2DArray, R32F: VPL cubes (smaller), 6 layers each
 VIZ_HD_CONST kFirstFreeTextureUnit = 8;
+
+// ---- work counters (gl/work_counters.h): what a run costs in units no GPU changes ----
+VIZ_HD_CONST kWorkShadowLookups = 0;        // shadow-map visibility queries (one per point and light)
+VIZ_HD_CONST kWorkShadowTexels = 1;         // shadow-map texels fetched by those queries
+VIZ_HD_CONST kWorkRaySamples = 2;           // brute-force ray samples (integrand evaluations of a march)
+VIZ_HD_CONST kWorkClosedFormSegments = 3;   // closed-form airlight integrals of a lit interval
+VIZ_HD_CONST kWorkTreeNodes = 4;            // min-max tree nodes visited (minmax)
+VIZ_HD_CONST kWorkFragments = 5;            // fragments shaded by a technique's own fragment shaders
+VIZ_HD_CONST kWorkVoxelsWritten = 6;        // voxel words written (vsv, ivsv voxelization)
+VIZ_HD_CONST kWorkVoxelsRead = 7;           // voxel words read (vsv, ivsv scan and gather)
+VIZ_HD_CONST kWorkCounterCount = 8;
 
 // ---- light types (GpuLight::info.x) ----
 VIZ_HD_CONST kLightPoint = 0;

@@ -14,6 +14,7 @@
 
 #include "common/host_device.glsl"
 #include "common/lights.glsl"
+#include "common/work_counters.glsl"
 
 layout(binding = kUnitShadow2D) uniform sampler2DArray uShadow2D;
 layout(binding = kUnitShadowCube) uniform sampler2DArray uShadowCube;
@@ -48,6 +49,7 @@ float cubeLookup(sampler2DArray maps, int cube, vec3 d) {
     vec2 ndc = vec2(dot(right, d), dot(trueUp, d)) / dot(forward, d);
     ivec2 size = textureSize(maps, 0).xy;
     ivec2 texel = clamp(ivec2(floor((ndc * 0.5 + 0.5) * vec2(size))), ivec2(0), size - 1);
+    WORK_COUNT(kWorkShadowTexels, 1);
     return texelFetch(maps, ivec3(texel, 6 * cube + face), 0).r;
 }
 
@@ -70,6 +72,7 @@ float shadowStored2D(GpuLight L, vec2 ndc) {
     ivec2 c = clamp(ivec2(floor(f)), ivec2(0), size - 1);
     int layer = L.info.z;
     float s0 = texelFetch(uShadow2D, ivec3(c, layer), 0).r;
+    WORK_COUNT(kWorkShadowTexels, 1);
     if (!(s0 < L.shadow.y)) return s0;  // nothing rendered there
     vec2 offset = clamp(f - (vec2(c) + 0.5), vec2(-0.5), vec2(0.5));
     float corrected = s0;
@@ -79,6 +82,7 @@ float shadowStored2D(GpuLight L, vec2 ndc) {
         if (any(lessThan(lo, ivec2(0))) || any(greaterThanEqual(hi, size))) continue;
         float sl = texelFetch(uShadow2D, ivec3(lo, layer), 0).r;
         float sh = texelFetch(uShadow2D, ivec3(hi, layer), 0).r;
+        WORK_COUNT(kWorkShadowTexels, 2);
         if (!(sl < L.shadow.y && sh < L.shadow.y)) continue;
         float dl = s0 - sl, dh = sh - s0;
         if (abs(dh - dl) > kShadowSmoothTolerance * max(abs(dl), abs(dh)) + L.shadow.w) continue;
@@ -104,6 +108,7 @@ float shadowLitLimit2D(GpuLight L, vec2 ndc, float surfaceBias2D, out float stor
 float shadowVisibilityBiased(GpuLight L, vec3 p, float surfaceBias2D) {
     int layer = L.info.z;
     if (layer < 0) return 1.0;
+    WORK_COUNT(kWorkShadowLookups, 1);
     int type = L.info.x;
     float d = shadowDepth(L, p);
     float stored;
@@ -167,6 +172,7 @@ float shadowVisibilityMesh(GpuLight L, vec3 p) {
     if (layer < 0) return 1.0;
     int type = L.info.x;
     if (type != kLightSpot && type != kLightDirectional) return shadowVisibility(L, p);
+    WORK_COUNT(kWorkShadowLookups, 1);
     vec4 clip = L.shadowMatrix * vec4(p, 1.0);
     bool spot = type == kLightSpot;
     if (clip.w <= 0.0) return spot ? 0.0 : 1.0;
@@ -181,6 +187,7 @@ float shadowVisibilityMesh(GpuLight L, vec3 p) {
     ivec2 t[3] = ivec2[3](q, q + c1, q + c2);
     float s[3];
     for (int k = 0; k < 3; ++k) s[k] = texelFetch(uShadow2D, ivec3(t[k], layer), 0).r;
+    WORK_COUNT(kWorkShadowTexels, 3);
     if (!spot) {
         // Orthographic: world position is affine in ndc, so the surface depth is the barycentric mix.
         vec2 b = a.x >= a.y ? vec2(a.x - a.y, a.y) : vec2(a.x, a.y - a.x);  // weights of t[1], t[2]

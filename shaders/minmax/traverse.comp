@@ -41,6 +41,7 @@ vec3 march(GpuLight L, vec3 w, float d) {
     float dt = d / float(uMarchSamples);
     vec3 sum = vec3(0.0);
     for (int i = 0; i < uMarchSamples; ++i) {
+        WORK_COUNT(kWorkRaySamples, 1);
         float t = (float(i) + 0.5) * dt;
         vec3 x = t * w;
         float V = shadowVisibility(L, x);
@@ -62,6 +63,7 @@ vec3 marchGamma(GpuLight L, vec3 w, float beta, float d) {
     float sinBeta = sin(beta);
     vec3 sum = vec3(0.0);
     for (int i = 0; i < uMarchSamples; ++i) {
+        WORK_COUNT(kWorkRaySamples, 1);
         float gamma = (float(i) + 0.5) * step;
         float t = min(distanceAtGamma(beta, gamma), d);
         vec3 x = t * w;
@@ -200,6 +202,7 @@ vec3 lowRankResult(float beta) {
 
 vec3 integrateRun(GpuLight L, vec3 w, RayLightGeometry g, float beta, float c0, float c1, float cEnd, float d) {
 #ifdef INTEGRAND_SVD
+    WORK_COUNT(kWorkClosedFormSegments, 1);  // the run's integral: two prefix-table lookups per layer
     accumulateRun(c0, c1);
     return vec3(0.0);
 #else
@@ -212,6 +215,7 @@ vec2 treeNode(int node, int row) { return texelFetch(uTree, ivec2(node, row), 0)
 void main() {
     ivec2 texel = ivec2(gl_GlobalInvocationID.xy);
     if (any(greaterThanEqual(texel, uSize))) return;
+    WORK_PIXEL(texel);
     GpuLight L = gLights[uLight];
     vec3 w = pixelRay(texel);
     float d = texelFetch(uDistance, texel, 0).r;
@@ -252,6 +256,7 @@ void main() {
         if (uLinear) {
             for (int j = 0; j < uColumns && float(j) < end; ++j) {
                 visited += 1.0;
+                WORK_COUNT(kWorkTreeNodes, 1);
                 if (beta < treeNode(uColumns + j, row).r) {
                     if (runBegin < 0.0) runBegin = float(j);
                     runEnd = min(end, float(j + 1));
@@ -267,6 +272,7 @@ void main() {
             int lo = 0;
             do {
                 visited += 1.0;
+                WORK_COUNT(kWorkTreeNodes, 1);
                 vec2 mm = treeNode(node, row);
                 if (mm.x <= beta && beta < mm.y) {
                     node = node * 2;  // mixed: descend to the left child

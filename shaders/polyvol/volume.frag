@@ -32,6 +32,8 @@ layout(location = 2) out vec4 oNegative;
 layout(location = 3) out vec4 oCrossings;
 
 void main() {
+    WORK_PIXEL(gl_FragCoord.xy);
+    WORK_COUNT(kWorkFragments, 1);
     ivec2 texel = ivec2(gl_FragCoord.xy);
     vec3 w = fragmentRay(gl_FragCoord.xy);
     float d = texelFetch(uDistance, texel, 0).r;

@@ -46,6 +46,7 @@ float hashToUnit(uvec3 v) {
 void main() {
     ivec2 texel = ivec2(gl_GlobalInvocationID.xy);
     if (any(greaterThanEqual(texel, uSize))) return;
+    WORK_PIXEL(texel);
 
     vec3 w = pixelRay(texel);
     float d = texelFetch(uDistance, texel, 0).r;
@@ -66,6 +67,7 @@ void main() {
 #endif
         float t = span.x + (float(i) + u) * dt;
         vec3 x = t * w;
+        WORK_COUNT(kWorkRaySamples, 1);
 #ifdef SHADOW_LOOKUP_MESH
         float V = shadowVisibilityMesh(L, x);  // depth linear across the polyvol mesh's triangles
 #else

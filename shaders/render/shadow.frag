@@ -4,6 +4,8 @@
 // uLightDirection) for a directional light (uDirectional = 1). Light data come as uniforms rather than
 // from the light SSBO: one fewer buffer read per fragment. Input: eye-relative position (scene.vert).
 
+#include "common/work_counters.glsl"
+
 uniform vec3 uLightPosition;
 uniform vec3 uLightDirection;
 uniform int uDirectional;
@@ -16,5 +18,6 @@ flat in uint vMaterial;
 layout(location = 0) out float oDistance;
 
 void main() {
+    WORK_COUNT(kWorkFragments, 1);
     oDistance = uDirectional != 0 ? dot(vPosition, uLightDirection) : length(vPosition - uLightPosition);
 }

@@ -19,6 +19,8 @@ layout(location = 0) out float oDistance;
 layout(location = 1) out vec4 oRadiance;
 
 void main() {
+    WORK_PIXEL(gl_FragCoord.xy);
+    WORK_COUNT(kWorkFragments, 1);
     float dist = length(vPosition);
     if (dist > uZfar) discard;
     vec3 toEye = -vPosition / dist;

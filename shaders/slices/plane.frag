@@ -71,6 +71,8 @@ float visibility(GpuLight L, vec3 p) {
     float d = shadowDepth(L, p);
     float footprint = (L.info.x == kLightSpot ? d : 1.0) / float(size.x);
     float lit = 0.0;
+    WORK_COUNT(kWorkShadowLookups, 1);
+    WORK_COUNT(kWorkShadowTexels, 9);
     for (int j = -1; j <= 1; ++j)
         for (int i = -1; i <= 1; ++i) {
             ivec2 texel = clamp(centre + ivec2(i, j), ivec2(0), size - 1);
@@ -157,6 +159,8 @@ vec3 shade(GpuLight L, vec3 p, vec3 w, float t) {
 }
 
 void main() {
+    WORK_PIXEL(gl_FragCoord.xy);
+    WORK_COUNT(kWorkFragments, 1);
     // The sample point is where this pixel's centre ray (scene::pixelRay: GL row 0 is the bottom, so
     // ndc.y = 2 (y + 1/2) / H - 1) meets the plane dot(p, forward) = s_i. Computed per pixel rather than
     // interpolated, so it does not depend on how clipping re-triangulated the quad.

@@ -40,6 +40,7 @@ layout(rgba32f, binding = 2) uniform writeonly image2D uVisibility;
 
 uniform int uLight;
 #include "common/medium.glsl"  // uSigmaS, uSigmaT, uG
+#include "common/work_counters.glsl"
 uniform int uRunBins;
 uniform int uAccumulate;     // 0: first light (overwrite), 1: add
 uniform int uEpipoleToward;  // the alpha = 0 epipole is in view and the grid starts at alpha = 0
@@ -144,6 +145,7 @@ void main() {
         if ((k & 127) == 0) {
             c0 = imageLoad(uGrid, ivec3(ia, j0, k >> 7));
             c1 = imageLoad(uGrid, ivec3(ia, j1, k >> 7));
+            WORK_COUNT(kWorkVoxelsRead, 2);
         }
         int bit = k & 127;
         float v = (1.0 - wTheta) * (testBitFast(c0, bit) ? 0.0 : 1.0) + wTheta * (testBitFast(c1, bit) ? 0.0 : 1.0);
@@ -188,6 +190,7 @@ void main() {
         float wPhi = clamp(kc - float(k0), 0.0, 1.0);
         uvec4 s0 = imageLoad(uGrid, ivec3(ia, j0, k0 >> 7));
         uvec4 s1 = imageLoad(uGrid, ivec3(ia, j1, k0 >> 7));
+        WORK_COUNT(kWorkVoxelsRead, 2);
         if ((k0 & 127) == 127) wPhi = 0.0;  // bit k0 + 1 lives in the next texel: stay at k0
         surfaceV = litFractionFast(s0, s1, k0 & 127, wTheta, wPhi);
     }

@@ -39,6 +39,7 @@ uniform int uFirstVpl;
 uniform int uVplCount;    // VPLs [uFirstVpl, uFirstVpl + uVplCount)
 uniform int uVplStride;   // 1 or 9
 #include "common/medium.glsl"  // uSigmaS, uSigmaT, uG
+#include "common/work_counters.glsl"
 uniform int uChunkBits;
 uniform float uDiscScale;  // 1: VPLs as discs of their area near the emitter (vpl_disc), 0: points  // phi bits per quadrature node
 uniform int uAccumulate;
@@ -97,6 +98,7 @@ void main() {
 #endif
         uvec4 c0 = imageLoad(uGrid, ivec3(v.tile.x + ia, v.tile.y + j0, 0));
         uvec4 c1 = imageLoad(uGrid, ivec3(v.tile.x + ia, v.tile.y + j1, 0));
+        WORK_COUNT(kWorkVoxelsRead, 2);
         float phiD = epiPhiOnEyeRay(S, alpha, d);
         float kEnd = clamp((phiD - S.phi.x) / S.phi.y, 0.0, float(uCells.z));
         int lastBit = int(ceil(kEnd));

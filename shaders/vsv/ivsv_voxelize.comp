@@ -9,6 +9,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 #include "common/shadow_map.glsl"
 #include "vsv/ism.glsl"
 #include "vsv/ivsv_vpls.glsl"
+#include "common/work_counters.glsl"
 
 layout(r32ui, binding = 0) uniform coherent uimage2DArray uWords;  // 4 layers: 128 phi bits
 layout(binding = kFirstFreeTextureUnit + 1) uniform sampler2D uIsm;  // filled atlas, level 0
@@ -42,4 +43,5 @@ void main() {
     if (c >= float(uCells.x)) return;
     int cell = max(0, int(floor(c)));
     imageAtomicOr(uWords, ivec3(v.tile.x + cell, v.tile.y + j, k >> 5), 1u << uint(k & 31));
+    WORK_COUNT(kWorkVoxelsWritten, 1);
 }

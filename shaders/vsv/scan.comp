@@ -4,6 +4,7 @@
 // 0..a: a light ray's occluder bit is extruded to every alpha beyond it (away from the light).
 // uSegment > 0 restarts the scan every uSegment texels (several epipolar spaces side by side).
 layout(local_size_x = 8, local_size_y = 8) in;
+#include "common/work_counters.glsl"
 
 layout(rgba32ui, binding = 0) uniform readonly uimage2DArray uIn;
 layout(rgba32ui, binding = 1) uniform writeonly uimage2DArray uOut;
@@ -18,6 +19,8 @@ void main() {
     p.xy += uOrigin;
     uvec4 v = imageLoad(uIn, p);
     int inSegment = uSegment > 0 ? p.x % uSegment : p.x;
+    WORK_COUNT(kWorkVoxelsRead, inSegment >= uOffset ? 2 : 1);
+    WORK_COUNT(kWorkVoxelsWritten, 1);
     if (inSegment >= uOffset) v |= imageLoad(uIn, p - ivec3(uOffset, 0, 0));
     imageStore(uOut, p, v);
 }

@@ -11,6 +11,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 #include "common/lights.glsl"
 #include "common/shadow_map.glsl"
 #include "vsv/epipolar_uniforms.glsl"
+#include "common/work_counters.glsl"
 
 layout(r32ui, binding = 0) uniform coherent uimage2DArray uWords;  // (nAlpha, nTheta, nPhi / 32)
 layout(r32f, binding = 1) uniform writeonly image2D uOccluder;     // (nPhi, nTheta)
@@ -84,6 +85,7 @@ void main() {
     if (c < float(uEpiCells.x)) {
         int cell = max(0, int(floor(c)));
         imageAtomicOr(uWords, ivec3(cell, j, k >> 5), 1u << uint(k & 31));
+        WORK_COUNT(kWorkVoxelsWritten, 1);
         coord = max(c, 0.0);
     }
     imageStore(uOccluder, ivec2(k, j), vec4(coord));

@@ -4,7 +4,9 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <cmath>
 #include <filesystem>
+#include <regex>
 #include <set>
 #include <sstream>
 #include <string>
@@ -78,6 +80,91 @@ TEST_F(CliTest, ReportWritesResultsPlotsImagesAndAPageThatLoads) {
         GTEST_SKIP() << "no /usr/bin/chromium: the page was not loaded in a browser";
     }
     EXPECT_EQ(loaded, "images=4 missing=0");
+}
+
+// At a real size with two techniques: the headline compares each with raymarch at the stated error
+// targets, every figure checked against the rows it is made from (an independent log-log interpolation
+// over the rows of results.json), and the plan savings carry their runs and say whether they are
+// significant.
+TEST_F(CliTest, ReportAt640x480ComparesAtTheErrorTargetsFromItsOwnRows) {
+    const fs::path out = path("report640");
+    const RunResult r = run("report --scenes grate --techniques raymarch,slices --size 640x480 --quick --runs 1 --out " +
+                            out.string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const nlohmann::json j = nlohmann::json::parse(readFile(out / "results.json"));
+    EXPECT_EQ(j.at("meta").at("width"), 640);
+    // Each series' time at a target, recomputed here: the cheapest row whose error is at or below the
+    // target, and the fastest row above it; the time on the log-log line between them.
+    auto costAt = [&](const std::string& technique, double target, const char* cost) -> std::pair<std::string, double> {
+        struct P { double ms, e; };
+        std::vector<P> front;  // Pareto front, by brute force over all pairs
+        std::vector<P> all;
+        for (const auto& row : j.at("rows"))
+            if (row.at("technique") == technique)
+                all.push_back({row.at(cost).get<double>(), row.at("error").at("relative_l2").get<double>()});
+        for (const P& p : all) {
+            bool dominated = false;
+            for (const P& q : all)
+                if ((q.ms < p.ms && q.e <= p.e) || (q.ms <= p.ms && q.e < p.e)) dominated = true;
+            if (!dominated) front.push_back(p);
+        }
+        std::sort(front.begin(), front.end(), [](const P& a, const P& b) { return a.ms < b.ms; });
+        if (front.empty() || front.back().e > target) return {"not_reached", 0.0};
+        if (front.front().e <= target) return {"at_most", front.front().ms};
+        for (std::size_t k = 1; k < front.size(); ++k)
+            if (front[k].e <= target) {
+                const double f = std::log(target / front[k - 1].e) / std::log(front[k].e / front[k - 1].e);
+                return {"interpolated", front[k - 1].ms * std::pow(front[k].ms / front[k - 1].ms, f)};
+            }
+        return {"not_reached", 0.0};
+    };
+    auto timeAt = [&](const std::string& technique, double target) { return costAt(technique, target, "total_ms"); };
+    // Every row carries one counting run's work, its sum the row's counted operations.
+    for (const auto& row : j.at("rows")) {
+        ASSERT_TRUE(row.at("work").is_object()) << row.at("setting");
+        std::uint64_t sum = 0;
+        for (const auto& [name, count] : row.at("work").items()) sum += count.get<std::uint64_t>();
+        EXPECT_GT(sum, 0u);
+        EXPECT_DOUBLE_EQ(row.at("work_ops").get<double>(), double(sum));
+    }
+    const auto& targets = j.at("speedups_at_targets");
+    ASSERT_EQ(targets.size(), 4u);  // slices and its paper preset, each at 5 % and 1 %
+    for (const auto& t : targets) {
+        const std::string technique = t.at("technique").get<std::string>();
+        EXPECT_TRUE(technique == "slices" || technique == "slices (paper)") << technique;
+        const double target = t.at("target_relative_l2").get<double>();
+        for (const std::string side : {"technique", "raymarch"}) {
+            const auto [kind, ms] = timeAt(side == "technique" ? technique : "raymarch", target);
+            EXPECT_EQ(t.at(side + "_time"), kind) << side << " at " << target;
+            if (kind != "not_reached") {
+                EXPECT_NEAR(t.at(side + "_ms").get<double>(), ms, 1e-9 * ms) << side;
+            }
+        }
+        if (!t.at("speedup").is_null()) {
+            EXPECT_NEAR(t.at("speedup").get<double>(), t.at("raymarch_ms").get<double>() / t.at("technique_ms").get<double>(),
+                        1e-9);
+        }
+        // The work ratio at the target, from the rows' counted operations the same way.
+        const auto [techniqueKind, techniqueOps] = costAt(technique, target, "work_ops");
+        const auto [raymarchKind, raymarchOps] = costAt("raymarch", target, "work_ops");
+        if (techniqueKind != "not_reached" && raymarchKind != "not_reached" &&
+            !(techniqueKind == "at_most" && raymarchKind == "at_most")) {
+            ASSERT_FALSE(t.at("work_ratio").is_null()) << technique << " at " << target;
+            EXPECT_NEAR(t.at("work_ratio").get<double>(), raymarchOps / techniqueOps, 1e-9 * raymarchOps / techniqueOps);
+        } else {
+            EXPECT_TRUE(t.at("work_ratio").is_null()) << technique << " at " << target;
+        }
+        EXPECT_NE(readFile(out / "index.html").find(t.at("work_phrase").get<std::string>()), std::string::npos);
+        // The page and the terminal say the same words.
+        const std::string phrase = t.at("phrase").get<std::string>();
+        EXPECT_NE(readFile(out / "index.html").find(phrase), std::string::npos) << phrase;
+        EXPECT_NE(r.out.find(phrase), std::string::npos) << phrase;
+        EXPECT_FALSE(std::regex_search(phrase, std::regex("(^| )0\\.[0-9]+x"))) << "a ratio below 1 is worded as slower: " << phrase;
+    }
+    for (const auto& saving : j.at("plan_savings")) {
+        EXPECT_GE(saving.at("planned_runs_ms").size(), 7u);
+        EXPECT_TRUE(saving.at("significant").is_boolean());
+    }
 }
 
 TEST_F(CliTest, ReportRejectsBadInputBeforeWritingAnything) {

@@ -2,11 +2,17 @@
 // are bracketed by glFinish and a steady clock; the record says which clock was used.
 #pragma once
 
+#include <array>
 #include <chrono>
+#include <cstdint>
 #include <string>
 #include <vector>
 
 namespace viz {
+
+// Work counts of a stage in a counting run (gl/work_counters.h), indexed by the kWork* constants of
+// shaders/common/host_device.glsl; empty outside counting runs.
+using WorkCounts = std::vector<std::uint64_t>;
 
 struct StageTiming {
     std::string stage;
@@ -15,6 +21,7 @@ struct StageTiming {
     // result waited for), so CPU work inside the stage shows where the GPU time does not; -1 where it is
     // not measured apart (CPU stages, whose milliseconds are wall time already).
     double wallMilliseconds = -1.0;
+    WorkCounts work{};  // counting runs only
 };
 
 struct Timing {

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "gl/gl_error.h"
+#include "gl/work_counters.h"
 
 namespace viz::gl {
 
@@ -83,8 +84,10 @@ Program Program::compile(const ProgramDesc& desc) {
     if (desc.stages.empty())
         throw ShaderError("program '" + desc.label + "' has no stages", "", 0);
     std::vector<Handle<ShaderTraits>> shaders;
+    ShaderDefines defines = desc.defines;
+    if (WorkCounters::enabled()) defines.push_back({"COUNT_WORK", "1"});  // gl/work_counters.h
     for (const std::string& path : desc.stages)
-        shaders.push_back(compileStage(path, desc.defines));
+        shaders.push_back(compileStage(path, defines));
 
     Program p;
     p.mHandle = Handle<ProgramTraits>(glCreateProgram());

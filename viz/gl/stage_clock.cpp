@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 #include "gl/context_info.h"
+#include "gl/work_counters.h"
 
 namespace viz::gl {
 
@@ -19,6 +20,10 @@ StageClock::StageClock(ClockMethod method) : mMethod(method) {
 void StageClock::begin() {
     VIZ_CHECK(!mRunning, "StageClock::begin called twice without endMilliseconds");
     mRunning = true;
+    if (WorkCounters::enabled()) {
+        WorkCounters::bind();
+        mWorkAtBegin = WorkCounters::read();  // waits for the GPU: a counting run's times mean nothing
+    }
     mWallStart = std::chrono::steady_clock::now();
     if (mMethod == ClockMethod::TimestampQuery) {
         glQueryCounter(mStartQuery.get(), GL_TIMESTAMP);
@@ -48,7 +53,10 @@ double StageClock::endMilliseconds() {
 StageTiming StageClock::end(const std::string& stage) {
     const double ms = endMilliseconds();
     const double wall = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - mWallStart).count();
-    return {stage, ms, wall};
+    StageTiming timing{stage, ms, wall};
+    if (WorkCounters::enabled() && !mWorkAtBegin.empty()) timing.work = workBetween(mWorkAtBegin, WorkCounters::read());
+    mWorkAtBegin.clear();
+    return timing;
 }
 
 std::string StageClock::method() {

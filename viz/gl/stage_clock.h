@@ -31,7 +31,7 @@ public:
     // query result).
     double endMilliseconds();
     // endMilliseconds() as a record of `stage`, with the CPU wall time from begin() until the result was
-    // known (debug/timing.h).
+    // known (debug/timing.h), and in a counting run the work the stage did (gl/work_counters.h).
     StageTiming end(const std::string& stage);
 
     ClockMethod clockMethod() const { return mMethod; }
@@ -45,6 +45,7 @@ private:
     Handle<QueryTraits> mStartQuery, mEndQuery;
     std::chrono::steady_clock::time_point mStart, mWallStart;
     bool mRunning = false;
+    WorkCounts mWorkAtBegin;  // counting runs (gl/work_counters.h): the totals when the stage began
 };
 
 }  // namespace viz::gl

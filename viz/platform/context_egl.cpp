@@ -4,13 +4,17 @@
 #include <epoxy/gl.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <map>
 #include <mutex>
+#include <string>
 #include <utility>
 
 #include "gl/context_info.h"
+#include "gl/debug_output.h"
 #include "gl/gl_error.h"
+#include "gl/work_counters.h"
 
 namespace viz {
 
@@ -88,6 +92,11 @@ std::pair<EGLDisplay, std::string> openDisplay() {
 }  // namespace
 
 std::unique_ptr<HeadlessContext> HeadlessContext::create(bool debug) {
+    // AIRLIGHT_GL_DEBUG=1 asks any headless run (render, bench, report, ...) for a debug context whose
+    // messages go to stderr: the way to see a driver's complaints on a machine without a window.
+    const char* debugEnv = std::getenv("AIRLIGHT_GL_DEBUG");
+    const bool debugFromEnv = debugEnv != nullptr && debugEnv[0] != '\0' && std::string(debugEnv) != "0";
+    debug = debug || debugFromEnv;
     auto [display, platform] = openDisplay();
     EGLint major = 0, minor = 0;
     if (!eglInitialize(display, &major, &minor))
@@ -133,6 +142,7 @@ std::unique_ptr<HeadlessContext> HeadlessContext::create(bool debug) {
     ctx->mContext = context;
     ctx->makeCurrent();
     gl::requireGl45();
+    if (debugFromEnv) gl::installDebugOutput();
     ctx->mRenderer = gl::contextInfo().renderer;
     return ctx;
 }
@@ -164,6 +174,7 @@ void HeadlessContext::destroy() {
     EGLDisplay display = static_cast<EGLDisplay>(mDisplay);
     if (mContext != nullptr) {
         if (eglGetCurrentContext() == static_cast<EGLContext>(mContext)) {
+            gl::WorkCounters::release();
             eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
         }
         eglDestroyContext(display, static_cast<EGLContext>(mContext));

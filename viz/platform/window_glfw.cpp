@@ -9,6 +9,7 @@
 #include <GLFW/glfw3.h>
 
 #include "gl/gl_error.h"
+#include "gl/work_counters.h"
 
 namespace viz {
 
@@ -63,8 +64,10 @@ std::unique_ptr<Window> Window::create(int width, int height, const std::string&
 }
 
 Window::~Window() {
-    if (mWindow != nullptr)
+    if (mWindow != nullptr) {
+        if (glfwGetCurrentContext() == mWindow) gl::WorkCounters::release();
         glfwDestroyWindow(mWindow);
+    }
 }
 
 glm::ivec2 Window::framebufferSize() const {

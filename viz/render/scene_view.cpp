@@ -83,7 +83,7 @@ void SceneViewPasses::renderSurface(const scene::Scene& scene, int width, int he
                                       "radiance", ViewKind::Color, 0.0f, 1.0f, mSurface->surfaceRadiance()));
 }
 
-Image SceneViewPasses::compose(const scene::Scene& scene, const gl::Texture& airlight,
+void SceneViewPasses::compose(const scene::Scene& scene, const gl::Texture& airlight,
                               std::vector<Intermediate>& out, const std::string& prefix) {
     const glm::ivec3 size = airlight.size();
     if (!mFinal || mFinal.size() != size)
@@ -91,8 +91,9 @@ Image SceneViewPasses::compose(const scene::Scene& scene, const gl::Texture& air
     mComposer->run(mSurface->surfaceRadiance(), mSurface->distance(), airlight, scene.medium, mFinal);
     out.push_back(textureIntermediate(prefix + ".final", "Final", "surface * exp(-sigma_t d) + L_air", "radiance",
                                       ViewKind::Color, 0.0f, 1.0f, mFinal));
-    return readRgb(mFinal);
 }
+
+Image SceneViewPasses::readFinal() const { return readRgb(mFinal); }
 
 bool SceneViewPasses::runSharedStages(const FrameInput& input, int stop, const std::vector<StageInfo>& stages,
                                       const std::string& prefix, FrameOutput& out, StageReuse& reuse) {

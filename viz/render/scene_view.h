@@ -42,9 +42,12 @@ public:
     void renderSurface(const scene::Scene& scene, int width, int height, std::vector<Intermediate>& out,
                        const std::string& prefix);
     // final = surface radiance * exp(-sigma_t d) + airlight (same size as airlight); publishes
-    // prefix.final and returns it read back as RGB.
-    Image compose(const scene::Scene& scene, const gl::Texture& airlight, std::vector<Intermediate>& out,
-                  const std::string& prefix);
+    // prefix.final. It reads nothing back, so that the compose stage's clock times the GPU's work alone:
+    // the debugger's read-back (readFinal) is not a cost a real-time renderer pays.
+    void compose(const scene::Scene& scene, const gl::Texture& airlight, std::vector<Intermediate>& out,
+                 const std::string& prefix);
+    // The last compose's final image read back as RGB.
+    Image readFinal() const;
 
     // The two stages every GPU technique starts with, at stage indices 0 (shadow maps, settings
     // `shadow_map` and `area_samples`) and 1 (camera view), each timed with the StageClock and recorded as

@@ -16,12 +16,17 @@ namespace {
 
 // The plan's saving in percent; a planned run that measured slower than the forced one saved nothing,
 // and the page says so instead of printing a negative saving.
-std::string savedCell(double planned, double forced) {
-    const double saved = 100.0 * (1.0 - planned / forced);
+// A difference inside the noise (the two sets of runs overlap) is said to be one.
+std::string savedCell(const PlanSaving& p) {
+    const double saved = 100.0 * (1.0 - p.plannedMilliseconds / p.forcedMilliseconds);
     if (!std::isfinite(saved)) return "&ndash;";
+    const bool significant = savingIsSignificant(p);
+    if (!significant && !p.plannedRuns.empty())
+        return "not significant <span class=\"note\">(" + formatFigure(saved, "%+.0f") +
+               " %; the planned and forced runs' ranges overlap)</span>";
     if (saved >= 0.0) return formatFigure(saved, "%.0f") + " %";
     return "none <span class=\"note\">(planned " + formatFigure(-saved, "%.0f") +
-           " % slower: timing noise, or the plan costs more)</span>";
+           " % slower: the plan costs more)</span>";
 }
 
 // A figure for a table cell: a dash when undefined.
@@ -61,33 +66,63 @@ void writeHtml(const std::string& path, const ReportMeta& meta, const std::vecto
          "brute-force <code>raymarch</code>'s time at the same relative L2 (log-log interpolation along its sweep, "
          "no extrapolation) divided by the row's time. Bold rows lie on the scene's Pareto front.</p>\n";
 
-    // Headline: per scene, each technique's best speed-up at equal error.
-    h << "<h2>Speed-up over brute-force ray marching at equal error</h2>\n<table><tr><th class=\"l\">scene</th>";
-    for (const std::string& t : techniques) h << "<th>" << escapeHtml(t) << "</th>";
+    // Headline: per scene and error target, each technique's speed-up over raymarch, both interpolated
+    // along their own Pareto fronts.
+    h << "<h2>Speed-up over brute-force ray marching at equal error</h2>\n<table><tr><th class=\"l\">scene</th>"
+         "<th>error target</th>";
+    for (const std::string& t : techniques)
+        if (t != "raymarch") h << "<th>" << escapeHtml(t) << "</th>";
     h << "</tr>\n";
-    for (const ScenePage& s : scenes) {
-        h << "<tr><td class=\"l\">" << escapeHtml(s.scene) << "</td>";
-        for (const std::string& t : techniques) {
-            const ReportRow* best = bestSpeedup(rows, s.scene, t);
-            h << "<td>";
-            if (best)
-                h << escapeHtml(speedupPhrase(*best->speedup)) << " <span class=\"note\">(" << escapeHtml(best->setting)
-                  << ", error " << figure(best->error.relativeL2) << ")</span>";
-            else
-                h << "&ndash;";
-            h << "</td>";
+    for (const ScenePage& s : scenes)
+        for (double target : errorTargets()) {
+            h << "<tr><td class=\"l\">" << escapeHtml(s.scene) << "</td><td>" << figure(100.0 * target) << " %</td>";
+            for (const std::string& t : techniques) {
+                if (t == "raymarch") continue;
+                const TargetSpeedup ts = targetSpeedup(rows, s.scene, t, target);
+                const bool reached = ts.bound != TargetSpeedup::Bound::Unknown;
+                h << "<td" << (reached ? "" : " class=\"note\"") << ">" << escapeHtml(targetSpeedupPhrase(ts)) << "</td>";
+            }
+            h << "</tr>\n";
         }
+    h << "</table>\n<p class=\"note\">Each side's time to reach the target is interpolated linearly in log(time) "
+         "against log(error) between the two points of its own Pareto front (its sweep settings that no faster "
+         "setting beats) that bracket the target; no extrapolation. &ldquo;or less&rdquo;: even the cheapest setting "
+         "is below the target, so its time only bounds the true one, and the speed-up is a bound (at least / at "
+         "most). The per-row speed-ups in the tables below compare at each row's own error instead.</p>\n";
+
+    // The same comparison in counted operations (one counting run per setting): what carries over to a GPU.
+    bool counted = false;
+    for (const ReportRow& r : rows) counted = counted || !r.work.empty();
+    if (counted) {
+        h << "<h2>Work against brute-force ray marching at equal error</h2>\n<table><tr><th class=\"l\">scene</th>"
+             "<th>error target</th>";
+        for (const std::string& t : techniques)
+            if (t != "raymarch") h << "<th>" << escapeHtml(t) << "</th>";
         h << "</tr>\n";
+        for (const ScenePage& s : scenes)
+            for (double target : errorTargets()) {
+                h << "<tr><td class=\"l\">" << escapeHtml(s.scene) << "</td><td>" << figure(100.0 * target) << " %</td>";
+                for (const std::string& t : techniques) {
+                    if (t == "raymarch") continue;
+                    const TargetSpeedup ts = targetSpeedup(rows, s.scene, t, target, "raymarch", Measure::Work);
+                    h << "<td" << (ts.bound != TargetSpeedup::Bound::Unknown ? "" : " class=\"note\"") << ">"
+                      << escapeHtml(targetSpeedupPhrase(ts, "raymarch", Measure::Work)) << "</td>";
+                }
+                h << "</tr>\n";
+            }
+        h << "</table>\n<p class=\"note\">Work: one run of each setting with every shader counting what it does "
+             "(shadow-map lookups and texels, ray samples, closed-form segments, tree nodes, fragments, voxel words; "
+             "<code>airlight render --count-work</code>), summed into counted operations, each about one memory "
+             "read or one integrand evaluation. These counts do not depend on the GPU or its driver; how long an "
+             "operation takes does. Interpolated along each side's Pareto front in work as above.</p>\n";
     }
-    h << "</table>\n<p class=\"note\">&ndash;: no setting of the technique has an error inside raymarch's measured "
-         "range (or it is raymarch itself).</p>\n";
 
     appendRankingHtml(h, rows, scenes);
 
     if (!savings.empty()) {
         h << "<h2>What each plan leaves out, and what that saves</h2>\n<p class=\"note\">The technique's cheapest sweep "
              "setting, timed as planned and with <code>force_features=1</code> (everything the plan leaves out for the scene runs "
-             "anyway; the image is the same), medians, each after its own warm-up.</p>\n<table><tr><th class=\"l\">"
+             "anyway; the image is the same), medians, each after its own warm-up. A saving is called significant only when every planned run is faster than every forced one (or slower: then the plan costs more).</p>\n<table><tr><th class=\"l\">"
              "scene</th><th class=\"l\">technique</th><th>planned ms</th><th>forced ms</th><th>saved</th><th "
              "class=\"l\">left out</th></tr>\n";
         for (const PlanSaving& p : savings) {
@@ -96,7 +131,7 @@ void writeHtml(const std::string& path, const ReportMeta& meta, const std::vecto
             h << "<tr><td class=\"l\">" << escapeHtml(p.scene) << "</td><td class=\"l\">" << escapeHtml(p.technique)
               << "</td><td>" << figure(p.plannedMilliseconds, "%.1f") << "</td><td>"
               << figure(p.forcedMilliseconds, "%.1f") << "</td><td>"
-              << savedCell(p.plannedMilliseconds, p.forcedMilliseconds) << "</td><td class=\"l\">"
+              << savedCell(p) << "</td><td class=\"l\">"
               << escapeHtml(skipped.empty() ? "nothing" : skipped) << "</td></tr>\n";
         }
         h << "</table>\n";
@@ -113,7 +148,7 @@ void writeHtml(const std::string& path, const ReportMeta& meta, const std::vecto
               << " against time per frame (log-log)</figcaption></figure>\n";
         h << "<table><tr><th class=\"l\">technique</th><th class=\"l\">setting</th><th>time ms</th><th>wall ms</th>"
              "<th>rel. L2</th><th>RMSE</th><th>max abs</th><th>p99.9 rel.</th><th>PSNR dB</th><th>NaN/Inf/neg px</th>"
-             "<th>speed-up</th></tr>\n";
+             "<th>speed-up</th><th>work ops</th></tr>\n";
         for (const ReportRow& r : rows) {
             if (r.scene != s.scene) continue;
             const std::size_t bad = r.error.nanPixels + r.error.infPixels + r.error.negativePixels;
@@ -124,7 +159,7 @@ void writeHtml(const std::string& path, const ReportMeta& meta, const std::vecto
               << figure(r.error.relativeP999) << "</td><td>" << figure(r.error.psnr, "%.1f") << "</td><td"
               << (bad ? " class=\"bad\"" : "") << ">" << r.error.nanPixels << "/" << r.error.infPixels << "/"
               << r.error.negativePixels << "</td><td>" << (r.speedup ? escapeHtml(speedupPhrase(*r.speedup)) : "&ndash;")
-              << "</td></tr>\n";
+              << "</td><td>" << figure(r.workTotal(), "%.3g") << "</td></tr>\n";
         }
         h << "</table>\n";
         appendTemporalHtml(h, rows, s);

@@ -1,5 +1,6 @@
 #include "report/report_table.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -18,6 +19,19 @@ namespace {
 std::string number(double v) { return formatFigure(v); }
 
 nlohmann::json jsonNumber(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+
+nlohmann::json workJson(const ReportRow& r) {
+    if (r.work.empty()) return nullptr;
+    nlohmann::json j = nlohmann::json::object();
+    for (const auto& [name, count] : r.work) j[name] = count;
+    return j;
+}
+
+std::string workText(const ReportRow& r) {
+    std::string text;
+    for (const auto& [name, count] : r.work) text += (text.empty() ? "" : ";") + name + "=" + std::to_string(count);
+    return text;
+}
 
 nlohmann::json temporalJson(const std::optional<TemporalFigures>& t) {
     if (!t) return nullptr;
@@ -53,6 +67,65 @@ void annotateTradeoffs(std::vector<ReportRow>& rows, const std::string& baseline
     }
 }
 
+double ReportRow::workTotal() const {
+    if (work.empty()) return NAN;
+    double sum = 0.0;
+    for (const auto& [name, count] : work) sum += double(count);
+    return sum;
+}
+
+const std::vector<double>& errorTargets() {
+    static const std::vector<double> kTargets = {0.05, 0.01};
+    return kTargets;
+}
+
+TargetSpeedup targetSpeedup(const std::vector<ReportRow>& rows, const std::string& scene, const std::string& technique,
+                            double target, const std::string& baseline, Measure measure) {
+    std::vector<TradeoffPoint> base, own;
+    for (const ReportRow& r : rows) {
+        if (r.scene != scene) continue;
+        // TradeoffPoint's "milliseconds" is the cost axis: time, or counted operations.
+        const TradeoffPoint p{measure == Measure::Time ? r.totalMilliseconds : r.workTotal(), r.error.relativeL2};
+        if (r.technique == baseline) base.push_back(p);
+        if (r.technique == technique) own.push_back(p);
+    }
+    return speedupAtTarget(base, own, target);
+}
+
+std::string targetSpeedupPhrase(const TargetSpeedup& s, const std::string& baseline, Measure measure) {
+    using Kind = TimeToTarget::Kind;
+    const std::string percent = formatFigure(100.0 * s.target, "%.3g") + " %";
+    auto best = [](const TimeToTarget& t) {
+        return std::isfinite(t.bestError) ? " (best " + formatFigure(100.0 * t.bestError, "%.3g") + " %)" : std::string();
+    };
+    if (s.technique.kind == Kind::NotReached) return "does not reach " + percent + best(s.technique);
+    if (s.baseline.kind == Kind::NotReached) return baseline + " does not reach " + percent + best(s.baseline);
+    const bool time = measure == Measure::Time;
+    auto amount = [&](double v) {
+        return time ? formatFigure(v, v < 100.0 ? "%.3g" : "%.0f") : formatFigure(v, v < 1e5 ? "%.0f" : "%.3g");
+    };
+    const std::string unit = time ? " ms" : " ops";
+    const std::string times = " (" + amount(s.technique.milliseconds) + unit +
+                              (s.technique.kind == Kind::AtMost ? " or less" : "") + " against " +
+                              amount(s.baseline.milliseconds) + unit +
+                              (s.baseline.kind == Kind::AtMost ? " or less)" : ")");
+    const std::string ratio = time ? speedupPhrase(s.ratio) : workRatioPhrase(s.ratio);
+    switch (s.bound) {
+        case TargetSpeedup::Bound::Exact: return ratio + times;
+        case TargetSpeedup::Bound::AtLeast: return (s.ratio >= 1.0 ? "at least " : "at most ") + ratio + times;
+        case TargetSpeedup::Bound::AtMost: return (s.ratio >= 1.0 ? "at most " : "at least ") + ratio + times;
+        case TargetSpeedup::Bound::Unknown: break;
+    }
+    return "both reach " + percent + " at their cheapest setting" + times;
+}
+
+bool savingIsSignificant(const PlanSaving& p) {
+    if (p.plannedRuns.empty() || p.forcedRuns.empty()) return false;
+    const auto [plannedMin, plannedMax] = std::minmax_element(p.plannedRuns.begin(), p.plannedRuns.end());
+    const auto [forcedMin, forcedMax] = std::minmax_element(p.forcedRuns.begin(), p.forcedRuns.end());
+    return *plannedMax < *forcedMin || *forcedMax < *plannedMin;
+}
+
 const ReportRow* bestSpeedup(const std::vector<ReportRow>& rows, const std::string& scene, const std::string& technique) {
     const ReportRow* best = nullptr;
     for (const ReportRow& r : rows)
@@ -68,7 +141,9 @@ const std::vector<std::string>& csvColumns() {
         "negative_pixels", "speedup_vs_raymarch", "pareto", "stage_ms",
         // --temporal (empty on rows it does not measure): report/temporal_error.h's figures on a motion path
         "temporal_path", "temporal_frames", "mean_frame_error", "temporal_rms", "worst_flicker", "ms_per_frame",
-        "flicker_image"};
+        "flicker_image",
+        // one counting run (gl/work_counters.h): the sum of the counters, and each as name=count
+        "work_ops", "work"};
     return kColumns;
 }
 
@@ -90,7 +165,7 @@ void writeCsv(const std::string& path, const std::vector<ReportRow>& rows) {
             r.speedup ? number(*r.speedup) : "", r.pareto ? "1" : "0", stages,
             t ? t->path : "", t ? std::to_string(t->frames) : "", t ? number(t->meanFrameError) : "",
             t ? number(t->temporalRms) : "", t ? number(t->worstFlicker) : "", t ? number(t->msPerFrame) : "",
-            t ? t->flickerImage : ""};
+            t ? t->flickerImage : "", r.work.empty() ? "" : formatFigure(r.workTotal(), "%.0f"), workText(r)};
         for (std::size_t i = 0; i < fields.size(); ++i) out << (i ? "," : "") << csvField(fields[i]);
         out << "\n";
     }
@@ -142,15 +217,59 @@ void writeJson(const std::string& path, const ReportMeta& meta, const std::vecto
                         {"pareto", r.pareto},
                         {"image", r.image},
                         {"error_image", r.errorImage},
-                        {"temporal", temporalJson(r.temporal)}});
+                        {"temporal", temporalJson(r.temporal)},
+                        {"work", workJson(r)},
+                        {"work_ops", jsonNumber(r.workTotal())}});
     }
     j["rows"] = list;
+    nlohmann::json targets = nlohmann::json::array();
+    {
+        std::vector<std::string> scenes, techniques;
+        for (const ReportRow& r : rows) {
+            if (std::find(scenes.begin(), scenes.end(), r.scene) == scenes.end()) scenes.push_back(r.scene);
+            if (std::find(techniques.begin(), techniques.end(), r.technique) == techniques.end())
+                techniques.push_back(r.technique);
+        }
+        static const char* kKinds[] = {"interpolated", "at_most", "not_reached"};
+        static const char* kBounds[] = {"exact", "at_least", "at_most", "unknown"};
+        for (const std::string& scene : scenes)
+            for (const std::string& technique : techniques) {
+                if (technique == "raymarch") continue;
+                for (double target : errorTargets()) {
+                    const TargetSpeedup t = targetSpeedup(rows, scene, technique, target);
+                    targets.push_back({{"scene", scene},
+                                       {"technique", technique},
+                                       {"target_relative_l2", target},
+                                       {"technique_ms", jsonNumber(t.technique.kind == TimeToTarget::Kind::NotReached
+                                                                       ? NAN : t.technique.milliseconds)},
+                                       {"technique_time", kKinds[int(t.technique.kind)]},
+                                       {"technique_best_error", jsonNumber(t.technique.bestError)},
+                                       {"raymarch_ms", jsonNumber(t.baseline.kind == TimeToTarget::Kind::NotReached
+                                                                      ? NAN : t.baseline.milliseconds)},
+                                       {"raymarch_time", kKinds[int(t.baseline.kind)]},
+                                       {"raymarch_best_error", jsonNumber(t.baseline.bestError)},
+                                       {"speedup", t.bound == TargetSpeedup::Bound::Unknown ? nlohmann::json(nullptr)
+                                                                                            : jsonNumber(t.ratio)},
+                                       {"speedup_bound", kBounds[int(t.bound)]},
+                                       {"phrase", targetSpeedupPhrase(t)}});
+                    const TargetSpeedup w = targetSpeedup(rows, scene, technique, target, "raymarch", Measure::Work);
+                    targets.back()["work_ratio"] =
+                        w.bound == TargetSpeedup::Bound::Unknown ? nlohmann::json(nullptr) : jsonNumber(w.ratio);
+                    targets.back()["work_ratio_bound"] = kBounds[int(w.bound)];
+                    targets.back()["work_phrase"] = targetSpeedupPhrase(w, "raymarch", Measure::Work);
+                }
+            }
+    }
+    j["speedups_at_targets"] = targets;
     nlohmann::json planList = nlohmann::json::array();
     for (const PlanSaving& p : savings)
         planList.push_back({{"scene", p.scene},
                             {"technique", p.technique},
                             {"planned_ms", jsonNumber(p.plannedMilliseconds)},
                             {"forced_ms", jsonNumber(p.forcedMilliseconds)},
+                            {"planned_runs_ms", p.plannedRuns},
+                            {"forced_runs_ms", p.forcedRuns},
+                            {"significant", savingIsSignificant(p)},
                             {"skipped", p.skipped}});
     j["plan_savings"] = planList;
     writeTextFile(path, j.dump(2) + "\n");

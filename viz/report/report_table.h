@@ -3,11 +3,14 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
+#include <utility>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "report/error_metrics.h"
+#include "report/tradeoff.h"
 
 namespace viz::report {
 
@@ -45,6 +48,12 @@ struct ReportRow {
     std::string image;              // files next to index.html (PNG), empty when not written
     std::string errorImage;
     std::optional<TemporalFigures> temporal{};  // with --temporal, on the settings it measures
+    // One counting run's work (gl/work_counters.h), summed over the stages: (counter name, count) in the
+    // counters' order; empty when not counted.
+    std::vector<std::pair<std::string, std::uint64_t>> work{};
+    // The sum of every counter: the row's counted operations (each a texel, sample, segment, node,
+    // fragment or voxel word), NaN when not counted.
+    double workTotal() const;
 };
 
 // What a technique's plan saves on a scene: its cheapest sweep setting timed as planned and with
@@ -53,7 +62,12 @@ struct PlanSaving {
     std::string scene, technique;
     double plannedMilliseconds = 0.0, forcedMilliseconds = 0.0;
     std::vector<std::string> skipped;  // the stages and features the plan leaves out ("stage x", "feature Y")
+    std::vector<double> plannedRuns{}, forcedRuns{};  // every timed run of each (the medians' samples)
 };
+
+// Whether a plan saving stands out of the timing noise: the planned runs' and the forced runs' ranges
+// [min, max] do not overlap. False when either side has no runs.
+bool savingIsSignificant(const PlanSaving& saving);
 
 struct ReportMeta {
     std::string date;       // ISO 8601, UTC
@@ -69,6 +83,23 @@ struct ReportMeta {
 // Per scene: marks the Pareto front over all techniques (time = totalMilliseconds, error = relative L2)
 // and the speed-up of every row over the baseline technique's rows of the same scene.
 void annotateTradeoffs(std::vector<ReportRow>& rows, const std::string& baseline = "raymarch");
+
+// The error targets (relative L2 of L_air) at which the report's headline compares each technique with
+// the baseline: 5 % and 1 %.
+const std::vector<double>& errorTargets();
+
+// A technique's speed-up over the baseline at `target` on a scene, each along its own rows' Pareto front
+// (tradeoff.h: speedupAtTarget).
+// Measure::Work compares counted operations (ReportRow::workTotal) instead of times: the ratio that
+// carries over from one GPU to another.
+enum class Measure { Time, Work };
+TargetSpeedup targetSpeedup(const std::vector<ReportRow>& rows, const std::string& scene, const std::string& technique,
+                            double target, const std::string& baseline = "raymarch", Measure measure = Measure::Time);
+// It in words for the headline: "5.2x faster (12.1 ms against 63 ms)", "at least 2.0x faster (...)",
+// "does not reach 1 % (best 2.3 %)", "raymarch does not reach 1 % (best 1.4 %)"; with Measure::Work
+// "12x less work (1.3e+06 ops against 1.6e+07 ops)".
+std::string targetSpeedupPhrase(const TargetSpeedup& s, const std::string& baseline = "raymarch",
+                                Measure measure = Measure::Time);
 
 // The row of a scene and technique with the highest speed-up (the report's headline), if any has one.
 const ReportRow* bestSpeedup(const std::vector<ReportRow>& rows, const std::string& scene, const std::string& technique);

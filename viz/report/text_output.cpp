@@ -38,6 +38,15 @@ std::string speedupPhrase(double ratio) {
     return text;
 }
 
+std::string workRatioPhrase(double ratio) {
+    if (!(ratio > 0.0) || !std::isfinite(ratio)) return "-";
+    if (std::abs(ratio - 1.0) < 0.01) return "as much work";
+    char text[48];
+    const double r = ratio > 1.0 ? ratio : 1.0 / ratio;
+    std::snprintf(text, sizeof(text), r < 10.0 ? "%.2fx %s" : "%.0fx %s", r, ratio > 1.0 ? "less work" : "more work");
+    return text;
+}
+
 std::string formatFigure(double value, const char* format) {
     if (!std::isfinite(value)) return "";
     char buffer[64];

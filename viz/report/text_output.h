@@ -15,6 +15,9 @@ std::string formatFigure(double value, const char* format = "%.6g");
 // A time ratio (baseline time / technique time) in words: "5.9x faster", "5.9x slower" (never
 // "0.17x faster"), "as fast" within 1 %; "-" when the ratio is not a positive finite number.
 std::string speedupPhrase(double ratio);
+// A work ratio (baseline work / technique work) in words: "12x less work", "1.50x more work", "as much
+// work" within 1 %; "-" when the ratio is not a positive finite number.
+std::string workRatioPhrase(double ratio);
 // Writes the whole file atomically; throws InputError naming the path on failure.
 void writeTextFile(const std::string& path, const std::string& text);
 

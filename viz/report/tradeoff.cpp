@@ -55,4 +55,49 @@ std::optional<double> speedupAtEqualError(const std::vector<TradeoffPoint>& base
     return *t / p.milliseconds;
 }
 
+TimeToTarget timeToReach(const std::vector<TradeoffPoint>& series, double target) {
+    TimeToTarget t;
+    const std::vector<int> front = paretoFront(series);  // time rising, error falling
+    if (front.empty() || !(target > 0.0) || !std::isfinite(target)) {
+        t.bestError = front.empty() ? NAN : series[std::size_t(front.back())].error;
+        return t;
+    }
+    t.bestError = series[std::size_t(front.back())].error;
+    const TradeoffPoint& cheapest = series[std::size_t(front.front())];
+    if (cheapest.error <= target) {
+        t.kind = TimeToTarget::Kind::AtMost;
+        t.milliseconds = cheapest.milliseconds;
+        return t;
+    }
+    if (t.bestError > target) return t;  // NotReached
+    // The first front point at or below the target, and the one before it (above it).
+    for (std::size_t k = 1; k < front.size(); ++k) {
+        const TradeoffPoint& q = series[std::size_t(front[k])];
+        if (q.error > target) continue;
+        const TradeoffPoint& p = series[std::size_t(front[k - 1])];
+        const double f = std::log(target / p.error) / std::log(q.error / p.error);
+        t.kind = TimeToTarget::Kind::Interpolated;
+        t.milliseconds = std::exp(std::log(p.milliseconds) + f * std::log(q.milliseconds / p.milliseconds));
+        return t;
+    }
+    return t;
+}
+
+TargetSpeedup speedupAtTarget(const std::vector<TradeoffPoint>& baseline, const std::vector<TradeoffPoint>& technique,
+                              double target) {
+    using Kind = TimeToTarget::Kind;
+    TargetSpeedup s;
+    s.target = target;
+    s.technique = timeToReach(technique, target);
+    s.baseline = timeToReach(baseline, target);
+    if (s.technique.kind == Kind::NotReached || s.baseline.kind == Kind::NotReached) return s;
+    s.ratio = s.baseline.milliseconds / s.technique.milliseconds;
+    const bool techniqueBound = s.technique.kind == Kind::AtMost, baselineBound = s.baseline.kind == Kind::AtMost;
+    s.bound = !techniqueBound && !baselineBound ? TargetSpeedup::Bound::Exact
+              : techniqueBound && !baselineBound ? TargetSpeedup::Bound::AtLeast
+              : !techniqueBound && baselineBound ? TargetSpeedup::Bound::AtMost
+                                                 : TargetSpeedup::Bound::Unknown;
+    return s;
+}
+
 }  // namespace viz::report

@@ -24,4 +24,30 @@ std::optional<double> baselineTimeAtError(const std::vector<TradeoffPoint>& base
 // baselineTimeAtError(error of p) / time of p, or empty as above.
 std::optional<double> speedupAtEqualError(const std::vector<TradeoffPoint>& baseline, const TradeoffPoint& p);
 
+// The time a series of settings needs to reach the relative L2 `target`, along its own Pareto front.
+struct TimeToTarget {
+    enum class Kind {
+        Interpolated,  // log(time) linear in log(error) between the two front points that bracket the target
+        AtMost,        // even the cheapest setting is at or below the target: its time bounds the true one
+        NotReached,    // no setting reaches the target
+    };
+    Kind kind = Kind::NotReached;
+    double milliseconds = 0.0;  // Interpolated, AtMost
+    double bestError = 0.0;     // the front's lowest error (NotReached says how close it came)
+};
+TimeToTarget timeToReach(const std::vector<TradeoffPoint>& series, double target);
+
+// A technique against the baseline at one error target: both times and their ratio (baseline time /
+// technique time), which is exact when both were interpolated, a lower bound when only the technique's
+// time is an upper bound, an upper bound when only the baseline's is, and unknown otherwise.
+struct TargetSpeedup {
+    enum class Bound { Exact, AtLeast, AtMost, Unknown };
+    double target = 0.0;
+    TimeToTarget technique, baseline;
+    Bound bound = Bound::Unknown;
+    double ratio = 0.0;  // when bound != Unknown
+};
+TargetSpeedup speedupAtTarget(const std::vector<TradeoffPoint>& baseline, const std::vector<TradeoffPoint>& technique,
+                              double target);
+
 }  // namespace viz::report

@@ -14,6 +14,7 @@
 #include "core/error.h"
 #include "report/error_metrics.h"
 #include "report/report_table.h"
+#include "report/text_output.h"
 #include "report/tradeoff.h"
 
 namespace viz::report {
@@ -118,6 +119,62 @@ TEST(Tradeoff, SpeedupInterpolatesOnALogLogLine) {
     EXPECT_FALSE(baselineTimeAtError(base, 0.9).has_value());
     EXPECT_FALSE(baselineTimeAtError(base, 0.01).has_value());
     EXPECT_TRUE(baselineTimeAtError(base, 0.0125).has_value());
+}
+
+TEST(Tradeoff, TimeToReachATargetFollowsTheSeriesOwnFront) {
+    // Time = 100 * error^-0.5 exactly on the front, plus a dominated point that must not be used.
+    std::vector<TradeoffPoint> series;
+    for (double e : {0.4, 0.1, 0.025}) series.push_back({100.0 * std::pow(e, -0.5), e});
+    series.push_back({170.0, 0.5});  // slower than the 0.4 point (158 ms) and worse: off the front
+    const TimeToTarget at5 = timeToReach(series, 0.05);
+    EXPECT_EQ(at5.kind, TimeToTarget::Kind::Interpolated);
+    EXPECT_NEAR(at5.milliseconds, 100.0 * std::pow(0.05, -0.5), 1e-9);
+    // Exactly on a front point.
+    EXPECT_NEAR(timeToReach(series, 0.1).milliseconds, 100.0 * std::pow(0.1, -0.5), 1e-9);
+    // Below the best error: not reached, and it says how close it came.
+    const TimeToTarget at1 = timeToReach(series, 0.01);
+    EXPECT_EQ(at1.kind, TimeToTarget::Kind::NotReached);
+    EXPECT_DOUBLE_EQ(at1.bestError, 0.025);
+    // Above the cheapest point's error: that point's time is an upper bound.
+    const TimeToTarget loose = timeToReach(series, 0.6);
+    EXPECT_EQ(loose.kind, TimeToTarget::Kind::AtMost);
+    EXPECT_DOUBLE_EQ(loose.milliseconds, 100.0 * std::pow(0.4, -0.5));
+    EXPECT_EQ(timeToReach({}, 0.05).kind, TimeToTarget::Kind::NotReached);
+}
+
+TEST(Tradeoff, SpeedupAtATargetIsARatioOfTimesOrABoundOrNothing) {
+    std::vector<TradeoffPoint> base, fast, coarse;
+    for (double e : {0.4, 0.1, 0.025}) base.push_back({100.0 * std::pow(e, -0.5), e});
+    for (double e : {0.2, 0.05, 0.02}) fast.push_back({10.0 * std::pow(e, -0.5), e});  // 10x cheaper everywhere
+    coarse.push_back({50.0, 0.3});
+    const TargetSpeedup exact = speedupAtTarget(base, fast, 0.05);
+    EXPECT_EQ(exact.bound, TargetSpeedup::Bound::Exact);
+    EXPECT_NEAR(exact.ratio, 10.0, 1e-9);
+    EXPECT_EQ(speedupPhrase(exact.ratio), "10x faster");
+    // The technique's cheapest point is already below 30 %: its time bounds, so the ratio is a lower bound.
+    const TargetSpeedup lower = speedupAtTarget(base, fast, 0.3);
+    EXPECT_EQ(lower.bound, TargetSpeedup::Bound::AtLeast);
+    EXPECT_NEAR(lower.ratio, 100.0 * std::pow(0.3, -0.5) / (10.0 * std::pow(0.2, -0.5)), 1e-9);
+    EXPECT_EQ(targetSpeedupPhrase(lower).rfind("at least ", 0), 0u) << targetSpeedupPhrase(lower);
+    // Never reaching the target is said, for either side.
+    const TargetSpeedup missed = speedupAtTarget(base, coarse, 0.05);
+    EXPECT_EQ(missed.bound, TargetSpeedup::Bound::Unknown);
+    EXPECT_EQ(targetSpeedupPhrase(missed), "does not reach 5 % (best 30 %)");
+    const TargetSpeedup baseMissed = speedupAtTarget(base, fast, 0.021);
+    EXPECT_EQ(targetSpeedupPhrase(baseMissed), "raymarch does not reach 2.1 % (best 2.5 %)");
+}
+
+TEST(Tradeoff, APlanSavingIsSignificantOnlyWhenTheRunsDoNotOverlap) {
+    PlanSaving p;
+    p.plannedRuns = {9.0, 9.5, 10.0};
+    p.forcedRuns = {10.5, 11.0, 12.0};
+    EXPECT_TRUE(savingIsSignificant(p));
+    p.forcedRuns = {9.8, 11.0, 12.0};
+    EXPECT_FALSE(savingIsSignificant(p));
+    p.forcedRuns = {7.0, 8.0, 8.9};  // the plan costs more, beyond the noise
+    EXPECT_TRUE(savingIsSignificant(p));
+    p.forcedRuns.clear();
+    EXPECT_FALSE(savingIsSignificant(p));
 }
 
 class ReportFiles : public ::testing::Test {

@@ -251,8 +251,9 @@ FrameOutput PolyvolTechnique::run(const FrameInput& input) {
     if (stop == kVolumeIndex) return out;
 
     clock.begin();
-    out.final = mView.compose(scene, mAirlight, out.intermediates, "polyvol");
+    mView.compose(scene, mAirlight, out.intermediates, "polyvol");
     out.timing.stages.push_back(clock.end(mStages[kComposeIndex].id));
+    out.final = mView.readFinal();
     out.lastStageRun = kComposeIndex;
     return out;
 }

@@ -388,8 +388,9 @@ FrameOutput SlicesTechnique::run(const FrameInput& input) {
 
     // ---- compose ----
     clock.begin();
-    out.final = mView.compose(scene, mAirlight, out.intermediates, "slices");
+    mView.compose(scene, mAirlight, out.intermediates, "slices");
     out.timing.stages.push_back(clock.end(mStages[kComposeIndex].id));
+    out.final = mView.readFinal();
     out.lastStageRun = kComposeIndex;
     return out;
 }

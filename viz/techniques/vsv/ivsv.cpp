@@ -336,8 +336,9 @@ FrameOutput IvsvTechnique::run(const FrameInput& input) {
 
     // ---- compose ----
     clock.begin();
-    out.final = mView.compose(scene, mAirlight, out.intermediates, "ivsv");
+    mView.compose(scene, mAirlight, out.intermediates, "ivsv");
     out.timing.stages.push_back(clock.end(mStages[kComposeIndex].id));
+    out.final = mView.readFinal();
     out.lastStageRun = kComposeIndex;
     return out;
 }

@@ -209,8 +209,9 @@ FrameOutput VsvTechnique::run(const FrameInput& input) {
 
     // ---- compose ----
     clock.begin();
-    out.final = mView.compose(scene, mAirlight, out.intermediates, "vsv");
+    mView.compose(scene, mAirlight, out.intermediates, "vsv");
     out.timing.stages.push_back(clock.end(mStages[kComposeIndex].id));
+    out.final = mView.readFinal();
     out.lastStageRun = kComposeIndex;
     return out;
 }

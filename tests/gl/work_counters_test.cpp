@@ -1,0 +1,125 @@
+// Work counters (gl/work_counters.h) against counts known without them: raymarch's shadow-map lookups and
+// ray samples are pixels x samples x lights exactly; minmax's tree nodes for one picked pixel equal the CPU
+// mirror's walk of that pixel (pixel_mirror.h); an ordinary run carries no counts, and counting does not
+// change the image.
+#include <gtest/gtest.h>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "gl/work_counters.h"
+#include "minmax_frame.h"
+#include "render/host_device.h"
+#include "scene/builtin_scenes.h"
+#include "techniques/minmax/pixel_mirror.h"
+#include "technique_test_util.h"
+
+namespace viz::testing {
+namespace {
+
+namespace hd = render::hd;
+
+class WorkCountersTest : public TechniqueTest {
+protected:
+    void TearDown() override {
+        gl::WorkCounters::setEnabled(false);
+        gl::WorkCounters::countPixel(std::nullopt);
+        TechniqueTest::TearDown();
+    }
+    static const StageTiming* stage(const FrameOutput& out, const std::string& id) {
+        for (const StageTiming& s : out.timing.stages)
+            if (s.stage == id) return &s;
+        return nullptr;
+    }
+};
+
+TEST_F(WorkCountersTest, RaymarchLooksUpTheShadowMapOncePerPixelSampleAndLight) {
+    const scene::Scene scene = scene::makeBuiltinScene("colonnade");
+    ASSERT_EQ(scene.lights.size(), 1u);  // the sun: its lit interval is the whole ray, so no ray is skipped
+    ASSERT_EQ(scene.lights[0].type, scene::LightType::Directional);
+    const int w = 40, h = 30, samples = 16;
+    const Settings settings{{"samples", double(samples)}};
+    const FrameOutput plain = render(scene, "raymarch", settings, w, h);
+    for (const StageTiming& s : plain.timing.stages) EXPECT_TRUE(s.work.empty()) << s.stage;
+
+    gl::WorkCounters::setEnabled(true);
+    const FrameOutput counted = render(scene, "raymarch", settings, w, h);
+    const StageTiming* march = stage(counted, "raymarch.march");
+    ASSERT_NE(march, nullptr);
+    ASSERT_EQ(march->work.size(), std::size_t(hd::kWorkCounterCount));
+    const std::uint64_t expected = std::uint64_t(w) * h * samples;
+    EXPECT_EQ(march->work[hd::kWorkShadowLookups], expected);
+    EXPECT_EQ(march->work[hd::kWorkRaySamples], expected);
+    // A 2D map's lookup reads its nearest texel and, where the neighbours are in the map, two per axis.
+    EXPECT_GE(march->work[hd::kWorkShadowTexels], expected);
+    EXPECT_LE(march->work[hd::kWorkShadowTexels], 5 * expected);
+    // The surface pass shades fragments and looks the sun's map up at most once for each (only where the
+    // surface faces the sun).
+    const StageTiming* surface = stage(counted, "raymarch.surface");
+    ASSERT_NE(surface, nullptr);
+    EXPECT_GT(surface->work[hd::kWorkFragments], 0u);
+    EXPECT_GT(surface->work[hd::kWorkShadowLookups], 0u);
+    EXPECT_LE(surface->work[hd::kWorkShadowLookups], surface->work[hd::kWorkFragments]);
+    EXPECT_EQ(surface->work[hd::kWorkRaySamples], 0u);
+    // Counting changes nothing in the image.
+    ASSERT_EQ(counted.airlight.pixels.size(), plain.airlight.pixels.size());
+    for (std::size_t i = 0; i < plain.airlight.pixels.size(); ++i)
+        ASSERT_EQ(counted.airlight.pixels[i], plain.airlight.pixels[i]) << i;
+}
+
+TEST_F(WorkCountersTest, MinmaxTreeNodesOfAPickedPixelEqualTheCpuMirrorsWalk) {
+    for (const char* name : {"grate", "terrain"}) {
+        const scene::Scene scene = scene::makeBuiltinScene(name);
+        const int w = 80, h = 60, size = 512;
+        const Settings settings{{"shadow_map", double(size)}};
+        const FrameOutput out = render(scene, "minmax", settings, w, h, -1,
+                                       {"minmax.tree", "minmax.ray_coords", "minmax.near_epipole"});
+        const Intermediate* tree = find(out, "minmax.tree");
+        const Intermediate* coords = find(out, "minmax.ray_coords");
+        const Intermediate* near = find(out, "minmax.near_epipole");
+        ASSERT_TRUE(tree && coords && near && tree->image && coords->image && near->image);
+        render::GpuLightCpu L{};
+        const auto f = minmaxFrame(scene, 0, w, h, size, &L);
+        minmax::MirrorLight ml;
+        ml.kind = f.kind;
+        ml.position = glm::vec3(L.position);
+        ml.direction = glm::vec3(L.direction);
+        ml.radiant = glm::vec3(L.radiant);
+        ml.spotScale = L.spot.x;
+        ml.spotOffset = L.spot.y;
+        const minmax::MirrorMedium medium{float(scene.medium.sigma_s), float(scene.medium.sigma_t()),
+                                          float(scene.medium.g)};
+        int checked = 0;
+        for (const glm::ivec2 p : {glm::ivec2(13, 11), glm::ivec2(40, 30), glm::ivec2(61, 47), glm::ivec2(70, 8)}) {
+            if (near->image->at(p.x, p.y) != 0.0f) continue;  // marched near the epipole: no walk
+            const int row = int(coords->image->at(p.x, p.y, 0));
+            std::vector<glm::vec2> nodes(std::size_t(2 * f.columns));
+            for (int k = 0; k < 2 * f.columns; ++k) {
+                const int glRow = tree->image->height - 1 - row;
+                nodes[std::size_t(k)] = {tree->image->at(k, glRow, 0), tree->image->at(k, glRow, 1)};
+            }
+            const glm::vec3 ray = shaderPixelRay(scene.camera, w, h, p.x, p.y);
+            const minmax::MirrorResult mirror =
+                minmax::integratePixel(f, ml, medium, ray, coords->image->at(p.x, p.y, 1),
+                                       coords->image->at(p.x, p.y, 2), coords->image->at(p.x, p.y, 3), nodes, 64);
+
+            gl::WorkCounters::setEnabled(true);
+            gl::WorkCounters::countPixel(glm::ivec2(p.x, h - 1 - p.y));  // GL rows count from the bottom
+            const FrameOutput counted = render(scene, "minmax", settings, w, h);
+            gl::WorkCounters::setEnabled(false);
+            gl::WorkCounters::countPixel(std::nullopt);
+            const StageTiming* traverse = stage(counted, "minmax.traverse");
+            ASSERT_NE(traverse, nullptr);
+            ASSERT_EQ(traverse->work.size(), std::size_t(hd::kWorkCounterCount));
+            EXPECT_EQ(traverse->work[hd::kWorkTreeNodes], std::uint64_t(mirror.visited))
+                << name << " pixel " << p.x << "," << p.y;
+            EXPECT_GT(mirror.visited, 0) << name;
+            ++checked;
+        }
+        EXPECT_GE(checked, 3) << name;
+    }
+}
+
+}  // namespace
+}  // namespace viz::testing

@@ -1,0 +1,108 @@
+#include "gl/work_counters.h"
+
+#include <epoxy/gl.h>
+
+#include <memory>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "gl/buffer.h"
+
+// The binding point and the counter indices, shared with the shaders (as render/host_device.h does).
+#include "../../shaders/common/host_device.glsl"
+
+namespace viz::gl {
+
+namespace {
+
+using render::hd::kBindingWorkCounters;
+using render::hd::kWorkCounterCount;
+
+struct State {
+    bool enabled = false;
+    glm::ivec4 pixel{-1, -1, 0, 0};
+    std::unique_ptr<Buffer> buffer;
+};
+
+// Never destroyed: a buffer still held at exit would be deleted after its context is gone. Contexts call
+// release() before they go (platform/context_egl.cpp, window_glfw.cpp).
+State& state() {
+    static State* s = new State;
+    return *s;
+}
+
+constexpr std::size_t kHeaderBytes = sizeof(glm::ivec4);
+constexpr std::size_t kBufferBytes = kHeaderBytes + sizeof(std::uint32_t) * std::size_t(kWorkCounterCount);
+
+Buffer& buffer() {
+    State& s = state();
+    if (!s.buffer) {
+        s.buffer = std::make_unique<Buffer>(
+            Buffer::create({.bytes = kBufferBytes, .flags = GL_DYNAMIC_STORAGE_BIT, .label = "work_counters"}));
+        s.buffer->clearZero();
+        s.buffer->upload(0, kHeaderBytes, &s.pixel);
+    }
+    return *s.buffer;
+}
+
+}  // namespace
+
+void WorkCounters::setEnabled(bool enabled) { state().enabled = enabled; }
+
+bool WorkCounters::enabled() { return state().enabled; }
+
+void WorkCounters::countPixel(std::optional<glm::ivec2> pixel) {
+    State& s = state();
+    s.pixel = pixel ? glm::ivec4(*pixel, 0, 0) : glm::ivec4(-1, -1, 0, 0);
+    if (s.buffer) s.buffer->upload(0, kHeaderBytes, &s.pixel);
+}
+
+void WorkCounters::bind() {
+    if (!enabled()) return;
+    buffer().bindBase(GL_SHADER_STORAGE_BUFFER, GLuint(kBindingWorkCounters));
+}
+
+WorkCounts WorkCounters::read() {
+    if (!enabled()) return {};
+    // Make the shaders' atomic adds visible to the read.
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+    std::vector<std::uint32_t> raw(static_cast<std::size_t>(kWorkCounterCount));
+    buffer().download(kHeaderBytes, raw.size() * sizeof(std::uint32_t), raw.data());
+    return WorkCounts(raw.begin(), raw.end());
+}
+
+void WorkCounters::release() { state().buffer.reset(); }
+
+const char* WorkCounters::name(int counter) {
+    static const char* kNames[] = {"shadow_lookups", "shadow_texels",  "ray_samples",    "closed_form_segments",
+                                   "tree_nodes",     "fragments",      "voxels_written", "voxels_read"};
+    static_assert(sizeof(kNames) / sizeof(kNames[0]) == std::size_t(kWorkCounterCount));
+    return counter >= 0 && counter < kWorkCounterCount ? kNames[counter] : "?";
+}
+
+const char* WorkCounters::description(int counter) {
+    static const char* kText[] = {
+        "shadow-map visibility queries (one per point and light)",
+        "shadow-map texels fetched by those queries",
+        "brute-force ray samples (integrand evaluations of a march)",
+        "closed-form airlight integrals of a lit interval",
+        "min-max tree nodes visited",
+        "fragments shaded by the technique's own fragment shaders",
+        "voxel words written",
+        "voxel words read",
+    };
+    static_assert(sizeof(kText) / sizeof(kText[0]) == std::size_t(kWorkCounterCount));
+    return counter >= 0 && counter < kWorkCounterCount ? kText[counter] : "?";
+}
+
+WorkCounts workBetween(const WorkCounts& before, const WorkCounts& after) {
+    if (before.size() != after.size()) return after;
+    WorkCounts d(after.size());
+    // The shader counters are 32-bit: the difference modulo 2^32 is right while a stage adds less.
+    for (std::size_t i = 0; i < d.size(); ++i)
+        d[i] = std::uint64_t(std::uint32_t(std::uint32_t(after[i]) - std::uint32_t(before[i])));
+    return d;
+}
+
+}  // namespace viz::gl
