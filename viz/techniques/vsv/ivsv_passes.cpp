@@ -2,6 +2,8 @@
 // scene's other lights.
 #include "techniques/vsv/ivsv_technique.h"
 
+#include "techniques/vsv/vsv_technique.h"  // vsv_detail::kAirlight
+
 namespace viz::ivsv_detail {
 
 void IvsvTechnique::setRectifyCommon(const gl::Program& p, const Settings& s, int cells, int tile) const {
@@ -159,16 +161,15 @@ void IvsvTechnique::gather(const scene::Scene& scene, const FrameInput& input, i
 }
 
 void IvsvTechnique::addOtherLights(const FrameInput& input) {
-    const scene::Scene others = withoutAreaLights(*input.scene);
+    mOtherLightsScene = withoutAreaLights(*input.scene);
     if (!mVsv) mVsv = makeVsvTechnique();
     FrameInput in;
-    in.scene = &others;
+    in.scene = &mOtherLightsScene;
     in.width = input.width;
     in.height = input.height;
     in.settings = completeSettings(*mVsv, {{"voxels", input.settings.at("voxels")}});
     in.stopAfterStage = 4;  // vsv.gather: L_air exists, no compose needed
-    const FrameOutput extra = mVsv->run(in);
-    vsv::addAirlight(mAirlight, extra.airlight);
+    mAdder.add(mAirlight, mVsv->run(in), vsv_detail::kAirlight);
 }
 
 }  // namespace viz::ivsv_detail

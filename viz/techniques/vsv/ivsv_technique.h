@@ -232,6 +232,10 @@ private:
     render::SceneViewPasses mNaiveView;  // mode=naive: one point light (cube map) per VPL
     bool mSurfaceRan = false, mNaiveBuilt = false;  // in the last run (markersFor)
     std::unique_ptr<Technique> mVsv;     // the scene's other lights
+    // The scene vsv renders: a member, so that its address (with its geometry) stays the same from frame
+    // to frame and vsv uploads the geometry once, not every frame.
+    scene::Scene mOtherLightsScene;
+    vsv::AirlightAdder mAdder;
     std::vector<vsv::Vpl> mVpls;
     std::vector<vsv::EpipolarGrid> mGrids;
     double mVplArea = 0.0;  // dA of one VPL

@@ -2,6 +2,8 @@
 // scene's area lights (left to ivsv).
 #include "techniques/vsv/vsv_technique.h"
 
+#include "techniques/vsv/ivsv_technique.h"  // ivsv_detail::kAirlight
+
 namespace viz::vsv_detail {
 
 void VsvTechnique::allocate(const GridSize& size, int width, int height, int lightCount) {
@@ -40,16 +42,15 @@ void VsvTechnique::allocate(const GridSize& size, int width, int height, int lig
 }
 
 void VsvTechnique::addAreaLights(const FrameInput& input) {
-    const scene::Scene areas = onlyAreaLights(*input.scene);
+    mAreaLightsScene = onlyAreaLights(*input.scene);
     if (!mIvsv) mIvsv = makeIvsvTechnique();
     FrameInput in;
-    in.scene = &areas;
+    in.scene = &mAreaLightsScene;
     in.width = input.width;
     in.height = input.height;
     in.settings = completeSettings(*mIvsv, {{"voxels", std::min(512.0, input.settings.at("voxels"))}});
     in.stopAfterStage = 5;  // ivsv.gather: L_air exists, no compose needed
-    const FrameOutput extra = mIvsv->run(in);
-    vsv::addAirlight(mAirlight, extra.airlight);
+    mAdder.add(mAirlight, mIvsv->run(in), ivsv_detail::kAirlight);
 }
 
 int VsvTechnique::gpuLightIndex(int sceneLight) const {

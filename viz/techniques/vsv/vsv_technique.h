@@ -204,6 +204,10 @@ private:
     gl::Texture mWords;                                // voxelization scratch, one light at a time
     gl::Texture mAirlight, mVisibility;
     std::unique_ptr<Technique> mIvsv;  // the scene's area lights
+    // The scene ivsv renders: a member, so that its address (with its geometry) stays the same from
+    // frame to frame and ivsv uploads the geometry once, not every frame.
+    scene::Scene mAreaLightsScene;
+    vsv::AirlightAdder mAdder;
 };
 
 }  // namespace viz::vsv_detail
