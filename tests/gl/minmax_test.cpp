@@ -26,12 +26,6 @@ class MinmaxTest : public viz::testing::TechniqueTest {};
 
 using viz::testing::relativeL2;
 
-const viz::Intermediate* findIntermediate(const viz::FrameOutput& out, const std::string& id) {
-    for (const auto& i : out.intermediates)
-        if (i.id == id) return &i;
-    return nullptr;
-}
-
 bool allFinite(const viz::Image& img) {
     for (float v : img.pixels)
         if (!std::isfinite(v)) return false;
@@ -40,30 +34,6 @@ bool allFinite(const viz::Image& img) {
 
 // GL row of an Image read back by the test utilities (row 0 at the top).
 float texel(const viz::Image& img, int x, int glRow, int c = 0) { return img.at(x, img.height - 1 - glRow, c); }
-
-// The CPU mirror of pixel (x, y) (row 0 at the top) of a minmax run that kept the tree and ray coordinates.
-viz::minmax::MirrorResult mirrorPixel(const viz::scene::Scene& scene, const viz::FrameOutput& out,
-                                      const viz::minmax::EpipolarFrame<float>& f, const viz::render::GpuLightCpu& L,
-                                      int w, int h, int x, int y, int pieces) {
-    const auto* tree = findIntermediate(out, "minmax.tree");
-    const auto* coords = findIntermediate(out, "minmax.ray_coords");
-    viz::minmax::MirrorLight ml;
-    ml.kind = f.kind;
-    ml.position = glm::vec3(L.position);
-    ml.direction = glm::vec3(L.direction);
-    ml.radiant = glm::vec3(L.radiant);
-    ml.spotScale = L.spot.x;
-    ml.spotOffset = L.spot.y;
-    const viz::minmax::MirrorMedium medium{float(scene.medium.sigma_s), float(scene.medium.sigma_t()),
-                                           float(scene.medium.g)};
-    const glm::vec3 ray = viz::testing::shaderPixelRay(scene.camera, w, h, x, y);  // traverse.comp's
-    const int row = int(coords->image->at(x, y, 0));
-    std::vector<glm::vec2> nodes(std::size_t(2 * f.columns));
-    for (int k = 0; k < 2 * f.columns; ++k)
-        nodes[std::size_t(k)] = {texel(*tree->image, k, row, 0), texel(*tree->image, k, row, 1)};
-    return viz::minmax::integratePixel(f, ml, medium, ray, coords->image->at(x, y, 1), coords->image->at(x, y, 2),
-                                       coords->image->at(x, y, 3), nodes, pieces);
-}
 
 }  // namespace
 
@@ -239,7 +209,7 @@ TEST_F(MinmaxTest, CpuMirrorEqualsGpuForSampledPixels) {
         for (int y = 0; y < h; y += 3) {
             for (int x = 0; x < w; x += 3) {
                 if (near->image->at(x, y) != 0.0f) continue;
-                const auto r = mirrorPixel(scene, out, f, L, w, h, x, y, 64);
+                const auto r = viz::testing::mirrorPixel(scene, out, f, L, w, h, x, y, 64);
                 EXPECT_EQ(float(r.visited), visited->image->at(x, y)) << name << " pixel " << x << "," << y;
                 for (int c = 0; c < 3; ++c) {
                     const double gpu = out.airlight.at(x, y, c), cpu = r.airlight[c];

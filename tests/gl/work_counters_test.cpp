@@ -12,7 +12,6 @@
 #include "minmax_frame.h"
 #include "render/host_device.h"
 #include "scene/builtin_scenes.h"
-#include "techniques/minmax/pixel_mirror.h"
 #include "technique_test_util.h"
 
 namespace viz::testing {
@@ -81,28 +80,10 @@ TEST_F(WorkCountersTest, MinmaxTreeNodesOfAPickedPixelEqualTheCpuMirrorsWalk) {
         ASSERT_TRUE(tree && coords && near && tree->image && coords->image && near->image);
         render::GpuLightCpu L{};
         const auto f = minmaxFrame(scene, 0, w, h, size, &L);
-        minmax::MirrorLight ml;
-        ml.kind = f.kind;
-        ml.position = glm::vec3(L.position);
-        ml.direction = glm::vec3(L.direction);
-        ml.radiant = glm::vec3(L.radiant);
-        ml.spotScale = L.spot.x;
-        ml.spotOffset = L.spot.y;
-        const minmax::MirrorMedium medium{float(scene.medium.sigma_s), float(scene.medium.sigma_t()),
-                                          float(scene.medium.g)};
         int checked = 0;
         for (const glm::ivec2 p : {glm::ivec2(13, 11), glm::ivec2(40, 30), glm::ivec2(61, 47), glm::ivec2(70, 8)}) {
             if (near->image->at(p.x, p.y) != 0.0f) continue;  // marched near the epipole: no walk
-            const int row = int(coords->image->at(p.x, p.y, 0));
-            std::vector<glm::vec2> nodes(std::size_t(2 * f.columns));
-            for (int k = 0; k < 2 * f.columns; ++k) {
-                const int glRow = tree->image->height - 1 - row;
-                nodes[std::size_t(k)] = {tree->image->at(k, glRow, 0), tree->image->at(k, glRow, 1)};
-            }
-            const glm::vec3 ray = shaderPixelRay(scene.camera, w, h, p.x, p.y);
-            const minmax::MirrorResult mirror =
-                minmax::integratePixel(f, ml, medium, ray, coords->image->at(p.x, p.y, 1),
-                                       coords->image->at(p.x, p.y, 2), coords->image->at(p.x, p.y, 3), nodes, 64);
+            const minmax::MirrorResult mirror = mirrorPixel(scene, out, f, L, w, h, p.x, p.y, 64);
 
             gl::WorkCounters::setEnabled(true);
             gl::WorkCounters::countPixel(glm::ivec2(p.x, h - 1 - p.y));  // GL rows count from the bottom

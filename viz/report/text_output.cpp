@@ -29,23 +29,23 @@ std::string escapeHtml(const std::string& text) {
     return out;
 }
 
-std::string speedupPhrase(double ratio) {
+namespace {
+
+// A ratio above 1 as "N x better", below 1 as "1/N x worse" (never "0.17x"), "same" within 1 %.
+std::string ratioPhrase(double ratio, const char* better, const char* worse, const char* same) {
     if (!(ratio > 0.0) || !std::isfinite(ratio)) return "-";
-    if (std::abs(ratio - 1.0) < 0.01) return "as fast";
+    if (std::abs(ratio - 1.0) < 0.01) return same;
     char text[48];
     const double r = ratio > 1.0 ? ratio : 1.0 / ratio;
-    std::snprintf(text, sizeof(text), r < 10.0 ? "%.2fx %s" : "%.0fx %s", r, ratio > 1.0 ? "faster" : "slower");
+    std::snprintf(text, sizeof(text), r < 10.0 ? "%.2fx %s" : "%.0fx %s", r, ratio > 1.0 ? better : worse);
     return text;
 }
 
-std::string workRatioPhrase(double ratio) {
-    if (!(ratio > 0.0) || !std::isfinite(ratio)) return "-";
-    if (std::abs(ratio - 1.0) < 0.01) return "as much work";
-    char text[48];
-    const double r = ratio > 1.0 ? ratio : 1.0 / ratio;
-    std::snprintf(text, sizeof(text), r < 10.0 ? "%.2fx %s" : "%.0fx %s", r, ratio > 1.0 ? "less work" : "more work");
-    return text;
-}
+}  // namespace
+
+std::string speedupPhrase(double ratio) { return ratioPhrase(ratio, "faster", "slower", "as fast"); }
+
+std::string workRatioPhrase(double ratio) { return ratioPhrase(ratio, "less work", "more work", "as much work"); }
 
 std::string formatFigure(double value, const char* format) {
     if (!std::isfinite(value)) return "";
