@@ -128,6 +128,7 @@ float pointIntegrand(float eta, float y0, float nu, float g) {
 // 8-point Gauss-Legendre over eta in [a, b]; 0 for an empty panel.
 float pointPanel(float a, float b, float y0, float nu, float g) {
     if (!(b > a)) return 0.0;
+    WORK_COUNT(kWorkQuadratureNodes, AIRLIGHT_NODES);
     float half_ = 0.5 * (b - a);
     float mid = 0.5 * (a + b);
     float sum = 0.0;

@@ -49,7 +49,8 @@ VIZ_HD_CONST kWorkTreeNodes = 4;            // min-max tree nodes visited (minma
 VIZ_HD_CONST kWorkFragments = 5;            // fragments shaded by a technique's own fragment shaders
 VIZ_HD_CONST kWorkVoxelsWritten = 6;        // voxel words written (vsv, ivsv voxelization)
 VIZ_HD_CONST kWorkVoxelsRead = 7;           // voxel words read (vsv, ivsv scan and gather)
-VIZ_HD_CONST kWorkCounterCount = 8;
+VIZ_HD_CONST kWorkQuadratureNodes = 8;      // integrand evaluations inside closed-form point-light segments
+VIZ_HD_CONST kWorkCounterCount = 9;
 
 // ---- light types (GpuLight::info.x) ----
 VIZ_HD_CONST kLightPoint = 0;

@@ -96,6 +96,16 @@ TEST_F(WorkCountersTest, MinmaxTreeNodesOfAPickedPixelEqualTheCpuMirrorsWalk) {
             EXPECT_EQ(traverse->work[hd::kWorkTreeNodes], std::uint64_t(mirror.visited))
                 << name << " pixel " << p.x << "," << p.y;
             EXPECT_GT(mirror.visited, 0) << name;
+            // Each closed-form point or spot segment is 13 Gauss-Legendre panels of 8 nodes at most, and at
+            // least one (common/airlight.glsl pointSegment); a sun's segment has none.
+            const std::uint64_t segments = traverse->work[hd::kWorkClosedFormSegments];
+            const std::uint64_t nodes = traverse->work[hd::kWorkQuadratureNodes];
+            if (scene.lights[0].type == scene::LightType::Directional) {
+                EXPECT_EQ(nodes, 0u) << name;
+            } else {
+                EXPECT_GE(nodes, 8 * segments) << name;
+                EXPECT_LE(nodes, 13 * 8 * segments) << name;
+            }
             ++checked;
         }
         EXPECT_GE(checked, 3) << name;

@@ -76,7 +76,8 @@ void WorkCounters::release() { state().buffer.reset(); }
 
 const char* WorkCounters::name(int counter) {
     static const char* kNames[] = {"shadow_lookups", "shadow_texels",  "ray_samples",    "closed_form_segments",
-                                   "tree_nodes",     "fragments",      "voxels_written", "voxels_read"};
+                                   "tree_nodes",     "fragments",      "voxels_written", "voxels_read",
+                                   "quadrature_nodes"};
     static_assert(sizeof(kNames) / sizeof(kNames[0]) == std::size_t(kWorkCounterCount));
     return counter >= 0 && counter < kWorkCounterCount ? kNames[counter] : "?";
 }
@@ -91,6 +92,7 @@ const char* WorkCounters::description(int counter) {
         "fragments shaded by the technique's own fragment shaders",
         "voxel words written",
         "voxel words read",
+        "Gauss-Legendre nodes evaluated inside closed-form point-light segments",
     };
     static_assert(sizeof(kText) / sizeof(kText[0]) == std::size_t(kWorkCounterCount));
     return counter >= 0 && counter < kWorkCounterCount ? kText[counter] : "?";

@@ -1,6 +1,7 @@
 // Work counters: what a GPU run costs in units that do not depend on the GPU or its driver (shadow-map
-// lookups and texels, ray samples, closed-form segments, tree nodes, fragments, voxels), the figure that
-// carries over from llvmpipe to any GPU. A counting run compiles every program with COUNT_WORK, whose
+// lookups and texels, ray samples, closed-form segments and their quadrature nodes, tree nodes,
+// fragments, voxels), the figure that carries over from llvmpipe to any GPU. A counting run compiles
+// every program with COUNT_WORK, whose
 // shaders add to the counters (shaders/common/work_counters.glsl); an ordinary run compiles them out and
 // is unchanged. The counters live in one SSBO per context; StageClock reads them at the start and end of
 // every stage, so each stage's record carries the work it did (debug/timing.h, StageTiming::work).
