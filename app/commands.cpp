@@ -106,13 +106,10 @@ void printWork(const viz::FrameOutput& out, const std::optional<glm::ivec2>& pix
         std::printf("work of pixel %d,%d (counting run):\n", pixel->x, pixel->y);
     else
         std::printf("work (counting run):\n");
-    viz::WorkCounts total;
     for (const auto& s : out.timing.stages) {
         std::printf("  %-26s", s.stage.c_str());
         bool any = false;
-        total.resize(std::max(total.size(), s.work.size()), 0);
         for (std::size_t c = 0; c < s.work.size(); ++c) {
-            total[c] += s.work[c];
             if (s.work[c] == 0) continue;
             std::printf(" %s %llu", viz::gl::WorkCounters::name(int(c)), static_cast<unsigned long long>(s.work[c]));
             any = true;
@@ -120,6 +117,7 @@ void printWork(const viz::FrameOutput& out, const std::optional<glm::ivec2>& pix
         std::printf(any ? "\n" : " (nothing counted)\n");
     }
     std::printf("  %-26s", "total");
+    const viz::WorkCounts total = out.timing.totalWork();
     for (std::size_t c = 0; c < total.size(); ++c)
         std::printf(" %s %llu", viz::gl::WorkCounters::name(int(c)), static_cast<unsigned long long>(total[c]));
     std::printf("\n");

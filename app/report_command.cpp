@@ -242,11 +242,7 @@ viz::report::PlanSaving measurePlanSaving(const std::string& id, const viz::scen
 
 // A counting run's work summed over its stages, named by counter.
 std::vector<std::pair<std::string, std::uint64_t>> namedWork(const viz::FrameOutput& out) {
-    viz::WorkCounts total;
-    for (const viz::StageTiming& s : out.timing.stages) {
-        total.resize(std::max(total.size(), s.work.size()), 0);
-        for (std::size_t c = 0; c < s.work.size(); ++c) total[c] += s.work[c];
-    }
+    const viz::WorkCounts total = out.timing.totalWork();
     std::vector<std::pair<std::string, std::uint64_t>> named;
     for (std::size_t c = 0; c < total.size(); ++c) named.push_back({viz::gl::WorkCounters::name(int(c)), total[c]});
     return named;

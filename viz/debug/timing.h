@@ -32,6 +32,15 @@ struct Timing {
         for (const auto& s : stages) t += s.milliseconds;
         return t;
     }
+    // A counting run's work summed over the stages (empty outside counting runs).
+    WorkCounts totalWork() const {
+        WorkCounts total;
+        for (const auto& s : stages) {
+            if (total.size() < s.work.size()) total.resize(s.work.size(), 0);
+            for (std::size_t c = 0; c < s.work.size(); ++c) total[c] += s.work[c];
+        }
+        return total;
+    }
 };
 
 // Times CPU work with a steady clock.

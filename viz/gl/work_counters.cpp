@@ -82,22 +82,6 @@ const char* WorkCounters::name(int counter) {
     return counter >= 0 && counter < kWorkCounterCount ? kNames[counter] : "?";
 }
 
-const char* WorkCounters::description(int counter) {
-    static const char* kText[] = {
-        "shadow-map visibility queries (one per point and light)",
-        "shadow-map texels fetched by those queries",
-        "brute-force ray samples (integrand evaluations of a march)",
-        "closed-form airlight integrals of a lit interval",
-        "min-max tree nodes visited",
-        "fragments shaded by the technique's own fragment shaders",
-        "voxel words written",
-        "voxel words read",
-        "Gauss-Legendre nodes evaluated inside closed-form point-light segments",
-    };
-    static_assert(sizeof(kText) / sizeof(kText[0]) == std::size_t(kWorkCounterCount));
-    return counter >= 0 && counter < kWorkCounterCount ? kText[counter] : "?";
-}
-
 WorkCounts workBetween(const WorkCounts& before, const WorkCounts& after) {
     if (before.size() != after.size()) return after;
     WorkCounts d(after.size());

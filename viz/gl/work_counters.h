@@ -1,9 +1,8 @@
 // Work counters: what a GPU run costs in units that do not depend on the GPU or its driver (shadow-map
 // lookups and texels, ray samples, closed-form segments and their quadrature nodes, tree nodes,
 // fragments, voxels), the figure that carries over from llvmpipe to any GPU. A counting run compiles
-// every program with COUNT_WORK, whose
-// shaders add to the counters (shaders/common/work_counters.glsl); an ordinary run compiles them out and
-// is unchanged. The counters live in one SSBO per context; StageClock reads them at the start and end of
+// every program with COUNT_WORK, whose shaders add to the counters (shaders/common/work_counters.glsl); an
+// ordinary run compiles them out and is unchanged. The counters live in one SSBO per context; StageClock reads them at the start and end of
 // every stage, so each stage's record carries the work it did (debug/timing.h, StageTiming::work).
 // Counts are 32-bit and wrap: a stage's count is exact below 2^32.
 #pragma once
@@ -35,7 +34,6 @@ public:
     static void release();
 
     static const char* name(int counter);  // "shadow_lookups", ...
-    static const char* description(int counter);
 };
 
 // What a stage did between two reads (wrap-around safe).

@@ -1,4 +1,5 @@
 // index.html of `airlight report`: static HTML, inline CSS, no scripts, every resource a file next to it.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <set>
@@ -35,6 +36,29 @@ std::string figure(double v, const char* format = "%.3g") {
     return text.empty() ? "&ndash;" : text;
 }
 
+// One row per scene and error target, one column per technique but the baseline: its time (or work)
+// against raymarch's at the target, in words.
+void appendTargetTable(std::ostringstream& h, const std::string& title, const std::vector<ReportRow>& rows,
+                       const std::vector<ScenePage>& scenes, const std::vector<std::string>& techniques,
+                       Measure measure) {
+    h << "<h2>" << escapeHtml(title) << "</h2>\n<table><tr><th class=\"l\">scene</th><th>error target</th>";
+    for (const std::string& t : techniques)
+        if (t != "raymarch") h << "<th>" << escapeHtml(t) << "</th>";
+    h << "</tr>\n";
+    for (const ScenePage& s : scenes)
+        for (double target : errorTargets()) {
+            h << "<tr><td class=\"l\">" << escapeHtml(s.scene) << "</td><td>" << figure(100.0 * target) << " %</td>";
+            for (const std::string& t : techniques) {
+                if (t == "raymarch") continue;
+                const TargetSpeedup ts = targetSpeedup(rows, s.scene, t, target, "raymarch", measure);
+                h << "<td" << (ts.bound != TargetSpeedup::Bound::Unknown ? "" : " class=\"note\"") << ">"
+                  << escapeHtml(targetSpeedupPhrase(ts, "raymarch", measure)) << "</td>";
+            }
+            h << "</tr>\n";
+        }
+    h << "</table>\n";
+}
+
 constexpr const char* kStyle = R"(body{font-family:DejaVu Sans,sans-serif;margin:2em;color:#222;max-width:72em}
 table{border-collapse:collapse;margin:0.5em 0 1.5em}td,th{border:1px solid #ccc;padding:0.2em 0.6em;text-align:right}
 th{background:#f2f2f2}td.l,th.l{text-align:left}tr.front td{font-weight:bold}
@@ -68,53 +92,24 @@ void writeHtml(const std::string& path, const ReportMeta& meta, const std::vecto
 
     // Headline: per scene and error target, each technique's speed-up over raymarch, both interpolated
     // along their own Pareto fronts.
-    h << "<h2>Speed-up over brute-force ray marching at equal error</h2>\n<table><tr><th class=\"l\">scene</th>"
-         "<th>error target</th>";
-    for (const std::string& t : techniques)
-        if (t != "raymarch") h << "<th>" << escapeHtml(t) << "</th>";
-    h << "</tr>\n";
-    for (const ScenePage& s : scenes)
-        for (double target : errorTargets()) {
-            h << "<tr><td class=\"l\">" << escapeHtml(s.scene) << "</td><td>" << figure(100.0 * target) << " %</td>";
-            for (const std::string& t : techniques) {
-                if (t == "raymarch") continue;
-                const TargetSpeedup ts = targetSpeedup(rows, s.scene, t, target);
-                const bool reached = ts.bound != TargetSpeedup::Bound::Unknown;
-                h << "<td" << (reached ? "" : " class=\"note\"") << ">" << escapeHtml(targetSpeedupPhrase(ts)) << "</td>";
-            }
-            h << "</tr>\n";
-        }
-    h << "</table>\n<p class=\"note\">Each side's time to reach the target is interpolated linearly in log(time) "
+    appendTargetTable(h, "Speed-up over brute-force ray marching at equal error", rows, scenes, techniques,
+                      Measure::Time);
+    h << "<p class=\"note\">Each side's time to reach the target is interpolated linearly in log(time) "
          "against log(error) between the two points of its own Pareto front (its sweep settings that no faster "
          "setting beats) that bracket the target; no extrapolation. &ldquo;or less&rdquo;: even the cheapest setting "
          "is below the target, so its time only bounds the true one, and the speed-up is a bound (at least / at "
          "most). The per-row speed-ups in the tables below compare at each row's own error instead.</p>\n";
 
     // The same comparison in counted operations (one counting run per setting): what carries over to a GPU.
-    bool counted = false;
-    for (const ReportRow& r : rows) counted = counted || !r.work.empty();
-    if (counted) {
-        h << "<h2>Work against brute-force ray marching at equal error</h2>\n<table><tr><th class=\"l\">scene</th>"
-             "<th>error target</th>";
-        for (const std::string& t : techniques)
-            if (t != "raymarch") h << "<th>" << escapeHtml(t) << "</th>";
-        h << "</tr>\n";
-        for (const ScenePage& s : scenes)
-            for (double target : errorTargets()) {
-                h << "<tr><td class=\"l\">" << escapeHtml(s.scene) << "</td><td>" << figure(100.0 * target) << " %</td>";
-                for (const std::string& t : techniques) {
-                    if (t == "raymarch") continue;
-                    const TargetSpeedup ts = targetSpeedup(rows, s.scene, t, target, "raymarch", Measure::Work);
-                    h << "<td" << (ts.bound != TargetSpeedup::Bound::Unknown ? "" : " class=\"note\"") << ">"
-                      << escapeHtml(targetSpeedupPhrase(ts, "raymarch", Measure::Work)) << "</td>";
-                }
-                h << "</tr>\n";
-            }
-        h << "</table>\n<p class=\"note\">Work: one run of each setting with every shader counting what it does "
-             "(shadow-map lookups and texels, ray samples, closed-form segments, tree nodes, fragments, voxel words; "
-             "<code>airlight render --count-work</code>), summed into counted operations, each about one memory "
-             "read or one integrand evaluation. These counts do not depend on the GPU or its driver; how long an "
-             "operation takes does. Interpolated along each side's Pareto front in work as above.</p>\n";
+    if (std::any_of(rows.begin(), rows.end(), [](const ReportRow& r) { return !r.work.empty(); })) {
+        appendTargetTable(h, "Work against brute-force ray marching at equal error", rows, scenes, techniques,
+                          Measure::Work);
+        h << "<p class=\"note\">Work: one run of each setting with every shader counting what it does "
+             "(shadow-map lookups and texels, ray samples, closed-form segments and their quadrature nodes, tree "
+             "nodes, fragments, voxel words; <code>airlight render --count-work</code>), summed into counted "
+             "operations, each about one memory read or one integrand evaluation. These counts do not depend on "
+             "the GPU or its driver; how long an operation takes does. Interpolated along each side's Pareto front "
+             "in work as above.</p>\n";
     }
 
     appendRankingHtml(h, rows, scenes);

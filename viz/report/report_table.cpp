@@ -126,14 +126,6 @@ bool savingIsSignificant(const PlanSaving& p) {
     return *plannedMax < *forcedMin || *forcedMax < *plannedMin;
 }
 
-const ReportRow* bestSpeedup(const std::vector<ReportRow>& rows, const std::string& scene, const std::string& technique) {
-    const ReportRow* best = nullptr;
-    for (const ReportRow& r : rows)
-        if (r.scene == scene && r.technique == technique && r.speedup && (!best || *r.speedup > *best->speedup))
-            best = &r;
-    return best;
-}
-
 const std::vector<std::string>& csvColumns() {
     static const std::vector<std::string> kColumns = {
         "scene", "technique", "setting", "settings", "width", "height", "runs", "clock", "total_ms", "wall_ms",

@@ -101,9 +101,6 @@ TargetSpeedup targetSpeedup(const std::vector<ReportRow>& rows, const std::strin
 std::string targetSpeedupPhrase(const TargetSpeedup& s, const std::string& baseline = "raymarch",
                                 Measure measure = Measure::Time);
 
-// The row of a scene and technique with the highest speed-up (the report's headline), if any has one.
-const ReportRow* bestSpeedup(const std::vector<ReportRow>& rows, const std::string& scene, const std::string& technique);
-
 // Column names of results.csv, in order (the schema tests check against this list).
 const std::vector<std::string>& csvColumns();
 

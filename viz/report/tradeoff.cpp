@@ -32,20 +32,9 @@ std::vector<int> paretoFront(const std::vector<TradeoffPoint>& points) {
 }
 
 std::optional<double> baselineTimeAtError(const std::vector<TradeoffPoint>& baseline, double error) {
-    if (!(error > 0.0) || !std::isfinite(error)) return std::nullopt;
-    const std::vector<int> front = paretoFront(baseline);  // time rising, error falling
-    if (front.empty()) return std::nullopt;
-    for (std::size_t k = 0; k < front.size(); ++k) {
-        const TradeoffPoint& p = baseline[std::size_t(front[k])];
-        if (p.error == error) return p.milliseconds;
-        if (k + 1 == front.size()) break;
-        const TradeoffPoint& q = baseline[std::size_t(front[k + 1])];
-        if (error < p.error && error > q.error) {
-            const double f = std::log(error / p.error) / std::log(q.error / p.error);
-            return std::exp(std::log(p.milliseconds) + f * std::log(q.milliseconds / p.milliseconds));
-        }
-    }
-    return std::nullopt;
+    const TimeToTarget t = timeToReach(baseline, error);
+    if (t.kind != TimeToTarget::Kind::Interpolated) return std::nullopt;
+    return t.milliseconds;
 }
 
 std::optional<double> speedupAtEqualError(const std::vector<TradeoffPoint>& baseline, const TradeoffPoint& p) {
@@ -65,7 +54,8 @@ TimeToTarget timeToReach(const std::vector<TradeoffPoint>& series, double target
     t.bestError = series[std::size_t(front.back())].error;
     const TradeoffPoint& cheapest = series[std::size_t(front.front())];
     if (cheapest.error <= target) {
-        t.kind = TimeToTarget::Kind::AtMost;
+        // On the target: its time exactly; below it: a bound.
+        t.kind = cheapest.error == target ? TimeToTarget::Kind::Interpolated : TimeToTarget::Kind::AtMost;
         t.milliseconds = cheapest.milliseconds;
         return t;
     }

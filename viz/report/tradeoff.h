@@ -17,8 +17,8 @@ struct TradeoffPoint {
 std::vector<int> paretoFront(const std::vector<TradeoffPoint>& points);
 
 // The baseline's time at `error`, interpolated linearly in log(time) against log(error) between the two
-// points of the baseline's Pareto front that bracket it. Empty when `error` lies outside the front's
-// error range (no extrapolation) or the front has fewer than one point.
+// points of the baseline's Pareto front that bracket it (timeToReach, below, when it is Interpolated).
+// Empty when `error` lies outside the front's error range (no extrapolation) or the front is empty.
 std::optional<double> baselineTimeAtError(const std::vector<TradeoffPoint>& baseline, double error);
 
 // baselineTimeAtError(error of p) / time of p, or empty as above.
@@ -28,7 +28,8 @@ std::optional<double> speedupAtEqualError(const std::vector<TradeoffPoint>& base
 struct TimeToTarget {
     enum class Kind {
         Interpolated,  // log(time) linear in log(error) between the two front points that bracket the target
-        AtMost,        // even the cheapest setting is at or below the target: its time bounds the true one
+                       // (exact on a front point)
+        AtMost,        // even the cheapest setting is below the target: its time bounds the true one
         NotReached,    // no setting reaches the target
     };
     Kind kind = Kind::NotReached;
