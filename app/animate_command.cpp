@@ -95,6 +95,7 @@ int runAnimate(Args& args) {
     int badFrames = 0;
     for (int i = 0; i < o.frames; ++i) {
         viz::scene::applyPose(poses[std::size_t(i)], job.scene());
+        job.setFrame(i);
         const viz::FrameOutput& out = job.run();
         for (const std::string& note : out.notes)
             if (notesSeen.insert(note).second && !o.quiet)

@@ -175,6 +175,8 @@ void GuiApp::togglePlaying() {
 
 void GuiApp::advanceAnimation(double dt) {
     mPlayClock += dt;
+    ++mPlayFrame;
+    if (technique().readsFrame(mSettings)) mDirty = true;  // its noise changes every frame
     if (mSettings.count("time")) {
         mSettings["time"] = mPlayClock;
         mDirty = true;
@@ -239,7 +241,7 @@ void GuiApp::render() {
     const auto start = Clock::now();
     try {
         // The scheduler re-runs only the stages whose inputs changed (a sub-step: its stage alone).
-        mOutput = mRunners.at(t.id())->run(mScene, size.x, size.y, mSettings, mCursor, shownContents());
+        mOutput = mRunners.at(t.id())->run(mScene, size.x, size.y, mSettings, mCursor, shownContents(), mPlayFrame);
         mError.clear();
         mHaveOutput = true;
         mPass = 1;

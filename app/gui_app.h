@@ -457,6 +457,7 @@ private:
     int mScriptRevealFrames = 0;
     bool mPlaying = false;                        // P: the animation runs
     double mPlayClock = 0.0, mPlayTurn = 0.0;     // seconds played; the light's turn (0..1)
+    int mPlayFrame = 0;                           // animation frames played (FrameInput::frame)
     std::optional<viz::scene::Light> mPlayLight;  // the first light as it was when play started
     glm::dvec3 mPlayCentre{0.0};  // frames left until a script action's widget is scrolled into view
     std::vector<std::string> mSceneChoices, mStiffChoices;  // the scene pickers' lists (built lazily)

@@ -39,6 +39,8 @@ public:
     RenderJob& operator=(const RenderJob&) = delete;
 
     const viz::FrameOutput& run();
+    // Frame index along an animation for the next run() (FrameInput::frame).
+    void setFrame(int frame) { mInput.frame = frame; }
     const viz::scene::Scene& scene() const { return mScene; }
     // The scene the next run() renders: a caller may move its camera and lights between runs (animate
     // does, frame by frame), as the window does; techniques read the scene at every run.

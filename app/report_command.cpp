@@ -253,7 +253,29 @@ struct SweepPoint {
     viz::QualitySetting setting;
     std::string series;  // the report's series: the technique, or "T (paper)" for its paper preset
     int indexInSeries = 0;
+    std::string stabiliser{};  // a stabilising option's pair (always measured along the path)
+    bool stabiliserOn = false;
 };
+
+// With --temporal, a scene's sweep: the techniques' sweep, then each technique's stabilising options on
+// that scene as pairs of points (the option off, then on).
+std::vector<SweepPoint> sceneSweep(const std::vector<SweepPoint>& sweep, const std::vector<std::string>& techniques,
+                                   const viz::scene::Scene& scene, bool temporal) {
+    std::vector<SweepPoint> out = sweep;
+    if (!temporal) return out;
+    for (const std::string& id : techniques) {
+        const auto technique = viz::makeTechnique(id);
+        for (viz::StabilisingOption& option : technique->stabilisingOptions(scene)) {
+            for (bool on : {false, true}) {
+                viz::Settings settings = on ? option.on : option.off;
+                (void)viz::completeSettings(*technique, settings);  // throws if a declared option is invalid
+                const viz::Settings& given = on ? option.on : option.off;
+                out.push_back({id, {settingsText(technique->params(), given), given}, id, -1, option.name, on});
+            }
+        }
+    }
+    return out;
+}
 
 }  // namespace
 
@@ -284,14 +306,22 @@ int runReportCommand(Args& args, const std::string& commandLine) {
     }
     // --temporal: every scene's path and poses, so that a path that cannot move a scene fails here.
     std::vector<viz::scene::MotionPath> paths;
-    int temporalSteps = 0;
     if (o.temporal) {
         for (std::size_t si = 0; si < scenes.size(); ++si) {
             paths.push_back(viz::scene::parseMotionPath(o.path.empty() ? defaultMotionPath(o.scenes[si], scenes[si]) : o.path));
             for (int i = 0; i < o.frames; ++i) (void)viz::scene::poseAt(paths.back(), scenes[si], i, o.frames);
         }
-        temporalSteps = o.frames;
-        for (const SweepPoint& p : sweep) temporalSteps += measuredAlongPath(o.quick, p.series != p.technique, p.indexInSeries) ? 1 : 0;
+    }
+    std::vector<std::vector<SweepPoint>> sweeps;  // per scene: with --temporal, the stabilising options too
+    std::size_t progressSteps = 0;
+    for (const viz::scene::Scene& scene : scenes) {
+        sweeps.push_back(sceneSweep(sweep, o.techniques, scene, o.temporal));
+        progressSteps += 2 * sweeps.back().size() + 1 + o.techniques.size();
+        if (o.temporal) {
+            progressSteps += std::size_t(o.frames);
+            for (const SweepPoint& p : sweeps.back())
+                progressSteps += !p.stabiliser.empty() || measuredAlongPath(o.quick, p.series != p.technique, p.indexInSeries);
+        }
     }
     const std::filesystem::path dir = createOutputFolder(o.out);
     auto context = viz::HeadlessContext::create(false);
@@ -301,7 +331,13 @@ int runReportCommand(Args& args, const std::string& commandLine) {
     std::vector<viz::report::ReportRow> rows;
     std::vector<viz::report::ScenePage> pages;
     std::vector<viz::report::PlanSaving> savings;
-    Progress progress(int(scenes.size() * (2 * sweep.size() + 1 + o.techniques.size() + std::size_t(temporalSteps))));
+    Progress progress{int(progressSteps)};
+    // What --temporal adds: the stabilising options' points and every run along the paths (seconds).
+    const auto reportStart = std::chrono::steady_clock::now();
+    double temporalSeconds = 0.0;
+    auto secondsSince = [](std::chrono::steady_clock::time_point t) {
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+    };
     int done = 0;
     for (std::size_t si = 0; si < scenes.size(); ++si) {
         const viz::scene::Scene& scene = scenes[si];
@@ -329,7 +365,9 @@ int runReportCommand(Args& args, const std::string& commandLine) {
         std::map<std::string, std::pair<std::size_t, viz::Image>> bestImage;
         std::unique_ptr<viz::Technique> technique;
         const std::size_t firstRow = rows.size();
-        for (const SweepPoint& point : sweep) {
+        const std::vector<SweepPoint>& sweepHere = sweeps[si];
+        for (const SweepPoint& point : sweepHere) {
+            const auto pointStart = std::chrono::steady_clock::now();
             progress.show(done, sceneName + " | " + point.technique + " | " + point.setting.label);
             if (!technique || technique->id() != point.technique) {
                 technique.reset();
@@ -343,6 +381,8 @@ int runReportCommand(Args& args, const std::string& commandLine) {
             row.technique = point.series;
             row.setting = point.setting.label;
             row.settings = settingsText(technique->params(), point.setting.settings);
+            row.stabiliser = point.stabiliser;
+            row.stabiliserOn = point.stabiliserOn;
             row.width = o.width, row.height = o.height, row.runs = o.runs;
             row.clock = output.timing.clock;
             for (const TimedRuns::Stage& s : timed.stages) row.stages.push_back({s.id, s.milliseconds});
@@ -355,17 +395,20 @@ int runReportCommand(Args& args, const std::string& commandLine) {
             const double e = row.error.relativeL2;
             if (it == bestImage.end() || (std::isfinite(e) && !(rows[it->second.first].error.relativeL2 <= e)))
                 bestImage[point.series] = {rows.size(), output.airlight};
-            if (o.temporal && measuredAlongPath(o.quick, point.series != point.technique, point.indexInSeries))
+            if (o.temporal && (!point.stabiliser.empty() ||
+                               measuredAlongPath(o.quick, point.series != point.technique, point.indexInSeries)))
                 temporalJobs.push_back({rows.size(), point.technique, in.settings});
             rows.push_back(std::move(row));
             ++done;
+            if (!point.stabiliser.empty()) temporalSeconds += secondsSince(pointStart);
         }
         technique.reset();
         // The work of every setting (gl/work_counters.h): one counting run each, in an instance per
         // technique made while counting is on, so that every program it compiles counts.
         viz::gl::WorkCounters::setEnabled(true);
-        for (std::size_t k = 0; k < sweep.size(); ++k) {
-            const SweepPoint& point = sweep[k];
+        for (std::size_t k = 0; k < sweepHere.size(); ++k) {
+            const SweepPoint& point = sweepHere[k];
+            const auto pointStart = std::chrono::steady_clock::now();
             progress.show(done, sceneName + " | " + point.technique + " | work of " + point.setting.label);
             if (!technique || technique->id() != point.technique) {
                 technique.reset();
@@ -374,6 +417,7 @@ int runReportCommand(Args& args, const std::string& commandLine) {
             viz::FrameInput in{&scene, o.width, o.height, viz::completeSettings(*technique, point.setting.settings), -1};
             rows[firstRow + k].work = namedWork(technique->run(in));
             ++done;
+            if (!point.stabiliser.empty()) temporalSeconds += secondsSince(pointStart);
         }
         technique.reset();
         viz::gl::WorkCounters::setEnabled(false);
@@ -396,8 +440,10 @@ int runReportCommand(Args& args, const std::string& commandLine) {
             page.temporalPlot = stem + "-temporal-plot.png";
             const viz::Settings referenceSettings =
                 o.quick ? viz::Settings{{"area_samples", kQuickReferenceAreaSamples}} : viz::Settings{};
+            const auto temporalStart = std::chrono::steady_clock::now();
             runTemporal(scene, paths[si], o.frames, o.width, o.height, referenceSettings, temporalJobs, rows, dir, stem,
                         exposure, [&](const std::string& what) { progress.show(done++, sceneName + " | temporal | " + what); });
+            temporalSeconds += secondsSince(temporalStart);
         }
         pages.push_back(page);
     }
@@ -474,7 +520,13 @@ int runReportCommand(Args& args, const std::string& commandLine) {
             for (const auto& t : ranks)
                 if (t.stabilityRank) std::printf(" %d. %s %.3g", t.stabilityRank, t.technique.c_str(), t.mostStable);
             std::printf("\n");
+            for (const viz::report::StabiliserPair& p : viz::report::stabiliserPairs(rows, page.scene))
+                std::printf("%-14s %s\n", page.scene.c_str(), viz::report::stabiliserLine(p).c_str());
         }
+    if (o.temporal)
+        std::printf("--temporal took %.0f s of the report's %.0f s (the stabilising options' settings and every frame "
+                    "along the paths, reference frames included)\n",
+                    temporalSeconds, secondsSince(reportStart));
     std::printf("wrote %s\n", (dir / "index.html").string().c_str());
     return 0;
 }

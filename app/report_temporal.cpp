@@ -65,7 +65,9 @@ void runTemporal(const viz::scene::Scene& scene, const viz::scene::MotionPath& p
         std::vector<double> times;
         for (int i = 0; i < frames; ++i) {
             viz::scene::applyPose(poses[std::size_t(i)], moving);
-            const viz::FrameOutput out = technique->run({&moving, width, height, job.settings, -1});
+            viz::FrameInput input{&moving, width, height, job.settings, -1};
+            input.frame = i;
+            const viz::FrameOutput out = technique->run(input);
             if (out.airlight.empty()) throw std::runtime_error(job.technique + " produced no L_air image");
             times.push_back(out.timing.totalMilliseconds());
             accumulator.add(out.airlight, reference[std::size_t(i)]);

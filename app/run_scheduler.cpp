@@ -26,6 +26,8 @@ ResumePoint resumePoint(const viz::Technique& t, const RunKey& previous, int pre
     const int n = int(stages.size());
     if (n == 0 || previous.scene != next.scene || previous.width != next.width || previous.height != next.height)
         return {};
+    // Noise that changes from frame to frame (raymarch jitter_time=per-frame, ivsv subsets=per-frame).
+    if (previous.frame != next.frame && t.readsFrame(next.settings)) return {};
     const StepCursor was = normalised(t, previous), now = normalised(t, next);
 
     // The first stage reading a parameter that changed; a changed parameter no stage declares: stage 0.
@@ -64,8 +66,8 @@ std::vector<std::string> StageRunner::onDemandAmong(const std::vector<std::strin
 }
 
 viz::FrameOutput StageRunner::run(const viz::scene::Scene& scene, int width, int height, const viz::Settings& settings,
-                                  StepCursor cursor, const std::vector<std::string>& views) {
-    RunKey key{viz::scene::sceneContentHash(scene), width, height, settings, cursor, onDemandAmong(views)};
+                                  StepCursor cursor, const std::vector<std::string>& views, int frame) {
+    RunKey key{viz::scene::sceneContentHash(scene), width, height, settings, cursor, onDemandAmong(views), frame};
     mResume = mPrevious ? resumePoint(*mTechnique, *mPrevious, mPreviousLastStage, key) : ResumePoint{};
     viz::FrameInput input;
     input.scene = &scene;
@@ -80,6 +82,7 @@ viz::FrameOutput StageRunner::run(const viz::scene::Scene& scene, int width, int
     input.resumeAtStage = mResume.stage;
     input.substepOnly = mResume.substepOnly;
     input.views = key.views;
+    input.frame = frame;
     mLastViews = key.views;
     mPrevious.reset();  // a run that throws leaves nothing to resume from
     viz::FrameOutput out = mTechnique->run(input);

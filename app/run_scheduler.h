@@ -34,6 +34,7 @@ struct RunKey {
     viz::Settings settings;  // complete
     StepCursor cursor;
     std::vector<std::string> views;  // the on-demand intermediates asked for (FrameInput::views), sorted
+    int frame = 0;  // FrameInput::frame: a technique whose settings read it (Technique::readsFrame) restarts
 };
 
 struct ResumePoint {
@@ -59,7 +60,7 @@ public:
     // stopping at `cursor`, resuming after the previous run where resumePoint allows. `views`: the
     // intermediates the caller shows; those the stages draw on demand are asked for.
     viz::FrameOutput run(const viz::scene::Scene& scene, int width, int height, const viz::Settings& settings,
-                         StepCursor cursor, const std::vector<std::string>& views = {});
+                         StepCursor cursor, const std::vector<std::string>& views = {}, int frame = 0);
     // The on-demand intermediates among `shown` (sorted, once each): what a run asked to show them draws.
     std::vector<std::string> onDemandAmong(const std::vector<std::string>& shown) const;
     // The on-demand views the last run drew.

@@ -8,13 +8,14 @@
 namespace viz::testing {
 
 inline FrameOutput runTechnique(Technique& technique, const scene::Scene& scene, const Settings& given, int w,
-                                int h, int stopAfter = -1) {
+                                int h, int stopAfter = -1, int frame = 0) {
     FrameInput in;
     in.scene = &scene;
     in.width = w;
     in.height = h;
     in.settings = completeSettings(technique, given);
     in.stopAfterStage = stopAfter;
+    in.frame = frame;
     return technique.run(in);
 }
 

@@ -28,13 +28,17 @@ layout(r32f, binding = 1) uniform image2D uLitFraction;     // running count of 
 uniform int uSamples;
 uniform int uLightCount;
 #include "common/medium.glsl"  // uSigmaS, uSigmaT, uG
-uniform uint uSeed;
+uniform uint uSeed;          // jitter=white: the hash's seed (moves every frame with jitter_time=per-frame)
+#ifdef JITTER_BLUE
+layout(binding = kFirstFreeTextureUnit + 1) uniform sampler2D uBlueNoise;  // 64x64 tile, values in (0, 1)
+#endif
+uniform float uBlueShift;    // jitter=blue: added to the tile's value, modulo 1 (steps every frame)
 uniform int uPairBegin;  // first (light, sample) pair of this dispatch
 uniform int uPairEnd;    // one past the last
 uniform bool uFirst;     // the first dispatch starts the sums at zero
 uniform bool uLast;      // the last dispatch turns the lit count into a fraction
 
-// PCG-style integer hash -> [0, 1): jitter that is fixed per pixel, sample and seed (deterministic).
+// PCG-style integer hash -> [0, 1): jitter=white's offset, fixed per pixel, sample and seed (deterministic).
 float hashToUnit(uvec3 v) {
     v = v * 1664525u + 1013904223u;
     v.x += v.y * v.z; v.y += v.z * v.x; v.z += v.x * v.y;
@@ -60,7 +64,11 @@ void main() {
         vec2 span = litInterval(L, w, d, uSigmaT);
         if (span.y <= span.x) continue;  // the light reaches no part of this ray: no samples, none lit
         float dt = (span.y - span.x) / float(uSamples);
-#ifdef JITTER
+#if defined(JITTER_BLUE)
+        // One offset for every interval of the pixel's ray: the tile spreads neighbouring pixels' offsets
+        // evenly, so the banding of a coarse N becomes fine grain instead of white noise's clumps.
+        float u = fract(texelFetch(uBlueNoise, texel & 63, 0).r + uBlueShift);
+#elif defined(JITTER)
         float u = hashToUnit(uvec3(uint(texel.x) + uint(texel.y) * 65536u, uint(i), uSeed + uint(li)));
 #else
         float u = 0.5;

@@ -19,7 +19,7 @@ uniform float uAspect;
 uniform vec3 uForward;
 uniform vec3 uRight;
 uniform vec3 uUp;
-uniform float uSpacing;
+#include "slices/slab.glsl"  // uSpacing, slabLength
 uniform mat4 uLightMatrix;  // eye-relative world -> the light's clip space
 uniform int uClipLight;     // 1: the planes were clipped to the light frustum
 uniform int uUserClip;      // 1: and to the user planes
@@ -59,7 +59,7 @@ void main() {
         status = kPickLightFrustum;
     else if (uUserClip != 0 && (dot(uUserPlane0, vec4(p, 1.0)) < 0.0 || dot(uUserPlane1, vec4(p, 1.0)) < 0.0))
         status = kPickUserPlane;
-    gPick[record].where = vec4(float(vPlane), vDepth, t, uSpacing / dot(w, uForward));
+    gPick[record].where = vec4(float(vPlane), vDepth, t, slabLength(vPlane) / dot(w, uForward));
     gPick[record].test = vec4(status, -1.0, -1.0, texelFetch(uDistance, uPickPixel, 0).r);
     gPick[record].value = vec4(0.0);
 }

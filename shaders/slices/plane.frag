@@ -28,7 +28,7 @@ uniform vec3 uUp;
 uniform vec2 uSize;           // image size in pixels
 uniform float uTanHalf;       // tan(yfov / 2)
 uniform float uAspect;
-uniform float uSpacing;       // delta s, view depth between planes
+#include "slices/slab.glsl"    // uSpacing, slabLength
 #include "common/medium.glsl"  // uSigmaS, uSigmaT, uG
 uniform float uStoreScale;    // value -> stored value
 uniform float uArtisticUnits; // paper units per scene unit (the paper's constants assume its world)
@@ -136,7 +136,7 @@ vec3 shade(GpuLight L, vec3 p, vec3 w, float t) {
         float r2 = dot(toLight, toLight);
         E = L.radiant.rgb * angular * cookie * (exp(-uSigmaT * sqrt(r2)) / max(r2, 1.0e-20));
     }
-    float dt = uSpacing / dot(w, uForward);
+    float dt = slabLength(vPlane) / dot(w, uForward);
     return (uSigmaS * noise * phaseHG(cosTheta, uG) * V * exp(-uSigmaT * t) * dt) * E;
 #else
     // The paper's constants: compositeNoise 0.015 (0.05 n1 n2 with noise), atten = ambient + 20000 / r^2
@@ -192,7 +192,7 @@ void main() {
     // The pick draw is scissored to the picked pixel; the test keeps the records right without it.
     bool picked = ivec2(gl_FragCoord.xy) == uPickPixel;
     int record = uPickBase + vPlane;
-    if (picked) gPick[record].where = vec4(float(vPlane), vDepth, t, uSpacing / dot(w, uForward));
+    if (picked) gPick[record].where = vec4(float(vPlane), vDepth, t, slabLength(vPlane) / dot(w, uForward));
     if (picked && t > d) gPick[record].test = vec4(kPickBeyondSurface, -1.0, -1.0, d);  // V: not tested
 #endif
     // Beyond the first surface (or zfar) the ray has ended: the plane adds nothing there.

@@ -38,6 +38,7 @@ uniform ivec3 uCells;
 uniform int uFirstVpl;
 uniform int uVplCount;    // VPLs [uFirstVpl, uFirstVpl + uVplCount)
 uniform int uVplStride;   // 1 or 9
+uniform int uPhaseShift;  // added to the 3x3 subset index, mod 9 (subsets=per-frame: the frame index)
 #include "common/medium.glsl"  // uSigmaS, uSigmaT, uG
 #include "common/work_counters.glsl"
 uniform int uChunkBits;
@@ -74,7 +75,7 @@ void main() {
     ivec2 pixel = min(id * uScale, uSize - 1);
     vec3 w = pixelRay(pixel);
     float d = texelFetch(uDistance, pixel, 0).r;
-    int phase = uVplStride == 9 ? (pixel.x % 3) + 3 * (pixel.y % 3) : 0;
+    int phase = uVplStride == 9 ? ((pixel.x % 3) + 3 * (pixel.y % 3) + uPhaseShift) % 9 : 0;
     bool picked = pixel == uPick;
 
     vec3 total = vec3(0.0);

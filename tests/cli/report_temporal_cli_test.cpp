@@ -6,6 +6,8 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <cstdio>
+#include <map>
 #include <set>
 #include <sstream>
 #include <string>
@@ -54,11 +56,21 @@ TEST_F(ReportTemporalTest, QuickWritesFiniteTemporalFiguresForEveryTechniqueWith
     const nlohmann::json j = nlohmann::json::parse(readFile(out / "results.json"));
     EXPECT_TRUE(j.at("meta").at("temporal").get<bool>());
     std::set<std::string> techniques, measured;
-    int temporalRows = 0;
+    int temporalRows = 0, stabiliserRows = 0;
+    // Stabilising options (Technique::stabilisingOptions): (technique, option) -> temporal RMS off, on.
+    std::map<std::pair<std::string, std::string>, std::pair<double, double>> options;
     for (const auto& row : j.at("rows")) {
         const std::string series = row.at("technique").get<std::string>();
         techniques.insert(series);
         const auto& t = row.at("temporal");
+        if (!row.at("stabiliser").is_null()) {
+            // Every row of an option's pair is measured along the path, with --quick too.
+            ++stabiliserRows;
+            ASSERT_FALSE(t.is_null()) << row.dump();
+            const auto key = std::make_pair(series, row.at("stabiliser").at("option").get<std::string>());
+            auto& [off, on] = options.try_emplace(key, -1.0, -1.0).first->second;
+            (row.at("stabiliser").at("on").get<bool>() ? on : off) = t.at("temporal_rms").get<double>();
+        }
         if (t.is_null()) continue;
         ++temporalRows;
         measured.insert(series);
@@ -78,7 +90,20 @@ TEST_F(ReportTemporalTest, QuickWritesFiniteTemporalFiguresForEveryTechniqueWith
     }
     // Every technique has a row measured along the path (with --quick its cheapest setting, one row each;
     // the paper presets are measured by the full report).
-    EXPECT_EQ(temporalRows, 6);
+    EXPECT_EQ(temporalRows - stabiliserRows, 6);
+    // grate has a spot light and no area light: raymarch's three jitter pairs, slices' plane grid,
+    // minmax's slice frame; no ivsv subsets (no VPLs).
+    const std::set<std::pair<std::string, std::string>> expected = {
+        {"raymarch", "jitter_time=constant (white)"}, {"raymarch", "jitter_time=constant (blue)"},
+        {"raymarch", "jitter=blue"}, {"slices", "plane_grid=world"}, {"minmax", "slice_frame=fixed"}};
+    std::set<std::pair<std::string, std::string>> found;
+    for (const auto& [key, rms] : options) {
+        found.insert(key);
+        EXPECT_GE(rms.first, 0.0) << key.second << ": no row without it";
+        EXPECT_GE(rms.second, 0.0) << key.second << ": no row with it";
+    }
+    EXPECT_EQ(found, expected);
+    EXPECT_EQ(stabiliserRows, 2 * int(expected.size()));
     for (const char* id : {"raymarch", "slices", "polyvol", "minmax", "vsv", "ivsv"})
         EXPECT_TRUE(measured.count(id)) << id;
     for (const std::string& series : techniques)
@@ -104,6 +129,15 @@ TEST_F(ReportTemporalTest, QuickWritesFiniteTemporalFiguresForEveryTechniqueWith
     const Image plot = readImage((out / "grate-temporal-plot.png").string());
     EXPECT_GT(plot.width, 0);
     EXPECT_NE(r.out.find("most stable along camera-orbit:10deg"), std::string::npos) << r.out;
+    // Each option on the page's table and on the terminal, with the rows' own figures.
+    EXPECT_NE(page.find("<h4>Stabilising options</h4>"), std::string::npos);
+    for (const auto& [key, rms] : options) {
+        char figures[96];
+        std::snprintf(figures, sizeof figures, "temporal RMS %.3g -> %.3g", rms.first, rms.second);
+        EXPECT_NE(r.out.find("grate          " + key.first + " " + key.second + ": " + figures), std::string::npos)
+            << key.second << "\n" << r.out;
+        EXPECT_NE(page.find("<td class=\"l\">" + key.second + "</td>"), std::string::npos) << key.second;
+    }
 }
 
 TEST_F(ReportTemporalTest, ReferenceFramesAreCachedPerPoseAndReused) {

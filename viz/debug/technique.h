@@ -53,6 +53,19 @@ struct StiffBound {
     std::string why;
 };
 
+// settings[name], or `fallback` where the settings do not hold it.
+inline double settingOr(const Settings& settings, const std::string& name, double fallback) {
+    const auto it = settings.find(name);
+    return it == settings.end() ? fallback : it->second;
+}
+
+// One stabilising option (Technique::stabilisingOptions): `off` and `on` differ in the option alone.
+struct StabilisingOption {
+    std::string name;  // "plane_grid=world"
+    std::string what;  // what moves without it, in a few words
+    Settings off, on;
+};
+
 struct FrameInput {
     const scene::Scene* scene = nullptr;
     int width = 0;
@@ -74,6 +87,10 @@ struct FrameInput {
     bool substepOnly = false;
     // The on-demand intermediates (StageInfo::onDemand) the caller will show.
     std::vector<std::string> views{};
+    // Frame index along an animation (a motion path's frame i, the window's animation counter); 0 for a
+    // still. Read only by options whose noise changes from frame to frame (raymarch jitter_time=per-frame,
+    // ivsv subsets=per-frame); every other output is a function of the scene and the settings alone.
+    int frame = 0;
 };
 
 struct FrameOutput {
@@ -115,6 +132,20 @@ public:
     // The paper's own configuration where Airlight's defaults depart from it (`--preset paper`; the report
     // shows it beside the defaults). Empty: the defaults are the paper's, or there is no paper.
     virtual Settings paperSettings() const { return {}; }
+    // Options that trade a little of something for less flicker under motion, each as a pair of settings
+    // that differ only in it (`airlight report --temporal` measures both along each scene's path and
+    // tabulates what the option buys). Only those that can matter on `scene` (ivsv's VPL subsets need an
+    // area light). Empty: none.
+    // Whether a run with these (complete) settings reads FrameInput::frame: its output then changes from
+    // frame to frame of an animation even where nothing moves (the window re-runs it while playing).
+    virtual bool readsFrame(const Settings& settings) const {
+        (void)settings;
+        return false;
+    }
+    virtual std::vector<StabilisingOption> stabilisingOptions(const scene::Scene& scene) const {
+        (void)scene;
+        return {};
+    }
     // Marks for the screen pixel `pixel` (column, row 0 at the top, of the last run's frame) in the
     // intermediate `intermediateId` of the last run; empty when the technique cannot map it there. GPU
     // techniques may read their textures (the GL context is current).

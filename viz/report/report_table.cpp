@@ -135,7 +135,9 @@ const std::vector<std::string>& csvColumns() {
         "temporal_path", "temporal_frames", "mean_frame_error", "temporal_rms", "worst_flicker", "ms_per_frame",
         "flicker_image",
         // one counting run (gl/work_counters.h): the sum of the counters, and each as name=count
-        "work_ops", "work"};
+        "work_ops", "work",
+        // --temporal: a stabilising option's pair (Technique::stabilisingOptions): "OPTION off" or "OPTION on"
+        "stabiliser"};
     return kColumns;
 }
 
@@ -157,7 +159,8 @@ void writeCsv(const std::string& path, const std::vector<ReportRow>& rows) {
             r.speedup ? number(*r.speedup) : "", r.pareto ? "1" : "0", stages,
             t ? t->path : "", t ? std::to_string(t->frames) : "", t ? number(t->meanFrameError) : "",
             t ? number(t->temporalRms) : "", t ? number(t->worstFlicker) : "", t ? number(t->msPerFrame) : "",
-            t ? t->flickerImage : "", r.work.empty() ? "" : formatFigure(r.workTotal(), "%.0f"), workText(r)};
+            t ? t->flickerImage : "", r.work.empty() ? "" : formatFigure(r.workTotal(), "%.0f"), workText(r),
+            r.stabiliser.empty() ? "" : r.stabiliser + (r.stabiliserOn ? " on" : " off")};
         for (std::size_t i = 0; i < fields.size(); ++i) out << (i ? "," : "") << csvField(fields[i]);
         out << "\n";
     }
@@ -211,7 +214,10 @@ void writeJson(const std::string& path, const ReportMeta& meta, const std::vecto
                         {"error_image", r.errorImage},
                         {"temporal", temporalJson(r.temporal)},
                         {"work", workJson(r)},
-                        {"work_ops", jsonNumber(r.workTotal())}});
+                        {"work_ops", jsonNumber(r.workTotal())},
+                        {"stabiliser", r.stabiliser.empty() ? nlohmann::json(nullptr)
+                                                            : nlohmann::json{{"option", r.stabiliser},
+                                                                             {"on", r.stabiliserOn}}}});
     }
     j["rows"] = list;
     nlohmann::json targets = nlohmann::json::array();

@@ -48,6 +48,10 @@ struct ReportRow {
     std::string image;              // files next to index.html (PNG), empty when not written
     std::string errorImage;
     std::optional<TemporalFigures> temporal{};  // with --temporal, on the settings it measures
+    // With --temporal, a row of a stabilising option's pair (Technique::stabilisingOptions): the
+    // option's name, and which side of the pair (off: without it, on: with it); empty otherwise.
+    std::string stabiliser{};
+    bool stabiliserOn = false;
     // One counting run's work (gl/work_counters.h), summed over the stages: (counter name, count) in the
     // counters' order; empty when not counted.
     std::vector<std::pair<std::string, std::uint64_t>> work{};

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <map>
 
@@ -91,6 +92,49 @@ void appendRankingHtml(std::ostringstream& h, const std::vector<ReportRow>& rows
     }
 }
 
+std::vector<StabiliserPair> stabiliserPairs(const std::vector<ReportRow>& rows, const std::string& scene) {
+    std::vector<StabiliserPair> pairs;
+    for (const ReportRow& r : rows) {
+        if (r.scene != scene || r.stabiliser.empty() || !r.temporal) continue;
+        auto it = std::find_if(pairs.begin(), pairs.end(), [&](const StabiliserPair& p) {
+            return p.technique == r.technique && p.option == r.stabiliser;
+        });
+        if (it == pairs.end()) it = pairs.insert(pairs.end(), {r.technique, r.stabiliser});
+        (r.stabiliserOn ? it->on : it->off) = &r;
+    }
+    std::erase_if(pairs, [](const StabiliserPair& p) { return !p.off || !p.on; });
+    return pairs;
+}
+
+namespace {
+
+// "3.24x lower", "1.10x higher", "unchanged" for a figure going from `without` to `with`.
+std::string changeWords(double without, double with) {
+    if (!std::isfinite(without) || !std::isfinite(with)) return "not comparable";
+    if (without == with) return "unchanged";
+    char text[64];
+    if (with < without) {
+        if (with <= 0.0) return "down to 0";
+        std::snprintf(text, sizeof text, "%.3gx lower", without / with);
+    } else {
+        if (without <= 0.0) return "up from 0";
+        std::snprintf(text, sizeof text, "%.3gx higher", with / without);
+    }
+    return text;
+}
+
+}  // namespace
+
+std::string stabiliserLine(const StabiliserPair& p) {
+    const TemporalFigures& a = *p.off->temporal;
+    const TemporalFigures& b = *p.on->temporal;
+    char text[256];
+    std::snprintf(text, sizeof text, "temporal RMS %.3g -> %.3g (%s), frame error %.3g -> %.3g, %.1f -> %.1f ms per frame",
+                  a.temporalRms, b.temporalRms, changeWords(a.temporalRms, b.temporalRms).c_str(), a.meanFrameError,
+                  b.meanFrameError, a.msPerFrame, b.msPerFrame);
+    return p.technique + " " + p.option + ": " + text;
+}
+
 void appendTemporalHtml(std::ostringstream& h, const std::vector<ReportRow>& rows, const ScenePage& s) {
     const bool any = std::any_of(rows.begin(), rows.end(), [&](const ReportRow& r) { return r.scene == s.scene && r.temporal; });
     if (!any) return;
@@ -111,6 +155,24 @@ void appendTemporalHtml(std::ostringstream& h, const std::vector<ReportRow>& row
         h << "<figure><img src=\"" << escapeHtml(r.temporal->flickerImage) << "\" alt=\"flicker of "
           << escapeHtml(r.technique) << "\"><figcaption>flicker, " << escapeHtml(r.technique) << " "
           << escapeHtml(r.setting) << "</figcaption></figure>\n";
+    }
+    const std::vector<StabiliserPair> pairs = stabiliserPairs(rows, s.scene);
+    if (!pairs.empty()) {
+        h << "<h4>Stabilising options</h4>\n<table><tr><th class=\"l\">technique</th><th class=\"l\">option</th>"
+             "<th class=\"l\">without it</th><th>temporal RMS without &rarr; with</th><th>worst flicker</th>"
+             "<th>mean frame error</th><th>ms per frame</th></tr>\n";
+        for (const StabiliserPair& p : pairs) {
+            const TemporalFigures& a = *p.off->temporal;
+            const TemporalFigures& b = *p.on->temporal;
+            h << "<tr><td class=\"l\">" << escapeHtml(p.technique) << "</td><td class=\"l\">" << escapeHtml(p.option)
+              << "</td><td class=\"l\">" << escapeHtml(p.off->setting) << "</td><td>" << figure(a.temporalRms)
+              << " &rarr; " << figure(b.temporalRms) << " (" << changeWords(a.temporalRms, b.temporalRms) << ")</td><td>"
+              << figure(a.worstFlicker) << " &rarr; " << figure(b.worstFlicker) << "</td><td>"
+              << figure(a.meanFrameError) << " &rarr; " << figure(b.meanFrameError) << "</td><td>"
+              << figure(a.msPerFrame, "%.1f") << " &rarr; " << figure(b.msPerFrame, "%.1f") << "</td></tr>\n";
+        }
+        h << "</table>\n<p class=\"note\">Each option measured as a pair of settings that differ in it alone, on the "
+             "same frames against the same reference frames; its rows are also in the temporal table above.</p>\n";
     }
     h << "<p class=\"note\">Temporal RMS: the RMS over pixels, channels and frames of the frame-to-frame change of "
          "the error (technique &minus; reference), halved, over the reference's mean; worst flicker: the 99th "

@@ -23,6 +23,88 @@ bool ndcOf(const scene::Camera& cam, double aspect, glm::dvec3 q, glm::dvec2& nd
     return true;
 }
 
+
+// slice_frame=screen (the paper's grid), in the frame centred on the image centre's slice: alpha over the
+// screen's [lo, hi] (or the whole circle when it wraps).
+void paperSliceGrid(EpipolarFrame<double>& f, const SetupInput& in, double lo, double hi, double span,
+                    double minGradient) {
+    const double pi = std::numbers::pi;
+    // Neighbouring slices at most one pixel apart wherever alpha changes slowest: every ray is within half
+    // a pixel of its nearest slice.
+    // Automatic grids also put a slice on alpha = 0, the half-plane of the image centre's ray: pixels on
+    // that screen line (the centre line through the epipole) then use their own slice instead of lying
+    // exactly halfway between two, where rounding would pick the side. An occluder whose boundary is an
+    // epipolar plane through the eye and the centre ray (a plate with one face through the light, seen
+    // from a camera in the same plane) keeps its shadow on the correct side of that line.
+    const bool automatic = in.slices <= 0;
+    int slices = in.slices;
+    if (automatic) slices = int(std::ceil(span * std::max(1, in.oversampling) / minGradient)) + (f.wrap ? 0 : 1);
+    f.slices = std::clamp(slices, 2, kMaxSlices);
+    if (f.wrap) {
+        // An even count has slices at -pi + k 2 pi / n, among them 0 (k = n / 2).
+        if (automatic && f.slices % 2 == 1) f.slices = std::min(f.slices + 1, kMaxSlices);
+        f.alphaLo = -pi;
+        f.alphaSpacing = 2.0 * pi / f.slices;
+    } else {
+        f.alphaLo = lo - minGradient;
+        f.alphaSpacing = span / double(f.slices - 1);
+        if (automatic) {
+            // Same spacing, the grid shifted onto multiples of it (one more slice covers the shift).
+            const double first = std::floor(f.alphaLo / f.alphaSpacing);
+            const int count = int(std::ceil((hi + minGradient) / f.alphaSpacing) - first) + 1;
+            if (count <= kMaxSlices) {
+                f.alphaLo = first * f.alphaSpacing;
+                f.slices = std::max(count, 2);
+            }
+        }
+    }
+}
+
+// slice_frame=fixed (SetupInput::fixedFrame): the spacing is 2 pi / 2^m, the coarsest such no wider than
+// what the paper's grid would use (so every ray stays as close to a slice), and the slices sit on its
+// multiples in the world-fixed frame. The frame is then turned by the multiple of the spacing nearest the
+// image centre's alpha, which moves no slice, so that the screen's alpha range stays one interval.
+void fixedSliceGrid(EpipolarFrame<double>& f, const EpipolarFrame<double>& world, glm::dvec3 centre,
+                    const SetupInput& in, double lo, double hi, double span, double minGradient) {
+    const double pi = std::numbers::pi;
+    double wanted;
+    if (in.slices <= 0) wanted = minGradient / double(std::max(1, in.oversampling));
+    else wanted = f.wrap ? 2.0 * pi / double(std::max(in.slices, 2)) : span / double(std::max(in.slices - 1, 1));
+    int divisions = int(std::min<unsigned>(std::bit_ceil(unsigned(std::ceil(2.0 * pi / std::max(wanted, 1e-9)))),
+                                           unsigned(kMaxSlices)));
+    divisions = std::max(divisions, 2);
+    // The centred frame is the world frame turned by the centre's alpha a0; turning it back by
+    // delta = a0 - k spacing instead gives a frame whose multiples of spacing are the world frame's.
+    const bool wrap = f.wrap;
+    for (;; divisions /= 2) {
+        const double spacing = 2.0 * pi / double(divisions);
+        const double a0 = alphaOf(world, centre);
+        const double delta = a0 - std::round(a0 / spacing) * spacing;
+        EpipolarFrame<double> g = world;
+        centreAlphaOn(g, centre);  // u along the centre's slice...
+        const double c = std::cos(-delta), sn = std::sin(-delta);
+        g.u = c * g.u + sn * g.v;  // ...then back by delta onto the grid
+        g.v = glm::cross(g.axis, g.u);
+        g.wrap = wrap;
+        g.alphaSpacing = spacing;
+        if (wrap) {
+            g.alphaLo = -pi;
+            g.slices = divisions;
+        } else {
+            // Alpha in g = alpha in the centred frame + delta.
+            const double first = std::floor((lo + delta - minGradient) / spacing);
+            const int count = int(std::ceil((hi + delta + minGradient) / spacing) - first) + 1;
+            if (count > kMaxSlices && divisions > 2) continue;
+            g.alphaLo = first * spacing;
+            g.slices = std::clamp(count, 2, kMaxSlices);
+        }
+        const int columns = f.columns;
+        f = g;
+        f.columns = columns;
+        return;
+    }
+}
+
 }  // namespace
 
 Epipoles screenEpipoles(const scene::Camera& camera, int width, int height, glm::dvec3 axis) {
@@ -62,6 +144,7 @@ Setup setupLight(const SetupInput& in) {
     f = makeFrame<double>(directional ? LightKind::Directional : point ? LightKind::Point : LightKind::Spot,
                           glm::dvec3(L.position), glm::dvec3(L.direction));
     const glm::dvec3 centre = scene::pixelRay(cam, in.width, in.height, 0.5 * (in.width - 1), 0.5 * (in.height - 1));
+    const EpipolarFrame<double> world = f;  // alpha from makeFrame's world-fixed direction
     centreAlphaOn(f, centre);
 
     // alpha over every pixel: its range, and its smallest change per pixel (where slices are sparsest).
@@ -100,35 +183,10 @@ Setup setupLight(const SetupInput& in) {
     // With the epipole on screen the slices fan all the way round; otherwise the screen sees less than pi.
     f.wrap = onScreen(ep.epipole) || onScreen(ep.antiEpipole) || hi - lo > 0.9 * pi;
     const double span = f.wrap ? 2.0 * pi : (hi - lo) + 2.0 * minGradient;
-    // Neighbouring slices at most one pixel apart wherever alpha changes slowest: every ray is within half
-    // a pixel of its nearest slice.
-    // Automatic grids also put a slice on alpha = 0, the half-plane of the image centre's ray: pixels on
-    // that screen line (the centre line through the epipole) then use their own slice instead of lying
-    // exactly halfway between two, where rounding would pick the side. An occluder whose boundary is an
-    // epipolar plane through the eye and the centre ray (a plate with one face through the light, seen
-    // from a camera in the same plane) keeps its shadow on the correct side of that line.
-    const bool automatic = in.slices <= 0;
-    int slices = in.slices;
-    if (automatic) slices = int(std::ceil(span * std::max(1, in.oversampling) / minGradient)) + (f.wrap ? 0 : 1);
-    f.slices = std::clamp(slices, 2, kMaxSlices);
-    if (f.wrap) {
-        // An even count has slices at -pi + k 2 pi / n, among them 0 (k = n / 2).
-        if (automatic && f.slices % 2 == 1) f.slices = std::min(f.slices + 1, kMaxSlices);
-        f.alphaLo = -pi;
-        f.alphaSpacing = 2.0 * pi / f.slices;
-    } else {
-        f.alphaLo = lo - minGradient;
-        f.alphaSpacing = span / double(f.slices - 1);
-        if (automatic) {
-            // Same spacing, the grid shifted onto multiples of it (one more slice covers the shift).
-            const double first = std::floor(f.alphaLo / f.alphaSpacing);
-            const int count = int(std::ceil((hi + minGradient) / f.alphaSpacing) - first) + 1;
-            if (count <= kMaxSlices) {
-                f.alphaLo = first * f.alphaSpacing;
-                f.slices = std::max(count, 2);
-            }
-        }
-    }
+    if (in.fixedFrame)
+        fixedSliceGrid(f, world, centre, in, lo, hi, span, minGradient);
+    else
+        paperSliceGrid(f, in, lo, hi, span, minGradient);
     s.maxSliceGap = f.alphaSpacing / minGradient;
 
     // gamma: the spot's cone as seen from the light (angle phi between -a and the spot axis, +- outer), or

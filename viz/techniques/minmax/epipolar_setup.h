@@ -51,6 +51,12 @@ struct SetupInput {
     int slices = 0;   // 0: automatic
     int columns = 0;  // gamma texels (rounded up to a power of two)
     int oversampling = 1;  // automatic slices: every camera ray within 1 / (2 oversampling) pixel of a slice
+    // slice_frame=fixed: the slices at alpha = k 2 pi / 2^m about the axis, alpha measured from a
+    // world-fixed direction (makeFrame's), the spacing a power-of-two division of the circle no coarser
+    // than the screen needs: while the eye and the light stay on the same axis (the camera turning in
+    // place, a spot turning about its position) the slices stay put in the world instead of following
+    // the screen. false: the paper's grid, centred on the image centre's slice.
+    bool fixedFrame = false;
 };
 
 struct Setup {

@@ -12,6 +12,10 @@ MinmaxTechnique::MinmaxTechnique() {
          0, 0, minmax::kMaxSlices, true},
         {"slice_oversampling", "automatic slices: k puts every camera ray within 1/(2k) pixel of a slice", 2, 1,
          64, true},
+        {"slice_frame", "screen: the paper's slices, centred on the image centre's slice and as many as the screen "
+                        "needs, so they turn and respace with every view; fixed: alpha = k 2 pi / 2^m from a "
+                        "world-fixed direction about the eye-light axis (slices stay put while that axis does)",
+         0, 0, 1, true, {"screen", "fixed"}},
         {"columns", "gamma texels per slice (rounded up to a power of two); 0: the shadow map's size", 0, 0,
          minmax::kMaxColumns, true},
         {"integrand", "analytic: the segment integral per lit run (closed form for suns, Gauss-Legendre panels for "
@@ -47,7 +51,7 @@ MinmaxTechnique::MinmaxTechnique() {
         {kStageRectify, "Rectify", "shadow map -> S[alpha, gamma] = beta of the occluder on each light ray "
          "(point lights: each slice's gamma range first, then their cube map); integrand=svd: SVD of "
          "I(beta, gamma) and prefix sums of Gamma_i T per slice",
-         {"slices", "slice_oversampling", "columns", "integrand", "rank", "texture_columns", "point_lights"},
+         {"slices", "slice_oversampling", "slice_frame", "columns", "integrand", "rank", "texture_columns", "point_lights"},
          {kRectified, kRectifiedView, kRowGamma, kSingularValues, kBasis, kPrefixSums, kReconstructionError}, 1},
         {kStageMipmap, "Min-max mipmap", "per row of S: a 1D min-max tree, one pass per level",
          {"mip_levels"}, {kTree, kPyramid}, 1, "mip_levels"},
@@ -68,6 +72,15 @@ std::vector<double> MinmaxTechnique::substepValues(int stage, const Settings& s)
     for (int k = 1; k < levels; ++k) values.push_back(double(k));
     values.push_back(0.0);
     return values;
+}
+
+std::vector<StabilisingOption> MinmaxTechnique::stabilisingOptions(const scene::Scene& scene) const {
+    // Epipolar slices are those of spot, point and directional lights (an area light is not walked).
+    if (std::none_of(scene.lights.begin(), scene.lights.end(),
+                     [](const scene::Light& l) { return l.type != scene::LightType::Area; }))
+        return {};
+    return {{"slice_frame=fixed", "the slices turn and respace with every view", {{"slice_frame", 0.0}},
+             {{"slice_frame", 1.0}}}};
 }
 
 std::vector<QualitySetting> MinmaxTechnique::qualitySweep(bool quick) const {
@@ -146,6 +159,11 @@ Plan MinmaxTechnique::plan(const scene::Scene& scene, const Settings& settings) 
                                            "traverse stage)";
         }
     }
+    const bool fixedFrame = settings.at("slice_frame") != 0.0;
+    p.features.push_back({"FIXED_SLICE_FRAME", fixedFrame,
+                          fixedFrame ? "slice_frame=fixed: slices at multiples of 2 pi / 2^m from a world-fixed "
+                                       "direction (up to twice the paper's count)"
+                                     : "slice_frame=screen: the paper's slices, centred on the image centre"});
     const bool svd = settings.at("integrand") == 1.0;
     p.features.push_back({"INTEGRAND_SVD", svd,
                           svd ? "rank-" + std::to_string(int(settings.at("rank"))) +

@@ -24,7 +24,8 @@ void MinmaxTechnique::prepareLights(const scene::Scene& scene, const FrameInput&
         w.setup = minmax::setupLight({.light = &L, .camera = &scene.camera, .width = input.width,
                                       .height = input.height, .slices = int(input.settings.at("slices")),
                                       .columns = columns,
-                                      .oversampling = int(input.settings.at("slice_oversampling"))});
+                                      .oversampling = int(input.settings.at("slice_oversampling")),
+                                      .fixedFrame = input.settings.at("slice_frame") != 0.0});
         sliceGapNote(scene, L.info.w, input, w.setup, notes);
         // Reuse the previous textures when the sizes agree.
         const std::size_t k = work.size();

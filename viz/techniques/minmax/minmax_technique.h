@@ -131,6 +131,7 @@ public:
     // epipole cost accuracy where the light is in view. The quick sweep keeps two points, a coarse grid
     // and rank 8 on a 1024 map: its share of `airlight report --quick` stays near 40 s on two cores.
     std::vector<QualitySetting> qualitySweep(bool quick) const override;
+    std::vector<StabilisingOption> stabilisingOptions(const scene::Scene& scene) const override;
 
     // The accurate end of the knobs: every camera ray within 1/8 pixel of a slice (slice_oversampling 4),
     // 128 spot pieces, 1024 near-epipole samples; the analytic integrand (the SVD's own error is measured

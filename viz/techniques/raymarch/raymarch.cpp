@@ -7,6 +7,7 @@
 #include <memory>
 #include <string>
 
+#include "core/blue_noise.h"
 #include "debug/permutations.h"
 #include "gl/program.h"
 #include "gl/stage_clock.h"
@@ -43,6 +44,7 @@ const PermutationTable kDefines = {
     {"EXACT", {"EXACT", nullptr}},
     {"NAIVE_CLOSED_FORM", {"NAIVE_CLOSED_FORM", nullptr}},
     {"JITTER", {"JITTER", nullptr}},
+    {"JITTER_BLUE", {"JITTER_BLUE", nullptr}},
     {"SPOT", {nullptr, "LIGHTS_NO_SPOT"}},
     {"COOKIE", {nullptr, "LIGHTS_NO_COOKIE"}},
     {"SHADOW_MAPS_CUBE", {nullptr, "SHADOW_NO_CUBE"}},
@@ -55,7 +57,12 @@ public:
     RaymarchTechnique() {
         mParams = {
             {"samples", "samples per pixel and light along [0, d]", 64, 1, 65536, true},
-            {"jitter", "1: one stratified random offset per sample interval; 0: interval midpoints", 0, 0, 1, true},
+            {"jitter", "off: interval midpoints; white: a random offset per pixel, sample interval and light; "
+             "blue: one offset per pixel for all its intervals, from a 64x64 blue-noise tile",
+             0, 0, 2, true, {"off", "white", "blue"}},
+            {"jitter_time", "constant: the same offsets every frame (seed fixed); per-frame: new offsets on every "
+             "frame of an animation (white: the seed advances; blue: the tile's values step by the golden ratio)",
+             0, 0, 1, true, {"constant", "per-frame"}},
             {"exact", "1: integrate the unshadowed airlight exactly over each sample's interval", 0, 0, 1, true},
             {"closed_form",
              "exact=1, point and spot lights: stable (pointSegment) or naive (teaching only: Sun et al.'s textbook "
@@ -71,7 +78,7 @@ public:
             render::SceneViewPasses::shadowStage("raymarch"),
             render::SceneViewPasses::surfaceStage("raymarch"),
             {kStageMarch, "Ray march", "N shadow-map tests per ray and light, summed into L_air",
-             {"samples", "jitter", "exact", "closed_form", "seed", "shadow_lookup", "force_features"}, {kAirlight, kLitFraction}, 1},
+             {"samples", "jitter", "jitter_time", "exact", "closed_form", "seed", "shadow_lookup", "force_features"}, {kAirlight, kLitFraction}, 1},
             render::SceneViewPasses::composeStage("raymarch"),
         };
     }
@@ -86,6 +93,21 @@ public:
 
     // Samples per ray: the brute-force curve every other technique's speed-up is read against, so it
     // spans errors from about 1 down to below 1e-2.
+    // At N = 16, where the jitter's noise shows: white offsets new every frame against the same every
+    // frame, the same for blue noise, and blue against white (both constant).
+    bool readsFrame(const Settings& settings) const override {
+        return settingOr(settings, "jitter", 0.0) != 0.0 && settingOr(settings, "jitter_time", 0.0) != 0.0;
+    }
+    std::vector<StabilisingOption> stabilisingOptions(const scene::Scene& scene) const override {
+        (void)scene;
+        const auto at = [](double jitter, double perFrame) {
+            return Settings{{"samples", 16.0}, {"jitter", jitter}, {"jitter_time", perFrame}};
+        };
+        return {{"jitter_time=constant (white)", "white-noise offsets drawn anew every frame", at(1, 1), at(1, 0)},
+                {"jitter_time=constant (blue)", "blue-noise offsets stepped every frame", at(2, 1), at(2, 0)},
+                {"jitter=blue", "white noise's clumps (both constant in time)", at(1, 0), at(2, 0)}};
+    }
+
     std::vector<QualitySetting> qualitySweep(bool quick) const override {
         std::vector<QualitySetting> sweep;
         for (int n = 4; n <= (quick ? 1024 : 2048); n *= quick ? 4 : 2)
@@ -138,7 +160,8 @@ public:
         const bool hasCookie = std::any_of(scene.lights.begin(), scene.lights.end(),
                                            [](const scene::Light& l) { return l.cookie >= 0; });
         const bool exact = settings.at("exact") != 0.0;
-        const bool jitter = settings.at("jitter") != 0.0;
+        const int jitterMode = int(settings.at("jitter"));
+        const bool jitter = jitterMode != 0;
         const int area = int(settings.at("area_samples"));
         p.features.push_back({"EXACT", exact,
                               exact ? "analytic unshadowed segment per sample interval (airlight.glsl pointSegment)"
@@ -149,7 +172,12 @@ public:
                               naive ? "TEACHING MODE, wrong on purpose: Sun et al.'s closed form evaluated as printed "
                                       "(isotropic; cancels and overflows in thick media, NaN on a ray through the light)"
                                     : "closed_form=stable (or exact=0): the stable anchored form of airlight.glsl"});
-        p.features.push_back({"JITTER", jitter, jitter ? "stratified offsets" : "jitter=0: interval midpoints"});
+        p.features.push_back({"JITTER", jitter, jitter ? "stratified offsets" : "jitter=off: interval midpoints"});
+        const bool perFrame = settings.at("jitter_time") != 0.0;
+        p.features.push_back({"JITTER_BLUE", jitterMode == 2,
+                              jitterMode == 2 ? std::string("one blue-noise offset per pixel") +
+                                                    (perFrame ? ", stepped every frame" : ", the same every frame")
+                                              : "jitter=" + std::string(jitter ? "white" : "off") + ": no blue-noise tile"});
         p.features.push_back({"SPOT", hasSpot, hasSpot ? "spot falloff A_spot" : "no spot light in the scene"});
         p.features.push_back({"COOKIE", hasCookie, hasCookie ? "cookie texture" : "no light has a cookie"});
         p.features.push_back({"HENYEY_GREENSTEIN", scene.medium.g != 0.0,
@@ -273,7 +301,14 @@ private:
         program.set("uSamples", int(s.at("samples")));
         program.set("uLightCount", mView.lights().count());
         mMedium.bind(scene.medium);
-        program.set("uSeed", unsigned(s.at("seed")));
+        // jitter_time=per-frame: frame f draws new offsets (white: the seed moves by a large odd step; blue:
+        // each pixel's offset moves by f times the golden ratio, modulo 1, a low-discrepancy walk in time
+        // that keeps every frame's offsets a blue-noise pattern).
+        const bool perFrame = s.at("jitter_time") != 0.0;
+        const unsigned frame = perFrame ? unsigned(std::max(0, input.frame)) : 0u;
+        program.set("uSeed", unsigned(s.at("seed")) + frame * 0x9E3779B1u);
+        program.set("uBlueShift", float(std::fmod(double(frame) * 0.6180339887498949, 1.0)));
+        if (int(s.at("jitter")) == 2) blueNoiseTexture().bindUnit(render::hd::kFirstFreeTextureUnit + 1);
         mView.lights().bind();
         mView.shadows().bind();
         mView.surface().distance().bindUnit(render::hd::kFirstFreeTextureUnit);
@@ -295,8 +330,21 @@ private:
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     }
 
+    // The 64x64 blue-noise tile (core/blue_noise.h), made on first use.
+    const gl::Texture& blueNoiseTexture() {
+        if (!mBlueNoise) {
+            const std::vector<float> values = blueNoise(kBlueNoiseSize);
+            mBlueNoise = gl::Texture::create(
+                {.format = GL_R32F, .size = {kBlueNoiseSize, kBlueNoiseSize, 1}, .label = "raymarch.blue_noise"});
+            mBlueNoise.upload(GL_RED, GL_FLOAT, values.data());
+        }
+        return mBlueNoise;
+    }
+    static constexpr int kBlueNoiseSize = 64;  // shaders/raymarch/march.comp masks pixel coordinates with 63
+
     std::vector<ParamInfo> mParams;
     std::vector<StageInfo> mStages;
+    gl::Texture mBlueNoise;
     render::SceneViewPasses mView;
     render::MediumBlock mMedium;  // sigma_s, sigma_t, g for the shaders (common/medium.glsl)
     StageReuse mReuse;  // stages carried over from the last run (FrameInput::resumeAtStage)

@@ -28,6 +28,8 @@ struct PlaneRange {
     double near = 0.0, far = 0.0;       // view depth range covered by the slabs
     double spacing = 0.0;               // delta_s = (far - near) / N
     double drawNear = 0.0;              // planes nearer than this are drawn at it (znear, with a margin)
+    int planes = 0;                     // slabs from far to near: the N asked for, or the world grid's count
+    double nearestWeight = 1.0;         // the nearest slab's part in front of the eye, in units of spacing
 };
 
 // lightMatrix: eye-relative world -> the light's clip space; its inverse maps the 8 NDC cube corners to
@@ -57,6 +59,30 @@ inline PlaneRange planeRange(const glm::dmat4& lightMatrix, const CameraBasis& b
     r.minXY = glm::dvec2(lo.x, lo.y);
     r.maxXY = glm::dvec2(hi.x, hi.y);
     r.spacing = (r.far - r.near) / double(planes);
+    r.planes = planes;
+    return r;
+}
+
+// plane_grid=world: the same range on slabs fixed in the world, so that planes do not sweep through the
+// scene when the light or the camera moves (they stay put while the camera only turns about its forward
+// axis or moves along it, and while the light moves at all). The spacing is the fitted (far - near) / N
+// rounded up to a power of 2^(1/4) (it changes only when the box's depth grows or shrinks by a quarter
+// octave: the count stays between 0.84 N and N + 2); the slab boundaries are its multiples in world
+// depth dot(p_world, forward) = dot(p, forward) + eyeDepth, eyeDepth = dot(eye, forward). The slabs cover
+// the fitted range outward to whole slabs. When the eye lies inside the nearest slab, only its part in
+// front of the eye is on the rays: nearestWeight < 1 (its plane is still drawn at the slab's midpoint, or
+// just beyond znear when that is behind the eye, both inside that part).
+inline PlaneRange worldGridRange(const PlaneRange& fitted, double eyeDepth) {
+    PlaneRange r = fitted;
+    if (r.empty || !(r.spacing > 0.0)) return r;
+    const double spacing = std::exp2(std::ceil(std::log2(r.spacing) * 4.0) / 4.0);
+    const double first = std::floor((fitted.near + eyeDepth) / spacing);
+    const double last = std::ceil((fitted.far + eyeDepth) / spacing);
+    r.spacing = spacing;
+    r.near = first * spacing - eyeDepth;
+    r.far = last * spacing - eyeDepth;
+    r.planes = std::max(1, int(std::lround(last - first)));
+    r.nearestWeight = r.near < 0.0 ? std::clamp((r.near + spacing) / spacing, 0.0, 1.0) : 1.0;
     return r;
 }
 

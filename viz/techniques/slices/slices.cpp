@@ -73,6 +73,10 @@ SlicesTechnique::SlicesTechnique() {
         {"clip_y_max", "user ceiling / window plane height (world y)", 1e6, -1e6, 1e6, false},
         {"directional_box", "1: a directional light's planes fill and are clipped to its shadow map's box "
          "(misses lit air outside it); 0: the camera frustum up to zfar", 0, 0, 1, true},
+        {"plane_grid", "fitted: the paper's N planes spread over the light volume's depth range (they move "
+         "whenever that range does); world: slabs on a world-fixed grid, spacing the fitted one rounded up to "
+         "a power of 2^(1/4), so planes stay put as the light moves (fewer crawling shadow edges)",
+         0, 0, 1, true, {"fitted", "world"}},
         {"distance_scale", "reference distance: beyond it N shrinks as reference / distance (min 8); 0: off", 0,
          0, 1e6, false},
         {"count_fragments", "1: count shaded fragments and those outside the light frustum (atomic counter)",
@@ -96,13 +100,23 @@ SlicesTechnique::SlicesTechnique() {
          "N view-aligned planes per light, clipped to its frustum, added back to front",
          {"planes", "planes_drawn", "weighting", "accum", "accum_range", "shadow", "spot_falloff", "cookie",
           "noise", "noise_tiles", "time", "falloff", "ambient", "artistic_units", "clip", "user_clip",
-          "clip_y_min", "clip_y_max", "directional_box", "distance_scale", "count_fragments", "mesh_view",
+          "clip_y_min", "clip_y_max", "directional_box", "plane_grid", "distance_scale", "count_fragments", "mesh_view",
           "mesh_yaw", "mesh_pitch", "mesh_zoom", "pick_x", "pick_y", "ray_planes", "force_features"},
          {kAccum, kPlane, kPlaneMesh, kPlaneView, kFragments, kRayPlanes, kRayPlanesChart}, 128, "planes_drawn", "planes"},
         {kStageResolve, "Resolve", "accumulation -> L_air: undo the 8-bit scale, sum the mask channels, blur",
          {"blur"}, {kAirlight}, 1},
         render::SceneViewPasses::composeStage("slices"),
     };
+}
+
+std::vector<StabilisingOption> SlicesTechnique::stabilisingOptions(const scene::Scene& scene) const {
+    // Only a spot light's planes follow a box that moves (the unbounded lights' planes fill the camera
+    // frustum from the eye to zfar, which no motion changes).
+    if (!render::hasLightOfType(scene, scene::LightType::Spot)) return {};
+    // 64 planes: few enough that plane positions show (the report times without ray_planes).
+    return {{"plane_grid=world", "the planes follow the light volume's depth range",
+             {{"planes", 64.0}, {"ray_planes", 0.0}},
+             {{"planes", 64.0}, {"ray_planes", 0.0}, {"plane_grid", 1.0}}}};
 }
 
 std::vector<QualitySetting> SlicesTechnique::qualitySweep(bool quick) const {
@@ -196,6 +210,11 @@ Plan SlicesTechnique::plan(const scene::Scene& scene, const Settings& s) const {
     p.features.push_back({"DISTANCE_SCALED_PLANES", scaled,
                           scaled ? "N shrinks beyond distance_scale from the light volume (spacing compensates)"
                                  : "distance_scale=0: always N planes"});
+    const bool worldGrid = s.at("plane_grid") != 0.0;
+    p.features.push_back({"WORLD_GRID_PLANES", worldGrid,
+                          worldGrid ? "plane_grid=world: slabs on a world-fixed grid (N + 2 at most), planes do "
+                                      "not follow the light volume's depth range"
+                                    : "plane_grid=fitted: N planes spread over the light volume's depth range"});
     p.features.push_back({"PICK_RAY", t.pick,
                           t.pick ? "the picked pixel's planes recorded (slices.ray_planes): the planes drawn "
                                    "again scissored to that pixel (PICK_RAY shader, colour writes off), a "

@@ -126,6 +126,7 @@ void SlicesTechnique::drawPlanes(const scene::Scene& scene, const FrameInput& in
 
     const auto& lights = mView.lights().lights();
     const bool boxedDirectional = s.at("directional_box") != 0.0;
+    const bool worldGrid = s.at("plane_grid") != 0.0;
     // Channel mask: one scalar per plane (mean of rgb); the colour ratio of the first light is put back
     // on resolve (exact for one light colour, the paper's monochrome assumption).
     mMaskColor = glm::vec3(1.0f);
@@ -159,7 +160,8 @@ void SlicesTechnique::drawPlanes(const scene::Scene& scene, const FrameInput& in
     mPickPixel = pickedPixel(input);
     int pickBase = 0;
     if (t.pick) {
-        const std::size_t need = std::max<std::size_t>(1, sets.size() * std::size_t(n)) * sizeof(PickRecord);
+        // plane_grid=world may use up to N + 2 slabs (slice_geometry.h, worldGridRange).
+        const std::size_t need = std::max<std::size_t>(1, sets.size() * std::size_t(n + 2)) * sizeof(PickRecord);
         if (!mPickRecords || mPickRecords.bytes() < need)
             mPickRecords = gl::Buffer::create({.bytes = need, .label = "slices.pick_records"});
         mPickRecords.clearZero();
@@ -174,8 +176,10 @@ void SlicesTechnique::drawPlanes(const scene::Scene& scene, const FrameInput& in
         // Fewer planes far from the light volume (eye at the origin; distance to the view-space box).
         const glm::dvec3 lo(range.minXY, range.near), hi(range.maxXY, range.far);
         const double distance = glm::length(glm::max(glm::max(lo, -hi), glm::dvec3(0.0)));
-        const int planes = scaledPlaneCount(n, distance, s.at("distance_scale"), kMinScaledPlanes);
-        range = planeRange(set.volume, basis, cam.znear, cam.zfar, planes);
+        range = planeRange(set.volume, basis, cam.znear, cam.zfar,
+                           scaledPlaneCount(n, distance, s.at("distance_scale"), kMinScaledPlanes));
+        if (worldGrid) range = worldGridRange(range, glm::dot(cam.position, basis.forward));
+        const int planes = range.planes;
         const int drawnLimit = int(substepLimit(input, kPlanesIndex));
         const int drawn = drawnLimit > 0 ? std::min(planes, drawnLimit) : planes;
         mPlanesUsed.push_back(planes);
@@ -190,10 +194,13 @@ void SlicesTechnique::drawPlanes(const scene::Scene& scene, const FrameInput& in
         setBoth("uDepthFar", float(range.far));
         setBoth("uSpacing", float(range.spacing));
         setBoth("uDrawNear", float(range.drawNear));
+        setBoth("uNearestPlane", planes - 1);
+        setBoth("uNearestWeight", float(range.nearestWeight));
         if (t.pick) {
             mPickSets.push_back({boxed ? lights[std::size_t(set.light)].info.w : -1, pickBase, drawn,
                                  t.clip && boxed, float(range.far), float(range.spacing), float(range.drawNear),
-                                 glm::vec2(range.minXY), glm::vec2(range.maxXY), glm::mat4(set.volume)});
+                                 planes - 1, float(range.nearestWeight), glm::vec2(range.minXY),
+                                 glm::vec2(range.maxXY), glm::mat4(set.volume)});
             pick->set("uPickBase", pickBase);
             pickBase += drawn;
         }

@@ -62,6 +62,8 @@ void SlicesTechnique::replayPick(const FrameInput& input, const CameraBasis& bas
             program.set("uDepthFar", ps.depthFar);
             program.set("uSpacing", ps.spacing);
             program.set("uDrawNear", ps.drawNear);
+            program.set("uNearestPlane", ps.nearestPlane);
+            program.set("uNearestWeight", ps.nearestWeight);
             program.set("uClipLight", ps.clipLight ? 1 : 0);
             program.set("uLightMatrix", ps.volume);
             program.set("uBoxMinXY", ps.boxMin);

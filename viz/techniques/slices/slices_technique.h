@@ -87,6 +87,8 @@ struct PickSet {
     int drawn = 0;
     bool clipLight = false;
     float depthFar = 0.0f, spacing = 0.0f, drawNear = 0.0f;
+    int nearestPlane = 0;
+    float nearestWeight = 1.0f;
     glm::vec2 boxMin{0.0f}, boxMax{0.0f};
     glm::mat4 volume{1.0f};
 };
@@ -105,6 +107,7 @@ public:
 
     // Plane count in float accumulation, then the precision lab's targets at one plane count.
     std::vector<QualitySetting> qualitySweep(bool quick) const override;
+    std::vector<StabilisingOption> stabilisingOptions(const scene::Scene& scene) const override;
 
     Settings stiffSettings() const override { return {{"planes", 512.0}, {"ray_planes", 0.0}}; }
     // Mitchell 2004: the artistic formula and constants, the RGBA8 target with the channel mask, 100

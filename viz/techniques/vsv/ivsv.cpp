@@ -15,6 +15,10 @@ IvsvTechnique::IvsvTechnique() {
         {"gather", "full: every pixel x every VPL; interleaved: 1/9 of the VPLs per pixel + 3x3 bilateral; "
                    "quarter: half width and height + bilateral upsampling",
          0, 0, 2, true, {"full", "interleaved", "quarter"}},
+        {"subsets", "gather=interleaved: fixed: each pixel's ninth of the VPLs is the same on every frame (a 3x3 "
+                    "screen pattern); per-frame: the pattern steps by one subset each frame of an animation, so "
+                    "every pixel sees all nine over nine frames (what temporal accumulation would want)",
+         0, 0, 1, true, {"fixed", "per-frame"}},
         {"mode", "imperfect: ISMs and one pass per step for all VPLs; naive: cube shadow maps and a full VSV "
                  "per VPL",
          0, 0, 1, true, {"imperfect", "naive"}},
@@ -70,7 +74,7 @@ IvsvTechnique::IvsvTechnique() {
         {kStageScan, "Extrude (segmented scan)", "prefix OR along alpha restarting at every tile boundary",
          {"scan_passes"}, {kScanSlice}, kMaxScanPasses, "scan_passes"},
         {kStageGather, "Gather", "per pixel: sum over VPLs of visibility x airlight (full, interleaved, quarter)",
-         {"combine", "gather", "interp", "epipole", "chunk_bits", "vpl_disc", "bilateral_sigma", "vpl_step", "pick_x", "pick_y",
+         {"combine", "gather", "subsets", "interp", "epipole", "chunk_bits", "vpl_disc", "bilateral_sigma", "vpl_step", "pick_x", "pick_y",
           "force_features"},
          {kColumn, kPerVpl, kInterleave, kAirlight, kVisibility}, 1, "vpl_step"},
         render::SceneViewPasses::composeStage("ivsv"),
@@ -88,6 +92,14 @@ std::vector<double> IvsvTechnique::substepValues(int stage, const Settings& s) c
     }
     values.push_back(-1.0);
     return values;
+}
+
+std::vector<StabilisingOption> IvsvTechnique::stabilisingOptions(const scene::Scene& scene) const {
+    // The subsets are the VPLs' (gather=interleaved): without an area light there are none.
+    if (!render::hasLightOfType(scene, scene::LightType::Area)) return {};
+    return {{"subsets=fixed", "each pixel's ninth of the VPLs changes every frame",
+             {{"gather", double(kGatherInterleaved)}, {"subsets", 1.0}},
+             {{"gather", double(kGatherInterleaved)}, {"subsets", 0.0}}}};
 }
 
 std::vector<QualitySetting> IvsvTechnique::qualitySweep(bool quick) const {
@@ -142,6 +154,12 @@ Plan IvsvTechnique::plan(const scene::Scene& scene, const Settings& settings) co
     p.features.push_back({"COMBINE_EXACT", exact,
                           exact ? "each phi quadrature node weighted by the lit fraction of its own bits"
                                 : "combine=fraction: lit fraction x unshadowed airlight per VPL"});
+    if (gather == kGatherInterleaved) {
+        const bool cycle = settings.at("subsets") != 0.0;
+        p.features.push_back({"SUBSETS_PER_FRAME", cycle,
+                              cycle ? "subsets=per-frame: the 3x3 VPL pattern steps by one subset every frame"
+                                    : "subsets=fixed: each pixel keeps its ninth of the VPLs from frame to frame"});
+    }
     p.features.push_back({"INTERP", interp, interp ? "two texels along theta" : "nearest texel"});
     const bool epipole = hasArea && settings.at("epipole") != 0.0;
     p.features.push_back({"EPIPOLE", epipole,

@@ -122,6 +122,7 @@ void IvsvTechnique::gather(const scene::Scene& scene, const FrameInput& input, i
     program.set("uScale", mode == kGatherQuarter ? 2 : 1);
     program.set("uCells", glm::ivec3(cells, cells, kPhiBits));
     program.set("uVplStride", mode == kGatherInterleaved ? 9 : 1);
+    program.set("uPhaseShift", s.at("subsets") != 0.0 ? std::max(0, input.frame) % 9 : 0);
     mMedium.bind(scene.medium);
     program.set("uChunkBits", int(s.at("chunk_bits")));
     program.set("uDiscScale", float(s.at("vpl_disc")));

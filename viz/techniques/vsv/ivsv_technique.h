@@ -131,6 +131,10 @@ public:
     // VPL count (the area light's sampling) and voxel resolution (each VPL grid's), issue 9's knobs:
     // cheapest first. On a scene without an area light only `voxels` matters (the inner vsv).
     std::vector<QualitySetting> qualitySweep(bool quick) const override;
+    std::vector<StabilisingOption> stabilisingOptions(const scene::Scene& scene) const override;
+    bool readsFrame(const Settings& settings) const override {
+        return settingOr(settings, "gather", 0.0) == double(kGatherInterleaved) && settingOr(settings, "subsets", 0.0) != 0.0;
+    }
 
     // The stiff cases have no area light: ivsv hands every light to its inner vsv at this resolution.
     Settings stiffSettings() const override { return {{"voxels", 512.0}, {"vpls", 256.0}}; }
