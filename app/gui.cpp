@@ -164,6 +164,7 @@ int GuiApp::run() {
 
 void GuiApp::togglePlaying() {
     mPlaying = !mPlaying;
+    mTemporal.reset();  // the temporal view measures from the frame play starts on
     if (!mPlaying) return;
     mPlayLight.reset();
     if (!mScene.lights.empty() && mScene.lights[0].type != viz::scene::LightType::Area) {
@@ -242,6 +243,8 @@ void GuiApp::render() {
     try {
         // The scheduler re-runs only the stages whose inputs changed (a sub-step: its stage alone).
         mOutput = mRunners.at(t.id())->run(mScene, size.x, size.y, mSettings, mCursor, shownContents(), mPlayFrame);
+        // While playing, the temporal view: this frame's L_air against the previous one's.
+        if (mPlaying && mTemporal.add(mOutput.airlight)) mOutput.intermediates.push_back(mTemporal.view());
         mError.clear();
         mHaveOutput = true;
         mPass = 1;

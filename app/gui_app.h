@@ -47,6 +47,7 @@
 #include "render_job.h"
 #include "run_scheduler.h"
 #include "step_timeline.h"
+#include "temporal_monitor.h"
 #include "scene/scene_source.h"
 #include "scene/stiff_scenes.h"
 #include "scene/builtin_scenes.h"
@@ -458,6 +459,7 @@ private:
     bool mPlaying = false;                        // P: the animation runs
     double mPlayClock = 0.0, mPlayTurn = 0.0;     // seconds played; the light's turn (0..1)
     int mPlayFrame = 0;                           // animation frames played (FrameInput::frame)
+    TemporalMonitor mTemporal;                    // while playing: L_air's change from frame to frame
     std::optional<viz::scene::Light> mPlayLight;  // the first light as it was when play started
     glm::dvec3 mPlayCentre{0.0};  // frames left until a script action's widget is scrolled into view
     std::vector<std::string> mSceneChoices, mStiffChoices;  // the scene pickers' lists (built lazily)

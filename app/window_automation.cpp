@@ -219,7 +219,13 @@ void GuiApp::writeSidecar(const std::string& path) {
                             {"position_grab", grab(h.position)}, {"tip_grab", grab(h.tip)}};
         break;
     }
-    sidecar["animation"] = {{"playing", mPlaying}, {"seconds", mPlayClock}, {"light_turn", mPlayTurn}};
+    sidecar["animation"] = {{"playing", mPlaying},
+                            {"seconds", mPlayClock},
+                            {"light_turn", mPlayTurn},
+                            {"frame", mPlayFrame},
+                            {"temporal_pairs", mTemporal.pairs()},
+                            {"temporal_change_rms", std::isfinite(mTemporal.score()) ? nlohmann::json(mTemporal.score())
+                                                                                     : nlohmann::json(nullptr)}};
     // The scene and parameter panel under the grid (null when there is no room for it).
     sidecar["parameters_panel"] = mParamsRect.size().y > 0.0f
                                       ? nlohmann::json::array({mParamsRect.min.x, mParamsRect.min.y, mParamsRect.max.x,

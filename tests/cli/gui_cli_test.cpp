@@ -254,6 +254,42 @@ TEST_F(GuiCli, PlayMovesTheLightAndScrollsTheNoiseAndPauseStopsThem) {
     EXPECT_EQ(end.at("settings").at("time"), paused.at("settings").at("time"));
 }
 
+// While P plays, the temporal view shows L_air's change since the previous frame with a running score in
+// its title. On tv-room nothing moves when playing (its light is an area light): raymarch with
+// jitter_time=per-frame re-runs every frame (its noise reads the frame index) and scores its noise;
+// with jitter_time=constant nothing changes, the window runs nothing new and there is no frame pair.
+TEST_F(GuiCli, TheTemporalViewShowsTheChangeOfLairWhilePlaying) {
+    for (int perFrame : {1, 0}) {
+        SCOPED_TRACE(perFrame);
+        const std::string stem = "temporal" + std::to_string(perFrame);
+        // Without a second frame the view is not in the sidebar to click.
+        const std::string show = perFrame ? "click \"view:L_air change per frame\"\n" : "";
+        const fs::path script = writeText(stem + ".txt", "frames 1\nkey P\nframes 8\n" + show + "frames 2\nscreenshot " +
+                                                             path(stem + ".png").string() + "\n");
+        const RunResult r = run("gui --scene tv-room --technique raymarch --size 32x24 --set samples=4 --set area_samples=2 "
+                                "--set jitter=white --set jitter_time=" + std::to_string(perFrame) + " --script " +
+                                script.string());
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        const nlohmann::json j = nlohmann::json::parse(readFile(path(stem + ".json")));
+        const auto& a = j.at("animation");
+        EXPECT_TRUE(a.at("playing").get<bool>());
+        bool shown = false;
+        for (const auto& v : j.at("views"))
+            if (v.at("title").get<std::string>().find("L_air change per frame") != std::string::npos) {
+                shown = true;
+                EXPECT_NE(v.at("title").get<std::string>().find(": RMS "), std::string::npos) << v.dump();
+            }
+        if (perFrame) {
+            EXPECT_GE(a.at("temporal_pairs").get<int>(), 8) << a.dump();
+            EXPECT_GT(a.at("temporal_change_rms").get<double>(), 0.0) << a.dump();
+            EXPECT_TRUE(shown) << j.at("views").dump();
+        } else {
+            EXPECT_EQ(a.at("temporal_pairs").get<int>(), 0) << a.dump();
+            EXPECT_FALSE(shown) << "no second frame, no change to show";
+        }
+    }
+}
+
 // Dragging an orbit view (polyvol's light volume with wireframe=3) turns its own camera: mesh_yaw and
 // mesh_pitch change by 0.4 degrees per pixel dragged, the main camera stays.
 TEST_F(GuiCli, DraggingAnOrbitViewTurnsItsCamera) {
