@@ -20,6 +20,7 @@ void ComparisonGrid::open(const viz::scene::Scene& scene, glm::ivec2 size, const
 }
 
 void ComparisonGrid::close() {
+    mPlayedFrames = 0;
     mTiles.clear();
     mWorker.reset();
     mWaiting = mDue = false;
@@ -41,14 +42,16 @@ void ComparisonGrid::poll() {
 
 void ComparisonGrid::runTechniques(const RunTechnique& run) {
     mDue = false;
+    mPlayedFrames = 0;
     for (ComparisonTile& tile : mTiles) {
+        tile.temporal.reset();
         try {
             const bool reference = tile.technique == "reference";
             viz::FrameOutput out;
             if (!reference) {
                 // Timed warm: polyvol's first run at 80x60 takes several times its second.
-                (void)run(tile.technique, mScene, mSize);
-                out = run(tile.technique, mScene, mSize);
+                (void)run(tile.technique, mScene, mSize, 0);
+                out = run(tile.technique, mScene, mSize, 0);
             }
             const viz::Image& airlight = reference ? mReference : out.airlight;
             tile.milliseconds = out.timing.totalMilliseconds();
@@ -56,11 +59,39 @@ void ComparisonGrid::runTechniques(const RunTechnique& run) {
             tile.pane.id = tile.technique;
             tile.pane.mode = DisplayMode::HdrColor;
             uploadImage(tile.pane, airlight);
+            tile.lastAirlight = airlight;
         } catch (const std::exception& e) {
             tile.failure = e.what();
         }
     }
     mExposure = std::log2(autoExposure(mReference));
+}
+
+void ComparisonGrid::playFrame(const viz::scene::Scene& moved, int frame, const RunTechnique& run) {
+    if (mWaiting || mDue || mTiles.empty()) return;  // the still frame first
+    if (mPlayedFrames == 0)
+        for (ComparisonTile& tile : mTiles)
+            if (tile.technique != "reference" && tile.failure.empty()) tile.temporal.add(tile.lastAirlight);
+    ++mPlayedFrames;
+    viz::scene::Scene scene = moved;
+    scene.camera = mScene.camera;
+    for (ComparisonTile& tile : mTiles) {
+        if (tile.technique == "reference" || !tile.failure.empty()) continue;
+        try {
+            const viz::FrameOutput out = run(tile.technique, scene, mSize, frame);
+            tile.playMilliseconds = out.timing.totalMilliseconds();
+            tile.temporal.add(out.airlight);
+            tile.lastAirlight = out.airlight;
+            uploadImage(tile.pane, out.airlight);
+        } catch (const std::exception& e) {
+            tile.failure = e.what();
+        }
+    }
+}
+
+void ComparisonGrid::stopPlaying(const RunTechnique& run) {
+    if (mPlayedFrames == 0) return;
+    runTechniques(run);
 }
 
 std::string ComparisonGrid::waitingText() const {
@@ -92,11 +123,14 @@ nlohmann::json ComparisonGrid::toJson() const {
                          {"milliseconds", t.milliseconds},
                          {"nan_inf_pixels", t.error.nanPixels + t.error.infPixels},
                          {"error", tileErrorText(t.error)},
-                         {"failure", t.failure}});
+                         {"failure", t.failure},
+                         {"played_frames", mPlayedFrames},
+                         {"change_pairs", t.temporal.pairs()}});
     // Figures only where they are defined (the caption says why one is not).
     for (std::size_t i = 0; i < mTiles.size(); ++i) {
         if (std::isfinite(mTiles[i].error.relativeL2)) tiles[i]["relative_l2"] = mTiles[i].error.relativeL2;
         if (std::isfinite(mTiles[i].error.maxAbsolute)) tiles[i]["max_abs"] = mTiles[i].error.maxAbsolute;
+        if (std::isfinite(mTiles[i].temporal.score())) tiles[i]["change_rms"] = mTiles[i].temporal.score();
     }
     return tiles;
 }

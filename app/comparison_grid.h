@@ -2,7 +2,11 @@
 // reference's, each with the time of a warm run and its error against the reference, and the error
 // against time as a plot. The reference renders on a worker thread (from its on-disk cache when it has
 // the frame) while the window stays responsive; once it is in, the window runs the GPU techniques on its
-// own thread (they need its GL context). The grid is a snapshot: it does not follow later changes.
+// own thread (they need its GL context). The grid is a snapshot: it does not follow later changes, except
+// while the window's animation plays (P): then every GPU technique renders each played frame side by side
+// (the light moving as in the window, FrameInput::frame advancing), each tile with its run time and the
+// running change of its L_air (temporal_monitor.h); the reference tile keeps the still frame, so there is
+// no error figure while playing. When play stops the tiles show the still frame again.
 #pragma once
 
 #include <functional>
@@ -15,6 +19,7 @@
 
 #include "cpu_worker.h"
 #include "pane_image.h"
+#include "temporal_monitor.h"
 #include "plot/plot.h"
 #include "report/error_metrics.h"
 #include "scene/scene.h"
@@ -26,6 +31,9 @@ struct ComparisonTile {
     PaneImage pane;  // empty until the technique has run
     double milliseconds = 0.0;
     viz::report::ErrorMetrics error;
+    TemporalMonitor temporal{};  // while playing: the change of its L_air from frame to frame
+    viz::Image lastAirlight{};   // what its pane shows (the first played frame is compared with it)
+    double playMilliseconds = 0.0;  // the last played frame's run time
 };
 
 // A tile's error as its caption says it: the relative L2 error, or why there is none (a NaN or Inf
@@ -35,8 +43,9 @@ std::string tileErrorText(const viz::report::ErrorMetrics& error);
 class ComparisonGrid {
 public:
     // Runs technique `id` once on `scene` at `size` with the window's settings for it (throws on failure).
-    using RunTechnique =
-        std::function<viz::FrameOutput(const std::string& id, const viz::scene::Scene& scene, glm::ivec2 size)>;
+    // `frame`: FrameInput::frame (0 for the still frame).
+    using RunTechnique = std::function<viz::FrameOutput(const std::string& id, const viz::scene::Scene& scene,
+                                                        glm::ivec2 size, int frame)>;
 
     // Starts the reference for `scene` (its camera is the view compared) at `size`; one tile per id.
     void open(const viz::scene::Scene& scene, glm::ivec2 size, const std::vector<std::string>& ids);
@@ -52,6 +61,15 @@ public:
     // Runs every technique but the reference twice and keeps the second run (the first compiles shaders
     // and allocates), its time and its error against the reference.
     void runTechniques(const RunTechnique& run);
+    // Playing (the reference is in): every technique but the reference once on `moved` (the snapshot's
+    // camera, the window's moving lights) as frame `frame`; its tile shows it with its time and running
+    // change. stopPlaying() shows the still frame again (runTechniques on the snapshot).
+    void playFrame(const viz::scene::Scene& moved, int frame, const RunTechnique& run);
+    bool playing() const { return mPlayedFrames > 0; }
+    int playedFrames() const { return mPlayedFrames; }
+    void stopPlaying(const RunTechnique& run);
+    // The snapshot's scene (its camera is the one compared).
+    const viz::scene::Scene& scene() const { return mScene; }
 
     std::vector<ComparisonTile>& tiles() { return mTiles; }
     const std::vector<ComparisonTile>& tiles() const { return mTiles; }
@@ -71,6 +89,7 @@ private:
     viz::scene::Scene mScene;
     glm::ivec2 mSize{0};
     float mExposure = 0.0f;
+    int mPlayedFrames = 0;
 };
 
 }  // namespace airlight

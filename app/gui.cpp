@@ -165,7 +165,10 @@ int GuiApp::run() {
 void GuiApp::togglePlaying() {
     mPlaying = !mPlaying;
     mTemporal.reset();  // the temporal view measures from the frame play starts on
-    if (!mPlaying) return;
+    if (!mPlaying) {
+        if (mComparison.isOpen()) mComparison.stopPlaying(comparisonRunner());  // back to the still frame
+        return;
+    }
     mPlayLight.reset();
     if (!mScene.lights.empty() && mScene.lights[0].type != viz::scene::LightType::Area) {
         mPlayLight = mScene.lights[0];
@@ -182,11 +185,13 @@ void GuiApp::advanceAnimation(double dt) {
         mSettings["time"] = mPlayClock;
         mDirty = true;
     }
-    if (mPlayLight && technique().needsGl() && !mScene.lights.empty()) {
+    if (mPlayLight && (technique().needsGl() || mComparison.isOpen()) && !mScene.lights.empty()) {
         mPlayTurn = std::fmod(mPlayTurn + dt / kLightTurnSeconds, 1.0);
         mScene.lights[0] = orbitLight(*mPlayLight, mPlayCentre, mPlayTurn);
         mDirty = true;
     }
+    // The comparison grid plays the same frame for every technique.
+    if (mComparison.isOpen()) mComparison.playFrame(mScene, mPlayFrame, comparisonRunner());
 }
 
 void GuiApp::selectTechnique(int index) {

@@ -131,6 +131,8 @@ private:
     static constexpr double kLightTurnSeconds = 8.0;
 
     void togglePlaying();
+    // Runs a technique for the comparison grid with the window's settings for it.
+    ComparisonGrid::RunTechnique comparisonRunner();
     void advanceAnimation(double dt);
     void setLessonLight(const viz::scene::Light& light) override;
 

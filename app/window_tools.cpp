@@ -30,18 +30,22 @@ void GuiApp::showLessonComparison(const std::vector<std::string>& techniques) {
     openComparison(ids);
 }
 
-void GuiApp::runComparisonTechniques() {
-    mComparison.runTechniques([this](const std::string& id, const viz::scene::Scene& scene, glm::ivec2 size) {
+ComparisonGrid::RunTechnique GuiApp::comparisonRunner() {
+    return [this](const std::string& id, const viz::scene::Scene& scene, glm::ivec2 size, int frame) {
         if (!mTechniques.count(id)) mTechniques[id] = viz::makeTechnique(id);
         viz::Technique& t = *mTechniques.at(id);
         viz::Settings given = mSession.settings.count(id) ? mSession.settings.at(id) : viz::Settings{};
         for (const auto& [name, value] : mOptions.settings) given[name] = value;
         std::string ignored;
-        viz::FrameOutput out = t.run({&scene, size.x, size.y, settingsFor(t, given, ignored), -1});
+        viz::FrameInput input{&scene, size.x, size.y, settingsFor(t, given, ignored), -1};
+        input.frame = frame;
+        viz::FrameOutput out = t.run(input);
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         return out;
-    });
+    };
 }
+
+void GuiApp::runComparisonTechniques() { mComparison.runTechniques(comparisonRunner()); }
 
 void GuiApp::drawComparison(DrawList& dl, const Rect& area) {
     const float line = mFont->lineHeight(), pad = 4.0f * mScale;
@@ -50,8 +54,14 @@ void GuiApp::drawComparison(DrawList& dl, const Rect& area) {
     const int cells = n + 1;
     const int cols = int(std::ceil(std::sqrt(double(cells)))), rows = (cells + cols - 1) / cols;
     const glm::vec2 cell{area.size().x / float(cols), area.size().y / float(rows)};
-    dl.textClipped({area.min.x, area.min.y - line}, "comparison (G): L_air at the reference's exposure, time of a "
-                   "warm run and relative L2 against the reference", kAccent, area.max.x);
+    const bool playing = mComparison.playing();
+    dl.textClipped({area.min.x, area.min.y - line},
+                   playing ? "comparison (G), playing (P): frame " + std::to_string(mComparison.playedFrames()) +
+                                 " of every technique, its run time and the RMS change of its L_air per frame over its "
+                                 "mean (the reference and the plot: the still frame; P stops)"
+                           : std::string("comparison (G): L_air at the reference's exposure, time of a warm run and "
+                                         "relative L2 against the reference"),
+                   kAccent, area.max.x);
     {
         // The plot takes the rest of the last row.
         const glm::vec2 at = area.min + glm::vec2(float(n % cols), float(n / cols)) * cell;
@@ -75,8 +85,9 @@ void GuiApp::drawComparison(DrawList& dl, const Rect& area) {
         std::string caption = tile.technique;
         std::string figures = tile.failure.empty()
             ? (tile.pane.texture == 0 ? std::string("")
-               : tile.technique == "reference" ? std::string("ground truth")
-                                             : format("%.1f ms", tile.milliseconds) + "   " + tileErrorText(tile.error))
+               : tile.technique == "reference" ? std::string(playing ? "ground truth, still frame" : "ground truth")
+               : playing ? format("%.1f ms", tile.playMilliseconds) + format("   change %.3g", tile.temporal.score())
+                         : format("%.1f ms", tile.milliseconds) + "   " + tileErrorText(tile.error))
             : "failed: " + firstLine(tile.failure);
         if (tile.error.nanPixels + tile.error.infPixels > 0)
             figures += "   " + std::to_string(tile.error.nanPixels + tile.error.infPixels) + " NaN/Inf px";

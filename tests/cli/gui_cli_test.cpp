@@ -290,6 +290,39 @@ TEST_F(GuiCli, TheTemporalViewShowsTheChangeOfLairWhilePlaying) {
     }
 }
 
+// The comparison grid plays along: with the grid open, P renders every GPU technique on each played
+// frame (grate's spot circling), each tile with the running change of its L_air; P again shows the still
+// frame with its errors against the reference once more.
+TEST_F(GuiCli, TheComparisonGridPlaysEveryTechniqueSideBySide) {
+    const fs::path script = writeText("grid_play.txt", "frames 1\nkey G\nframes 2\nkey P\nframes 5\nscreenshot " +
+                                                           path("playing.png").string() + "\nkey P\nframes 2\n");
+    const RunResult r = run("gui --scene grate --technique raymarch --size 32x24 --set samples=16 --set shadow_map=128 "
+                            "--script " + script.string() + " --screenshot " + path("stopped.png").string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const nlohmann::json playing = nlohmann::json::parse(readFile(path("playing.json")));
+    const nlohmann::json stopped = nlohmann::json::parse(readFile(path("stopped.json")));
+    ASSERT_TRUE(playing.contains("comparison")) << playing.dump();
+    int gpuTiles = 0;
+    for (const auto& t : playing.at("comparison")) {
+        SCOPED_TRACE(t.dump());
+        EXPECT_EQ(t.at("failure"), "");
+        if (t.at("technique") == "reference") {
+            EXPECT_FALSE(t.contains("change_rms")) << "the reference keeps the still frame";
+            continue;
+        }
+        ++gpuTiles;
+        EXPECT_GE(t.at("played_frames").get<int>(), 5);
+        EXPECT_EQ(t.at("change_pairs").get<int>(), t.at("played_frames").get<int>());
+        EXPECT_GT(t.at("change_rms").get<double>(), 0.0) << "the spot moved: every technique's L_air changed";
+    }
+    EXPECT_EQ(gpuTiles, 6);
+    for (const auto& t : stopped.at("comparison")) {
+        SCOPED_TRACE(t.dump());
+        EXPECT_EQ(t.at("played_frames").get<int>(), 0);
+        EXPECT_TRUE(t.contains("relative_l2")) << "the still frame's error is back";
+    }
+}
+
 // Dragging an orbit view (polyvol's light volume with wireframe=3) turns its own camera: mesh_yaw and
 // mesh_pitch change by 0.4 degrees per pixel dragged, the main camera stays.
 TEST_F(GuiCli, DraggingAnOrbitViewTurnsItsCamera) {
