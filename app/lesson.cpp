@@ -13,6 +13,7 @@
 
 #include "cli_args.h"
 #include "comparison_grid.h"
+#include "core/animation_io.h"
 #include "core/error.h"
 #include "core/text.h"
 #include "core/image_io.h"
@@ -24,6 +25,8 @@
 #include "view_figure.h"
 #include "report/error_images.h"
 #include "report/text_output.h"
+#include "scene/light_orbit.h"
+#include "scene/orbit_target.h"
 #include "techniques/registry.h"
 
 namespace airlight {
@@ -270,6 +273,87 @@ namespace {
 // A step's `compare:` measured now, on the machine writing the handout: each technique's time (median
 // of three runs after a warm-up, the stages' glFinish + steady clock) and the relative L2 error of its
 // L_air against the reference's, as an HTML table with the machine it was measured on.
+// The figure the window draws for `view` of the job's last run (view_figure.h) at `exposure` stops, and
+// the view's label. Throws InputError when the run has no such view.
+Figure viewFigure(const RenderJob& job, const std::string& view, float exposure, const viz::ui::FontAtlas& font,
+                  std::string& label) {
+    const viz::Intermediate* in = view == "final" || view == "airlight" ? nullptr : job.findIntermediate(view);
+    ViewState shown;
+    if (in) {
+        makePane(shown.pane, *in, 0);
+    } else {
+        shown.pane.id = view;
+        shown.pane.label = view == "final" ? "Final image" : "Airlight L_air";
+        shown.pane.units = "radiance";
+        shown.pane.kind = viz::ViewKind::Color;
+        shown.pane.mode = DisplayMode::HdrColor;
+        uploadImage(shown.pane, job.layerImage(view));
+    }
+    label = in ? in->label : shown.pane.label;
+    shown.display.channel = defaultChannel(shown.pane);
+    return renderFigure(shown, exposure, font);
+}
+
+// A step's animation as the handout's animated GIF: the window's animation (lesson_player.cpp) rendered
+// frame by frame (a light orbit: 12 frames per second of it; sub-steps: each sub-step once, at most 48
+// evenly spread, the last always), each frame the step's first view drawn as the still figures are
+// (viewFigure, at their exposure), through core/animation_io.h. Returns the figure's HTML, or a note
+// where this build cannot write a GIF.
+std::string animationFigure(const LessonStep& s, const RenderRequest& request, std::size_t k, float exposure,
+                            const viz::ui::FontAtlas& font, viz::StagedFolder& staged) {
+    RenderJob job(request);
+    const std::string view = s.views.empty() ? "final" : s.views.front();
+    std::vector<double> substeps;  // the values of the stage's sub-step parameter, in order
+    std::string substepParam;
+    int frames = 0, fps = 12;
+    if (s.animation.kind == LessonAnimation::Kind::Substeps) {
+        const int stage = stageIndex(job.technique(), s.stage);
+        substepParam = job.technique().stages()[std::size_t(stage)].substepParam;
+        const std::vector<double> all = job.technique().substepValues(stage, viz::completeSettings(job.technique(), s.settings));
+        const int count = int(all.size());
+        frames = std::min(count, 48);
+        for (int i = 0; i < frames; ++i)
+            substeps.push_back(all[std::size_t(frames == count ? i : (i + 1) * count / frames - 1)]);
+        fps = std::clamp(int(std::lround(double(frames) / s.animation.seconds)), 1, viz::kMaxFramesPerSecond);
+    } else {
+        frames = std::clamp(int(std::lround(s.animation.seconds * fps)), 2, 120);
+    }
+    const viz::scene::Light light = job.scene().lights.empty() ? viz::scene::Light{} : job.scene().lights.front();
+    const glm::dvec3 centre = viz::scene::orbitTarget(job.scene());
+    const std::string file = "step" + std::to_string(k + 1) + "-animation.gif";
+    std::string label;
+    glm::ivec2 size{0};
+    try {
+        std::unique_ptr<viz::AnimationWriter> writer;
+        for (int i = 0; i < frames; ++i) {
+            if (!substeps.empty()) job.setSetting(substepParam, substeps[std::size_t(i)]);
+            else job.scene().lights.front() = viz::scene::orbitLight(light, centre, double(i + 1) / double(frames));
+            job.setFrame(i);
+            (void)job.run();
+            const Figure figure = viewFigure(job, view, exposure, font, label);
+            if (figure.image.empty()) throw InputError("frame " + std::to_string(i) + " has nothing to show: " + figure.caption);
+            if (!writer) {
+                size = {figure.image.width, figure.image.height};
+                writer = std::make_unique<viz::AnimationWriter>(staged.path(file),
+                                                                viz::AnimationSpec{size.x, size.y, frames, fps, false});
+            }
+            // The figure is already what the display shows (linear, encoded as a PNG is): exposure 1.
+            writer->add(figure.image, 1.0f);
+        }
+        writer->commit();
+    } catch (const viz::InputError& e) {
+        // The portable build has no GIF encoder: the page says so rather than failing the export.
+        return "<p class=\"state\">The animation (" + viz::report::escapeHtml(describeAnimation(s.animation)) +
+               ") is not in this handout: " + viz::report::escapeHtml(e.what()) + ".</p>\n";
+    }
+    return "<figure><img src=\"" + file + "\" alt=\"animation of " + viz::report::escapeHtml(view) + "\" width=\"" +
+           std::to_string(size.x) + "\" height=\"" + std::to_string(size.y) + "\" class=\"animation\" data-frames=\"" +
+           std::to_string(frames) + "\"><figcaption>" + viz::report::escapeHtml(label) + ", animated: " +
+           viz::report::escapeHtml(describeAnimation(s.animation)) + "<br><span class=\"range\">" + std::to_string(frames) +
+           " frames at " + std::to_string(fps) + " per second, at the still figure's exposure and range</span>"
+           "</figcaption></figure>\n";
+}
+
 std::string liveComparison(const LessonStep& s, glm::ivec2 size) {
     const auto request = [&](const std::string& technique) {
         RenderRequest r;
@@ -357,7 +441,8 @@ void exportLesson(const Lesson& lesson, const std::string& folder, glm::ivec2 si
         // Both animations end on the static step's state (every sub-step; the light back where it was):
         // the image is the animation's last frame.
         if (s.animation.kind != LessonAnimation::Kind::None)
-            state += "; animated in the window: " + describeAnimation(s.animation) + " (shown: its last frame)";
+            state += "; animated: " + describeAnimation(s.animation) + " (the still figures show its last frame; the "
+                     "animated GIF below plays it)";
         html += "<p class=\"state\">" + viz::report::escapeHtml(state) + "</p>\n";
         const std::vector<std::string> views = s.views.empty() ? std::vector<std::string>{"final", "airlight"} : s.views;
         // The window's exposure for this frame: the final image's automatic exposure in stops (L_air's
@@ -371,24 +456,13 @@ void exportLesson(const Lesson& lesson, const std::string& folder, glm::ivec2 si
             figureContext->makeCurrent();
         }
         for (const std::string& view : views) {
-            const viz::Intermediate* in = view == "final" || view == "airlight" ? nullptr : job.findIntermediate(view);
-            ViewState shown;
+            std::string label;
+            Figure figure;
             try {
-                if (in) {
-                    makePane(shown.pane, *in, 0);
-                } else {
-                    shown.pane.id = view;
-                    shown.pane.label = view == "final" ? "Final image" : "Airlight L_air";
-                    shown.pane.units = "radiance";
-                    shown.pane.kind = viz::ViewKind::Color;
-                    shown.pane.mode = DisplayMode::HdrColor;
-                    uploadImage(shown.pane, job.layerImage(view));
-                }
+                figure = viewFigure(job, view, exposure, font, label);
             } catch (const InputError& e) {
                 throw InputError(lesson.path + ":" + std::to_string(s.line) + ": step '" + s.title + "': " + e.what());
             }
-            shown.display.channel = defaultChannel(shown.pane);
-            const Figure figure = renderFigure(shown, exposure, font);
             if (figure.image.empty()) {
                 throw InputError(lesson.path + ":" + std::to_string(s.line) + ": step '" + s.title + "': view '" + view +
                                  "' has nothing to show: " + figure.caption);
@@ -404,9 +478,11 @@ void exportLesson(const Lesson& lesson, const std::string& folder, glm::ivec2 si
                                          : " data-texel-scale=\"" + std::to_string(figure.texelScale) + "\"";
             html += "<figure><img src=\"" + file + "\" alt=\"" + viz::report::escapeHtml(view) + "\" width=\"" +
                     std::to_string(figure.image.width) + "\" height=\"" + std::to_string(figure.image.height) + "\"" + what +
-                    "><figcaption>" + viz::report::escapeHtml(in ? in->label : shown.pane.label) +
+                    "><figcaption>" + viz::report::escapeHtml(label) +
                     "<br><span class=\"range\">" + viz::report::escapeHtml(figure.caption) + "</span></figcaption></figure>\n";
         }
+        if (s.animation.kind != LessonAnimation::Kind::None)
+            html += animationFigure(s, request, k, exposure, font, staged);
         if (!s.compare.empty()) html += liveComparison(s, {request.width, request.height});
     }
     html += "</body></html>\n";

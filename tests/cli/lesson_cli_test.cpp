@@ -4,12 +4,14 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <filesystem>
 #include <regex>
 #include <set>
 #include <string>
 
 #include "cli/cli_fixture.h"
+#include "core/animation_io.h"
 #include "core/image_io.h"
 #include "techniques/registry.h"
 
@@ -30,6 +32,24 @@ std::set<std::string> namedValueParams() {
     return names;
 }
 
+// A step animated through its stage's sub-steps: the handout's GIF has one frame per sub-step (slices'
+// 12 planes drawn one more each frame), the last the still figure's state.
+TEST_F(CliTest, ASubstepAnimationExportsOneGifFramePerSubstep) {
+    const fs::path lesson = writeText("substeps.md", "# Planes one by one\n\n## Back to front\n```airlight\nscene: grate\n"
+                                                     "technique: slices\nset: planes=12\nstage: slices.planes\n"
+                                                     "views: slices.accumulation\nanimate: substeps 1s\n```\nThe planes, farthest "
+                                                     "first.\n");
+    const fs::path out = path("substeps");
+    const RunResult r = run("lesson " + lesson.string() + " --export " + out.string() + " --size 32x24");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const viz::AnimationInfo info = viz::readAnimationInfo((out / "step1-animation.gif").string());
+    EXPECT_EQ(info.frames, 12);
+    // 12 frames over 1 s: 12 per second, stored as a delay of whole hundredths (8: 12.5 per second).
+    EXPECT_DOUBLE_EQ(info.fps, 100.0 / std::floor(100.0 / 12.0));
+    EXPECT_GE(info.width, 480) << "drawn as the still figures are";
+    EXPECT_NE(readFile(out / "index.html").find("substeps over 1 s"), std::string::npos);
+}
+
 TEST_F(CliTest, EveryLessonExportsAPageWithAllItsImages) {
     const std::set<std::string> named = namedValueParams();
     ASSERT_FALSE(named.empty());
@@ -44,7 +64,7 @@ TEST_F(CliTest, EveryLessonExportsAPageWithAllItsImages) {
         const std::string page = readFile(out / "index.html");
         // Every image the page names exists, and there is at least one per step.
         const std::regex img("<img src=\"([^\"]+)\" alt=\"([^\"]+)\" width=\"([0-9]+)\" height=\"([0-9]+)\"([^>]*)>");
-        int images = 0;
+        int images = 0, animations = 0;
         for (auto it = std::sregex_iterator(page.begin(), page.end(), img); it != std::sregex_iterator(); ++it) {
             ++images;
             const std::string file = (*it)[1].str(), view = (*it)[2].str(), rest = (*it)[5].str();
@@ -56,6 +76,16 @@ TEST_F(CliTest, EveryLessonExportsAPageWithAllItsImages) {
             EXPECT_EQ(png.height, std::stoi((*it)[4].str())) << name << ": " << file;
             if (rest.find("data-texel-scale=\"0\"") == std::string::npos) {
                 EXPECT_GE(png.width, 480) << name << ": " << file;
+            }
+            // A step's animation: an animated GIF whose frame count OpenImageIO reads back as the page says.
+            if (rest.find("class=\"animation\"") != std::string::npos) {
+                ++animations;
+                const viz::AnimationInfo info = viz::readAnimationInfo((out / file).string());
+                const std::size_t at = rest.find("data-frames=\"");
+                ASSERT_NE(at, std::string::npos) << name << ": " << file;
+                EXPECT_EQ(info.frames, std::stoi(rest.substr(at + 13))) << name << ": " << file;
+                EXPECT_GT(info.frames, 1) << name << ": " << file;
+                EXPECT_EQ(info.width, png.width) << name << ": " << file;
             }
             // minmax's singular values and basis functions are plots in the window: plots here too, with
             // the curves the plot writer says it drew.
@@ -88,6 +118,11 @@ TEST_F(CliTest, EveryLessonExportsAPageWithAllItsImages) {
              at = page.find("<table class=\"compare\">", at + 1))
             ++tables;
         EXPECT_EQ(tables, compares) << name;
+        // Every animated step has its GIF.
+        int animated = 0;
+        for (std::size_t at = source.find("\nanimate:"); at != std::string::npos; at = source.find("\nanimate:", at + 1))
+            ++animated;
+        EXPECT_EQ(animations, animated) << name;
         const std::regex row("<tr><td>([a-z]+)</td><td>([0-9.]+)</td><td>error ([0-9.e+-]+)</td>");
         int measured = 0;
         for (auto it = std::sregex_iterator(page.begin(), page.end(), row); it != std::sregex_iterator(); ++it) {
