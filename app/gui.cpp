@@ -167,6 +167,7 @@ void GuiApp::togglePlaying() {
     mTemporal.reset();  // the temporal view measures from the frame play starts on
     if (!mPlaying) {
         if (mComparison.isOpen()) mComparison.stopPlaying(comparisonRunner());  // back to the still frame
+        stopRecording();
         return;
     }
     mPlayLight.reset();
@@ -264,6 +265,11 @@ void GuiApp::render() {
     // The technique leaves its own framebuffer and state behind.
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     refreshPanes();
+    if (mRecorder.recording()) {
+        viz::Image shown;
+        float exposure = 1.0f;
+        if (focusedViewImage(shown, exposure) && !mRecorder.add(shown, exposure)) stopRecording();  // full
+    }
 }
 
 void GuiApp::acceptCpuResult(CpuResult result) {

@@ -48,6 +48,7 @@
 #include "run_scheduler.h"
 #include "step_timeline.h"
 #include "temporal_monitor.h"
+#include "view_recorder.h"
 #include "scene/scene_source.h"
 #include "scene/stiff_scenes.h"
 #include "scene/builtin_scenes.h"
@@ -156,6 +157,12 @@ private:
 
     // E: the intermediate view as EXR (its float values) and PNG (as shown: exposure or range mapping).
     void exportView();
+    // The focused view as its export shows it: linear values and the exposure scale a PNG applies (false
+    // when it holds no image).
+    bool focusedViewImage(viz::Image& image, float& exposure);
+    // E while playing starts or stops recording the focused view; stopping writes the GIF.
+    void toggleRecording();
+    void stopRecording();
 
     // F12: the whole window as PNG (with its sidecar JSON of view rectangles).
     void exportWindow();
@@ -462,6 +469,8 @@ private:
     double mPlayClock = 0.0, mPlayTurn = 0.0;     // seconds played; the light's turn (0..1)
     int mPlayFrame = 0;                           // animation frames played (FrameInput::frame)
     TemporalMonitor mTemporal;                    // while playing: L_air's change from frame to frame
+    ViewRecorder mRecorder;                       // E while playing: the focused view's frames (a GIF)
+    double mRecordStart = 0.0;                    // mPlayClock when the recording started
     std::optional<viz::scene::Light> mPlayLight;  // the first light as it was when play started
     glm::dvec3 mPlayCentre{0.0};  // frames left until a script action's widget is scrolled into view
     std::vector<std::string> mSceneChoices, mStiffChoices;  // the scene pickers' lists (built lazily)

@@ -115,12 +115,10 @@ std::string GuiApp::exportStem(const std::string& what) {
     return (std::filesystem::path(mOptions.exportDir) / name).string();
 }
 
-void GuiApp::exportView() {
-    const PaneImage& pane = focusedView().pane;
-    if (!mHaveOutput || pane.texture == 0) {
-        mNotice = "nothing to export: the view holds no image";
-        return;
-    }
+namespace {
+
+// A pane's texture as an image, row 0 at the top.
+viz::Image paneValues(const PaneImage& pane) {
     viz::Image values = viz::gl::readTexture(pane.texture);  // rows flipped: GL row 0 is the bottom
     if (!pane.flipY) {
         // Uploaded CPU images keep row 0 at the top in GL too: undo readTexture's flip.
@@ -130,17 +128,61 @@ void GuiApp::exportView() {
                 for (int c = 0; c < values.channels; ++c) flipped.at(x, y, c) = values.at(x, values.height - 1 - y, c);
         values = std::move(flipped);
     }
+    return values;
+}
+
+}  // namespace
+
+bool GuiApp::focusedViewImage(viz::Image& image, float& exposure) {
+    const PaneImage& pane = focusedView().pane;
+    if (!mHaveOutput || pane.texture == 0) return false;
+    const viz::Image values = paneValues(pane);
+    const DisplayMapping m = resolveMapping(pane, focusedView().display, mExposure, focusedView().measured);
+    const bool colour = m.mode == DisplayMode::HdrColor || m.mode == DisplayMode::RangeColor;
+    image = colour ? values : viz::toDisplay(values, m.lo, m.hi);
+    exposure = colour ? std::exp2(m.exposure) : 1.0f;
+    return true;
+}
+
+void GuiApp::exportView() {
+    if (mPlaying) {
+        toggleRecording();
+        return;
+    }
+    const PaneImage& pane = focusedView().pane;
+    viz::Image shown;
+    float exposure = 1.0f;
+    if (!focusedViewImage(shown, exposure)) {
+        mNotice = "nothing to export: the view holds no image";
+        return;
+    }
     const std::string stem = exportStem(pane.id.empty() ? "view" : pane.id);
     try {
-        viz::writeImage(values, stem + ".exr");
-        const DisplayMapping m = resolveMapping(pane, focusedView().display, mExposure, focusedView().measured);
-        const bool colour = m.mode == DisplayMode::HdrColor || m.mode == DisplayMode::RangeColor;
-        if (colour) viz::writeImage(values, stem + ".png", std::exp2(m.exposure));
-        else viz::writeImage(viz::toDisplay(values, m.lo, m.hi), stem + ".png");
+        viz::writeImage(paneValues(pane), stem + ".exr");
+        viz::writeImage(shown, stem + ".png", exposure);
         mNotice = "exported " + stem + ".exr and .png";
     } catch (const viz::InputError& e) {
         mNotice = e.what();
     }
+}
+
+void GuiApp::toggleRecording() {
+    if (mRecorder.recording()) {
+        stopRecording();
+        return;
+    }
+    const PaneImage& pane = focusedView().pane;
+    mRecorder.start(exportStem(pane.id.empty() ? "view" : pane.id) + ".gif");
+    mRecordStart = mPlayClock;
+    mNotice = "recording the focused view: E or P stops and writes the GIF";
+}
+
+void GuiApp::stopRecording() {
+    if (!mRecorder.recording()) return;
+    // The animation's own clock: frames over the seconds it played (1/30 s a frame under automation).
+    const double seconds = mPlayClock - mRecordStart;
+    const int fps = seconds > 0.0 ? int(std::lround(double(mRecorder.frames()) / seconds)) : 25;
+    mNotice = mRecorder.finish(fps);
 }
 
 void GuiApp::exportWindow() {

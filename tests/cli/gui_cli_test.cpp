@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/cli_fixture.h"
+#include "core/animation_io.h"
 #include "core/image_io.h"
 
 namespace viz::testing {
@@ -288,6 +289,28 @@ TEST_F(GuiCli, TheTemporalViewShowsTheChangeOfLairWhilePlaying) {
             EXPECT_FALSE(shown) << "no second frame, no change to show";
         }
     }
+}
+
+// E while an animation plays records the focused view: E again writes an animated GIF of the frames it
+// saw, at the animation's rate (1/30 s a frame under automation: 30 per second, stored as 3 hundredths).
+TEST_F(GuiCli, ExportWhilePlayingRecordsTheFocusedViewAsAGif) {
+    const fs::path exports = path("exports");
+    const fs::path script = writeText("record.txt", "frames 1\nkey P\nframes 2\nkey E\nframes 6\nkey E\nframes 1\n"
+                                                    "screenshot " + path("after.png").string() + "\n");
+    const RunResult r = run("gui --scene grate --technique raymarch --size 32x24 --set samples=8 --export-dir " +
+                            exports.string() + " --script " + script.string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    std::vector<fs::path> gifs;
+    for (const auto& e : fs::directory_iterator(exports))
+        if (e.path().extension() == ".gif") gifs.push_back(e.path());
+    ASSERT_EQ(gifs.size(), 1u);
+    const viz::AnimationInfo info = viz::readAnimationInfo(gifs.front().string());
+    EXPECT_GE(info.frames, 5);
+    EXPECT_LE(info.frames, 7);
+    EXPECT_EQ(info.width, 32);
+    EXPECT_NEAR(info.fps, 100.0 / 3.0, 1e-6);
+    const nlohmann::json j = nlohmann::json::parse(readFile(path("after.json")));
+    EXPECT_NE(j.at("notice").get<std::string>().find("recorded"), std::string::npos) << j.at("notice");
 }
 
 // The comparison grid plays along: with the grid open, P renders every GPU technique on each played
