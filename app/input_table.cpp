@@ -82,7 +82,8 @@ std::vector<KeyBinding> makeTable() {
             "switch to the orbit camera"));
     add(row({GLFW_KEY_R}, C::ResetCamera, C::None, X::Any, H::Frame, "`R`", "R reset", "reset the camera"));
     add(row({GLFW_KEY_P}, C::PlayPause, C::None, X::Any, H::Frame, "`P`", "P play/pause",
-            "play / pause the light's orbit animation"));
+            "play / pause the light's orbit animation (the views list gains `L_air change per frame`; the comparison "
+            "grid plays too)"));
     add(pointer(X::Orbit, H::Frame, "left drag", "left drag orbit",
                 "turn the camera round its target (in an orbit view such as polyvol's light volume: turn that view)"));
     add(pointer(X::Orbit, H::Frame, "wheel", "wheel zoom",
@@ -140,7 +141,9 @@ std::vector<KeyBinding> makeTable() {
     add(row({GLFW_KEY_G}, C::ToggleComparison, C::None, X::Any, H::Views, "`G`", "G compare",
             "every technique's L_air side by side, with times and errors, and back"));
     add(row({GLFW_KEY_E}, C::ExportView, C::None, X::Orbit, H::Views, "`E`", "E export",
-            "export the focused view as EXR (values) and PNG (as shown)"));
+            "export the focused view as EXR (values) and PNG (as shown); while `P` plays: start recording the "
+            "focused view, and again (or `P`) to stop and write an animated GIF of the frames it saw, as shown, at the "
+            "animation's rate (at most 600 frames or 512 MiB of them)"));
     add(row({GLFW_KEY_F12}, C::ExportWindow, C::None, X::Any, H::Views, "`F12`", "F12 window",
             "export the window as PNG"));
     add(row({GLFW_KEY_F5}, C::SaveSession, C::None, X::Any, H::Views, "`F5` / `F9`", "F5/F9 save/load session",

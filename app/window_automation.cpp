@@ -223,9 +223,9 @@ void GuiApp::writeSidecar(const std::string& path) {
                             {"seconds", mPlayClock},
                             {"light_turn", mPlayTurn},
                             {"frame", mPlayFrame},
-                            {"temporal_pairs", mTemporal.pairs()},
-                            {"temporal_change_rms", std::isfinite(mTemporal.score()) ? nlohmann::json(mTemporal.score())
-                                                                                     : nlohmann::json(nullptr)}};
+                            {"temporal_pairs", mTemporal.pairs()}};
+    // The temporal view's score, once there is one (two frames played).
+    if (std::isfinite(mTemporal.score())) sidecar["animation"]["temporal_change_rms"] = mTemporal.score();
     // The scene and parameter panel under the grid (null when there is no room for it).
     sidecar["parameters_panel"] = mParamsRect.size().y > 0.0f
                                       ? nlohmann::json::array({mParamsRect.min.x, mParamsRect.min.y, mParamsRect.max.x,
