@@ -100,7 +100,7 @@ int GuiApp::run() {
         const bool flying = mController.mode() == CameraController::Mode::Fly && anyFlyKeyDown();
         const bool busy = mWorker->progress().busy || otherPending() || mComparison.pending();
         const bool automated = !mOptions.screenshot.empty() || !mOptions.script.empty();
-        if (flying || mDirty || automated || mPlaying || mGpuOthersDue || mComparison.due() ||
+        if (flying || mDirty || automated || mAnimation.playing || mGpuOthersDue || mComparison.due() ||
             (mLesson && mLesson->animating())) {
             glfwPollEvents();
         } else {
@@ -118,7 +118,7 @@ int GuiApp::run() {
         if (mController.mode() == CameraController::Mode::Fly) fly(dt);
         // Automation advances animations by a fixed 1/30 s per frame, so runs repeat exactly.
         if (mLesson) mLesson->update(*this, automated ? 1.0 / 30.0 : dt);
-        if (mPlaying) advanceAnimation(automated ? 1.0 / 30.0 : dt);
+        if (mAnimation.playing) advanceAnimation(automated ? 1.0 / 30.0 : dt);
         if (mReduced && mDragButton < 0 && !mGizmoDrag && !anyFlyKeyDown()) mDirty = true;
         // A view now shows (or no longer shows) something the technique draws only on demand.
         if (!mDirty && mHaveOutput && technique().needsGl()) {
@@ -163,36 +163,36 @@ int GuiApp::run() {
 }
 
 void GuiApp::togglePlaying() {
-    mPlaying = !mPlaying;
-    mTemporal.reset();  // the temporal view measures from the frame play starts on
-    if (!mPlaying) {
+    mAnimation.playing = !mAnimation.playing;
+    mAnimation.temporal.reset();  // the temporal view measures from the frame play starts on
+    if (!mAnimation.playing) {
         if (mComparison.isOpen()) mComparison.stopPlaying(comparisonRunner());  // back to the still frame
         stopRecording();
         return;
     }
-    mPlayLight.reset();
+    mAnimation.light.reset();
     if (!mScene.lights.empty() && mScene.lights[0].type != viz::scene::LightType::Area) {
-        mPlayLight = mScene.lights[0];
-        mPlayCentre = mController.target();
-        mPlayTurn = 0.0;
+        mAnimation.light = mScene.lights[0];
+        mAnimation.centre = mController.target();
+        mAnimation.turn = 0.0;
     }
 }
 
 void GuiApp::advanceAnimation(double dt) {
-    mPlayClock += dt;
-    ++mPlayFrame;
+    mAnimation.clock += dt;
+    ++mAnimation.frame;
     if (technique().readsFrame(mSettings)) mDirty = true;  // its noise changes every frame
     if (mSettings.count("time")) {
-        mSettings["time"] = mPlayClock;
+        mSettings["time"] = mAnimation.clock;
         mDirty = true;
     }
-    if (mPlayLight && (technique().needsGl() || mComparison.isOpen()) && !mScene.lights.empty()) {
-        mPlayTurn = std::fmod(mPlayTurn + dt / kLightTurnSeconds, 1.0);
-        mScene.lights[0] = orbitLight(*mPlayLight, mPlayCentre, mPlayTurn);
+    if (mAnimation.light && (technique().needsGl() || mComparison.isOpen()) && !mScene.lights.empty()) {
+        mAnimation.turn = std::fmod(mAnimation.turn + dt / kLightTurnSeconds, 1.0);
+        mScene.lights[0] = orbitLight(*mAnimation.light, mAnimation.centre, mAnimation.turn);
         mDirty = true;
     }
     // The comparison grid plays the same frame for every technique.
-    if (mComparison.isOpen()) mComparison.playFrame(mScene, mPlayFrame, comparisonRunner());
+    if (mComparison.isOpen()) mComparison.playFrame(mScene, mAnimation.frame, comparisonRunner());
 }
 
 void GuiApp::selectTechnique(int index) {
@@ -248,9 +248,9 @@ void GuiApp::render() {
     const auto start = Clock::now();
     try {
         // The scheduler re-runs only the stages whose inputs changed (a sub-step: its stage alone).
-        mOutput = mRunners.at(t.id())->run(mScene, size.x, size.y, mSettings, mCursor, shownContents(), mPlayFrame);
+        mOutput = mRunners.at(t.id())->run(mScene, size.x, size.y, mSettings, mCursor, shownContents(), mAnimation.frame);
         // While playing, the temporal view: this frame's L_air against the previous one's.
-        if (mPlaying && mTemporal.add(mOutput.airlight)) mOutput.intermediates.push_back(mTemporal.view());
+        if (mAnimation.playing && mAnimation.temporal.add(mOutput.airlight)) mOutput.intermediates.push_back(mAnimation.temporal.view());
         mError.clear();
         mHaveOutput = true;
         mPass = 1;
@@ -265,10 +265,10 @@ void GuiApp::render() {
     // The technique leaves its own framebuffer and state behind.
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     refreshPanes();
-    if (mRecorder.recording()) {
+    if (mAnimation.recorder.recording()) {
         viz::Image shown;
         float exposure = 1.0f;
-        if (focusedViewImage(shown, exposure) && !mRecorder.add(shown, exposure)) stopRecording();  // full
+        if (focusedViewImage(shown, exposure) && !mAnimation.recorder.add(shown, exposure)) stopRecording();  // full
     }
 }
 

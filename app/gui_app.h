@@ -47,8 +47,7 @@
 #include "render_job.h"
 #include "run_scheduler.h"
 #include "step_timeline.h"
-#include "temporal_monitor.h"
-#include "view_recorder.h"
+#include "window_animation.h"
 #include "scene/scene_source.h"
 #include "scene/stiff_scenes.h"
 #include "scene/builtin_scenes.h"
@@ -464,15 +463,8 @@ private:
 
     GuiOptions mOptions;
     long mGlErrors = 0;  // GL errors seen by the script's stats actions
-    int mScriptRevealFrames = 0;
-    bool mPlaying = false;                        // P: the animation runs
-    double mPlayClock = 0.0, mPlayTurn = 0.0;     // seconds played; the light's turn (0..1)
-    int mPlayFrame = 0;                           // animation frames played (FrameInput::frame)
-    TemporalMonitor mTemporal;                    // while playing: L_air's change from frame to frame
-    ViewRecorder mRecorder;                       // E while playing: the focused view's frames (a GIF)
-    double mRecordStart = 0.0;                    // mPlayClock when the recording started
-    std::optional<viz::scene::Light> mPlayLight;  // the first light as it was when play started
-    glm::dvec3 mPlayCentre{0.0};  // frames left until a script action's widget is scrolled into view
+    int mScriptRevealFrames = 0;  // frames left until a script action's widget is scrolled into view
+    WindowAnimation mAnimation;  // P
     std::vector<std::string> mSceneChoices, mStiffChoices;  // the scene pickers' lists (built lazily)
     SessionState mSession;  // as loaded (or defaults); settings of techniques not yet visited come from it
     std::string mNotice;    // last session message, shown in the status line

@@ -297,11 +297,11 @@ Figure viewFigure(const RenderJob& job, const std::string& view, float exposure,
 // A step's animation as the handout's animated GIF: the window's animation (lesson_player.cpp) rendered
 // frame by frame (a light orbit: 12 frames per second of it; sub-steps: each sub-step once, at most 48
 // evenly spread, the last always), each frame the step's first view drawn as the still figures are
-// (viewFigure, at their exposure), through core/animation_io.h. Returns the figure's HTML, or a note
-// where this build cannot write a GIF.
-std::string animationFigure(const LessonStep& s, const RenderRequest& request, std::size_t k, float exposure,
+// (viewFigure, at their exposure), through core/animation_io.h, by the job that rendered the still
+// figures (its light and sub-step are moved frame by frame; the last frame is the still state). Returns
+// the figure's HTML, or a note where this build cannot write a GIF.
+std::string animationFigure(const LessonStep& s, RenderJob& job, std::size_t k, float exposure,
                             const viz::ui::FontAtlas& font, viz::StagedFolder& staged) {
-    RenderJob job(request);
     const std::string view = s.views.empty() ? "final" : s.views.front();
     std::vector<double> substeps;  // the values of the stage's sub-step parameter, in order
     std::string substepParam;
@@ -482,7 +482,7 @@ void exportLesson(const Lesson& lesson, const std::string& folder, glm::ivec2 si
                     "<br><span class=\"range\">" + viz::report::escapeHtml(figure.caption) + "</span></figcaption></figure>\n";
         }
         if (s.animation.kind != LessonAnimation::Kind::None)
-            html += animationFigure(s, request, k, exposure, font, staged);
+            html += animationFigure(s, job, k, exposure, font, staged);
         if (!s.compare.empty()) html += liveComparison(s, {request.width, request.height});
     }
     html += "</body></html>\n";

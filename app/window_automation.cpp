@@ -219,13 +219,13 @@ void GuiApp::writeSidecar(const std::string& path) {
                             {"position_grab", grab(h.position)}, {"tip_grab", grab(h.tip)}};
         break;
     }
-    sidecar["animation"] = {{"playing", mPlaying},
-                            {"seconds", mPlayClock},
-                            {"light_turn", mPlayTurn},
-                            {"frame", mPlayFrame},
-                            {"temporal_pairs", mTemporal.pairs()}};
+    sidecar["animation"] = {{"playing", mAnimation.playing},
+                            {"seconds", mAnimation.clock},
+                            {"light_turn", mAnimation.turn},
+                            {"frame", mAnimation.frame},
+                            {"temporal_pairs", mAnimation.temporal.pairs()}};
     // The temporal view's score, once there is one (two frames played).
-    if (std::isfinite(mTemporal.score())) sidecar["animation"]["temporal_change_rms"] = mTemporal.score();
+    if (std::isfinite(mAnimation.temporal.score())) sidecar["animation"]["temporal_change_rms"] = mAnimation.temporal.score();
     // The scene and parameter panel under the grid (null when there is no room for it).
     sidecar["parameters_panel"] = mParamsRect.size().y > 0.0f
                                       ? nlohmann::json::array({mParamsRect.min.x, mParamsRect.min.y, mParamsRect.max.x,

@@ -115,29 +115,14 @@ std::string GuiApp::exportStem(const std::string& what) {
     return (std::filesystem::path(mOptions.exportDir) / name).string();
 }
 
-namespace {
-
-// A pane's texture as an image, row 0 at the top.
-viz::Image paneValues(const PaneImage& pane) {
-    viz::Image values = viz::gl::readTexture(pane.texture);  // rows flipped: GL row 0 is the bottom
-    if (!pane.flipY) {
-        // Uploaded CPU images keep row 0 at the top in GL too: undo readTexture's flip.
-        viz::Image flipped = values;
-        for (int y = 0; y < values.height; ++y)
-            for (int x = 0; x < values.width; ++x)
-                for (int c = 0; c < values.channels; ++c) flipped.at(x, y, c) = values.at(x, values.height - 1 - y, c);
-        values = std::move(flipped);
-    }
-    return values;
-}
-
-}  // namespace
-
 bool GuiApp::focusedViewImage(viz::Image& image, float& exposure) {
-    const PaneImage& pane = focusedView().pane;
-    if (!mHaveOutput || pane.texture == 0) return false;
-    const viz::Image values = paneValues(pane);
-    const DisplayMapping m = resolveMapping(pane, focusedView().display, mExposure, focusedView().measured);
+    ViewState& v = focusedView();
+    if (!mHaveOutput || v.pane.texture == 0) return false;
+    // The view's CPU copy, read back after each run (not during a drag's reduced runs: then read now).
+    if (v.values.empty()) readBackValues(v);
+    if (v.values.empty()) return false;
+    const viz::Image& values = v.values;
+    const DisplayMapping m = resolveMapping(v.pane, v.display, mExposure, v.measured);
     const bool colour = m.mode == DisplayMode::HdrColor || m.mode == DisplayMode::RangeColor;
     image = colour ? values : viz::toDisplay(values, m.lo, m.hi);
     exposure = colour ? std::exp2(m.exposure) : 1.0f;
@@ -145,7 +130,7 @@ bool GuiApp::focusedViewImage(viz::Image& image, float& exposure) {
 }
 
 void GuiApp::exportView() {
-    if (mPlaying) {
+    if (mAnimation.playing) {
         toggleRecording();
         return;
     }
@@ -158,7 +143,7 @@ void GuiApp::exportView() {
     }
     const std::string stem = exportStem(pane.id.empty() ? "view" : pane.id);
     try {
-        viz::writeImage(paneValues(pane), stem + ".exr");
+        viz::writeImage(focusedView().values, stem + ".exr");
         viz::writeImage(shown, stem + ".png", exposure);
         mNotice = "exported " + stem + ".exr and .png";
     } catch (const viz::InputError& e) {
@@ -167,22 +152,22 @@ void GuiApp::exportView() {
 }
 
 void GuiApp::toggleRecording() {
-    if (mRecorder.recording()) {
+    if (mAnimation.recorder.recording()) {
         stopRecording();
         return;
     }
     const PaneImage& pane = focusedView().pane;
-    mRecorder.start(exportStem(pane.id.empty() ? "view" : pane.id) + ".gif");
-    mRecordStart = mPlayClock;
+    mAnimation.recorder.start(exportStem(pane.id.empty() ? "view" : pane.id) + ".gif");
+    mAnimation.recordStart = mAnimation.clock;
     mNotice = "recording the focused view: E or P stops and writes the GIF";
 }
 
 void GuiApp::stopRecording() {
-    if (!mRecorder.recording()) return;
+    if (!mAnimation.recorder.recording()) return;
     // The animation's own clock: frames over the seconds it played (1/30 s a frame under automation).
-    const double seconds = mPlayClock - mRecordStart;
-    const int fps = seconds > 0.0 ? int(std::lround(double(mRecorder.frames()) / seconds)) : 25;
-    mNotice = mRecorder.finish(fps);
+    const double seconds = mAnimation.clock - mAnimation.recordStart;
+    const int fps = seconds > 0.0 ? int(std::lround(double(mAnimation.recorder.frames()) / seconds)) : 25;
+    mNotice = mAnimation.recorder.finish(fps);
 }
 
 void GuiApp::exportWindow() {

@@ -144,7 +144,7 @@ std::pair<std::string, std::string> GuiApp::viewTitle(const ViewState& v) const 
     if (!mHaveOutput) return {technique().needsGl() ? "(no view)" : "computing...", ""};
     std::string title = v.pane.label.empty() ? v.content : v.pane.label;
     // The temporal view's running score, first: titles are shortened in the middle to fit.
-    if (v.pane.id == kTemporalChangeId) title += ": " + mTemporal.describe();
+    if (v.pane.id == kTemporalChangeId) title += ": " + mAnimation.temporal.describe();
     if (v.shown >= 0) title += "   [" + std::to_string(v.shown + 1) + "/" + std::to_string(contentCount()) + "]";
     if (v.pane.id != "final" && v.pane.id != "airlight" && v.pane.id != kTemporalChangeId) {
         title += "  " + v.pane.id;

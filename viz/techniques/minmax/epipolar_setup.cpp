@@ -73,21 +73,18 @@ void fixedSliceGrid(EpipolarFrame<double>& f, const EpipolarFrame<double>& world
     int divisions = int(std::min<unsigned>(std::bit_ceil(unsigned(std::ceil(2.0 * pi / std::max(wanted, 1e-9)))),
                                            unsigned(kMaxSlices)));
     divisions = std::max(divisions, 2);
-    // The centred frame is the world frame turned by the centre's alpha a0; turning it back by
-    // delta = a0 - k spacing instead gives a frame whose multiples of spacing are the world frame's.
-    const bool wrap = f.wrap;
+    // f (the centred frame) is the world frame turned by the centre's alpha a0; turning f back by
+    // delta = a0 - k spacing gives a frame whose multiples of spacing are the world frame's.
+    const double a0 = alphaOf(world, centre);
     for (;; divisions /= 2) {
         const double spacing = 2.0 * pi / double(divisions);
-        const double a0 = alphaOf(world, centre);
         const double delta = a0 - std::round(a0 / spacing) * spacing;
-        EpipolarFrame<double> g = world;
-        centreAlphaOn(g, centre);  // u along the centre's slice...
+        EpipolarFrame<double> g = f;
         const double c = std::cos(-delta), sn = std::sin(-delta);
-        g.u = c * g.u + sn * g.v;  // ...then back by delta onto the grid
+        g.u = c * f.u + sn * f.v;
         g.v = glm::cross(g.axis, g.u);
-        g.wrap = wrap;
         g.alphaSpacing = spacing;
-        if (wrap) {
+        if (g.wrap) {
             g.alphaLo = -pi;
             g.slices = divisions;
         } else {
@@ -98,9 +95,7 @@ void fixedSliceGrid(EpipolarFrame<double>& f, const EpipolarFrame<double>& world
             g.alphaLo = first * spacing;
             g.slices = std::clamp(count, 2, kMaxSlices);
         }
-        const int columns = f.columns;
         f = g;
-        f.columns = columns;
         return;
     }
 }
