@@ -122,7 +122,7 @@ int GuiApp::run() {
         if (mReduced && mDragButton < 0 && !mGizmoDrag && !anyFlyKeyDown()) mDirty = true;
         // A view now shows (or no longer shows) something the technique draws only on demand.
         if (!mDirty && mHaveOutput && technique().needsGl()) {
-            const StageRunner& runner = *mRunners.at(technique().id());
+            const RunScheduler& runner = *mRunners.at(technique().id());
             if (runner.onDemandAmong(shownContents()) != runner.lastViews()) mDirty = true;
         }
         if (mDirty) {
@@ -200,7 +200,7 @@ void GuiApp::selectTechnique(int index) {
     index = ((index % n) + n) % n;
     const std::string& id = mIds[std::size_t(index)];
     try {
-        if (!mRunners.count(id)) mRunners[id] = std::make_unique<StageRunner>(viz::makeTechnique(id));
+        if (!mRunners.count(id)) mRunners[id] = std::make_unique<RunScheduler>(viz::makeTechnique(id));
     } catch (const std::exception& e) {
         mError = e.what();
         return;

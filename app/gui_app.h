@@ -543,7 +543,7 @@ private:
     glm::ivec2 mLessonSize{0};                  // --size given with a lesson: every step at that size
     StepCursor mCursor;                      // stepping: where the main views' run stops (not a setting)
     // The main views' technique instances, one per technique, each with its last run's key.
-    std::map<std::string, std::unique_ptr<StageRunner>> mRunners;
+    std::map<std::string, std::unique_ptr<RunScheduler>> mRunners;
     std::vector<TimelineSegment> mTimeline;  // the stepping timeline as drawn last
     Rect mTimelineRect;
     bool mDragTimeline = false;

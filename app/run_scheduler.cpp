@@ -61,11 +61,11 @@ ResumePoint resumePoint(const viz::Technique& t, const RunKey& previous, int pre
     return r;
 }
 
-std::vector<std::string> StageRunner::onDemandAmong(const std::vector<std::string>& shown) const {
+std::vector<std::string> RunScheduler::onDemandAmong(const std::vector<std::string>& shown) const {
     return viz::onDemandAmong(*mTechnique, shown);
 }
 
-viz::FrameOutput StageRunner::run(const viz::scene::Scene& scene, int width, int height, const viz::Settings& settings,
+viz::FrameOutput RunScheduler::run(const viz::scene::Scene& scene, int width, int height, const viz::Settings& settings,
                                   StepCursor cursor, const std::vector<std::string>& views, int frame) {
     RunKey key{viz::scene::sceneContentHash(scene), width, height, settings, cursor, onDemandAmong(views), frame};
     mResume = mPrevious ? resumePoint(*mTechnique, *mPrevious, mPreviousLastStage, key) : ResumePoint{};

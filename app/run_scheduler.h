@@ -6,7 +6,7 @@
 // republishes what they published (debug/stage_reuse.h). A cursor that moved only inside one stage
 // re-runs that stage alone, told that only the sub-step changed.
 //
-// Each StageRunner owns its technique instance: textures it publishes are the runner's own, so another
+// Each RunScheduler owns its technique instance: textures it publishes are the scheduler's own, so another
 // consumer's run (a difference view, the comparison grid) never replaces them behind its back.
 #pragma once
 
@@ -50,9 +50,9 @@ struct ResumePoint {
 ResumePoint resumePoint(const viz::Technique& technique, const RunKey& previous, int previousLastStage,
                         const RunKey& next);
 
-class StageRunner {
+class RunScheduler {
 public:
-    explicit StageRunner(std::unique_ptr<viz::Technique> technique) : mTechnique(std::move(technique)) {}
+    explicit RunScheduler(std::unique_ptr<viz::Technique> technique) : mTechnique(std::move(technique)) {}
     viz::Technique& technique() { return *mTechnique; }
     const viz::Technique& technique() const { return *mTechnique; }
 

@@ -1,8 +1,9 @@
 // Stage-level reuse inside one technique instance. A run told to resume at stage k
 // (FrameInput::resumeAtStage) skips stages 0 .. k-1 and republishes what they published the last time
 // they ran: their GL textures are still the instance's own and still hold those results, because only
-// the stage that computes a texture writes it. A technique records each stage as it runs (ran) and, for
-// a stage it skips, carries the record over (carry). The caller (app/run_scheduler.h) vouches that the
+// the stage that computes a texture writes it. The stage runner (debug/stage_runner.h) records each stage
+// that declares StageInfo::keepsOutputs as it runs (ran) and, for one it skips, carries the record over
+// (carry). The caller (app/run_scheduler.h) vouches that the
 // skipped stages' inputs did not change; this class makes sure they ran completely last time.
 #pragma once
 

@@ -37,6 +37,10 @@ struct StageInfo {
     // its settings ask for: polyvol's orbit view of its light volume mesh, say. Drawing one costs time
     // inside the stage, so a caller that does not show it (the report) does not pay for it.
     std::vector<std::string> onDemand{};
+    // Its outputs stay in the technique instance between runs (its own textures, which no later stage
+    // writes), so a run resuming after it (FrameInput::resumeAtStage) republishes them instead of running
+    // it (debug/stage_runner.h). A stage that leaves its results in locals of run() cannot.
+    bool keepsOutputs = false;
 };
 
 // One point of a technique's quality sweep (`airlight report`): a short label and the settings that

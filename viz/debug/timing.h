@@ -43,6 +43,16 @@ struct Timing {
     }
 };
 
+// The clock a stage runner times its stages with: gl::StageClock for GPU stages, CpuStageClock below for
+// CPU ones. begin() starts a stage; end(stage) is its record.
+class StageTimer {
+public:
+    virtual ~StageTimer() = default;
+    virtual void begin() = 0;
+    virtual StageTiming end(const std::string& stage) = 0;
+    virtual std::string name() const = 0;  // Timing::clock
+};
+
 // Times CPU work with a steady clock.
 class CpuStopwatch {
 public:
@@ -53,6 +63,17 @@ public:
 
 private:
     std::chrono::steady_clock::time_point mStart;
+};
+
+// CPU stages: wall time by the steady clock ("steady_clock").
+class CpuStageClock final : public StageTimer {
+public:
+    void begin() override { mWatch = CpuStopwatch(); }
+    StageTiming end(const std::string& stage) override { return {stage, mWatch.elapsedMilliseconds()}; }
+    std::string name() const override { return "steady_clock"; }
+
+private:
+    CpuStopwatch mWatch;
 };
 
 }  // namespace viz

@@ -21,18 +21,19 @@ namespace viz::gl {
 
 enum class ClockMethod { FinishSteadyClock, TimestampQuery };
 
-class StageClock {
+class StageClock final : public StageTimer {
 public:
     StageClock();                             // method chosen from the current renderer
     explicit StageClock(ClockMethod method);  // forced (benchmarks compare the two)
 
-    void begin();
+    void begin() override;
     // Ends the stage and returns its duration in milliseconds. Waits for the GPU (glFinish, or the
     // query result).
     double endMilliseconds();
     // endMilliseconds() as a record of `stage`, with the CPU wall time from begin() until the result was
     // known (debug/timing.h), and in a counting run the work the stage did (gl/work_counters.h).
-    StageTiming end(const std::string& stage);
+    StageTiming end(const std::string& stage) override;
+    std::string name() const override { return methodName(mMethod); }
 
     ClockMethod clockMethod() const { return mMethod; }
     // "glFinish+steady_clock" or "GL_TIMESTAMP" for the current context.

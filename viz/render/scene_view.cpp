@@ -1,7 +1,5 @@
 #include "render/scene_view.h"
 
-#include "gl/stage_clock.h"
-
 #include <algorithm>
 #include <cmath>
 
@@ -26,13 +24,17 @@ std::vector<ParamInfo> SceneViewPasses::params() {
 StageInfo SceneViewPasses::shadowStage(const std::string& prefix, const std::vector<std::string>& extraIntermediates) {
     StageInfo stage{prefix + ".shadow_maps", "Shadow maps", "render every light's shadow map (linear distance)",
                     {"shadow_map", "area_samples"}, {prefix + ".shadow_map"}, 1};
+    stage.keepsOutputs = true;  // the instance's shadow maps
     stage.intermediates.insert(stage.intermediates.end(), extraIntermediates.begin(), extraIntermediates.end());
     return stage;
 }
 
 StageInfo SceneViewPasses::surfaceStage(const std::string& prefix) {
-    return {prefix + ".surface", "Camera view", "distance d to the first surface and the unattenuated surface radiance",
-            {}, {prefix + ".distance", prefix + ".surface"}, 1};
+    StageInfo stage{prefix + ".surface", "Camera view",
+                    "distance d to the first surface and the unattenuated surface radiance", {},
+                    {prefix + ".distance", prefix + ".surface"}, 1};
+    stage.keepsOutputs = true;  // the instance's surface targets
+    return stage;
 }
 
 StageInfo SceneViewPasses::composeStage(const std::string& prefix) {
@@ -95,32 +97,13 @@ void SceneViewPasses::compose(const scene::Scene& scene, const gl::Texture& airl
 
 Image SceneViewPasses::readFinal() const { return readRgb(mFinal); }
 
-bool SceneViewPasses::runSharedStages(const FrameInput& input, int stop, const std::vector<StageInfo>& stages,
-                                      const std::string& prefix, FrameOutput& out, StageReuse& reuse) {
-    gl::StageClock clock;
-    if (reuse.carries(0)) {
-        reuse.carry(0, out);
-    } else {
-        // The scene upload is counted with the shadow maps: it is part of the technique's cost.
-        clock.begin();
-        buildShadows(*input.scene, input.settings, out.intermediates, prefix);
-        out.timing.stages.push_back(clock.end(stages[0].id));
-        reuse.ran(0, out);
-    }
+bool SceneViewPasses::runSharedStages(StageRunner& stages, const FrameInput& input, const std::string& prefix,
+                                      FrameOutput& out) {
+    // The scene upload is counted with the shadow maps: it is part of the technique's cost.
+    const bool more = stages.run(0, [&] { buildShadows(*input.scene, input.settings, out.intermediates, prefix); });
     mFrameSize = {input.width, input.height};
-    out.lastStageRun = 0;
-    if (stop == 0) return false;
-
-    if (reuse.carries(1)) {
-        reuse.carry(1, out);
-    } else {
-        clock.begin();
-        renderSurface(*input.scene, input.width, input.height, out.intermediates, prefix);
-        out.timing.stages.push_back(clock.end(stages[1].id));
-        reuse.ran(1, out);
-    }
-    out.lastStageRun = 1;
-    return stop != 1;
+    return more &&
+           stages.run(1, [&] { renderSurface(*input.scene, input.width, input.height, out.intermediates, prefix); });
 }
 
 bool SceneViewPasses::pixelRay(glm::ivec2 pixel, glm::dvec3& w, double& tEnd) const {

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "debug/stage_reuse.h"
+#include "debug/stage_runner.h"
 #include "debug/technique.h"
 #include "gl/texture.h"
 #include "render/compose.h"
@@ -50,11 +50,9 @@ public:
     Image readFinal() const;
 
     // The two stages every GPU technique starts with, at stage indices 0 (shadow maps, settings
-    // `shadow_map` and `area_samples`) and 1 (camera view), each timed with the StageClock and recorded as
-    // the last stage run, or carried over from the last run where `reuse` (begun by the caller) says so.
-    // Returns false when the run stops after one of them (`stop`: the last stage to run).
-    bool runSharedStages(const FrameInput& input, int stop, const std::vector<StageInfo>& stages,
-                         const std::string& prefix, FrameOutput& out, StageReuse& reuse);
+    // `shadow_map` and `area_samples`) and 1 (camera view), run by the technique's stage runner (timed,
+    // or carried over from the last run). Returns false when the run stops after one of them.
+    bool runSharedStages(StageRunner& stages, const FrameInput& input, const std::string& prefix, FrameOutput& out);
 
     // ---- linked cursors (the window's marks for a hovered frame pixel; render/shadow_map_markers.h) ----
     // The eye ray of frame pixel `pixel` (row 0 at the top) of the last run: unit direction w (world axes;

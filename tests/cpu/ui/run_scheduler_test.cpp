@@ -77,7 +77,7 @@ private:
 
 struct Fixture {
     viz::scene::Scene scene;
-    StageRunner runner{std::make_unique<CountingTechnique>(1)};
+    RunScheduler runner{std::make_unique<CountingTechnique>(1)};
     CountingTechnique& fake() { return static_cast<CountingTechnique&>(runner.technique()); }
 
     Fixture() {
@@ -89,7 +89,7 @@ struct Fixture {
     // Runs through the runner; checks the value against a fresh instance that runs every stage.
     float run(const viz::Settings& s, StepCursor cursor) {
         const viz::FrameOutput out = runner.run(scene, 4, 3, s, cursor);
-        StageRunner fresh(std::make_unique<CountingTechnique>(9));
+        RunScheduler fresh(std::make_unique<CountingTechnique>(9));
         const viz::FrameOutput truth = fresh.run(scene, 4, 3, s, cursor);
         EXPECT_EQ(out.final.at(0, 0, 0), truth.final.at(0, 0, 0)) << "a carried stage changed the result";
         EXPECT_EQ(out.intermediates.size(), truth.intermediates.size());
@@ -184,12 +184,12 @@ TEST(RunScheduler, LeavingAPartialStageRunsItWhole) {
 
 TEST(RunScheduler, TwoConsumersNeverSeeEachOthersTextures) {
     Fixture one;
-    StageRunner two(std::make_unique<CountingTechnique>(2));
+    RunScheduler two(std::make_unique<CountingTechnique>(2));
     const viz::Settings s1 = one.settings(), s2 = one.settings({{"a", 40}});
     for (int round = 0; round < 3; ++round) {
         one.run(s1, {2, round + 1});
         const viz::FrameOutput b = two.run(one.scene, 4, 3, s2, {2, round + 1});
-        StageRunner fresh(std::make_unique<CountingTechnique>(9));
+        RunScheduler fresh(std::make_unique<CountingTechnique>(9));
         EXPECT_EQ(b.final.at(0, 0, 0), fresh.run(one.scene, 4, 3, s2, {2, round + 1}).final.at(0, 0, 0));
         for (const viz::Intermediate& i : b.intermediates) EXPECT_EQ(i.glTexture / 1000, 2u) << i.id;
     }

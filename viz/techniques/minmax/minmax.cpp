@@ -61,6 +61,9 @@ MinmaxTechnique::MinmaxTechnique() {
          {kAirlight, kVisited, kNearMask, kRayCoords, kTrace}, kTraceSubsteps, "trace_steps"},
         render::SceneViewPasses::composeStage("minmax"),
     };
+    // The rectified maps and the trees stay in LightWork between runs.
+    mStages[kRectifyIndex].keepsOutputs = mStages[kMipmapIndex].keepsOutputs = true;
+    checkStageOrder(mStages, kStageOrder);
 }
 
 std::vector<double> MinmaxTechnique::substepValues(int stage, const Settings& s) const {
@@ -257,94 +260,82 @@ FrameOutput MinmaxTechnique::run(const FrameInput& input) {
     mMarkSize = {input.width, input.height};
     FrameOutput out;
     out.plan = plan(scene, s);
-    out.timing.clock = gl::StageClock::method();
-    const int stop = input.stopAfterStage < 0 ? kComposeIndex : input.stopAfterStage;
     gl::StageClock clock;
-
-    // ---- shadow maps and camera view ----
-    mReuse.begin(input, out);
-    if (!mReuse.substepOnly(kTraverseIndex)) mMarkTraversed = false;
-    if (!mView.runSharedStages(input, stop, mStages, "minmax", out, mReuse)) return out;
+    StageRunner stages(mStages, input, out, mReuse, clock);
+    if (!stages.substepOnly(kTraverseIndex)) mMarkTraversed = false;
+    if (!mView.runSharedStages(stages, input, "minmax", out)) return out;
 
     // The plan decides (sigma_s = 0 skips the epipolar stages unless force_features=1 runs them).
     const auto runs = [&](int stage) { return out.plan.stages[std::size_t(stage)].runs; };
     // ---- rectify ----
     const bool svd = s.at("integrand") == 1.0;
-    if (mReuse.carries(kRectifyIndex)) {
-        mReuse.carry(kRectifyIndex, out);
-    } else {
-        clock.begin();
-        prepareLights(scene, input, out.notes);
-        if (runs(kRectifyIndex)) {
-            for (LightWork& w : mWork) {
-                if (w.point()) measureRowGamma(w, scene, input);
-                rectify(w);
-                if (svd) prefixSums(w, scene, input);
+    const bool toMipmap = stages.run(
+        kRectifyIndex,
+        [&] {
+            prepareLights(scene, input, out.notes);
+            if (runs(kRectifyIndex)) {
+                for (LightWork& w : mWork) {
+                    if (w.point()) measureRowGamma(w, scene, input);
+                    rectify(w);
+                    if (svd) prefixSums(w, scene, input);
+                }
             }
-        }
-        out.timing.stages.push_back(clock.end(kStageRectify));
-        publishRectified(out, input);
-        if (runs(kRectifyIndex)) publishRowGamma(out);
-        if (svd && runs(kRectifyIndex)) publishLowRank(out);
-        mReuse.ran(kRectifyIndex, out);
-    }
-    out.lastStageRun = kRectifyIndex;
-    if (stop == kRectifyIndex) return out;
+        },
+        [&] {
+            publishRectified(out, input);
+            if (runs(kRectifyIndex)) publishRowGamma(out);
+            if (svd && runs(kRectifyIndex)) publishLowRank(out);
+        });
+    if (!toMipmap) return out;
 
     // ---- mipmap ----
+    const bool toTraverse = stages.run(
+        kMipmapIndex,
+        [&] {
+            const int wantedLevels = int(substepLimit(input, kMipmapIndex));
+            if (runs(kMipmapIndex))
+                for (LightWork& w : mWork) buildTree(w, wantedLevels);
+        },
+        [&] { publishTree(out, input); });
+    // A tree stepped to fewer levels than it has cannot be walked.
     bool complete = true;
-    if (mReuse.carries(kMipmapIndex)) {
-        mReuse.carry(kMipmapIndex, out);
-        for (const LightWork& w : mWork) complete = complete && (!runs(kMipmapIndex) || w.levelsBuilt == levelCount(w));
-    } else {
-        clock.begin();
-        const int wantedLevels = int(substepLimit(input, kMipmapIndex));
-        if (runs(kMipmapIndex)) {
-            for (LightWork& w : mWork) {
-                buildTree(w, wantedLevels);
-                complete = complete && w.levelsBuilt == levelCount(w);
-            }
-        }
-        out.timing.stages.push_back(clock.end(kStageMipmap));
-        publishTree(out, input);
-        mReuse.ran(kMipmapIndex, out);
-    }
-    out.lastStageRun = kMipmapIndex;
-    if (stop == kMipmapIndex || !complete) return out;
+    for (const LightWork& w : mWork) complete = complete && (!runs(kMipmapIndex) || w.levelsBuilt == levelCount(w));
+    if (!toTraverse || !complete) return out;
 
     // ---- traverse ----
     // Stepping the picked pixel's walk (the cursor's sub-step alone changed): the traversal's images
-    // stand; only the walk's view is drawn again.
-    if (!mReuse.substepOnly(kTraverseIndex)) {
-        clock.begin();
-        allocateTargets(input.width, input.height);
-        mAirlight.clear(glm::vec4(0.0f));
-        mVisited.clear(glm::vec4(0.0f));
-        mNearMask.clear(glm::vec4(0.0f));
-        mRayCoords.clear(glm::vec4(0.0f));
-        if (runs(kTraverseIndex)) {
-            const gl::Program& program = traverseProgram(out.plan);
-            for (std::size_t i = 0; i < mWork.size(); ++i)
-                traverse(program, scene, input, &mWork[i], mWork[i].gpuIndex, i == 0);
-            for (int li : mBruteLights) traverse(program, scene, input, nullptr, li, false);
-        }
-        out.timing.stages.push_back(clock.end(kStageTraverse));
-        mMarkTraversed = runs(kTraverseIndex) && !mWork.empty();
-    } else {
-        clock.begin();
-    }
-    publishTraverse(out, input);
-    if (mReuse.substepOnly(kTraverseIndex)) out.timing.stages.push_back(clock.end(kStageTraverse));
-    out.airlight = render::readRgb(mAirlight);
-    mReuse.ran(kTraverseIndex, out);
-    out.lastStageRun = kTraverseIndex;
-    if (stop == kTraverseIndex) return out;
+    // stand; only the walk's view is drawn again, and that is the stage's time.
+    const bool walkOnly = stages.substepOnly(kTraverseIndex);
+    const bool toCompose = stages.run(
+        kTraverseIndex,
+        [&] {
+            if (walkOnly) {
+                publishTraverse(out, input);
+                return;
+            }
+            allocateTargets(input.width, input.height);
+            mAirlight.clear(glm::vec4(0.0f));
+            mVisited.clear(glm::vec4(0.0f));
+            mNearMask.clear(glm::vec4(0.0f));
+            mRayCoords.clear(glm::vec4(0.0f));
+            if (runs(kTraverseIndex)) {
+                const gl::Program& program = traverseProgram(out.plan);
+                for (std::size_t i = 0; i < mWork.size(); ++i)
+                    traverse(program, scene, input, &mWork[i], mWork[i].gpuIndex, i == 0);
+                for (int li : mBruteLights) traverse(program, scene, input, nullptr, li, false);
+            }
+        },
+        [&] {
+            if (!walkOnly) {
+                mMarkTraversed = runs(kTraverseIndex) && !mWork.empty();
+                publishTraverse(out, input);
+            }
+            out.airlight = render::readRgb(mAirlight);
+        });
+    if (!toCompose) return out;
 
-    clock.begin();
-    mView.compose(scene, mAirlight, out.intermediates, "minmax");
-    out.timing.stages.push_back(clock.end(mStages[kComposeIndex].id));
-    out.final = mView.readFinal();
-    out.lastStageRun = kComposeIndex;
+    stages.run(kComposeIndex, [&] { mView.compose(scene, mAirlight, out.intermediates, "minmax"); },
+               [&] { out.final = mView.readFinal(); });
     return out;
 }
 

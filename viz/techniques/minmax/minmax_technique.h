@@ -4,6 +4,7 @@
 // files include it; the rest of the program knows minmax through minmax.h.
 #pragma once
 
+#include <array>
 #include <algorithm>
 #include <bit>
 #include <cstdint>
@@ -17,6 +18,7 @@
 
 #include "core/error.h"
 #include "debug/permutations.h"
+#include "debug/stage_runner.h"
 #include "gl/buffer.h"
 #include "gl/program.h"
 #include "gl/stage_clock.h"
@@ -64,14 +66,12 @@ constexpr const char* kPrefixSums = "minmax.prefix_sums";
 constexpr const char* kReconstructionError = "minmax.reconstruction_error";
 constexpr const char* kRowGamma = "minmax.row_gamma";
 
-enum StageIndex {
-    kShadowMapsIndex = 0,
-    kSurfaceIndex = 1,
-    kRectifyIndex = 2,
-    kMipmapIndex = 3,
-    kTraverseIndex = 4,
-    kComposeIndex = 5
-};
+constexpr std::array<std::string_view, 6> kStageOrder = {"minmax.shadow_maps", "minmax.surface", kStageRectify,
+                                                         kStageMipmap, kStageTraverse, "minmax.compose"};
+constexpr int kRectifyIndex = stageIndexOf(kStageOrder, kStageRectify);
+constexpr int kMipmapIndex = stageIndexOf(kStageOrder, kStageMipmap);
+constexpr int kTraverseIndex = stageIndexOf(kStageOrder, kStageTraverse);
+constexpr int kComposeIndex = stageIndexOf(kStageOrder, "minmax.compose");
 
 // Shader permutations of minmax/*.comp: feature -> {define when enabled, define when disabled}.
 inline const PermutationTable kDefines = {

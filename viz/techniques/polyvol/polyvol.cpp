@@ -49,6 +49,7 @@ PolyvolTechnique::PolyvolTechnique() {
          1, "stop_level", "", {kMesh}},
         render::SceneViewPasses::composeStage("polyvol"),
     };
+    checkStageOrder(mStages, kStageOrder);
 }
 
 std::vector<double> PolyvolTechnique::substepValues(int stage, const Settings& s) const {
@@ -199,13 +200,10 @@ FrameOutput PolyvolTechnique::run(const FrameInput& input) {
     const Settings& s = input.settings;
     FrameOutput out;
     out.plan = plan(scene, s);
-    out.timing.clock = gl::StageClock::method();
-    const int stop = input.stopAfterStage < 0 ? kComposeIndex : input.stopAfterStage;
     // The light volume mesh view: as `wireframe` says, or (wireframe=off) from the orbit camera when
     // the caller shows polyvol.mesh, so that the view always has a picture.
     mWireMode = int(s.at("wireframe"));
     if (mWireMode == 0 && std::find(input.views.begin(), input.views.end(), kMesh) != input.views.end()) mWireMode = 3;
-    gl::StageClock clock;
 
     mMarkZfar = scene.camera.zfar;
     mMarkCookieMask = float(s.at("cookie_mask"));
@@ -213,49 +211,50 @@ FrameOutput PolyvolTechnique::run(const FrameInput& input) {
     mAdaptiveLights.clear();
     mMarkKeysRead = false;
 
-    // ---- shadow maps and camera view ----
-    mReuse.begin(input, out);
-    if (!mView.runSharedStages(input, stop, mStages, "polyvol", out, mReuse)) return out;
+    gl::StageClock clock;
+    StageRunner stages(mStages, input, out, mReuse, clock);
+    if (!mView.runSharedStages(stages, input, "polyvol", out)) return out;
 
-    clock.begin();
-    allocateTargets(input.width, input.height);
-    const glm::vec4 zero(0.0f);
-    mTotal.clear(zero);
-    mPositive.clear(zero);
-    mNegative.clear(zero);
-    mCrossings.clear(zero);
     std::int64_t triangles = 0;
     const bool lut = s.at("airlight") != 0.0;
-    if (lut) ensureLut(scene.medium.g);
-    if (out.plan.stages[kVolumeIndex].runs) triangles = drawVolumes(scene, input, out.plan);
-    clampAirlight();
-    out.timing.stages.push_back(clock.end(kStageVolume));
-    publishVolume(out, s, triangles);
-    if (lut) {
-        out.intermediates.push_back(render::textureIntermediate(
-            kLut, "Airlight lookup table",
-            "R: A = tau_h int_{-200}^{-|u|} f, G: B = tau_h e^{|u|+rho} int_{|u|}^inf f; x: asinh(|u| / s), "
-            "s = tau_h / (1 + tau_h) (left edge: the foot point), y: log tau_h (1e-9 .. 200; below: closed "
-            "form), g = " + std::to_string(scene.medium.g) + ", built in " + std::to_string(mLutMs) + " ms",
-            "", ViewKind::Color, 0.0f, 2.0f, mLut));
-        out.intermediates.back().channels = {{"A (near side)", "", ViewKind::Scalar, 0.0f, 2.0f},
-                                             {"B (far side)", "", ViewKind::Scalar, 0.0f, 2.0f}};
-        const float worst = lutError(input);
-        out.intermediates.push_back(render::textureIntermediate(
-            kLutError, "Lookup table error",
-            "|lut - analytic| / analytic of the unshadowed [0, d] per pixel (worst light); max " +
-                std::to_string(worst),
-            "", ViewKind::Scalar, 0.0f, 0.01f, mLutError));
-    }
-    out.lastStageRun = kVolumeIndex;
-    if (stop == kVolumeIndex) return out;
+    const bool more = stages.run(
+        kVolumeIndex,
+        [&] {
+            allocateTargets(input.width, input.height);
+            const glm::vec4 zero(0.0f);
+            mTotal.clear(zero);
+            mPositive.clear(zero);
+            mNegative.clear(zero);
+            mCrossings.clear(zero);
+            if (lut) ensureLut(scene.medium.g);
+            if (out.plan.stages[kVolumeIndex].runs) triangles = drawVolumes(scene, input, out.plan);
+            clampAirlight();
+        },
+        [&] {
+            publishVolume(out, s, triangles);
+            if (lut) publishLut(out, input, scene.medium.g);
+        });
+    if (!more) return out;
 
-    clock.begin();
-    mView.compose(scene, mAirlight, out.intermediates, "polyvol");
-    out.timing.stages.push_back(clock.end(mStages[kComposeIndex].id));
-    out.final = mView.readFinal();
-    out.lastStageRun = kComposeIndex;
+    stages.run(kComposeIndex, [&] { mView.compose(scene, mAirlight, out.intermediates, "polyvol"); },
+               [&] { out.final = mView.readFinal(); });
     return out;
+}
+
+void PolyvolTechnique::publishLut(FrameOutput& out, const FrameInput& input, double g) {
+    out.intermediates.push_back(render::textureIntermediate(
+        kLut, "Airlight lookup table",
+        "R: A = tau_h int_{-200}^{-|u|} f, G: B = tau_h e^{|u|+rho} int_{|u|}^inf f; x: asinh(|u| / s), "
+        "s = tau_h / (1 + tau_h) (left edge: the foot point), y: log tau_h (1e-9 .. 200; below: closed "
+        "form), g = " + std::to_string(g) + ", built in " + std::to_string(mLutMs) + " ms",
+        "", ViewKind::Color, 0.0f, 2.0f, mLut));
+    out.intermediates.back().channels = {{"A (near side)", "", ViewKind::Scalar, 0.0f, 2.0f},
+                                         {"B (far side)", "", ViewKind::Scalar, 0.0f, 2.0f}};
+    const float worst = lutError(input);
+    out.intermediates.push_back(render::textureIntermediate(
+        kLutError, "Lookup table error",
+        "|lut - analytic| / analytic of the unshadowed [0, d] per pixel (worst light); max " + std::to_string(worst),
+        "", ViewKind::Scalar, 0.0f, 0.01f, mLutError));
 }
 
 }  // namespace viz::polyvol_detail

@@ -19,6 +19,7 @@
 #include "gl/buffer.h"
 #include "gl/framebuffer.h"
 #include "debug/permutations.h"
+#include "debug/stage_runner.h"
 #include "gl/program.h"
 #include "gl/readback.h"
 #include "gl/stage_clock.h"
@@ -59,7 +60,10 @@ constexpr const char* kTessLevels = "polyvol.tess_levels";
 // Lookup table size (asinh(|u| / s) x log tau_h samples), built from the double closed form at first use.
 constexpr int kLutWidth = polyvol::AirlightLut::kWidth, kLutHeight = polyvol::AirlightLut::kHeight;
 
-enum StageIndex { kShadowMapsIndex = 0, kSurfaceIndex = 1, kVolumeIndex = 2, kComposeIndex = 3 };
+constexpr std::array<std::string_view, 4> kStageOrder = {"polyvol.shadow_maps", "polyvol.surface", kStageVolume,
+                                                         "polyvol.compose"};
+constexpr int kVolumeIndex = stageIndexOf(kStageOrder, kStageVolume);
+constexpr int kComposeIndex = stageIndexOf(kStageOrder, "polyvol.compose");
 
 using polyvol::kModeCube;
 using polyvol::kModeDirectional;
@@ -188,6 +192,8 @@ private:
     void clampAirlight();
 
     void publishVolume(FrameOutput& out, const Settings& s, std::int64_t triangles);
+    // The airlight lookup table of phase parameter g and its error against the closed form.
+    void publishLut(FrameOutput& out, const FrameInput& input, double g);
 
     struct Extra {
         std::int64_t triangles = 0;

@@ -1,6 +1,7 @@
 #include "techniques/raymarch/raymarch.h"
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <map>
 #include <cmath>
@@ -8,7 +9,10 @@
 #include <string>
 
 #include "core/blue_noise.h"
+#include "core/error.h"
+#include "debug/param_table.h"
 #include "debug/permutations.h"
+#include "debug/stage_runner.h"
 #include "gl/program.h"
 #include "gl/stage_clock.h"
 #include "gl/texture.h"
@@ -28,7 +32,10 @@ constexpr const char* kStageMarch = "raymarch.march";
 constexpr const char* kAirlight = "raymarch.airlight";
 constexpr const char* kLitFraction = "raymarch.lit_fraction";
 
-enum StageIndex { kShadowMapsIndex = 0, kSurfaceIndex = 1, kMarchIndex = 2, kComposeIndex = 3 };
+constexpr std::array<std::string_view, 4> kStageOrder = {"raymarch.shadow_maps", "raymarch.surface", kStageMarch,
+                                                         "raymarch.compose"};
+constexpr int kMarchIndex = stageIndexOf(kStageOrder, kStageMarch);
+constexpr int kComposeIndex = stageIndexOf(kStageOrder, "raymarch.compose");
 
 // llvmpipe stops all loops of one shader invocation after 65,535 iterations in total (measured: a loop
 // of 70,000 runs 65,535 times; nested loops share the count). The march splits its (light, sample)
@@ -52,28 +59,53 @@ const PermutationTable kDefines = {
     {"SHADOW_LOOKUP_MESH", {"SHADOW_LOOKUP_MESH", nullptr}},
 };
 
+enum class Jitter { Off = 0, White = 1, Blue = 2 };
+
+// The settings a run reads, each declared once with its parameter (debug/param_table.h).
+struct MarchSettings {
+    int samples = 0;
+    Jitter jitter = Jitter::Off;
+    bool jitterPerFrame = false;  // jitter_time=per-frame
+    bool exact = false;
+    bool naiveClosedForm = false;  // closed_form=naive
+    unsigned seed = 0;
+    bool meshLookup = false;  // shadow_lookup=mesh
+    int shadowMap = 0, areaSamples = 0;
+    bool forceFeatures = false;
+};
+
+const ParamTable<MarchSettings>& marchParams() {
+    using S = MarchSettings;
+    static const ParamTable<S> table =
+        ParamTable<S>()
+            .add(&S::samples, {"samples", "samples per pixel and light along [0, d]", 64, 1, 65536, true})
+            .add(&S::jitter, {"jitter", "off: interval midpoints; white: a random offset per pixel, sample interval and "
+                              "light; blue: one offset per pixel for all its intervals, from a 64x64 blue-noise tile",
+                              0, 0, 2, true, {"off", "white", "blue"}})
+            .add(&S::jitterPerFrame,
+                 {"jitter_time", "constant: the same offsets every frame (seed fixed); per-frame: new offsets on every "
+                  "frame of an animation (white: the seed advances; blue: the tile's values step by the golden ratio)",
+                  0, 0, 1, true, {"constant", "per-frame"}})
+            .add(&S::exact, {"exact", "1: integrate the unshadowed airlight exactly over each sample's interval", 0, 0, 1,
+                             true})
+            .add(&S::naiveClosedForm,
+                 {"closed_form",
+                  "exact=1, point and spot lights: stable (pointSegment) or naive (teaching only: Sun et al.'s textbook "
+                  "A0 [F(A1, xi1) - F(A1, xi0)], isotropic, fails in thick media)",
+                  0, 0, 1, true, {"stable", "naive"}})
+            .add(&S::seed, {"seed", "jitter seed", 1, 0, 1e9, true})
+            .add(&S::meshLookup, {"shadow_lookup", "nearest: nearest texel with bias; mesh: depth linear across "
+                                  "polyvol's triangles", 0, 0, 1, true, {"nearest", "mesh"}})
+            .add(&S::shadowMap, render::SceneViewPasses::params(), "shadow_map")
+            .add(&S::areaSamples, render::SceneViewPasses::params(), "area_samples")
+            .add(&S::forceFeatures, forceFeaturesParam());
+    VIZ_CHECK(table.missing().empty(), "raymarch declares a shared parameter the shared passes lack");
+    return table;
+}
+
 class RaymarchTechnique final : public Technique {
 public:
     RaymarchTechnique() {
-        mParams = {
-            {"samples", "samples per pixel and light along [0, d]", 64, 1, 65536, true},
-            {"jitter", "off: interval midpoints; white: a random offset per pixel, sample interval and light; "
-             "blue: one offset per pixel for all its intervals, from a 64x64 blue-noise tile",
-             0, 0, 2, true, {"off", "white", "blue"}},
-            {"jitter_time", "constant: the same offsets every frame (seed fixed); per-frame: new offsets on every "
-             "frame of an animation (white: the seed advances; blue: the tile's values step by the golden ratio)",
-             0, 0, 1, true, {"constant", "per-frame"}},
-            {"exact", "1: integrate the unshadowed airlight exactly over each sample's interval", 0, 0, 1, true},
-            {"closed_form",
-             "exact=1, point and spot lights: stable (pointSegment) or naive (teaching only: Sun et al.'s textbook "
-             "A0 [F(A1, xi1) - F(A1, xi0)], isotropic, fails in thick media)",
-             0, 0, 1, true, {"stable", "naive"}},
-            {"seed", "jitter seed", 1, 0, 1e9, true},
-            {"shadow_lookup", "nearest: nearest texel with bias; mesh: depth linear across polyvol's triangles",
-             0, 0, 1, true, {"nearest", "mesh"}},
-        };
-        for (ParamInfo& p : render::SceneViewPasses::params()) mParams.push_back(std::move(p));
-        mParams.push_back(forceFeaturesParam());
         mStages = {
             render::SceneViewPasses::shadowStage("raymarch"),
             render::SceneViewPasses::surfaceStage("raymarch"),
@@ -81,6 +113,7 @@ public:
              {"samples", "jitter", "jitter_time", "exact", "closed_form", "seed", "shadow_lookup", "force_features"}, {kAirlight, kLitFraction}, 1},
             render::SceneViewPasses::composeStage("raymarch"),
         };
+        checkStageOrder(mStages, kStageOrder);
     }
 
     std::string id() const override { return "raymarch"; }
@@ -88,7 +121,7 @@ public:
         return "brute-force ray marching through shadow maps (N samples per pixel)";
     }
     const std::vector<StageInfo>& stages() const override { return mStages; }
-    const std::vector<ParamInfo>& params() const override { return mParams; }
+    const std::vector<ParamInfo>& params() const override { return marchParams().infos(); }
     bool needsGl() const override { return true; }
 
     // Samples per ray: the brute-force curve every other technique's speed-up is read against, so it
@@ -159,24 +192,24 @@ public:
         const bool hasSpot = render::hasLightOfType(scene, scene::LightType::Spot);
         const bool hasCookie = std::any_of(scene.lights.begin(), scene.lights.end(),
                                            [](const scene::Light& l) { return l.cookie >= 0; });
-        const bool exact = settings.at("exact") != 0.0;
-        const int jitterMode = int(settings.at("jitter"));
-        const bool jitter = jitterMode != 0;
-        const int area = int(settings.at("area_samples"));
+        const MarchSettings m = marchParams().read(settings);
+        const bool exact = m.exact;
+        const bool jitter = m.jitter != Jitter::Off;
+        const bool blue = m.jitter == Jitter::Blue;
+        const int area = m.areaSamples;
         p.features.push_back({"EXACT", exact,
                               exact ? "analytic unshadowed segment per sample interval (airlight.glsl pointSegment)"
                                     : "exact=0: midpoint rule of the integrand"});
         // Teaching mode only (lesson 1): never in qualitySweep() or stiffSettings(), off by default.
-        const bool naive = exact && settings.at("closed_form") != 0.0;
+        const bool naive = exact && m.naiveClosedForm;
         p.features.push_back({"NAIVE_CLOSED_FORM", naive,
                               naive ? "TEACHING MODE, wrong on purpose: Sun et al.'s closed form evaluated as printed "
                                       "(isotropic; cancels and overflows in thick media, NaN on a ray through the light)"
                                     : "closed_form=stable (or exact=0): the stable anchored form of airlight.glsl"});
         p.features.push_back({"JITTER", jitter, jitter ? "stratified offsets" : "jitter=off: interval midpoints"});
-        const bool perFrame = settings.at("jitter_time") != 0.0;
-        p.features.push_back({"JITTER_BLUE", jitterMode == 2,
-                              jitterMode == 2 ? std::string("one blue-noise offset per pixel") +
-                                                    (perFrame ? ", stepped every frame" : ", the same every frame")
+        p.features.push_back({"JITTER_BLUE", blue,
+                              blue ? std::string("one blue-noise offset per pixel") +
+                                         (m.jitterPerFrame ? ", stepped every frame" : ", the same every frame")
                                               : "jitter=" + std::string(jitter ? "white" : "off") + ": no blue-noise tile"});
         p.features.push_back({"SPOT", hasSpot, hasSpot ? "spot falloff A_spot" : "no spot light in the scene"});
         p.features.push_back({"COOKIE", hasCookie, hasCookie ? "cookie texture" : "no light has a cookie"});
@@ -200,20 +233,19 @@ public:
             std::int64_t lights = 0;
             for (const scene::Light& l : scene.lights)
                 if (render::lightReachesView(l, scene.camera)) lights += l.type == scene::LightType::Area ? area * area : 1;
-            const std::int64_t pairs = lights * std::int64_t(settings.at("samples"));
-            const std::int64_t chunk = pairsPerDispatch(settings);
+            const std::int64_t pairs = lights * std::int64_t(m.samples);
+            const std::int64_t chunk = pairsPerDispatch(m);
             const std::int64_t dispatches = std::max<std::int64_t>(1, (pairs + chunk - 1) / chunk);
             p.features.push_back({"SPLIT_DISPATCHES", dispatches > 1,
                                   std::to_string(pairs) + " (light, sample) pairs per pixel in " + std::to_string(dispatches) +
                                       " dispatch(es) of at most " + std::to_string(chunk) +
                                       ": llvmpipe stops an invocation's loops after 65,535 iterations"});
         }
-        const bool meshLookup = settings.at("shadow_lookup") != 0.0;
-        p.features.push_back({"SHADOW_LOOKUP_MESH", meshLookup,
-                              meshLookup ? "shadow_lookup=mesh: 2D maps read as polyvol's light volume mesh"
+        p.features.push_back({"SHADOW_LOOKUP_MESH", m.meshLookup,
+                              m.meshLookup ? "shadow_lookup=mesh: 2D maps read as polyvol's light volume mesh"
                                          : "shadow_lookup=nearest: nearest texel with bias"});
         render::planCulledLights(scene, p);
-        forcePlan(p, settings.at("force_features") != 0.0, {"SPOT", "COOKIE", "SHADOW_MAPS_CUBE", "SHADOW_MAPS_2D"});
+        forcePlan(p, m.forceFeatures, {"SPOT", "COOKIE", "SHADOW_MAPS_CUBE", "SHADOW_MAPS_2D"});
         annotatePermutations(p, kDefines);
         return p;
     }
@@ -223,41 +255,36 @@ public:
         const Settings& s = input.settings;
         FrameOutput out;
         out.plan = plan(scene, s);
-        out.timing.clock = gl::StageClock::method();
-        const int stop = input.stopAfterStage < 0 ? kComposeIndex : input.stopAfterStage;
         gl::StageClock clock;
+        StageRunner stages(mStages, input, out, mReuse, clock);
+        if (!mView.runSharedStages(stages, input, "raymarch", out)) return out;
 
-        // ---- shadow maps and camera view ----
-        mReuse.begin(input, out);
-        if (!mView.runSharedStages(input, stop, mStages, "raymarch", out, mReuse)) return out;
+        const bool more = stages.run(
+            kMarchIndex,
+            [&] {
+                allocateTargets(input.width, input.height);
+                if (out.plan.stages[kMarchIndex].runs) {
+                    const gl::Program& program = marchProgram(out.plan);
+                    march(program, scene, input);
+                } else {
+                    mAirlight.clear(glm::vec4(0.0f));
+                    mLitFraction.clear(glm::vec4(0.0f));
+                }
+            },
+            [&] {
+                out.intermediates.push_back(render::textureIntermediate(
+                    kAirlight, "L_air",
+                    "single-scattered light reaching the eye (the quantity every technique computes)", "radiance",
+                    ViewKind::Color, 0.0f, 1.0f, mAirlight));
+                out.intermediates.push_back(render::textureIntermediate(
+                    kLitFraction, "Lit fraction", "fraction of the ray samples that the shadow maps call lit", "",
+                    ViewKind::Scalar, 0.0f, 1.0f, mLitFraction));
+                out.airlight = render::readRgb(mAirlight);
+            });
+        if (!more) return out;
 
-        // ---- ray march ----
-        clock.begin();
-        allocateTargets(input.width, input.height);
-        if (out.plan.stages[kMarchIndex].runs) {
-            const gl::Program& program = marchProgram(out.plan);
-            march(program, scene, input);
-        } else {
-            mAirlight.clear(glm::vec4(0.0f));
-            mLitFraction.clear(glm::vec4(0.0f));
-        }
-        out.timing.stages.push_back(clock.end(kStageMarch));
-        out.intermediates.push_back(render::textureIntermediate(
-            kAirlight, "L_air", "single-scattered light reaching the eye (the quantity every technique computes)",
-            "radiance", ViewKind::Color, 0.0f, 1.0f, mAirlight));
-        out.intermediates.push_back(render::textureIntermediate(
-            kLitFraction, "Lit fraction", "fraction of the ray samples that the shadow maps call lit", "",
-            ViewKind::Scalar, 0.0f, 1.0f, mLitFraction));
-        out.airlight = render::readRgb(mAirlight);
-        out.lastStageRun = kMarchIndex;
-        if (stop == kMarchIndex) return out;
-
-        // ---- compose ----
-        clock.begin();
-        mView.compose(scene, mAirlight, out.intermediates, "raymarch");
-        out.timing.stages.push_back(clock.end(mStages[kComposeIndex].id));
-        out.final = mView.readFinal();
-        out.lastStageRun = kComposeIndex;
+        stages.run(kComposeIndex, [&] { mView.compose(scene, mAirlight, out.intermediates, "raymarch"); },
+                   [&] { out.final = mView.readFinal(); });
         return out;
     }
 
@@ -295,27 +322,26 @@ private:
 
     void march(const gl::Program& program, const scene::Scene& scene, const FrameInput& input) {
         const scene::Camera& cam = scene.camera;
-        const Settings& s = input.settings;
+        const MarchSettings s = marchParams().read(input.settings);
         program.use();
         render::bindCameraRay(program, cam, input.width, input.height);
-        program.set("uSamples", int(s.at("samples")));
+        program.set("uSamples", s.samples);
         program.set("uLightCount", mView.lights().count());
         mMedium.bind(scene.medium);
         // jitter_time=per-frame: frame f draws new offsets (white: the seed moves by a large odd step; blue:
         // each pixel's offset moves by f times the golden ratio, modulo 1, a low-discrepancy walk in time
         // that keeps every frame's offsets a blue-noise pattern).
-        const bool perFrame = s.at("jitter_time") != 0.0;
-        const unsigned frame = perFrame ? unsigned(std::max(0, input.frame)) : 0u;
-        program.set("uSeed", unsigned(s.at("seed")) + frame * 0x9E3779B1u);
+        const unsigned frame = s.jitterPerFrame ? unsigned(std::max(0, input.frame)) : 0u;
+        program.set("uSeed", s.seed + frame * 0x9E3779B1u);
         program.set("uBlueShift", float(std::fmod(double(frame) * 0.6180339887498949, 1.0)));
-        if (int(s.at("jitter")) == 2) blueNoiseTexture().bindUnit(render::hd::kFirstFreeTextureUnit + 1);
+        if (s.jitter == Jitter::Blue) blueNoiseTexture().bindUnit(render::hd::kFirstFreeTextureUnit + 1);
         mView.lights().bind();
         mView.shadows().bind();
         mView.surface().distance().bindUnit(render::hd::kFirstFreeTextureUnit);
         mAirlight.bindImage(0, GL_READ_WRITE);
         mLitFraction.bindImage(1, GL_READ_WRITE);
         const glm::ivec3 groups = gl::groupCount({input.width, input.height, 1}, program.workGroupSize());
-        const std::int64_t pairs = std::int64_t(mView.lights().count()) * std::int64_t(s.at("samples"));
+        const std::int64_t pairs = std::int64_t(mView.lights().count()) * std::int64_t(s.samples);
         const std::int64_t chunk = pairsPerDispatch(s);
         for (std::int64_t begin = 0; begin == 0 || begin < pairs; begin += chunk) {
             const std::int64_t end = std::min(pairs, begin + chunk);
@@ -342,14 +368,13 @@ private:
     }
     static constexpr int kBlueNoiseSize = 64;  // shaders/raymarch/march.comp masks pixel coordinates with 63
 
-    std::vector<ParamInfo> mParams;
     std::vector<StageInfo> mStages;
     gl::Texture mBlueNoise;
     render::SceneViewPasses mView;
     render::MediumBlock mMedium;  // sigma_s, sigma_t, g for the shaders (common/medium.glsl)
     StageReuse mReuse;  // stages carried over from the last run (FrameInput::resumeAtStage)
-    static std::int64_t pairsPerDispatch(const Settings& s) {
-        return s.at("exact") != 0.0 ? kPairsPerDispatchExact : kPairsPerDispatchPlain;
+    static std::int64_t pairsPerDispatch(const MarchSettings& s) {
+        return s.exact ? kPairsPerDispatchExact : kPairsPerDispatchPlain;
     }
 
     std::map<std::string, gl::Program> mMarchPrograms;  // by permutation key

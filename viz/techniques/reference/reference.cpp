@@ -1,10 +1,14 @@
 #include "techniques/reference/reference.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <optional>
 #include <sstream>
+#include <string_view>
 
 #include "core/error.h"
+#include "debug/stage_runner.h"
 #include "scene/camera.h"
 #include "scene/scene_source.h"
 #include "techniques/reference/emitters.h"
@@ -48,7 +52,13 @@ constexpr const char* kParamAreaSamples = "area_samples";
 constexpr const char* kParamThreads = "threads";
 constexpr const char* kParamCache = "cache";
 
-enum StageIndex { kTrace = 0, kVisibility = 1, kAirlightStage = 2, kSurfaceStage = 3, kFinalStage = 4 };
+constexpr std::array<std::string_view, 5> kStageOrder = {kStageTrace, kStageVisibility, kStageAirlight, kStageSurface,
+                                                         kStageFinal};
+constexpr int kTrace = stageIndexOf(kStageOrder, kStageTrace);
+constexpr int kVisibility = stageIndexOf(kStageOrder, kStageVisibility);
+constexpr int kAirlightStage = stageIndexOf(kStageOrder, kStageAirlight);
+constexpr int kSurfaceStage = stageIndexOf(kStageOrder, kStageSurface);
+constexpr int kFinalStage = stageIndexOf(kStageOrder, kStageFinal);
 
 double setting(const Settings& s, const char* name, double fallback) {
     const auto it = s.find(name);
@@ -195,6 +205,7 @@ public:
              {kParamAreaSamples}, {kSurface}, 1},
             {kStageFinal, "Compose", "final = surface * exp(-sigma_t d) + L_air", {}, {kFinal}, 1},
         };
+        checkStageOrder(mStages, kStageOrder);
     }
 
     std::string id() const override { return "reference"; }
@@ -280,7 +291,7 @@ public:
             }
         }
 
-        FrameOutput out = compute(input, stopAfter);
+        FrameOutput out = compute(input);
         if (useCache) {
             reference::CachedImages c;
             c.width = input.width;
@@ -376,105 +387,113 @@ private:
         return true;
     }
 
-    FrameOutput compute(const FrameInput& input, int stopAfter) const {
+    FrameOutput compute(const FrameInput& input) const {
         const scene::Scene& scene = *input.scene;
         FrameOutput out;
         out.plan = plan(scene, input.settings);
-        out.timing.clock = "steady_clock";
         const int threads = int(setting(input.settings, kParamThreads, 0));
         const int samples = int(setting(input.settings, kParamTransitionSamples, 256));
         const int areaSamples = int(setting(input.settings, kParamAreaSamples, 8));
         reference::ProgressBar progress(reference::stderrIsTerminal());
-
         FrameState f;
         f.width = input.width;
         f.height = input.height;
         f.scene = &scene;
         f.medium = {scene.medium.sigma_s, scene.medium.sigma_t(), scene.medium.g};
         const std::size_t n = std::size_t(f.width) * std::size_t(f.height);
+        const glm::dvec3 eye = scene.camera.position;
+
+        CpuStageClock clock;
+        StageReuse reuse;  // the reference keeps nothing between runs
+        StageRunner stages(mStages, input, out, reuse, clock);
+        const auto stopped = [&]() -> FrameOutput& { return finishRun(out, f, scene, stages.stop(), progress); };
 
         // ---- stage 0: primary hits ----
-        CpuStopwatch watch;
-        const RayTracer tracer(scene);
-        const PreparedLights lights = PreparedLights::build(scene, areaSamples);
-        const glm::dvec3 eye = scene.camera.position;
-        f.hits.resize(n);
-        f.distance.assign(n, scene.camera.zfar);
-        f.distanceImage = Image(f.width, f.height, 1);
-        reference::parallelRows(f.height, threads, [&](int y) {
-            for (int x = 0; x < f.width; ++x) {
-                const std::size_t i = f.pixel(x, y);
-                f.hits[i] = tracer.intersect(eye, eyeRay(f, x, y), scene.camera.zfar);
-                f.distance[i] = f.hits[i].found ? std::min(f.hits[i].t, scene.camera.zfar) : scene.camera.zfar;
-                f.distanceImage.at(x, y) = float(f.distance[i]);
-            }
-        }, &progress, kStageTrace);
-        out.timing.stages.push_back({kStageTrace, watch.elapsedMilliseconds()});
-        if (stopAfter == kTrace) return finishRun(out, f, scene, stopAfter, progress);
-
-        // ---- stage 1: visibility transitions ----
-        watch = CpuStopwatch();
-        f.lit.assign(n, {});
-        f.transitions = Image(f.width, f.height, 1);
-        f.litFraction = Image(f.width, f.height, 1);
-        reference::parallelRows(f.height, threads, [&](int y) {
-            for (int x = 0; x < f.width; ++x) {
-                const std::size_t i = f.pixel(x, y);
-                const double d = f.distance[i];
-                auto& list = f.lit[i];
-                list = reference::rayVisibility(tracer, lights, eye, eyeRay(f, x, y), d, samples);
-                int transitions = 0;
-                for (const VisibilitySearch& v : list) transitions += v.transitions;
-                f.transitions.at(x, y) = float(transitions);
-                f.litFraction.at(x, y) = float(litFraction(list, lights, d));
-            }
-        }, &progress, kStageVisibility);
-        out.timing.stages.push_back({kStageVisibility, watch.elapsedMilliseconds()});
-        if (stopAfter == kVisibility) return finishRun(out, f, scene, stopAfter, progress);
-
-        // ---- stage 2: airlight ----
-        watch = CpuStopwatch();
-        f.airlight = Image(f.width, f.height, 3);
-        if (f.medium.sigma_s != 0.0) {
+        // Embree's scene and the lights' sampling are built in the first stage (their cost is its cost).
+        std::optional<RayTracer> builtTracer;
+        std::optional<PreparedLights> builtLights;
+        if (!stages.run(kTrace, [&] {
+            const RayTracer& tracer = builtTracer.emplace(scene);
+            builtLights.emplace(PreparedLights::build(scene, areaSamples));
+            f.hits.resize(n);
+            f.distance.assign(n, scene.camera.zfar);
+            f.distanceImage = Image(f.width, f.height, 1);
             reference::parallelRows(f.height, threads, [&](int y) {
                 for (int x = 0; x < f.width; ++x) {
                     const std::size_t i = f.pixel(x, y);
-                    const glm::dvec3 w = eyeRay(f, x, y);
-                    const glm::dvec3 L = reference::rayAirlight(lights, eye, w, f.lit[i], f.medium);
-                    for (int c = 0; c < 3; ++c) f.airlight.at(x, y, c) = float(L[c]);
+                    f.hits[i] = tracer.intersect(eye, eyeRay(f, x, y), scene.camera.zfar);
+                    f.distance[i] = f.hits[i].found ? std::min(f.hits[i].t, scene.camera.zfar) : scene.camera.zfar;
+                    f.distanceImage.at(x, y) = float(f.distance[i]);
                 }
-            }, &progress, kStageAirlight);
-        }
-        out.timing.stages.push_back({kStageAirlight, watch.elapsedMilliseconds()});
-        if (stopAfter == kAirlightStage) return finishRun(out, f, scene, stopAfter, progress);
+            }, &progress, kStageTrace);
+        }))
+            return stopped();
+        const RayTracer& tracer = *builtTracer;
+        const PreparedLights& lights = *builtLights;
+
+        // ---- stage 1: visibility transitions ----
+        if (!stages.run(kVisibility, [&] {
+            f.lit.assign(n, {});
+            f.transitions = Image(f.width, f.height, 1);
+            f.litFraction = Image(f.width, f.height, 1);
+            reference::parallelRows(f.height, threads, [&](int y) {
+                for (int x = 0; x < f.width; ++x) {
+                    const std::size_t i = f.pixel(x, y);
+                    const double d = f.distance[i];
+                    auto& list = f.lit[i];
+                    list = reference::rayVisibility(tracer, lights, eye, eyeRay(f, x, y), d, samples);
+                    int transitions = 0;
+                    for (const VisibilitySearch& v : list) transitions += v.transitions;
+                    f.transitions.at(x, y) = float(transitions);
+                    f.litFraction.at(x, y) = float(litFraction(list, lights, d));
+                }
+            }, &progress, kStageVisibility);
+        }))
+            return stopped();
+
+        // ---- stage 2: airlight ----
+        if (!stages.run(kAirlightStage, [&] {
+            f.airlight = Image(f.width, f.height, 3);
+            if (f.medium.sigma_s != 0.0) {
+                reference::parallelRows(f.height, threads, [&](int y) {
+                    for (int x = 0; x < f.width; ++x) {
+                        const std::size_t i = f.pixel(x, y);
+                        const glm::dvec3 w = eyeRay(f, x, y);
+                        const glm::dvec3 L = reference::rayAirlight(lights, eye, w, f.lit[i], f.medium);
+                        for (int c = 0; c < 3; ++c) f.airlight.at(x, y, c) = float(L[c]);
+                    }
+                }, &progress, kStageAirlight);
+            }
+        }))
+            return stopped();
 
         // ---- stage 3: surface radiance ----
-        watch = CpuStopwatch();
-        f.surface = Image(f.width, f.height, 3);
-        reference::parallelRows(f.height, threads, [&](int y) {
-            for (int x = 0; x < f.width; ++x) {
-                const Hit& hit = f.hits[f.pixel(x, y)];
-                // Sky (and surfaces beyond zfar) have surface radiance 0.
-                if (!hit.found || hit.t > scene.camera.zfar) continue;
-                const glm::dvec3 Ls = shadeSurface(scene, lights, tracer, f.medium, hit, eye, eyeRay(f, x, y));
-                for (int c = 0; c < 3; ++c) f.surface.at(x, y, c) = float(Ls[c]);
-            }
-        }, &progress, kStageSurface);
-        out.timing.stages.push_back({kStageSurface, watch.elapsedMilliseconds()});
-        if (stopAfter == kSurfaceStage) return finishRun(out, f, scene, stopAfter, progress);
+        if (!stages.run(kSurfaceStage, [&] {
+            f.surface = Image(f.width, f.height, 3);
+            reference::parallelRows(f.height, threads, [&](int y) {
+                for (int x = 0; x < f.width; ++x) {
+                    const Hit& hit = f.hits[f.pixel(x, y)];
+                    // Sky (and surfaces beyond zfar) have surface radiance 0.
+                    if (!hit.found || hit.t > scene.camera.zfar) continue;
+                    const glm::dvec3 Ls = shadeSurface(scene, lights, tracer, f.medium, hit, eye, eyeRay(f, x, y));
+                    for (int c = 0; c < 3; ++c) f.surface.at(x, y, c) = float(Ls[c]);
+                }
+            }, &progress, kStageSurface);
+        }))
+            return stopped();
 
         // ---- stage 4: compose ----
-        watch = CpuStopwatch();
-        f.final = Image(f.width, f.height, 3);
-        for (int y = 0; y < f.height; ++y) {
-            for (int x = 0; x < f.width; ++x) {
-                const double T = std::exp(-f.medium.sigma_t * f.distance[f.pixel(x, y)]);
-                for (int c = 0; c < 3; ++c)
-                    f.final.at(x, y, c) = float(double(f.surface.at(x, y, c)) * T + double(f.airlight.at(x, y, c)));
+        stages.run(kFinalStage, [&] {
+            f.final = Image(f.width, f.height, 3);
+            for (int y = 0; y < f.height; ++y) {
+                for (int x = 0; x < f.width; ++x) {
+                    const double T = std::exp(-f.medium.sigma_t * f.distance[f.pixel(x, y)]);
+                    for (int c = 0; c < 3; ++c)
+                        f.final.at(x, y, c) = float(double(f.surface.at(x, y, c)) * T + double(f.airlight.at(x, y, c)));
+                }
             }
-        }
-        out.timing.stages.push_back({kStageFinal, watch.elapsedMilliseconds()});
-        return finishRun(out, f, scene, stopAfter, progress);
+        });
+        return stopped();
     }
 
     FrameOutput& finishRun(FrameOutput& out, const FrameState& f, const scene::Scene& scene, int stopAfter,

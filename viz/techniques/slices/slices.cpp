@@ -107,6 +107,7 @@ SlicesTechnique::SlicesTechnique() {
          {"blur"}, {kAirlight}, 1},
         render::SceneViewPasses::composeStage("slices"),
     };
+    checkStageOrder(mStages, kStageOrder);
 }
 
 std::vector<StabilisingOption> SlicesTechnique::stabilisingOptions(const scene::Scene& scene) const {
@@ -246,171 +247,158 @@ FrameOutput SlicesTechnique::run(const FrameInput& input) {
     const Settings& s = input.settings;
     FrameOutput out;
     out.plan = plan(scene, s);
-    out.timing.clock = gl::StageClock::method();
-    const int stop = input.stopAfterStage < 0 ? kComposeIndex : input.stopAfterStage;
     gl::StageClock clock;
+    StageRunner stages(mStages, input, out, mReuse, clock);
 
-    // ---- shadow maps ----
-    mReuse.begin(input, out);
-    if (mReuse.carries(kShadowMapsIndex)) {
-        mReuse.carry(kShadowMapsIndex, out);
-    } else {
-        clock.begin();
-        if (!mTriangle) {
-            mTriangle = std::make_unique<render::FullscreenTriangle>();
-            mVao = gl::VertexArray::create("slices.planes_vao");
-            mFramebuffer = gl::Framebuffer::create("slices.fbo");
-            mCounters = gl::Buffer::create({.bytes = 8, .label = "slices.fragment_counters"});
-            const std::vector<std::uint8_t> noise = makeNoise(kNoiseSize);
-            mNoise = gl::Texture::create(
-                {.target = GL_TEXTURE_2D, .format = GL_RG8, .size = {kNoiseSize, kNoiseSize, 1}, .label = kNoise});
-            mNoise.upload(GL_RG, GL_UNSIGNED_BYTE, noise.data());
-            mNoise.setFilter(GL_LINEAR, GL_LINEAR);
-            mNoise.setWrap(GL_REPEAT);
-        }
-        mView.buildShadows(scene, s, out.intermediates, "slices");
-        out.timing.stages.push_back(clock.end(mStages[kShadowMapsIndex].id));
-        out.intermediates.push_back(render::textureIntermediate(kCookies, "Cookies", "spot cookie textures (sRGB bytes), one layer per cookie", "",
-                                                        ViewKind::Color, 0.0f, 1.0f, mView.lights().cookies()));
-        out.intermediates.push_back(render::textureIntermediate(
-            kNoise, "Noise", "two tileable value-noise layers (r, g), generated, projected from the light", "",
-            ViewKind::Color, 0.0f, 1.0f, mNoise));
-        mReuse.ran(kShadowMapsIndex, out);
-    }
-    out.lastStageRun = kShadowMapsIndex;
-    if (stop == kShadowMapsIndex) return out;
-
-    // ---- camera view ----
-    if (mReuse.carries(kSurfaceIndex)) {
-        mReuse.carry(kSurfaceIndex, out);
-    } else {
-        clock.begin();
-        mView.renderSurface(scene, input.width, input.height, out.intermediates, "slices");
-        out.timing.stages.push_back(clock.end(mStages[kSurfaceIndex].id));
-        mReuse.ran(kSurfaceIndex, out);
-    }
-    out.lastStageRun = kSurfaceIndex;
-    if (stop == kSurfaceIndex) return out;
+    const bool toSurface = stages.run(
+        kShadowMapsIndex,
+        [&] {
+            if (!mTriangle) {
+                mTriangle = std::make_unique<render::FullscreenTriangle>();
+                mVao = gl::VertexArray::create("slices.planes_vao");
+                mFramebuffer = gl::Framebuffer::create("slices.fbo");
+                mCounters = gl::Buffer::create({.bytes = 8, .label = "slices.fragment_counters"});
+                const std::vector<std::uint8_t> noise = makeNoise(kNoiseSize);
+                mNoise = gl::Texture::create({.target = GL_TEXTURE_2D, .format = GL_RG8,
+                                              .size = {kNoiseSize, kNoiseSize, 1}, .label = kNoise});
+                mNoise.upload(GL_RG, GL_UNSIGNED_BYTE, noise.data());
+                mNoise.setFilter(GL_LINEAR, GL_LINEAR);
+                mNoise.setWrap(GL_REPEAT);
+            }
+            mView.buildShadows(scene, s, out.intermediates, "slices");
+        },
+        [&] {
+            out.intermediates.push_back(render::textureIntermediate(
+                kCookies, "Cookies", "spot cookie textures (sRGB bytes), one layer per cookie", "",
+                ViewKind::Color, 0.0f, 1.0f, mView.lights().cookies()));
+            out.intermediates.push_back(render::textureIntermediate(
+                kNoise, "Noise", "two tileable value-noise layers (r, g), generated, projected from the light", "",
+                ViewKind::Color, 0.0f, 1.0f, mNoise));
+        });
+    if (!toSurface) return out;
+    if (!stages.run(kSurfaceIndex,
+                    [&] { mView.renderSurface(scene, input.width, input.height, out.intermediates, "slices"); }))
+        return out;
 
     // ---- sampling planes ----
-    clock.begin();
-    const Terms t = terms(scene, s);
-    allocateTargets(input.width, input.height, SlicesAccum(int(s.at("accum"))));
-    const float zero[4] = {0, 0, 0, 0};
-    glClearTexImage(mAccum.id(), 0, GL_RGBA, GL_FLOAT, zero);
-    glClearTexImage(mPlane.id(), 0, GL_RGBA, GL_FLOAT, zero);
-    mCounters.clearZero();
-    mQueryCounts[0] = mQueryCounts[1] = 0.0;
-    mPlanesUsed.clear();
-    mPolygons.clear();
-    mRayPlanes.reset();
-    if (out.plan.stages[kPlanesIndex].runs) drawPlanes(scene, input, t);
-    out.timing.stages.push_back(clock.end(kStagePlanes));
-    const int n = mPlanesUsed.empty() ? int(s.at("planes")) : mPlanesUsed.front();
-    const int drawnLimit = int(substepLimit(input, kPlanesIndex));
-    const int drawn = drawnLimit > 0 ? std::min(n, drawnLimit) : n;
-    out.intermediates.push_back(render::textureIntermediate(
-        kAccum, "Accumulation after " + std::to_string(drawn) + " of " + std::to_string(n) + " planes",
-        t.mask ? "plane i added to channel i mod 4 (r, g, b, a), times the store scale"
-               : "sum of the planes drawn so far (back to front), times the store scale",
-        "stored value", ViewKind::Color, 0.0f, 1.0f, mAccum));
-    out.intermediates.push_back(render::textureIntermediate(
-        kPlane, "Plane " + std::to_string(drawn), "the last plane drawn alone (every light), float",
-        "stored value", ViewKind::Color, 0.0f, 0.05f, mPlane));
-    out.intermediates.push_back(polygonIntermediate());
-    if (s.at("mesh_view") != 0.0) {
-        mMeshView.begin(scene, mView.gpuScene(), {s.at("mesh_yaw"), s.at("mesh_pitch"), s.at("mesh_zoom")},
-                        input.width, input.height);
-        // Each drawn plane's outline, far planes dim and near ones bright (the drawing order).
-        const std::size_t count = mPolygons.size();
-        for (std::size_t row = 0; row < count; ++row) {
-            const auto& polygon = mPolygons[row];
-            std::vector<glm::vec3> edges;
-            for (std::size_t v = 0; v < polygon.size(); ++v) {
-                edges.push_back(glm::vec3(polygon[v]));
-                edges.push_back(glm::vec3(polygon[(v + 1) % polygon.size()]));
+    Terms t;
+    const bool toResolve = stages.run(
+        kPlanesIndex,
+        [&] {
+            t = terms(scene, s);
+            allocateTargets(input.width, input.height, SlicesAccum(int(s.at("accum"))));
+            const float zero[4] = {0, 0, 0, 0};
+            glClearTexImage(mAccum.id(), 0, GL_RGBA, GL_FLOAT, zero);
+            glClearTexImage(mPlane.id(), 0, GL_RGBA, GL_FLOAT, zero);
+            mCounters.clearZero();
+            mQueryCounts[0] = mQueryCounts[1] = 0.0;
+            mPlanesUsed.clear();
+            mPolygons.clear();
+            mRayPlanes.reset();
+            if (out.plan.stages[kPlanesIndex].runs) drawPlanes(scene, input, t);
+        },
+        [&] {
+            const int n = mPlanesUsed.empty() ? int(s.at("planes")) : mPlanesUsed.front();
+            const int drawnLimit = int(substepLimit(input, kPlanesIndex));
+            const int drawn = drawnLimit > 0 ? std::min(n, drawnLimit) : n;
+            out.intermediates.push_back(render::textureIntermediate(
+                kAccum, "Accumulation after " + std::to_string(drawn) + " of " + std::to_string(n) + " planes",
+                t.mask ? "plane i added to channel i mod 4 (r, g, b, a), times the store scale"
+                       : "sum of the planes drawn so far (back to front), times the store scale",
+                "stored value", ViewKind::Color, 0.0f, 1.0f, mAccum));
+            out.intermediates.push_back(render::textureIntermediate(
+                kPlane, "Plane " + std::to_string(drawn), "the last plane drawn alone (every light), float",
+                "stored value", ViewKind::Color, 0.0f, 0.05f, mPlane));
+            out.intermediates.push_back(polygonIntermediate());
+            if (s.at("mesh_view") != 0.0) {
+                mMeshView.begin(scene, mView.gpuScene(), {s.at("mesh_yaw"), s.at("mesh_pitch"), s.at("mesh_zoom")},
+                                input.width, input.height);
+                // Each drawn plane's outline, far planes dim and near ones bright (the drawing order).
+                const std::size_t count = mPolygons.size();
+                for (std::size_t row = 0; row < count; ++row) {
+                    const auto& polygon = mPolygons[row];
+                    std::vector<glm::vec3> edges;
+                    for (std::size_t v = 0; v < polygon.size(); ++v) {
+                        edges.push_back(glm::vec3(polygon[v]));
+                        edges.push_back(glm::vec3(polygon[(v + 1) % polygon.size()]));
+                    }
+                    const float near = count > 1 ? float(row) / float(count - 1) : 1.0f;
+                    mMeshView.lines(edges, glm::vec4(0.25f + 0.75f * near, 0.45f + 0.4f * near, 0.2f, 1.0f));
+                }
+                gl::Framebuffer::bindDefault();
+                Intermediate view = render::textureIntermediate(
+                    kPlaneView, "Sampling planes (orbit view)",
+                    "the drawn planes' outlines (far dim, near bright) with the scene, the camera frustum (blue) and the "
+                    "lights (yellow); mesh_yaw, mesh_pitch, mesh_zoom move the camera",
+                    "", ViewKind::Color, 0.0f, 1.0f, mMeshView.texture());
+                view.orbit = true;  // the window turns it by dragging
+                view.picture = true;
+                out.intermediates.push_back(std::move(view));
             }
-            const float near = count > 1 ? float(row) / float(count - 1) : 1.0f;
-            mMeshView.lines(edges, glm::vec4(0.25f + 0.75f * near, 0.45f + 0.4f * near, 0.2f, 1.0f));
-        }
-        gl::Framebuffer::bindDefault();
-        Intermediate view = render::textureIntermediate(
-            kPlaneView, "Sampling planes (orbit view)",
-            "the drawn planes' outlines (far dim, near bright) with the scene, the camera frustum (blue) and the "
-            "lights (yellow); mesh_yaw, mesh_pitch, mesh_zoom move the camera",
-            "", ViewKind::Color, 0.0f, 1.0f, mMeshView.texture());
-        view.orbit = true;  // the window turns it by dragging
-        view.picture = true;
-        out.intermediates.push_back(std::move(view));
-    }
-    if (mRayPlanes) {
-        Intermediate i;
-        i.id = kRayPlanes;
-        i.label = "Planes along pixel (" + std::to_string(mPickPixel.x) + ", " + std::to_string(mPickPixel.y) +
-                  ")'s ray";
-        i.note = "one row per plane drawn (sets of lights in turn, back to front); columns of rgba: 0 (plane i, "
-                 "view depth s, t, dt), 1 (status: 1 added, 2 beyond the surface d, 3 clipped by the light "
-                 "frustum, 4 by a user plane, 5 outside the plane's quad; V (-1 untested), mask channel, d), 2 "
-                 "shader output, 3 added after the blend's quantisation, 4 accumulation after it (stored "
-                 "units), 5 (light, set, L_air added, unquantised L_air)";
-        i.units = "stored value";
-        i.kind = ViewKind::Buffer;
-        i.image = mRayPlanes;
-        i.extent = {mRayPlanes->width, mRayPlanes->height, 1};
-        i.rayView = true;
-        out.intermediates.push_back(std::move(i));
-        Intermediate chart;
-        chart.id = kRayPlanesChart;
-        chart.label = "Planes along pixel (" + std::to_string(mPickPixel.x) + ", " +
-                      std::to_string(mPickPixel.y) + ")'s ray (chart)";
-        chart.note = "nearest plane left, t grows to the right; bars: each plane's L_air as shaded (grey) and "
-                     "as stored (orange), scaled to the largest; strip: green added, blue beyond the surface, "
-                     "grey clipped by the light frustum, purple by a user plane, black outside the quad; "
-                     "bottom: shadow test V (white lit, black shadowed, blue untested)";
-        chart.kind = ViewKind::Color;
-        chart.image = std::make_shared<Image>(slices::rayPlanesChart(*mRayPlanes));
-        chart.extent = {chart.image->width, chart.image->height, 1};
-        chart.rayView = true;
-        chart.picture = true;
-        out.intermediates.push_back(std::move(chart));
-    }
-    if (t.count) {
-        std::uint32_t counts[2] = {0, 0};
-        mCounters.download(0, sizeof(counts), counts);
-        auto img = std::make_shared<Image>(2, 2, 1);
-        img->at(0, 0) = float(mQueryCounts[0]);
-        img->at(1, 0) = float(mQueryCounts[1]);
-        img->at(0, 1) = float(counts[0]);
-        img->at(1, 1) = float(counts[1]);
-        Intermediate i;
-        i.id = kFragments, i.label = "Fragment counts";
-        i.note = "x = 0: fragments outside the light frustum, x = 1: all fragments; row 0 by occlusion "
-                 "query, row 1 by atomic counters";
-        i.kind = ViewKind::Buffer;
-        i.image = img;
-        i.extent = {2, 2, 1};
-        out.intermediates.push_back(i);
-    }
-    out.lastStageRun = kPlanesIndex;
-    if (stop == kPlanesIndex) return out;
+            if (mRayPlanes) {
+                Intermediate i;
+                i.id = kRayPlanes;
+                i.label = "Planes along pixel (" + std::to_string(mPickPixel.x) + ", " + std::to_string(mPickPixel.y) +
+                          ")'s ray";
+                i.note = "one row per plane drawn (sets of lights in turn, back to front); columns of rgba: 0 (plane i, "
+                         "view depth s, t, dt), 1 (status: 1 added, 2 beyond the surface d, 3 clipped by the light "
+                         "frustum, 4 by a user plane, 5 outside the plane's quad; V (-1 untested), mask channel, d), 2 "
+                         "shader output, 3 added after the blend's quantisation, 4 accumulation after it (stored "
+                         "units), 5 (light, set, L_air added, unquantised L_air)";
+                i.units = "stored value";
+                i.kind = ViewKind::Buffer;
+                i.image = mRayPlanes;
+                i.extent = {mRayPlanes->width, mRayPlanes->height, 1};
+                i.rayView = true;
+                out.intermediates.push_back(std::move(i));
+                Intermediate chart;
+                chart.id = kRayPlanesChart;
+                chart.label = "Planes along pixel (" + std::to_string(mPickPixel.x) + ", " +
+                              std::to_string(mPickPixel.y) + ")'s ray (chart)";
+                chart.note = "nearest plane left, t grows to the right; bars: each plane's L_air as shaded (grey) and "
+                             "as stored (orange), scaled to the largest; strip: green added, blue beyond the surface, "
+                             "grey clipped by the light frustum, purple by a user plane, black outside the quad; "
+                             "bottom: shadow test V (white lit, black shadowed, blue untested)";
+                chart.kind = ViewKind::Color;
+                chart.image = std::make_shared<Image>(slices::rayPlanesChart(*mRayPlanes));
+                chart.extent = {chart.image->width, chart.image->height, 1};
+                chart.rayView = true;
+                chart.picture = true;
+                out.intermediates.push_back(std::move(chart));
+            }
+            if (t.count) {
+                std::uint32_t counts[2] = {0, 0};
+                mCounters.download(0, sizeof(counts), counts);
+                auto img = std::make_shared<Image>(2, 2, 1);
+                img->at(0, 0) = float(mQueryCounts[0]);
+                img->at(1, 0) = float(mQueryCounts[1]);
+                img->at(0, 1) = float(counts[0]);
+                img->at(1, 1) = float(counts[1]);
+                Intermediate i;
+                i.id = kFragments, i.label = "Fragment counts";
+                i.note = "x = 0: fragments outside the light frustum, x = 1: all fragments; row 0 by occlusion "
+                         "query, row 1 by atomic counters";
+                i.kind = ViewKind::Buffer;
+                i.image = img;
+                i.extent = {2, 2, 1};
+                out.intermediates.push_back(i);
+            }
+        });
+    if (!toResolve) return out;
 
     // ---- resolve ----
-    clock.begin();
-    resolve(t);
-    out.timing.stages.push_back(clock.end(kStageResolve));
-    out.intermediates.push_back(render::textureIntermediate(
-        kAirlight, "L_air", "single-scattered light reaching the eye, decoded from the accumulation",
-        "radiance", ViewKind::Color, 0.0f, 1.0f, mAirlight));
-    out.airlight = render::readRgb(mAirlight);
-    out.lastStageRun = kResolveIndex;
-    if (stop == kResolveIndex) return out;
+    const bool toCompose = stages.run(
+        kResolveIndex, [&] { resolve(t); },
+        [&] {
+            out.intermediates.push_back(render::textureIntermediate(
+                kAirlight, "L_air", "single-scattered light reaching the eye, decoded from the accumulation",
+                "radiance", ViewKind::Color, 0.0f, 1.0f, mAirlight));
+            out.airlight = render::readRgb(mAirlight);
+        });
+    if (!toCompose) return out;
 
-    // ---- compose ----
-    clock.begin();
-    mView.compose(scene, mAirlight, out.intermediates, "slices");
-    out.timing.stages.push_back(clock.end(mStages[kComposeIndex].id));
-    out.final = mView.readFinal();
-    out.lastStageRun = kComposeIndex;
+    stages.run(kComposeIndex, [&] { mView.compose(scene, mAirlight, out.intermediates, "slices"); },
+               [&] { out.final = mView.readFinal(); });
     return out;
 }
 

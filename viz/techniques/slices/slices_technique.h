@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "debug/stage_runner.h"
 #include "gl/buffer.h"
 #include "gl/framebuffer.h"
 #include "gl/program.h"
@@ -64,7 +65,13 @@ struct PickRecord {
 };
 static_assert(sizeof(PickRecord) == 48);
 
-enum StageIndex { kShadowMapsIndex = 0, kSurfaceIndex, kPlanesIndex, kResolveIndex, kComposeIndex };
+constexpr std::array<std::string_view, 5> kStageOrder = {"slices.shadow_maps", "slices.surface", kStagePlanes,
+                                                         kStageResolve, "slices.compose"};
+constexpr int kShadowMapsIndex = stageIndexOf(kStageOrder, "slices.shadow_maps");
+constexpr int kSurfaceIndex = stageIndexOf(kStageOrder, "slices.surface");
+constexpr int kPlanesIndex = stageIndexOf(kStageOrder, kStagePlanes);
+constexpr int kResolveIndex = stageIndexOf(kStageOrder, kStageResolve);
+constexpr int kComposeIndex = stageIndexOf(kStageOrder, "slices.compose");
 
 // The paper's example draws at most 100 planes; its per-plane scale is 9 / (N / 100).
 constexpr double kPaperMaxPlanes = 100.0;

@@ -79,6 +79,7 @@ IvsvTechnique::IvsvTechnique() {
          {kColumn, kPerVpl, kInterleave, kAirlight, kVisibility}, 1, "vpl_step"},
         render::SceneViewPasses::composeStage("ivsv"),
     };
+    checkStageOrder(mStages, kStageOrder);
 }
 
 std::vector<double> IvsvTechnique::substepValues(int stage, const Settings& s) const {
@@ -184,8 +185,6 @@ FrameOutput IvsvTechnique::run(const FrameInput& input) {
     const Settings& s = input.settings;
     FrameOutput out;
     out.plan = plan(scene, s);
-    out.timing.clock = gl::StageClock::method();
-    const int stop = input.stopAfterStage < 0 ? kComposeIndex : input.stopAfterStage;
     const scene::Light* area = areaLightOf(scene);
     const bool naive = s.at("mode") != 0.0;
     const int count = area ? int(s.at("vpls")) : 0;
@@ -193,70 +192,78 @@ FrameOutput IvsvTechnique::run(const FrameInput& input) {
     const int tile = int(s.at("shadow_map"));
     const int shown = std::max(0, std::min(int(s.at("pick_vpl")), count - 1));
     gl::StageClock clock;
+    StageRunner stages(mStages, input, out, mReuse, clock);
     mSurfaceRan = mNaiveBuilt = false;
     mMark.reset();
 
     // ---- VPLs and their epipolar spaces ----
-    clock.begin();
-    mVpls.clear();
-    if (area) {
-        mVpls = vsv::sampleVpls(scene, *area, count);
-        mVplArea = 4.0 * glm::length(glm::cross(area->halfU, area->halfV)) / count;
-        for (vsv::Vpl& v : mVpls) v.position += kVplOffset * v.normal;
-    }
-    layOut(std::max(count, 1), cells, tile);
-    uploadVpls(scene, input.width, input.height, cells, tile);
-    out.timing.stages.push_back(clock.end(kStageVpls));
-    if (area)
-        out.intermediates.push_back(vsv::cpuIntermediate(
-            kVplImage, "VPLs on the emitter", "emitter uv square (u right, v down): each VPL's L_e as a dot",
-            ViewKind::Color, vplImage()));
-    if (area) out.intermediates.back().picture = true;
-    out.lastStageRun = kVplsIndex;
-    if (stop == kVplsIndex) return out;
+    if (!stages.run(
+        kVplsIndex,
+        [&] {
+            mVpls.clear();
+            if (area) {
+                mVpls = vsv::sampleVpls(scene, *area, count);
+                mVplArea = 4.0 * glm::length(glm::cross(area->halfU, area->halfV)) / count;
+                for (vsv::Vpl& v : mVpls) v.position += kVplOffset * v.normal;
+            }
+            layOut(std::max(count, 1), cells, tile);
+            uploadVpls(scene, input.width, input.height, cells, tile);
+        },
+        [&] {
+            if (area)
+                out.intermediates.push_back(vsv::cpuIntermediate(
+                    kVplImage, "VPLs on the emitter", "emitter uv square (u right, v down): each VPL's L_e as a dot",
+                    ViewKind::Color, vplImage()));
+            if (area) out.intermediates.back().picture = true;
+        }))
+        return out;
 
     // ---- shadow maps ----
-    clock.begin();
-    if (area && naive) {
-        scene::Scene points = scene;
-        points.lights.clear();
-        for (int i = 0; i < count; ++i) {
-            scene::Light l;
-            l.name = "vpl" + std::to_string(i);
-            l.type = scene::LightType::Point;
-            l.position = mVpls[std::size_t(i)].position;
-            points.lights.push_back(l);
-        }
-        mNaiveView.buildShadows(points, tile, 1, out.intermediates, "ivsv.naive");
-        mNaiveBuilt = true;
-    } else if (area) {
-        buildIsm(scene, *area, int(s.at("points")), count, tile, int(s.at("fill_levels")));
-    }
-    out.timing.stages.push_back(clock.end(kStageShadows));
-    if (area && !naive) {
-        out.intermediates.push_back(render::textureIntermediate(
-            kIsmRaw, "ISM atlas (splatted)", "one paraboloid tile per VPL: distance of the nearest point, 0 = hole",
-            "scene units", ViewKind::Depth, 0.0f, 8.0f, mIsmRaw));
-        out.intermediates.back().sentinels = {{0.0f, "hole: no point splatted"}};
-        out.intermediates.push_back(render::textureIntermediate(
-            kIsm, "ISM atlas (after push-pull)", "holes filled from coarser levels (mean of valid samples within 2^fill_levels texels; wider holes stay empty)",
-            "scene units", ViewKind::Depth, 0.0f, 8.0f, mIsm));
-        out.intermediates.push_back(vsv::cpuIntermediate(
-            kPointCloud, "Point cloud of VPL " + std::to_string(shown),
-            "the subset of the scene's points splatted into its tile, seen from the camera (nearest distance)",
-            ViewKind::Depth, pointCloudImage(scene, input.width, input.height, shown, count), 0.0f, 8.0f));
-    }
-    out.lastStageRun = kShadowsIndex;
-    if (stop == kShadowsIndex) return out;
+    if (!stages.run(
+        kShadowsIndex,
+        [&] {
+            if (area && naive) {
+                scene::Scene points = scene;
+                points.lights.clear();
+                for (int i = 0; i < count; ++i) {
+                    scene::Light l;
+                    l.name = "vpl" + std::to_string(i);
+                    l.type = scene::LightType::Point;
+                    l.position = mVpls[std::size_t(i)].position;
+                    points.lights.push_back(l);
+                }
+                mNaiveView.buildShadows(points, tile, 1, out.intermediates, "ivsv.naive");
+                mNaiveBuilt = true;
+            } else if (area) {
+                buildIsm(scene, *area, int(s.at("points")), count, tile, int(s.at("fill_levels")));
+            }
+        },
+        [&] {
+            if (area && !naive) {
+                out.intermediates.push_back(render::textureIntermediate(
+                    kIsmRaw, "ISM atlas (splatted)", "one paraboloid tile per VPL: distance of the nearest point, 0 = hole",
+                    "scene units", ViewKind::Depth, 0.0f, 8.0f, mIsmRaw));
+                out.intermediates.back().sentinels = {{0.0f, "hole: no point splatted"}};
+                out.intermediates.push_back(render::textureIntermediate(
+                    kIsm, "ISM atlas (after push-pull)", "holes filled from coarser levels (mean of valid samples within 2^fill_levels texels; wider holes stay empty)",
+                    "scene units", ViewKind::Depth, 0.0f, 8.0f, mIsm));
+                out.intermediates.push_back(vsv::cpuIntermediate(
+                    kPointCloud, "Point cloud of VPL " + std::to_string(shown),
+                    "the subset of the scene's points splatted into its tile, seen from the camera (nearest distance)",
+                    ViewKind::Depth, pointCloudImage(scene, input.width, input.height, shown, count), 0.0f, 8.0f));
+            }
+        }))
+        return out;
 
     // ---- camera view (the shared surface term) ----
-    clock.begin();
-    mView.buildShadows(scene, s, out.intermediates, "ivsv");
-    mView.renderSurface(scene, input.width, input.height, out.intermediates, "ivsv");
-    mSurfaceRan = true;
-    out.timing.stages.push_back(clock.end(kStageSurface));
-    out.lastStageRun = kSurfaceIndex;
-    if (stop == kSurfaceIndex) return out;
+    if (!stages.run(
+        kSurfaceIndex,
+        [&] {
+            mView.buildShadows(scene, s, out.intermediates, "ivsv");
+            mView.renderSurface(scene, input.width, input.height, out.intermediates, "ivsv");
+            mSurfaceRan = true;
+        }))
+        return out;
 
     const glm::ivec2 pick = pickedPixel(input);
     const int pickX = pick.x, pickY = pick.y;
@@ -272,92 +279,104 @@ FrameOutput IvsvTechnique::run(const FrameInput& input) {
     if (area) mMark = MarkState{shown, pickTheta, tile, naive, scene.camera.position};
 
     // ---- rectify ----
-    clock.begin();
-    if (area) rectify(s, count, cells, tile, naive);
-    out.timing.stages.push_back(clock.end(kStageVoxelize));
-    if (area)
-        out.intermediates.push_back(vsv::cpuIntermediate(
-        kVoxelSlice, "Voxels of VPL " + std::to_string(shown) + " (before scan)",
-        "alpha (x) x phi (y, eye at the top) at theta cell " + std::to_string(pickTheta) + ": white = occluder",
-        ViewKind::Mask, vsv::sliceImage(mGrid, shownTile.x, cells, shownTile.y + pickTheta, kPhiBits)));
-    out.lastStageRun = kVoxelizeIndex;
-    if (stop == kVoxelizeIndex) return out;
+    if (!stages.run(
+        kVoxelizeIndex,
+        [&] {
+            if (area) rectify(s, count, cells, tile, naive);
+        },
+        [&] {
+            if (area)
+                out.intermediates.push_back(vsv::cpuIntermediate(
+                kVoxelSlice, "Voxels of VPL " + std::to_string(shown) + " (before scan)",
+                "alpha (x) x phi (y, eye at the top) at theta cell " + std::to_string(pickTheta) + ": white = occluder",
+                ViewKind::Mask, vsv::sliceImage(mGrid, shownTile.x, cells, shownTile.y + pickTheta, kPhiBits)));
+        }))
+        return out;
 
     // The picked pixel's column as voxelized, for the gather's column view (the scan overwrites the
     // grid); read only when the gather will run.
-    if (area && stop != kScanIndex) {
+    if (area && stages.reaches(kGatherIndex)) {
         const glm::ivec2 cell = pickedCell(scene, input, shown, cells, pickX, pickY);
         mPreScanColumn = vsv::readGridRow(mGrid, shownTile.x + cell.x, 1, shownTile.y + cell.y).front();
     }
 
     // ---- segmented scan ----
-    clock.begin();
     const int passSetting = int(substepLimit(input, kScanIndex));
     const int passLimit = passSetting < 0 ? kMaxScanPasses : passSetting;
-    if (area) scan(count, cells, passLimit, naive);
-    out.timing.stages.push_back(clock.end(kStageScan));
-    if (area)
-        out.intermediates.push_back(vsv::cpuIntermediate(
-        kScanSlice,
-        "Voxels of VPL " + std::to_string(shown) + " after " +
-            std::to_string(std::min(passLimit, scanPassCount(cells))) + " scan passes",
-        "alpha x phi at theta cell " + std::to_string(pickTheta) + ": white = shadowed", ViewKind::Mask,
-        vsv::sliceImage(*mResult, shownTile.x, cells, shownTile.y + pickTheta, kPhiBits)));
-    out.lastStageRun = kScanIndex;
-    if (stop == kScanIndex) return out;
+    if (!stages.run(
+        kScanIndex,
+        [&] {
+            if (area) scan(count, cells, passLimit, naive);
+        },
+        [&] {
+            if (area)
+                out.intermediates.push_back(vsv::cpuIntermediate(
+                kScanSlice,
+                "Voxels of VPL " + std::to_string(shown) + " after " +
+                    std::to_string(std::min(passLimit, scanPassCount(cells))) + " scan passes",
+                "alpha x phi at theta cell " + std::to_string(pickTheta) + ": white = shadowed", ViewKind::Mask,
+                vsv::sliceImage(*mResult, shownTile.x, cells, shownTile.y + pickTheta, kPhiBits)));
+        }))
+        return out;
 
     // ---- gather ----
-    clock.begin();
     const int gatherMode = int(s.at("gather"));
     const int vplStep = int(substepLimit(input, kGatherIndex));
     const int gathered = vplStep < 0 ? count : std::min(count, vplStep + 1);
-    allocateOutputs(input.width, input.height);
-    mPick.clearZero();
-    if (area && out.plan.stages[kGatherIndex].runs) {
-        gather(scene, input, gatherMode, gathered, cells, naive, {pickX, input.height - 1 - pickY});
-    } else {
-        mAirlight.clear(glm::vec4(0.0f));
-        mVisibility.clear(glm::vec4(1.0f));
-    }
-    // Point, spot and directional lights: vsv, added to the VPLs' airlight.
-    if (otherLightsOn(out.plan) && out.plan.stages[kGatherIndex].runs) addOtherLights(input);
-    out.timing.stages.push_back(clock.end(kStageGather));
-    if (area) {
-        out.intermediates.push_back(vsv::cpuIntermediate(
-            kColumn, "Voxel column of pixel (" + std::to_string(pickX) + ", " + std::to_string(pickY) + "), VPL " +
-                         std::to_string(shown),
-            "its 128 phi bits; top row as voxelized (1 occluder), bottom row after the scan (1 shadowed, 0 lit); "
-            "0.5 beyond the fragment (not read)", ViewKind::Mask,
-            columnImage(scene, input, shown, cells, pickX, pickY)));
-        out.intermediates.back().rayView = true;
-        out.intermediates.back().sentinels = {{0.5f, "beyond the fragment: not read"}};
-        const std::shared_ptr<Image> perVpl = perVplImage(count);
-        out.intermediates.push_back(vsv::cpuIntermediate(
-            kPerVpl, "Per-VPL airlight of pixel (" + std::to_string(pickX) + ", " + std::to_string(pickY) + ")",
-            "x = VPL index: its unscaled contribution to L_air (only VPLs this pixel gathered)", ViewKind::Color,
-            perVpl, 0.0f, 0.0f));
-        out.intermediates.back().plots = {perVplPlot(*perVpl)};
-        out.intermediates.back().rayView = true;
-        out.intermediates.push_back(vsv::cpuIntermediate(
-            kInterleave, "Interleaving pattern", "which ninth of the VPLs each pixel gathers (0..8 / 8)",
-            ViewKind::Scalar, interleaveImage(input.width, input.height, gatherMode)));
-    }
-    out.intermediates.push_back(render::textureIntermediate(
-        kAirlight, "L_air", "single-scattered light reaching the eye", "radiance", ViewKind::Color, 0.0f, 1.0f,
-        mAirlight));
-    out.intermediates.push_back(render::textureIntermediate(
-        kVisibility, "Visibility", "mean over the gathered VPLs of the phi-uniform lit fraction of the ray", "",
-        ViewKind::Scalar, 0.0f, 1.0f, mVisibility));
-    out.airlight = render::readRgb(mAirlight);
-    out.lastStageRun = kGatherIndex;
-    if (stop == kGatherIndex) return out;
+    if (!stages.run(
+        kGatherIndex,
+        [&] {
+            allocateOutputs(input.width, input.height);
+            mPick.clearZero();
+            if (area && out.plan.stages[kGatherIndex].runs) {
+                gather(scene, input, gatherMode, gathered, cells, naive, {pickX, input.height - 1 - pickY});
+            } else {
+                mAirlight.clear(glm::vec4(0.0f));
+                mVisibility.clear(glm::vec4(1.0f));
+            }
+            // Point, spot and directional lights: vsv, added to the VPLs' airlight.
+            if (otherLightsOn(out.plan) && out.plan.stages[kGatherIndex].runs) addOtherLights(input);
+        },
+        [&] {
+            if (area) {
+                out.intermediates.push_back(vsv::cpuIntermediate(
+                    kColumn, "Voxel column of pixel (" + std::to_string(pickX) + ", " + std::to_string(pickY) + "), VPL " +
+                                 std::to_string(shown),
+                    "its 128 phi bits; top row as voxelized (1 occluder), bottom row after the scan (1 shadowed, 0 lit); "
+                    "0.5 beyond the fragment (not read)", ViewKind::Mask,
+                    columnImage(scene, input, shown, cells, pickX, pickY)));
+                out.intermediates.back().rayView = true;
+                out.intermediates.back().sentinels = {{0.5f, "beyond the fragment: not read"}};
+                const std::shared_ptr<Image> perVpl = perVplImage(count);
+                out.intermediates.push_back(vsv::cpuIntermediate(
+                    kPerVpl, "Per-VPL airlight of pixel (" + std::to_string(pickX) + ", " + std::to_string(pickY) + ")",
+                    "x = VPL index: its unscaled contribution to L_air (only VPLs this pixel gathered)", ViewKind::Color,
+                    perVpl, 0.0f, 0.0f));
+                out.intermediates.back().plots = {perVplPlot(*perVpl)};
+                out.intermediates.back().rayView = true;
+                out.intermediates.push_back(vsv::cpuIntermediate(
+                    kInterleave, "Interleaving pattern", "which ninth of the VPLs each pixel gathers (0..8 / 8)",
+                    ViewKind::Scalar, interleaveImage(input.width, input.height, gatherMode)));
+            }
+            out.intermediates.push_back(render::textureIntermediate(
+                kAirlight, "L_air", "single-scattered light reaching the eye", "radiance", ViewKind::Color, 0.0f, 1.0f,
+                mAirlight));
+            out.intermediates.push_back(render::textureIntermediate(
+                kVisibility, "Visibility", "mean over the gathered VPLs of the phi-uniform lit fraction of the ray", "",
+                ViewKind::Scalar, 0.0f, 1.0f, mVisibility));
+            out.airlight = render::readRgb(mAirlight);
+        }))
+        return out;
 
     // ---- compose ----
-    clock.begin();
-    mView.compose(scene, mAirlight, out.intermediates, "ivsv");
-    out.timing.stages.push_back(clock.end(mStages[kComposeIndex].id));
-    out.final = mView.readFinal();
-    out.lastStageRun = kComposeIndex;
+    stages.run(
+        kComposeIndex,
+        [&] {
+            mView.compose(scene, mAirlight, out.intermediates, "ivsv");
+        },
+        [&] {
+            out.final = mView.readFinal();
+        });
     return out;
 }
 

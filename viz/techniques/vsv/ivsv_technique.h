@@ -5,6 +5,7 @@
 // Only those files include it; the rest of the program knows ivsv through ivsv.h.
 #pragma once
 
+#include <array>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -17,6 +18,7 @@
 
 #include "core/error.h"
 #include "debug/permutations.h"
+#include "debug/stage_runner.h"
 #include "gl/buffer.h"
 #include "gl/program.h"
 #include "gl/stage_clock.h"
@@ -58,15 +60,15 @@ constexpr const char* kVisibility = "ivsv.visibility";
 constexpr const char* kPerVpl = "ivsv.pixel_vpls";
 constexpr const char* kInterleave = "ivsv.interleave";
 
-enum StageIndex {
-    kVplsIndex = 0,
-    kShadowsIndex = 1,
-    kSurfaceIndex = 2,
-    kVoxelizeIndex = 3,
-    kScanIndex = 4,
-    kGatherIndex = 5,
-    kComposeIndex = 6
-};
+constexpr std::array<std::string_view, 7> kStageOrder = {kStageVpls,     kStageShadows, kStageSurface, kStageVoxelize,
+                                                         kStageScan,     kStageGather,  "ivsv.compose"};
+constexpr int kVplsIndex = stageIndexOf(kStageOrder, kStageVpls);
+constexpr int kShadowsIndex = stageIndexOf(kStageOrder, kStageShadows);
+constexpr int kSurfaceIndex = stageIndexOf(kStageOrder, kStageSurface);
+constexpr int kVoxelizeIndex = stageIndexOf(kStageOrder, kStageVoxelize);
+constexpr int kScanIndex = stageIndexOf(kStageOrder, kStageScan);
+constexpr int kGatherIndex = stageIndexOf(kStageOrder, kStageGather);
+constexpr int kComposeIndex = stageIndexOf(kStageOrder, "ivsv.compose");
 
 constexpr int kPhiBits = 128;  // one texel per eye ray, as the paper's implementation
 constexpr int kMaxVpls = 256;
@@ -234,6 +236,7 @@ private:
     render::SceneViewPasses mView;       // surface term and compose
     render::MediumBlock mMedium;  // sigma_s, sigma_t, g for the shaders (common/medium.glsl)
     render::SceneViewPasses mNaiveView;  // mode=naive: one point light (cube map) per VPL
+    StageReuse mReuse;  // no ivsv stage keeps its outputs yet: every run starts at stage 0
     bool mSurfaceRan = false, mNaiveBuilt = false;  // in the last run (markersFor)
     std::unique_ptr<Technique> mVsv;     // the scene's other lights
     // The scene vsv renders: a member, so that its address (with its geometry) stays the same from frame

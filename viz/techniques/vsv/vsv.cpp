@@ -60,6 +60,7 @@ VsvTechnique::VsvTechnique() {
           "force_features"}, {kColumn, kAirlight, kVisibility}, 1},
         render::SceneViewPasses::composeStage("vsv"),
     };
+    checkStageOrder(mStages, kStageOrder);
 }
 
 std::vector<double> VsvTechnique::substepValues(int stage, const Settings& s) const {
@@ -90,16 +91,13 @@ FrameOutput VsvTechnique::run(const FrameInput& input) {
     const Settings& s = input.settings;
     FrameOutput out;
     out.plan = planFor(scene, s, input.width, input.height);
-    out.timing.clock = gl::StageClock::method();
-    const int stop = input.stopAfterStage < 0 ? kComposeIndex : input.stopAfterStage;
     const std::vector<int> lights = shadedLights(scene);
     const GridSize size = gridSize(s);
     gl::StageClock clock;
     mMark.reset();
 
-    // ---- shadow maps and camera view ----
-    mReuse.begin(input, out);
-    if (!mView.runSharedStages(input, stop, mStages, "vsv", out, mReuse)) return out;
+    StageRunner stages(mStages, input, out, mReuse, clock);
+    if (!mView.runSharedStages(stages, input, "vsv", out)) return out;
 
     // One grid per light; the stages below run light after light and time the sum. The intermediates
     // show the light chosen by `light`.
@@ -124,95 +122,97 @@ FrameOutput VsvTechnique::run(const FrameInput& input) {
     }
 
     // ---- voxelize ----
-    clock.begin();
-    for (std::size_t i = 0; i < lights.size(); ++i) voxelize(scene, s, lights[i], grids[i], int(i));
-    out.timing.stages.push_back(clock.end(kStageVoxelize));
-    if (!lights.empty()) {
-        out.intermediates.push_back(render::textureIntermediate(
-            kOccluder, "Occluder alpha",
-            "per light ray (x = phi bit, y = theta cell): alpha cell of its first occluder (-1: none in the grid)",
-            "cells", ViewKind::Scalar, 0.0f, float(size.alpha), mOccluder[std::size_t(shown)]));
-        out.intermediates.back().sentinels = {{-1.0f, "no occluder in the grid"}};
-        out.intermediates.push_back(cpuIntermediate(
-            kVoxelSlice, "Voxels (before scan)",
-            "alpha (x) x phi (y, eye at the top) slice at theta cell " + std::to_string(pickTheta) +
-                ": white = occluder voxel",
-            ViewKind::Mask, vsv::sliceImage(mGrid[std::size_t(shown)], 0, size.alpha, pickTheta, size.phi)));
-    }
-    out.lastStageRun = kVoxelizeIndex;
-    if (stop == kVoxelizeIndex) return out;
+    const bool toScan = stages.run(
+        kVoxelizeIndex,
+        [&] {
+            for (std::size_t i = 0; i < lights.size(); ++i) voxelize(scene, s, lights[i], grids[i], int(i));
+        },
+        [&] {
+            if (!lights.empty()) {
+                out.intermediates.push_back(render::textureIntermediate(
+                    kOccluder, "Occluder alpha",
+                    "per light ray (x = phi bit, y = theta cell): alpha cell of its first occluder (-1: none in the grid)",
+                    "cells", ViewKind::Scalar, 0.0f, float(size.alpha), mOccluder[std::size_t(shown)]));
+                out.intermediates.back().sentinels = {{-1.0f, "no occluder in the grid"}};
+                out.intermediates.push_back(cpuIntermediate(
+                    kVoxelSlice, "Voxels (before scan)",
+                    "alpha (x) x phi (y, eye at the top) slice at theta cell " + std::to_string(pickTheta) +
+                        ": white = occluder voxel",
+                    ViewKind::Mask, vsv::sliceImage(mGrid[std::size_t(shown)], 0, size.alpha, pickTheta, size.phi)));
+            }
+        });
+    if (!toScan) return out;
 
     // The picked pixel's column as voxelized, for the gather's column view (the scan overwrites the
     // grid): one texel per 128 phi bits, read only when the gather will run.
-    if (!lights.empty() && stop != kScanIndex) {
+    if (!lights.empty() && stages.reaches(kGatherIndex)) {
         const glm::ivec2 cell = pickedCell(scene, input, lights[std::size_t(shown)], grids[std::size_t(shown)], pickX, pickY);
         mPreScanColumn = vsv::readGridRow(mGrid[std::size_t(shown)], cell.x, 1, cell.y);
     }
 
     // ---- scan ----
-    clock.begin();
     const int passSetting = int(substepLimit(input, kScanIndex));
     const int passLimit = passSetting < 0 ? kMaxScanPasses : passSetting;
-    for (std::size_t i = 0; i < lights.size(); ++i) scan(int(i), size, passLimit);
-    out.timing.stages.push_back(clock.end(kStageScan));
-    if (!lights.empty()) {
-        const int passes = std::min(passLimit, scanPassCount(size.alpha));
-        out.intermediates.push_back(cpuIntermediate(
-            kScanSlice, "Voxels after " + std::to_string(passes) + " scan passes",
-            "alpha x phi slice at theta cell " + std::to_string(pickTheta) +
-                ": white = shadowed (after all passes: one run from the occluder to the end of alpha)",
-            ViewKind::Mask, vsv::sliceImage(*mResult[std::size_t(shown)], 0, size.alpha, pickTheta, size.phi)));
-    }
-    out.lastStageRun = kScanIndex;
-    if (stop == kScanIndex) return out;
+    const bool toGather = stages.run(
+        kScanIndex, [&] { for (std::size_t i = 0; i < lights.size(); ++i) scan(int(i), size, passLimit); },
+        [&] {
+            if (!lights.empty()) {
+                const int passes = std::min(passLimit, scanPassCount(size.alpha));
+                out.intermediates.push_back(cpuIntermediate(
+                    kScanSlice, "Voxels after " + std::to_string(passes) + " scan passes",
+                    "alpha x phi slice at theta cell " + std::to_string(pickTheta) +
+                        ": white = shadowed (after all passes: one run from the occluder to the end of alpha)",
+                    ViewKind::Mask, vsv::sliceImage(*mResult[std::size_t(shown)], 0, size.alpha, pickTheta, size.phi)));
+            }
+        });
+    if (!toGather) return out;
 
     // ---- gather ----
-    clock.begin();
-    mAirlight.clear(glm::vec4(0.0f));
-    mVisibility.clear(glm::vec4(1.0f, 1.0f, 0.0f, 0.0f));
-    if (gatherRuns) {
-        if (!lights.empty()) {
-            const gl::Program& program = gatherProgram(out.plan);
-            for (std::size_t i = 0; i < lights.size(); ++i)
-                gather(program, scene, input, lights[i], grids[i], int(i));
-        }
-        if (featureEnabled(out.plan, "AREA_LIGHTS_BY_IVSV")) addAreaLights(input);
-    }
-    out.timing.stages.push_back(clock.end(kStageGather));
-    if (!lights.empty()) {
-        out.intermediates.push_back(cpuIntermediate(
-            kColumn, "Voxel column of pixel (" + std::to_string(pickX) + ", " + std::to_string(pickY) + ")",
-            "the 128 phi bits its eye ray reads; top row as voxelized (1 occluder), bottom row after the scan "
-            "(1 shadowed, 0 lit); 0.5 beyond the fragment (not read)",
-            ViewKind::Mask,
-            columnImage(scene, input, lights[std::size_t(shown)], grids[std::size_t(shown)], shown, pickX,
-                        pickY)));
-        out.intermediates.back().rayView = true;
-        out.intermediates.back().sentinels = {{0.5f, "beyond the fragment: not read"}};
-    }
-    out.intermediates.push_back(render::textureIntermediate(
-        kAirlight, "L_air", "single-scattered light reaching the eye", "radiance", ViewKind::Color, 0.0f, 1.0f,
-        mAirlight));
-    out.intermediates.push_back(render::textureIntermediate(
-        kVisibility, "Visibility",
-        "r: phi-uniform lit fraction of the ray's bits; g: interpolated visibility of the fragment's voxel; "
-        "b: alpha cell; a: theta cell, -1 where the epipole case replaced the grid",
-        "", ViewKind::Scalar, 0.0f, 1.0f, mVisibility));
-    out.intermediates.back().sentinels = {{-1.0f, "epipole case: a direct ray replaced the grid"}};
-    out.intermediates.back().channels = {{"lit fraction of the ray", "", ViewKind::Scalar, 0.0f, 1.0f},
-                                         {"visibility of the fragment", "", ViewKind::Scalar, 0.0f, 1.0f},
-                                         {"alpha cell", "cells", ViewKind::Scalar, 0.0f, float(size.alpha)},
-                                         {"theta cell", "cells", ViewKind::Scalar, 0.0f, float(size.theta)}};
-    out.airlight = render::readRgb(mAirlight);
-    out.lastStageRun = kGatherIndex;
-    if (stop == kGatherIndex) return out;
+    const bool toCompose = stages.run(
+        kGatherIndex,
+        [&] {
+            mAirlight.clear(glm::vec4(0.0f));
+            mVisibility.clear(glm::vec4(1.0f, 1.0f, 0.0f, 0.0f));
+            if (gatherRuns) {
+                if (!lights.empty()) {
+                    const gl::Program& program = gatherProgram(out.plan);
+                    for (std::size_t i = 0; i < lights.size(); ++i)
+                        gather(program, scene, input, lights[i], grids[i], int(i));
+                }
+                if (featureEnabled(out.plan, "AREA_LIGHTS_BY_IVSV")) addAreaLights(input);
+            }
+        },
+        [&] {
+            if (!lights.empty()) {
+                out.intermediates.push_back(cpuIntermediate(
+                    kColumn, "Voxel column of pixel (" + std::to_string(pickX) + ", " + std::to_string(pickY) + ")",
+                    "the 128 phi bits its eye ray reads; top row as voxelized (1 occluder), bottom row after the scan "
+                    "(1 shadowed, 0 lit); 0.5 beyond the fragment (not read)",
+                    ViewKind::Mask,
+                    columnImage(scene, input, lights[std::size_t(shown)], grids[std::size_t(shown)], shown, pickX,
+                                pickY)));
+                out.intermediates.back().rayView = true;
+                out.intermediates.back().sentinels = {{0.5f, "beyond the fragment: not read"}};
+            }
+            out.intermediates.push_back(render::textureIntermediate(
+                kAirlight, "L_air", "single-scattered light reaching the eye", "radiance", ViewKind::Color, 0.0f, 1.0f,
+                mAirlight));
+            out.intermediates.push_back(render::textureIntermediate(
+                kVisibility, "Visibility",
+                "r: phi-uniform lit fraction of the ray's bits; g: interpolated visibility of the fragment's voxel; "
+                "b: alpha cell; a: theta cell, -1 where the epipole case replaced the grid",
+                "", ViewKind::Scalar, 0.0f, 1.0f, mVisibility));
+            out.intermediates.back().sentinels = {{-1.0f, "epipole case: a direct ray replaced the grid"}};
+            out.intermediates.back().channels = {{"lit fraction of the ray", "", ViewKind::Scalar, 0.0f, 1.0f},
+                                                 {"visibility of the fragment", "", ViewKind::Scalar, 0.0f, 1.0f},
+                                                 {"alpha cell", "cells", ViewKind::Scalar, 0.0f, float(size.alpha)},
+                                                 {"theta cell", "cells", ViewKind::Scalar, 0.0f, float(size.theta)}};
+            out.airlight = render::readRgb(mAirlight);
+        });
+    if (!toCompose) return out;
 
-    // ---- compose ----
-    clock.begin();
-    mView.compose(scene, mAirlight, out.intermediates, "vsv");
-    out.timing.stages.push_back(clock.end(mStages[kComposeIndex].id));
-    out.final = mView.readFinal();
-    out.lastStageRun = kComposeIndex;
+    stages.run(kComposeIndex, [&] { mView.compose(scene, mAirlight, out.intermediates, "vsv"); },
+               [&] { out.final = mView.readFinal(); });
     return out;
 }
 

@@ -4,6 +4,7 @@
 // rest of the program knows vsv through vsv.h.
 #pragma once
 
+#include <array>
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -14,6 +15,7 @@
 
 #include "core/error.h"
 #include "debug/permutations.h"
+#include "debug/stage_runner.h"
 #include "gl/program.h"
 #include "gl/stage_clock.h"
 #include "gl/texture.h"
@@ -45,14 +47,12 @@ constexpr const char* kColumn = "vsv.column";
 constexpr const char* kAirlight = "vsv.airlight";
 constexpr const char* kVisibility = "vsv.visibility";
 
-enum StageIndex {
-    kShadowMapsIndex = 0,
-    kSurfaceIndex = 1,
-    kVoxelizeIndex = 2,
-    kScanIndex = 3,
-    kGatherIndex = 4,
-    kComposeIndex = 5
-};
+constexpr std::array<std::string_view, 6> kStageOrder = {"vsv.shadow_maps", "vsv.surface", kStageVoxelize,
+                                                         kStageScan,          kStageGather,  "vsv.compose"};
+constexpr int kVoxelizeIndex = stageIndexOf(kStageOrder, kStageVoxelize);
+constexpr int kScanIndex = stageIndexOf(kStageOrder, kStageScan);
+constexpr int kGatherIndex = stageIndexOf(kStageOrder, kStageGather);
+constexpr int kComposeIndex = stageIndexOf(kStageOrder, "vsv.compose");
 
 constexpr int kMaxScanPasses = 10;  // 2^10 = 1024 alpha cells, the largest `voxels`
 

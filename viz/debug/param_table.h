@@ -1,0 +1,77 @@
+// Typed settings: a technique declares each of its parameters once, as a field of its own settings struct
+// together with the parameter's name, help, default and range (ParamInfo), in the spirit of property
+// reflection. params() lists the declarations; read() fills the struct from a run's complete Settings, once,
+// at the start of the run, so the technique's code reads fields instead of looking names up.
+//
+//     struct MarchSettings { int samples = 0; bool exact = false; };
+//     const ParamTable<MarchSettings> kTable = ParamTable<MarchSettings>()
+//         .add(&MarchSettings::samples, {"samples", "samples per pixel", 64, 1, 65536, true})
+//         .add(&MarchSettings::exact, {"exact", "1: exact per interval", 0, 0, 1, true});
+#pragma once
+
+#include <functional>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+#include "debug/params.h"
+
+namespace viz {
+
+// A setting's value (Settings hold doubles) as a field of type T: a bool is "not 0", an enum is its
+// integer value, any other number converts as a cast would.
+template <class T>
+T settingAs(double value) {
+    if constexpr (std::is_same_v<T, bool>) {
+        return value != 0.0;
+    } else if constexpr (std::is_enum_v<T>) {
+        return T(int(value));
+    } else {
+        return T(value);
+    }
+}
+
+template <class S>
+class ParamTable {
+public:
+    // A parameter stored in `field`.
+    template <class T>
+    ParamTable add(T S::*field, ParamInfo info) const& {
+        ParamTable t = *this;
+        return std::move(t).add(field, std::move(info));
+    }
+    template <class T>
+    ParamTable add(T S::*field, ParamInfo info) && {
+        mInfos.push_back(std::move(info));
+        mSetters.push_back([field](S& s, double value) { s.*field = settingAs<T>(value); });
+        return std::move(*this);
+    }
+    // Parameters declared elsewhere (the shared passes' shadow_map, area_samples) stored in fields here.
+    template <class T>
+    ParamTable add(T S::*field, std::vector<ParamInfo> infos, const std::string& name) && {
+        for (ParamInfo& info : infos)
+            if (info.name == name) return std::move(*this).add(field, std::move(info));
+        mMissing.push_back(name);
+        return std::move(*this);
+    }
+
+    const std::vector<ParamInfo>& infos() const { return mInfos; }
+    // Names given to add() above that the shared list did not have (empty in a correct declaration).
+    const std::vector<std::string>& missing() const { return mMissing; }
+
+    // The struct of a run's settings; `settings` must hold every declared name (FrameInput::settings are
+    // complete).
+    S read(const Settings& settings) const {
+        S s{};
+        for (std::size_t i = 0; i < mInfos.size(); ++i) mSetters[i](s, settings.at(mInfos[i].name));
+        return s;
+    }
+
+private:
+    std::vector<ParamInfo> mInfos;
+    std::vector<std::function<void(S&, double)>> mSetters;
+    std::vector<std::string> mMissing;
+};
+
+}  // namespace viz
