@@ -182,8 +182,8 @@ void GuiApp::advanceAnimation(double dt) {
     mAnimation.clock += dt;
     ++mAnimation.frame;
     if (technique().readsFrame(mSettings)) mDirty = true;  // its noise changes every frame
-    if (mSettings.count("time")) {
-        mSettings["time"] = mAnimation.clock;
+    if (technique().controls().animationTime) {
+        mSettings[viz::kAnimationTime] = mAnimation.clock;
         mDirty = true;
     }
     if (mAnimation.light && (technique().needsGl() || mComparison.isOpen()) && !mScene.lights.empty()) {

@@ -14,12 +14,6 @@ namespace {
 using viz::ui::DrawList;
 using namespace lesson_style;
 
-constexpr glm::vec4 kCode{0.55f, 0.92f, 0.72f, 1.0f};      // `code`: a terminal green on a dark box
-constexpr glm::vec4 kCodeBox{0.20f, 0.23f, 0.22f, 1.0f};
-constexpr glm::vec4 kEmphasis{0.62f, 0.80f, 1.0f, 1.0f};   // *emphasis*: no italic face, so a colour
-constexpr glm::vec4 kStrong{1.0f, 1.0f, 1.0f, 1.0f};       // **strong**: drawn twice, one pixel apart
-constexpr glm::vec4 kFormula{0.80f, 0.86f, 0.95f, 1.0f};
-constexpr glm::vec4 kFormulaBox{0.17f, 0.18f, 0.22f, 1.0f};
 
 // A word of running text: consecutive pieces without a space between them stay on one line.
 struct Piece {

@@ -9,17 +9,12 @@
 
 #include "lesson_markdown.h"
 #include "ui/text_renderer.h"
+#include "ui/theme.h"
 
 namespace airlight {
 
 // Display colours: the window's text colours on the widgets' panel colour, contrast for a projector.
-namespace lesson_style {
-inline constexpr glm::vec4 kText{0.92f, 0.92f, 0.92f, 1.0f};
-inline constexpr glm::vec4 kDim{0.66f, 0.68f, 0.72f, 1.0f};
-inline constexpr glm::vec4 kAccent{0.98f, 0.78f, 0.35f, 1.0f};
-inline constexpr glm::vec4 kError{1.0f, 0.50f, 0.45f, 1.0f};
-inline constexpr glm::vec4 kRule{0.30f, 0.32f, 0.36f, 1.0f};
-}  // namespace lesson_style
+namespace lesson_style = viz::ui::theme;
 
 
 // One line of text in `style` with its inline Markdown, wrapped within `width` from `at`; returns the

@@ -53,17 +53,17 @@ std::vector<PixelReading> readingsAtPixel(const viz::FrameOutput& out, glm::ivec
 }
 
 bool pickPixel(const viz::Technique& technique, viz::Settings& settings, glm::ivec2 pixel) {
-    if (!viz::findParam(technique, "pick_x") || !viz::findParam(technique, "pick_y")) return false;
+    if (!technique.controls().pickedPixel) return false;
     const double x = double(pixel.x), y = double(pixel.y);
-    const bool changed = settings["pick_x"] != x || settings["pick_y"] != y;
-    settings["pick_x"] = x;
-    settings["pick_y"] = y;
+    const bool changed = settings[viz::kPickX] != x || settings[viz::kPickY] != y;
+    settings[viz::kPickX] = x;
+    settings[viz::kPickY] = y;
     return changed;
 }
 
 std::vector<std::string> pickedRayViews(const viz::Technique& technique, const viz::FrameOutput& out) {
     std::vector<std::string> ids;
-    if (!viz::findParam(technique, "pick_x")) return ids;
+    if (!technique.controls().pickedPixel) return ids;
     for (const viz::Intermediate& in : out.intermediates)
         if (in.rayView) ids.push_back(in.id);
     return ids;

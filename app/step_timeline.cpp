@@ -3,14 +3,16 @@
 #include <algorithm>
 #include <cmath>
 
+#include "ui/theme.h"
+
 namespace airlight {
 
 namespace {
-const glm::vec4 kSegment{0.20f, 0.20f, 0.23f, 1.0f};
-const glm::vec4 kCurrent{0.25f, 0.36f, 0.55f, 1.0f};
-const glm::vec4 kTick{0.45f, 0.47f, 0.52f, 1.0f};
-const glm::vec4 kLabel{0.80f, 0.80f, 0.82f, 1.0f};
-const glm::vec4 kMark{0.98f, 0.78f, 0.35f, 1.0f};
+using viz::ui::theme::kLabel;
+using viz::ui::theme::kSegment;
+using viz::ui::theme::kTick;
+constexpr glm::vec4 kCurrent = viz::ui::theme::kHighlight;
+constexpr glm::vec4 kMark = viz::ui::theme::kAccent;
 
 int lastStage(const std::vector<TimelineSegment>& segments) { return segments.empty() ? -1 : segments.back().stage; }
 }  // namespace

@@ -20,6 +20,7 @@
 #include "scene/scene.h"
 #include "ui/font.h"
 #include "ui/immediate.h"
+#include "ui/theme.h"
 
 namespace airlight {
 
@@ -29,16 +30,17 @@ using viz::ui::Rect;
 using Clock = std::chrono::steady_clock;
 
 // ---- colours (display values) and sizes (logical pixels, times the content scale) ----
-constexpr glm::vec4 kBackground{0.11f, 0.11f, 0.12f, 1.0f};
-constexpr glm::vec4 kPanel{0.16f, 0.16f, 0.18f, 1.0f};
-constexpr glm::vec4 kText{0.90f, 0.90f, 0.90f, 1.0f};
-constexpr glm::vec4 kDim{0.60f, 0.62f, 0.66f, 1.0f};
-constexpr glm::vec4 kAccent{0.98f, 0.78f, 0.35f, 1.0f};
-constexpr glm::vec4 kHighlight{0.25f, 0.36f, 0.55f, 1.0f};
-constexpr glm::vec4 kHover{0.22f, 0.22f, 0.26f, 1.0f};
-constexpr glm::vec4 kError{1.0f, 0.45f, 0.40f, 1.0f};
-constexpr float kFontSize = 15.0f;
-constexpr float kPad = 8.0f;
+// The palette and the base sizes are the one theme's (viz/ui/theme.h); the window's own sizes follow.
+using viz::ui::theme::kAccent;
+using viz::ui::theme::kBackground;
+using viz::ui::theme::kDim;
+using viz::ui::theme::kError;
+using viz::ui::theme::kFontSize;
+using viz::ui::theme::kHighlight;
+using viz::ui::theme::kHover;
+using viz::ui::theme::kPad;
+using viz::ui::theme::kPanel;
+using viz::ui::theme::kText;
 constexpr double kGizmoArm = 0.25;  // the light gizmo's direction arm, in orbit distances of the scene camera
 constexpr float kSidebarMin = 170.0f;
 constexpr float kExposureStep = 0.5f;  // stops per +/- key press

@@ -274,14 +274,14 @@ void GuiApp::onCursor(double x, double y) { onCursorPixels(cursorPixels(x, y)); 
 bool GuiApp::isOrbitView(const ViewState& v) const {
     const auto& all = mOutput.intermediates;
     return mHaveOutput && v.index >= 0 && v.index < int(all.size()) && all[std::size_t(v.index)].id == v.content &&
-           all[std::size_t(v.index)].orbit && mSettings.count("mesh_yaw") && mSettings.count("mesh_pitch");
+           all[std::size_t(v.index)].orbit && technique().controls().orbitCamera;
 }
 
 void GuiApp::turnOrbitView(glm::vec2 d) {
-    double yaw = mSettings.at("mesh_yaw") - 0.4 * double(d.x);
+    double yaw = mSettings.at(viz::kOrbitYaw) - 0.4 * double(d.x);
     yaw = std::remainder(yaw, 360.0);
-    mSettings["mesh_yaw"] = yaw;
-    mSettings["mesh_pitch"] = std::clamp(mSettings.at("mesh_pitch") + 0.4 * double(d.y), -89.0, 89.0);
+    mSettings[viz::kOrbitYaw] = yaw;
+    mSettings[viz::kOrbitPitch] = std::clamp(mSettings.at(viz::kOrbitPitch) + 0.4 * double(d.y), -89.0, 89.0);
     mDirty = true;
 }
 
@@ -338,13 +338,11 @@ void GuiApp::onScroll(double dy) {
         return;
     }
     const int view = ViewLayout::hit(mCells, mHover);
-    if (view >= 0 && mViews.count(view) && isOrbitView(mViews.at(view)) && mSettings.count("mesh_zoom") &&
-        mViews.at(view).image.contains(mHover)) {
+    if (view >= 0 && mViews.count(view) && isOrbitView(mViews.at(view)) && mViews.at(view).image.contains(mHover)) {
         // An orbit view: the wheel moves its own camera in (mesh_zoom, 1.25x a notch), not the texture.
-        const auto& params = technique().params();
-        const auto zoom = std::find_if(params.begin(), params.end(), [](const auto& p) { return p.name == "mesh_zoom"; });
-        if (zoom == params.end()) return;
-        mSettings["mesh_zoom"] = std::clamp(mSettings.at("mesh_zoom") * std::pow(1.25, dy), zoom->minValue, zoom->maxValue);
+        const viz::ParamInfo zoom = viz::orbitParams("")[2];
+        mSettings[viz::kOrbitZoom] =
+            std::clamp(mSettings.at(viz::kOrbitZoom) * std::pow(1.25, dy), zoom.minValue, zoom.maxValue);
         mDirty = true;
         return;
     }

@@ -56,6 +56,26 @@ public:
         return std::move(*this);
     }
 
+    // A parameter the technique declares but shared code reads from the Settings (pickedPixel, the shared
+    // passes' shadow_map, substepLimit's sub-step parameter): listed, not stored.
+    ParamTable declare(ParamInfo info) && {
+        mInfos.push_back(std::move(info));
+        mSetters.push_back(nullptr);
+        return std::move(*this);
+    }
+    // The one named `name` from a shared list.
+    ParamTable declare(std::vector<ParamInfo> infos, const std::string& name) && {
+        for (ParamInfo& info : infos)
+            if (info.name == name) return std::move(*this).declare(std::move(info));
+        mMissing.push_back(name);
+        return std::move(*this);
+    }
+    // Several of them (the shared passes' list).
+    ParamTable declare(std::vector<ParamInfo> infos) && {
+        for (ParamInfo& info : infos) *this = std::move(*this).declare(std::move(info));
+        return std::move(*this);
+    }
+
     const std::vector<ParamInfo>& infos() const { return mInfos; }
     // Names given to add() above that the shared list did not have (empty in a correct declaration).
     const std::vector<std::string>& missing() const { return mMissing; }
@@ -64,7 +84,8 @@ public:
     // complete).
     S read(const Settings& settings) const {
         S s{};
-        for (std::size_t i = 0; i < mInfos.size(); ++i) mSetters[i](s, settings.at(mInfos[i].name));
+        for (std::size_t i = 0; i < mInfos.size(); ++i)
+            if (mSetters[i]) mSetters[i](s, settings.at(mInfos[i].name));
         return s;
     }
 

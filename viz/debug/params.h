@@ -27,10 +27,31 @@ using Settings = std::map<std::string, double>;
 // accum=rgba8), any other value as a number (%g). Unknown names and out-of-range indices stay numbers.
 std::string settingText(const std::vector<ParamInfo>& params, const std::string& name, double value);
 
+// The controls the window drives in a technique that has them (Technique::controls()), each a set of
+// parameters declared here once, with one range, for every technique.
+struct Controls {
+    bool pickedPixel = false;    // kPickX, kPickY (pickParam): per-pixel views follow the ray inspector's pixel
+    bool orbitCamera = false;    // kOrbitYaw, kOrbitPitch, kOrbitZoom (orbitParams): orbit views turn by dragging
+    bool animationTime = false;  // kAnimationTime (animationTimeParam): the animation clock moves it
+};
+inline constexpr const char* kPickX = "pick_x";
+inline constexpr const char* kPickY = "pick_y";
+inline constexpr const char* kOrbitYaw = "mesh_yaw";
+inline constexpr const char* kOrbitPitch = "mesh_pitch";
+inline constexpr const char* kOrbitZoom = "mesh_zoom";
+inline constexpr const char* kAnimationTime = "time";
+
 // The picked pixel a technique's per-pixel intermediates follow (the ray inspector's pixel): `axis` 'x'
-// gives pick_x (column, 0 = left), 'y' pick_y (row, 0 = top); -1 is the image centre. Declared here once,
-// with one range, for every technique that has them; `what` names what the technique shows for it.
+// gives pick_x (column, 0 = left), 'y' pick_y (row, 0 = top); -1 is the image centre. `what` names what the
+// technique shows for it.
 ParamInfo pickParam(char axis, const std::string& what);
+
+// The orbit camera of a technique's own orbit views (yaw, pitch, zoom, in that order); `when` says when it
+// is used ("mesh_view").
+std::vector<ParamInfo> orbitParams(const std::string& when);
+
+// Seconds on the animation clock; `what` says what it moves.
+ParamInfo animationTimeParam(const std::string& what);
 
 // The `force_features` parameter every technique that prunes by scene offers: 1 runs every stage and
 // compiles in every feature its plan would leave out for the scene, so `airlight report` can measure

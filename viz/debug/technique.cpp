@@ -85,14 +85,24 @@ Settings completeSettings(const Technique& technique, const Settings& given) {
 ParamInfo pickParam(char axis, const std::string& what) {
     // 16384: twice the largest image `--size` accepts, as both techniques with a 16384 maximum had.
     const bool x = axis == 'x';
-    return {x ? "pick_x" : "pick_y",
+    return {x ? kPickX : kPickY,
             std::string(x ? "picked pixel's column (0 = left)" : "picked pixel's row (0 = top)") + ", whose " + what +
                 " the views show; -1: image centre",
             -1, -1, 16384, true};
 }
 
+std::vector<ParamInfo> orbitParams(const std::string& when) {
+    return {{kOrbitYaw, when + ": orbit camera's angle about the vertical (degrees)", 35, -360, 360, false},
+            {kOrbitPitch, when + ": orbit camera's angle above the horizon (degrees)", 25, -89, 89, false},
+            {kOrbitZoom, when + ": orbit camera's zoom (1 fits the scene and the camera)", 1, 0.05, 50, false}};
+}
+
+ParamInfo animationTimeParam(const std::string& what) {
+    return {kAnimationTime, "seconds: " + what, 0, 0, 1e6, false};
+}
+
 glm::ivec2 pickedPixel(const FrameInput& input) {
-    int x = int(input.settings.at("pick_x")), y = int(input.settings.at("pick_y"));
+    int x = int(input.settings.at(kPickX)), y = int(input.settings.at(kPickY));
     if (x < 0) x = input.width / 2;
     if (y < 0) y = input.height / 2;
     return {std::min(x, input.width - 1), std::min(y, input.height - 1)};

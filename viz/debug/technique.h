@@ -150,6 +150,9 @@ public:
         (void)scene;
         return {};
     }
+    // The shared controls it reads (debug/params.h): the window drives these, and asks here rather than
+    // looking for parameter names.
+    virtual Controls controls() const { return {}; }
     // Marks for the screen pixel `pixel` (column, row 0 at the top, of the last run's frame) in the
     // intermediate `intermediateId` of the last run; empty when the technique cannot map it there. GPU
     // techniques may read their textures (the GL context is current).

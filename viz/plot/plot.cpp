@@ -5,13 +5,15 @@
 #include <cstdio>
 #include <limits>
 
+#include "ui/theme.h"
+
 namespace viz::plot {
 
 namespace {
 
-constexpr glm::vec4 kInk{0.12f, 0.12f, 0.14f, 1.0f};
-constexpr glm::vec4 kGrid{0.86f, 0.86f, 0.88f, 1.0f};
-constexpr glm::vec4 kPaper{1.0f, 1.0f, 1.0f, 1.0f};
+using ui::theme::kInk;
+using ui::theme::kPaper;
+constexpr glm::vec4 kGrid = ui::theme::kGridLine;
 
 std::string formatTick(double v, double step) {
     char buffer[32];
@@ -104,13 +106,8 @@ AxisTicks axisTicks(double lo, double hi, bool logarithmic, int target) {
 }
 
 glm::vec4 categoricalColor(int i) {
-    // Distinct hues that stay apart for common colour-vision deficiencies (Okabe-Ito order).
-    static const glm::vec4 kPalette[] = {
-        {0.0f, 0.447f, 0.698f, 1.0f}, {0.835f, 0.369f, 0.0f, 1.0f}, {0.0f, 0.620f, 0.451f, 1.0f},
-        {0.800f, 0.475f, 0.655f, 1.0f}, {0.902f, 0.624f, 0.0f, 1.0f}, {0.337f, 0.706f, 0.914f, 1.0f},
-        {0.941f, 0.894f, 0.259f, 1.0f}, {0.3f, 0.3f, 0.3f, 1.0f}};
-    constexpr int n = int(sizeof kPalette / sizeof kPalette[0]);
-    return kPalette[((i % n) + n) % n];
+    constexpr int n = int(ui::theme::kSeries.size());
+    return ui::theme::kSeries[std::size_t(((i % n) + n) % n)];
 }
 
 std::vector<bool> keptTickLabels(const std::vector<float>& centres, const std::vector<float>& extents, float gap) {

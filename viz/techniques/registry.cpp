@@ -1,29 +1,52 @@
 #include "techniques/registry.h"
 
+#include <utility>
+
 #include "core/error.h"
-#include "techniques/minmax/minmax.h"
-#include "techniques/polyvol/polyvol.h"
-#include "techniques/raymarch/raymarch.h"
-#include "techniques/reference/reference.h"
-#include "techniques/slices/slices.h"
-#include "techniques/vsv/ivsv.h"
-#include "techniques/vsv/vsv.h"
 
 namespace viz {
 
-std::vector<std::string> techniqueIds() { return {"reference", "raymarch", "slices", "polyvol", "minmax", "vsv", "ivsv"}; }
+// Each factory of techniques.def, declared here so the list is the one place a technique is named.
+#define VIZ_TECHNIQUE(id, factory) std::unique_ptr<Technique> factory();
+#include "techniques/techniques.def"
+#undef VIZ_TECHNIQUE
+
+namespace {
+
+using Factory = std::unique_ptr<Technique> (*)();
+
+std::vector<std::pair<std::string, Factory>>& entries() {
+    static std::vector<std::pair<std::string, Factory>> list = {
+#define VIZ_TECHNIQUE(id, factory) {#id, &factory},
+#include "techniques/techniques.def"
+#undef VIZ_TECHNIQUE
+    };
+    return list;
+}
+
+}  // namespace
+
+std::vector<std::string> techniqueIds() {
+    std::vector<std::string> ids;
+    for (const auto& [id, make] : entries()) ids.push_back(id);
+    return ids;
+}
 
 std::unique_ptr<Technique> makeTechnique(std::string_view id) {
-    if (id == "reference") return makeReferenceTechnique();
-    if (id == "raymarch") return makeRaymarchTechnique();
-    if (id == "slices") return makeSlicesTechnique();
-    if (id == "polyvol") return makePolyvolTechnique();
-    if (id == "minmax") return makeMinmaxTechnique();
-    if (id == "vsv") return makeVsvTechnique();
-    if (id == "ivsv") return makeIvsvTechnique();
+    for (const auto& [known, make] : entries())
+        if (known == id) return make();
     std::string known;
     for (const std::string& t : techniqueIds()) known += (known.empty() ? "" : ", ") + t;
     throw InputError("unknown technique '" + std::string(id) + "' (known: " + known + ")");
+}
+
+void registerTechnique(const std::string& id, std::unique_ptr<Technique> (*make)()) {
+    for (auto& [known, factory] : entries())
+        if (known == id) {
+            factory = make;
+            return;
+        }
+    entries().emplace_back(id, make);
 }
 
 }  // namespace viz

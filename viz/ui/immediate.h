@@ -17,6 +17,7 @@
 
 #include <glm/glm.hpp>
 
+#include "ui/theme.h"
 #include "ui/text_renderer.h"
 
 namespace viz::ui {
@@ -35,15 +36,15 @@ struct Input {
 
 using Id = std::uint32_t;
 
-struct Style {
-    glm::vec4 text{0.90f, 0.91f, 0.93f, 1.0f};
-    glm::vec4 textDim{0.62f, 0.64f, 0.68f, 1.0f};
-    glm::vec4 panel{0.12f, 0.13f, 0.15f, 0.96f};
-    glm::vec4 frame{0.22f, 0.24f, 0.28f, 1.0f};
-    glm::vec4 frameHot{0.30f, 0.33f, 0.39f, 1.0f};
-    glm::vec4 frameActive{0.36f, 0.42f, 0.52f, 1.0f};
-    glm::vec4 accent{0.33f, 0.62f, 0.95f, 1.0f};
-    glm::vec4 focusRing{0.95f, 0.78f, 0.30f, 1.0f};
+struct Style {  // defaults: the one theme (ui/theme.h)
+    glm::vec4 text = theme::kText;
+    glm::vec4 textDim = theme::kDim;
+    glm::vec4 panel = theme::kWidgetPanel;
+    glm::vec4 frame = theme::kFrame;
+    glm::vec4 frameHot = theme::kFrameHot;
+    glm::vec4 frameActive = theme::kFrameActive;
+    glm::vec4 accent = theme::kWidgetAccent;
+    glm::vec4 focusRing = theme::kFocusRing;
 };
 
 class Context {

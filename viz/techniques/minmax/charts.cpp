@@ -20,18 +20,6 @@ void setRgb(Image& img, int x, int y, glm::vec3 c) {
 
 }  // namespace
 
-Intermediate imageIntermediate(const std::string& id, const std::string& label, const std::string& note,
-                               ViewKind kind, std::shared_ptr<Image> image) {
-    Intermediate i;
-    i.id = id;
-    i.label = label;
-    i.note = note;
-    i.kind = kind;
-    i.extent = {image->width, image->height, 1};
-    i.image = std::move(image);
-    return i;
-}
-
 Image rectifiedView(const std::function<std::vector<float>(int)>& readRow, int columns, int rows, int pickedRow) {
     const int vw = std::min(columns, 1024), vh = std::min(rows, 1024);
     Image img(vw, vh, 3);

@@ -17,8 +17,6 @@
 namespace viz::minmax {
 
 // An Intermediate holding a CPU image.
-Intermediate imageIntermediate(const std::string& id, const std::string& label, const std::string& note,
-                               ViewKind kind, std::shared_ptr<Image> image);
 
 // S / pi as grey, row 0 at the top, the picked row in red; at most 1024 x 1024 (nearest rows and columns).
 // readRow(r) returns row r of S (columns floats).

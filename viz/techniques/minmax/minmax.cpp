@@ -5,46 +5,56 @@
 
 namespace viz::minmax_detail {
 
+const ParamTable<MinmaxSettings>& minmaxParams() {
+    using S = MinmaxSettings;
+    static const ParamTable<S> table =
+        ParamTable<S>()
+            .add(&S::slices, {"slices", "epipolar slices (rows of the rectified map); 0: automatic, every ray within "
+                              "1/(2k) pixel of a slice (k = slice_oversampling) up to 16384 slices; past that the run "
+                              "notes the gap", 0, 0, minmax::kMaxSlices, true})
+            .add(&S::sliceOversampling, {"slice_oversampling", "automatic slices: k puts every camera ray within "
+                                         "1/(2k) pixel of a slice", 2, 1, 64, true})
+            .add(&S::fixedFrame,
+                 {"slice_frame", "screen: the paper's slices, centred on the image centre's slice and as many as the "
+                  "screen needs, so they turn and respace with every view; fixed: alpha = k 2 pi / 2^m from a "
+                  "world-fixed direction about the eye-light axis (slices stay put while that axis does)",
+                  0, 0, 1, true, {"screen", "fixed"}})
+            .add(&S::columns, {"columns", "gamma texels per slice (rounded up to a power of two); 0: the shadow map's "
+                               "size", 0, 0, minmax::kMaxColumns, true})
+            .add(&S::svd, {"integrand", "analytic: the segment integral per lit run (closed form for suns, "
+                           "Gauss-Legendre panels for point and spot lights); svd: rank-N approximation with prefix "
+                           "sums", 0, 0, 1, true, {"analytic", "svd"}})
+            .add(&S::rank, {"rank", "singular vectors kept by integrand=svd", 4, 1, 8, true})
+            .add(&S::textureColumns, {"texture_columns", "integrand=svd: gamma texels of the prefix-sum tables of "
+                                      "Gamma_i T (the light texture's own resolution, lower than the shadow map's)",
+                                      256, 16, 4096, true})
+            .add(&S::linear, {"traversal", "tree: min-max mipmap walk (Figure 5); linear: scan every texel of the row",
+                              0, 0, 1, true, {"tree", "linear"}})
+            .add(&S::marchPoints, {"point_lights", "epipolar: point lights rectified from their cube maps; march: "
+                                   "marched per pixel (the fallback before point lights had an epipolar path, for "
+                                   "comparison)", 0, 0, 1, true, {"epipolar", "march"}})
+            // Each piece is one pointSegment call; llvmpipe stops every loop of a shader invocation after
+            // 65535 iterations in total (all loops together), which more pieces would exceed (README).
+            .add(&S::spotPieces, {"spot_pieces", "spot lights: pieces across the cone, each with its own A_spot * "
+                                  "cookie", 64, 1, 128, true})
+            .add(&S::epipoleRadius, {"epipole_radius", "pixels around the (anti-)epipole marched by brute force", 4, 0,
+                                     1000, false})
+            .add(&S::marchSamples, {"march_samples", "brute-force samples per ray (near the epipole, and lights "
+                                    "without epipolar path)", 512, 1, 16384, true})
+            .declare({"mip_levels", "mipmap passes to run (0: all); fewer stops the frame after the mipmap stage", 0,
+                      0, 13, true})
+            .declare(pickParam('x', "slice row, tree walk and ray chart"))
+            .declare(pickParam('y', "slice row, tree walk and ray chart"))
+            .declare({"trace_steps", "picked pixel's walk: show its first k nodes (0: all); steps the traversal node "
+                      "by node", 0, 0, 100000, true})
+            .add(&S::shadowMap, render::SceneViewPasses::params(), "shadow_map")
+            .declare(render::SceneViewPasses::params(), "area_samples")
+            .add(&S::forceFeatures, forceFeaturesParam());
+    VIZ_CHECK(table.missing().empty(), "minmax declares a shared parameter the shared passes lack");
+    return table;
+}
+
 MinmaxTechnique::MinmaxTechnique() {
-    mParams = {
-        {"slices", "epipolar slices (rows of the rectified map); 0: automatic, every ray within 1/(2k) pixel "
-                   "of a slice (k = slice_oversampling) up to 16384 slices; past that the run notes the gap",
-         0, 0, minmax::kMaxSlices, true},
-        {"slice_oversampling", "automatic slices: k puts every camera ray within 1/(2k) pixel of a slice", 2, 1,
-         64, true},
-        {"slice_frame", "screen: the paper's slices, centred on the image centre's slice and as many as the screen "
-                        "needs, so they turn and respace with every view; fixed: alpha = k 2 pi / 2^m from a "
-                        "world-fixed direction about the eye-light axis (slices stay put while that axis does)",
-         0, 0, 1, true, {"screen", "fixed"}},
-        {"columns", "gamma texels per slice (rounded up to a power of two); 0: the shadow map's size", 0, 0,
-         minmax::kMaxColumns, true},
-        {"integrand", "analytic: the segment integral per lit run (closed form for suns, Gauss-Legendre panels for "
-                      "point and spot lights); svd: rank-N approximation with prefix sums", 0, 0,
-         1, true, {"analytic", "svd"}},
-        {"rank", "singular vectors kept by integrand=svd", 4, 1, 8, true},
-        {"texture_columns", "integrand=svd: gamma texels of the prefix-sum tables of Gamma_i T (the light "
-                            "texture's own resolution, lower than the shadow map's)", 256, 16, 4096, true},
-        {"traversal", "tree: min-max mipmap walk (Figure 5); linear: scan every texel of the row", 0, 0, 1, true,
-         {"tree", "linear"}},
-        {"point_lights", "epipolar: point lights rectified from their cube maps; march: marched per pixel "
-                         "(the fallback before point lights had an epipolar path, for comparison)", 0, 0, 1, true,
-         {"epipolar", "march"}},
-        // Each piece is one pointSegment call; llvmpipe stops every loop of a shader invocation after
-        // 65535 iterations in total (all loops together), which more pieces would exceed (README).
-        {"spot_pieces", "spot lights: pieces across the cone, each with its own A_spot * cookie", 64, 1, 128,
-         true},
-        {"epipole_radius", "pixels around the (anti-)epipole marched by brute force", 4, 0, 1000, false},
-        {"march_samples", "brute-force samples per ray (near the epipole, and lights without epipolar path)",
-         512, 1, 16384, true},
-        {"mip_levels", "mipmap passes to run (0: all); fewer stops the frame after the mipmap stage", 0, 0, 13,
-         true},
-        pickParam('x', "slice row, tree walk and ray chart"),
-        pickParam('y', "slice row, tree walk and ray chart"),
-        {"trace_steps", "picked pixel's walk: show its first k nodes (0: all); steps the traversal node by node",
-         0, 0, 100000, true},
-    };
-    for (ParamInfo& p : render::SceneViewPasses::params()) mParams.push_back(std::move(p));
-    mParams.push_back(forceFeaturesParam());
     mStages = {
         render::SceneViewPasses::shadowStage("minmax"),
         render::SceneViewPasses::surfaceStage("minmax"),
@@ -66,9 +76,10 @@ MinmaxTechnique::MinmaxTechnique() {
     checkStageOrder(mStages, kStageOrder);
 }
 
-std::vector<double> MinmaxTechnique::substepValues(int stage, const Settings& s) const {
-    if (stage != kMipmapIndex) return Technique::substepValues(stage, s);
-    const int wanted = int(s.at("columns")) > 0 ? int(s.at("columns")) : int(s.at("shadow_map"));
+std::vector<double> MinmaxTechnique::substepValues(int stage, const Settings& settings) const {
+    if (stage != kMipmapIndex) return Technique::substepValues(stage, settings);
+    const MinmaxSettings s = minmaxParams().read(settings);
+    const int wanted = s.columns > 0 ? s.columns : s.shadowMap;
     const int columns = minmax::rectifiedColumns(wanted);
     const int levels = std::bit_width(unsigned(columns)) - 1;
     std::vector<double> values;
@@ -142,9 +153,10 @@ std::optional<StiffBound> MinmaxTechnique::stiffBound(const std::string& caseCla
 }
 
 Plan MinmaxTechnique::plan(const scene::Scene& scene, const Settings& settings) const {
+    const MinmaxSettings s = minmaxParams().read(settings);
     Plan p;
-    for (const StageInfo& s : mStages) p.stages.push_back({s.id, true, ""});
-    const bool marchPoints = settings.at("point_lights") == 1.0;
+    for (const StageInfo& st : mStages) p.stages.push_back({st.id, true, ""});
+    const bool marchPoints = s.marchPoints;
     const auto epipolar = [&](const scene::Light& l) {
         return epipolarLight(l) && !(marchPoints && l.type == scene::LightType::Point);
     };
@@ -162,14 +174,14 @@ Plan MinmaxTechnique::plan(const scene::Scene& scene, const Settings& settings) 
                                            "traverse stage)";
         }
     }
-    const bool fixedFrame = settings.at("slice_frame") != 0.0;
+    const bool fixedFrame = s.fixedFrame;
     p.features.push_back({"FIXED_SLICE_FRAME", fixedFrame,
                           fixedFrame ? "slice_frame=fixed: slices at multiples of 2 pi / 2^m from a world-fixed "
                                        "direction (up to twice the paper's count)"
                                      : "slice_frame=screen: the paper's slices, centred on the image centre"});
-    const bool svd = settings.at("integrand") == 1.0;
+    const bool svd = s.svd;
     p.features.push_back({"INTEGRAND_SVD", svd,
-                          svd ? "rank-" + std::to_string(int(settings.at("rank"))) +
+                          svd ? "rank-" + std::to_string(s.rank) +
                                     " SVD of I(beta, gamma) with prefix sums of Gamma_i"
                               : "integrand=analytic: closed form (airlight.glsl pointSegment / "
                                 "directionalSegment) per lit segment"});
@@ -185,7 +197,7 @@ Plan MinmaxTechnique::plan(const scene::Scene& scene, const Settings& settings) 
             p.features.back().why += "; point lights: T is constant, but each slice has its own gamma range, "
                                      "so each has its own table too";
     }
-    const bool linear = settings.at("traversal") == 1.0;
+    const bool linear = s.linear;
     p.features.push_back({"TREE_TRAVERSAL", !linear,
                           linear ? "traversal=linear: every texel of the row up to the ray's end (run-time branch)"
                                  : "stackless walk of Figure 5, climb <= 1 level, delayed update (run-time branch)"});
@@ -199,13 +211,13 @@ Plan MinmaxTechnique::plan(const scene::Scene& scene, const Settings& settings) 
         if (minmax::epipoleNearScreen(scene.camera, axis, 0.25)) {
             near = true;
             nearWhy = "epipole of light '" + l.name + "' on or near the screen: brute-force march within " +
-                      std::to_string(int(settings.at("epipole_radius"))) + " px of it";
+                      std::to_string(int(s.epipoleRadius)) + " px of it";
         } else if (!near) {
             nearWhy = "epipole far off screen (more than a quarter screen beyond every edge): no pixel is "
                       "near it";
         }
     }
-    if (settings.at("epipole_radius") <= 0.0 && near) {
+    if (s.epipoleRadius <= 0.0 && near) {
         near = false;
         nearWhy = "epipole_radius = 0";
     }
@@ -247,7 +259,7 @@ Plan MinmaxTechnique::plan(const scene::Scene& scene, const Settings& settings) 
     render::planCulledLights(scene, p);
     // force_features=1: every stage runs and every permutation pruned by the scene is compiled in (the
     // traverse shader then carries spot, cookie, cube-map and near-epipole code the scene does not use).
-    forcePlan(p, settings.at("force_features") != 0.0,
+    forcePlan(p, s.forceFeatures,
               {"NEAR_EPIPOLE", "EPIPOLAR_POINT", "SPOT", "COOKIE", "SHADOW_MAPS_CUBE", "SHADOW_MAPS_2D"});
     annotatePermutations(p, kDefines);
     return p;
@@ -255,11 +267,12 @@ Plan MinmaxTechnique::plan(const scene::Scene& scene, const Settings& settings) 
 
 FrameOutput MinmaxTechnique::run(const FrameInput& input) {
     const scene::Scene& scene = *input.scene;
-    const Settings& s = input.settings;
+    mSettings = minmaxParams().read(input.settings);
+    const MinmaxSettings& s = mSettings;
     mMarkCamera = scene.camera;
     mMarkSize = {input.width, input.height};
     FrameOutput out;
-    out.plan = plan(scene, s);
+    out.plan = plan(scene, input.settings);
     gl::StageClock clock;
     StageRunner stages(mStages, input, out, mReuse, clock);
     if (!stages.substepOnly(kTraverseIndex)) mMarkTraversed = false;
@@ -268,7 +281,7 @@ FrameOutput MinmaxTechnique::run(const FrameInput& input) {
     // The plan decides (sigma_s = 0 skips the epipolar stages unless force_features=1 runs them).
     const auto runs = [&](int stage) { return out.plan.stages[std::size_t(stage)].runs; };
     // ---- rectify ----
-    const bool svd = s.at("integrand") == 1.0;
+    const bool svd = s.svd;
     const bool toMipmap = stages.run(
         kRectifyIndex,
         [&] {
@@ -277,7 +290,7 @@ FrameOutput MinmaxTechnique::run(const FrameInput& input) {
                 for (LightWork& w : mWork) {
                     if (w.point()) measureRowGamma(w, scene, input);
                     rectify(w);
-                    if (svd) prefixSums(w, scene, input);
+                    if (svd) prefixSums(w, scene);
                 }
             }
         },

@@ -5,13 +5,13 @@ namespace viz::minmax_detail {
 
 void MinmaxTechnique::prepareLights(const scene::Scene& scene, const FrameInput& input, std::vector<std::string>& notes) {
     const auto& lights = mView.lights().lights();
-    const int columns = int(input.settings.at("columns")) > 0 ? int(input.settings.at("columns"))
-                                                                : int(input.settings.at("shadow_map"));
+    const MinmaxSettings& s = mSettings;
+    const int columns = s.columns > 0 ? s.columns : s.shadowMap;
     std::vector<LightWork> work;
     mBruteLights.clear();
     for (int i = 0; i < int(lights.size()); ++i) {
         const auto& L = lights[std::size_t(i)];
-        const bool point = L.info.x == render::hd::kLightPoint && input.settings.at("point_lights") == 0.0;
+        const bool point = L.info.x == render::hd::kLightPoint && !s.marchPoints;
         const bool epipolar = (L.info.x == render::hd::kLightSpot || L.info.x == render::hd::kLightDirectional ||
                                point) &&
                               L.info.z >= 0;
@@ -22,10 +22,9 @@ void MinmaxTechnique::prepareLights(const scene::Scene& scene, const FrameInput&
         LightWork w;
         w.gpuIndex = i;
         w.setup = minmax::setupLight({.light = &L, .camera = &scene.camera, .width = input.width,
-                                      .height = input.height, .slices = int(input.settings.at("slices")),
+                                      .height = input.height, .slices = s.slices,
                                       .columns = columns,
-                                      .oversampling = int(input.settings.at("slice_oversampling")),
-                                      .fixedFrame = input.settings.at("slice_frame") != 0.0});
+                                      .oversampling = s.sliceOversampling, .fixedFrame = s.fixedFrame});
         sliceGapNote(scene, L.info.w, input, w.setup, notes);
         // Reuse the previous textures when the sizes agree.
         const std::size_t k = work.size();
@@ -51,10 +50,10 @@ void MinmaxTechnique::prepareLights(const scene::Scene& scene, const FrameInput&
     mWork = std::move(work);
 }
 
-void MinmaxTechnique::sliceGapNote(const scene::Scene& scene, int light, const FrameInput& input, const minmax::Setup& setup,
-                         std::vector<std::string>& notes) {
-    const int fixed = int(input.settings.at("slices"));
-    const int k = std::max(1, int(input.settings.at("slice_oversampling")));
+void MinmaxTechnique::sliceGapNote(const scene::Scene& scene, int light, const FrameInput& input,
+                                   const minmax::Setup& setup, std::vector<std::string>& notes) const {
+    const int fixed = mSettings.slices;
+    const int k = std::max(1, mSettings.sliceOversampling);
     const double promised = fixed > 0 ? 1.0 : 1.0 / k;  // largest gap the setting stands for (pixels)
     if (setup.maxSliceGap <= promised * (1.0 + 1e-6)) return;
     const std::string name = light >= 0 && light < int(scene.lights.size()) ? scene.lights[std::size_t(light)].name
@@ -123,13 +122,13 @@ void MinmaxTechnique::rectify(LightWork& w) {
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
 }
 
-void MinmaxTechnique::prefixSums(LightWork& w, const scene::Scene& scene, const FrameInput& input) {
-    const Settings& s = input.settings;
+void MinmaxTechnique::prefixSums(LightWork& w, const scene::Scene& scene) {
+    const MinmaxSettings& s = mSettings;
     const auto& f = w.setup.frame;
-    const int rank = int(s.at("rank"));
+    const int rank = s.rank;
     w.lowRank = minmax::lowRankIntegrand(f, w.setup.betaLo, w.setup.betaHi, scene.medium.sigma_s,
                                          scene.medium.sigma_t(), scene.medium.g, rank);
-    const int texels = int(s.at("texture_columns"));
+    const int texels = s.textureColumns;
     // Spot: T varies with alpha; point: every row has its own gamma range. Both need a table per slice.
     const bool perRow = f.kind != LightKind::Directional;
     const int rows = perRow ? f.slices : 1;
@@ -217,14 +216,14 @@ const gl::Program& MinmaxTechnique::traverseProgram(const Plan& plan) {
 void MinmaxTechnique::traverse(const gl::Program& program, const scene::Scene& scene, const FrameInput& input,
               const LightWork* work, int gpuIndex, bool writeCoords) {
     const scene::Camera& cam = scene.camera;
-    const Settings& s = input.settings;
+    const MinmaxSettings& s = mSettings;
     program.use();
     render::bindCameraRay(program, cam, input.width, input.height);
     mMedium.bind(scene.medium);
-    program.set("uLinear", s.at("traversal") == 1.0);
-    program.set("uPieces", int(s.at("spot_pieces")));
-    program.set("uMarchSamples", int(s.at("march_samples")));
-    program.set("uEpipoleRadius", float(s.at("epipole_radius")));
+    program.set("uLinear", s.linear);
+    program.set("uPieces", s.spotPieces);
+    program.set("uMarchSamples", s.marchSamples);
+    program.set("uEpipoleRadius", float(s.epipoleRadius));
     program.set("uWriteCoords", writeCoords);
     glm::vec4 epipoles(-1e9f);
     if (work) {
@@ -236,7 +235,7 @@ void MinmaxTechnique::traverse(const gl::Program& program, const scene::Scene& s
         if (e.antiEpipole.valid) epipoles = glm::vec4(epipoles.x, epipoles.y, glm::vec2(e.antiEpipole.pixel));
         work->tree.bindUnit(render::hd::kFirstFreeTextureUnit + 1);
         if (work->point()) work->rowGamma.bindBase(GL_SHADER_STORAGE_BUFFER, render::hd::kFirstFreeSsboBinding);
-        if (s.at("integrand") == 1.0 && work->prefix) {
+        if (s.svd && work->prefix) {
             const minmax::LowRank& lr = work->lowRank;
             program.set("uRank", lr.rank);
             program.set("uPrefixTexels", work->prefix.size().x - 1);

@@ -18,6 +18,7 @@
 
 #include "core/error.h"
 #include "debug/permutations.h"
+#include "debug/param_table.h"
 #include "debug/stage_runner.h"
 #include "gl/buffer.h"
 #include "gl/program.h"
@@ -108,6 +109,23 @@ struct LightWork {
     int prefixRows = 0;
 };
 
+// The settings a run reads, each declared once with its parameter (minmaxParams(), debug/param_table.h).
+struct MinmaxSettings {
+    int slices = 0, sliceOversampling = 0;
+    bool fixedFrame = false;  // slice_frame=fixed
+    int columns = 0;
+    bool svd = false;  // integrand=svd
+    int rank = 0, textureColumns = 0;
+    bool linear = false;       // traversal=linear
+    bool marchPoints = false;  // point_lights=march
+    int spotPieces = 0;
+    double epipoleRadius = 0.0;
+    int marchSamples = 0;
+    int shadowMap = 0;
+    bool forceFeatures = false;
+};
+const ParamTable<MinmaxSettings>& minmaxParams();
+
 class MinmaxTechnique final : public Technique {
 public:
     MinmaxTechnique();
@@ -122,7 +140,8 @@ public:
         return "1D min-max mipmaps in epipolar space (Chen, Baran, Durand, Jarosz 2011)";
     }
     const std::vector<StageInfo>& stages() const override { return mStages; }
-    const std::vector<ParamInfo>& params() const override { return mParams; }
+    const std::vector<ParamInfo>& params() const override { return minmaxParams().infos(); }
+    Controls controls() const override { return {.pickedPixel = true}; }
     bool needsGl() const override { return true; }
 
     // Shadow-map size, slice count and rank (issue 9), cheapest first: the analytic integrand at growing
@@ -166,8 +185,8 @@ private:
     // settings promise (the slice cap reached, or a fixed count too low for the image).
     void prepareLights(const scene::Scene& scene, const FrameInput& input, std::vector<std::string>& notes);
 
-    static void sliceGapNote(const scene::Scene& scene, int light, const FrameInput& input, const minmax::Setup& setup,
-                             std::vector<std::string>& notes);
+    void sliceGapNote(const scene::Scene& scene, int light, const FrameInput& input, const minmax::Setup& setup,
+                      std::vector<std::string>& notes) const;
 
     void setFrameUniforms(const gl::Program& p, const minmax::EpipolarFrame<float>& f) const;
 
@@ -180,7 +199,7 @@ private:
 
     // integrand=svd: factorise I(beta, gamma) sin(beta) for this light's frame over the screen's betas, then
     // fill the prefix-sum tables of Gamma_i T (one row per slice for a spot, one shared row otherwise).
-    void prefixSums(LightWork& w, const scene::Scene& scene, const FrameInput& input);
+    void prefixSums(LightWork& w, const scene::Scene& scene);
 
     // Leaves, then levels L-1 .. 0 (one pass each); `wanted` > 0 stops after that many level passes.
     void buildTree(LightWork& w, int wanted);
@@ -217,7 +236,7 @@ private:
 
     void publishTraverse(FrameOutput& out, const FrameInput& input);
 
-    std::vector<ParamInfo> mParams;
+    MinmaxSettings mSettings;  // the current run's, read once at its start
     std::vector<StageInfo> mStages;
     render::SceneViewPasses mView;
     render::MediumBlock mMedium;  // sigma_s, sigma_t, g for the shaders (common/medium.glsl)

@@ -66,7 +66,7 @@ void MinmaxTechnique::publishRectified(FrameOutput& out, const FrameInput& input
         return std::vector<float>(first, first + columns);
     };
     auto img = std::make_shared<Image>(minmax::rectifiedView(row, columns, t.size().y, pickedRow(input)));
-    out.intermediates.push_back(minmax::imageIntermediate(
+    out.intermediates.push_back(cpuIntermediate(
         kRectifiedView, "Rectified map, picked row",
         "S / pi as grey (row 0 at the top = slice 0; nearest rows and columns when larger than 1024), the "
         "picked pixel's slice in red", ViewKind::Color, img));
@@ -80,11 +80,11 @@ void MinmaxTechnique::publishLowRank(FrameOutput& out) const {
     char note[160];
     std::snprintf(note, sizeof note, "log10 bars over 12 decades, kept in green; rank-%d reconstruction error of "
                   "I sin(beta) on the 64x64 grid: %.3g", lr.rank, lr.reconstructionError);
-    out.intermediates.push_back(minmax::imageIntermediate(kSingularValues, "Singular values of I", note,
+    out.intermediates.push_back(cpuIntermediate(kSingularValues, "Singular values of I", note,
                                                           ViewKind::Color,
                                                           std::make_shared<Image>(minmax::singularValuesView(lr))));
     out.intermediates.back().plots = {minmax::singularValuesPlot(lr)};
-    out.intermediates.push_back(minmax::imageIntermediate(
+    out.intermediates.push_back(cpuIntermediate(
         kBasis, "B_i(beta) and Gamma_i(gamma)",
         "top: B_i over the screen's beta range; bottom: Gamma_i over [gammaLo, gammaHi]; each half scaled to its "
         "largest magnitude, zero in the middle; i = 1.. in red, green, blue, yellow, ...",
@@ -92,7 +92,7 @@ void MinmaxTechnique::publishLowRank(FrameOutput& out) const {
     out.intermediates.back().plots = minmax::basisPlots(lr, w.setup.frame.kind == minmax::LightKind::Directional);
     auto error = std::make_shared<Image>(1, 1, 1);
     error->at(0, 0) = float(lr.reconstructionError);
-    out.intermediates.push_back(minmax::imageIntermediate(
+    out.intermediates.push_back(cpuIntermediate(
         kReconstructionError, "Rank-N reconstruction error",
         "||I - I_N|| / ||I|| (Frobenius) of I sin(beta) on the 64 x 64 grid, first epipolar light",
         ViewKind::Scalar, error));
@@ -108,7 +108,7 @@ void MinmaxTechnique::publishRowGamma(FrameOutput& out) const {
     const std::vector<std::uint32_t> bits = it->rowGamma.download<std::uint32_t>();
     auto img = std::make_shared<Image>(1, int(bits.size()), 1);
     for (std::size_t i = 0; i < bits.size(); ++i) img->at(0, int(i), 0) = std::bit_cast<float>(bits[i]);
-    out.intermediates.push_back(minmax::imageIntermediate(
+    out.intermediates.push_back(cpuIntermediate(
         kRowGamma, "Gamma range per slice (point light)",
         "row i = slice i: gamma_hi, the largest angle at the light (between light->eye and light->point) that "
         "the slice's pixels' rays reach at their distance d; the row's columns cover [0, gamma_hi] (0: no "
@@ -132,7 +132,7 @@ void MinmaxTechnique::publishTree(FrameOutput& out, const FrameInput& input) con
     out.intermediates.back().sentinels = outsideAndUnblocked();
     out.intermediates.back().channels = {{"min S below the node", "radians", ViewKind::Scalar, 0.0f, float(std::numbers::pi)},
                                          {"max S below the node", "radians", ViewKind::Scalar, 0.0f, float(std::numbers::pi)}};
-    out.intermediates.push_back(minmax::imageIntermediate(
+    out.intermediates.push_back(cpuIntermediate(
         kPyramid, "Min-max pyramid, picked row",
         "level 0 (root) at the top; each band: min (upper half), max (lower half) as beta / pi; blue = level "
         "not built yet (mip_levels)", ViewKind::Color,
@@ -167,7 +167,7 @@ void MinmaxTechnique::publishTraverse(FrameOutput& out, const FrameInput& input)
     glGetTextureSubImage(mRayCoords.id(), 0, px.x, input.height - 1 - px.y, 0, 1, 1, 1, GL_RGBA, GL_FLOAT,
                          sizeof coords, coords);
     const int row = std::clamp(int(coords[0]), 0, w.setup.frame.slices - 1);
-    out.intermediates.push_back(minmax::imageIntermediate(
+    out.intermediates.push_back(cpuIntermediate(
         kTrace, "Picked ray vs heightfield",
         "top: S of the picked pixel's slice as a heightfield over columns (grey; a ray is lit where it passes "
         "below it: beta < S; vertical range fitted to the row and the ray), the ray's beta in yellow up to its "

@@ -5,39 +5,50 @@
 
 namespace viz::polyvol_detail {
 
+const ParamTable<PolyvolSettings>& polyvolParams() {
+    using S = PolyvolSettings;
+    static const ParamTable<S> table =
+        ParamTable<S>()
+            .add(&S::adaptive, {"tessellation", "static: one vertex per shadow-map texel; adaptive: refined where the "
+                                "edge measure is large", 0, 0, 1, true, {"static", "adaptive"}})
+            .add(&S::edgeMeasure,
+                 {"edge_measure", "adaptive: laplacian (the paper: misses saddles, z = xy) or curvature (the absolute "
+                  "second differences along x, y and both diagonals: zero only on a plane)",
+                  1, 0, 1, true, {"laplacian", "curvature"}})
+            .add(&S::lut, {"airlight", "analytic: the stable segment integral (common/airlight.glsl: Gauss-Legendre "
+                           "panels for point and spot lights, closed form for suns); lut: 2D lookup table (supplement)",
+                           0, 0, 1, true, {"analytic", "lut"}})
+            .add(&S::threshold, {"threshold", "adaptive: edge measure of the vertex distances, relative to the map's "
+                                 "depth range, above which a vertex needs the finest level", 1e-4, 0, 1e3, false})
+            .add(&S::spotPieces, {"spot_pieces", "spot and VPL lights: equal-angle pieces per penumbra (or lobe) part "
+                                  "of a segment", 8, 1, 256, true})
+            .add(&S::crackCheck, {"crack_check", "1: constant integrand; the signed crossing count per pixel reveals "
+                                  "holes", 0, 0, 1, true})
+            .add(&S::drawTriangles, {"draw_triangles", "stepping: draw only the first N triangles of each light "
+                                     "volume (0: all)", 0, 0, 1e12, true})
+            .add(&S::originAtSurface,
+                 {"origin", "eye: each crossing adds +-L(0, x); surface: -+L(x, d), plus c L(0, d) once per pixel "
+                  "(crossings clamped to d add exactly 0)", 0, 0, 1, true, {"eye", "surface"}})
+            .add(&S::wireframe,
+                 {"wireframe", "also draw the volume mesh as a wireframe (polyvol.mesh): camera (from the camera), "
+                  "light (from the first 2D light), orbit (from an orbit camera of its own: mesh_yaw, mesh_pitch, "
+                  "mesh_zoom; with the scene, the camera frustum and the lights)",
+                  0, 0, 3, true, {"off", "camera", "light", "orbit"}})
+            .add(&S::meshYaw, orbitParams("wireframe=orbit"), kOrbitYaw)
+            .add(&S::meshPitch, orbitParams("wireframe=orbit"), kOrbitPitch)
+            .add(&S::meshZoom, orbitParams("wireframe=orbit"), kOrbitZoom)
+            .add(&S::stopLevel, {"stop_level", "adaptive stepping: quads of this level are not refined further (-1: "
+                                 "refine fully)", -1, -1, 13, true})
+            .add(&S::cookieMask, {"cookie_mask", "cookie texels darker than this (brightest channel, linear) close the "
+                                  "volume", 1.0 / 512.0, 0, 1, false})
+            .add(&S::shadowMap, render::SceneViewPasses::params(), "shadow_map")
+            .add(&S::areaSamples, render::SceneViewPasses::params(), "area_samples")
+            .add(&S::forceFeatures, forceFeaturesParam());
+    VIZ_CHECK(table.missing().empty(), "polyvol declares a shared parameter the shared passes lack");
+    return table;
+}
+
 PolyvolTechnique::PolyvolTechnique() {
-    mParams = {
-        {"tessellation", "static: one vertex per shadow-map texel; adaptive: refined where the edge measure is "
-                         "large",
-         0, 0, 1, true, {"static", "adaptive"}},
-        {"edge_measure", "adaptive: laplacian (the paper: misses saddles, z = xy) or curvature (the absolute second "
-                         "differences along x, y and both diagonals: zero only on a plane)",
-         1, 0, 1, true, {"laplacian", "curvature"}},
-        {"airlight", "analytic: the stable segment integral (common/airlight.glsl: Gauss-Legendre panels for "
-                    "point and spot lights, closed form for suns); lut: 2D lookup table (supplement)",
-         0, 0, 1, true, {"analytic", "lut"}},
-        {"threshold", "adaptive: edge measure of the vertex distances, relative to the map's depth range, above "
-         "which a vertex needs the finest level", 1e-4, 0, 1e3, false},
-        {"spot_pieces", "spot and VPL lights: equal-angle pieces per penumbra (or lobe) part of a segment", 8, 1, 256,
-         true},
-        {"crack_check", "1: constant integrand; the signed crossing count per pixel reveals holes", 0, 0, 1, true},
-        {"draw_triangles", "stepping: draw only the first N triangles of each light volume (0: all)", 0, 0, 1e12,
-         true},
-        {"origin", "eye: each crossing adds +-L(0, x); surface: -+L(x, d), plus c L(0, d) once per pixel "
-         "(crossings clamped to d add exactly 0)", 0, 0, 1, true, {"eye", "surface"}},
-        {"wireframe", "also draw the volume mesh as a wireframe (polyvol.mesh): camera (from the camera), light "
-         "(from the first 2D light), orbit (from an orbit camera of its own: mesh_yaw, mesh_pitch, mesh_zoom; with "
-         "the scene, the camera frustum and the lights)", 0, 0, 3, true, {"off", "camera", "light", "orbit"}},
-        {"mesh_yaw", "wireframe=orbit: orbit camera's angle about the vertical (degrees)", 35, -360, 360, false},
-        {"mesh_pitch", "wireframe=orbit: orbit camera's angle above the horizon (degrees)", 25, -89, 89, false},
-        {"mesh_zoom", "wireframe=orbit: orbit camera's zoom (1 fits the scene and the camera)", 1, 0.05, 50, false},
-        {"stop_level", "adaptive stepping: quads of this level are not refined further (-1: refine fully)", -1, -1,
-         13, true},
-        {"cookie_mask", "cookie texels darker than this (brightest channel, linear) close the volume", 1.0 / 512.0,
-         0, 1, false},
-    };
-    for (ParamInfo& p : render::SceneViewPasses::params()) mParams.push_back(std::move(p));
-    mParams.push_back(forceFeaturesParam());
     mStages = {
         render::SceneViewPasses::shadowStage("polyvol"),
         render::SceneViewPasses::surfaceStage("polyvol"),
@@ -52,10 +63,11 @@ PolyvolTechnique::PolyvolTechnique() {
     checkStageOrder(mStages, kStageOrder);
 }
 
-std::vector<double> PolyvolTechnique::substepValues(int stage, const Settings& s) const {
-    if (stage != kVolumeIndex) return Technique::substepValues(stage, s);
-    const int n = int(s.at("shadow_map"));
-    if (!adaptiveBySettings(s) || n < 16 || !std::has_single_bit(unsigned(n))) return {};
+std::vector<double> PolyvolTechnique::substepValues(int stage, const Settings& settings) const {
+    if (stage != kVolumeIndex) return Technique::substepValues(stage, settings);
+    const PolyvolSettings s = polyvolParams().read(settings);
+    const int n = s.shadowMap;
+    if (!s.adaptiveKept() || n < 16 || !std::has_single_bit(unsigned(n))) return {};
     const int coarse = std::countr_zero(unsigned(n)) - polyvol::AdaptiveTessellation::kCoarseSteps;
     std::vector<double> values;
     for (int level = coarse; level >= 1; --level) values.push_back(double(level));
@@ -101,18 +113,19 @@ std::optional<StiffBound> PolyvolTechnique::stiffBound(const std::string& caseCl
 }
 
 Plan PolyvolTechnique::plan(const scene::Scene& scene, const Settings& settings) const {
+    const PolyvolSettings s = polyvolParams().read(settings);
     Plan p;
-    for (const StageInfo& s : mStages) p.stages.push_back({s.id, true, ""});
-    const bool constant = settings.at("crack_check") != 0.0;
+    for (const StageInfo& st : mStages) p.stages.push_back({st.id, true, ""});
+    const bool constant = s.crackCheck;
     if (scene.medium.sigma_s == 0.0 && !constant) {
         p.stages[kVolumeIndex].runs = false;
         p.stages[kVolumeIndex].why = "sigma_s = 0: the medium scatters nothing, L_air = 0";
     } else {
-        const int n = int(settings.at("shadow_map"));
+        const int n = s.shadowMap;
         std::int64_t triangles = 0;
         // VPL cubes are capped at 256^2 per face (render::SceneViewPasses).
         const int vpl = std::min(n, 256);
-        const int areaSamples = int(settings.at("area_samples"));
+        const int areaSamples = s.areaSamples;
         auto cube = [](int m) { return gridTriangleCountFor(m, 6) + 12 * 2 * std::int64_t(m - 1) + 8; };
         for (const scene::Light& l : scene.lights) {
             if (!render::lightReachesView(l, scene.camera)) continue;  // culled: no map, no volume
@@ -124,7 +137,7 @@ Plan PolyvolTechnique::plan(const scene::Scene& scene, const Settings& settings)
                 triangles += gridTriangleCountFor(n, 1) + 3 * 4 * std::int64_t(n - 1);
             }
         }
-        const bool adaptive = settings.at("tessellation") != 0.0;
+        const bool adaptive = s.adaptive;
         p.stages[kVolumeIndex].why =
             adaptive ? "adaptive tessellation: at most " + std::to_string(triangles) +
                            " triangles (the static count; the run's count is in polyvol.mesh), " +
@@ -138,10 +151,10 @@ Plan PolyvolTechnique::plan(const scene::Scene& scene, const Settings& settings)
     });
     const bool hasPoint = render::hasLightOfType(scene, scene::LightType::Point);
     const bool maps2D = hasSpot || render::hasLightOfType(scene, scene::LightType::Directional);
-    const bool lut = settings.at("airlight") != 0.0;
+    const bool lut = s.lut;
     p.features.push_back({"SPOT", hasSpot,
                           hasSpot ? "spot cone: volume follows the cone; segments clipped to the cones, " +
-                                        std::to_string(int(settings.at("spot_pieces"))) +
+                                        std::to_string(s.spotPieces) +
                                         " equal-angle pieces per penumbra part"
                                   : "no spot light in the scene"});
     p.features.push_back({"COOKIE", hasCookie,
@@ -158,7 +171,7 @@ Plan PolyvolTechnique::plan(const scene::Scene& scene, const Settings& settings)
     p.features.push_back({"AIRLIGHT_LUT", lut,
                           lut ? "airlight=lut: 2D table of the unit point-light integral (supplement)"
                               : "airlight=analytic: segment integral of common/airlight.glsl, no table"});
-    const int areaSamples = int(settings.at("area_samples"));
+    const int areaSamples = s.areaSamples;
     p.features.push_back({"AREA_VPLS", hasArea,
                           hasArea ? "each area light -> " + std::to_string(areaSamples * areaSamples) +
                                         " virtual point lights, each a cube light volume (cosine lobe over "
@@ -168,11 +181,11 @@ Plan PolyvolTechnique::plan(const scene::Scene& scene, const Settings& settings)
     // (measured, README "Benchmark: static vs adaptive": from 256^2 on colonnade but only from 512^2
     // on forest, where the edge map and refinement passes cost more than the triangles they save).
     // force_features=1 keeps it on at any size, so its steps can be shown on small maps.
-    const bool adaptiveAsked = settings.at("tessellation") != 0.0;
-    const bool forced = settings.at("force_features") != 0.0;
-    const int mapSize = int(settings.at("shadow_map"));
+    const bool adaptiveAsked = s.adaptive;
+    const bool forced = s.forceFeatures;
+    const int mapSize = s.shadowMap;
     const bool pays = mapSize >= kAdaptivePaysFrom;
-    const bool adaptive = maps2D && adaptiveBySettings(settings);
+    const bool adaptive = maps2D && s.adaptiveKept();
     std::string why;
     if (!adaptiveAsked)
         why = "tessellation=static: one vertex per texel" +
@@ -190,23 +203,24 @@ Plan PolyvolTechnique::plan(const scene::Scene& scene, const Settings& settings)
               std::string(pays ? "; measured to pay off at this size" : "; forced on below its break-even size");
     p.features.push_back({"ADAPTIVE", adaptive, why});
     render::planCulledLights(scene, p);
-    forcePlan(p, settings.at("force_features") != 0.0, {"SPOT", "COOKIE", "SHADOW_MAPS_CUBE", "SHADOW_MAPS_2D"});
+    forcePlan(p, s.forceFeatures, {"SPOT", "COOKIE", "SHADOW_MAPS_CUBE", "SHADOW_MAPS_2D"});
     annotatePermutations(p, kDefines);
     return p;
 }
 
 FrameOutput PolyvolTechnique::run(const FrameInput& input) {
     const scene::Scene& scene = *input.scene;
-    const Settings& s = input.settings;
+    mSettings = polyvolParams().read(input.settings);
+    const PolyvolSettings& s = mSettings;
     FrameOutput out;
-    out.plan = plan(scene, s);
+    out.plan = plan(scene, input.settings);
     // The light volume mesh view: as `wireframe` says, or (wireframe=off) from the orbit camera when
     // the caller shows polyvol.mesh, so that the view always has a picture.
-    mWireMode = int(s.at("wireframe"));
+    mWireMode = s.wireframe;
     if (mWireMode == 0 && std::find(input.views.begin(), input.views.end(), kMesh) != input.views.end()) mWireMode = 3;
 
     mMarkZfar = scene.camera.zfar;
-    mMarkCookieMask = float(s.at("cookie_mask"));
+    mMarkCookieMask = float(s.cookieMask);
     mAdaptiveUsed = false;
     mAdaptiveLights.clear();
     mMarkKeysRead = false;
@@ -216,7 +230,7 @@ FrameOutput PolyvolTechnique::run(const FrameInput& input) {
     if (!mView.runSharedStages(stages, input, "polyvol", out)) return out;
 
     std::int64_t triangles = 0;
-    const bool lut = s.at("airlight") != 0.0;
+    const bool lut = s.lut;
     const bool more = stages.run(
         kVolumeIndex,
         [&] {
@@ -231,7 +245,7 @@ FrameOutput PolyvolTechnique::run(const FrameInput& input) {
             clampAirlight();
         },
         [&] {
-            publishVolume(out, s, triangles);
+            publishVolume(out, triangles);
             if (lut) publishLut(out, input, scene.medium.g);
         });
     if (!more) return out;

@@ -141,7 +141,7 @@ polyvol::VolumeGrid PolyvolTechnique::describe(const render::GpuLightCpu& L, int
 }
 
 std::int64_t PolyvolTechnique::drawVolumes(const scene::Scene& scene, const FrameInput& input, const Plan& plan) {
-    const Settings& s = input.settings;
+    const PolyvolSettings& s = mSettings;
     const scene::Camera& cam = scene.camera;
     const gl::Program& program = volumeProgram(plan);
     const int n = mView.shadows().size();
@@ -149,20 +149,19 @@ std::int64_t PolyvolTechnique::drawVolumes(const scene::Scene& scene, const Fram
     // the lights (render::MeshView); set up before the volume pass's state.
     if (mWireMode == 3)
         mMeshView.begin(scene, mView.gpuScene(),
-                        {s.at("mesh_yaw"), s.at("mesh_pitch"), s.at("mesh_zoom")}, input.width, input.height);
+                        {s.meshYaw, s.meshPitch, s.meshZoom}, input.width, input.height);
     // Each light's ball radius, before the volume pass's state: nearRadius runs a compute pass.
     mNearRadii.clear();
     for (const render::GpuLightCpu& L : mView.lights().lights())
-        mNearRadii.push_back(L.info.z < 0 || s.at("crack_check") != 0.0 ? 0.0f : nearRadius(L, cam, input.height));
+        mNearRadii.push_back(L.info.z < 0 || s.crackCheck ? 0.0f : nearRadius(L, cam, input.height));
     program.use();
     program.set("uViewProj", render::eyeRelativeViewProjection(cam, input.width, input.height));
     render::bindCameraRay(program, cam, input.width, input.height);
     program.set("uNear", float(cam.znear));
     mMedium.bind(scene.medium);
-    program.set("uSpotPieces", int(s.at("spot_pieces")));
-    program.set("uConstant", int(s.at("crack_check")));
-    const bool atSurface = s.at("origin") != 0.0;
-    program.set("uOriginAtSurface", atSurface ? 1 : 0);
+    program.set("uSpotPieces", s.spotPieces);
+    program.set("uConstant", s.crackCheck ? 1 : 0);
+    program.set("uOriginAtSurface", s.originAtSurface ? 1 : 0);
     mView.lights().bind();
     mView.shadows().bind();
     mView.surface().distance().bindUnit(render::hd::kFirstFreeTextureUnit);
@@ -181,7 +180,7 @@ std::int64_t PolyvolTechnique::drawVolumes(const scene::Scene& scene, const Fram
     glEnable(GL_BLEND);
     glBlendEquation(GL_FUNC_ADD);
     glBlendFunc(GL_ONE, GL_ONE);
-    const std::int64_t limit = std::int64_t(s.at("draw_triangles"));
+    const std::int64_t limit = s.drawTriangles;
     const bool adaptiveWanted = featureEnabled(plan, "ADAPTIVE");
     const int wire = mWireMode;
     mWireDrawn = false;
@@ -205,7 +204,7 @@ std::int64_t PolyvolTechnique::drawVolumes(const scene::Scene& scene, const Fram
         const int type = L.info.x;
         if (L.info.z < 0) continue;
         (void)type;
-        polyvol::VolumeGrid grid = describe(L, i, n, cam.zfar, float(s.at("cookie_mask")));
+        polyvol::VolumeGrid grid = describe(L, i, n, cam.zfar, float(s.cookieMask));
         const bool adaptive = adaptiveWanted && grid.mode != kModeCube;
         // The crack detector counts crossings of the whole mesh: no ball there.
         const float radius = mNearRadii[std::size_t(i)];
@@ -214,7 +213,8 @@ std::int64_t PolyvolTechnique::drawVolumes(const scene::Scene& scene, const Fram
         if (adaptive) {
             // Compute passes in between: the draw state is set again afterwards.
             grid.keyStride = n + 1;
-            mTess.build(grid, polyvol::EdgeMeasure(int(s.at("edge_measure"))), s.at("threshold"), int(substepLimit(input, kVolumeIndex)), mDefines, mProgramKey);
+            mTess.build(grid, s.edgeMeasure, s.threshold, int(substepLimit(input, kVolumeIndex)), mDefines,
+                        mProgramKey);
             mAdaptiveUsed = true;
             mEdgeLight = i;
             mAdaptiveLights.push_back(i);
@@ -235,7 +235,7 @@ std::int64_t PolyvolTechnique::drawVolumes(const scene::Scene& scene, const Fram
             glDrawArrays(GL_TRIANGLES, 0, GLsizei(3 * extraTriangles));
             drawn += extraTriangles;
             if (wire) drawWire(input, L, grid, 0, extraTriangles, true);
-            if (atSurface || radius > 0.0f) resolve(input, i, radius);
+            if (s.originAtSurface || radius > 0.0f) resolve(input, i, radius);
             continue;
         }
         const std::int64_t gridTriangles = polyvol::gridTriangleCount(grid.mapSize, grid.faces);
@@ -249,7 +249,7 @@ std::int64_t PolyvolTechnique::drawVolumes(const scene::Scene& scene, const Fram
         glDrawArrays(GL_TRIANGLES, 0, GLsizei(3 * count));
         drawn += count;
         if (wire) drawWire(input, L, grid, gridTriangles, std::min(count, gridTriangles + extraTriangles) - gridTriangles, false);
-        if (atSurface || radius > 0.0f) resolve(input, i, radius);
+        if (s.originAtSurface || radius > 0.0f) resolve(input, i, radius);
     }
     glDisable(GL_DEPTH_CLAMP);
     glDisable(GL_BLEND);
@@ -303,7 +303,7 @@ float PolyvolTechnique::nearRadius(const render::GpuLightCpu& L, const scene::Ca
 }
 
 void PolyvolTechnique::resolve(const FrameInput& input, int light, float radius) {
-    const Settings& s = input.settings;
+    const PolyvolSettings& s = mSettings;
     const scene::Scene& scene = *input.scene;
     const scene::Camera& cam = scene.camera;
     if (!mResolve || mResolveKey != mProgramKey) {
@@ -315,10 +315,10 @@ void PolyvolTechnique::resolve(const FrameInput& input, int light, float radius)
     mResolve.use();
     render::bindCameraRay(mResolve, cam, input.width, input.height);
     mMedium.bind(scene.medium);
-    mResolve.set("uSpotPieces", int(s.at("spot_pieces")));
+    mResolve.set("uSpotPieces", s.spotPieces);
     mResolve.set("uLightIndex", light);
-    mResolve.set("uConstant", int(s.at("crack_check")));
-    mResolve.set("uOriginAtSurface", s.at("origin") != 0.0 ? 1 : 0);
+    mResolve.set("uConstant", s.crackCheck ? 1 : 0);
+    mResolve.set("uOriginAtSurface", s.originAtSurface ? 1 : 0);
     mResolve.set("uNearRadius", radius);
     mTotal.bindImage(0, GL_READ_WRITE);
     mPositive.bindImage(1, GL_READ_WRITE);

@@ -18,6 +18,7 @@
 #include "core/error.h"
 #include "gl/buffer.h"
 #include "gl/framebuffer.h"
+#include "debug/param_table.h"
 #include "debug/permutations.h"
 #include "debug/stage_runner.h"
 #include "gl/program.h"
@@ -82,12 +83,28 @@ inline const PermutationTable kDefines = {
 // (README, benchmark: forest broke even between 256^2 and 512^2).
 constexpr int kAdaptivePaysFrom = 512;
 
-// Whether the settings ask for adaptive tessellation at a size where the plan keeps it (or force it);
-// the plan also needs a 2D map in the scene.
-inline bool adaptiveBySettings(const Settings& s) {
-    return s.at("tessellation") != 0.0 &&
-           (int(s.at("shadow_map")) >= kAdaptivePaysFrom || s.at("force_features") != 0.0);
-}
+// The settings a run reads, each declared once with its parameter (polyvolParams(), debug/param_table.h).
+struct PolyvolSettings {
+    bool adaptive = false;  // tessellation=adaptive
+    polyvol::EdgeMeasure edgeMeasure = polyvol::EdgeMeasure::Laplacian;
+    bool lut = false;  // airlight=lut
+    double threshold = 0.0;
+    int spotPieces = 0;
+    bool crackCheck = false;
+    std::int64_t drawTriangles = 0;
+    bool originAtSurface = false;  // origin=surface
+    int wireframe = 0;             // off, camera, light, orbit
+    double meshYaw = 0.0, meshPitch = 0.0, meshZoom = 0.0;
+    int stopLevel = 0;
+    double cookieMask = 0.0;
+    int shadowMap = 0, areaSamples = 0;
+    bool forceFeatures = false;
+
+    // Whether they ask for adaptive tessellation at a size where the plan keeps it (or force it); the plan
+    // also needs a 2D map in the scene.
+    bool adaptiveKept() const { return adaptive && (shadowMap >= kAdaptivePaysFrom || forceFeatures); }
+};
+const ParamTable<PolyvolSettings>& polyvolParams();
 
 class PolyvolTechnique final : public Technique {
 public:
@@ -103,7 +120,8 @@ public:
         return "polygonal light volumes from the shadow map, signed airlight per crossing (Billeter 2010)";
     }
     const std::vector<StageInfo>& stages() const override { return mStages; }
-    const std::vector<ParamInfo>& params() const override { return mParams; }
+    const std::vector<ParamInfo>& params() const override { return polyvolParams().infos(); }
+    Controls controls() const override { return {.orbitCamera = true}; }
     bool needsGl() const override { return true; }
 
     // Issue 9's knobs: the shadow-map size (the volume's resolution, one vertex per texel) with static
@@ -191,7 +209,7 @@ private:
     // L_air = max(0, total) (clamp.comp).
     void clampAirlight();
 
-    void publishVolume(FrameOutput& out, const Settings& s, std::int64_t triangles);
+    void publishVolume(FrameOutput& out, std::int64_t triangles);
     // The airlight lookup table of phase parameter g and its error against the closed form.
     void publishLut(FrameOutput& out, const FrameInput& input, double g);
 
@@ -200,8 +218,8 @@ private:
         gl::Buffer buffer;
     };
 
-    std::vector<ParamInfo> mParams;
     std::vector<StageInfo> mStages;
+    PolyvolSettings mSettings;  // the current run's, read once at its start
     render::SceneViewPasses mView;
     render::MediumBlock mMedium;  // sigma_s, sigma_t, g for the shaders (common/medium.glsl)
     StageReuse mReuse;  // stages carried over from the last run (FrameInput::resumeAtStage)

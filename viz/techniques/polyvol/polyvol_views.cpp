@@ -102,17 +102,18 @@ float PolyvolTechnique::lutError(const FrameInput& input) {
     return worst;
 }
 
-void PolyvolTechnique::publishVolume(FrameOutput& out, const Settings& s, std::int64_t triangles) {
-    const bool constant = s.at("crack_check") != 0.0;
+void PolyvolTechnique::publishVolume(FrameOutput& out, std::int64_t triangles) {
+    const PolyvolSettings& s = mSettings;
+    const bool constant = s.crackCheck;
     const std::string count = std::to_string(triangles) + " triangles drawn" +
                               (mAdaptiveOverflow ? " (adaptive buffers overflowed: mesh cut short)" : "");
     mTriangles = triangles;
     if (mAdaptiveUsed) {
         out.intermediates.push_back(render::textureIntermediate(
             kEdgeMap, "Edge map",
-            std::string(s.at("edge_measure") == 0.0 ? "|Laplacian|" : "sum of |second differences| (x, y, diagonals)") +
+            std::string(s.edgeMeasure == polyvol::EdgeMeasure::Laplacian ? "|Laplacian|" : "sum of |second differences| (x, y, diagonals)") +
                 " of the vertex distances / the map's depth range (last 2D light)",
-            "", ViewKind::Scalar, 0.0f, float(std::max(1e-6, 10.0 * s.at("threshold"))), mTess.edgeMap()));
+            "", ViewKind::Scalar, 0.0f, float(std::max(1e-6, 10.0 * s.threshold)), mTess.edgeMap()));
         out.intermediates.push_back(render::textureIntermediate(
             kTessLevels, "Tessellation level", "leaf level k of each texel's quad (2^k texels wide), stored k/16; " +
             count, "", ViewKind::Scalar, 0.0f, float(mTess.levels()) / 16.0f, mTess.levelMap()));
@@ -132,7 +133,7 @@ void PolyvolTechnique::publishVolume(FrameOutput& out, const Settings& s, std::i
                                                                 ? "; blue: camera frustum, yellow: lights"
                                                                 : "")
                                           : "; wireframe=camera|light|orbit draws it (orbit: a view of its own)") +
-                (mWireMode == 3 && s.at("wireframe") == 0.0 ? "; drawn because this view is shown (its time counts in the volume stage)" : "");
+                (mWireMode == 3 && s.wireframe == 0 ? "; drawn because this view is shown (its time counts in the volume stage)" : "");
     mesh.kind = mWireMode != 0 ? ViewKind::Color : ViewKind::Mesh;
     mesh.orbit = mWireMode == 3;
     mesh.picture = mWireMode != 0;

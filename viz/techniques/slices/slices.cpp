@@ -45,54 +45,64 @@ std::vector<std::uint8_t> makeNoise(int size) {
 
 }  // namespace
 
+const ParamTable<SlicesSettings>& slicesParams() {
+    using S = SlicesSettings;
+    static const ParamTable<S> table =
+        ParamTable<S>()
+            .add(&S::planes, {"planes", "N, sampling planes per light (substeps of the planes stage)", 128, 1, 4096, true})
+            .declare({"planes_drawn", "draw only the k farthest planes (stepping, 1..N); 0: all", 0, 0, 4096, true})
+            .add(&S::physical, {"weighting", "artistic (0: the paper's formula and constants) or physical (1: "
+                                "converges to reference)", 1, 0, 1, true, {"artistic", "physical"}})
+            .add(&S::accum, {"accum", "accumulation target: rgba8 (0), rgba8-mask (1: channel mask), rgba16f (2), "
+                             "rgba32f (3)", 3, 0, 3, true, {"rgba8", "rgba8-mask", "rgba16f", "rgba32f"}})
+            .add(&S::accumRange, {"accum_range", "value stored as 1.0 in the 8-bit targets (rgba8-mask: per "
+                                  "channel, x4 finer)", 2.0, 1e-6, 1e6, false})
+            .add(&S::shadow, {"shadow", "shadow-map test: off, nearest (one texel, the paper) or pcf (3x3)", 1, 0, 2,
+                              true, {"off", "nearest", "pcf"}})
+            .add(&S::spotFalloff, {"spot_falloff", "1: spot angular attenuation A_spot", 1, 0, 1, true})
+            .add(&S::cookie, {"cookie", "1: project the spot's cookie (when it has one)", 1, 0, 1, true})
+            .add(&S::noise, {"noise", "1: two scrolling tiled noise layers modulate the density", 0, 0, 1, true})
+            .add(&S::noiseTiles, {"noise_tiles", "noise repeats across the light's frustum", 2, 0.01, 100, false})
+            .add(&S::time, animationTimeParam("scrolls the noise layers"))
+            .add(&S::falloff, {"falloff", "artistic: 1/d^2 falloff on (0: constant intensity)", 1, 0, 1, true})
+            .add(&S::ambient, {"ambient", "artistic: add the paper's ambient term 0.35 to 1/d^2", 1, 0, 1, true})
+            .add(&S::artisticUnits, {"artistic_units", "artistic: paper units per scene unit in 20000/d^2", 100, 1e-6,
+                                     1e6, false})
+            .add(&S::blur, {"blur", "1: the paper's small blur on composite (3x3 tent)", 0, 0, 1, true})
+            .add(&S::clip, {"clip", "1: clip the planes to the light frustum with gl_ClipDistance", 1, 0, 1, true})
+            .add(&S::userClip, {"user_clip", "1: also clip with the user planes y >= clip_y_min and y <= clip_y_max "
+                                "(world)", 0, 0, 1, true})
+            .add(&S::clipYMin, {"clip_y_min", "user floor plane height (world y)", 0, -1e6, 1e6, false})
+            .add(&S::clipYMax, {"clip_y_max", "user ceiling / window plane height (world y)", 1e6, -1e6, 1e6, false})
+            .add(&S::directionalBox,
+                 {"directional_box", "1: a directional light's planes fill and are clipped to its shadow map's box "
+                  "(misses lit air outside it); 0: the camera frustum up to zfar", 0, 0, 1, true})
+            .add(&S::worldGrid,
+                 {"plane_grid", "fitted: the paper's N planes spread over the light volume's depth range (they move "
+                  "whenever that range does); world: slabs on a world-fixed grid, spacing the fitted one rounded up "
+                  "to a power of 2^(1/4), so planes stay put as the light moves (fewer crawling shadow edges)",
+                  0, 0, 1, true, {"fitted", "world"}})
+            .add(&S::distanceScale, {"distance_scale", "reference distance: beyond it N shrinks as reference / "
+                                     "distance (min 8); 0: off", 0, 0, 1e6, false})
+            .add(&S::countFragments, {"count_fragments", "1: count shaded fragments and those outside the light "
+                                      "frustum (atomic counter)", 0, 0, 1, true})
+            .add(&S::meshView, {"mesh_view", "1: draw the planes from an orbit camera of its own, with the scene, the "
+                                "camera frustum and the lights (slices.plane_view)", 0, 0, 1, true})
+            .add(&S::meshYaw, orbitParams("mesh_view"), kOrbitYaw)
+            .add(&S::meshPitch, orbitParams("mesh_view"), kOrbitPitch)
+            .add(&S::meshZoom, orbitParams("mesh_view"), kOrbitZoom)
+            .declare(pickParam('x', "planes slices.ray_planes lists"))
+            .declare(pickParam('y', "planes slices.ray_planes lists"))
+            .add(&S::rayPlanes, {"ray_planes", "1: record the picked pixel's planes (slices.ray_planes: the planes "
+                                 "drawn again at that pixel alone, a replay of its blend, a readback); 0: off", 1, 0,
+                                 1, true})
+            .add(&S::forceFeatures, forceFeaturesParam())
+            .declare(render::SceneViewPasses::params());
+    VIZ_CHECK(table.missing().empty(), "slices declares a shared parameter the shared lists lack");
+    return table;
+}
+
 SlicesTechnique::SlicesTechnique() {
-    mParams = {
-        {"planes", "N, sampling planes per light (substeps of the planes stage)", 128, 1, 4096, true},
-        {"planes_drawn", "draw only the k farthest planes (stepping, 1..N); 0: all", 0, 0, 4096, true},
-        {"weighting", "artistic (0: the paper's formula and constants) or physical (1: converges to reference)",
-         1, 0, 1, true, {"artistic", "physical"}},
-        {"accum", "accumulation target: rgba8 (0), rgba8-mask (1: channel mask), rgba16f (2), rgba32f (3)", 3, 0,
-         3, true, {"rgba8", "rgba8-mask", "rgba16f", "rgba32f"}},
-        {"accum_range", "value stored as 1.0 in the 8-bit targets (rgba8-mask: per channel, x4 finer)", 2.0,
-         1e-6, 1e6, false},
-        {"shadow", "shadow-map test: off, nearest (one texel, the paper) or pcf (3x3)", 1, 0, 2, true,
-         {"off", "nearest", "pcf"}},
-        {"spot_falloff", "1: spot angular attenuation A_spot", 1, 0, 1, true},
-        {"cookie", "1: project the spot's cookie (when it has one)", 1, 0, 1, true},
-        {"noise", "1: two scrolling tiled noise layers modulate the density", 0, 0, 1, true},
-        {"noise_tiles", "noise repeats across the light's frustum", 2, 0.01, 100, false},
-        {"time", "seconds: scrolls the noise layers", 0, 0, 1e6, false},
-        {"falloff", "artistic: 1/d^2 falloff on (0: constant intensity)", 1, 0, 1, true},
-        {"ambient", "artistic: add the paper's ambient term 0.35 to 1/d^2", 1, 0, 1, true},
-        {"artistic_units", "artistic: paper units per scene unit in 20000/d^2", 100, 1e-6, 1e6, false},
-        {"blur", "1: the paper's small blur on composite (3x3 tent)", 0, 0, 1, true},
-        {"clip", "1: clip the planes to the light frustum with gl_ClipDistance", 1, 0, 1, true},
-        {"user_clip", "1: also clip with the user planes y >= clip_y_min and y <= clip_y_max (world)", 0, 0, 1,
-         true},
-        {"clip_y_min", "user floor plane height (world y)", 0, -1e6, 1e6, false},
-        {"clip_y_max", "user ceiling / window plane height (world y)", 1e6, -1e6, 1e6, false},
-        {"directional_box", "1: a directional light's planes fill and are clipped to its shadow map's box "
-         "(misses lit air outside it); 0: the camera frustum up to zfar", 0, 0, 1, true},
-        {"plane_grid", "fitted: the paper's N planes spread over the light volume's depth range (they move "
-         "whenever that range does); world: slabs on a world-fixed grid, spacing the fitted one rounded up to "
-         "a power of 2^(1/4), so planes stay put as the light moves (fewer crawling shadow edges)",
-         0, 0, 1, true, {"fitted", "world"}},
-        {"distance_scale", "reference distance: beyond it N shrinks as reference / distance (min 8); 0: off", 0,
-         0, 1e6, false},
-        {"count_fragments", "1: count shaded fragments and those outside the light frustum (atomic counter)",
-         0, 0, 1, true},
-        {"mesh_view", "1: draw the planes from an orbit camera of its own, with the scene, the camera frustum "
-         "and the lights (slices.plane_view)", 0, 0, 1, true},
-        {"mesh_yaw", "mesh_view: orbit camera's angle about the vertical (degrees)", 35, -360, 360, false},
-        {"mesh_pitch", "mesh_view: orbit camera's angle above the horizon (degrees)", 25, -89, 89, false},
-        {"mesh_zoom", "mesh_view: orbit camera's zoom (1 fits the scene and the camera)", 1, 0.05, 50, false},
-        pickParam('x', "planes slices.ray_planes lists"),
-        pickParam('y', "planes slices.ray_planes lists"),
-        {"ray_planes", "1: record the picked pixel's planes (slices.ray_planes: the planes drawn again at that "
-         "pixel alone, a replay of its blend, a readback); 0: off", 1, 0, 1, true},
-        forceFeaturesParam(),
-    };
-    for (ParamInfo& p : render::SceneViewPasses::params()) mParams.push_back(std::move(p));
     mStages = {
         render::SceneViewPasses::shadowStage("slices", {kCookies, kNoise}),
         render::SceneViewPasses::surfaceStage("slices"),
@@ -155,7 +165,8 @@ std::optional<StiffBound> SlicesTechnique::stiffBound(const std::string& caseCla
     return it == kBounds.end() ? std::nullopt : std::optional<StiffBound>(it->second);
 }
 
-Plan SlicesTechnique::plan(const scene::Scene& scene, const Settings& s) const {
+Plan SlicesTechnique::plan(const scene::Scene& scene, const Settings& settings) const {
+    const SlicesSettings s = slicesParams().read(settings);
     Plan p;
     for (const StageInfo& st : mStages) p.stages.push_back({st.id, true, ""});
     const bool hasSpot = render::hasLightOfType(scene, scene::LightType::Spot);
@@ -168,7 +179,7 @@ Plan SlicesTechnique::plan(const scene::Scene& scene, const Settings& s) const {
         p.stages[kPlanesIndex].runs = false;
         p.stages[kPlanesIndex].why = "no light: L_air = 0";
     }
-    const bool boxedDir = s.at("directional_box") != 0.0;
+    const bool boxedDir = s.directionalBox;
     const bool unbounded = hasOther || (hasDir && !boxedDir);
     p.features.push_back({"UNBOUNDED_PLANES", unbounded,
                           unbounded ? "point / area (VPL) / directional lights share N unclipped planes over "
@@ -197,21 +208,21 @@ Plan SlicesTechnique::plan(const scene::Scene& scene, const Settings& s) const {
     p.features.push_back({"BLUR", t.blur, t.blur ? "3x3 tent on composite" : "blur=0"});
     p.features.push_back({"CLIP", t.clip,
                           t.clip               ? "gl_ClipDistance against the light frustum's 6 planes"
-                          : s.at("clip") == 0.0 ? "clip=0: whole planes over the frustum's bounding box"
+                          : !s.clip ? "clip=0: whole planes over the frustum's bounding box"
                                                 : "no spot light (and directional_box=0): every light's planes "
                                                   "are unbounded, there is no light frustum to clip against"});
     if (hasDir) {
-        const bool box = s.at("directional_box") != 0.0;
+        const bool box = s.directionalBox;
         p.features.push_back({"DIRECTIONAL_BOX", box,
                               box ? "directional planes fill and are clipped to the shadow map's box"
                                   : "a directional light lights all space: planes fill the camera frustum to "
                                     "zfar, no frustum clipping"});
     }
-    const bool scaled = s.at("distance_scale") > 0.0;
+    const bool scaled = s.distanceScale > 0.0;
     p.features.push_back({"DISTANCE_SCALED_PLANES", scaled,
                           scaled ? "N shrinks beyond distance_scale from the light volume (spacing compensates)"
                                  : "distance_scale=0: always N planes"});
-    const bool worldGrid = s.at("plane_grid") != 0.0;
+    const bool worldGrid = s.worldGrid;
     p.features.push_back({"WORLD_GRID_PLANES", worldGrid,
                           worldGrid ? "plane_grid=world: slabs on a world-fixed grid (N + 2 at most), planes do "
                                       "not follow the light volume's depth range"
@@ -229,9 +240,9 @@ Plan SlicesTechnique::plan(const scene::Scene& scene, const Settings& s) const {
                                   : "no point or area light: cube-map code compiled out (SHADOW_NO_CUBE)"});
     render::planCulledLights(scene, p);
     p.features.push_back({"PERMUTATION", true, permutationKey(t)});
-    if (s.at("force_features") != 0.0) {
-        Settings unforced = s;
-        unforced["force_features"] = 0.0;
+    if (s.forceFeatures) {
+        SlicesSettings unforced = s;
+        unforced.forceFeatures = false;
         const Terms t0 = terms(scene, unforced);
         for (FeaturePlan& f : p.features)
             if ((f.feature == "SPOT_FALLOFF" && t.spot != t0.spot) || (f.feature == "COOKIE" && t.cookie != t0.cookie) ||
@@ -244,9 +255,10 @@ Plan SlicesTechnique::plan(const scene::Scene& scene, const Settings& s) const {
 
 FrameOutput SlicesTechnique::run(const FrameInput& input) {
     const scene::Scene& scene = *input.scene;
-    const Settings& s = input.settings;
+    mSettings = slicesParams().read(input.settings);
+    const SlicesSettings& s = mSettings;
     FrameOutput out;
-    out.plan = plan(scene, s);
+    out.plan = plan(scene, input.settings);
     gl::StageClock clock;
     StageRunner stages(mStages, input, out, mReuse, clock);
 
@@ -265,7 +277,7 @@ FrameOutput SlicesTechnique::run(const FrameInput& input) {
                 mNoise.setFilter(GL_LINEAR, GL_LINEAR);
                 mNoise.setWrap(GL_REPEAT);
             }
-            mView.buildShadows(scene, s, out.intermediates, "slices");
+            mView.buildShadows(scene, input.settings, out.intermediates, "slices");
         },
         [&] {
             out.intermediates.push_back(render::textureIntermediate(
@@ -286,7 +298,7 @@ FrameOutput SlicesTechnique::run(const FrameInput& input) {
         kPlanesIndex,
         [&] {
             t = terms(scene, s);
-            allocateTargets(input.width, input.height, SlicesAccum(int(s.at("accum"))));
+            allocateTargets(input.width, input.height, s.accum);
             const float zero[4] = {0, 0, 0, 0};
             glClearTexImage(mAccum.id(), 0, GL_RGBA, GL_FLOAT, zero);
             glClearTexImage(mPlane.id(), 0, GL_RGBA, GL_FLOAT, zero);
@@ -298,7 +310,7 @@ FrameOutput SlicesTechnique::run(const FrameInput& input) {
             if (out.plan.stages[kPlanesIndex].runs) drawPlanes(scene, input, t);
         },
         [&] {
-            const int n = mPlanesUsed.empty() ? int(s.at("planes")) : mPlanesUsed.front();
+            const int n = mPlanesUsed.empty() ? s.planes : mPlanesUsed.front();
             const int drawnLimit = int(substepLimit(input, kPlanesIndex));
             const int drawn = drawnLimit > 0 ? std::min(n, drawnLimit) : n;
             out.intermediates.push_back(render::textureIntermediate(
@@ -310,8 +322,8 @@ FrameOutput SlicesTechnique::run(const FrameInput& input) {
                 kPlane, "Plane " + std::to_string(drawn), "the last plane drawn alone (every light), float",
                 "stored value", ViewKind::Color, 0.0f, 0.05f, mPlane));
             out.intermediates.push_back(polygonIntermediate());
-            if (s.at("mesh_view") != 0.0) {
-                mMeshView.begin(scene, mView.gpuScene(), {s.at("mesh_yaw"), s.at("mesh_pitch"), s.at("mesh_zoom")},
+            if (s.meshView) {
+                mMeshView.begin(scene, mView.gpuScene(), {s.meshYaw, s.meshPitch, s.meshZoom},
                                 input.width, input.height);
                 // Each drawn plane's outline, far planes dim and near ones bright (the drawing order).
                 const std::size_t count = mPolygons.size();
@@ -402,29 +414,29 @@ FrameOutput SlicesTechnique::run(const FrameInput& input) {
     return out;
 }
 
-Terms SlicesTechnique::terms(const scene::Scene& scene, const Settings& s) {
+Terms SlicesTechnique::terms(const scene::Scene& scene, const SlicesSettings& s) {
     Terms t;
     const bool hasSpot = render::hasLightOfType(scene, scene::LightType::Spot);
     const bool hasCookie = std::any_of(scene.lights.begin(), scene.lights.end(), [](const scene::Light& l) {
         return l.type == scene::LightType::Spot && l.cookie >= 0;
     });
     // force_features=1 compiles in what this scene would not need (to measure what leaving it out saves).
-    const bool force = s.at("force_features") != 0.0;
-    t.physical = s.at("weighting") != 0.0;
-    t.spot = (hasSpot || force) && s.at("spot_falloff") != 0.0;
-    t.cookie = (hasCookie || force) && s.at("cookie") != 0.0;
-    t.shadow = s.at("shadow") != 0.0;
-    t.pcf = s.at("shadow") == 2.0;
-    t.noise = s.at("noise") != 0.0;
-    t.mask = SlicesAccum(int(s.at("accum"))) == SlicesAccum::Rgba8Mask;
-    t.blur = s.at("blur") != 0.0;
+    const bool force = s.forceFeatures;
+    t.physical = s.physical;
+    t.spot = (hasSpot || force) && s.spotFalloff;
+    t.cookie = (hasCookie || force) && s.cookie;
+    t.shadow = s.shadow != 0;
+    t.pcf = s.shadow == 2;
+    t.noise = s.noise;
+    t.mask = s.accum == SlicesAccum::Rgba8Mask;
+    t.blur = s.blur;
     // Only spot lights (and directional lights boxed by directional_box=1) have a frustum to clip to.
     const bool boxedDirectional = render::hasLightOfType(scene, scene::LightType::Directional) &&
-                                  s.at("directional_box") != 0.0;
-    t.clip = s.at("clip") != 0.0 && (hasSpot || boxedDirectional || force);
-    t.userClip = s.at("user_clip") != 0.0;
-    t.count = s.at("count_fragments") != 0.0;
-    t.pick = s.at("ray_planes") != 0.0;
+                                  s.directionalBox;
+    t.clip = s.clip && (hasSpot || boxedDirectional || force);
+    t.userClip = s.userClip;
+    t.count = s.countFragments;
+    t.pick = s.rayPlanes;
     t.cubes = render::hasLightOfType(scene, scene::LightType::Point) ||
               render::hasLightOfType(scene, scene::LightType::Area) || force;
     return t;

@@ -41,10 +41,10 @@ void SlicesTechnique::allocateTargets(int width, int height, SlicesAccum accum) 
         {.target = GL_TEXTURE_2D, .format = GL_RGBA32F, .size = {width, height, 1}, .label = kAirlight});
 }
 
-double SlicesTechnique::storeScale(const Terms& t, const Settings& s) const {
-    const SlicesAccum accum = SlicesAccum(int(s.at("accum")));
-    if (accum == SlicesAccum::Rgba8) return 1.0 / s.at("accum_range");
-    if (accum == SlicesAccum::Rgba8Mask) return 4.0 / s.at("accum_range");
+double SlicesTechnique::storeScale(const Terms& t, const SlicesSettings& s) const {
+    const SlicesAccum accum = s.accum;
+    if (accum == SlicesAccum::Rgba8) return 1.0 / s.accumRange;
+    if (accum == SlicesAccum::Rgba8Mask) return 4.0 / s.accumRange;
     (void)t;
     return 1.0;
 }
@@ -68,9 +68,9 @@ glm::dmat4 SlicesTechnique::cameraVolume(const scene::Camera& cam, int width, in
 }
 
 void SlicesTechnique::drawPlanes(const scene::Scene& scene, const FrameInput& input, const Terms& t) {
-    const Settings& s = input.settings;
+    const SlicesSettings& s = mSettings;
     const scene::Camera& cam = scene.camera;
-    const int n = int(s.at("planes"));
+    const int n = s.planes;
     const gl::Program& program = planeProgram(t, false);
     // The pick draw's program: the same shader with PICK_RAY; both get every uniform.
     const gl::Program* pick = t.pick ? &planeProgram(t, true) : nullptr;
@@ -93,18 +93,18 @@ void SlicesTechnique::drawPlanes(const scene::Scene& scene, const FrameInput& in
     mMedium.bind(scene.medium);
     mLastStoreScale = storeScale(t, s);
     setBoth("uStoreScale", float(mLastStoreScale));
-    setBoth("uArtisticUnits", float(s.at("artistic_units")));
-    setBoth("uAmbient", float(s.at("ambient") != 0.0 ? kPaperAmbient : 0.0));
-    setBoth("uFalloff", int(s.at("falloff")));
-    setBoth("uNoiseTiles", float(s.at("noise_tiles")));
+    setBoth("uArtisticUnits", float(s.artisticUnits));
+    setBoth("uAmbient", float(s.ambient ? kPaperAmbient : 0.0));
+    setBoth("uFalloff", s.falloff ? 1 : 0);
+    setBoth("uNoiseTiles", float(s.noiseTiles));
     // Two layers scrolling in different directions (slowly: a few hundredths of a tile per second).
-    const float time = float(s.at("time"));
+    const float time = float(s.time);
     setBoth("uScroll", glm::vec4(0.031f * time, 0.017f * time, -0.023f * time, 0.029f * time));
     setBoth("uPlaneWeight", 1.0f);
     // User planes: world y >= clip_y_min and y <= clip_y_max, written in eye-relative space.
     const double eyeY = cam.position.y;
-    setBoth("uUserPlane0", glm::vec4(0, 1, 0, float(eyeY - s.at("clip_y_min"))));
-    setBoth("uUserPlane1", glm::vec4(0, -1, 0, float(s.at("clip_y_max") - eyeY)));
+    setBoth("uUserPlane0", glm::vec4(0, 1, 0, float(eyeY - s.clipYMin)));
+    setBoth("uUserPlane1", glm::vec4(0, -1, 0, float(s.clipYMax - eyeY)));
 
     mView.lights().bind();
     mView.shadows().bind();
@@ -125,8 +125,8 @@ void SlicesTechnique::drawPlanes(const scene::Scene& scene, const FrameInput& in
         i < clipPlanes ? glEnable(GLenum(GL_CLIP_DISTANCE0 + i)) : glDisable(GLenum(GL_CLIP_DISTANCE0 + i));
 
     const auto& lights = mView.lights().lights();
-    const bool boxedDirectional = s.at("directional_box") != 0.0;
-    const bool worldGrid = s.at("plane_grid") != 0.0;
+    const bool boxedDirectional = s.directionalBox;
+    const bool worldGrid = s.worldGrid;
     // Channel mask: one scalar per plane (mean of rgb); the colour ratio of the first light is put back
     // on resolve (exact for one light colour, the paper's monochrome assumption).
     mMaskColor = glm::vec3(1.0f);
@@ -177,7 +177,7 @@ void SlicesTechnique::drawPlanes(const scene::Scene& scene, const FrameInput& in
         const glm::dvec3 lo(range.minXY, range.near), hi(range.maxXY, range.far);
         const double distance = glm::length(glm::max(glm::max(lo, -hi), glm::dvec3(0.0)));
         range = planeRange(set.volume, basis, cam.znear, cam.zfar,
-                           scaledPlaneCount(n, distance, s.at("distance_scale"), kMinScaledPlanes));
+                           scaledPlaneCount(n, distance, s.distanceScale, kMinScaledPlanes));
         if (worldGrid) range = worldGridRange(range, glm::dot(cam.position, basis.forward));
         const int planes = range.planes;
         const int drawnLimit = int(substepLimit(input, kPlanesIndex));

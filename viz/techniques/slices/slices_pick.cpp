@@ -37,8 +37,8 @@ void SlicesTechnique::replayPick(const FrameInput& input, const CameraBasis& bas
     program.set("uUp", glm::vec3(basis.up));
     program.set("uUserClip", t.userClip ? 1 : 0);
     const double eyeY = cam.position.y;
-    program.set("uUserPlane0", glm::vec4(0, 1, 0, float(eyeY - input.settings.at("clip_y_min"))));
-    program.set("uUserPlane1", glm::vec4(0, -1, 0, float(input.settings.at("clip_y_max") - eyeY)));
+    program.set("uUserPlane0", glm::vec4(0, 1, 0, float(eyeY - mSettings.clipYMin)));
+    program.set("uUserPlane1", glm::vec4(0, -1, 0, float(mSettings.clipYMax - eyeY)));
     mView.surface().distance().bindUnit(0);
     mReplay.bindUnit(1);
     mFramebuffer.attachColor(0, mReplay);

@@ -14,6 +14,8 @@
 #include <string>
 #include <vector>
 
+#include "core/error.h"
+#include "debug/param_table.h"
 #include "debug/stage_runner.h"
 #include "gl/buffer.h"
 #include "gl/framebuffer.h"
@@ -100,6 +102,28 @@ struct PickSet {
     glm::mat4 volume{1.0f};
 };
 
+// The settings a run reads, each declared once with its parameter (slicesParams(), debug/param_table.h).
+struct SlicesSettings {
+    int planes = 0;
+    bool physical = false;  // weighting=physical
+    SlicesAccum accum = SlicesAccum::Rgba32f;
+    double accumRange = 0.0;
+    int shadow = 0;  // off, nearest, pcf
+    bool spotFalloff = false, cookie = false, noise = false;
+    double noiseTiles = 0.0, time = 0.0;
+    bool falloff = false, ambient = false;
+    double artisticUnits = 0.0;
+    bool blur = false, clip = false, userClip = false;
+    double clipYMin = 0.0, clipYMax = 0.0;
+    bool directionalBox = false;
+    bool worldGrid = false;  // plane_grid=world
+    double distanceScale = 0.0;
+    bool countFragments = false, meshView = false;
+    double meshYaw = 0.0, meshPitch = 0.0, meshZoom = 0.0;
+    bool rayPlanes = false, forceFeatures = false;
+};
+const ParamTable<SlicesSettings>& slicesParams();
+
 class SlicesTechnique final : public Technique {
 public:
     SlicesTechnique();
@@ -109,7 +133,8 @@ public:
         return "Mitchell 2004: view-aligned sampling planes through the light frustum, additively blended";
     }
     const std::vector<StageInfo>& stages() const override { return mStages; }
-    const std::vector<ParamInfo>& params() const override { return mParams; }
+    const std::vector<ParamInfo>& params() const override { return slicesParams().infos(); }
+    Controls controls() const override { return {.pickedPixel = true, .orbitCamera = true, .animationTime = true}; }
     bool needsGl() const override { return true; }
 
     // Plane count in float accumulation, then the precision lab's targets at one plane count.
@@ -133,7 +158,7 @@ public:
     FrameOutput run(const FrameInput& input) override;
 
 private:
-    static Terms terms(const scene::Scene& scene, const Settings& s);
+    static Terms terms(const scene::Scene& scene, const SlicesSettings& s);
 
     // The defines of the plane shader, in a fixed order: also the cache key and what plan() reports.
     // pick: the picked pixel's recording draw (PICK_RAY, no fragment counting); the frame's draw is without.
@@ -142,7 +167,7 @@ private:
 
     void allocateTargets(int width, int height, SlicesAccum accum);
 
-    double storeScale(const Terms& t, const Settings& s) const;
+    double storeScale(const Terms& t, const SlicesSettings& s) const;
 
     const gl::Program& planeProgram(const Terms& t, bool pick);
 
@@ -171,7 +196,7 @@ private:
 
     void resolve(const Terms& t);
 
-    std::vector<ParamInfo> mParams;
+    SlicesSettings mSettings;  // the current run's, read once at its start
     std::vector<StageInfo> mStages;
     render::SceneViewPasses mView;
     render::MediumBlock mMedium;  // sigma_s, sigma_t, g for the shaders (common/medium.glsl)

@@ -33,18 +33,4 @@ inline std::shared_ptr<Image> sliceImage(const gl::Texture& grid, int x0, int nA
     return image;
 }
 
-inline Intermediate cpuIntermediate(const std::string& id, const std::string& label, const std::string& note,
-                                    ViewKind kind, std::shared_ptr<Image> image, float lo = 0.0f, float hi = 1.0f) {
-    Intermediate i;
-    i.id = id;
-    i.label = label;
-    i.note = note;
-    i.kind = kind;
-    i.rangeMin = lo;
-    i.rangeMax = hi;
-    i.extent = glm::ivec3(image->width, image->height, 1);
-    i.image = std::move(image);
-    return i;
-}
-
 }  // namespace viz::vsv

@@ -5,59 +5,79 @@
 
 namespace viz::ivsv_detail {
 
-IvsvTechnique::IvsvTechnique() {
-    mParams = {
-        {"vpls", "virtual point lights on the area light (Halton points)", 64, 1, kMaxVpls, true},
-        {"voxels", "alpha and theta cells per VPL grid (phi is 128 bits)", 128, 16, 512, true},
-        {"combine", "fraction: lit fraction x unshadowed airlight; exact: each quadrature node weighted by the "
-                    "visibility of its own bits",
-         1, 0, 1, true, {"fraction", "exact"}},
-        {"gather", "full: every pixel x every VPL; interleaved: 1/9 of the VPLs per pixel + 3x3 bilateral; "
-                   "quarter: half width and height + bilateral upsampling",
-         0, 0, 2, true, {"full", "interleaved", "quarter"}},
-        {"subsets", "gather=interleaved: fixed: each pixel's ninth of the VPLs is the same on every frame (a 3x3 "
-                    "screen pattern); per-frame: the pattern steps by one subset each frame of an animation, so "
-                    "every pixel sees all nine over nine frames (what temporal accumulation would want)",
-         0, 0, 1, true, {"fixed", "per-frame"}},
-        {"mode", "imperfect: ISMs and one pass per step for all VPLs; naive: cube shadow maps and a full VSV "
-                 "per VPL",
-         0, 0, 1, true, {"imperfect", "naive"}},
-        {"points", "point cloud size for the imperfect shadow maps (split among the VPLs)", 1 << 20, 1024,
-         1 << 23, true},
-        {"fill_levels", "push-pull fills a hole only from a sample within 2^k texels of it (k levels up the "
-                        "pyramid); wider holes stay empty, so directions that see nothing (open sky) stay lit",
-         2, 0, 12, true},
-        {"alpha_bias", "occluder alpha offset in cells (negative: shadow starts further from the light)", -2.25,
-         -16, 16, false},
-        {"phi_bias", "light-ray phi offset in cells (negative: shadow moves away from the eye)", -1, -16, 16,
-         false},
-        {"interp", "1: two texels along theta; 0: nearest", 1, 0, 1, true},
-        {"epipole", "rays within one alpha cell of a VPL's epipole: off reads its grid; paper compares the "
-                    "fragment with the VPL (the eye's visibility at the antipode), Wyman and Dai Sec. 5",
-         1, 0, 1, true, {"off", "paper"}},
-        {"chunk_bits", "phi bits per quadrature node of the airlight (1, 2, 4, ..., 128)", 8, 1, 128, true},
-        {"vpl_disc", "near the emitter each VPL acts as a disc of this many times its area (bounds the 1/r^2 "
-                     "spike of rays grazing it); 0: points",
-         1, 0, 16, false},
-        {"bilateral_sigma", "distance tolerance of the bilateral filters, relative to d", 0.1, 0.001, 10, false},
-        {"scan_passes", "stop the segmented alpha scan after this many passes (-1: all; stepping)", -1, -1,
-         kMaxScanPasses, true},
-        {"vpl_step", "gather only VPLs 0 .. k (-1: all; stepping VPL by VPL)", -1, -1, kMaxVpls - 1, true},
-        {"pick_vpl", "VPL whose shadow map, grid and column the intermediates show", 0, 0, kMaxVpls - 1, true},
-        pickParam('x', "voxel column and per-VPL contributions"),
-        pickParam('y', "voxel column and per-VPL contributions"),
-        {"pick_theta", "theta cell of the unwrapped alpha x phi slices (-1: that of the picked pixel)", -1, -1, 512,
-         true},
-    };
-    for (ParamInfo p : render::SceneViewPasses::params()) {
+namespace {
+
+// The shared passes' shadow_map as ivsv uses it: the ISM tile or naive cube face, at most 512 texels.
+ParamInfo tileParam() {
+    for (ParamInfo p : render::SceneViewPasses::params())
         if (p.name == "shadow_map") {
             p.help = "imperfect shadow-map tile / naive cube-face size in texels (power of two <= 512)";
             p.defaultValue = 128;
             p.maxValue = 512;
+            return p;
         }
-        mParams.push_back(std::move(p));
-    }
-    mParams.push_back(forceFeaturesParam());
+    VIZ_CHECK(false, "the shared passes declare no shadow_map");
+    return {};
+}
+
+}  // namespace
+
+const ParamTable<IvsvSettings>& ivsvParams() {
+    using S = IvsvSettings;
+    static const ParamTable<S> table =
+        ParamTable<S>()
+            .add(&S::vpls, {"vpls", "virtual point lights on the area light (Halton points)", 64, 1, kMaxVpls, true})
+            .add(&S::voxels, {"voxels", "alpha and theta cells per VPL grid (phi is 128 bits)", 128, 16, 512, true})
+            .add(&S::exactCombine, {"combine", "fraction: lit fraction x unshadowed airlight; exact: each quadrature "
+                                    "node weighted by the visibility of its own bits", 1, 0, 1, true,
+                                    {"fraction", "exact"}})
+            .add(&S::gather, {"gather", "full: every pixel x every VPL; interleaved: 1/9 of the VPLs per pixel + 3x3 "
+                              "bilateral; quarter: half width and height + bilateral upsampling",
+                              0, 0, 2, true, {"full", "interleaved", "quarter"}})
+            .add(&S::subsetsPerFrame,
+                 {"subsets", "gather=interleaved: fixed: each pixel's ninth of the VPLs is the same on every frame (a "
+                  "3x3 screen pattern); per-frame: the pattern steps by one subset each frame of an animation, so "
+                  "every pixel sees all nine over nine frames (what temporal accumulation would want)",
+                  0, 0, 1, true, {"fixed", "per-frame"}})
+            .add(&S::naive, {"mode", "imperfect: ISMs and one pass per step for all VPLs; naive: cube shadow maps "
+                             "and a full VSV per VPL", 0, 0, 1, true, {"imperfect", "naive"}})
+            .add(&S::points, {"points", "point cloud size for the imperfect shadow maps (split among the VPLs)",
+                              1 << 20, 1024, 1 << 23, true})
+            .add(&S::fillLevels, {"fill_levels", "push-pull fills a hole only from a sample within 2^k texels of it "
+                                  "(k levels up the pyramid); wider holes stay empty, so directions that see nothing "
+                                  "(open sky) stay lit", 2, 0, 12, true})
+            .add(&S::alphaBias, {"alpha_bias", "occluder alpha offset in cells (negative: shadow starts further from "
+                                 "the light)", -2.25, -16, 16, false})
+            .add(&S::phiBias, {"phi_bias", "light-ray phi offset in cells (negative: shadow moves away from the eye)",
+                               -1, -16, 16, false})
+            .add(&S::interp, {"interp", "1: two texels along theta; 0: nearest", 1, 0, 1, true})
+            .add(&S::epipole, {"epipole", "rays within one alpha cell of a VPL's epipole: off reads its grid; paper "
+                               "compares the fragment with the VPL (the eye's visibility at the antipode), Wyman and "
+                               "Dai Sec. 5", 1, 0, 1, true, {"off", "paper"}})
+            .add(&S::chunkBits, {"chunk_bits", "phi bits per quadrature node of the airlight (1, 2, 4, ..., 128)", 8,
+                                 1, 128, true})
+            .add(&S::vplDisc, {"vpl_disc", "near the emitter each VPL acts as a disc of this many times its area "
+                               "(bounds the 1/r^2 spike of rays grazing it); 0: points", 1, 0, 16, false})
+            .add(&S::bilateralSigma, {"bilateral_sigma", "distance tolerance of the bilateral filters, relative to d",
+                                      0.1, 0.001, 10, false})
+            .declare({"scan_passes", "stop the segmented alpha scan after this many passes (-1: all; stepping)", -1,
+                      -1, kMaxScanPasses, true})
+            .declare({"vpl_step", "gather only VPLs 0 .. k (-1: all; stepping VPL by VPL)", -1, -1, kMaxVpls - 1,
+                      true})
+            .add(&S::pickVpl, {"pick_vpl", "VPL whose shadow map, grid and column the intermediates show", 0, 0,
+                               kMaxVpls - 1, true})
+            .declare(pickParam('x', "voxel column and per-VPL contributions"))
+            .declare(pickParam('y', "voxel column and per-VPL contributions"))
+            .add(&S::pickTheta, {"pick_theta", "theta cell of the unwrapped alpha x phi slices (-1: that of the "
+                                 "picked pixel)", -1, -1, 512, true})
+            .add(&S::tile, tileParam())
+            .declare(render::SceneViewPasses::params(), "area_samples")
+            .add(&S::forceFeatures, forceFeaturesParam());
+    VIZ_CHECK(table.missing().empty(), "ivsv declares a shared parameter the shared passes lack");
+    return table;
+}
+
+IvsvTechnique::IvsvTechnique() {
     mStages = {
         {kStageVpls, "VPLs", "Halton points on the area light: position, normal, L_e dA from the emission texture",
          {"vpls"}, {kVplImage}, 1},
@@ -82,14 +102,14 @@ IvsvTechnique::IvsvTechnique() {
     checkStageOrder(mStages, kStageOrder);
 }
 
-std::vector<double> IvsvTechnique::substepValues(int stage, const Settings& s) const {
+std::vector<double> IvsvTechnique::substepValues(int stage, const Settings& settings) const {
+    if (stage != kScanIndex && stage != kGatherIndex) return Technique::substepValues(stage, settings);
+    const IvsvSettings s = ivsvParams().read(settings);
     std::vector<double> values;
     if (stage == kScanIndex) {
-        for (int k = 0; k < scanPassCount(int(s.at("voxels"))); ++k) values.push_back(double(k));
-    } else if (stage == kGatherIndex) {
-        for (int k = 0; k + 1 < int(s.at("vpls")); ++k) values.push_back(double(k));
+        for (int k = 0; k < scanPassCount(s.voxels); ++k) values.push_back(double(k));
     } else {
-        return Technique::substepValues(stage, s);
+        for (int k = 0; k + 1 < s.vpls; ++k) values.push_back(double(k));
     }
     values.push_back(-1.0);
     return values;
@@ -115,9 +135,10 @@ std::vector<QualitySetting> IvsvTechnique::qualitySweep(bool quick) const {
 }
 
 Plan IvsvTechnique::plan(const scene::Scene& scene, const Settings& settings) const {
+    const IvsvSettings s = ivsvParams().read(settings);
     const bool hasArea = areaLightOf(scene) != nullptr;
     const bool hasOthers = int(scene.lights.size()) > (hasArea ? 1 : 0);
-    checkTileSize(settings);
+    checkTileSize(s.tile);
     Plan p;
     for (const StageInfo& st : mStages) p.stages.push_back({st.id, true, ""});
     if (!hasArea) {
@@ -126,8 +147,8 @@ Plan IvsvTechnique::plan(const scene::Scene& scene, const Settings& settings) co
             p.stages[std::size_t(i)].why = "no area light: nothing to split into VPLs";
         }
     }
-    const bool naive = settings.at("mode") != 0.0;
-    const int vpls = int(settings.at("vpls"));
+    const bool naive = s.naive;
+    const int vpls = s.vpls;
     if (scene.medium.sigma_s == 0.0) {
         p.stages[kGatherIndex].runs = false;
         p.stages[kGatherIndex].why = "sigma_s = 0: the medium scatters nothing, L_air = 0";
@@ -135,12 +156,12 @@ Plan IvsvTechnique::plan(const scene::Scene& scene, const Settings& settings) co
     if (hasArea) {
         p.stages[kShadowsIndex].why = naive ? std::to_string(vpls) + " cube shadow maps, one per VPL"
                                             : "one ISM atlas of " + std::to_string(vpls) + " tiles";
-        p.stages[kScanIndex].why = std::to_string(scanPassCount(int(settings.at("voxels")))) + " passes" +
+        p.stages[kScanIndex].why = std::to_string(scanPassCount(s.voxels)) + " passes" +
                                    (naive ? " per VPL" : " over all tiles at once");
     }
-    const bool exact = settings.at("combine") != 0.0;
-    const bool interp = settings.at("interp") != 0.0;
-    const int gather = int(settings.at("gather"));
+    const bool exact = s.exactCombine;
+    const bool interp = s.interp;
+    const int gather = s.gather;
     p.features.push_back({"VPL_PIPELINE", hasArea,
                           hasArea ? "the area light becomes " + std::to_string(vpls) + " VPLs" : "no area light"});
     p.features.push_back({"OTHER_LIGHTS_BY_VSV", hasOthers,
@@ -156,13 +177,13 @@ Plan IvsvTechnique::plan(const scene::Scene& scene, const Settings& settings) co
                           exact ? "each phi quadrature node weighted by the lit fraction of its own bits"
                                 : "combine=fraction: lit fraction x unshadowed airlight per VPL"});
     if (gather == kGatherInterleaved) {
-        const bool cycle = settings.at("subsets") != 0.0;
+        const bool cycle = s.subsetsPerFrame;
         p.features.push_back({"SUBSETS_PER_FRAME", cycle,
                               cycle ? "subsets=per-frame: the 3x3 VPL pattern steps by one subset every frame"
                                     : "subsets=fixed: each pixel keeps its ninth of the VPLs from frame to frame"});
     }
     p.features.push_back({"INTERP", interp, interp ? "two texels along theta" : "nearest texel"});
-    const bool epipole = hasArea && settings.at("epipole") != 0.0;
+    const bool epipole = hasArea && s.epipole;
     p.features.push_back({"EPIPOLE", epipole,
                           epipole ? "rays within one alpha cell of a VPL's epipole (VPLs in view, or behind the eye) "
                                     "compare the fragment with the VPL instead of reading its grid"
@@ -175,22 +196,23 @@ Plan IvsvTechnique::plan(const scene::Scene& scene, const Settings& settings) co
                                                    : "full-resolution gather"});
     render::planCulledLights(scene, p);
     // Scene-pruned: the inner vsv without other lights (force_features=1 runs it on none: it adds zero).
-    forcePlan(p, settings.at("force_features") != 0.0, {"OTHER_LIGHTS_BY_VSV"});
+    forcePlan(p, s.forceFeatures, {"OTHER_LIGHTS_BY_VSV"});
     annotatePermutations(p, kDefines);
     return p;
 }
 
 FrameOutput IvsvTechnique::run(const FrameInput& input) {
     const scene::Scene& scene = *input.scene;
-    const Settings& s = input.settings;
+    mSettings = ivsvParams().read(input.settings);
+    const IvsvSettings& s = mSettings;
     FrameOutput out;
-    out.plan = plan(scene, s);
+    out.plan = plan(scene, input.settings);
     const scene::Light* area = areaLightOf(scene);
-    const bool naive = s.at("mode") != 0.0;
-    const int count = area ? int(s.at("vpls")) : 0;
-    const int cells = int(s.at("voxels"));
-    const int tile = int(s.at("shadow_map"));
-    const int shown = std::max(0, std::min(int(s.at("pick_vpl")), count - 1));
+    const bool naive = s.naive;
+    const int count = area ? s.vpls : 0;
+    const int cells = s.voxels;
+    const int tile = s.tile;
+    const int shown = std::max(0, std::min(s.pickVpl, count - 1));
     gl::StageClock clock;
     StageRunner stages(mStages, input, out, mReuse, clock);
     mSurfaceRan = mNaiveBuilt = false;
@@ -211,7 +233,7 @@ FrameOutput IvsvTechnique::run(const FrameInput& input) {
         },
         [&] {
             if (area)
-                out.intermediates.push_back(vsv::cpuIntermediate(
+                out.intermediates.push_back(cpuIntermediate(
                     kVplImage, "VPLs on the emitter", "emitter uv square (u right, v down): each VPL's L_e as a dot",
                     ViewKind::Color, vplImage()));
             if (area) out.intermediates.back().picture = true;
@@ -235,7 +257,7 @@ FrameOutput IvsvTechnique::run(const FrameInput& input) {
                 mNaiveView.buildShadows(points, tile, 1, out.intermediates, "ivsv.naive");
                 mNaiveBuilt = true;
             } else if (area) {
-                buildIsm(scene, *area, int(s.at("points")), count, tile, int(s.at("fill_levels")));
+                buildIsm(scene, *area, s.points, count, tile, s.fillLevels);
             }
         },
         [&] {
@@ -247,7 +269,7 @@ FrameOutput IvsvTechnique::run(const FrameInput& input) {
                 out.intermediates.push_back(render::textureIntermediate(
                     kIsm, "ISM atlas (after push-pull)", "holes filled from coarser levels (mean of valid samples within 2^fill_levels texels; wider holes stay empty)",
                     "scene units", ViewKind::Depth, 0.0f, 8.0f, mIsm));
-                out.intermediates.push_back(vsv::cpuIntermediate(
+                out.intermediates.push_back(cpuIntermediate(
                     kPointCloud, "Point cloud of VPL " + std::to_string(shown),
                     "the subset of the scene's points splatted into its tile, seen from the camera (nearest distance)",
                     ViewKind::Depth, pointCloudImage(scene, input.width, input.height, shown, count), 0.0f, 8.0f));
@@ -259,7 +281,7 @@ FrameOutput IvsvTechnique::run(const FrameInput& input) {
     if (!stages.run(
         kSurfaceIndex,
         [&] {
-            mView.buildShadows(scene, s, out.intermediates, "ivsv");
+            mView.buildShadows(scene, input.settings, out.intermediates, "ivsv");
             mView.renderSurface(scene, input.width, input.height, out.intermediates, "ivsv");
             mSurfaceRan = true;
         }))
@@ -274,7 +296,7 @@ FrameOutput IvsvTechnique::run(const FrameInput& input) {
         const vsv::EpipolarGrid& g = mGrids[std::size_t(shown)];
         pickTheta = std::clamp(int(std::floor(vsv::thetaCoord(g, vsv::thetaOf(f, pickRay)))), 0, cells - 1);
     }
-    if (s.at("pick_theta") >= 0) pickTheta = std::min(int(s.at("pick_theta")), cells - 1);
+    if (s.pickTheta >= 0) pickTheta = std::min(s.pickTheta, cells - 1);
     const glm::ivec2 shownTile = tileOrigin(shown, cells);
     if (area) mMark = MarkState{shown, pickTheta, tile, naive, scene.camera.position};
 
@@ -286,7 +308,7 @@ FrameOutput IvsvTechnique::run(const FrameInput& input) {
         },
         [&] {
             if (area)
-                out.intermediates.push_back(vsv::cpuIntermediate(
+                out.intermediates.push_back(cpuIntermediate(
                 kVoxelSlice, "Voxels of VPL " + std::to_string(shown) + " (before scan)",
                 "alpha (x) x phi (y, eye at the top) at theta cell " + std::to_string(pickTheta) + ": white = occluder",
                 ViewKind::Mask, vsv::sliceImage(mGrid, shownTile.x, cells, shownTile.y + pickTheta, kPhiBits)));
@@ -310,7 +332,7 @@ FrameOutput IvsvTechnique::run(const FrameInput& input) {
         },
         [&] {
             if (area)
-                out.intermediates.push_back(vsv::cpuIntermediate(
+                out.intermediates.push_back(cpuIntermediate(
                 kScanSlice,
                 "Voxels of VPL " + std::to_string(shown) + " after " +
                     std::to_string(std::min(passLimit, scanPassCount(cells))) + " scan passes",
@@ -320,7 +342,7 @@ FrameOutput IvsvTechnique::run(const FrameInput& input) {
         return out;
 
     // ---- gather ----
-    const int gatherMode = int(s.at("gather"));
+    const int gatherMode = s.gather;
     const int vplStep = int(substepLimit(input, kGatherIndex));
     const int gathered = vplStep < 0 ? count : std::min(count, vplStep + 1);
     if (!stages.run(
@@ -339,7 +361,7 @@ FrameOutput IvsvTechnique::run(const FrameInput& input) {
         },
         [&] {
             if (area) {
-                out.intermediates.push_back(vsv::cpuIntermediate(
+                out.intermediates.push_back(cpuIntermediate(
                     kColumn, "Voxel column of pixel (" + std::to_string(pickX) + ", " + std::to_string(pickY) + "), VPL " +
                                  std::to_string(shown),
                     "its 128 phi bits; top row as voxelized (1 occluder), bottom row after the scan (1 shadowed, 0 lit); "
@@ -348,13 +370,13 @@ FrameOutput IvsvTechnique::run(const FrameInput& input) {
                 out.intermediates.back().rayView = true;
                 out.intermediates.back().sentinels = {{0.5f, "beyond the fragment: not read"}};
                 const std::shared_ptr<Image> perVpl = perVplImage(count);
-                out.intermediates.push_back(vsv::cpuIntermediate(
+                out.intermediates.push_back(cpuIntermediate(
                     kPerVpl, "Per-VPL airlight of pixel (" + std::to_string(pickX) + ", " + std::to_string(pickY) + ")",
                     "x = VPL index: its unscaled contribution to L_air (only VPLs this pixel gathered)", ViewKind::Color,
                     perVpl, 0.0f, 0.0f));
                 out.intermediates.back().plots = {perVplPlot(*perVpl)};
                 out.intermediates.back().rayView = true;
-                out.intermediates.push_back(vsv::cpuIntermediate(
+                out.intermediates.push_back(cpuIntermediate(
                     kInterleave, "Interleaving pattern", "which ninth of the VPLs each pixel gathers (0..8 / 8)",
                     ViewKind::Scalar, interleaveImage(input.width, input.height, gatherMode)));
             }

@@ -4,8 +4,7 @@
 
 namespace viz::ivsv_detail {
 
-void IvsvTechnique::checkTileSize(const Settings& s) {
-    const int t = int(s.at("shadow_map"));
+void IvsvTechnique::checkTileSize(int t) {
     if (t > 512 || (t & (t - 1)) != 0)
         throw InputError("ivsv: shadow_map (" + std::to_string(t) + ") must be a power of two <= 512");
 }

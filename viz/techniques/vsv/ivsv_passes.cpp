@@ -6,15 +6,15 @@
 
 namespace viz::ivsv_detail {
 
-void IvsvTechnique::setRectifyCommon(const gl::Program& p, const Settings& s, int cells, int tile) const {
+void IvsvTechnique::setRectifyCommon(const gl::Program& p, const IvsvSettings& s, int cells, int tile) const {
     p.use();
     p.set("uCells", glm::ivec3(cells, cells, kPhiBits));
     p.set("uTileSize", tile);
-    p.set("uAlphaBias", float(s.at("alpha_bias")));
-    p.set("uPhiBias", float(s.at("phi_bias")));
+    p.set("uAlphaBias", float(s.alphaBias));
+    p.set("uPhiBias", float(s.phiBias));
 }
 
-void IvsvTechnique::rectify(const Settings& s, int count, int cells, int tile, bool naive) {
+void IvsvTechnique::rectify(const IvsvSettings& s, int count, int cells, int tile, bool naive) {
     const GLuint zero = 0;
     mWords.clear(GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
     mVplBuffer.bindBase(GL_SHADER_STORAGE_BUFFER, 4);
@@ -109,10 +109,10 @@ const gl::Program& IvsvTechnique::gatherProgram(bool exact, bool interp, bool ep
 
 void IvsvTechnique::gather(const scene::Scene& scene, const FrameInput& input, int mode, int gathered, int cells, bool naive,
             glm::ivec2 pickGl) {
-    const Settings& s = input.settings;
+    const IvsvSettings& s = mSettings;
     const scene::Camera& cam = scene.camera;
-    const bool epipole = s.at("epipole") != 0.0;
-    const gl::Program& program = gatherProgram(s.at("combine") != 0.0, s.at("interp") != 0.0, epipole, naive);
+    const bool epipole = s.epipole;
+    const gl::Program& program = gatherProgram(s.exactCombine, s.interp, epipole, naive);
     const int w = input.width, h = input.height;
     gl::Texture& target = mode == kGatherFull ? mAirlight : (mode == kGatherInterleaved ? mRaw : mLow);
     const glm::ivec2 outSize = mode == kGatherQuarter ? glm::ivec2((w + 1) / 2, (h + 1) / 2) : glm::ivec2(w, h);
@@ -122,15 +122,15 @@ void IvsvTechnique::gather(const scene::Scene& scene, const FrameInput& input, i
     program.set("uScale", mode == kGatherQuarter ? 2 : 1);
     program.set("uCells", glm::ivec3(cells, cells, kPhiBits));
     program.set("uVplStride", mode == kGatherInterleaved ? 9 : 1);
-    program.set("uPhaseShift", s.at("subsets") != 0.0 ? std::max(0, input.frame) % 9 : 0);
+    program.set("uPhaseShift", s.subsetsPerFrame ? std::max(0, input.frame) % 9 : 0);
     mMedium.bind(scene.medium);
-    program.set("uChunkBits", int(s.at("chunk_bits")));
-    program.set("uDiscScale", float(s.at("vpl_disc")));
+    program.set("uChunkBits", s.chunkBits);
+    program.set("uDiscScale", float(s.vplDisc));
     program.set("uPick", pickGl);
     mVplBuffer.bindBase(GL_SHADER_STORAGE_BUFFER, 4);
     mPick.bindBase(GL_SHADER_STORAGE_BUFFER, 6);
     mView.surface().distance().bindUnit(render::hd::kFirstFreeTextureUnit);
-    program.set("uTileSize", int(s.at("shadow_map")));
+    program.set("uTileSize", s.tile);
     if (epipole && naive) mNaiveView.shadows().bind();
     if (epipole && !naive) mIsm.bindUnit(render::hd::kFirstFreeTextureUnit + 1);
     mResult->bindImage(0, GL_READ_ONLY);
@@ -152,7 +152,7 @@ void IvsvTechnique::gather(const scene::Scene& scene, const FrameInput& input, i
     mBilateral.set("uSize", glm::ivec2(w, h));
     mBilateral.set("uSourceSize", outSize);
     mBilateral.set("uMode", mode == kGatherInterleaved ? 0 : 1);
-    mBilateral.set("uSigma", float(s.at("bilateral_sigma")));
+    mBilateral.set("uSigma", float(s.bilateralSigma));
     target.bindImage(0, GL_READ_ONLY);
     mAirlight.bindImage(1, GL_WRITE_ONLY);
     const glm::ivec3 g2 = gl::groupCount({w, h, 1}, mBilateral.workGroupSize());
@@ -168,7 +168,7 @@ void IvsvTechnique::addOtherLights(const FrameInput& input) {
     in.scene = &mOtherLightsScene;
     in.width = input.width;
     in.height = input.height;
-    in.settings = completeSettings(*mVsv, {{"voxels", input.settings.at("voxels")}});
+    in.settings = completeSettings(*mVsv, {{"voxels", double(mSettings.voxels)}});
     in.stopAfterStage = 4;  // vsv.gather: L_air exists, no compose needed
     mAdder.add(mAirlight, mVsv->run(in), vsv_detail::kAirlight);
 }

@@ -18,6 +18,7 @@
 
 #include "core/error.h"
 #include "debug/permutations.h"
+#include "debug/param_table.h"
 #include "debug/stage_runner.h"
 #include "gl/buffer.h"
 #include "gl/program.h"
@@ -114,6 +115,25 @@ inline scene::Scene withoutAreaLights(const scene::Scene& scene) {
     return out;
 }
 
+// The settings a run reads, each declared once with its parameter (ivsvParams(), debug/param_table.h).
+struct IvsvSettings {
+    int vpls = 0, voxels = 0;
+    bool exactCombine = false;  // combine=exact
+    int gather = kGatherFull;
+    bool subsetsPerFrame = false;  // subsets=per-frame
+    bool naive = false;            // mode=naive
+    int points = 0, fillLevels = 0;
+    double alphaBias = 0.0, phiBias = 0.0;
+    bool interp = false;
+    bool epipole = false;  // epipole=paper
+    int chunkBits = 0;
+    double vplDisc = 0.0, bilateralSigma = 0.0;
+    int pickVpl = 0, pickTheta = -1;
+    int tile = 0;  // shadow_map: the ISM tile or naive cube face
+    bool forceFeatures = false;
+};
+const ParamTable<IvsvSettings>& ivsvParams();
+
 class IvsvTechnique final : public Technique {
 public:
     IvsvTechnique();
@@ -127,7 +147,8 @@ public:
         return "imperfect voxelized shadow volumes (Wyman and Dai 2013): area lights as many VPL shadow volumes";
     }
     const std::vector<StageInfo>& stages() const override { return mStages; }
-    const std::vector<ParamInfo>& params() const override { return mParams; }
+    const std::vector<ParamInfo>& params() const override { return ivsvParams().infos(); }
+    Controls controls() const override { return {.pickedPixel = true}; }
     bool needsGl() const override { return true; }
 
     // VPL count (the area light's sampling) and voxel resolution (each VPL grid's), issue 9's knobs:
@@ -172,7 +193,7 @@ private:
     // frame, texel = tile origin + (uv / 2 + 1 / 2) tile size; data uv = texel / atlas size, GL rows).
     std::vector<ViewMarker> ismMarkers(const MarkState& m, const vsv::Vpl& vpl, const glm::dvec3& w, double d) const;
 
-    static void checkTileSize(const Settings& s);
+    static void checkTileSize(int tile);
 
     glm::ivec2 tileOrigin(int i, int size) const { return {(i % mTilesX) * size, (i / mTilesX) * size}; }
 
@@ -185,9 +206,9 @@ private:
     // The point cloud is sampled once per scene and size; each splat pass uses all of it.
     void buildIsm(const scene::Scene& scene, const scene::Light& light, int points, int count, int tile, int fillLevels);
 
-    void setRectifyCommon(const gl::Program& p, const Settings& s, int cells, int tile) const;
+    void setRectifyCommon(const gl::Program& p, const IvsvSettings& s, int cells, int tile) const;
 
-    void rectify(const Settings& s, int count, int cells, int tile, bool naive);
+    void rectify(const IvsvSettings& s, int count, int cells, int tile, bool naive);
 
     void pack(glm::ivec2 origin, glm::ivec3 size);
 
@@ -231,7 +252,7 @@ private:
 
     static std::shared_ptr<Image> interleaveImage(int width, int height, int mode);
 
-    std::vector<ParamInfo> mParams;
+    IvsvSettings mSettings;  // the current run's, read once at its start
     std::vector<StageInfo> mStages;
     render::SceneViewPasses mView;       // surface term and compose
     render::MediumBlock mMedium;  // sigma_s, sigma_t, g for the shaders (common/medium.glsl)

@@ -5,44 +5,48 @@
 
 namespace viz::vsv_detail {
 
+const ParamTable<VsvSettings>& vsvParams() {
+    using S = VsvSettings;
+    static const ParamTable<S> table =
+        ParamTable<S>()
+            .add(&S::voxels, {"voxels", "epipolar grid cells per axis (alpha, theta, phi), or AxBxC per axis; phi a "
+                              "multiple of 32", 128, 32, 1024, true, {}, {"voxels_alpha", "voxels_theta", "voxels_phi"}})
+            .add(&S::voxelsAlpha, {"voxels_alpha", "alpha cells (0: `voxels`)", 0, 0, 1024, true})
+            .add(&S::voxelsTheta, {"voxels_theta", "theta cells (0: `voxels`)", 0, 0, 1024, true})
+            .add(&S::voxelsPhi, {"voxels_phi", "phi bits (0: `voxels`; a multiple of 32)", 0, 0, 1024, true})
+            .add(&S::exactCombine, {"combine", "fraction: lit fraction x unshadowed airlight; exact: sum of airlight "
+                                    "over lit runs", 1, 0, 1, true, {"fraction", "exact"}})
+            .add(&S::alphaBias, {"alpha_bias", "occluder alpha offset in cells (negative: shadow starts further from "
+                                 "the light; the paper's -2.25)", 0, -16, 16, false})
+            .add(&S::phiBias, {"phi_bias", "light-ray phi offset in cells (negative: shadow moves away from the eye; "
+                               "the paper's -1)", 0, -16, 16, false})
+            .add(&S::interp, {"interp", "1: two texels along theta; 0: nearest", 1, 0, 1, true})
+            .add(&S::dynamicRange, {"dynamic_range", "1: the grid covers only the visible part of epipolar space; 0: "
+                                    "all of it", 1, 0, 1, true})
+            .add(&S::epipole, {"epipole", "rays within one alpha cell of an epipole: off reads the grid; march tests "
+                               "the shadow map along the ray (direct_segments); paper compares the fragment with the "
+                               "light (the eye's visibility at the antipode), Wyman and Dai Sec. 5",
+                               1, 0, 2, true, {"off", "march", "paper"}})
+            .add(&S::directBins, {"direct_bins", "rays crossing fewer phi bins than this test the shadow map directly "
+                                  "(0: only rays at an epipole)", 4, 0, 1024, false})
+            .add(&S::directSegments, {"direct_segments", "shadow-map tests along a direct ray (epipole or too few phi "
+                                      "bins)", 128, 1, 4096, true})
+            .add(&S::runBins, {"run_bins", "longest run of phi bins per airlight segment (spot falloff averaged over "
+                               "it)", 8, 1, 1024, true})
+            .declare({"scan_passes", "stop the alpha scan after this many passes (-1: all; stepping)", -1, -1,
+                      kMaxScanPasses, true})
+            .declare(pickParam('x', "voxel column"))
+            .declare(pickParam('y', "voxel column"))
+            .add(&S::pickTheta, {"pick_theta", "theta cell of the unwrapped alpha x phi slices (-1: that of the "
+                                 "picked pixel)", -1, -1, 1024, true})
+            .add(&S::light, {"light", "which light's grid the intermediates show (index among the scene's lights)", 0,
+                             0, 255, true})
+            .declare(render::SceneViewPasses::params())
+            .add(&S::forceFeatures, forceFeaturesParam());
+    return table;
+}
+
 VsvTechnique::VsvTechnique() {
-    mParams = {
-        {"voxels", "epipolar grid cells per axis (alpha, theta, phi), or AxBxC per axis; phi a multiple of 32",
-         128, 32, 1024, true, {}, {"voxels_alpha", "voxels_theta", "voxels_phi"}},
-        {"voxels_alpha", "alpha cells (0: `voxels`)", 0, 0, 1024, true},
-        {"voxels_theta", "theta cells (0: `voxels`)", 0, 0, 1024, true},
-        {"voxels_phi", "phi bits (0: `voxels`; a multiple of 32)", 0, 0, 1024, true},
-        {"combine", "fraction: lit fraction x unshadowed airlight; exact: sum of airlight over lit runs", 1, 0,
-         1, true, {"fraction", "exact"}},
-        {"alpha_bias", "occluder alpha offset in cells (negative: shadow starts further from the light; the "
-                       "paper's -2.25)",
-         0, -16, 16, false},
-        {"phi_bias", "light-ray phi offset in cells (negative: shadow moves away from the eye; the paper's -1)", 0,
-         -16, 16, false},
-        {"interp", "1: two texels along theta; 0: nearest", 1, 0, 1, true},
-        {"dynamic_range", "1: the grid covers only the visible part of epipolar space; 0: all of it", 1, 0, 1,
-         true},
-        {"epipole", "rays within one alpha cell of an epipole: off reads the grid; march tests the shadow map "
-                    "along the ray (direct_segments); paper compares the fragment with the light (the eye's "
-                    "visibility at the antipode), Wyman and Dai Sec. 5",
-         1, 0, 2, true, {"off", "march", "paper"}},
-        {"direct_bins", "rays crossing fewer phi bins than this test the shadow map directly (0: only rays at "
-                        "an epipole)",
-         4, 0, 1024, false},
-        {"direct_segments", "shadow-map tests along a direct ray (epipole or too few phi bins)", 128, 1, 4096,
-         true},
-        {"run_bins", "longest run of phi bins per airlight segment (spot falloff averaged over it)", 8, 1, 1024,
-         true},
-        {"scan_passes", "stop the alpha scan after this many passes (-1: all; stepping)", -1, -1, kMaxScanPasses,
-         true},
-        pickParam('x', "voxel column"),
-        pickParam('y', "voxel column"),
-        {"pick_theta", "theta cell of the unwrapped alpha x phi slices (-1: that of the picked pixel)", -1, -1,
-         1024, true},
-        {"light", "which light's grid the intermediates show (index among the scene's lights)", 0, 0, 255, true},
-    };
-    for (ParamInfo& p : render::SceneViewPasses::params()) mParams.push_back(std::move(p));
-    mParams.push_back(forceFeaturesParam());
     mStages = {
         render::SceneViewPasses::shadowStage("vsv"),
         render::SceneViewPasses::surfaceStage("vsv"),
@@ -63,9 +67,10 @@ VsvTechnique::VsvTechnique() {
     checkStageOrder(mStages, kStageOrder);
 }
 
-std::vector<double> VsvTechnique::substepValues(int stage, const Settings& s) const {
-    if (stage != kScanIndex) return Technique::substepValues(stage, s);
-    const int alpha = s.at("voxels_alpha") > 0 ? int(s.at("voxels_alpha")) : int(s.at("voxels"));
+std::vector<double> VsvTechnique::substepValues(int stage, const Settings& settings) const {
+    if (stage != kScanIndex) return Technique::substepValues(stage, settings);
+    const VsvSettings s = vsvParams().read(settings);
+    const int alpha = s.voxelsAlpha > 0 ? s.voxelsAlpha : s.voxels;
     std::vector<double> values;
     for (int k = 0; k < scanPassCount(alpha); ++k) values.push_back(double(k));
     values.push_back(-1.0);
@@ -88,9 +93,10 @@ Plan VsvTechnique::plan(const scene::Scene& scene, const Settings& settings) con
 
 FrameOutput VsvTechnique::run(const FrameInput& input) {
     const scene::Scene& scene = *input.scene;
-    const Settings& s = input.settings;
+    mSettings = vsvParams().read(input.settings);
+    const VsvSettings& s = mSettings;
     FrameOutput out;
-    out.plan = planFor(scene, s, input.width, input.height);
+    out.plan = planFor(scene, input.settings, input.width, input.height);
     const std::vector<int> lights = shadedLights(scene);
     const GridSize size = gridSize(s);
     gl::StageClock clock;
@@ -101,8 +107,8 @@ FrameOutput VsvTechnique::run(const FrameInput& input) {
 
     // One grid per light; the stages below run light after light and time the sum. The intermediates
     // show the light chosen by `light`.
-    const int shown = std::clamp(int(s.at("light")), 0, std::max(0, int(lights.size()) - 1));
-    const bool dynamic = s.at("dynamic_range") != 0.0;
+    const int shown = std::clamp(s.light, 0, std::max(0, int(lights.size()) - 1));
+    const bool dynamic = s.dynamicRange;
     std::vector<vsv::EpipolarGrid> grids;
     for (int li : lights)
         grids.push_back(vsv::gridForLight(scene, scene.lights[std::size_t(li)], input.width, input.height,
@@ -117,7 +123,7 @@ FrameOutput VsvTechnique::run(const FrameInput& input) {
         const vsv::EpipolarFrame f = vsv::frameForLight(scene, scene.lights[std::size_t(lights[std::size_t(shown)])]);
         const glm::dvec3 ray = scene::pixelRay(scene.camera, input.width, input.height, pickX, pickY);
         pickTheta = std::clamp(int(std::floor(vsv::thetaCoord(g, vsv::thetaOf(f, ray)))), 0, g.nTheta - 1);
-        if (s.at("pick_theta") >= 0) pickTheta = std::min(int(s.at("pick_theta")), g.nTheta - 1);
+        if (s.pickTheta >= 0) pickTheta = std::min(s.pickTheta, g.nTheta - 1);
         mMark = MarkState{f, g, scene.camera, {input.width, input.height}, pickTheta};
     }
 
@@ -217,6 +223,7 @@ FrameOutput VsvTechnique::run(const FrameInput& input) {
 }
 
 Plan VsvTechnique::planFor(const scene::Scene& scene, const Settings& settings, int width, int height) const {
+    const VsvSettings s = vsvParams().read(settings);
     Plan p;
     for (const StageInfo& st : mStages) p.stages.push_back({st.id, true, ""});
     const std::vector<int> lights = shadedLights(scene);
@@ -231,19 +238,19 @@ Plan VsvTechnique::planFor(const scene::Scene& scene, const Settings& settings, 
         p.stages[kGatherIndex].runs = false;
         p.stages[kGatherIndex].why = "sigma_s = 0: the medium scatters nothing, L_air = 0";
     }
-    const GridSize size = gridSize(settings);
+    const GridSize size = gridSize(s);
     if (!lights.empty())
         p.stages[kScanIndex].why = std::to_string(scanPassCount(size.alpha)) + " passes for " +
                                    std::to_string(size.alpha) + " alpha cells";
-    const bool exact = settings.at("combine") != 0.0;
-    const bool interp = settings.at("interp") != 0.0;
+    const bool exact = s.exactCombine;
+    const bool interp = s.interp;
     bool epipoleInView = false;
     for (int li : lights) {
         const vsv::EpipolarGrid g = vsv::gridForLight(scene, scene.lights[std::size_t(li)], width, height,
                                                       size.alpha, size.theta, size.phi, true);
         epipoleInView = epipoleInView || g.epipoleToward || g.epipoleAway;
     }
-    const bool epipole = epipoleInView && settings.at("epipole") != 0.0;
+    const bool epipole = epipoleInView && s.epipole != 0;
     // Over the lights vsv shades (culled ones have no GPU light, no shadow map, no cookie lookup).
     const auto shaded = [&](auto predicate) {
         return std::any_of(lights.begin(), lights.end(),
@@ -262,14 +269,14 @@ Plan VsvTechnique::planFor(const scene::Scene& scene, const Settings& settings, 
                                  : "interp=0: nearest texel"});
     p.features.push_back(
         {"EPIPOLE", epipole,
-         epipole ? (settings.at("epipole") == 2.0
+         epipole ? (s.epipole == 2
                         ? "an epipole is in view: rays within one alpha cell of it compare the fragment with the "
                           "light (the paper's rule)"
                         : "an epipole is in view: rays within one alpha cell of it test the shadow map directly")
                  : (epipoleInView ? "epipole=off: the grid is read even at the epipole"
                                   : "no epipole in view (the light and its antipode are off screen)")});
-    p.features.push_back({"DYNAMIC_RANGE", settings.at("dynamic_range") != 0.0,
-                          settings.at("dynamic_range") != 0.0
+    p.features.push_back({"DYNAMIC_RANGE", s.dynamicRange,
+                          s.dynamicRange
                               ? "alpha, theta, phi ranges cover only the visible part (a run-time choice)"
                               : "the grid spans alpha, phi in [0, pi], theta in (-pi, pi]"});
     p.features.push_back({"SPOT", hasSpot, hasSpot ? "spot falloff and cone band in phi" : "no spot light"});
@@ -290,8 +297,8 @@ Plan VsvTechnique::planFor(const scene::Scene& scene, const Settings& settings, 
     // and cookies compiled out, the epipole rays when no epipole is in view (the grid flags then keep
     // every ray on the grid), the inner ivsv without an area light (it adds zero).
     std::vector<std::string> pruned = {"SPOT", "COOKIE", "SHADOW_MAPS_CUBE", "SHADOW_MAPS_2D", "AREA_LIGHTS_BY_IVSV"};
-    if (settings.at("epipole") != 0.0) pruned.push_back("EPIPOLE");
-    forcePlan(p, settings.at("force_features") != 0.0, pruned);
+    if (s.epipole != 0) pruned.push_back("EPIPOLE");
+    forcePlan(p, s.forceFeatures, pruned);
     annotatePermutations(p, kDefines);
     return p;
 }

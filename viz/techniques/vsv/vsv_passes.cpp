@@ -48,7 +48,7 @@ void VsvTechnique::addAreaLights(const FrameInput& input) {
     in.scene = &mAreaLightsScene;
     in.width = input.width;
     in.height = input.height;
-    in.settings = completeSettings(*mIvsv, {{"voxels", std::min(512.0, input.settings.at("voxels"))}});
+    in.settings = completeSettings(*mIvsv, {{"voxels", std::min(512.0, double(mSettings.voxels))}});
     in.stopAfterStage = 5;  // ivsv.gather: L_air exists, no compose needed
     mAdder.add(mAirlight, mIvsv->run(in), ivsv_detail::kAirlight);
 }
@@ -73,7 +73,7 @@ void VsvTechnique::setEpipolar(const gl::Program& program, const vsv::EpipolarFr
     program.set("uEpiThetaFull", g.thetaFull ? 1 : 0);
 }
 
-void VsvTechnique::voxelize(const scene::Scene& scene, const Settings& s, int sceneLight, const vsv::EpipolarGrid& g, int slot) {
+void VsvTechnique::voxelize(const scene::Scene& scene, const VsvSettings& s, int sceneLight, const vsv::EpipolarGrid& g, int slot) {
     const vsv::EpipolarFrame f = vsv::frameForLight(scene, scene.lights[std::size_t(sceneLight)]);
     const GLuint zero = 0;
     mWords.clear(GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
@@ -82,8 +82,8 @@ void VsvTechnique::voxelize(const scene::Scene& scene, const Settings& s, int sc
     mVoxelize.use();
     setEpipolar(mVoxelize, f, g);
     mVoxelize.set("uLight", gpuLightIndex(sceneLight));
-    mVoxelize.set("uAlphaBias", float(s.at("alpha_bias")));
-    mVoxelize.set("uPhiBias", float(s.at("phi_bias")));
+    mVoxelize.set("uAlphaBias", float(s.alphaBias));
+    mVoxelize.set("uPhiBias", float(s.phiBias));
     mWords.bindImage(0, GL_READ_WRITE);
     mOccluder[std::size_t(slot)].bindImage(1, GL_WRITE_ONLY);
     glm::ivec3 groups = gl::groupCount({g.nPhi, g.nTheta, 1}, mVoxelize.workGroupSize());
@@ -141,13 +141,13 @@ void VsvTechnique::gather(const gl::Program& program, const scene::Scene& scene,
     render::bindCameraRay(program, cam, input.width, input.height);
     program.set("uLight", gpuLightIndex(sceneLight));
     mMedium.bind(scene.medium);
-    program.set("uRunBins", int(input.settings.at("run_bins")));
+    program.set("uRunBins", mSettings.runBins);
     program.set("uAccumulate", slot > 0 ? 1 : 0);
     program.set("uEpipoleToward", g.epipoleToward && g.alpha0 == 0.0 ? 1 : 0);
     program.set("uEpipoleAway", g.epipoleAway && g.alpha1 >= 3.141592653589793 ? 1 : 0);
-    program.set("uDirectBins", float(input.settings.at("direct_bins")));
-    program.set("uDirectSegments", int(input.settings.at("direct_segments")));
-    program.set("uEpipoleRule", int(input.settings.at("epipole")));
+    program.set("uDirectBins", float(mSettings.directBins));
+    program.set("uDirectSegments", mSettings.directSegments);
+    program.set("uEpipoleRule", mSettings.epipole);
     program.set("uZfar", float(cam.zfar));
     mView.lights().bind();
     mView.shadows().bind();

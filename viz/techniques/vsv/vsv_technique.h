@@ -15,6 +15,7 @@
 
 #include "core/error.h"
 #include "debug/permutations.h"
+#include "debug/param_table.h"
 #include "debug/stage_runner.h"
 #include "gl/program.h"
 #include "gl/stage_clock.h"
@@ -71,12 +72,26 @@ struct GridSize {
     int alpha = 128, theta = 128, phi = 128;
 };
 
-inline GridSize gridSize(const Settings& s) {
-    const int n = int(s.at("voxels"));
+// The settings a run reads, each declared once with its parameter (vsvParams(), debug/param_table.h).
+struct VsvSettings {
+    int voxels = 0, voxelsAlpha = 0, voxelsTheta = 0, voxelsPhi = 0;
+    bool exactCombine = false;  // combine=exact
+    double alphaBias = 0.0, phiBias = 0.0;
+    bool interp = false, dynamicRange = false;
+    int epipole = 0;  // off, march, paper
+    double directBins = 0.0;
+    int directSegments = 0, runBins = 0;
+    int pickTheta = -1, light = 0;
+    bool forceFeatures = false;
+};
+const ParamTable<VsvSettings>& vsvParams();
+
+inline GridSize gridSize(const VsvSettings& s) {
+    const int n = s.voxels;
     GridSize g{n, n, n};
-    if (s.at("voxels_alpha") > 0) g.alpha = int(s.at("voxels_alpha"));
-    if (s.at("voxels_theta") > 0) g.theta = int(s.at("voxels_theta"));
-    if (s.at("voxels_phi") > 0) g.phi = int(s.at("voxels_phi"));
+    if (s.voxelsAlpha > 0) g.alpha = s.voxelsAlpha;
+    if (s.voxelsTheta > 0) g.theta = s.voxelsTheta;
+    if (s.voxelsPhi > 0) g.phi = s.voxelsPhi;
     if (g.phi % 32 != 0)
         throw InputError("vsv: the phi resolution (" + std::to_string(g.phi) +
                          ") must be a multiple of 32 (phi bits are packed in 32-bit words)");
@@ -105,8 +120,6 @@ inline scene::Scene onlyAreaLights(const scene::Scene& scene) {
 
 using vsv::scanPassCount;
 
-using vsv::cpuIntermediate;
-
 class VsvTechnique final : public Technique {
 public:
     VsvTechnique();
@@ -120,7 +133,8 @@ public:
         return "voxelized shadow volumes (Wyman 2011): epipolar voxel grid, prefix-OR extrusion, one texel per ray";
     }
     const std::vector<StageInfo>& stages() const override { return mStages; }
-    const std::vector<ParamInfo>& params() const override { return mParams; }
+    const std::vector<ParamInfo>& params() const override { return vsvParams().infos(); }
+    Controls controls() const override { return {.pickedPixel = true}; }
     bool needsGl() const override { return true; }
 
     // Voxel resolution per axis, the one quality knob (issue 9): the grid's alpha, theta and phi cells
@@ -169,7 +183,7 @@ private:
 
     static void setEpipolar(const gl::Program& program, const vsv::EpipolarFrame& f, const vsv::EpipolarGrid& g);
 
-    void voxelize(const scene::Scene& scene, const Settings& s, int sceneLight, const vsv::EpipolarGrid& g, int slot);
+    void voxelize(const scene::Scene& scene, const VsvSettings& s, int sceneLight, const vsv::EpipolarGrid& g, int slot);
 
     // Hillis-Steele passes with offsets 1, 2, 4, ...: ping-pong between the grid and its partner; the
     // result pointer follows the last pass written.
@@ -190,7 +204,7 @@ private:
     std::shared_ptr<Image> columnImage(const scene::Scene& scene, const FrameInput& input, int sceneLight,
                                        const vsv::EpipolarGrid& g, int slot, int x, int y) const;
 
-    std::vector<ParamInfo> mParams;
+    VsvSettings mSettings;  // the current run's, read once at its start
     std::vector<StageInfo> mStages;
     render::SceneViewPasses mView;
     render::MediumBlock mMedium;  // sigma_s, sigma_t, g for the shaders (common/medium.glsl)
