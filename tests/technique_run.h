@@ -19,4 +19,10 @@ inline FrameOutput runTechnique(Technique& technique, const scene::Scene& scene,
     return technique.run(in);
 }
 
+// A technique's plan for `scene` with `given` completed by its defaults.
+inline Plan planOf(const std::string& technique, const scene::Scene& scene, const Settings& given = {}) {
+    const auto t = makeTechnique(technique);
+    return t->plan(scene, completeSettings(*t, given));
+}
+
 }  // namespace viz::testing

@@ -40,11 +40,8 @@ protected:
     }
 };
 
+using viz::testing::allFinite;
 using viz::testing::relativeL2;
-
-bool allFinite(const viz::Image& image) {
-    return std::all_of(image.pixels.begin(), image.pixels.end(), [](float v) { return std::isfinite(v); });
-}
 
 }  // namespace
 
@@ -241,12 +238,6 @@ TEST_F(IvsvTest, PlanAndInputErrors) {
     auto technique = viz::makeTechnique("ivsv");
     const viz::Settings settings = viz::completeSettings(*technique, {});
     const viz::scene::Scene tv = viz::scene::makeBuiltinScene("tv-room");
-    auto feature = [](const viz::Plan& p, const std::string& name) {
-        for (const auto& f : p.features)
-            if (f.feature == name) return f;
-        ADD_FAILURE() << "no feature " << name;
-        return viz::FeaturePlan{};
-    };
     const viz::Plan imperfect = technique->plan(tv, settings);
     EXPECT_TRUE(feature(imperfect, "IMPERFECT_SHADOW_MAPS").enabled);
     EXPECT_TRUE(feature(imperfect, "BATCHED_PASSES").enabled);

@@ -40,12 +40,6 @@ bool allFiniteNonNegative(const viz::Image& img) {
     return true;
 }
 
-const viz::FeaturePlan* feature(const viz::Plan& p, const std::string& name) {
-    for (const auto& f : p.features)
-        if (f.feature == name) return &f;
-    return nullptr;
-}
-
 // shadow_map.glsl cubeLookup on the CPU: the nearest texel of the face the direction leaves through.
 // faces[f] is face f read back (image row 0 at the top, so GL row r is image row size - 1 - r).
 float cubeLookup(const std::vector<viz::Image>& faces, glm::vec3 d) {
@@ -70,23 +64,23 @@ float cubeLookup(const std::vector<viz::Image>& faces, glm::vec3 d) {
 TEST_F(MinmaxPointTest, PlanRectifiesPointLights) {
     auto technique = viz::makeTechnique("minmax");
     const viz::Plan p = technique->plan(pointGrate("on"), viz::completeSettings(*technique, {}));
-    ASSERT_TRUE(feature(p, "EPIPOLAR_POINT") && feature(p, "BRUTE_FORCE_LIGHTS"));
-    EXPECT_TRUE(feature(p, "EPIPOLAR_POINT")->enabled);
-    EXPECT_NE(feature(p, "EPIPOLAR_POINT")->why.find("cube map"), std::string::npos);
-    EXPECT_FALSE(feature(p, "BRUTE_FORCE_LIGHTS")->enabled);
-    EXPECT_TRUE(feature(p, "NEAR_EPIPOLE")->enabled);  // the light is in view
-    EXPECT_TRUE(feature(p, "SHADOW_MAPS_CUBE")->enabled);
-    EXPECT_FALSE(feature(p, "SHADOW_MAPS_2D")->enabled);
+    ASSERT_TRUE(viz::findFeature(p, "EPIPOLAR_POINT") && viz::findFeature(p, "BRUTE_FORCE_LIGHTS"));
+    EXPECT_TRUE(viz::findFeature(p, "EPIPOLAR_POINT")->enabled);
+    EXPECT_NE(viz::findFeature(p, "EPIPOLAR_POINT")->why.find("cube map"), std::string::npos);
+    EXPECT_FALSE(viz::findFeature(p, "BRUTE_FORCE_LIGHTS")->enabled);
+    EXPECT_TRUE(viz::findFeature(p, "NEAR_EPIPOLE")->enabled);  // the light is in view
+    EXPECT_TRUE(viz::findFeature(p, "SHADOW_MAPS_CUBE")->enabled);
+    EXPECT_FALSE(viz::findFeature(p, "SHADOW_MAPS_2D")->enabled);
     for (const auto& s : p.stages) EXPECT_TRUE(s.runs) << s.stage;
     const viz::Plan march =
         technique->plan(pointGrate("on"), viz::completeSettings(*technique, {{"point_lights", 1}}));
-    EXPECT_FALSE(feature(march, "EPIPOLAR_POINT")->enabled);
-    EXPECT_TRUE(feature(march, "BRUTE_FORCE_LIGHTS")->enabled);
-    EXPECT_NE(feature(march, "BRUTE_FORCE_LIGHTS")->why.find("point_lights=march"), std::string::npos);
+    EXPECT_FALSE(viz::findFeature(march, "EPIPOLAR_POINT")->enabled);
+    EXPECT_TRUE(viz::findFeature(march, "BRUTE_FORCE_LIGHTS")->enabled);
+    EXPECT_NE(viz::findFeature(march, "BRUTE_FORCE_LIGHTS")->why.find("point_lights=march"), std::string::npos);
     // Spot scenes compile the point code out.
     const viz::Plan grate =
         technique->plan(viz::scene::makeBuiltinScene("grate"), viz::completeSettings(*technique, {}));
-    EXPECT_FALSE(feature(grate, "EPIPOLAR_POINT")->enabled);
+    EXPECT_FALSE(viz::findFeature(grate, "EPIPOLAR_POINT")->enabled);
 }
 
 // S[alpha, gamma] of a point light equals the occluder's beta computed on the CPU from a direct lookup of
@@ -200,7 +194,7 @@ TEST_F(MinmaxPointTest, StiffPointLightCasesStayWithinTheirBound) {
         ASSERT_NE(c, nullptr) << id;
         const viz::scene::Scene scene = viz::scene::buildStiffScene(*c);
         auto technique = viz::makeTechnique("minmax");
-        ASSERT_TRUE(feature(technique->plan(scene, viz::completeSettings(*technique, technique->stiffSettings())),
+        ASSERT_TRUE(viz::findFeature(technique->plan(scene, viz::completeSettings(*technique, technique->stiffSettings())),
                             "EPIPOLAR_POINT")->enabled);
         const viz::FrameOutput reference = render(scene, "reference", {}, c->width, c->height);
         viz::FrameOutput out = render(scene, "minmax", technique->stiffSettings(), c->width, c->height);
@@ -298,7 +292,7 @@ TEST_F(MinmaxPointTest, SpotAndPointTogetherAndSvdAndForcedFeatures) {
     const viz::FrameOutput reference = render(scene, "reference", {}, w, h);
     const viz::FrameOutput out = render(scene, "minmax", {{"shadow_map", 2048}}, w, h);
     const viz::FrameOutput svd = render(scene, "minmax", {{"shadow_map", 2048}, {"integrand", 1}, {"rank", 8}}, w, h);
-    EXPECT_TRUE(feature(out.plan, "EPIPOLAR_POINT")->enabled && feature(out.plan, "SPOT")->enabled);
+    EXPECT_TRUE(viz::findFeature(out.plan, "EPIPOLAR_POINT")->enabled && viz::findFeature(out.plan, "SPOT")->enabled);
     EXPECT_TRUE(allFiniteNonNegative(out.airlight) && allFiniteNonNegative(svd.airlight));
     const double e = relativeL2(out.airlight, reference.airlight);
     const double eSvd = relativeL2(svd.airlight, reference.airlight);

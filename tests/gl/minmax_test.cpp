@@ -24,13 +24,8 @@ namespace {
 
 class MinmaxTest : public viz::testing::TechniqueTest {};
 
+using viz::testing::allFinite;
 using viz::testing::relativeL2;
-
-bool allFinite(const viz::Image& img) {
-    for (float v : img.pixels)
-        if (!std::isfinite(v)) return false;
-    return true;
-}
 
 // GL row of an Image read back by the test utilities (row 0 at the top).
 float texel(const viz::Image& img, int x, int glRow, int c = 0) { return img.at(x, img.height - 1 - glRow, c); }
@@ -323,12 +318,6 @@ TEST_F(MinmaxTest, AreaLightsAreMarchedByBruteForce) {
 TEST_F(MinmaxTest, PlanNamesFeaturesAndDefines) {
     auto technique = viz::makeTechnique("minmax");
     const viz::Settings settings = viz::completeSettings(*technique, {});
-    auto feature = [](const viz::Plan& p, const std::string& name) {
-        for (const auto& f : p.features)
-            if (f.feature == name) return f;
-        ADD_FAILURE() << "no feature " << name;
-        return viz::FeaturePlan{};
-    };
     const viz::Plan grate = technique->plan(viz::scene::makeBuiltinScene("grate"), settings);
     EXPECT_TRUE(feature(grate, "NEAR_EPIPOLE").enabled);  // the spot is in view
     EXPECT_NE(feature(grate, "NEAR_EPIPOLE").why.find("NEAR_EPIPOLE"), std::string::npos);

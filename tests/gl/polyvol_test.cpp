@@ -24,13 +24,8 @@ namespace {
 
 class PolyvolTest : public viz::testing::TechniqueTest {};
 
+using viz::testing::allFinite;
 using viz::testing::relativeL2;
-
-bool allFinite(const viz::Image& image) {
-    for (float v : image.pixels)
-        if (!std::isfinite(v)) return false;
-    return true;
-}
 
 // Every directed edge of a closed, consistently oriented, T-junction-free triangle mesh appears exactly
 // once, and so does its reverse. Returns the number of edges breaking that rule.
@@ -247,23 +242,13 @@ TEST_F(PolyvolTest, CrackDetectorSeesAnOpenVolume) {
 
 TEST_F(PolyvolTest, OmniLightMatchesTheReference) {
     const viz::scene::Scene scene = omniGrate();
-    const viz::FrameOutput reference = render(scene, "reference", {}, 160, 120);
-    const viz::FrameOutput out = render(scene, "polyvol", {{"shadow_map", 512}}, 160, 120);
-    EXPECT_TRUE(allFinite(out.airlight));
-    const double e = relativeL2(out.airlight, reference.airlight);
-    std::printf("polyvol omni grate shadow_map=512: relative L2 = %.4f\n", e);
-    EXPECT_LT(e, 0.03);
+    expectNearReference(scene, "polyvol", {{"shadow_map", 512}}, 160, 120, 0.03,
+                        "polyvol omni grate shadow_map=512");
 }
 
 TEST_F(PolyvolTest, PlanLeavesOutWhatTheSceneDoesNotNeed) {
     auto technique = viz::makeTechnique("polyvol");
     const viz::Settings settings = viz::completeSettings(*technique, {});
-    auto feature = [](const viz::Plan& p, const std::string& name) {
-        for (const auto& f : p.features)
-            if (f.feature == name) return f;
-        ADD_FAILURE() << "no feature " << name;
-        return viz::FeaturePlan{};
-    };
     const viz::Plan grate = technique->plan(viz::scene::makeBuiltinScene("grate"), settings);
     EXPECT_TRUE(feature(grate, "SPOT").enabled);
     EXPECT_FALSE(feature(grate, "COOKIE").enabled);
@@ -598,12 +583,8 @@ TEST_F(PolyvolTest, SteppingTheRefinementLeavesNoCrack) {
 // per angular piece, about one piece per cookie texel the segment sweeps.
 TEST_F(PolyvolTest, MatchesTheReferenceUnderAColouredCookie) {
     const viz::scene::Scene scene = viz::scene::makeBuiltinScene("stained-glass");
-    const viz::FrameOutput reference = render(scene, "reference", {}, 80, 60);
-    const viz::FrameOutput out = render(scene, "polyvol", {{"shadow_map", 512}}, 80, 60);
-    EXPECT_TRUE(allFinite(out.airlight));
-    const double e = relativeL2(out.airlight, reference.airlight);
-    std::printf("polyvol stained-glass 512^2, 80x60: relative L2 = %.4f\n", e);
-    EXPECT_LT(e, 0.03);
+    expectNearReference(scene, "polyvol", {{"shadow_map", 512}}, 80, 60, 0.03,
+                        "polyvol stained-glass 512^2, 80x60");
 }
 
 // The same grate in units 1e4 times larger (sigma x 1e-4, I x 1e8) is the same image. The spot's cone

@@ -72,12 +72,6 @@ TEST_F(RaymarchTest, PlanLeavesOutWhatTheSceneDoesNotNeed) {
     const viz::Settings settings = viz::completeSettings(*technique, {});
     const viz::Plan grate = technique->plan(viz::scene::makeBuiltinScene("grate"), settings);
     const viz::Plan tv = technique->plan(viz::scene::makeBuiltinScene("tv-room"), settings);
-    auto feature = [](const viz::Plan& p, const std::string& name) {
-        for (const auto& f : p.features)
-            if (f.feature == name) return f;
-        ADD_FAILURE() << "no feature " << name;
-        return viz::FeaturePlan{};
-    };
     EXPECT_FALSE(feature(grate, "AREA_VPLS").enabled);
     EXPECT_FALSE(feature(grate, "AREA_VPLS").why.empty());
     EXPECT_TRUE(feature(tv, "AREA_VPLS").enabled);

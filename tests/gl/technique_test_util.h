@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <memory>
 #include <string>
 #include <vector>
@@ -16,6 +17,22 @@
 #include "techniques/registry.h"
 
 namespace viz::testing {
+
+// Every value of `image` is finite (no NaN, no Inf).
+inline bool allFinite(const Image& image) {
+    return std::all_of(image.pixels.begin(), image.pixels.end(), [](float v) { return std::isfinite(v); });
+}
+
+// ||a - b||_2 / ||b||_2 over all pixels and channels.
+inline double relativeL2(const Image& a, const Image& b) {
+    double num = 0.0, den = 0.0;
+    for (std::size_t i = 0; i < b.pixels.size(); ++i) {
+        const double d = double(a.pixels[i]) - double(b.pixels[i]);
+        num += d * d;
+        den += double(b.pixels[i]) * double(b.pixels[i]);
+    }
+    return std::sqrt(num / den);
+}
 
 class TechniqueTest : public gl::GlTest {
 protected:
@@ -49,6 +66,24 @@ protected:
             EXPECT_EQ(out.final.empty(), s < finalStage) << "stage " << s;
         }
     }
+    // The plan's entry for feature `name`; a failure, and an empty entry, when the plan does not list it.
+    static FeaturePlan feature(const Plan& plan, const std::string& name) {
+        const FeaturePlan* f = findFeature(plan, name);
+        if (!f) ADD_FAILURE() << "no feature " << name;
+        return f ? *f : FeaturePlan{};
+    }
+    // Renders `technique` and the reference at w x h and expects the technique's L_air finite and within
+    // `bound` relative L2 of the reference's; prints "label: relative L2 = e" and returns e.
+    static double expectNearReference(const scene::Scene& scene, const std::string& technique,
+                                      const Settings& settings, int w, int h, double bound, const std::string& label) {
+        const FrameOutput reference = render(scene, "reference", {}, w, h);
+        const FrameOutput out = render(scene, technique, settings, w, h);
+        EXPECT_TRUE(allFinite(out.airlight)) << label;
+        const double e = relativeL2(out.airlight, reference.airlight);
+        std::printf("%s: relative L2 = %.4f\n", label.c_str(), e);
+        EXPECT_LT(e, bound) << label;
+        return e;
+    }
     static const Intermediate* find(const FrameOutput& out, const std::string& id) {
         for (const auto& i : out.intermediates)
             if (i.id == id) return &i;
@@ -56,7 +91,6 @@ protected:
     }
 };
 
-// ||a - b||_2 / ||b||_2 over all pixels and channels.
 // The shaders' pixelRay (pixel centre, row 0 at the top) in float, as the GPU computes it, for CPU mirrors
 // that must follow the GPU's rounding.
 inline glm::vec3 shaderPixelRay(const scene::Camera& cam, int w, int h, int x, int y) {
@@ -103,16 +137,6 @@ inline int expectColumnIsAVoxelColumnAndItsPrefixOr(const Image& voxels, const I
     for (int k = 0; k < read; ++k) before += column.at(k, 0) > 0.5f, after += column.at(k, 1) > 0.5f;
     EXPECT_GE(after, before);
     return read;
-}
-
-inline double relativeL2(const Image& a, const Image& b) {
-    double num = 0.0, den = 0.0;
-    for (std::size_t i = 0; i < b.pixels.size(); ++i) {
-        const double d = double(a.pixels[i]) - double(b.pixels[i]);
-        num += d * d;
-        den += double(b.pixels[i]) * double(b.pixels[i]);
-    }
-    return std::sqrt(num / den);
 }
 
 }  // namespace viz::testing

@@ -25,12 +25,9 @@ namespace {
 
 class VsvTest : public viz::testing::TechniqueTest {};
 
+using viz::testing::allFinite;
 using viz::testing::relativeL2;
 using viz::vsv::Bits128;
-
-bool allFinite(const viz::Image& image) {
-    return std::all_of(image.pixels.begin(), image.pixels.end(), [](float v) { return std::isfinite(v); });
-}
 
 // The grate with its spot turned into a point light at the same place (cube-map voxelization).
 viz::scene::Scene pointGrate() {
@@ -347,12 +344,8 @@ TEST_F(VsvTest, MatchesTheReferenceOnGrate) {
 
 TEST_F(VsvTest, PointLightMatchesTheReference) {
     const viz::scene::Scene scene = pointGrate();
-    const viz::FrameOutput reference = render(scene, "reference", {}, 160, 120);
-    const viz::FrameOutput out = render(scene, "vsv", {{"voxels", 256}, {"shadow_map", 1024}}, 160, 120);
-    EXPECT_TRUE(allFinite(out.airlight));
-    const double e = relativeL2(out.airlight, reference.airlight);
-    std::printf("vsv grate with a point light 160x120 voxels=256: relative L2 %.4f\n", e);
-    EXPECT_LT(e, 0.05);
+    expectNearReference(scene, "vsv", {{"voxels", 256}, {"shadow_map", 1024}}, 160, 120, 0.05,
+                        "vsv grate with a point light 160x120 voxels=256");
 }
 
 // Dynamic range selection spends the cells on the visible part of epipolar space: at equal resolution
@@ -457,12 +450,6 @@ TEST_F(VsvTest, PlanAndInputErrors) {
     auto technique = viz::makeTechnique("vsv");
     const viz::Settings settings = viz::completeSettings(*technique, {});
     const viz::Plan grate = technique->plan(viz::scene::makeBuiltinScene("grate"), settings);
-    auto feature = [](const viz::Plan& p, const std::string& name) {
-        for (const auto& f : p.features)
-            if (f.feature == name) return f;
-        ADD_FAILURE() << "no feature " << name;
-        return viz::FeaturePlan{};
-    };
     EXPECT_FALSE(feature(grate, "EPIPOLE").enabled);
     EXPECT_TRUE(feature(grate, "COMBINE_EXACT").enabled);
     EXPECT_NE(feature(grate, "SHADOW_MAPS_CUBE").why.find("SHADOW_NO_CUBE"), std::string::npos);

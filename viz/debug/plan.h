@@ -27,6 +27,10 @@ struct Plan {
 // the reason it would have been skipped in `why`. Features chosen by settings are not touched.
 void forcePlan(Plan& plan, bool force, const std::vector<std::string>& scenePrunedFeatures);
 
+// The plan's entry for feature `name` / stage `id`; null when the plan does not list it.
+const FeaturePlan* findFeature(const Plan& plan, const std::string& name);
+const StagePlan* findStage(const Plan& plan, const std::string& id);
+
 // Whether the plan lists feature `name` as enabled (false when it does not list it).
 bool featureEnabled(const Plan& plan, const std::string& name);
 

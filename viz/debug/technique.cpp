@@ -115,10 +115,21 @@ ParamInfo forceFeaturesParam() {
             0, 0, 1, true};
 }
 
-bool featureEnabled(const Plan& plan, const std::string& name) {
+const FeaturePlan* findFeature(const Plan& plan, const std::string& name) {
     for (const FeaturePlan& f : plan.features)
-        if (f.feature == name) return f.enabled;
-    return false;
+        if (f.feature == name) return &f;
+    return nullptr;
+}
+
+const StagePlan* findStage(const Plan& plan, const std::string& id) {
+    for (const StagePlan& s : plan.stages)
+        if (s.stage == id) return &s;
+    return nullptr;
+}
+
+bool featureEnabled(const Plan& plan, const std::string& name) {
+    const FeaturePlan* f = findFeature(plan, name);
+    return f && f->enabled;
 }
 
 void forcePlan(Plan& plan, bool force, const std::vector<std::string>& scenePrunedFeatures) {

@@ -7,26 +7,14 @@
 #include <string>
 
 #include "scene/builtin_scenes.h"
+#include "technique_run.h"
 #include "techniques/registry.h"
 
 namespace viz {
 namespace {
 
-const FeaturePlan* findFeature(const Plan& plan, const std::string& name) {
-    for (const FeaturePlan& f : plan.features)
-        if (f.feature == name) return &f;
-    return nullptr;
-}
-
-const StagePlan* findStage(const Plan& plan, const std::string& id) {
-    for (const StagePlan& s : plan.stages)
-        if (s.stage == id) return &s;
-    return nullptr;
-}
-
 Plan minmaxPlan(const std::string& sceneName, const Settings& given = {}) {
-    const auto t = makeTechnique("minmax");
-    return t->plan(scene::makeBuiltinScene(sceneName), completeSettings(*t, given));
+    return testing::planOf("minmax", scene::makeBuiltinScene(sceneName), given);
 }
 
 struct Expected {

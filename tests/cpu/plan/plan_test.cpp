@@ -8,20 +8,16 @@
 #include <vector>
 
 #include "scene/builtin_scenes.h"
+#include "technique_run.h"
 #include "techniques/registry.h"
 
 namespace viz {
 namespace {
 
-const FeaturePlan* feature(const Plan& plan, const std::string& name) {
-    for (const FeaturePlan& f : plan.features)
-        if (f.feature == name) return &f;
-    return nullptr;
-}
+const FeaturePlan* feature(const Plan& plan, const std::string& name) { return findFeature(plan, name); }
 
 Plan planFor(const std::string& technique, const std::string& sceneName, const Settings& given = {}) {
-    const auto t = makeTechnique(technique);
-    return t->plan(scene::makeBuiltinScene(sceneName), completeSettings(*t, given));
+    return testing::planOf(technique, scene::makeBuiltinScene(sceneName), given);
 }
 
 TEST(Plan, EveryTechniqueListsItsStagesInOrderAndExplainsEverySkip) {

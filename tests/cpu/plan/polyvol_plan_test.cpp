@@ -14,11 +14,10 @@ namespace viz {
 namespace {
 
 const FeaturePlan& feature(const Plan& plan, const std::string& name) {
-    for (const FeaturePlan& f : plan.features)
-        if (f.feature == name) return f;
-    ADD_FAILURE() << "polyvol lists no feature " << name;
     static const FeaturePlan kNone;
-    return kNone;
+    const FeaturePlan* f = findFeature(plan, name);
+    if (!f) ADD_FAILURE() << "polyvol lists no feature " << name;
+    return f ? *f : kNone;
 }
 
 Plan polyvolPlan(const scene::Scene& scene, const Settings& given = {}) {

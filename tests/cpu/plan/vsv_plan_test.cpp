@@ -7,27 +7,13 @@
 #include <string>
 
 #include "scene/builtin_scenes.h"
+#include "technique_run.h"
 #include "techniques/registry.h"
 
 namespace viz {
 namespace {
 
-const FeaturePlan* findFeature(const Plan& plan, const std::string& name) {
-    for (const FeaturePlan& f : plan.features)
-        if (f.feature == name) return &f;
-    return nullptr;
-}
-
-const StagePlan* findStage(const Plan& plan, const std::string& id) {
-    for (const StagePlan& s : plan.stages)
-        if (s.stage == id) return &s;
-    return nullptr;
-}
-
-Plan planOf(const std::string& technique, const scene::Scene& scene, const Settings& given = {}) {
-    const auto t = makeTechnique(technique);
-    return t->plan(scene, completeSettings(*t, given));
-}
+using testing::planOf;
 
 void expectFeatures(const std::string& technique, const std::string& sceneName,
                     const std::map<std::string, bool>& expected, const Settings& given = {}) {
