@@ -33,6 +33,7 @@ uniform int uMarchSamples;   // brute-force samples per ray
 uniform vec4 uEpipoles;      // xy epipole, zw anti-epipole, GL pixel coordinates (y up); far away if none
 uniform float uEpipoleRadius;
 #include "common/medium.glsl"  // uSigmaS, uSigmaT, uG
+#include "common/airlight_sample.glsl"
 
 // Brute force for lights without an epipolar path (raymarch's midpoint rule): uMarchSamples samples
 // uniform in t, each the integrand sigma_s p E V exp(-sigma_t t) dt at its interval's middle. No loops
@@ -47,7 +48,7 @@ vec3 march(GpuLight L, vec3 w, float d) {
         float V = shadowVisibility(L, x);
         if (V == 0.0) continue;
         float cosTheta = dot(directionToLight(L, x), w);
-        sum += V * uSigmaS * phaseHG(cosTheta, uG) * unshadowedIrradiance(L, x, uSigmaT) * exp(-uSigmaT * t) * dt;
+        sum += airlightSample(V, cosTheta, unshadowedIrradiance(L, x, uSigmaT), t, dt);
     }
     return sum;
 }

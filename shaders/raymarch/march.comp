@@ -28,6 +28,7 @@ layout(r32f, binding = 1) uniform image2D uLitFraction;     // running count of 
 uniform int uSamples;
 uniform int uLightCount;
 #include "common/medium.glsl"  // uSigmaS, uSigmaT, uG
+#include "common/airlight_sample.glsl"
 uniform uint uSeed;          // jitter=white: the hash's seed (moves every frame with jitter_time=per-frame)
 #ifdef JITTER_BLUE
 layout(binding = kFirstFreeTextureUnit + 1) uniform sampler2D uBlueNoise;  // 64x64 tile, values in (0, 1)
@@ -104,7 +105,7 @@ void main() {
         }
 #else
         vec3 E = unshadowedIrradiance(L, x, uSigmaT);
-        sum += V * uSigmaS * phaseHG(cosTheta, uG) * E * exp(-uSigmaT * t) * dt;
+        sum += airlightSample(V, cosTheta, E, t, dt);
 #endif
     }
     float lit = uLast ? (uLightCount > 0 ? litSamples / float(uLightCount * uSamples) : 0.0) : litSamples;

@@ -1,11 +1,13 @@
-// The shader tree shares its constants and its medium: pi is written out in shaders/common/constants.glsl
-// only, and the medium's coefficients are declared in shaders/common/medium.glsl only, so every shader uses
-// one copy of each.
+// The shader tree shares its constants, its medium and its midpoint sample: pi is written out in
+// shaders/common/constants.glsl only, the medium's coefficients are declared in shaders/common/medium.glsl
+// only, and the midpoint rule's sample sigma_s p E V exp(-sigma_t t) dt is written out in
+// shaders/common/airlight_sample.glsl only, so every shader uses one copy of each.
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
 #include <regex>
+#include <set>
 #include <sstream>
 #include <string>
 
@@ -13,47 +15,54 @@ namespace {
 
 namespace fs = std::filesystem;
 
-TEST(ShaderTree, PiIsWrittenOutInTheSharedConstantsOnly) {
+// Calls line(path, number, code) for every line of every file under shaders/ but `except`, with its
+// comment cut off; returns the number of files read.
+template <class Line>
+int forEachShaderLine(const fs::path& except, Line&& line) {
     const fs::path root = fs::path(VIZ_SOURCE_DIR) / "shaders";
     int files = 0;
     for (const fs::directory_entry& e : fs::recursive_directory_iterator(root)) {
         if (!e.is_regular_file()) continue;
         ++files;
-        if (e.path() == root / "common" / "constants.glsl") continue;
+        if (e.path() == root / except) continue;
         std::ifstream in(e.path());
-        std::string line;
-        for (int n = 1; std::getline(in, line); ++n) {
-            const std::string code = line.substr(0, line.find("//"));
-            for (const char* digits : {"3.14159", "6.28318", "1.57079"})
-                EXPECT_EQ(code.find(digits), std::string::npos)
-                    << e.path().string() << ":" << n << ": use kPi from common/constants.glsl: " << line;
-        }
+        std::string text;
+        for (int n = 1; std::getline(in, text); ++n) line(e.path(), n, text.substr(0, text.find("//")));
     }
     EXPECT_GT(files, 20) << "the shader tree was not found under " << root;
+    return files;
+}
+
+TEST(ShaderTree, PiIsWrittenOutInTheSharedConstantsOnly) {
+    forEachShaderLine("common/constants.glsl", [](const fs::path& path, int n, const std::string& code) {
+        for (const char* digits : {"3.14159", "6.28318", "1.57079"})
+            EXPECT_EQ(code.find(digits), std::string::npos)
+                << path.string() << ":" << n << ": use kPi from common/constants.glsl: " << code;
+    });
 }
 
 // A uniform named like a medium coefficient (uSigmaS, uSigmaT, uG, whatever its type) outside the block.
 TEST(ShaderTree, TheMediumIsDeclaredInTheSharedBlockOnly) {
-    const fs::path root = fs::path(VIZ_SOURCE_DIR) / "shaders";
     const std::regex loose(R"(\buniform\s+\w+\s+(uSigmaS|uSigmaT|uG)\s*[;=\[])");
-    int files = 0, includers = 0;
-    for (const fs::directory_entry& e : fs::recursive_directory_iterator(root)) {
-        if (!e.is_regular_file()) continue;
-        ++files;
-        if (e.path() == root / "common" / "medium.glsl") continue;
-        std::ifstream in(e.path());
-        std::string line;
-        bool includes = false;
-        for (int n = 1; std::getline(in, line); ++n) {
-            const std::string code = line.substr(0, line.find("//"));
-            EXPECT_FALSE(std::regex_search(code, loose))
-                << e.path().string() << ":" << n << ": include common/medium.glsl instead: " << line;
-            includes = includes || code.find("\"common/medium.glsl\"") != std::string::npos;
-        }
-        includers += includes ? 1 : 0;
-    }
-    EXPECT_GT(files, 20) << "the shader tree was not found under " << root;
-    EXPECT_GE(includers, 9) << "fewer shaders include the medium block than read the medium";
+    std::set<std::string> includers;
+    forEachShaderLine("common/medium.glsl", [&](const fs::path& path, int n, const std::string& code) {
+        EXPECT_FALSE(std::regex_search(code, loose))
+            << path.string() << ":" << n << ": include common/medium.glsl instead: " << code;
+        if (code.find("\"common/medium.glsl\"") != std::string::npos) includers.insert(path.string());
+    });
+    EXPECT_GE(includers.size(), 9u) << "fewer shaders include the medium block than read the medium";
+}
+
+// The midpoint sample, sigma_s times the phase function up to exp(-sigma_t t) dt in one expression.
+TEST(ShaderTree, TheMidpointSampleIsWrittenOutInTheSharedSampleOnly) {
+    const std::regex sample(R"(uSigmaS\s*\*\s*phaseHG\([^;]*exp\(-uSigmaT \* t\)\s*\*\s*dt\b)");
+    std::set<std::string> users;
+    forEachShaderLine("common/airlight_sample.glsl", [&](const fs::path& path, int n, const std::string& code) {
+        EXPECT_FALSE(std::regex_search(code, sample))
+            << path.string() << ":" << n << ": call airlightSample (common/airlight_sample.glsl): " << code;
+        if (code.find("airlightSample(") != std::string::npos) users.insert(path.filename().string());
+    });
+    EXPECT_EQ(users, (std::set<std::string>{"march.comp", "traverse.comp"}));
 }
 
 }  // namespace
