@@ -88,6 +88,17 @@ public:
             if (mSetters[i]) mSetters[i](s, settings.at(mInfos[i].name));
         return s;
     }
+    // The same from settings that may leave names out: those take their declared default (for a technique
+    // whose callers pass partial settings, as the reference's do).
+    S readWithDefaults(const Settings& settings) const {
+        S s{};
+        for (std::size_t i = 0; i < mInfos.size(); ++i) {
+            if (!mSetters[i]) continue;
+            const auto it = settings.find(mInfos[i].name);
+            mSetters[i](s, it == settings.end() ? mInfos[i].defaultValue : it->second);
+        }
+        return s;
+    }
 
 private:
     std::vector<ParamInfo> mInfos;

@@ -63,6 +63,14 @@ TEST(ParamTable, ASharedNameTheListLacksIsReported) {
     EXPECT_TRUE(t.infos().empty());
 }
 
+TEST(ParamTable, PartialSettingsTakeTheDeclaredDefaults) {
+    const Toy toy = toyTable().readWithDefaults({{"scale", 0.75}});
+    EXPECT_EQ(toy.count, 4);
+    EXPECT_EQ(toy.scale, 0.75);
+    EXPECT_FALSE(toy.on);
+    EXPECT_EQ(toy.seed, 1u);
+}
+
 TEST(ParamTable, ReadingSettingsWithoutADeclaredNameThrows) {
     // Runs get complete settings (completeSettings); a missing name is a programmer error, not a default.
     EXPECT_ANY_THROW(toyTable().read({{"count", 1.0}}));

@@ -8,6 +8,7 @@
 #include <string_view>
 
 #include "core/error.h"
+#include "debug/param_table.h"
 #include "debug/stage_runner.h"
 #include "scene/camera.h"
 #include "scene/scene_source.h"
@@ -59,11 +60,6 @@ constexpr int kVisibility = stageIndexOf(kStageOrder, kStageVisibility);
 constexpr int kAirlightStage = stageIndexOf(kStageOrder, kStageAirlight);
 constexpr int kSurfaceStage = stageIndexOf(kStageOrder, kStageSurface);
 constexpr int kFinalStage = stageIndexOf(kStageOrder, kStageFinal);
-
-double setting(const Settings& s, const char* name, double fallback) {
-    const auto it = s.find(name);
-    return it == s.end() ? fallback : it->second;
-}
 
 std::size_t triangleCount(const scene::Scene& scene) {
     std::size_t n = 0;
@@ -182,15 +178,31 @@ glm::dvec3 shadeSurface(const scene::Scene& scene, const PreparedLights& lights,
 
 // ---- the technique ----
 
+// The settings a run reads, each declared once with its parameter (debug/param_table.h). Callers may pass
+// partial settings: a missing name takes its default.
+struct ReferenceSettings {
+    int transitionSamples = 0, areaSamples = 0, threads = 0;
+    bool cache = false;
+};
+
+const ParamTable<ReferenceSettings>& referenceParams() {
+    using S = ReferenceSettings;
+    static const ParamTable<S> table =
+        ParamTable<S>()
+            .add(&S::transitionSamples, {kParamTransitionSamples, "visibility samples per ray and light before "
+                                         "bisection", 256, 2, 1 << 20, true})
+            .add(&S::areaSamples, {kParamAreaSamples, "cells per axis of each area light (one visibility search per "
+                                   "cell)", 8, 1, 64, true})
+            .add(&S::threads, {kParamThreads, "worker threads (0 = all cores); the result does not depend on it", 0,
+                               0, 1024, true})
+            .add(&S::cache, {kParamCache, "1 = reuse and store results in the on-disk cache, 0 = always compute", 1,
+                             0, 1, true});
+    return table;
+}
+
 class ReferenceTechnique final : public Technique {
 public:
     ReferenceTechnique() {
-        mParams = {
-            {kParamTransitionSamples, "visibility samples per ray and light before bisection", 256, 2, 1 << 20, true},
-            {kParamAreaSamples, "cells per axis of each area light (one visibility search per cell)", 8, 1, 64, true},
-            {kParamThreads, "worker threads (0 = all cores); the result does not depend on it", 0, 0, 1024, true},
-            {kParamCache, "1 = reuse and store results in the on-disk cache, 0 = always compute", 1, 0, 1, true},
-        };
         mStages = {
             {kStageTrace, "Trace primary rays", "first hit of each pixel ray with Embree; d = min(hit, zfar)",
              {}, {kDistance}, 1},
@@ -213,7 +225,7 @@ public:
         return "CPU ground truth in double precision: exact visibility transitions and per-interval integrals";
     }
     const std::vector<StageInfo>& stages() const override { return mStages; }
-    const std::vector<ParamInfo>& params() const override { return mParams; }
+    const std::vector<ParamInfo>& params() const override { return referenceParams().infos(); }
     bool needsGl() const override { return false; }
 
     Plan plan(const scene::Scene& scene, const Settings& settings) const override {
@@ -227,7 +239,8 @@ public:
             if (l.type == scene::LightType::Directional) ++directionals;
             if (l.type == scene::LightType::Point) ++points;
         }
-        const int areaSamples = int(setting(settings, kParamAreaSamples, 8));
+        const ReferenceSettings s = referenceParams().readWithDefaults(settings);
+        const int areaSamples = s.areaSamples;
         p.stages.push_back({kStageTrace, true, std::to_string(triangles) + " triangles in one Embree scene"});
         if (scene.lights.empty()) {
             p.stages.push_back({kStageVisibility, true, "no lights: nothing to search (lit fraction 0)"});
@@ -235,7 +248,7 @@ public:
             p.stages.push_back({kStageVisibility, true, "no triangles: V = 1 everywhere, no search"});
         } else {
             p.stages.push_back({kStageVisibility, true,
-                                std::to_string(int(setting(settings, kParamTransitionSamples, 256))) +
+                                std::to_string(s.transitionSamples) +
                                     " samples per ray and light, then bisection"});
         }
         if (scene.medium.sigma_s == 0.0) {
@@ -265,7 +278,7 @@ public:
                               directionals > 0 ? "airlight::directionalSegment" : "no directional light in the scene"});
         p.features.push_back({"transition search", triangles > 0,
                               triangles > 0 ? "occlusion rays + bisection" : "no triangles: nothing casts shadows"});
-        const bool cache = setting(settings, kParamCache, 1) != 0.0;
+        const bool cache = s.cache;
         p.features.push_back({"disk cache", cache, cache ? reference::cacheDirectory().string() : "cache = 0"});
         return p;
     }
@@ -276,7 +289,7 @@ public:
         const scene::Scene& scene = *input.scene;
         const int lastStage = int(mStages.size()) - 1;
         const int stopAfter = input.stopAfterStage < 0 ? lastStage : std::min(input.stopAfterStage, lastStage);
-        const bool useCache = setting(input.settings, kParamCache, 1) != 0.0 && stopAfter == lastStage;
+        const bool useCache = referenceParams().readWithDefaults(input.settings).cache && stopAfter == lastStage;
 
         std::filesystem::path cacheFile;
         if (useCache) {
@@ -391,9 +404,10 @@ private:
         const scene::Scene& scene = *input.scene;
         FrameOutput out;
         out.plan = plan(scene, input.settings);
-        const int threads = int(setting(input.settings, kParamThreads, 0));
-        const int samples = int(setting(input.settings, kParamTransitionSamples, 256));
-        const int areaSamples = int(setting(input.settings, kParamAreaSamples, 8));
+        const ReferenceSettings s = referenceParams().readWithDefaults(input.settings);
+        const int threads = s.threads;
+        const int samples = s.transitionSamples;
+        const int areaSamples = s.areaSamples;
         reference::ProgressBar progress(reference::stderrIsTerminal());
         FrameState f;
         f.width = input.width;
@@ -518,7 +532,6 @@ private:
     }
 
     std::vector<StageInfo> mStages;
-    std::vector<ParamInfo> mParams;
 };
 
 }  // namespace
