@@ -21,7 +21,7 @@ namespace {
 using viz::ui::DrawList;
 using viz::ui::Rect;
 
-using namespace lesson_style;  // the panel's colours (lesson_prose.h)
+using namespace viz::ui::theme;  // the panel's colours
 constexpr double kMaxStepSeconds = 0.1;  // an animation advances at most this much per frame
 
 bool sameCamera(const viz::scene::Camera& a, const viz::scene::Camera& b) {

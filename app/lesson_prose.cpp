@@ -12,7 +12,7 @@ namespace airlight {
 namespace {
 
 using viz::ui::DrawList;
-using namespace lesson_style;
+using namespace viz::ui::theme;
 
 
 // A word of running text: consecutive pieces without a space between them stay on one line.

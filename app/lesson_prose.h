@@ -14,7 +14,6 @@
 namespace airlight {
 
 // Display colours: the window's text colours on the widgets' panel colour, contrast for a projector.
-namespace lesson_style = viz::ui::theme;
 
 
 // One line of text in `style` with its inline Markdown, wrapped within `width` from `at`; returns the

@@ -94,7 +94,8 @@ struct ViewMarker {
 
 // An intermediate the technique computed on the CPU: `image`, its extent, a suggested range [lo, hi].
 inline Intermediate cpuIntermediate(const std::string& id, const std::string& label, const std::string& note,
-                                    ViewKind kind, std::shared_ptr<Image> image, float lo = 0.0f, float hi = 1.0f) {
+                                    ViewKind kind, std::shared_ptr<const Image> image, float lo = 0.0f,
+                                    float hi = 1.0f) {
     Intermediate i;
     i.id = id;
     i.label = label;

@@ -37,11 +37,6 @@ class ParamTable {
 public:
     // A parameter stored in `field`.
     template <class T>
-    ParamTable add(T S::*field, ParamInfo info) const& {
-        ParamTable t = *this;
-        return std::move(t).add(field, std::move(info));
-    }
-    template <class T>
     ParamTable add(T S::*field, ParamInfo info) && {
         mInfos.push_back(std::move(info));
         mSetters.push_back([field](S& s, double value) { s.*field = settingAs<T>(value); });
@@ -49,11 +44,9 @@ public:
     }
     // Parameters declared elsewhere (the shared passes' shadow_map, area_samples) stored in fields here.
     template <class T>
-    ParamTable add(T S::*field, std::vector<ParamInfo> infos, const std::string& name) && {
-        for (ParamInfo& info : infos)
-            if (info.name == name) return std::move(*this).add(field, std::move(info));
-        mMissing.push_back(name);
-        return std::move(*this);
+    ParamTable add(T S::*field, const std::vector<ParamInfo>& infos, const std::string& name) && {
+        const ParamInfo* info = named(infos, name);
+        return info ? std::move(*this).add(field, *info) : std::move(*this);
     }
 
     // A parameter the technique declares but shared code reads from the Settings (pickedPixel, the shared
@@ -64,11 +57,9 @@ public:
         return std::move(*this);
     }
     // The one named `name` from a shared list.
-    ParamTable declare(std::vector<ParamInfo> infos, const std::string& name) && {
-        for (ParamInfo& info : infos)
-            if (info.name == name) return std::move(*this).declare(std::move(info));
-        mMissing.push_back(name);
-        return std::move(*this);
+    ParamTable declare(const std::vector<ParamInfo>& infos, const std::string& name) && {
+        const ParamInfo* info = named(infos, name);
+        return info ? std::move(*this).declare(*info) : std::move(*this);
     }
     // Several of them (the shared passes' list).
     ParamTable declare(std::vector<ParamInfo> infos) && {
@@ -101,6 +92,14 @@ public:
     }
 
 private:
+    // `name` in `infos`; null, and noted in missing(), when the list lacks it.
+    const ParamInfo* named(const std::vector<ParamInfo>& infos, const std::string& name) {
+        for (const ParamInfo& info : infos)
+            if (info.name == name) return &info;
+        mMissing.push_back(name);
+        return nullptr;
+    }
+
     std::vector<ParamInfo> mInfos;
     std::vector<std::function<void(S&, double)>> mSetters;
     std::vector<std::string> mMissing;

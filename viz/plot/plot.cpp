@@ -11,9 +11,9 @@ namespace viz::plot {
 
 namespace {
 
+using ui::theme::kGridLine;
 using ui::theme::kInk;
 using ui::theme::kPaper;
-constexpr glm::vec4 kGrid = ui::theme::kGridLine;
 
 std::string formatTick(double v, double step) {
     char buffer[32];
@@ -184,13 +184,13 @@ void drawPlot(ui::DrawList& list, const ui::Rect& area, const PlotSpec& spec) {
     const std::vector<bool> keepX = keptTickLabels(xs, widths, pad), keepY = keptTickLabels(ys, heights, 0.0f);
     for (std::size_t i = 0; i < xt.values.size(); ++i) {
         const float x = xs[i];
-        list.line({x, frame.min.y}, {x, frame.max.y}, 1.0f, kGrid);
+        list.line({x, frame.min.y}, {x, frame.max.y}, 1.0f, kGridLine);
         list.line({x, frame.max.y}, {x, frame.max.y + pad * 0.6f}, 1.0f, kInk);
         if (keepX[i]) list.text({x - widths[i] * 0.5f, frame.max.y + pad}, xt.labels[i], kInk);
     }
     for (std::size_t i = 0; i < yt.values.size(); ++i) {
         const float y = ys[i];
-        list.line({frame.min.x, y}, {frame.max.x, y}, 1.0f, kGrid);
+        list.line({frame.min.x, y}, {frame.max.x, y}, 1.0f, kGridLine);
         list.line({frame.min.x - pad * 0.6f, y}, {frame.min.x, y}, 1.0f, kInk);
         const float w = font.measure(yt.labels[i]);
         if (keepY[i]) list.text({frame.min.x - pad - w, y - line * 0.5f}, yt.labels[i], kInk);

@@ -98,9 +98,13 @@ void SceneViewPasses::compose(const scene::Scene& scene, const gl::Texture& airl
 Image SceneViewPasses::readFinal() const { return readRgb(mFinal); }
 
 bool SceneViewPasses::runSharedStages(StageRunner& stages, const FrameInput& input, const std::string& prefix,
-                                      FrameOutput& out) {
+                                      FrameOutput& out, const std::function<void()>& publishShadows) {
     // The scene upload is counted with the shadow maps: it is part of the technique's cost.
-    const bool more = stages.run(0, [&] { buildShadows(*input.scene, input.settings, out.intermediates, prefix); });
+    const bool more = stages.run(
+        0, [&] { buildShadows(*input.scene, input.settings, out.intermediates, prefix); },
+        [&] {
+            if (publishShadows) publishShadows();
+        });
     mFrameSize = {input.width, input.height};
     return more &&
            stages.run(1, [&] { renderSurface(*input.scene, input.width, input.height, out.intermediates, prefix); });

@@ -3,6 +3,7 @@
 // surface radiance) and the final composite. A technique owns one and calls the stages it needs.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -51,8 +52,11 @@ public:
 
     // The two stages every GPU technique starts with, at stage indices 0 (shadow maps, settings
     // `shadow_map` and `area_samples`) and 1 (camera view), run by the technique's stage runner (timed,
-    // or carried over from the last run). Returns false when the run stops after one of them.
-    bool runSharedStages(StageRunner& stages, const FrameInput& input, const std::string& prefix, FrameOutput& out);
+    // or carried over from the last run). `publishShadows`, when given, publishes what else the
+    // technique shows with the shadow maps (slices: its cookies and noise). Returns false when the run
+    // stops after one of them.
+    bool runSharedStages(StageRunner& stages, const FrameInput& input, const std::string& prefix, FrameOutput& out,
+                         const std::function<void()>& publishShadows = {});
 
     // ---- linked cursors (the window's marks for a hovered frame pixel; render/shadow_map_markers.h) ----
     // The eye ray of frame pixel `pixel` (row 0 at the top) of the last run: unit direction w (world axes;

@@ -150,9 +150,8 @@ private:
             if (s.integration == Integration::Closed) {
                 unit = airlight::directionalSegment(cosTheta, 0.0, d, m.sigma_s, m.sigma_t(), m.g, 1.0);
             } else {
-                const double dt = d / s.samples;
-                for (int k = 0; k < s.samples; ++k)
-                    unit += m.sigma_s * airlight::phaseHG(cosTheta, m.g) * std::exp(-m.sigma_t() * (k + 0.5) * dt) * dt;
+                const double dt = d / s.samples, scatter = m.sigma_s * airlight::phaseHG(cosTheta, m.g);
+                for (int k = 0; k < s.samples; ++k) unit += scatter * std::exp(-m.sigma_t() * (k + 0.5) * dt) * dt;
             }
             L += light.color * light.intensity * unit;
         }

@@ -335,17 +335,8 @@ private:
     void publish(FrameOutput& out, const FrameState& f, const scene::Scene& scene, int stopAfter) const {
         auto add = [&](const char* id, const char* label, const char* note, const char* units, ViewKind kind,
                        const Image& img, float lo, float hi) {
-            Intermediate im;
-            im.id = id;
-            im.label = label;
-            im.note = note;
-            im.units = units;
-            im.kind = kind;
-            im.rangeMin = lo;
-            im.rangeMax = hi;
-            im.image = std::make_shared<const Image>(img);
-            im.extent = glm::ivec3(img.width, img.height, 1);
-            out.intermediates.push_back(std::move(im));
+            out.intermediates.push_back(cpuIntermediate(id, label, note, kind, std::make_shared<const Image>(img), lo, hi));
+            out.intermediates.back().units = units;
         };
         auto maxOf = [](const Image& img) {
             float m = 0.0f;

@@ -262,34 +262,27 @@ FrameOutput SlicesTechnique::run(const FrameInput& input) {
     gl::StageClock clock;
     StageRunner stages(mStages, input, out, mReuse, clock);
 
-    const bool toSurface = stages.run(
-        kShadowMapsIndex,
-        [&] {
-            if (!mTriangle) {
-                mTriangle = std::make_unique<render::FullscreenTriangle>();
-                mVao = gl::VertexArray::create("slices.planes_vao");
-                mFramebuffer = gl::Framebuffer::create("slices.fbo");
-                mCounters = gl::Buffer::create({.bytes = 8, .label = "slices.fragment_counters"});
-                const std::vector<std::uint8_t> noise = makeNoise(kNoiseSize);
-                mNoise = gl::Texture::create({.target = GL_TEXTURE_2D, .format = GL_RG8,
-                                              .size = {kNoiseSize, kNoiseSize, 1}, .label = kNoise});
-                mNoise.upload(GL_RG, GL_UNSIGNED_BYTE, noise.data());
-                mNoise.setFilter(GL_LINEAR, GL_LINEAR);
-                mNoise.setWrap(GL_REPEAT);
-            }
-            mView.buildShadows(scene, input.settings, out.intermediates, "slices");
-        },
-        [&] {
+    if (!mTriangle) {
+        mTriangle = std::make_unique<render::FullscreenTriangle>();
+        mVao = gl::VertexArray::create("slices.planes_vao");
+        mFramebuffer = gl::Framebuffer::create("slices.fbo");
+        mCounters = gl::Buffer::create({.bytes = 8, .label = "slices.fragment_counters"});
+        const std::vector<std::uint8_t> noise = makeNoise(kNoiseSize);
+        mNoise = gl::Texture::create(
+            {.target = GL_TEXTURE_2D, .format = GL_RG8, .size = {kNoiseSize, kNoiseSize, 1}, .label = kNoise});
+        mNoise.upload(GL_RG, GL_UNSIGNED_BYTE, noise.data());
+        mNoise.setFilter(GL_LINEAR, GL_LINEAR);
+        mNoise.setWrap(GL_REPEAT);
+    }
+    // Shadow maps (with the cookies and the noise they project) and the camera view: the shared stages.
+    if (!mView.runSharedStages(stages, input, "slices", out, [&] {
             out.intermediates.push_back(render::textureIntermediate(
                 kCookies, "Cookies", "spot cookie textures (sRGB bytes), one layer per cookie", "",
                 ViewKind::Color, 0.0f, 1.0f, mView.lights().cookies()));
             out.intermediates.push_back(render::textureIntermediate(
                 kNoise, "Noise", "two tileable value-noise layers (r, g), generated, projected from the light", "",
                 ViewKind::Color, 0.0f, 1.0f, mNoise));
-        });
-    if (!toSurface) return out;
-    if (!stages.run(kSurfaceIndex,
-                    [&] { mView.renderSurface(scene, input.width, input.height, out.intermediates, "slices"); }))
+        }))
         return out;
 
     // ---- sampling planes ----

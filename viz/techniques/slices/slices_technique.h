@@ -69,8 +69,6 @@ static_assert(sizeof(PickRecord) == 48);
 
 constexpr std::array<std::string_view, 5> kStageOrder = {"slices.shadow_maps", "slices.surface", kStagePlanes,
                                                          kStageResolve, "slices.compose"};
-constexpr int kShadowMapsIndex = stageIndexOf(kStageOrder, "slices.shadow_maps");
-constexpr int kSurfaceIndex = stageIndexOf(kStageOrder, "slices.surface");
 constexpr int kPlanesIndex = stageIndexOf(kStageOrder, kStagePlanes);
 constexpr int kResolveIndex = stageIndexOf(kStageOrder, kStageResolve);
 constexpr int kComposeIndex = stageIndexOf(kStageOrder, "slices.compose");

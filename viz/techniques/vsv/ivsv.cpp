@@ -232,11 +232,11 @@ FrameOutput IvsvTechnique::run(const FrameInput& input) {
             uploadVpls(scene, input.width, input.height, cells, tile);
         },
         [&] {
-            if (area)
-                out.intermediates.push_back(cpuIntermediate(
-                    kVplImage, "VPLs on the emitter", "emitter uv square (u right, v down): each VPL's L_e as a dot",
-                    ViewKind::Color, vplImage()));
-            if (area) out.intermediates.back().picture = true;
+            if (!area) return;
+            out.intermediates.push_back(cpuIntermediate(
+                kVplImage, "VPLs on the emitter", "emitter uv square (u right, v down): each VPL's L_e as a dot",
+                ViewKind::Color, vplImage()));
+            out.intermediates.back().picture = true;
         }))
         return out;
 
@@ -309,9 +309,10 @@ FrameOutput IvsvTechnique::run(const FrameInput& input) {
         [&] {
             if (area)
                 out.intermediates.push_back(cpuIntermediate(
-                kVoxelSlice, "Voxels of VPL " + std::to_string(shown) + " (before scan)",
-                "alpha (x) x phi (y, eye at the top) at theta cell " + std::to_string(pickTheta) + ": white = occluder",
-                ViewKind::Mask, vsv::sliceImage(mGrid, shownTile.x, cells, shownTile.y + pickTheta, kPhiBits)));
+                    kVoxelSlice, "Voxels of VPL " + std::to_string(shown) + " (before scan)",
+                    "alpha (x) x phi (y, eye at the top) at theta cell " + std::to_string(pickTheta) +
+                        ": white = occluder",
+                    ViewKind::Mask, vsv::sliceImage(mGrid, shownTile.x, cells, shownTile.y + pickTheta, kPhiBits)));
         }))
         return out;
 
@@ -333,11 +334,11 @@ FrameOutput IvsvTechnique::run(const FrameInput& input) {
         [&] {
             if (area)
                 out.intermediates.push_back(cpuIntermediate(
-                kScanSlice,
-                "Voxels of VPL " + std::to_string(shown) + " after " +
-                    std::to_string(std::min(passLimit, scanPassCount(cells))) + " scan passes",
-                "alpha x phi at theta cell " + std::to_string(pickTheta) + ": white = shadowed", ViewKind::Mask,
-                vsv::sliceImage(*mResult, shownTile.x, cells, shownTile.y + pickTheta, kPhiBits)));
+                    kScanSlice,
+                    "Voxels of VPL " + std::to_string(shown) + " after " +
+                        std::to_string(std::min(passLimit, scanPassCount(cells))) + " scan passes",
+                    "alpha x phi at theta cell " + std::to_string(pickTheta) + ": white = shadowed", ViewKind::Mask,
+                    vsv::sliceImage(*mResult, shownTile.x, cells, shownTile.y + pickTheta, kPhiBits)));
         }))
         return out;
 
@@ -391,14 +392,8 @@ FrameOutput IvsvTechnique::run(const FrameInput& input) {
         return out;
 
     // ---- compose ----
-    stages.run(
-        kComposeIndex,
-        [&] {
-            mView.compose(scene, mAirlight, out.intermediates, "ivsv");
-        },
-        [&] {
-            out.final = mView.readFinal();
-        });
+    stages.run(kComposeIndex, [&] { mView.compose(scene, mAirlight, out.intermediates, "ivsv"); },
+               [&] { out.final = mView.readFinal(); });
     return out;
 }
 
