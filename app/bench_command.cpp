@@ -229,7 +229,7 @@ int runBenchCommand(Args& args, const std::string& commandLine) {
                 if (added) it->second = viz::scene::makeDetailedScene(sceneNames[job.scene], point.detail);
                 scene = &it->second;
             }
-            const viz::FrameInput in{scene, point.width, point.height, viz::completeSettings(*technique, point.settings), -1};
+            const viz::FrameInput in = viz::frameInput(scene, point.width, point.height, viz::completeSettings(*technique, point.settings));
             const TimedRuns timed = timeRuns(*technique, in, o.runs);
             double work = 0.0;
             if (job.axis == "size") work = double(point.width) * point.height;
@@ -276,7 +276,7 @@ int runBenchCommand(Args& args, const std::string& commandLine) {
             auto inSeries = [&](const auto& x) {
                 return x.scene == sceneName && x.axis == job.axis && x.technique == technique && x.stage == stage;
             };
-            viz::plot::Series series{names[i], viz::plot::categoricalColor(int(i)), {}, true, true};
+            viz::plot::Series series{names[i], viz::plot::categoricalColour(int(i)), {}, true, true};
             for (const viz::report::BenchFit& f : fits)
                 if (inSeries(f))
                     series.name += "  k=" + (std::isfinite(f.fit.exponent) ? shortExponent(f.fit.exponent) : "?");

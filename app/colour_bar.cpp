@@ -97,17 +97,17 @@ ColourBar colourBarFor(const PaneImage& pane, const DisplayMapping& m, const Spe
     const viz::ChannelInfo* declared = declaredChannel(pane, m.channel);
     bar.units = declared ? declared->units : pane.units;
     if (declared) bar.caption = declared->name;
-    const bool mapped = m.mode != DisplayMode::HdrColor && m.mode != DisplayMode::RangeColor;
+    const bool mapped = m.mode != DisplayMode::HdrColour && m.mode != DisplayMode::RangeColour;
     if (pane.picture && !mapped) {
         bar.kind = ColourBar::Kind::Picture;
         bar.caption = "a picture drawn by the technique: the note above says what its colours mean";
     } else switch (m.mode) {
-        case DisplayMode::HdrColor:
-        case DisplayMode::RangeColor: {
+        case DisplayMode::HdrColour:
+        case DisplayMode::RangeColour: {
             // Colour images: each channel on its own; the bar shows the greys, up to the value that the
             // exposure takes to white.
             const double white = std::exp2(-double(m.exposure));
-            if (m.mode == DisplayMode::HdrColor) {
+            if (m.mode == DisplayMode::HdrColour) {
                 ramp(bar, 0.0, white, false);
                 bar.caption = "white = " + figure(white) + " (" + figure(m.exposure) + " EV)";
             } else {
@@ -124,7 +124,7 @@ ColourBar colourBarFor(const PaneImage& pane, const DisplayMapping& m, const Spe
             break;
         }
         case DisplayMode::Grey:
-        case DisplayMode::FalseColor:
+        case DisplayMode::FalseColour:
         case DisplayMode::Heat: ramp(bar, m.lo, m.hi, m.logScale); break;
         case DisplayMode::Signed:
             divergingRamp(bar, m);

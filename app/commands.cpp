@@ -133,7 +133,7 @@ void printTiming(const viz::FrameOutput& out) {
 // min..max of the data when no range was suggested.
 viz::Image displayable(const viz::Image& image, const viz::Intermediate* info, const std::string& exposure,
                        float* exposureOut) {
-    const bool colour = !info || info->kind == viz::ViewKind::Color;
+    const bool colour = !info || info->kind == viz::ViewKind::Colour;
     if (colour) {
         *exposureOut = exposure.empty() || exposure == "auto" ? autoExposure(image)
                                                               : float(parseNumber(exposure, "--exposure"));

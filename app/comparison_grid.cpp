@@ -57,7 +57,7 @@ void ComparisonGrid::runTechniques(const RunTechnique& run) {
             tile.milliseconds = out.timing.totalMilliseconds();
             tile.error = viz::report::compareImages(airlight, mReference);
             tile.pane.id = tile.technique;
-            tile.pane.mode = DisplayMode::HdrColor;
+            tile.pane.mode = DisplayMode::HdrColour;
             uploadImage(tile.pane, airlight);
             tile.lastAirlight = airlight;
         } catch (const std::exception& e) {
@@ -110,7 +110,7 @@ viz::plot::PlotSpec ComparisonGrid::errorAgainstTime() const {
         if (t.technique == "reference" || !t.failure.empty() || !(t.milliseconds > 0.0) ||
             !(t.error.relativeL2 > 0.0) || !std::isfinite(t.error.relativeL2))
             continue;
-        spec.series.push_back({t.technique, viz::plot::categoricalColor(int(i)), {{t.milliseconds, t.error.relativeL2}},
+        spec.series.push_back({t.technique, viz::plot::categoricalColour(int(i)), {{t.milliseconds, t.error.relativeL2}},
                                false, true});
     }
     return spec;

@@ -57,7 +57,7 @@ void CpuWorker::runPasses(State& s, const CpuRequest& request) {
             input.scene = &s.scene;
             input.width = sizes[i].x;
             input.height = sizes[i].y;
-            input.settings = request.settings;
+            viz::setRunSettings(input, request.settings);
             result.output = technique->run(input);
         } catch (const std::exception& e) {
             result.error = e.what();

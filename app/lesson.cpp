@@ -285,8 +285,8 @@ Figure viewFigure(const RenderJob& job, const std::string& view, float exposure,
         shown.pane.id = view;
         shown.pane.label = view == "final" ? "Final image" : "Airlight L_air";
         shown.pane.units = "radiance";
-        shown.pane.kind = viz::ViewKind::Color;
-        shown.pane.mode = DisplayMode::HdrColor;
+        shown.pane.kind = viz::ViewKind::Colour;
+        shown.pane.mode = DisplayMode::HdrColour;
         uploadImage(shown.pane, job.layerImage(view));
     }
     label = in ? in->label : shown.pane.label;

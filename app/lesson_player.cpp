@@ -32,7 +32,7 @@ bool sameCamera(const viz::scene::Camera& a, const viz::scene::Camera& b) {
 }
 
 bool sameLight(const viz::scene::Light& a, const viz::scene::Light& b, bool placement) {
-    return a.type == b.type && a.color == b.color && a.intensity == b.intensity &&
+    return a.type == b.type && a.colour == b.colour && a.intensity == b.intensity &&
            (!placement || (a.position == b.position && a.direction == b.direction));
 }
 

@@ -11,12 +11,12 @@ namespace airlight {
 
 DisplayMode displayModeFor(viz::ViewKind kind) {
     switch (kind) {
-        case viz::ViewKind::Color: return DisplayMode::RangeColor;
+        case viz::ViewKind::Colour: return DisplayMode::RangeColour;
         case viz::ViewKind::Scalar: return DisplayMode::Grey;
         case viz::ViewKind::Signed: return DisplayMode::Signed;
         case viz::ViewKind::BitField: return DisplayMode::Bits;
         case viz::ViewKind::Mask: return DisplayMode::Mask;
-        case viz::ViewKind::Depth: return DisplayMode::FalseColor;
+        case viz::ViewKind::Depth: return DisplayMode::FalseColour;
         default: return DisplayMode::Grey;
     }
 }
@@ -62,7 +62,7 @@ DisplayMapping resolveMapping(const PaneImage& pane, const DisplaySettings& sett
         case ColourMap::Auto: m.mode = declared ? displayModeFor(declared->kind) : pane.mode; break;
         case ColourMap::Grey: m.mode = DisplayMode::Grey; break;
         case ColourMap::Sequential: m.mode = DisplayMode::Heat; break;
-        case ColourMap::Ramp: m.mode = DisplayMode::FalseColor; break;
+        case ColourMap::Ramp: m.mode = DisplayMode::FalseColour; break;
         case ColourMap::Diverging: m.mode = DisplayMode::Signed; break;
         case ColourMap::Bits: m.mode = DisplayMode::Bits; break;
         case ColourMap::Categorical: m.mode = DisplayMode::Categorical; break;
@@ -78,14 +78,14 @@ DisplayMapping resolveMapping(const PaneImage& pane, const DisplaySettings& sett
         m.hi = autoRange->hi;
     }
     // HDR colour has no range, only an exposure: a range (or a log scale) maps it like a data image.
-    if (m.mode == DisplayMode::HdrColor && (settings.range != RangeMode::Suggested || settings.logScale)) {
-        m.mode = DisplayMode::RangeColor;
+    if (m.mode == DisplayMode::HdrColour && (settings.range != RangeMode::Suggested || settings.logScale)) {
+        m.mode = DisplayMode::RangeColour;
         if (settings.range == RangeMode::Suggested && autoRange && autoRange->valid) m.lo = autoRange->lo, m.hi = autoRange->hi;
         m.exposure = 0.0f;
     } else {
-        m.exposure = m.mode == DisplayMode::HdrColor || m.mode == DisplayMode::RangeColor ? exposure : 0.0f;
+        m.exposure = m.mode == DisplayMode::HdrColour || m.mode == DisplayMode::RangeColour ? exposure : 0.0f;
     }
-    if (m.mode == DisplayMode::RangeColor && settings.range != RangeMode::Suggested) m.exposure = 0.0f;
+    if (m.mode == DisplayMode::RangeColour && settings.range != RangeMode::Suggested) m.exposure = 0.0f;
     // Negative values are the point of a diverging map: they are not overlaid there.
     // Auto: radiance images only (a negative radiance is a bug; in data, -1 may mean "outside the cone").
     const bool radiance = pane.id == "final" || pane.id == "airlight" || pane.units == "radiance";
@@ -131,7 +131,7 @@ viz::plot::PlotSpec plotSpecOf(const viz::PlotData& data) {
     spec.logY = data.logY;
     for (std::size_t i = 0; i < data.curves.size(); ++i) {
         const viz::PlotCurve& c = data.curves[i];
-        spec.series.push_back({c.name, viz::plot::categoricalColor(c.colour >= 0 ? c.colour : int(i)), c.points, c.lines,
+        spec.series.push_back({c.name, viz::plot::categoricalColour(c.colour >= 0 ? c.colour : int(i)), c.points, c.lines,
                                c.markers});
     }
     return spec;

@@ -23,7 +23,7 @@ namespace airlight {
 
 // Mirrors the modes of shaders/ui/image.frag.
 enum class DisplayMode : int {
-    HdrColor = 0, RangeColor = 1, Grey = 2, Signed = 3, FalseColor = 4, Bits = 5, Mask = 6, Categorical = 7, Heat = 8
+    HdrColour = 0, RangeColour = 1, Grey = 2, Signed = 3, FalseColour = 4, Bits = 5, Mask = 6, Categorical = 7, Heat = 8
 };
 
 DisplayMode displayModeFor(viz::ViewKind kind);
@@ -31,8 +31,8 @@ DisplayMode displayModeFor(viz::ViewKind kind);
 // What a pane shows: a 2D float texture plus how to map it, or the reason nothing can be shown.
 struct PaneImage {
     std::string id, label, note, units;
-    viz::ViewKind kind = viz::ViewKind::Color;
-    DisplayMode mode = DisplayMode::HdrColor;
+    viz::ViewKind kind = viz::ViewKind::Colour;
+    DisplayMode mode = DisplayMode::HdrColour;
     float rangeMin = 0.0f, rangeMax = 1.0f;
     GLuint texture = 0;   // borrowed (technique's) or `owned`
     viz::gl::Texture owned;
@@ -86,7 +86,7 @@ struct DisplaySettings {
 
 // What the shader is given for one draw: the settings resolved against the pane and its statistics.
 struct DisplayMapping {
-    DisplayMode mode = DisplayMode::HdrColor;
+    DisplayMode mode = DisplayMode::HdrColour;
     float lo = 0.0f, hi = 1.0f;  // linear range (the shader takes log10 of a log-safe range itself)
     float exposure = 0.0f;       // stops, colour modes only
     Channel channel = Channel::Rgb;

@@ -77,8 +77,8 @@ std::vector<viz::plot::Series> rayViewSeries(const viz::FrameOutput& out) {
         in->image->width < kRayPlaneColumns)
         return {};
     const viz::Image& table = *in->image;
-    viz::plot::Series shaded{"slices, shaded", viz::plot::categoricalColor(5), {}, false, true};
-    viz::plot::Series kept{"slices, stored", viz::plot::categoricalColor(6), {}, false, true};
+    viz::plot::Series shaded{"slices, shaded", viz::plot::categoricalColour(5), {}, false, true};
+    viz::plot::Series kept{"slices, stored", viz::plot::categoricalColour(6), {}, false, true};
     for (int row = 0; row < table.height; ++row) {
         const float t = table.at(kColWhere, row, 2), dt = table.at(kColWhere, row, 3);
         if (PickStatus(int(table.at(kColTest, row, 0))) != PickStatus::Added || !(dt > 0.0f)) continue;

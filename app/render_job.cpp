@@ -28,7 +28,7 @@ int stageIndex(const viz::Technique& technique, const std::string& stageId) {
 
 RenderJob::RenderJob(const RenderRequest& request) {
     mTechnique = viz::makeTechnique(request.technique);
-    mInput.settings = viz::completeSettings(*mTechnique, request.settings);
+    viz::setRunSettings(mInput, viz::completeSettings(*mTechnique, request.settings));
     mInput.stopAfterStage = request.stopAfter.empty() ? -1 : stageIndex(*mTechnique, request.stopAfter);
     mScene = viz::scene::loadScene(request.scene, request.load);
     mInput.scene = &mScene;
@@ -52,6 +52,13 @@ RenderJob::~RenderJob() {
     mOutput = {};
     mTechnique.reset();
     mContext.reset();
+}
+
+void RenderJob::setSetting(const std::string& name, double value) {
+    viz::Settings all = viz::controlSettings(mInput.controls);
+    all.insert(mInput.settings.begin(), mInput.settings.end());
+    all.at(name) = value;
+    viz::setRunSettings(mInput, std::move(all));
 }
 
 const viz::FrameOutput& RenderJob::run() {

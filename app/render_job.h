@@ -42,7 +42,8 @@ public:
     // Frame index along an animation for the next run() (FrameInput::frame).
     void setFrame(int frame) { mInput.frame = frame; }
     // One setting for the next run() (an animated sub-step parameter); the name must be the technique's.
-    void setSetting(const std::string& name, double value) { mInput.settings.at(name) = value; }
+    // One of the technique's settings (a control's name too: it goes to FrameInput::controls).
+    void setSetting(const std::string& name, double value);
     const viz::scene::Scene& scene() const { return mScene; }
     // The scene the next run() renders: a caller may move its camera and lights between runs (animate
     // does, frame by frame), as the window does; techniques read the scene at every run.

@@ -184,7 +184,7 @@ int runStiffSuite(const Options& o, const std::string& commandLine) {
         progress.show(done++, c.id + " | reference");
         const viz::scene::Scene scene = viz::scene::buildStiffScene(c);
         auto reference = viz::makeTechnique("reference");
-        viz::FrameInput in{&scene, c.width, c.height, viz::completeSettings(*reference, {}), -1};
+        viz::FrameInput in = viz::frameInput(&scene, c.width, c.height, viz::completeSettings(*reference, {}));
         const viz::Image referenceImage = reference->run(in).airlight;
         for (auto& technique : techniques) {
             progress.show(done++, c.id + " | " + technique->id());
@@ -222,8 +222,8 @@ viz::report::PlanSaving measurePlanSaving(const std::string& id, const viz::scen
         if (!a.stages[i].runs && b.stages[i].runs) saving.skipped.push_back("stage " + a.stages[i].stage);
     for (std::size_t i = 0; i < a.features.size() && i < b.features.size(); ++i)
         if (!a.features[i].enabled && b.features[i].enabled) saving.skipped.push_back(a.features[i].feature);
-    viz::FrameInput in{&scene, o.width, o.height, planned, -1};
-    viz::FrameInput inForced{&scene, o.width, o.height, forced, -1};
+    viz::FrameInput in = viz::frameInput(&scene, o.width, o.height, planned);
+    viz::FrameInput inForced = viz::frameInput(&scene, o.width, o.height, forced);
     // Two blocks, each after its own warm-up: a technique that keeps one compiled program at a time
     // would otherwise recompile on every alternation and time its compiler. At least 7 runs of each (the
     // cheapest setting is cheap), so that the ranges the page compares are not two or three samples.
@@ -349,7 +349,7 @@ int runReportCommand(Args& args, const std::string& commandLine) {
             auto t = viz::makeTechnique("reference");
             const viz::Settings settings =
                 o.quick ? viz::Settings{{"area_samples", kQuickReferenceAreaSamples}} : viz::Settings{};
-            viz::FrameInput in{&scene, o.width, o.height, viz::completeSettings(*t, settings), -1};
+            viz::FrameInput in = viz::frameInput(&scene, o.width, o.height, viz::completeSettings(*t, settings));
             reference = t->run(in).airlight;
         }
         ++done;
@@ -373,7 +373,7 @@ int runReportCommand(Args& args, const std::string& commandLine) {
                 technique.reset();
                 technique = viz::makeTechnique(point.technique);
             }
-            viz::FrameInput in{&scene, o.width, o.height, viz::completeSettings(*technique, point.setting.settings), -1};
+            viz::FrameInput in = viz::frameInput(&scene, o.width, o.height, viz::completeSettings(*technique, point.setting.settings));
             const TimedRuns timed = timeRuns(*technique, in, o.runs);
             const viz::FrameOutput& output = timed.last;
             viz::report::ReportRow row;
@@ -414,7 +414,7 @@ int runReportCommand(Args& args, const std::string& commandLine) {
                 technique.reset();
                 technique = viz::makeTechnique(point.technique);
             }
-            viz::FrameInput in{&scene, o.width, o.height, viz::completeSettings(*technique, point.setting.settings), -1};
+            viz::FrameInput in = viz::frameInput(&scene, o.width, o.height, viz::completeSettings(*technique, point.setting.settings));
             rows[firstRow + k].work = namedWork(technique->run(in));
             ++done;
             if (!point.stabiliser.empty()) temporalSeconds += secondsSince(pointStart);
@@ -462,14 +462,14 @@ int runReportCommand(Args& args, const std::string& commandLine) {
         spec.highlightName = "Pareto front";
         int colour = 0;
         for (const std::string& technique : o.techniques) {
-            viz::plot::Series all{technique, viz::plot::categoricalColor(colour), {}, false, true};
+            viz::plot::Series all{technique, viz::plot::categoricalColour(colour), {}, false, true};
             std::vector<viz::report::TradeoffPoint> points;
             for (const auto& r : rows)
                 if (r.scene == page.scene && r.technique == technique) {
                     all.points.push_back({r.totalMilliseconds, r.error.relativeL2});
                     points.push_back({r.totalMilliseconds, r.error.relativeL2});
                 }
-            viz::plot::Series front{"", all.color, {}, true, false};
+            viz::plot::Series front{"", all.colour, {}, true, false};
             for (int k : viz::report::paretoFront(points)) front.points.push_back(all.points[std::size_t(k)]);
             spec.series.push_back(std::move(all));
             spec.series.push_back(std::move(front));

@@ -46,7 +46,7 @@ void runTemporal(const viz::scene::Scene& scene, const viz::scene::MotionPath& p
         for (int i = 0; i < frames; ++i) {
             step("reference frame " + std::to_string(i + 1) + "/" + std::to_string(frames));
             viz::scene::applyPose(poses[std::size_t(i)], moving);
-            reference.push_back(t->run({&moving, width, height, settings, -1}).airlight);
+            reference.push_back(t->run(viz::frameInput(&moving, width, height, settings)).airlight);
         }
     }
 
@@ -60,12 +60,12 @@ void runTemporal(const viz::scene::Scene& scene, const viz::scene::MotionPath& p
         }
         // Warm-up on frame 0 (shader compiles, uploads), then each frame once, in path order.
         viz::scene::applyPose(poses.front(), moving);
-        technique->run({&moving, width, height, job.settings, -1});
+        technique->run(viz::frameInput(&moving, width, height, job.settings));
         viz::report::TemporalAccumulator accumulator;
         std::vector<double> times;
         for (int i = 0; i < frames; ++i) {
             viz::scene::applyPose(poses[std::size_t(i)], moving);
-            viz::FrameInput input{&moving, width, height, job.settings, -1};
+            viz::FrameInput input = viz::frameInput(&moving, width, height, job.settings);
             input.frame = i;
             const viz::FrameOutput out = technique->run(input);
             if (out.airlight.empty()) throw std::runtime_error(job.technique + " produced no L_air image");
@@ -102,7 +102,7 @@ void writeTemporalPlot(const viz::ui::FontAtlas& font, const std::vector<viz::re
     std::vector<glm::dvec2> sceneCoords;
     int colour = 0;
     for (const std::string& technique : techniques) {
-        viz::plot::Series all{technique, viz::plot::categoricalColor(colour++), {}, false, true};
+        viz::plot::Series all{technique, viz::plot::categoricalColour(colour++), {}, false, true};
         std::vector<viz::report::TradeoffPoint> points;
         for (const auto& r : rows)
             if (r.scene == page.scene && r.technique == technique && r.temporal) {
@@ -112,7 +112,7 @@ void writeTemporalPlot(const viz::ui::FontAtlas& font, const std::vector<viz::re
         if (all.points.empty()) continue;
         scenePoints.insert(scenePoints.end(), points.begin(), points.end());
         sceneCoords.insert(sceneCoords.end(), all.points.begin(), all.points.end());
-        viz::plot::Series front{"", all.color, {}, true, false};
+        viz::plot::Series front{"", all.colour, {}, true, false};
         for (int k : viz::report::paretoFront(points)) front.points.push_back(all.points[std::size_t(k)]);
         spec.series.push_back(std::move(all));
         spec.series.push_back(std::move(front));

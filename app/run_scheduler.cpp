@@ -73,7 +73,7 @@ viz::FrameOutput RunScheduler::run(const viz::scene::Scene& scene, int width, in
     input.scene = &scene;
     input.width = width;
     input.height = height;
-    input.settings = settings;
+    viz::setRunSettings(input, settings);
     const int n = int(mTechnique->stages().size());
     input.stopAfterStage = cursor.stage >= 0 && cursor.stage < n - 1 ? cursor.stage : -1;
     // A sub-step of the last stage: stop there explicitly so that the technique applies it.

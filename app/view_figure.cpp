@@ -30,7 +30,7 @@ std::string captionOf(const ColourBar& bar, const DisplayMapping& m) {
     }
     if (!bar.units.empty()) text += " " + bar.units;
     if (!bar.caption.empty()) text += "; " + bar.caption;
-    if (m.mode == DisplayMode::HdrColor || m.mode == DisplayMode::RangeColor) text += "; exposure " + figure(m.exposure) + " EV";
+    if (m.mode == DisplayMode::HdrColour || m.mode == DisplayMode::RangeColour) text += "; exposure " + figure(m.exposure) + " EV";
     for (const LegendSwatch& sw : bar.legend) text += "; " + sw.label + ": " + std::to_string(sw.pixels) + " px";
     return text;
 }
@@ -86,7 +86,7 @@ Figure renderFigure(ViewState& view, float exposureStops, const viz::ui::FontAtl
     const viz::gl::Texture target = viz::gl::Texture::create(
         {.target = GL_TEXTURE_2D, .format = GL_RGBA8, .size = {size.x, size.y, 1}, .levels = 1, .label = "figure"});
     viz::gl::Framebuffer framebuffer = viz::gl::Framebuffer::create("figure");
-    framebuffer.attachColor(0, target);
+    framebuffer.attachColour(0, target);
     framebuffer.checkComplete();
     framebuffer.bind();
     glViewport(0, 0, size.x, size.y);

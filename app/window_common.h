@@ -96,11 +96,8 @@ inline std::optional<StepCursor> takeSubsteps(const viz::Technique& technique, v
 
 // ---- formatting ----
 
-// Error messages (shader logs) can span lines; the status line shows the first.
-inline std::string firstLine(const std::string& text) {
-    const std::size_t end = text.find('\n');
-    return end == std::string::npos ? text : text.substr(0, end) + "  (...)";
-}
+// Error messages (shader logs) can span lines; the status line shows the first, marked when there is more.
+inline std::string firstLine(const std::string& text) { return viz::firstLine(text, "  (...)"); }
 
 using viz::format;
 

@@ -58,17 +58,17 @@ void GuiApp::draw() {
     if (timing.clock.empty()) timing.clock = t.needsGl() ? mClockName : "steady_clock";
     dl.textClipped({pad, pad + line}, mHaveOutput ? timingLine(timing) : "timings: (no run yet)", kDim, float(fb.x) - pad);
     std::string third = skippedLine(mHaveOutput ? mOutput.plan : mPlan);
-    glm::vec4 thirdColor = kDim;
+    glm::vec4 thirdColour = kDim;
     if (!mError.empty() || !mSettingsError.empty()) {
         third = "error: " + firstLine(mError.empty() ? mSettingsError + " (using defaults)" : mError);
-        thirdColor = kError;
+        thirdColour = kError;
     } else if (!mNotice.empty()) {
         third = mNotice + "   |   " + third;
     } else if (mHaveOutput && !mOutput.notes.empty()) {
         third = "note: " + mOutput.notes.front() + "   |   " + third;
-        thirdColor = kAccent;
+        thirdColour = kAccent;
     }
-    dl.textClipped({pad, pad + 2.0f * line}, third, thirdColor, float(fb.x) - pad);
+    dl.textClipped({pad, pad + 2.0f * line}, third, thirdColour, float(fb.x) - pad);
     const float top = 3.0f * line + 3.0f * pad;
 
     // Help lines at the bottom, from the key table.

@@ -55,7 +55,7 @@ void GuiApp::drawInspector(DrawList& dl, const Rect& area) {
     viz::plot::PlotSpec spec;
     spec.xLabel = "t along the ray";
     spec.yLabel = "integrand (sum of RGB), V included";
-    viz::plot::Series curve{"integrand", viz::plot::categoricalColor(0), {}, true, false};
+    viz::plot::Series curve{"integrand", viz::plot::categoricalColour(0), {}, true, false};
     for (std::size_t i = 0; i < p.t.size(); ++i) {
         const glm::dvec3& v = p.integrand[i];
         curve.points.push_back({p.t[i], v.x + v.y + v.z});
@@ -65,7 +65,7 @@ void GuiApp::drawInspector(DrawList& dl, const Rect& area) {
     if (mHaveOutput && technique().id() == mProbeTechnique)
         for (const viz::plot::Series& s : probeInspection().series) spec.series.push_back(s);
     for (std::size_t k = 0; k < p.lights.size(); ++k) {
-        viz::plot::Band band{"lit: " + p.lights[k].name, viz::plot::categoricalColor(int(k) + 1), {}};
+        viz::plot::Band band{"lit: " + p.lights[k].name, viz::plot::categoricalColour(int(k) + 1), {}};
         for (const auto& iv : p.lights[k].lit) band.spans.push_back({iv.a, iv.b});
         spec.bands.push_back(std::move(band));
     }

@@ -98,8 +98,8 @@ void GuiApp::buildPane(ViewState& v) {
         v.pane.label = contentLabel(shown);
         v.pane.note = note;
         v.pane.units = "radiance";
-        v.pane.kind = viz::ViewKind::Color;
-        v.pane.mode = DisplayMode::HdrColor;
+        v.pane.kind = viz::ViewKind::Colour;
+        v.pane.mode = DisplayMode::HdrColour;
         uploadImage(v.pane, image);
     };
     if (content == "final") {
@@ -228,7 +228,7 @@ void GuiApp::runDueGpuOthers() {
             std::string ignored;
             viz::scene::Scene scene = mScene;
             scene.camera = mController.camera();
-            viz::FrameInput in{&scene, mOutputSize.x, mOutputSize.y, settingsFor(t, otherSettings(id), ignored), -1};
+            viz::FrameInput in = viz::frameInput(&scene, mOutputSize.x, mOutputSize.y, settingsFor(t, otherSettings(id), ignored));
             viz::FrameOutput out = t.run(in);
             glBindFramebuffer(GL_FRAMEBUFFER, 0);
             run.airlight = std::move(out.airlight);
@@ -249,7 +249,7 @@ std::string GuiApp::sceneOnlyKey() const {
     std::string key = buf;
     for (const auto& l : mScene.lights)
         for (const double x : {l.position.x, l.position.y, l.position.z, l.direction.x, l.direction.y,
-                               l.direction.z, l.intensity, l.color.x, l.color.y, l.color.z}) {
+                               l.direction.z, l.intensity, l.colour.x, l.colour.y, l.colour.z}) {
             key += ' ';  // appended apart: GCC 12 at -O3 warns (-Wrestrict) on " " + a temporary here
             key += format("%.17g", x);
         }

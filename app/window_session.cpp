@@ -111,7 +111,7 @@ void GuiApp::applyLessonWindowState(const LessonWindowState& s) {
     for (std::size_t i = 0; !lighting && i < s.lights.size(); ++i) {
         const auto& a = s.lights[i];
         const auto& b = mScene.lights[i];
-        lighting = a.position != b.position || a.direction != b.direction || a.intensity != b.intensity || a.color != b.color;
+        lighting = a.position != b.position || a.direction != b.direction || a.intensity != b.intensity || a.colour != b.colour;
     }
     mScene.medium = s.medium;
     mScene.lights = s.lights;

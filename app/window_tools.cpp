@@ -37,7 +37,7 @@ ComparisonGrid::RunTechnique GuiApp::comparisonRunner() {
         viz::Settings given = mSession.settings.count(id) ? mSession.settings.at(id) : viz::Settings{};
         for (const auto& [name, value] : mOptions.settings) given[name] = value;
         std::string ignored;
-        viz::FrameInput input{&scene, size.x, size.y, settingsFor(t, given, ignored), -1};
+        viz::FrameInput input = viz::frameInput(&scene, size.x, size.y, settingsFor(t, given, ignored));
         input.frame = frame;
         viz::FrameOutput out = t.run(input);
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -96,7 +96,7 @@ void GuiApp::drawComparison(DrawList& dl, const Rect& area) {
             // The colour of its point in the error-against-time plot (whose legend a small cell leaves out).
             const float mark = line - 6.0f * mScale;
             dl.rect({{captionX, box.max.y + 5.0f * mScale}, {captionX + mark, box.max.y + 5.0f * mScale + mark}},
-                    viz::plot::categoricalColor(i));
+                    viz::plot::categoricalColour(i));
             captionX += mark + 4.0f * mScale;
         }
         dl.textClipped({captionX, box.max.y + 2.0f}, caption, kText, at.x + cell.x - pad);
@@ -123,7 +123,7 @@ bool GuiApp::focusedViewImage(viz::Image& image, float& exposure) {
     if (v.values.empty()) return false;
     const viz::Image& values = v.values;
     const DisplayMapping m = resolveMapping(v.pane, v.display, mExposure, v.measured);
-    const bool colour = m.mode == DisplayMode::HdrColor || m.mode == DisplayMode::RangeColor;
+    const bool colour = m.mode == DisplayMode::HdrColour || m.mode == DisplayMode::RangeColour;
     image = colour ? values : viz::toDisplay(values, m.lo, m.hi);
     exposure = colour ? std::exp2(m.exposure) : 1.0f;
     return true;

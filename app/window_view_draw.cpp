@@ -160,8 +160,8 @@ std::pair<std::string, std::string> GuiApp::viewTitle(const ViewState& v) const 
     if (v.pane.id == "final" && v.display.difference == DifferenceMode::Off)
         note = "surface radiance * exp(-sigma_t d) + L_air   (exposure " + format("%+.1f EV)", mExposure);
     const DisplayMapping m = resolveMapping(v.pane, v.display, mExposure, v.measured);
-    const bool picture = v.pane.picture && m.mode == DisplayMode::RangeColor;  // no range to state
-    if (m.mode != DisplayMode::HdrColor && !picture) {
+    const bool picture = v.pane.picture && m.mode == DisplayMode::RangeColour;  // no range to state
+    if (m.mode != DisplayMode::HdrColour && !picture) {
         // A multi-quantity pane names the channel shown, with that quantity's units.
         const viz::ChannelInfo* declared = declaredChannel(v.pane, v.display.channel);
         const std::string& units = declared ? declared->units : v.pane.units;
@@ -504,11 +504,11 @@ void GuiApp::drawHistogram(const ViewState& v, const Rect& area) {
     }
     spec.series.push_back(std::move(counts));
     const DisplayMapping m = resolveMapping(v.pane, v.display, mExposure, v.measured);
-    if (m.mode != DisplayMode::HdrColor && !h.bins.empty()) {
+    if (m.mode != DisplayMode::HdrColour && !h.bins.empty()) {
         viz::plot::Series shown{"range", {0.3f, 0.85f, 1.0f, 1.0f}, {}, true, false};
         for (double x : {double(m.lo), double(m.hi)}) {
             if (x < h.lo || x > h.hi) continue;  // outside the data: the axis would stretch to it
-            viz::plot::Series mark{"", shown.color, {{x, 0.0}, {x, top}}, true, false};
+            viz::plot::Series mark{"", shown.colour, {{x, 0.0}, {x, top}}, true, false};
             spec.series.push_back(std::move(mark));
         }
     }

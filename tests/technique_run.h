@@ -13,7 +13,7 @@ inline FrameOutput runTechnique(Technique& technique, const scene::Scene& scene,
     in.scene = &scene;
     in.width = w;
     in.height = h;
-    in.settings = completeSettings(technique, given);
+    setRunSettings(in, completeSettings(technique, given));
     in.stopAfterStage = stopAfter;
     in.frame = frame;
     return technique.run(in);

@@ -68,7 +68,7 @@ struct GpuMedium {
 // One material. Colours are linear. Texture layers index the material texture array; a layer whose
 // image is smaller than the array uses only the [0, size) corner, hence the per-layer size.
 struct GpuMaterial {
-    vec4 baseColor;   // baseColorFactor (linear rgba)
+    vec4 baseColour;   // baseColorFactor (linear rgba)
     vec4 emissive;    // rgb = emissiveFactor * emissiveStrength (radiance), w unused
     ivec4 layers;     // x base-colour layer (-1: none), y emission layer (-1: none), zw unused
     vec4 layerSize;   // xy base-colour layer size in texels, zw emission layer size in texels

@@ -10,7 +10,7 @@ layout(binding = kUnitMaterialTextures) uniform sampler2DArray uMaterialTextures
 
 // albedo = baseColorFactor.rgb * sRGB-decoded base-colour texture at uv.
 vec3 materialAlbedo(GpuMaterial m, vec2 uv) {
-    vec3 albedo = m.baseColor.rgb;
+    vec3 albedo = m.baseColour.rgb;
     if (m.layers.x >= 0) albedo *= sampleLayerLinearRgb(uMaterialTextures, m.layers.x, uv, m.layerSize.xy);
     return albedo;
 }

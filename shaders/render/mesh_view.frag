@@ -2,11 +2,11 @@
 // render/mesh_view.frag: flat colour for the mesh view (render::MeshView). With uShade, surfaces are
 // shaded by the angle of their normal to a fixed head-on direction so their shapes read.
 in vec3 vNormal;
-uniform vec4 uColor;
+uniform vec4 uColour;
 uniform int uShade;
-layout(location = 0) out vec4 oColor;
+layout(location = 0) out vec4 oColour;
 
 void main() {
     float shade = uShade != 0 ? 0.55 + 0.45 * abs(normalize(vNormal).y) : 1.0;
-    oColor = vec4(uColor.rgb * shade, uColor.a);
+    oColour = vec4(uColour.rgb * shade, uColour.a);
 }

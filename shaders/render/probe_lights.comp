@@ -34,7 +34,7 @@ void main() {
         int base = 12 * uCount;
         for (int i = 0; i < gMaterials.length(); ++i) {
             GpuMaterial m = gMaterials[i];
-            uOut[base + 4 * i + 0] = m.baseColor;
+            uOut[base + 4 * i + 0] = m.baseColour;
             uOut[base + 4 * i + 1] = m.emissive;
             uOut[base + 4 * i + 2] = vec4(m.layers);
             uOut[base + 4 * i + 3] = m.layerSize;

@@ -32,17 +32,17 @@ flat in float vDepth;
 flat in int vPlane;
 flat in vec4 vValue;   // the plane's recorded output (0 when it made no fragment at the pixel)
 flat in float vStatus;
-layout(location = 0) out vec4 oColor;
+layout(location = 0) out vec4 oColour;
 
 void main() {
     if (uSeedRow >= 0) {
         // The accumulation at the end of the row before (written by earlier draws, behind a texture
         // barrier; this draw writes other texels only). Added to a cleared texel, stored exactly.
-        oColor = texelFetch(uReplay, ivec2(uColumns - 1, uSeedRow - 1), 0);
+        oColour = texelFetch(uReplay, ivec2(uColumns - 1, uSeedRow - 1), 0);
         return;
     }
     int record = uPickBase + vPlane;
-    oColor = vValue;
+    oColour = vValue;
     ivec2 texel = ivec2(gl_FragCoord.xy);
     if (vStatus == kPickAdded || vStatus == kPickBeyondSurface || texel.y * uColumns + texel.x != record) return;
     // The pixel centre's ray, as plane.frag computes it.

@@ -56,7 +56,7 @@ float gVisibilityCount = 0.0;
 
 flat in float vDepth;  // s_i
 flat in int vPlane;
-layout(location = 0) out vec4 oColor;
+layout(location = 0) out vec4 oColour;
 
 // Shadow term: nearest texel (the paper) or 3x3 percentage-closer filtering on the same map and bias.
 float visibility(GpuLight L, vec3 p) {
@@ -178,10 +178,10 @@ void main() {
         vec4 lc = gLights[uLight].shadowMatrix * vec4(p, 1.0);
         outside = lc.w <= 0.0 || any(greaterThan(abs(lc.xyz), vec3(lc.w * (1.0 + 1.0e-4))));
     }
-    if (uCountPass == 1) { oColor = vec4(0.0); return; }
+    if (uCountPass == 1) { oColour = vec4(0.0); return; }
     if (uCountPass == 2) {
         if (!outside) discard;
-        oColor = vec4(0.0);
+        oColour = vec4(0.0);
         return;
     }
     if (outside) atomicCounterIncrement(uOutside);
@@ -217,9 +217,9 @@ void main() {
     float scalar = dot(value, vec3(1.0 / 3.0));
     vec4 mask = vec4(0.0);
     mask[vPlane & 3] = 1.0;
-    oColor = scalar * mask;
+    oColour = scalar * mask;
 #else
-    oColor = vec4(value, 0.0);
+    oColour = vec4(value, 0.0);
 #endif
 #ifdef PICK_RAY
     if (picked) {
@@ -231,7 +231,7 @@ void main() {
         float channel = -1.0;
 #endif
         gPick[record].test = vec4(kPickAdded, V, channel, d);
-        gPick[record].value = oColor;
+        gPick[record].value = oColour;
     }
 #endif
 }

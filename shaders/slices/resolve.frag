@@ -5,7 +5,7 @@
 layout(binding = 0) uniform sampler2D uAccum;
 
 uniform float uInvStoreScale;
-uniform vec3 uMaskColor;  // channel mask: colour / mean(colour) of the light(s)
+uniform vec3 uMaskColour;  // channel mask: colour / mean(colour) of the light(s)
 
 layout(location = 0) out vec4 oAirlight;
 
@@ -13,7 +13,7 @@ vec3 decode(ivec2 texel) {
     ivec2 size = textureSize(uAccum, 0);
     vec4 a = texelFetch(uAccum, clamp(texel, ivec2(0), size - 1), 0);
 #ifdef CHANNEL_MASK
-    return (a.r + a.g + a.b + a.a) * uMaskColor;
+    return (a.r + a.g + a.b + a.a) * uMaskColour;
 #else
     return a.rgb;
 #endif

@@ -9,8 +9,8 @@
 layout(binding = 0) uniform sampler2D uImage;
 
 // Display modes, mirrored by DisplayMode in app/pane_image.h.
-const int kHdrColor = 0;    // c * 2^exposure, clamp, sRGB
-const int kRangeColor = 1;  // (c - min) / (max - min) * 2^exposure, clamp, sRGB
+const int kHdrColour = 0;    // c * 2^exposure, clamp, sRGB
+const int kRangeColour = 1;  // (c - min) / (max - min) * 2^exposure, clamp, sRGB
 const int kGrey = 2;        // (r - min) / (max - min) as grey
 const int kSigned = 3;      // r / max(|min|, |max|): blue < 0, white at 0, red > 0
 const int kFalse = 4;       // (r - min) / (max - min) through a blue-green-yellow-red ramp
@@ -34,7 +34,7 @@ uniform vec4 uSentinels;     // the pane's sentinel values (PaneImage::sentinels
 uniform int uSentinelCount;
 
 in vec2 vPane;
-out vec4 fragColor;
+out vec4 fragColour;
 
 vec3 srgbEncode(vec3 c) {
     c = clamp(c, 0.0, 1.0);
@@ -42,7 +42,7 @@ vec3 srgbEncode(vec3 c) {
 }
 
 // Piecewise-linear ramp through dark blue, cyan, green, yellow, red; t in [0,1].
-vec3 falseColor(float t) {
+vec3 falseColour(float t) {
     const vec3 stops[5] = vec3[5](vec3(0.05, 0.05, 0.35), vec3(0.0, 0.6, 0.9), vec3(0.1, 0.8, 0.2),
                                   vec3(0.95, 0.9, 0.1), vec3(0.85, 0.1, 0.05));
     float x = clamp(t, 0.0, 1.0) * 4.0;
@@ -51,7 +51,7 @@ vec3 falseColor(float t) {
 }
 
 // The report's error ramp (viz/report/error_images.cpp), display values; t in [0,1].
-vec3 heatColor(float t) {
+vec3 heatColour(float t) {
     const vec3 stops[5] = vec3[5](vec3(0.0), vec3(0.34, 0.06, 0.42), vec3(0.73, 0.21, 0.33),
                                   vec3(0.98, 0.55, 0.04), vec3(0.99, 0.98, 0.55));
     float x = clamp(t, 0.0, 1.0) * 4.0;
@@ -59,7 +59,7 @@ vec3 heatColor(float t) {
     return mix(stops[i], stops[i + 1], x - float(i));
 }
 
-vec3 categoricalColor(int k) {
+vec3 categoricalColour(int k) {
     const vec3 palette[10] = vec3[10](vec3(0.12, 0.47, 0.71), vec3(1.0, 0.50, 0.05), vec3(0.17, 0.63, 0.17),
                                       vec3(0.84, 0.15, 0.16), vec3(0.58, 0.40, 0.74), vec3(0.55, 0.34, 0.29),
                                       vec3(0.89, 0.47, 0.76), vec3(0.50, 0.50, 0.50), vec3(0.74, 0.74, 0.13),
@@ -68,7 +68,7 @@ vec3 categoricalColor(int k) {
 }
 
 // Integer hash to a saturated colour, so neighbouring bit patterns look different.
-vec3 hashColor(uint v) {
+vec3 hashColour(uint v) {
     v ^= v >> 16; v *= 0x7feb352du; v ^= v >> 15; v *= 0x846ca68bu; v ^= v >> 16;
     return vec3(float(v & 255u), float((v >> 8) & 255u), float((v >> 16) & 255u)) / 255.0 * 0.8 + 0.2;
 }
@@ -103,7 +103,7 @@ void main() {
         vec2 f = fract(view * vec2(size));
         float edge = 1.0 / uTexelPixels;
         if (f.x < edge || f.y < edge) {
-            fragColor = vec4(0.18, 0.18, 0.2, 1.0);
+            fragColour = vec4(0.18, 0.18, 0.2, 1.0);
             return;
         }
     }
@@ -111,16 +111,16 @@ void main() {
     // Only the meaningful channels count (a one-channel texture reads back g = b = 0, a = 1).
     bvec4 meaningful = bvec4(true, uChannels > 1, uChannels > 2, uChannels > 3);
     if (anyOf(isnan(v), meaningful)) {
-        fragColor = vec4(1.0, 0.0, 1.0, 1.0);
+        fragColour = vec4(1.0, 0.0, 1.0, 1.0);
         return;
     }
     if (anyOf(isinf(v), meaningful)) {
-        fragColor = vec4(0.0, 1.0, 1.0, 1.0);
+        fragColour = vec4(0.0, 1.0, 1.0, 1.0);
         return;
     }
     bvec4 sentinel = bvec4(isSentinel(v.r), isSentinel(v.g), isSentinel(v.b), isSentinel(v.a));
     if (uMarkNegative && anyOf(bvec4(uvec4(lessThan(v, vec4(0.0))) & uvec4(not(sentinel))), meaningful)) {
-        fragColor = vec4(0.3, 1.0, 0.2, 1.0);
+        fragColour = vec4(0.3, 1.0, 0.2, 1.0);
         return;
     }
     if (uChannels == 1) v.rgb = v.rrr;
@@ -129,16 +129,16 @@ void main() {
     } else if (uChannel == 5) {
         v.rgb = vec3(dot(v.rgb, vec3(0.2126, 0.7152, 0.0722)));
     }
-    if (uMode != kHdrColor && isSentinel(v.r)) {
-        fragColor = vec4(sentinelHatch(), 1.0);
+    if (uMode != kHdrColour && isSentinel(v.r)) {
+        fragColour = vec4(sentinelHatch(), 1.0);
         return;
     }
     uvec4 raw = uvec4(max(v, 0.0));
     float t = unit(v.r);
     vec3 c;
-    if (uMode == kHdrColor) {
+    if (uMode == kHdrColour) {
         c = srgbEncode(v.rgb * exp2(uExposure));
-    } else if (uMode == kRangeColor) {
+    } else if (uMode == kRangeColour) {
         c = srgbEncode(vec3(unit(v.r), unit(v.g), unit(v.b)) * exp2(uExposure));
     } else if (uMode == kGrey) {
         c = vec3(clamp(t, 0.0, 1.0));
@@ -149,15 +149,15 @@ void main() {
         s = clamp(s, -1.0, 1.0);
         c = s < 0.0 ? mix(vec3(1.0), vec3(0.1, 0.3, 0.9), -s) : mix(vec3(1.0), vec3(0.9, 0.15, 0.1), s);
     } else if (uMode == kFalse) {
-        c = falseColor(t);
+        c = falseColour(t);
     } else if (uMode == kBits) {
-        c = raw.r == 0u ? vec3(0.0) : hashColor(raw.r);
+        c = raw.r == 0u ? vec3(0.0) : hashColour(raw.r);
     } else if (uMode == kCategorical) {
-        c = categoricalColor(int(floor(v.r)));
+        c = categoricalColour(int(floor(v.r)));
     } else if (uMode == kHeat) {
-        c = heatColor(t);
+        c = heatColour(t);
     } else {
         c = vec3(t > 0.5 ? 1.0 : 0.0);
     }
-    fragColor = vec4(c, 1.0);
+    fragColour = vec4(c, 1.0);
 }

@@ -4,10 +4,10 @@
 layout(binding = 0) uniform sampler2D uAtlas;
 
 in vec2 vUv;
-in vec4 vColor;
-out vec4 fragColor;
+in vec4 vColour;
+out vec4 fragColour;
 
 void main() {
     float coverage = texture(uAtlas, vUv).r;
-    fragColor = vec4(vColor.rgb, vColor.a * coverage);
+    fragColour = vec4(vColour.rgb, vColour.a * coverage);
 }

@@ -94,7 +94,7 @@ int convergence(int argc, char** argv) {
         in.scene = &scene;
         in.width = width;
         in.height = height;
-        in.settings = viz::completeSettings(*tech, {{"cache", 0}, {"threads", threads}, {"area_samples", double(n)}});
+        viz::setRunSettings(in, viz::completeSettings(*tech, {{"cache", 0}, {"threads", threads}, {"area_samples", double(n)}}));
         viz::FrameOutput out;
         std::printf("area_samples %d\n", n);
         Run run;
@@ -138,7 +138,7 @@ int main(int argc, char** argv) {
         in.scene = &scene;
         in.width = width;
         in.height = height;
-        in.settings = viz::completeSettings(*tech, {{"cache", 0}, {"threads", threads}});
+        viz::setRunSettings(in, viz::completeSettings(*tech, {{"cache", 0}, {"threads", threads}}));
         viz::FrameOutput out;
         const double median = medianRun(*tech, in, runs, out);
         std::printf("reference on %s at %dx%d, threads %g: median of %d = %.2f s\n", name.c_str(), width, height,

@@ -90,7 +90,7 @@ inline std::string sceneProblem(const Scene& scene) {
         const std::string who = "lights[" + std::to_string(l) + "]";
         if (!finite(light.position)) return who + ".position";
         if (!finite(light.direction)) return who + ".direction";
-        if (!finite(light.color)) return who + ".color";
+        if (!finite(light.colour)) return who + ".colour";
         if (!finite(light.intensity)) return who + ".intensity";
         if (!finite(light.innerConeAngle) || !finite(light.outerConeAngle)) return who + " (cone angles)";
         if (!finite(light.halfU) || !finite(light.halfV)) return who + " (half edges)";

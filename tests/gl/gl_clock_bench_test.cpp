@@ -26,7 +26,7 @@ TEST_F(ClockBench, DISABLED_FinishSteadyClockVersusTimeElapsed) {
     Texture target =
         Texture::create({.format = GL_RGBA32F, .size = {size, size, 1}, .label = "bench.target"});
     Framebuffer fb = Framebuffer::create("bench.fb");
-    fb.attachColor(0, target);
+    fb.attachColour(0, target);
     fb.checkComplete();
     VertexArray vao = VertexArray::create("bench.vao");
     Program p = Program::compile(

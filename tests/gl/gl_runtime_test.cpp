@@ -393,10 +393,10 @@ TEST_F(GlRuntime, BadDefinesAreReportedAsDefines) {
 
 TEST_F(GlRuntime, DrawToFramebufferAndReadBackTopRowFirst) {
     const int w = 6, h = 4;
-    Texture color =
-        Texture::create({.format = GL_RGBA32F, .size = {w, h, 1}, .label = "test.color"});
+    Texture colour =
+        Texture::create({.format = GL_RGBA32F, .size = {w, h, 1}, .label = "test.colour"});
     Framebuffer fb = Framebuffer::create("test.fb");
-    fb.attachColor(0, color);
+    fb.attachColour(0, colour);
     fb.checkComplete();
     VertexArray vao = VertexArray::create("test.empty_vao");
     Program p = Program::compile(
@@ -409,7 +409,7 @@ TEST_F(GlRuntime, DrawToFramebufferAndReadBackTopRowFirst) {
     p.use();
     glDrawArrays(GL_TRIANGLES, 0, 3);
     Framebuffer::bindDefault();
-    const Image img = readTexture(color);
+    const Image img = readTexture(colour);
     // gl_FragCoord.y is measured from the bottom: the image's top row holds the largest y.
     EXPECT_EQ(img.at(0, 0, 1), float(h) - 0.5f);
     EXPECT_EQ(img.at(0, h - 1, 1), 0.5f);

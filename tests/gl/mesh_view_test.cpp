@@ -20,13 +20,13 @@ glm::dvec3 project(const glm::mat4& viewProj, glm::dvec3 p) {
 
 bool inside(glm::dvec3 ndc) { return glm::all(glm::lessThanEqual(glm::abs(ndc), glm::dvec3(1.0))); }
 
-// Pixels of `image` within 0.08 of `color` (RGB, display values).
-int pixelsNear(const viz::Image& image, glm::vec3 color) {
+// Pixels of `image` within 0.08 of `colour` (RGB, display values).
+int pixelsNear(const viz::Image& image, glm::vec3 colour) {
     int n = 0;
     for (int y = 0; y < image.height; ++y)
         for (int x = 0; x < image.width; ++x) {
             const glm::vec3 c(image.at(x, y, 0), image.at(x, y, 1), image.at(x, y, 2));
-            if (glm::all(glm::lessThan(glm::abs(c - color), glm::vec3(0.08f)))) ++n;
+            if (glm::all(glm::lessThan(glm::abs(c - colour), glm::vec3(0.08f)))) ++n;
         }
     return n;
 }
@@ -111,7 +111,7 @@ TEST_F(MeshViewRender, PolyvolAndSlicesDrawTheirMeshesWithTheCameraAndLight) {
 TEST_F(MeshViewRender, PolyvolDrawsItsOrbitViewWhenTheCallerShowsTheMesh) {
     const viz::scene::Scene scene = viz::scene::makeBuiltinScene("grate");
     auto polyvol = viz::makeTechnique("polyvol");
-    viz::FrameInput in{&scene, 160, 120, viz::completeSettings(*polyvol, {{"shadow_map", 64}}), -1};
+    viz::FrameInput in = viz::frameInput(&scene, 160, 120, viz::completeSettings(*polyvol, {{"shadow_map", 64}}));
     const viz::FrameOutput plain = polyvol->run(in);
     const viz::Intermediate* bare = find(plain, "polyvol.mesh");
     ASSERT_TRUE(bare);

@@ -20,7 +20,7 @@ inline scene::Scene pointGrate(const std::string& camera) {
     l.type = scene::LightType::Point;
     l.position = {0.0, 6.0, 0.0};
     l.intensity = 400.0;
-    l.color = {1.0, 0.92, 0.8};
+    l.colour = {1.0, 0.92, 0.8};
     s.lights = {l};
     s.name = "point-grate-" + camera;
     if (camera == "on") s.camera = scene::lookAt("on", {0.0, 0.8, 7.0}, {0.0, 3.2, 0.0}, 0.9, 0.05, 40.0);

@@ -284,7 +284,7 @@ TEST_F(MinmaxPointTest, SpotAndPointTogetherAndSvdAndForcedFeatures) {
     l.type = viz::scene::LightType::Point;
     l.position = {1.5, 4.5, -1.0};
     l.intensity = 150.0;
-    l.color = {0.7, 0.8, 1.0};
+    l.colour = {0.7, 0.8, 1.0};
     scene.lights.push_back(l);
     // 160x120 and a 2048 map, as MinmaxTest.MatchesTheReferenceOnGrateAndTerrain: at 80x60 the spot's own
     // slice quantisation is near 3 % (README, "Slices, columns and the epipole").

@@ -32,7 +32,7 @@ constexpr double kPass = 1e-4;  // the centre pixel's ray passes this far from t
 viz::scene::Scene nearLightScene(glm::dvec3 eye, glm::dvec3 side) {
     viz::scene::Scene s = viz::scene::makeBuiltinScene("grate");
     std::erase_if(s.meshes, [](const viz::scene::Mesh& m) { return m.name == "grate" || m.name == "cube"; });
-    s.lights[0].color = {1.0, 1.0, 1.0};
+    s.lights[0].colour = {1.0, 1.0, 1.0};
     s.medium = viz::scene::Medium{0.1, 0.0, 0.0};
     const glm::dvec3 toApex = glm::normalize(kApex - eye);
     const glm::dvec3 n = glm::normalize(side - glm::dot(side, toApex) * toApex);
@@ -54,7 +54,7 @@ Real quadratureAlongTheRay(const viz::scene::Scene& s, glm::dvec3 w) {
     const Real ma = glm::dot(m, a) / double(h), wa = glm::dot(w, a);
     const Real cosOuter = std::cos(Real(L.outerConeAngle)), cosInner = std::cos(Real(L.innerConeAngle));
     const Real scale = 1 / std::max(Real(0.001), cosInner - cosOuter), offset = -cosOuter * scale;
-    const Real sigma_s = s.medium.sigma_s, sigma_t = s.medium.sigma_t(), I = L.intensity * L.color.r;
+    const Real sigma_s = s.medium.sigma_s, sigma_t = s.medium.sigma_t(), I = L.intensity * L.colour.r;
     const Real pi = boost::math::constants::pi<Real>();
     auto f = [&](Real phi) -> Real {
         const Real cd = ma * std::cos(phi) + wa * std::sin(phi);

@@ -94,7 +94,7 @@ TEST_F(RenderLights, GpuLightAndMaterialLayoutsMatchGlsl) {
     scene::Light point;
     point.type = scene::LightType::Point;
     point.position = {1.0, 2.0, 3.0};
-    point.color = {0.5, 0.25, 1.0};
+    point.colour = {0.5, 0.25, 1.0};
     point.intensity = 7.0;
     scene::Light spot = point;
     spot.type = scene::LightType::Spot;
@@ -165,7 +165,7 @@ glm::dvec3 spotIntensityCpu(const scene::Light& L, const scene::Texture* cookie,
         const glm::dvec2 uv(0.5 + 0.5 * glm::dot(x, d) / (dz * t), 0.5 + 0.5 * glm::dot(y, d) / (dz * t));
         c = glm::dvec3(scene::sampleLinearRgb(*cookie, uv));
     }
-    return L.intensity * L.color * a * a * c;
+    return L.intensity * L.colour * a * a * c;
 }
 
 TEST_F(RenderLights, SpotCookieAndAttenuationMatchTheDefinition) {
@@ -191,7 +191,7 @@ TEST_F(RenderLights, SpotCookieAndAttenuationMatchTheDefinition) {
     spot.type = scene::LightType::Spot;
     spot.position = {0.3, 3.0, -0.2};
     spot.direction = glm::normalize(glm::dvec3(0.15, -1.0, 0.1));
-    spot.color = {1.0, 0.8, 0.6};
+    spot.colour = {1.0, 0.8, 0.6};
     spot.intensity = 12.0;
     spot.innerConeAngle = 0.25;
     spot.outerConeAngle = 0.6;

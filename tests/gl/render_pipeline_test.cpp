@@ -161,7 +161,7 @@ TEST_F(RenderPipeline, LambertUnderAPointLightMatchesTheCpuFormula) {
     scene::Light light;
     light.type = scene::LightType::Point;
     light.position = {0.5, 3.0, -1.0};
-    light.color = {1.0, 0.9, 0.8};
+    light.colour = {1.0, 0.9, 0.8};
     light.intensity = 20.0;
     s.lights = {light};
     const int w = 80, h = 60;
@@ -176,7 +176,7 @@ TEST_F(RenderPipeline, LambertUnderAPointLightMatchesTheCpuFormula) {
             const glm::dvec3 toLight = light.position - p;
             const double r = glm::length(toLight);
             const double cosSurface = toLight.y / r;  // n = (0, 1, 0), facing the eye (above the floor)
-            const glm::dvec3 E = light.intensity * light.color * std::exp(-s.medium.sigma_t() * r) / (r * r);
+            const glm::dvec3 E = light.intensity * light.colour * std::exp(-s.medium.sigma_t() * r) / (r * r);
             const glm::dvec3 expected = glm::dvec3(mat.baseColorFactor) / std::numbers::pi * E * cosSurface;
             for (int c = 0; c < 3; ++c) {
                 EXPECT_NEAR(f.radiance.at(x, y, c), expected[c], 1e-4 * expected[c]) << x << "," << y << " c" << c;
@@ -196,14 +196,14 @@ TEST_F(RenderPipeline, LambertSumsSpotAndDirectionalLights) {
     spot.type = scene::LightType::Spot;
     spot.position = {0.2, 2.5, -0.5};
     spot.direction = glm::normalize(glm::dvec3(0.1, -1.0, 0.3));
-    spot.color = {0.9, 1.0, 0.7};
+    spot.colour = {0.9, 1.0, 0.7};
     spot.intensity = 15.0;
     spot.innerConeAngle = 0.3;
     spot.outerConeAngle = 0.7;
     scene::Light sun;
     sun.type = scene::LightType::Directional;
     sun.direction = glm::normalize(glm::dvec3(0.4, -1.0, -0.2));
-    sun.color = {1.0, 0.5, 0.25};
+    sun.colour = {1.0, 0.5, 0.25};
     sun.intensity = 2.0;
     s.lights = {spot, sun};
     const int w = 80, h = 60;
@@ -220,8 +220,8 @@ TEST_F(RenderPipeline, LambertSumsSpotAndDirectionalLights) {
             const glm::dvec3 toLight = spot.position - p;
             const double r = glm::length(toLight);
             const double a = std::clamp(glm::dot(spot.direction, -toLight / r) * scale + offset, 0.0, 1.0);
-            const glm::dvec3 Espot = spot.intensity * spot.color * a * a * std::exp(-s.medium.sigma_t() * r) / (r * r);
-            const glm::dvec3 Esun = sun.intensity * sun.color;
+            const glm::dvec3 Espot = spot.intensity * spot.colour * a * a * std::exp(-s.medium.sigma_t() * r) / (r * r);
+            const glm::dvec3 Esun = sun.intensity * sun.colour;
             const glm::dvec3 expected = (Espot * (toLight.y / r) + Esun * -sun.direction.y) / std::numbers::pi;
             for (int c = 0; c < 3; ++c) {
                 EXPECT_NEAR(f.radiance.at(x, y, c), expected[c], 1e-4 * expected[c]) << x << "," << y << " c" << c;

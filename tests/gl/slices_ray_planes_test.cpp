@@ -247,7 +247,7 @@ TEST_F(SlicesRayPlanesTest, RecordsMatchAnIndependentCpuComputation) {
                 const double a = std::clamp(cd / std::max(0.001, cosInner - cosOuter) -
                                                 cosOuter / std::max(0.001, cosInner - cosOuter),
                                             0.0, 1.0);
-                const glm::dvec3 e = spot.color * spot.intensity * (a * a) * std::exp(-sigmaT * std::sqrt(r2)) / r2;
+                const glm::dvec3 e = spot.colour * spot.intensity * (a * a) * std::exp(-sigmaT * std::sqrt(r2)) / r2;
                 const double phase = viz::airlight::phaseHG(glm::dot(fromLight, -w), scene.medium.g);
                 const glm::dvec3 v = sigmaS * phase * r.v * std::exp(-sigmaT * r.t) * r.dt * storeScale * e;
                 if (accum == 1) {
@@ -365,7 +365,7 @@ TEST_F(SlicesRayPlanesTest, DISABLED_PickCostBenchmark) {
                 in[pick].scene = &scene;
                 in[pick].width = size.x;
                 in[pick].height = size.y;
-                in[pick].settings = viz::completeSettings(*technique[pick], {{"planes", n}, {"ray_planes", pick}});
+                viz::setRunSettings(in[pick], viz::completeSettings(*technique[pick], {{"planes", n}, {"ray_planes", pick}}));
                 technique[pick]->run(in[pick]);  // compiles and allocates
             }
             std::vector<double> frame[2], differences;

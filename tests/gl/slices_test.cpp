@@ -205,7 +205,7 @@ TEST_F(SlicesTest, ArtisticWeightingFollowsThePapersFormula) {
     const int w = 64, h = 48;
     {
         const viz::scene::Scene terrain = viz::scene::makeBuiltinScene("terrain");
-        const glm::dvec3 c = terrain.lights[0].color;
+        const glm::dvec3 c = terrain.lights[0].colour;
         const double top = std::max({c.r, c.g, c.b});
         std::vector<double> means;
         for (int n : {50, 100, 200}) {
@@ -365,7 +365,7 @@ TEST_F(SlicesTest, DISABLED_Benchmark) {
             in.scene = &scene;
             in.width = 160;
             in.height = 120;
-            in.settings = viz::completeSettings(*t, {{"planes", n}, {"shadow_map", 2048}});
+            viz::setRunSettings(in, viz::completeSettings(*t, {{"planes", n}, {"shadow_map", 2048}}));
             t->run(in);
             double best = 1e30, planes = 1e30, err = 0.0;
             for (int rep = 0; rep < 3; ++rep) {

@@ -22,4 +22,13 @@ inline std::string trim(const std::string& text) {
     return text.substr(a, b - a);
 }
 
+// The first line of `text` without trailing spaces or a carriage return (error messages, shader logs and
+// parser messages can span lines); `more` is appended when `text` had further lines.
+inline std::string firstLine(const std::string& text, const std::string& more = "") {
+    const std::size_t end = text.find('\n');
+    std::string line = text.substr(0, end);
+    while (!line.empty() && (line.back() == '\r' || line.back() == ' ')) line.pop_back();
+    return end == std::string::npos ? line : line + more;
+}
+
 }  // namespace viz

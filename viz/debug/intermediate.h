@@ -13,7 +13,7 @@
 namespace viz {
 
 // How an intermediate is best shown.
-enum class ViewKind { Color, Scalar, Signed, BitField, Mask, Depth, Mesh, Buffer };
+enum class ViewKind { Colour, Scalar, Signed, BitField, Mask, Depth, Mesh, Buffer };
 const char* viewKindName(ViewKind kind);
 
 // A plot a technique publishes with an intermediate (singular values, basis functions, per-plane values

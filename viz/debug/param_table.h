@@ -49,8 +49,9 @@ public:
         return info ? std::move(*this).add(field, *info) : std::move(*this);
     }
 
-    // A parameter the technique declares but shared code reads from the Settings (pickedPixel, the shared
-    // passes' shadow_map, substepLimit's sub-step parameter): listed, not stored.
+    // A parameter the technique declares but does not store here: the controls (pick, orbit, clock), which
+    // a run reads from FrameInput::controls, and names shared code reads from the Settings (the shared
+    // passes' shadow_map, substepLimit's sub-step parameter). Listed, so --set and lessons accept them.
     ParamTable declare(ParamInfo info) && {
         mInfos.push_back(std::move(info));
         mSetters.push_back(nullptr);

@@ -41,6 +41,22 @@ inline constexpr const char* kOrbitPitch = "mesh_pitch";
 inline constexpr const char* kOrbitZoom = "mesh_zoom";
 inline constexpr const char* kAnimationTime = "time";
 
+// Their values in a run request (FrameInput::controls), typed. A technique reads them only here; the names
+// above are how the edges spell them (--set pick_x=60, a lesson's mesh_yaw=120, a session file), and
+// takeControls moves them out of the settings into this. The defaults are the parameters' defaults.
+struct FrameControls {
+    int pickX = -1, pickY = -1;  // the picked pixel (column from the left, row from the top); -1: the centre
+    double orbitYaw = 35.0;      // orbit views' camera: degrees about the vertical,
+    double orbitPitch = 25.0;    // degrees above the horizon,
+    double orbitZoom = 1.0;      // and zoom (1 fits the scene and the camera)
+    double time = 0.0;           // seconds on the animation clock
+};
+
+// Moves the control names found in `settings` into the returned controls (the rest keep their defaults).
+FrameControls takeControls(Settings& settings);
+// The controls spelled as settings (every name), as the edges write them.
+Settings controlSettings(const FrameControls& controls);
+
 // The picked pixel a technique's per-pixel intermediates follow (the ray inspector's pixel): `axis` 'x'
 // gives pick_x (column, 0 = left), 'y' pick_y (row, 0 = top); -1 is the image centre. `what` names what the
 // technique shows for it.

@@ -17,6 +17,11 @@ void checkStageOrder(const std::vector<StageInfo>& stages, const std::string_vie
 StageRunner::StageRunner(const std::vector<StageInfo>& stages, const FrameInput& input, FrameOutput& out,
                          StageReuse& reuse, StageTimer& timer)
     : mStages(stages), mOut(out), mReuse(reuse), mTimer(timer) {
+    // The controls reach a run as FrameInput::controls only; a request built without setRunSettings or
+    // frameInput would leave them in the settings, where no technique reads them.
+    for (const auto& [name, value] : controlSettings({}))
+        VIZ_CHECK(!input.settings.contains(name), "FrameInput::settings holds the control '" + name +
+                                                      "': build the run request with setRunSettings or frameInput");
     const int last = int(stages.size()) - 1;
     mStop = input.stopAfterStage < 0 || input.stopAfterStage > last ? last : input.stopAfterStage;
     out.timing.clock = timer.name();

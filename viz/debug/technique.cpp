@@ -13,7 +13,7 @@ namespace viz {
 
 const char* viewKindName(ViewKind kind) {
     switch (kind) {
-        case ViewKind::Color: return "colour";
+        case ViewKind::Colour: return "colour";
         case ViewKind::Scalar: return "scalar";
         case ViewKind::Signed: return "signed";
         case ViewKind::BitField: return "bit field";
@@ -85,24 +85,86 @@ Settings completeSettings(const Technique& technique, const Settings& given) {
 ParamInfo pickParam(char axis, const std::string& what) {
     // 16384: twice the largest image `--size` accepts, as both techniques with a 16384 maximum had.
     const bool x = axis == 'x';
+    constexpr FrameControls kDefault{};
     return {x ? kPickX : kPickY,
             std::string(x ? "picked pixel's column (0 = left)" : "picked pixel's row (0 = top)") + ", whose " + what +
                 " the views show; -1: image centre",
-            -1, -1, 16384, true};
+            double(x ? kDefault.pickX : kDefault.pickY), -1, 16384, true};
 }
 
 std::vector<ParamInfo> orbitParams(const std::string& when) {
-    return {{kOrbitYaw, when + ": orbit camera's angle about the vertical (degrees)", 35, -360, 360, false},
-            {kOrbitPitch, when + ": orbit camera's angle above the horizon (degrees)", 25, -89, 89, false},
-            {kOrbitZoom, when + ": orbit camera's zoom (1 fits the scene and the camera)", 1, 0.05, 50, false}};
+    constexpr FrameControls kDefault{};
+    return {{kOrbitYaw, when + ": orbit camera's angle about the vertical (degrees)", kDefault.orbitYaw, -360, 360,
+             false},
+            {kOrbitPitch, when + ": orbit camera's angle above the horizon (degrees)", kDefault.orbitPitch, -89, 89,
+             false},
+            {kOrbitZoom, when + ": orbit camera's zoom (1 fits the scene and the camera)", kDefault.orbitZoom, 0.05, 50,
+             false}};
 }
 
 ParamInfo animationTimeParam(const std::string& what) {
-    return {kAnimationTime, "seconds: " + what, 0, 0, 1e6, false};
+    return {kAnimationTime, "seconds: " + what, FrameControls{}.time, 0, 1e6, false};
+}
+
+namespace {
+// Each control's name and field, in one list for both directions.
+template <class F>
+void forEachControl(FrameControls& c, F&& f) {
+    f(kPickX, [&](double v) { c.pickX = int(v); }, double(c.pickX));
+    f(kPickY, [&](double v) { c.pickY = int(v); }, double(c.pickY));
+    f(kOrbitYaw, [&](double v) { c.orbitYaw = v; }, c.orbitYaw);
+    f(kOrbitPitch, [&](double v) { c.orbitPitch = v; }, c.orbitPitch);
+    f(kOrbitZoom, [&](double v) { c.orbitZoom = v; }, c.orbitZoom);
+    f(kAnimationTime, [&](double v) { c.time = v; }, c.time);
+}
+}  // namespace
+
+FrameControls takeControls(Settings& settings) {
+    FrameControls c;
+    forEachControl(c, [&](const char* name, auto set, double) {
+        const auto it = settings.find(name);
+        if (it == settings.end()) return;
+        set(it->second);
+        settings.erase(it);
+    });
+    return c;
+}
+
+Settings controlSettings(const FrameControls& controls) {
+    FrameControls c = controls;
+    Settings s;
+    forEachControl(c, [&](const char* name, auto, double value) { s[name] = value; });
+    return s;
+}
+
+std::optional<StiffBound> boundOf(const std::map<std::string, StiffBound>& bounds, const std::string& caseClass) {
+    const auto it = bounds.find(caseClass);
+    return it == bounds.end() ? std::nullopt : std::optional<StiffBound>(it->second);
+}
+
+Plan planEveryStage(const std::vector<StageInfo>& stages) {
+    Plan p;
+    for (const StageInfo& s : stages) p.stages.push_back({s.id, true, ""});
+    return p;
+}
+
+void setRunSettings(FrameInput& input, Settings complete) {
+    input.controls = takeControls(complete);
+    input.settings = std::move(complete);
+}
+
+FrameInput frameInput(const scene::Scene* scene, int width, int height, Settings complete, int stopAfterStage) {
+    FrameInput input;
+    input.scene = scene;
+    input.width = width;
+    input.height = height;
+    setRunSettings(input, std::move(complete));
+    input.stopAfterStage = stopAfterStage;
+    return input;
 }
 
 glm::ivec2 pickedPixel(const FrameInput& input) {
-    int x = int(input.settings.at(kPickX)), y = int(input.settings.at(kPickY));
+    int x = input.controls.pickX, y = input.controls.pickY;
     if (x < 0) x = input.width / 2;
     if (y < 0) y = input.height / 2;
     return {std::min(x, input.width - 1), std::min(y, input.height - 1)};

@@ -57,6 +57,9 @@ struct StiffBound {
     std::string why;
 };
 
+// A technique's table of stiff bounds by case class, looked up: the bound, or none.
+std::optional<StiffBound> boundOf(const std::map<std::string, StiffBound>& bounds, const std::string& caseClass);
+
 // settings[name], or `fallback` where the settings do not hold it.
 inline double settingOr(const Settings& settings, const std::string& name, double fallback) {
     const auto it = settings.find(name);
@@ -74,7 +77,8 @@ struct FrameInput {
     const scene::Scene* scene = nullptr;
     int width = 0;
     int height = 0;
-    Settings settings;          // already validated and completed with defaults
+    Settings settings;          // already validated and completed with defaults, less the controls
+    FrameControls controls{};   // the picked pixel, orbit camera and clock (setRunSettings fills both)
     int stopAfterStage = -1;    // index into stages(); -1 = run everything
     // The stepping cursor's sub-step inside stage stopAfterStage: 1 .. the count substepValues() lists
     // for it (the last runs the stage whole); 0 runs the stage whole. It is not a setting: a stage's
@@ -95,6 +99,10 @@ struct FrameInput {
     // still. Read only by options whose noise changes from frame to frame (raymarch jitter_time=per-frame,
     // ivsv subsets=per-frame); every other output is a function of the scene and the settings alone.
     int frame = 0;
+    // Whether the caller reads FrameOutput::airlight and ::final (CPU images). A caller that uses the
+    // technique's textures alone (vsv's and ivsv's inner runs for each other's lights) asks for none and
+    // a GPU technique then saves two read-backs per frame; the intermediates are published either way.
+    bool readBack = true;
 };
 
 struct FrameOutput {
@@ -188,7 +196,17 @@ SubstepPosition substepPosition(const Technique& technique, int stage, const Set
 // the stage whole). Returns false (and changes nothing) when the stage has no sub-steps.
 bool setSubstep(const Technique& technique, int stage, Settings& settings, int k);
 
-// The pixel pick_x / pick_y (pickParam) name in the run's image: -1 is the centre, values past the edge
+// The start of every plan: each stage, in order, running (plan() then turns off what the scene does not
+// need, saying why).
+Plan planEveryStage(const std::vector<StageInfo>& stages);
+
+// Sets a run's settings from complete ones (completeSettings): the control names among them go to
+// input.controls, the rest to input.settings, so a technique meets the controls only as typed fields.
+void setRunSettings(FrameInput& input, Settings complete);
+// A run request for the whole pipeline (or up to stage stopAfterStage) with setRunSettings's split.
+FrameInput frameInput(const scene::Scene* scene, int width, int height, Settings complete, int stopAfterStage = -1);
+
+// The picked pixel (FrameInput::controls, pickParam) in the run's image: -1 is the centre, values past the edge
 // clamp to the last column or row.
 glm::ivec2 pickedPixel(const FrameInput& input);
 

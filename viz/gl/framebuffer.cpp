@@ -45,13 +45,13 @@ Framebuffer Framebuffer::create(std::string label) {
     f.mHandle = Handle<FramebufferTraits>(id);
     f.mLabel = std::move(label);
     setLabel(GL_FRAMEBUFFER, id, f.mLabel);
-    // A depth-only framebuffer draws no color; the list grows as color attachments are added.
+    // A depth-only framebuffer draws no colour; the list grows as colour attachments are added.
     glNamedFramebufferDrawBuffer(id, GL_NONE);
     glNamedFramebufferReadBuffer(id, GL_NONE);
     return f;
 }
 
-void Framebuffer::attachColor(int index, const Texture& texture, int level, int layer) {
+void Framebuffer::attachColour(int index, const Texture& texture, int level, int layer) {
     VIZ_CHECK(index >= 0 && index < 8, "color attachment index out of range for '" + mLabel + "'");
     const GLenum attachment = GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(index);
     if (layer < 0) {
@@ -59,10 +59,10 @@ void Framebuffer::attachColor(int index, const Texture& texture, int level, int 
     } else {
         glNamedFramebufferTextureLayer(id(), attachment, texture.id(), level, layer);
     }
-    mColorMask |= 1u << index;
+    mColourMask |= 1u << index;
     std::vector<GLenum> buffers;
     for (int i = 0; i < 8; ++i) {
-        buffers.push_back((mColorMask & (1u << i)) ? GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i)
+        buffers.push_back((mColourMask & (1u << i)) ? GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i)
                                                    : GL_NONE);
     }
     while (!buffers.empty() && buffers.back() == GL_NONE)

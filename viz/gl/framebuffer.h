@@ -1,5 +1,5 @@
 // gl::Framebuffer: a framebuffer object with texture attachments, DSA only, labelled. Attaching a
-// color texture also updates the draw-buffer list so every attached color index is written.
+// colour texture also updates the draw-buffer list so every attached colour index is written.
 #pragma once
 
 #include <epoxy/gl.h>
@@ -20,7 +20,7 @@ public:
 
     // layer < 0 attaches the whole level (layered rendering for arrays, cubes and 3D textures);
     // layer >= 0 attaches one layer / cube face / slice.
-    void attachColor(int index, const Texture& texture, int level = 0, int layer = -1);
+    void attachColour(int index, const Texture& texture, int level = 0, int layer = -1);
     // GL_DEPTH_ATTACHMENT, or GL_DEPTH_STENCIL_ATTACHMENT for depth-stencil formats.
     void attachDepth(const Texture& texture, int layer = -1);
     // Throws std::runtime_error naming the label and the status when incomplete (programmer error).
@@ -33,7 +33,7 @@ public:
 private:
     Handle<FramebufferTraits> mHandle;
     std::string mLabel;
-    unsigned mColorMask = 0;  // bit i set: GL_COLOR_ATTACHMENT0 + i is attached
+    unsigned mColourMask = 0;  // bit i set: GL_COLOR_ATTACHMENT0 + i is attached
 };
 
 }  // namespace viz::gl

@@ -144,7 +144,7 @@ Sampler Sampler::create(const SamplerDesc& desc) {
     glSamplerParameteri(id, GL_TEXTURE_WRAP_R, static_cast<GLint>(desc.wrap));
     glSamplerParameteri(id, GL_TEXTURE_COMPARE_MODE, static_cast<GLint>(desc.compareMode));
     glSamplerParameteri(id, GL_TEXTURE_COMPARE_FUNC, static_cast<GLint>(desc.compareFunc));
-    glSamplerParameterfv(id, GL_TEXTURE_BORDER_COLOR, &desc.borderColor.x);
+    glSamplerParameterfv(id, GL_TEXTURE_BORDER_COLOR, &desc.borderColour.x);
     setLabel(GL_SAMPLER, id, desc.label);
     return s;
 }

@@ -48,7 +48,7 @@ public:
                       const void* data, int level = 0);
     // Fills a level with one value (glClearTexImage). `value` matches pixelFormat/type.
     void clear(GLenum pixelFormat, GLenum type, const void* value, int level = 0);
-    // Fills a level with (r, g, b, a) for float/normalized color formats, or depth = value.x.
+    // Fills a level with (r, g, b, a) for float/normalized colour formats, or depth = value.x.
     void clear(glm::vec4 value, int level = 0);
     void generateMipmaps();
     // Filtering/wrap on the texture object itself (used when no Sampler is bound).
@@ -70,7 +70,7 @@ struct SamplerDesc {
     GLenum wrap = GL_CLAMP_TO_EDGE;  // S, T and R
     GLenum compareMode = GL_NONE;    // GL_COMPARE_REF_TO_TEXTURE for shadow samplers
     GLenum compareFunc = GL_LEQUAL;
-    glm::vec4 borderColor{0.0f};
+    glm::vec4 borderColour{0.0f};
     std::string label{};
 };
 

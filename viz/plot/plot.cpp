@@ -105,7 +105,7 @@ AxisTicks axisTicks(double lo, double hi, bool logarithmic, int target) {
     return t;
 }
 
-glm::vec4 categoricalColor(int i) {
+glm::vec4 categoricalColour(int i) {
     constexpr int n = int(ui::theme::kSeries.size());
     return ui::theme::kSeries[std::size_t(((i % n) + n) % n)];
 }
@@ -219,8 +219,8 @@ void drawPlot(ui::DrawList& list, const ui::Rect& area, const PlotSpec& spec) {
                 continue;
             }
             const glm::vec2 q{mx(p.x), my(p.y)};
-            if (s.lines && havePrevious) list.line(previous, q, 1.6f, s.color);
-            if (s.markers) list.rect({q - marker, q + marker}, s.color);
+            if (s.lines && havePrevious) list.line(previous, q, 1.6f, s.colour);
+            if (s.markers) list.rect({q - marker, q + marker}, s.colour);
             previous = q;
             havePrevious = true;
         }
@@ -238,7 +238,7 @@ void drawPlot(ui::DrawList& list, const ui::Rect& area, const PlotSpec& spec) {
         for (glm::dvec2 span : spec.bands[k].spans) {
             if (!usable(span.x, spec.logX) || !usable(span.y, spec.logX)) continue;
             const float x0 = std::max(frame.min.x, mx(span.x)), x1 = std::min(frame.max.x, mx(span.y));
-            if (x1 > x0) list.rect({{x0, y0}, {std::max(x1, x0 + 1.0f), y1}}, spec.bands[k].color);
+            if (x1 > x0) list.rect({{x0, y0}, {std::max(x1, x0 + 1.0f), y1}}, spec.bands[k].colour);
         }
     }
 
@@ -255,13 +255,13 @@ void drawPlot(ui::DrawList& list, const ui::Rect& area, const PlotSpec& spec) {
     for (const Series& s : spec.series) {
         if (s.name.empty()) continue;  // unnamed series (e.g. a line through another's points) stay out
         if (!fits()) break;
-        list.rect({{x, y + line * 0.3f}, {x + line, y + line * 0.7f}}, s.color);
+        list.rect({{x, y + line * 0.3f}, {x + line, y + line * 0.7f}}, s.colour);
         list.textClipped({x + line * 1.4f, y}, s.name, kInk, area.max.x - 2.0f);
         y += line;
     }
     for (const Band& b : spec.bands) {
         if (!fits()) break;
-        list.rect({{x, y + line * 0.4f}, {x + line, y + line * 0.6f}}, b.color);
+        list.rect({{x, y + line * 0.4f}, {x + line, y + line * 0.6f}}, b.colour);
         list.textClipped({x + line * 1.4f, y}, b.name, kInk, area.max.x - 2.0f);
         y += line;
     }
@@ -274,12 +274,12 @@ void drawPlot(ui::DrawList& list, const ui::Rect& area, const PlotSpec& spec) {
     if (entries > rows) list.textClipped({x, y}, "+" + std::to_string(entries - rows + 1) + " more", kInk, area.max.x - 2.0f);
 }
 
-float drawBarChart(ui::DrawList& list, const ui::Rect& area, const BarChart& chart, glm::vec4 textColor) {
+float drawBarChart(ui::DrawList& list, const ui::Rect& area, const BarChart& chart, glm::vec4 textColour) {
     const ui::FontAtlas& font = list.font();
     const float line = font.lineHeight();
     float y = area.min.y;
     if (!chart.title.empty()) {
-        list.textClipped({area.min.x, y}, chart.title, textColor, area.max.x);
+        list.textClipped({area.min.x, y}, chart.title, textColour, area.max.x);
         y += line;
     }
     double largest = chart.scaleMax;
@@ -295,10 +295,10 @@ float drawBarChart(ui::DrawList& list, const ui::Rect& area, const BarChart& cha
     const float barEnd = std::max(barStart, area.max.x - valueWidth - gap);
     for (const Bar& b : chart.bars) {
         if (y + line > area.max.y) break;
-        list.textClipped({area.min.x, y}, b.label, textColor, area.min.x + labelWidth);
+        list.textClipped({area.min.x, y}, b.label, textColour, area.min.x + labelWidth);
         const double f = largest > 0.0 && std::isfinite(b.value) ? std::clamp(b.value / largest, 0.0, 1.0) : 0.0;
-        list.rect({{barStart, y + line * 0.2f}, {barStart + float(f) * (barEnd - barStart), y + line * 0.8f}}, b.color);
-        list.text({barEnd + gap, y}, b.valueText, textColor);
+        list.rect({{barStart, y + line * 0.2f}, {barStart + float(f) * (barEnd - barStart), y + line * 0.8f}}, b.colour);
+        list.text({barEnd + gap, y}, b.valueText, textColour);
         y += line;
     }
     return y - area.min.y;

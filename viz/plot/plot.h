@@ -14,7 +14,7 @@ namespace viz::plot {
 
 struct Series {
     std::string name;                 // legend entry; empty: not listed
-    glm::vec4 color{0, 0, 0, 1};      // display colour
+    glm::vec4 colour{0, 0, 0, 1};      // display colour
     std::vector<glm::dvec2> points;   // drawn in the given order
     bool lines = true;                // join consecutive points
     bool markers = true;              // a square at each point
@@ -24,7 +24,7 @@ struct Series {
 // bottom of the frame, one strip per band, listed in the legend.
 struct Band {
     std::string name;
-    glm::vec4 color{0, 0, 0, 1};
+    glm::vec4 colour{0, 0, 0, 1};
     std::vector<glm::dvec2> spans;  // [x0, x1] in data units
 };
 
@@ -55,7 +55,7 @@ AxisTicks axisTicks(double lo, double hi, bool logarithmic, int target = 6);
 std::vector<bool> keptTickLabels(const std::vector<float>& centres, const std::vector<float>& extents, float gap);
 
 // A distinct colour for series i (a fixed categorical palette that cycles).
-glm::vec4 categoricalColor(int i);
+glm::vec4 categoricalColour(int i);
 
 // Draws the plot (background, frame, grid, ticks, labels, series, legend) inside `area`.
 void drawPlot(ui::DrawList& list, const ui::Rect& area, const PlotSpec& spec);
@@ -66,7 +66,7 @@ struct Bar {
     std::string label;
     double value = 0.0;
     std::string valueText;  // e.g. "12.3 ms"
-    glm::vec4 color{0.33f, 0.62f, 0.95f, 1.0f};
+    glm::vec4 colour{0.33f, 0.62f, 0.95f, 1.0f};
 };
 struct BarChart {
     std::string title;  // e.g. "stage times (glFinish+steady_clock)"
@@ -74,6 +74,6 @@ struct BarChart {
     double scaleMax = 0.0;
 };
 // Returns the height used (title + one row per bar), so callers can stack things below.
-float drawBarChart(ui::DrawList& list, const ui::Rect& area, const BarChart& chart, glm::vec4 textColor);
+float drawBarChart(ui::DrawList& list, const ui::Rect& area, const BarChart& chart, glm::vec4 textColour);
 
 }  // namespace viz::plot

@@ -22,7 +22,7 @@ void Composer::run(const gl::Texture& surfaceRadiance, const gl::Texture& distan
     VIZ_CHECK(glm::ivec2(surfaceRadiance.size()) == size && glm::ivec2(distance.size()) == size &&
                   glm::ivec2(airlight.size()) == size,
               "composeFinal: inputs and output must have the same size");
-    mFramebuffer.attachColor(0, out);
+    mFramebuffer.attachColour(0, out);
     mFramebuffer.checkComplete();
     mFramebuffer.bind();
     glViewport(0, 0, size.x, size.y);

@@ -105,7 +105,7 @@ GpuLights::GpuLights(const scene::Scene& scene, glm::dvec3 eye, int areaSamples)
         GpuLightCpu g{};
         g.position = glm::vec4(glm::vec3(light.position - eye), 1.0f);
         g.direction = glm::vec4(glm::vec3(glm::normalize(light.direction)), 0.0f);
-        g.radiant = glm::vec4(glm::vec3(light.color * light.intensity), 0.0f);
+        g.radiant = glm::vec4(glm::vec3(light.colour * light.intensity), 0.0f);
         g.spot = glm::vec4(0.0f);
         g.frameX = glm::vec4(1, 0, 0, 1);
         g.frameY = glm::vec4(0, 1, 0, 1);

@@ -76,7 +76,7 @@ std::vector<GpuMaterialCpu> buildMaterials(const scene::Scene& scene, const Text
     auto layer = [&](int texture) { return texture < 0 ? -1 : packing.layerOf.at(texture); };
     for (const auto& m : scene.materials) {
         GpuMaterialCpu g{};
-        g.baseColor = m.baseColorFactor;
+        g.baseColour = m.baseColorFactor;
         g.emissive = m.isEmissive() ? glm::vec4(m.emissiveFactor * m.emissiveStrength, 0.0f) : glm::vec4(0.0f);
         g.layers = glm::ivec4(layer(m.baseColorTexture), m.isEmissive() ? layer(m.emissiveTexture) : -1, 0, 0);
         g.layerSize = glm::vec4(layerSize(m.baseColorTexture), layerSize(m.emissiveTexture));
@@ -84,7 +84,7 @@ std::vector<GpuMaterialCpu> buildMaterials(const scene::Scene& scene, const Text
     }
     // The default material (white, not emissive) for meshes with material -1, always last.
     GpuMaterialCpu white{};
-    white.baseColor = glm::vec4(1.0f);
+    white.baseColour = glm::vec4(1.0f);
     white.layers = glm::ivec4(-1, -1, 0, 0);
     white.layerSize = glm::vec4(1.0f);
     out.push_back(white);

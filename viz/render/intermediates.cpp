@@ -38,4 +38,8 @@ std::size_t geometryFingerprint(const scene::Scene& scene) {
     return std::size_t(scene::geometryContentHash(scene));
 }
 
+void readBackAirlight(const FrameInput& input, const gl::Texture& airlight, FrameOutput& out) {
+    if (input.readBack) out.airlight = readRgb(airlight);
+}
+
 }  // namespace viz::render

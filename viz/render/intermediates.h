@@ -18,6 +18,8 @@ Intermediate textureIntermediate(const std::string& id, const std::string& label
 
 // Reads an RGBA float texture back as an RGB image (row 0 at the top): technique outputs are RGB.
 Image readRgb(const gl::Texture& texture);
+// L_air read back into out.airlight, unless the run's caller reads no CPU images (FrameInput::readBack).
+void readBackAirlight(const FrameInput& input, const gl::Texture& airlight, FrameOutput& out);
 
 bool hasLightOfType(const scene::Scene& scene, scene::LightType type);
 

@@ -85,13 +85,13 @@ std::vector<glm::vec3> lightMarkerLines(const scene::Scene& scene, glm::dvec3 ce
 
 void MeshView::begin(const scene::Scene& scene, const GpuScene& gpuScene, const OrbitView& orbit, int width,
                      int height) {
-    if (!mColor || mSize != glm::ivec2(width, height)) {
-        mColor = gl::Texture::create({.target = GL_TEXTURE_2D, .format = GL_RGBA8, .size = {width, height, 1},
-                                      .levels = 1, .label = "mesh_view.color"});
+    if (!mColour || mSize != glm::ivec2(width, height)) {
+        mColour = gl::Texture::create({.target = GL_TEXTURE_2D, .format = GL_RGBA8, .size = {width, height, 1},
+                                      .levels = 1, .label = "mesh_view.colour"});
         mDepth = gl::Texture::create({.target = GL_TEXTURE_2D, .format = GL_DEPTH_COMPONENT32F,
                                       .size = {width, height, 1}, .levels = 1, .label = "mesh_view.depth"});
         mFramebuffer = gl::Framebuffer::create("mesh_view.fbo");
-        mFramebuffer.attachColor(0, mColor);
+        mFramebuffer.attachColour(0, mColour);
         mFramebuffer.attachDepth(mDepth);
         mFramebuffer.checkComplete();
         mSize = {width, height};
@@ -118,7 +118,7 @@ void MeshView::begin(const scene::Scene& scene, const GpuScene& gpuScene, const 
     mSurfaces.use();
     mSurfaces.set("uModel", mModel);
     mSurfaces.set("uViewProj", mViewProj);
-    mSurfaces.set("uColor", glm::vec4(0.32f, 0.32f, 0.35f, 1.0f));
+    mSurfaces.set("uColour", glm::vec4(0.32f, 0.32f, 0.35f, 1.0f));
     mSurfaces.set("uShade", 1);
     gpuScene.draw();
     // Markers on top of the surfaces where they are hidden: drawn without depth test by lines().
@@ -134,7 +134,7 @@ void MeshView::bindTarget() const {
     glViewport(0, 0, mSize.x, mSize.y);
 }
 
-void MeshView::lines(const std::vector<glm::vec3>& segments, glm::vec4 color) {
+void MeshView::lines(const std::vector<glm::vec3>& segments, glm::vec4 colour) {
     if (segments.empty()) return;
     const std::size_t bytes = segments.size() * sizeof(glm::vec3);
     if (bytes > mLineCapacity) {
@@ -148,7 +148,7 @@ void MeshView::lines(const std::vector<glm::vec3>& segments, glm::vec4 color) {
     glDisable(GL_DEPTH_TEST);
     mLines.use();
     mLines.set("uViewProj", mViewProj);
-    mLines.set("uColor", color);
+    mLines.set("uColour", colour);
     mLines.set("uShade", 0);
     mLineArray.bind();
     glDrawArrays(GL_LINES, 0, GLsizei(segments.size()));

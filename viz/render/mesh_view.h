@@ -12,6 +12,7 @@
 #include "gl/framebuffer.h"
 #include "gl/program.h"
 #include "gl/texture.h"
+#include "debug/params.h"
 #include "gl/buffer.h"
 #include "gl/vertex_array.h"
 #include "render/gpu_scene.h"
@@ -26,6 +27,8 @@ struct OrbitView {
     double pitchDegrees = 25.0;
     double zoom = 1.0;
 };
+// The run request's orbit camera (FrameControls::orbitYaw, orbitPitch, orbitZoom).
+inline OrbitView orbitOf(const FrameControls& c) { return {c.orbitYaw, c.orbitPitch, c.orbitZoom}; }
 
 // The orbit camera's view-projection for a width x height image, taking the main camera's eye-relative
 // space to clip space. The orbit target is the centre of the box holding the scene's bounds and the
@@ -46,13 +49,13 @@ std::vector<glm::vec3> lightMarkerLines(const scene::Scene& scene, glm::dvec3 ce
 class MeshView {
 public:
     void begin(const scene::Scene& scene, const GpuScene& gpuScene, const OrbitView& orbit, int width, int height);
-    void lines(const std::vector<glm::vec3>& segments, glm::vec4 color);
+    void lines(const std::vector<glm::vec3>& segments, glm::vec4 colour);
     const glm::mat4& viewProj() const { return mViewProj; }
-    const gl::Texture& texture() const { return mColor; }
+    const gl::Texture& texture() const { return mColour; }
     void bindTarget() const;
 
 private:
-    gl::Texture mColor, mDepth;
+    gl::Texture mColour, mDepth;
     gl::Framebuffer mFramebuffer;
     gl::Program mSurfaces, mLines;
     gl::Buffer mLineBuffer;

@@ -82,7 +82,7 @@ void SceneViewPasses::renderSurface(const scene::Scene& scene, int width, int he
                                       mSurface->distance()));
     out.push_back(textureIntermediate(prefix + ".surface", "Surface radiance",
                                       "emission + Lambert with shadow maps, before the medium's attenuation",
-                                      "radiance", ViewKind::Color, 0.0f, 1.0f, mSurface->surfaceRadiance()));
+                                      "radiance", ViewKind::Colour, 0.0f, 1.0f, mSurface->surfaceRadiance()));
 }
 
 void SceneViewPasses::compose(const scene::Scene& scene, const gl::Texture& airlight,
@@ -92,7 +92,7 @@ void SceneViewPasses::compose(const scene::Scene& scene, const gl::Texture& airl
         mFinal = gl::Texture::create({.target = GL_TEXTURE_2D, .format = GL_RGBA32F, .size = size, .label = prefix + ".final"});
     mComposer->run(mSurface->surfaceRadiance(), mSurface->distance(), airlight, scene.medium, mFinal);
     out.push_back(textureIntermediate(prefix + ".final", "Final", "surface * exp(-sigma_t d) + L_air", "radiance",
-                                      ViewKind::Color, 0.0f, 1.0f, mFinal));
+                                      ViewKind::Colour, 0.0f, 1.0f, mFinal));
 }
 
 Image SceneViewPasses::readFinal() const { return readRgb(mFinal); }
@@ -108,6 +108,14 @@ bool SceneViewPasses::runSharedStages(StageRunner& stages, const FrameInput& inp
     mFrameSize = {input.width, input.height};
     return more &&
            stages.run(1, [&] { renderSurface(*input.scene, input.width, input.height, out.intermediates, prefix); });
+}
+
+void SceneViewPasses::runCompose(StageRunner& stages, int stage, const FrameInput& input,
+                                 const gl::Texture& airlight, FrameOutput& out, const std::string& prefix) {
+    stages.run(stage, [&] { compose(*input.scene, airlight, out.intermediates, prefix); },
+               [&] {
+                   if (input.readBack) out.final = readFinal();
+               });
 }
 
 bool SceneViewPasses::pixelRay(glm::ivec2 pixel, glm::dvec3& w, double& tEnd) const {

@@ -57,6 +57,11 @@ public:
     // stops after one of them.
     bool runSharedStages(StageRunner& stages, const FrameInput& input, const std::string& prefix, FrameOutput& out,
                          const std::function<void()>& publishShadows = {});
+    // The compose stage every GPU technique ends with, at stage index `stage`: compose (timed) and the
+    // final image read back into out.final (not timed; not at all for a caller that reads no CPU images,
+    // FrameInput::readBack).
+    void runCompose(StageRunner& stages, int stage, const FrameInput& input, const gl::Texture& airlight,
+                    FrameOutput& out, const std::string& prefix);
 
     // ---- linked cursors (the window's marks for a hovered frame pixel; render/shadow_map_markers.h) ----
     // The eye ray of frame pixel `pixel` (row 0 at the top) of the last run: unit direction w (world axes;

@@ -76,7 +76,7 @@ void ShadowMaps::build(const GpuScene& scene, const GpuLights& lights, int size,
 
     auto renderLayer = [&](const gl::Texture& target, const gl::Texture& depth, int layer, int texels,
                            int lightIndex, const glm::mat4& viewProj) {
-        mFramebuffer.attachColor(0, target, 0, layer);
+        mFramebuffer.attachColour(0, target, 0, layer);
         mFramebuffer.attachDepth(depth, 0);
         mFramebuffer.checkComplete();
         mFramebuffer.bind();

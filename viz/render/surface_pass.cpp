@@ -21,8 +21,8 @@ void SurfacePass::run(const GpuScene& gpuScene, const GpuLights& lights, const S
             {.format = GL_DEPTH_COMPONENT32F, .size = {width, height, 1}, .label = "render.depth"});
         for (auto* t : {&mDistance, &mRadiance}) t->setFilter(GL_NEAREST, GL_NEAREST);
         mFramebuffer = gl::Framebuffer::create("render.surface_fbo");
-        mFramebuffer.attachColor(0, mDistance);
-        mFramebuffer.attachColor(1, mRadiance);
+        mFramebuffer.attachColour(0, mDistance);
+        mFramebuffer.attachColour(1, mRadiance);
         mFramebuffer.attachDepth(mDepth);
         mFramebuffer.checkComplete();
         mWidth = width;

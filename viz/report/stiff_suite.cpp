@@ -47,7 +47,7 @@ StiffOutcome runStiffCase(Technique& technique, const scene::StiffCase& c, const
         in.scene = &scene;
         in.width = c.width;
         in.height = c.height;
-        in.settings = completeSettings(technique, technique.stiffSettings());
+        setRunSettings(in, completeSettings(technique, technique.stiffSettings()));
         out = technique.run(in);
     } catch (const InputError& e) {
         o.refusal = e.what();

@@ -44,7 +44,7 @@ int addMaterial(Scene& scene, const std::string& name, glm::vec3 albedo, int tex
 
 void addMesh(Scene& scene, MeshBuilder& builder) { scene.meshes.push_back(builder.take()); }
 
-Light spotLight(const std::string& name, glm::dvec3 position, glm::dvec3 target, double intensity, glm::dvec3 color,
+Light spotLight(const std::string& name, glm::dvec3 position, glm::dvec3 target, double intensity, glm::dvec3 colour,
                 double inner, double outer) {
     Light l;
     l.name = name;
@@ -52,19 +52,19 @@ Light spotLight(const std::string& name, glm::dvec3 position, glm::dvec3 target,
     l.position = position;
     l.direction = unit(target - position);
     l.intensity = intensity;
-    l.color = color;
+    l.colour = colour;
     l.innerConeAngle = inner;
     l.outerConeAngle = outer;
     return l;
 }
 
-Light sunLight(const std::string& name, glm::dvec3 travel, double lux, glm::dvec3 color) {
+Light sunLight(const std::string& name, glm::dvec3 travel, double lux, glm::dvec3 colour) {
     Light l;
     l.name = name;
     l.type = LightType::Directional;
     l.direction = unit(travel);
     l.intensity = lux;
-    l.color = color;
+    l.colour = colour;
     return l;
 }
 

@@ -41,7 +41,7 @@ Light defaultSpotLight(const Scene& scene) {
     l.direction = toCentre / distance;
     l.outerConeAngle = std::clamp(std::atan(1.4 * radius / distance), 0.2, 1.2);
     l.innerConeAngle = 0.75 * l.outerConeAngle;
-    l.color = glm::dvec3(1.0, 0.95, 0.85);
+    l.colour = glm::dvec3(1.0, 0.95, 0.85);
     l.intensity = 10.0 * distance * distance;
     return l;
 }

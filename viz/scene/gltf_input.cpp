@@ -11,6 +11,7 @@
 #include <tiny_gltf.h>
 
 #include "core/error.h"
+#include "core/text.h"
 #include "core/json_check.h"
 #include "scene/gltf_loader.h"
 
@@ -216,9 +217,8 @@ std::string glbJson(const std::vector<unsigned char>& bytes, const std::string& 
 }
 
 // tinygltf's messages, one line each, shortened; data URIs and long values never echoed whole.
-std::string firstLine(const std::string& s) {
-    std::string line = s.substr(0, s.find('\n'));
-    while (!line.empty() && (line.back() == '\r' || line.back() == ' ')) line.pop_back();
+std::string messageLine(const std::string& s) {
+    const std::string line = firstLine(s);
     return line.size() > 200 ? line.substr(0, 120) + "..." : line;
 }
 
@@ -295,10 +295,10 @@ void parseModel(const std::vector<unsigned char>& bytes, const std::string& file
     } catch (const std::length_error&) {
         throw InputError(prefix + "too large to load (a count or size beyond what memory can hold)");
     } catch (const std::exception& e) {
-        throw InputError(prefix + "could not be parsed (" + firstLine(e.what()) + ")");
+        throw InputError(prefix + "could not be parsed (" + messageLine(e.what()) + ")");
     }
     if (!ok) {
-        std::string why = firstLine(err.empty() ? warn : err);
+        std::string why = messageLine(err.empty() ? warn : err);
         if (why.empty()) why = "tinygltf refused the document";
         if (why.find("size mismatch") != std::string::npos || why.find("Failed to load external") != std::string::npos ||
             why.find("File not found") != std::string::npos || why.find("decode") != std::string::npos ||

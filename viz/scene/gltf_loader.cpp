@@ -449,17 +449,17 @@ private:
         }
         light.position = glm::dvec3(world[3]);
         light.direction = unitOrSelf(-glm::dvec3(world[2]));
-        if (gl.color.size() == 3) light.color = glm::dvec3(gl.color[0], gl.color[1], gl.color[2]);
+        if (gl.color.size() == 3) light.colour = glm::dvec3(gl.color[0], gl.color[1], gl.color[2]);
         light.intensity = gl.intensity;
         for (int c = 0; c < 3; ++c) {
-            if (!finite(light.color[c]) || light.color[c] < 0.0) {
-                mRead.fail(who + " color[" + std::to_string(c) + "] = " + number(light.color[c]) + " must be finite and >= 0");
+            if (!finite(light.colour[c]) || light.colour[c] < 0.0) {
+                mRead.fail(who + " color[" + std::to_string(c) + "] = " + number(light.colour[c]) + " must be finite and >= 0");
             }
         }
         if (!finite(light.intensity) || light.intensity < 0.0) {
             mRead.fail(who + " intensity " + number(light.intensity) + " must be finite and >= 0");
         }
-        const double peak = light.intensity * std::max({light.color.x, light.color.y, light.color.z});
+        const double peak = light.intensity * std::max({light.colour.x, light.colour.y, light.colour.z});
         if (peak > LoadLimits::kMaxRadiance) {
             mRead.fail(who + " intensity x colour = " + number(peak) + " is over the limit of 1e20 (GPU floats overflow)");
         }

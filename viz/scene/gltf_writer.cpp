@@ -205,7 +205,7 @@ private:
     int writeLight(const Light& light) {
         tinygltf::Light gl;
         gl.name = light.name;
-        gl.color = {light.color.x, light.color.y, light.color.z};
+        gl.color = {light.colour.x, light.colour.y, light.colour.z};
         gl.intensity = light.intensity;
         switch (light.type) {
             case LightType::Point: gl.type = "point"; break;

@@ -48,7 +48,7 @@ struct Light {
     glm::dvec3 position{0.0};        // point, spot; area: centre of the rectangle
     glm::dvec3 direction{0, 0, -1};  // unit; spot/directional: direction the light travels (node -Z);
                                      // area: the emitter's normal (it emits into this half-space)
-    glm::dvec3 color{1.0};           // linear
+    glm::dvec3 colour{1.0};           // linear
     double intensity = 1.0;          // KHR_lights_punctual: candela (point/spot), lux (directional)
     double innerConeAngle = 0.0;     // spot, radians
     double outerConeAngle = 0.7853981633974483;  // spot, radians

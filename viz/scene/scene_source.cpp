@@ -132,7 +132,7 @@ std::string sceneContentHash(const Scene& scene) {
         h.value(int(l.type));
         h.value(l.position);
         h.value(l.direction);
-        h.value(l.color);
+        h.value(l.colour);
         h.value(l.intensity);
         h.value(l.innerConeAngle);
         h.value(l.outerConeAngle);

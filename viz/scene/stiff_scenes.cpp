@@ -36,7 +36,7 @@ void pointLightAt(Scene& scene, glm::dvec3 position, double intensity) {
     l.type = LightType::Point;
     l.position = position;
     l.intensity = intensity;
-    l.color = {1.0, 0.95, 0.9};
+    l.colour = {1.0, 0.95, 0.9};
     scene.lights = {l};
 }
 

@@ -126,7 +126,7 @@ void validateScene(const Scene& scene) {
     for (std::size_t l = 0; l < scene.lights.size(); ++l) {
         const Light& light = scene.lights[l];
         const std::string who = where + lightLabel(light, l);
-        if (!finite3(light.position) || !finite3(light.direction) || !finite3(light.color) ||
+        if (!finite3(light.position) || !finite3(light.direction) || !finite3(light.colour) ||
             !std::isfinite(light.intensity) || !finite3(light.halfU) || !finite3(light.halfV) ||
             !finite3(light.radiance)) {
             throw InputError(who + " has a NaN or Inf value");
@@ -134,11 +134,11 @@ void validateScene(const Scene& scene) {
         if (std::abs(glm::length(light.direction) - 1.0) > 1e-6) {
             throw InputError(who + ": direction is not a unit vector");
         }
-        if (light.intensity < 0.0 || light.color.x < 0.0 || light.color.y < 0.0 || light.color.z < 0.0) {
+        if (light.intensity < 0.0 || light.colour.x < 0.0 || light.colour.y < 0.0 || light.colour.z < 0.0) {
             throw InputError(who + ": negative intensity or colour");
         }
         if (!placeable(light.position)) throw InputError(who + ": position lies beyond 1e15 from the origin");
-        const double peak = light.intensity * std::max({light.color.x, light.color.y, light.color.z});
+        const double peak = light.intensity * std::max({light.colour.x, light.colour.y, light.colour.z});
         if (peak > LoadLimits::kMaxRadiance) {
             throw InputError(who + ": intensity x colour = " + num(peak) + " is over the limit of 1e20 (GPU floats overflow)");
         }

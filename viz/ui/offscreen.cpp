@@ -12,7 +12,7 @@ Image renderOffscreen(const DrawList& list, glm::ivec2 size, glm::vec4 backgroun
     const gl::Texture target = gl::Texture::create(
         {.target = GL_TEXTURE_2D, .format = GL_RGBA8, .size = {size.x, size.y, 1}, .levels = 1, .label = "ui.offscreen"});
     gl::Framebuffer framebuffer = gl::Framebuffer::create("ui.offscreen");
-    framebuffer.attachColor(0, target);
+    framebuffer.attachColour(0, target);
     framebuffer.checkComplete();
     framebuffer.bind();
     glClearNamedFramebufferfv(framebuffer.id(), GL_COLOR, 0, &background.r);

@@ -6,7 +6,7 @@
 
 namespace viz::ui {
 
-std::uint32_t packColor(glm::vec4 rgba) {
+std::uint32_t packColour(glm::vec4 rgba) {
     const glm::uvec4 c = glm::uvec4(glm::clamp(rgba, 0.0f, 1.0f) * 255.0f + 0.5f);
     // Little-endian memory order r, g, b, a matches a 4 x GL_UNSIGNED_BYTE attribute.
     return c.r | (c.g << 8) | (c.b << 16) | (c.a << 24);
@@ -31,7 +31,7 @@ void DrawList::append(const DrawList& other) {
     mVertices.insert(mVertices.end(), other.mVertices.begin(), other.mVertices.end());
 }
 
-void DrawList::quad(glm::vec2 p0, glm::vec2 p1, glm::vec2 uv0, glm::vec2 uv1, std::uint32_t color) {
+void DrawList::quad(glm::vec2 p0, glm::vec2 p1, glm::vec2 uv0, glm::vec2 uv1, std::uint32_t colour) {
     if (!mClips.empty()) {
         // Cut the quad to the clip rectangle, moving the uvs in proportion.
         const Rect& c = mClips.back();
@@ -43,49 +43,49 @@ void DrawList::quad(glm::vec2 p0, glm::vec2 p1, glm::vec2 uv0, glm::vec2 uv1, st
         const glm::vec2 w0 = uv0 + (uv1 - uv0) * t0, w1 = uv0 + (uv1 - uv0) * t1;
         p0 = q0, p1 = q1, uv0 = w0, uv1 = w1;
     }
-    const UiVertex a{p0, uv0, color};
-    const UiVertex b{{p1.x, p0.y}, {uv1.x, uv0.y}, color};
-    const UiVertex c{p1, uv1, color};
-    const UiVertex d{{p0.x, p1.y}, {uv0.x, uv1.y}, color};
+    const UiVertex a{p0, uv0, colour};
+    const UiVertex b{{p1.x, p0.y}, {uv1.x, uv0.y}, colour};
+    const UiVertex c{p1, uv1, colour};
+    const UiVertex d{{p0.x, p1.y}, {uv0.x, uv1.y}, colour};
     mVertices.insert(mVertices.end(), {a, b, c, a, c, d});
 }
 
-void DrawList::rect(const Rect& r, glm::vec4 color) {
+void DrawList::rect(const Rect& r, glm::vec4 colour) {
     const glm::vec2 uv = mFont->whiteUv();
-    quad(r.min, r.max, uv, uv, packColor(color));
+    quad(r.min, r.max, uv, uv, packColour(colour));
 }
 
-void DrawList::quadrilateral(glm::vec2 a, glm::vec2 b, glm::vec2 c, glm::vec2 d, glm::vec4 color) {
+void DrawList::quadrilateral(glm::vec2 a, glm::vec2 b, glm::vec2 c, glm::vec2 d, glm::vec4 colour) {
     if (!mClips.empty()) {
         const Rect& clip = mClips.back();
         const glm::vec2 lo = glm::min(glm::min(a, b), glm::min(c, d)), hi = glm::max(glm::max(a, b), glm::max(c, d));
         if (hi.x <= clip.min.x || hi.y <= clip.min.y || lo.x >= clip.max.x || lo.y >= clip.max.y) return;
     }
     const glm::vec2 uv = mFont->whiteUv();
-    const std::uint32_t packed = packColor(color);
+    const std::uint32_t packed = packColour(colour);
     const UiVertex va{a, uv, packed}, vb{b, uv, packed}, vc{c, uv, packed}, vd{d, uv, packed};
     mVertices.insert(mVertices.end(), {va, vb, vc, va, vc, vd});
 }
 
-void DrawList::line(glm::vec2 from, glm::vec2 to, float width, glm::vec4 color) {
+void DrawList::line(glm::vec2 from, glm::vec2 to, float width, glm::vec4 colour) {
     const glm::vec2 along = to - from;
     const float length = glm::length(along);
     if (!(length > 0.0f)) return;
     const glm::vec2 side = glm::vec2(-along.y, along.x) * (0.5f * width / length);
-    quadrilateral(from - side, to - side, to + side, from + side, color);
+    quadrilateral(from - side, to - side, to + side, from + side, colour);
 }
 
-float DrawList::text(glm::vec2 topLeft, std::string_view utf8, glm::vec4 color) {
+float DrawList::text(glm::vec2 topLeft, std::string_view utf8, glm::vec4 colour) {
     mScratch.clear();
     const float end = mFont->layout(utf8, {topLeft.x, topLeft.y + mFont->ascent()}, mScratch);
-    const std::uint32_t c = packColor(color);
+    const std::uint32_t c = packColour(colour);
     for (const GlyphQuad& g : mScratch) quad(g.p0, g.p1, g.uv0, g.uv1, c);
     return end;
 }
 
-float DrawList::textClipped(glm::vec2 topLeft, std::string_view utf8, glm::vec4 color, float maxX) {
+float DrawList::textClipped(glm::vec2 topLeft, std::string_view utf8, glm::vec4 colour, float maxX) {
     const float available = maxX - topLeft.x;
-    if (mFont->measure(utf8) <= available) return text(topLeft, utf8, color);
+    if (mFont->measure(utf8) <= available) return text(topLeft, utf8, colour);
     const float ellipsis = mFont->measure("...");
     // Keep whole code points: walk the UTF-8 string and stop before the one that would not fit.
     float width = 0.0f;
@@ -97,7 +97,7 @@ float DrawList::textClipped(glm::vec2 topLeft, std::string_view utf8, glm::vec4 
     }
     std::string shortened(utf8.substr(0, cut));
     shortened += "...";
-    return text(topLeft, shortened, color);
+    return text(topLeft, shortened, colour);
 }
 
 // ---- TextRenderer (GL) ----
@@ -131,7 +131,7 @@ void TextRenderer::draw(const DrawList& list, glm::ivec2 framebufferSize) {
         mVertexArray.vertexBuffer(0, mVertices, 0, sizeof(UiVertex));
         mVertexArray.attribute(0, 0, 2, GL_FLOAT, offsetof(UiVertex, position));
         mVertexArray.attribute(1, 0, 2, GL_FLOAT, offsetof(UiVertex, uv));
-        mVertexArray.attribute(2, 0, 4, GL_UNSIGNED_BYTE, offsetof(UiVertex, color), true);
+        mVertexArray.attribute(2, 0, 4, GL_UNSIGNED_BYTE, offsetof(UiVertex, colour), true);
     }
     mVertices.upload(0, bytes, vertices.data());
 

@@ -24,12 +24,12 @@ struct Rect {
 };
 
 // 8-bit RGBA, packed in memory order r, g, b, a (what the vertex attribute reads).
-std::uint32_t packColor(glm::vec4 rgba);
+std::uint32_t packColour(glm::vec4 rgba);
 
 struct UiVertex {
     glm::vec2 position;  // framebuffer pixels
     glm::vec2 uv;        // atlas uv
-    std::uint32_t color;
+    std::uint32_t colour;
 };
 
 class DrawList {
@@ -46,22 +46,22 @@ public:
     void popClip();
     // Appends another list's vertices (drawn after this list's, e.g. popups over widgets).
     void append(const DrawList& other);
-    void rect(const Rect& r, glm::vec4 color);
+    void rect(const Rect& r, glm::vec4 colour);
     // Any convex quadrilateral, corners in order (solid colour).
-    void quadrilateral(glm::vec2 a, glm::vec2 b, glm::vec2 c, glm::vec2 d, glm::vec4 color);
+    void quadrilateral(glm::vec2 a, glm::vec2 b, glm::vec2 c, glm::vec2 d, glm::vec4 colour);
     // A straight segment `width` pixels wide (a quad along it; no end caps).
-    void line(glm::vec2 from, glm::vec2 to, float width, glm::vec4 color);
+    void line(glm::vec2 from, glm::vec2 to, float width, glm::vec4 colour);
     // Draws one line with its top-left corner at `topLeft` (the baseline sits ascent() below it);
     // returns the x just after the last glyph.
-    float text(glm::vec2 topLeft, std::string_view utf8, glm::vec4 color);
+    float text(glm::vec2 topLeft, std::string_view utf8, glm::vec4 colour);
     // As text(), but cuts the string (adding "...") so that it ends before maxX.
-    float textClipped(glm::vec2 topLeft, std::string_view utf8, glm::vec4 color, float maxX);
+    float textClipped(glm::vec2 topLeft, std::string_view utf8, glm::vec4 colour, float maxX);
 
     const FontAtlas& font() const { return *mFont; }
     const std::vector<UiVertex>& vertices() const { return mVertices; }
 
 private:
-    void quad(glm::vec2 p0, glm::vec2 p1, glm::vec2 uv0, glm::vec2 uv1, std::uint32_t color);
+    void quad(glm::vec2 p0, glm::vec2 p1, glm::vec2 uv0, glm::vec2 uv1, std::uint32_t colour);
 
     const FontAtlas* mFont;
     std::vector<UiVertex> mVertices;  // six per quad (two triangles)

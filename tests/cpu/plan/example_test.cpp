@@ -28,7 +28,7 @@ scene::Scene openSky() {
     sun.name = "sun";
     sun.type = scene::LightType::Directional;
     sun.direction = glm::normalize(glm::dvec3(0.3, -0.4, 1.0));  // towards the camera: forward scattering
-    sun.color = {1.0, 0.8, 0.6};
+    sun.colour = {1.0, 0.8, 0.6};
     sun.intensity = 3.0;
     s.lights.push_back(sun);
     scene::Light lamp;  // the example shades suns only, and its plan says so
@@ -54,7 +54,7 @@ FrameOutput runExample(Technique& t, const scene::Scene& scene, const Settings& 
     in.scene = &scene;
     in.width = 24;
     in.height = 16;
-    in.settings = completeSettings(t, given);
+    setRunSettings(in, completeSettings(t, given));
     in.stopAfterStage = stop;
     return t.run(in);
 }
@@ -81,7 +81,7 @@ TEST_F(ExampleTechniqueTest, ItsAirlightIsTheClosedFormOfEachSun) {
         for (int x = 0; x < 24; ++x) {
             const glm::dvec3 w = scene::pixelRay(scene.camera, 24, 16, x, y);
             for (int c = 0; c < 3; ++c) {
-                const double want = expected(scene, w, scene.lights[0].intensity * scene.lights[0].color[c]);
+                const double want = expected(scene, w, scene.lights[0].intensity * scene.lights[0].colour[c]);
                 worst = std::max(worst, std::abs(double(out.airlight.at(x, y, c)) - want) / want);
             }
         }
@@ -120,7 +120,7 @@ TEST_F(ExampleTechniqueTest, ItStepsStageByStageAndResumesAfterItsFirstStage) {
     in.scene = &scene;
     in.width = 24;
     in.height = 16;
-    in.settings = completeSettings(*t, {{"integration", 1.0}});
+    setRunSettings(in, completeSettings(*t, {{"integration", 1.0}}));
     in.resumeAtStage = 1;  // only the airlight's parameters changed
     const FrameOutput resumed = t->run(in);
     EXPECT_EQ(resumed.firstStageRun, 1) << "the lengths stage keeps its outputs";

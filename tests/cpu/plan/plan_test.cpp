@@ -123,15 +123,51 @@ TEST(Params, EveryTechniqueWithAPickedPixelDeclaresTheSameRange) {
     for (const auto& r : ranges) EXPECT_EQ(r, ranges.front());
 }
 
+// The controls reach a run as typed fields, never as settings: setRunSettings moves every control name a
+// user can write (--set, a lesson) out of the settings and into FrameInput::controls, and the defaults
+// there are the declared parameters' defaults.
+TEST(Params, ControlsLeaveTheSettingsForTypedFields) {
+    for (const std::string& id : techniqueIds()) {
+        const auto t = makeTechnique(id);
+        const Controls c = t->controls();
+        Settings given;
+        if (c.pickedPixel) given = {{kPickX, 60}, {kPickY, 7}};
+        if (c.orbitCamera) given.insert({{kOrbitYaw, 120}, {kOrbitPitch, -10}, {kOrbitZoom, 2.5}});
+        if (c.animationTime) given[kAnimationTime] = 3.25;
+        FrameInput in;
+        setRunSettings(in, completeSettings(*t, given));
+        for (const char* name : {kPickX, kPickY, kOrbitYaw, kOrbitPitch, kOrbitZoom, kAnimationTime})
+            EXPECT_EQ(in.settings.count(name), 0u) << id << " " << name;
+        EXPECT_EQ(in.controls.pickX, c.pickedPixel ? 60 : -1) << id;
+        EXPECT_EQ(in.controls.pickY, c.pickedPixel ? 7 : -1) << id;
+        EXPECT_EQ(in.controls.orbitYaw, c.orbitCamera ? 120.0 : 35.0) << id;
+        EXPECT_EQ(in.controls.orbitPitch, c.orbitCamera ? -10.0 : 25.0) << id;
+        EXPECT_EQ(in.controls.orbitZoom, c.orbitCamera ? 2.5 : 1.0) << id;
+        EXPECT_EQ(in.controls.time, c.animationTime ? 3.25 : 0.0) << id;
+        // Every other complete setting is still there.
+        std::size_t named = 0;
+        for (const auto& [name, value] : controlSettings({})) named += findParam(*t, name) != nullptr;
+        EXPECT_EQ(in.settings.size() + named, completeSettings(*t, {}).size()) << id;
+    }
+    // The defaults a run gets without any control named are the declared ones.
+    const FrameControls none;
+    for (const ParamInfo& p : orbitParams(""))
+        EXPECT_EQ(controlSettings(none).at(p.name), p.defaultValue) << p.name;
+    EXPECT_EQ(controlSettings(none).at(kPickX), pickParam('x', "").defaultValue);
+    EXPECT_EQ(controlSettings(none).at(kAnimationTime), animationTimeParam("").defaultValue);
+}
+
 TEST(Params, ThePickedPixelIsTheCentreByDefaultAndClampsAtTheEdge) {
     FrameInput input;
     input.width = 33;
     input.height = 20;
-    input.settings = {{"pick_x", -1}, {"pick_y", -1}};
+    input.controls.pickX = input.controls.pickY = -1;
     EXPECT_EQ(pickedPixel(input), glm::ivec2(16, 10));
-    input.settings = {{"pick_x", 1000}, {"pick_y", 7}};
+    input.controls.pickX = 1000;
+    input.controls.pickY = 7;
     EXPECT_EQ(pickedPixel(input), glm::ivec2(32, 7));
-    input.settings = {{"pick_x", 0}, {"pick_y", 5000}};
+    input.controls.pickX = 0;
+    input.controls.pickY = 5000;
     EXPECT_EQ(pickedPixel(input), glm::ivec2(0, 19));
 }
 

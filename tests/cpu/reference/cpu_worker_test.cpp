@@ -27,7 +27,7 @@ CpuResult renderAll(CpuWorker& worker, const viz::scene::Scene& scene, int w, in
 
 viz::Image direct(const viz::scene::Scene& scene, int w, int h) {
     auto t = viz::makeTechnique("reference");
-    viz::FrameInput in{&scene, w, h, viz::completeSettings(*t, {}), -1};
+    viz::FrameInput in = viz::frameInput(&scene, w, h, viz::completeSettings(*t, {}));
     return t->run(in).airlight;
 }
 

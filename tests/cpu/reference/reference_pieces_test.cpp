@@ -23,7 +23,7 @@ scene::Light makeSpot(double inner, double outer) {
     l.type = scene::LightType::Spot;
     l.position = {0.0, 3.0, 0.0};
     l.direction = glm::normalize(glm::dvec3(0.2, -1.0, 0.1));
-    l.color = {1.0, 0.8, 0.6};
+    l.colour = {1.0, 0.8, 0.6};
     l.intensity = 25.0;
     l.innerConeAngle = inner;
     l.outerConeAngle = outer;
@@ -65,8 +65,8 @@ TEST(ReferencePieces, SpotInsideInnerConeEqualsPointSegment) {
     // theta must agree with airlight::pointSegment (isotropic emitter) to ~1e-10.
     const scene::Light l = makeSpot(1.2, 1.3);
     const reference::SpotProfile profile = reference::SpotProfile::fromLight(l, nullptr);
-    reference::PointEmitter spot{l.position, l.intensity * l.color, reference::ProfileKind::Spot, &profile};
-    reference::PointEmitter point{l.position, l.intensity * l.color, reference::ProfileKind::Isotropic};
+    reference::PointEmitter spot{l.position, l.intensity * l.colour, reference::ProfileKind::Spot, &profile};
+    reference::PointEmitter point{l.position, l.intensity * l.colour, reference::ProfileKind::Isotropic};
     const glm::dvec3 o(-1.0, 0.5, 3.0);
     const glm::dvec3 w = glm::normalize(glm::dvec3(0.3, 0.05, -1.0));
     for (auto [a, b] : {std::pair{0.0, 6.0}, std::pair{0.5, 2.5}, std::pair{3.1, 3.2}}) {
@@ -83,7 +83,7 @@ TEST(ReferencePieces, SpotInsideInnerConeEqualsPointSegment) {
 TEST(ReferencePieces, SpotAcrossBothConesMatchesMidpointSum) {
     const scene::Light l = makeSpot(0.25, 0.5);
     const reference::SpotProfile profile = reference::SpotProfile::fromLight(l, nullptr);
-    reference::PointEmitter spot{l.position, l.intensity * l.color, reference::ProfileKind::Spot, &profile};
+    reference::PointEmitter spot{l.position, l.intensity * l.colour, reference::ProfileKind::Spot, &profile};
     // A ray through the cone below the light: it enters the outer cone, the inner cone, and leaves both.
     const glm::dvec3 o(-4.0, 1.0, 2.0);
     const glm::dvec3 w = glm::normalize(glm::dvec3(1.0, -0.05, -0.4));
@@ -96,7 +96,7 @@ TEST(ReferencePieces, SpotAcrossBothConesMatchesMidpointSum) {
     // Midpoint, 2e6 steps: O(dt^2) ~ 1e-11 relative on the smooth pieces; the kinks at the cones (a jump
     // of A' at the inner cone only; A is C1 at the outer one) add O(dt^2) each.
     const glm::dvec3 indep = midpointAlongRay(o, w, l.position, a, b, 2'000'000,
-                                              [&](const glm::dvec3& dir) { return spotA(l, dir) * l.intensity * l.color; });
+                                              [&](const glm::dvec3& dir) { return spotA(l, dir) * l.intensity * l.colour; });
     EXPECT_GE(stats.pieces, 3);
     EXPECT_LT(relDiff(ref, indep), 1e-9);
     EXPECT_LT(stats.relError, 1e-10);
@@ -135,7 +135,7 @@ TEST(ReferencePieces, CookieMatchesMidpointSum) {
     const scene::Light l = makeSpot(0.3, 0.55);
     const reference::LinearTexture linear(tex);
     const reference::SpotProfile profile = reference::SpotProfile::fromLight(l, &linear);
-    reference::PointEmitter spot{l.position, l.intensity * l.color, reference::ProfileKind::Spot, &profile};
+    reference::PointEmitter spot{l.position, l.intensity * l.colour, reference::ProfileKind::Spot, &profile};
 
     // The light frame from the definition: z = spot direction, x = right (from world up), y = up.
     const glm::dvec3 z = glm::normalize(l.direction);
@@ -147,7 +147,7 @@ TEST(ReferencePieces, CookieMatchesMidpointSum) {
         if (A == 0.0) return glm::dvec3(0.0);
         const glm::dvec2 uv = 0.5 + 0.5 * glm::dvec2(glm::dot(dir, xAxis), glm::dot(dir, yAxis)) /
                                          (glm::dot(dir, z) * tanOuter);
-        return A * cookieLookup(tex, uv) * l.intensity * l.color;
+        return A * cookieLookup(tex, uv) * l.intensity * l.colour;
     };
     const glm::dvec3 o(-3.0, 0.6, 1.5);
     const glm::dvec3 w = glm::normalize(glm::dvec3(1.0, 0.08, -0.6));

@@ -28,8 +28,8 @@ struct RiemannResult {
 constexpr int kJumpRefinement = 10'000;
 
 // Midpoint rule in t with n steps over [0, d] of
-//   sigma_s p(cos) I color A_spot exp(-sigma_t r) / r^2 V exp(-sigma_t t)   (point and spot lights),
-//   sigma_s p(cos) I color V exp(-sigma_t t)                                 (directional lights),
+//   sigma_s p(cos) I colour A_spot exp(-sigma_t r) / r^2 V exp(-sigma_t t)   (point and spot lights),
+//   sigma_s p(cos) I colour V exp(-sigma_t t)                                 (directional lights),
 // every factor written from the definition (no airlight.h), V by an Embree occlusion ray per step.
 // Where V differs between two consecutive steps, those two steps are recomputed with kJumpRefinement
 // midpoint sub-steps each.
@@ -50,7 +50,7 @@ RiemannResult riemann(const scene::Scene& s, const reference::RayTracer& tracer,
                 auto integrand = [&](double t, int& V) {
                     const glm::dvec3 x = o + t * w;
                     if (l.type == scene::LightType::Directional) {
-                        // E = I color, no attenuation on the light side; p from the travel direction.
+                        // E = I colour, no attenuation on the light side; p from the travel direction.
                         V = tracer.occludedRay(x, -travel) ? 0 : 1;
                         return sigma_s * hg(glm::dot(travel, -w), g) * l.intensity * std::exp(-sigma_t * t);
                     }
@@ -84,7 +84,7 @@ RiemannResult riemann(const scene::Scene& s, const reference::RayTracer& tracer,
                     double term = V * f * dt;
                     if (previousV >= 0 && V != previousV) {
                         ++parts[std::size_t(k)].jumps;
-                        parts[std::size_t(k)].jumpBound += std::max(f, previousF) * l.color.x * dt / kJumpRefinement;
+                        parts[std::size_t(k)].jumpBound += std::max(f, previousF) * l.colour.x * dt / kJumpRefinement;
                         // Replace the previous step's term by its refined value (unless already refined),
                         // and refine this one.
                         if (!previousRefined) block += refinedStep(t - dt) - previousTerm;
@@ -102,7 +102,7 @@ RiemannResult riemann(const scene::Scene& s, const reference::RayTracer& tracer,
                         block = 0.0;
                     }
                 }
-                parts[std::size_t(k)].value += (total + block) * l.color;
+                parts[std::size_t(k)].value += (total + block) * l.colour;
             }
         });
     }
@@ -128,7 +128,7 @@ void compareWithRiemann(const scene::Scene& s, int count) {
     in.scene = &s;
     in.width = W;
     in.height = H;
-    in.settings = completeSettings(*tech, {{"cache", 0}, {"threads", 2}});
+    setRunSettings(in, completeSettings(*tech, {{"cache", 0}, {"threads", 2}}));
     const FrameOutput out = tech->run(in);
     ASSERT_FALSE(out.airlight.empty());
     const Image* transitions = nullptr;

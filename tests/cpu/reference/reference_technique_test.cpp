@@ -207,7 +207,7 @@ TEST(ReferenceTechnique, SurfaceMatchesLambertFromTheDefinition) {
             const double E = l.intensity * reference_test::spotA(l, -toLight) * std::exp(-s.medium.sigma_t() * r) / (r * r);
             const double expect = visible ? 0.8 / 3.14159265358979323846 * E * std::max(0.0, toLight.y) : 0.0;
             for (int c = 0; c < 3; ++c) {
-                const double e = expect * l.color[c];
+                const double e = expect * l.colour[c];
                 EXPECT_NEAR(surface->at(x, y, c), e, 1e-5 * e + 1e-9) << x << "," << y;
             }
             litFloor += expect > 0.0;

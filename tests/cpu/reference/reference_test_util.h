@@ -54,7 +54,7 @@ inline scene::Scene makeSlabScene() {
     spot.type = scene::LightType::Spot;
     spot.position = {0.2, 4.0, 0.3};
     spot.direction = glm::normalize(glm::dvec3(0.1, -1.0, 0.05));
-    spot.color = {1.0, 0.9, 0.7};
+    spot.colour = {1.0, 0.9, 0.7};
     spot.intensity = 40.0;
     spot.innerConeAngle = 0.35;
     spot.outerConeAngle = 0.6;

@@ -56,7 +56,7 @@ TEST(GltfLoader, BoxWithCameraSpotMediumAndCookie) {
     EXPECT_EQ(l.name, "spot");
     EXPECT_NEAR(glm::length(l.position - glm::dvec3(0, 3, 0)), 0.0, 1e-12);
     EXPECT_NEAR(glm::length(l.direction - glm::dvec3(0, -1, 0)), 0.0, 1e-12);
-    EXPECT_EQ(l.color, glm::dvec3(1.0, 0.5, 0.25));
+    EXPECT_EQ(l.colour, glm::dvec3(1.0, 0.5, 0.25));
     EXPECT_DOUBLE_EQ(l.intensity, 30.0);
     EXPECT_DOUBLE_EQ(l.innerConeAngle, 0.2);
     EXPECT_DOUBLE_EQ(l.outerConeAngle, 0.6);
@@ -108,7 +108,7 @@ TEST(GltfLoader, FlattensNodeTransforms) {
     EXPECT_EQ(s.lights[0].type, LightType::Point);
     EXPECT_EQ(s.lights[0].position, glm::dvec3(0, 5, 0));
     EXPECT_DOUBLE_EQ(s.lights[0].intensity, 10.0);
-    EXPECT_EQ(s.lights[0].color, glm::dvec3(1.0));  // KHR default colour
+    EXPECT_EQ(s.lights[0].colour, glm::dvec3(1.0));  // KHR default colour
     EXPECT_EQ(s.medium.sigma_s, 0.0);
 }
 

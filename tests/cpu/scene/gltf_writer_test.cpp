@@ -59,7 +59,7 @@ void expectSameScene(const Scene& a, const Scene& b) {
         EXPECT_EQ(x.type, y.type);
         EXPECT_EQ(x.position, y.position);
         EXPECT_EQ(x.direction, y.direction);
-        EXPECT_EQ(x.color, y.color);
+        EXPECT_EQ(x.colour, y.colour);
         EXPECT_EQ(x.intensity, y.intensity);
         EXPECT_EQ(x.cookie, y.cookie);
         if (x.type == LightType::Spot) {

@@ -84,7 +84,7 @@ TEST(SceneSource, HashChangesWithEveryRenderingInput) {
     const std::string hs = sceneContentHash(spot);
     std::vector<std::pair<std::string, std::function<void(Scene&)>>> spotEdits = {
         {"intensity", [](Scene& s) { s.lights[0].intensity = 51.0; }},
-        {"colour", [](Scene& s) { s.lights[0].color.z = 0.9; }},
+        {"colour", [](Scene& s) { s.lights[0].colour.z = 0.9; }},
         {"direction", [](Scene& s) { s.lights[0].direction = glm::normalize(glm::dvec3(0.1, -1, 0)); }},
         {"inner cone", [](Scene& s) { s.lights[0].innerConeAngle = 0.2; }},
         {"outer cone", [](Scene& s) { s.lights[0].outerConeAngle = 0.6; }},

@@ -87,8 +87,8 @@ TEST(ColourBar, TheDivergingRampIsSymmetricAndInvertsTheSymmetricLog) {
 }
 
 TEST(ColourBar, AnHdrImagesBarEndsWhereTheExposureReachesWhite) {
-    PaneImage pane = paneOf(viz::ViewKind::Color, 0.0f, 1.0f, "radiance");
-    pane.mode = DisplayMode::HdrColor;
+    PaneImage pane = paneOf(viz::ViewKind::Colour, 0.0f, 1.0f, "radiance");
+    pane.mode = DisplayMode::HdrColour;
     const DisplayMapping m = resolveMapping(pane, {}, 2.0f, std::nullopt);  // +2 EV: white at 0.25
     const ColourBar bar = colourBarFor(pane, m, {});
     EXPECT_EQ(bar.lo, 0.0);
@@ -119,7 +119,7 @@ TEST(ColourBar, DiscreteMapsGetClassesAndSentinelsLeadTheLegend) {
 }
 
 TEST(ColourBar, APictureHasNoMapUnlessTheUserPicksOne) {
-    PaneImage chart = paneOf(viz::ViewKind::Color, 0.0f, 1.0f, "");
+    PaneImage chart = paneOf(viz::ViewKind::Colour, 0.0f, 1.0f, "");
     chart.picture = true;
     const ColourBar bar = colourBarFor(chart, resolveMapping(chart, {}, 0.0f, std::nullopt), {});
     EXPECT_EQ(bar.kind, ColourBar::Kind::Picture);

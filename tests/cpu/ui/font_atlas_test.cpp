@@ -137,7 +137,7 @@ TEST(DrawList, RectAndTextEmitTwoTrianglesPerQuad) {
     ASSERT_EQ(list.vertices().size(), 6u);
     for (const auto& v : list.vertices()) {
         EXPECT_EQ(v.uv, font16().whiteUv());
-        EXPECT_EQ(v.color, viz::ui::packColor({1, 0, 0, 1}));
+        EXPECT_EQ(v.colour, viz::ui::packColour({1, 0, 0, 1}));
         EXPECT_TRUE(v.position.x == 1.0f || v.position.x == 11.0f);
         EXPECT_TRUE(v.position.y == 2.0f || v.position.y == 7.0f);
     }
@@ -159,8 +159,8 @@ TEST(DrawList, ClippedTextEndsBeforeTheLimit) {
     EXPECT_FLOAT_EQ(shortList.textClipped({0.0f, 0.0f}, "ok", {1, 1, 1, 1}, 100.0f), font16().measure("ok"));
 }
 
-TEST(PackColor, MemoryOrderIsRgba) {
-    const std::uint32_t c = viz::ui::packColor({1.0f, 0.0f, 0.5f, 0.25f});
+TEST(PackColour, MemoryOrderIsRgba) {
+    const std::uint32_t c = viz::ui::packColour({1.0f, 0.0f, 0.5f, 0.25f});
     const auto* bytes = reinterpret_cast<const unsigned char*>(&c);
     EXPECT_EQ(bytes[0], 255);
     EXPECT_EQ(bytes[1], 0);

@@ -62,7 +62,7 @@ TEST(DrawPlot, EverythingLandsInsideTheArea) {
     spec.xLabel = "ms";
     spec.yLabel = "relative L2";
     spec.logX = spec.logY = true;
-    spec.series.push_back({"raymarch", categoricalColor(0), {{10, 1.0}, {40, 0.1}, {160, 0.01}, {-1, 0.5}}, true, true});
+    spec.series.push_back({"raymarch", categoricalColour(0), {{10, 1.0}, {40, 0.1}, {160, 0.01}, {-1, 0.5}}, true, true});
     spec.highlighted = {{10, 1.0}};
     spec.highlightName = "front";
     const ui::Rect area{{20, 30}, {500, 330}};
@@ -81,7 +81,7 @@ TEST(DrawPlot, ALegendTooLongForTheAreaIsCutShortAndStaysInside) {
     PlotSpec spec;
     spec.logX = spec.logY = true;
     for (int i = 0; i < 12; ++i)
-        spec.series.push_back({"technique " + std::to_string(i), categoricalColor(i), {{10.0 * (i + 1), 0.5 / (i + 1)}},
+        spec.series.push_back({"technique " + std::to_string(i), categoricalColour(i), {{10.0 * (i + 1), 0.5 / (i + 1)}},
                                false, true});
     const ui::Rect area{{0, 0}, {360, 130}};  // room for a few legend lines only
     ui::DrawList list(font);

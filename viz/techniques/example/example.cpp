@@ -67,8 +67,7 @@ public:
 
     Plan plan(const scene::Scene& scene, const Settings& settings) const override {
         const ExampleSettings s = exampleParams().read(settings);
-        Plan p;
-        for (const StageInfo& st : mStages) p.stages.push_back({st.id, true, ""});
+        Plan p = planEveryStage(mStages);
         if (scene.medium.sigma_s == 0.0) {
             p.stages[kAirlightIndex].runs = false;
             p.stages[kAirlightIndex].why = "sigma_s = 0: the medium scatters nothing, L_air = 0";
@@ -124,14 +123,14 @@ public:
                 },
                 [&] {
                     out.intermediates.push_back(cpuIntermediate(
-                        kAirlight, "L_air", "every sun's segment [0, d]", ViewKind::Color, airlight));
+                        kAirlight, "L_air", "every sun's segment [0, d]", ViewKind::Colour, airlight));
                     out.airlight = *airlight;
                 }))
             return out;
 
         stages.run(kComposeIndex, [&] { out.final = *airlight; },
                    [&] {
-                       out.intermediates.push_back(cpuIntermediate(kFinal, "Final", "L_air", ViewKind::Color, airlight));
+                       out.intermediates.push_back(cpuIntermediate(kFinal, "Final", "L_air", ViewKind::Colour, airlight));
                    });
         return out;
     }
@@ -153,7 +152,7 @@ private:
                 const double dt = d / s.samples, scatter = m.sigma_s * airlight::phaseHG(cosTheta, m.g);
                 for (int k = 0; k < s.samples; ++k) unit += scatter * std::exp(-m.sigma_t() * (k + 0.5) * dt) * dt;
             }
-            L += light.color * light.intensity * unit;
+            L += light.colour * light.intensity * unit;
         }
         return L;
     }

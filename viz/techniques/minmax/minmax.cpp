@@ -148,14 +148,12 @@ std::optional<StiffBound> MinmaxTechnique::stiffBound(const std::string& caseCla
         {"depth-range", {0.022, "S stores angles beta, not depths: the 1e6 range costs no precision"}},
         {"phase", {0.04, "the HG lobe is inside the segment integral of each lit run; g = +-0.99 is the worst"}},
     };
-    const auto it = kBounds.find(caseClass);
-    return it == kBounds.end() ? std::nullopt : std::optional<StiffBound>(it->second);
+    return boundOf(kBounds, caseClass);
 }
 
 Plan MinmaxTechnique::plan(const scene::Scene& scene, const Settings& settings) const {
     const MinmaxSettings s = minmaxParams().read(settings);
-    Plan p;
-    for (const StageInfo& st : mStages) p.stages.push_back({st.id, true, ""});
+    Plan p = planEveryStage(mStages);
     const bool marchPoints = s.marchPoints;
     const auto epipolar = [&](const scene::Light& l) {
         return epipolarLight(l) && !(marchPoints && l.type == scene::LightType::Point);
@@ -343,12 +341,11 @@ FrameOutput MinmaxTechnique::run(const FrameInput& input) {
                 mMarkTraversed = runs(kTraverseIndex) && !mWork.empty();
                 publishTraverse(out, input);
             }
-            out.airlight = render::readRgb(mAirlight);
+            render::readBackAirlight(input, mAirlight, out);
         });
     if (!toCompose) return out;
 
-    stages.run(kComposeIndex, [&] { mView.compose(scene, mAirlight, out.intermediates, "minmax"); },
-               [&] { out.final = mView.readFinal(); });
+    mView.runCompose(stages, kComposeIndex, input, mAirlight, out, "minmax");
     return out;
 }
 

@@ -69,7 +69,7 @@ void MinmaxTechnique::publishRectified(FrameOutput& out, const FrameInput& input
     out.intermediates.push_back(cpuIntermediate(
         kRectifiedView, "Rectified map, picked row",
         "S / pi as grey (row 0 at the top = slice 0; nearest rows and columns when larger than 1024), the "
-        "picked pixel's slice in red", ViewKind::Color, img));
+        "picked pixel's slice in red", ViewKind::Colour, img));
     out.intermediates.back().picture = true;
 }
 
@@ -81,14 +81,14 @@ void MinmaxTechnique::publishLowRank(FrameOutput& out) const {
     std::snprintf(note, sizeof note, "log10 bars over 12 decades, kept in green; rank-%d reconstruction error of "
                   "I sin(beta) on the 64x64 grid: %.3g", lr.rank, lr.reconstructionError);
     out.intermediates.push_back(cpuIntermediate(kSingularValues, "Singular values of I", note,
-                                                          ViewKind::Color,
+                                                          ViewKind::Colour,
                                                           std::make_shared<Image>(minmax::singularValuesView(lr))));
     out.intermediates.back().plots = {minmax::singularValuesPlot(lr)};
     out.intermediates.push_back(cpuIntermediate(
         kBasis, "B_i(beta) and Gamma_i(gamma)",
         "top: B_i over the screen's beta range; bottom: Gamma_i over [gammaLo, gammaHi]; each half scaled to its "
         "largest magnitude, zero in the middle; i = 1.. in red, green, blue, yellow, ...",
-        ViewKind::Color, std::make_shared<Image>(minmax::basisView(lr))));
+        ViewKind::Colour, std::make_shared<Image>(minmax::basisView(lr))));
     out.intermediates.back().plots = minmax::basisPlots(lr, w.setup.frame.kind == minmax::LightKind::Directional);
     auto error = std::make_shared<Image>(1, 1, 1);
     error->at(0, 0) = float(lr.reconstructionError);
@@ -98,7 +98,7 @@ void MinmaxTechnique::publishLowRank(FrameOutput& out) const {
         ViewKind::Scalar, error));
     out.intermediates.push_back(render::textureIntermediate(
         kPrefixSums, "Prefix sums of Gamma_i T", "x: gamma texel boundary k; y: slice (one row when shared); "
-        "layer q / 4, channel q % 4 holds rank i = q / 3, colour q % 3", "", ViewKind::Color, 0.0f, 1.0f,
+        "layer q / 4, channel q % 4 holds rank i = q / 3, colour q % 3", "", ViewKind::Colour, 0.0f, 1.0f,
         w.prefix));
 }
 
@@ -127,7 +127,7 @@ void MinmaxTechnique::publishTree(FrameOutput& out, const FrameInput& input) con
     const LightWork& w = mWork.front();
     out.intermediates.push_back(render::textureIntermediate(
         kTree, "Min-max mipmaps", "row = slice, x = Ahnentafel node (1 = root, leaves at columns..2 columns-1); "
-        "r = min, g = max of S below the node", "radians", ViewKind::Color, 0.0f, float(std::numbers::pi),
+        "r = min, g = max of S below the node", "radians", ViewKind::Colour, 0.0f, float(std::numbers::pi),
         w.tree));
     out.intermediates.back().sentinels = outsideAndUnblocked();
     out.intermediates.back().channels = {{"min S below the node", "radians", ViewKind::Scalar, 0.0f, float(std::numbers::pi)},
@@ -135,14 +135,14 @@ void MinmaxTechnique::publishTree(FrameOutput& out, const FrameInput& input) con
     out.intermediates.push_back(cpuIntermediate(
         kPyramid, "Min-max pyramid, picked row",
         "level 0 (root) at the top; each band: min (upper half), max (lower half) as beta / pi; blue = level "
-        "not built yet (mip_levels)", ViewKind::Color,
+        "not built yet (mip_levels)", ViewKind::Colour,
         std::make_shared<Image>(minmax::pyramidView(readTreeRow(w.tree, pickedRow(input)), w.levelsBuilt))));
     out.intermediates.back().picture = true;
 }
 
 void MinmaxTechnique::publishTraverse(FrameOutput& out, const FrameInput& input) {
     out.intermediates.push_back(render::textureIntermediate(
-        kAirlight, "L_air", "single-scattered light reaching the eye", "radiance", ViewKind::Color, 0.0f, 1.0f,
+        kAirlight, "L_air", "single-scattered light reaching the eye", "radiance", ViewKind::Colour, 0.0f, 1.0f,
         mAirlight));
     out.intermediates.push_back(render::textureIntermediate(
         kVisited, "Nodes visited", "tree nodes (or texels, traversal=linear) processed per pixel, all lights",
@@ -152,7 +152,7 @@ void MinmaxTechnique::publishTraverse(FrameOutput& out, const FrameInput& input)
         1.0f, mNearMask));
     out.intermediates.push_back(render::textureIntermediate(
         kRayCoords, "Ray coordinates", "first epipolar light: (slice row, beta, end column cEnd, d) per pixel",
-        "", ViewKind::Color, 0.0f, 1.0f, mRayCoords));
+        "", ViewKind::Colour, 0.0f, 1.0f, mRayCoords));
     const glm::ivec3 map = mWork.empty() ? glm::ivec3(1) : mWork.front().rectified.size();  // columns x slices
     out.intermediates.back().channels = {
         {"slice row", "rows", ViewKind::Scalar, 0.0f, float(std::max(1, map.y))},
@@ -173,7 +173,7 @@ void MinmaxTechnique::publishTraverse(FrameOutput& out, const FrameInput& input)
         "below it: beta < S; vertical range fitted to the row and the ray), the ray's beta in yellow up to its "
         "end; below: the nodes the walk visited (CPU mirror of the shader, first trace_steps), one band per "
         "level, green lit, red shadowed, grey mixed. A pixel marched near the epipole has no walk (row 0, "
-        "beta 0 shown)", ViewKind::Color,
+        "beta 0 shown)", ViewKind::Colour,
         std::make_shared<Image>(minmax::traceView(readTreeRow(w.tree, row), coords[1], coords[2],
                                                   int(substepLimit(input, kTraverseIndex))))));
     out.intermediates.back().rayView = true;

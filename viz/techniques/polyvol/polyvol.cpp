@@ -34,9 +34,7 @@ const ParamTable<PolyvolSettings>& polyvolParams() {
                   "light (from the first 2D light), orbit (from an orbit camera of its own: mesh_yaw, mesh_pitch, "
                   "mesh_zoom; with the scene, the camera frustum and the lights)",
                   0, 0, 3, true, {"off", "camera", "light", "orbit"}})
-            .add(&S::meshYaw, orbitParams("wireframe=orbit"), kOrbitYaw)
-            .add(&S::meshPitch, orbitParams("wireframe=orbit"), kOrbitPitch)
-            .add(&S::meshZoom, orbitParams("wireframe=orbit"), kOrbitZoom)
+            .declare(orbitParams("wireframe=orbit"))
             .add(&S::stopLevel, {"stop_level", "adaptive stepping: quads of this level are not refined further (-1: "
                                  "refine fully)", -1, -1, 13, true})
             .add(&S::cookieMask, {"cookie_mask", "cookie texels darker than this (brightest channel, linear) close the "
@@ -108,14 +106,12 @@ std::optional<StiffBound> PolyvolTechnique::stiffBound(const std::string& caseCl
         {"depth-range", {0.02, "distance-valued R32F maps; the volume is as coarse as the 1e6-wide map (0.0099)"}},
         {"phase", {0.016, "the HG lobe is inside the closed form of each segment; g = 0.99 is the worst (0.0079)"}},
     };
-    const auto it = kBounds.find(caseClass);
-    return it == kBounds.end() ? std::nullopt : std::optional<StiffBound>(it->second);
+    return boundOf(kBounds, caseClass);
 }
 
 Plan PolyvolTechnique::plan(const scene::Scene& scene, const Settings& settings) const {
     const PolyvolSettings s = polyvolParams().read(settings);
-    Plan p;
-    for (const StageInfo& st : mStages) p.stages.push_back({st.id, true, ""});
+    Plan p = planEveryStage(mStages);
     const bool constant = s.crackCheck;
     if (scene.medium.sigma_s == 0.0 && !constant) {
         p.stages[kVolumeIndex].runs = false;
@@ -245,13 +241,12 @@ FrameOutput PolyvolTechnique::run(const FrameInput& input) {
             clampAirlight();
         },
         [&] {
-            publishVolume(out, triangles);
+            publishVolume(out, input, triangles);
             if (lut) publishLut(out, input, scene.medium.g);
         });
     if (!more) return out;
 
-    stages.run(kComposeIndex, [&] { mView.compose(scene, mAirlight, out.intermediates, "polyvol"); },
-               [&] { out.final = mView.readFinal(); });
+    mView.runCompose(stages, kComposeIndex, input, mAirlight, out, "polyvol");
     return out;
 }
 
@@ -261,7 +256,7 @@ void PolyvolTechnique::publishLut(FrameOutput& out, const FrameInput& input, dou
         "R: A = tau_h int_{-200}^{-|u|} f, G: B = tau_h e^{|u|+rho} int_{|u|}^inf f; x: asinh(|u| / s), "
         "s = tau_h / (1 + tau_h) (left edge: the foot point), y: log tau_h (1e-9 .. 200; below: closed "
         "form), g = " + std::to_string(g) + ", built in " + std::to_string(mLutMs) + " ms",
-        "", ViewKind::Color, 0.0f, 2.0f, mLut));
+        "", ViewKind::Colour, 0.0f, 2.0f, mLut));
     out.intermediates.back().channels = {{"A (near side)", "", ViewKind::Scalar, 0.0f, 2.0f},
                                          {"B (far side)", "", ViewKind::Scalar, 0.0f, 2.0f}};
     const float worst = lutError(input);

@@ -18,10 +18,10 @@ void PolyvolTechnique::allocateTargets(int width, int height) {
     mCrossings = make(GL_RGBA32F, kCrossings);
     mAirlight = make(GL_RGBA32F, "polyvol.airlight");
     mFramebuffer = gl::Framebuffer::create("polyvol.volume_fbo");
-    mFramebuffer.attachColor(0, mTotal);
-    mFramebuffer.attachColor(1, mPositive);
-    mFramebuffer.attachColor(2, mNegative);
-    mFramebuffer.attachColor(3, mCrossings);
+    mFramebuffer.attachColour(0, mTotal);
+    mFramebuffer.attachColour(1, mPositive);
+    mFramebuffer.attachColour(2, mNegative);
+    mFramebuffer.attachColour(3, mCrossings);
     mFramebuffer.checkComplete();
 }
 
@@ -149,7 +149,7 @@ std::int64_t PolyvolTechnique::drawVolumes(const scene::Scene& scene, const Fram
     // the lights (render::MeshView); set up before the volume pass's state.
     if (mWireMode == 3)
         mMeshView.begin(scene, mView.gpuScene(),
-                        {s.meshYaw, s.meshPitch, s.meshZoom}, input.width, input.height);
+                        render::orbitOf(input.controls), input.width, input.height);
     // Each light's ball radius, before the volume pass's state: nearRadius runs a compute pass.
     mNearRadii.clear();
     for (const render::GpuLightCpu& L : mView.lights().lights())
@@ -190,7 +190,7 @@ std::int64_t PolyvolTechnique::drawVolumes(const scene::Scene& scene, const Fram
                                          .size = {input.width, input.height, 1}, .levels = 1,
                                          .label = kMesh});
             mWireFramebuffer = gl::Framebuffer::create("polyvol.wire_fbo");
-            mWireFramebuffer.attachColor(0, mWire);
+            mWireFramebuffer.attachColour(0, mWire);
             mWireFramebuffer.checkComplete();
         }
         mWire.clear(glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));

@@ -94,7 +94,6 @@ struct PolyvolSettings {
     std::int64_t drawTriangles = 0;
     bool originAtSurface = false;  // origin=surface
     int wireframe = 0;             // off, camera, light, orbit
-    double meshYaw = 0.0, meshPitch = 0.0, meshZoom = 0.0;
     int stopLevel = 0;
     double cookieMask = 0.0;
     int shadowMap = 0, areaSamples = 0;
@@ -209,7 +208,7 @@ private:
     // L_air = max(0, total) (clamp.comp).
     void clampAirlight();
 
-    void publishVolume(FrameOutput& out, std::int64_t triangles);
+    void publishVolume(FrameOutput& out, const FrameInput& input, std::int64_t triangles);
     // The airlight lookup table of phase parameter g and its error against the closed form.
     void publishLut(FrameOutput& out, const FrameInput& input, double g);
 

@@ -102,7 +102,7 @@ float PolyvolTechnique::lutError(const FrameInput& input) {
     return worst;
 }
 
-void PolyvolTechnique::publishVolume(FrameOutput& out, std::int64_t triangles) {
+void PolyvolTechnique::publishVolume(FrameOutput& out, const FrameInput& input, std::int64_t triangles) {
     const PolyvolSettings& s = mSettings;
     const bool constant = s.crackCheck;
     const std::string count = std::to_string(triangles) + " triangles drawn" +
@@ -120,10 +120,10 @@ void PolyvolTechnique::publishVolume(FrameOutput& out, std::int64_t triangles) {
     }
     Intermediate mesh;
     if (mWireMode == 3) {
-        mesh = render::textureIntermediate(kMesh, "Light volume mesh", "", "", ViewKind::Color, 0.0f, 1.0f,
+        mesh = render::textureIntermediate(kMesh, "Light volume mesh", "", "", ViewKind::Colour, 0.0f, 1.0f,
                                            mMeshView.texture());
     } else if (mWireMode != 0 && mWire) {
-        mesh = render::textureIntermediate(kMesh, "Light volume mesh", "", "", ViewKind::Color, 0.0f, 1.0f, mWire);
+        mesh = render::textureIntermediate(kMesh, "Light volume mesh", "", "", ViewKind::Colour, 0.0f, 1.0f, mWire);
     }
     mesh.id = kMesh;
     mesh.label = "Light volume mesh";
@@ -134,7 +134,7 @@ void PolyvolTechnique::publishVolume(FrameOutput& out, std::int64_t triangles) {
                                                                 : "")
                                           : "; wireframe=camera|light|orbit draws it (orbit: a view of its own)") +
                 (mWireMode == 3 && s.wireframe == 0 ? "; drawn because this view is shown (its time counts in the volume stage)" : "");
-    mesh.kind = mWireMode != 0 ? ViewKind::Color : ViewKind::Mesh;
+    mesh.kind = mWireMode != 0 ? ViewKind::Colour : ViewKind::Mesh;
     mesh.orbit = mWireMode == 3;
     mesh.picture = mWireMode != 0;
     out.intermediates.push_back(mesh);
@@ -149,11 +149,11 @@ void PolyvolTechnique::publishVolume(FrameOutput& out, std::int64_t triangles) {
                                          {"crossings beyond the surface", "faces", ViewKind::Scalar, 0.0f, 4.0f}};
     const std::string units = constant ? "scene units (lit length)" : "radiance";
     out.intermediates.push_back(render::textureIntermediate(
-        kPositive, "Positive terms", "sum of +L(0, x) where rays leave the lit volume, plus the chord through the ball around the light", units, ViewKind::Color,
+        kPositive, "Positive terms", "sum of +L(0, x) where rays leave the lit volume, plus the chord through the ball around the light", units, ViewKind::Colour,
         0.0f, 1.0f, mPositive));
     out.intermediates.push_back(render::textureIntermediate(
         kNegative, "Negative terms", "sum of L(0, x) where rays enter the lit volume (subtracted)", units,
-        ViewKind::Color, 0.0f, 1.0f, mNegative));
+        ViewKind::Colour, 0.0f, 1.0f, mNegative));
     std::string balls;
     for (float r : mNearRadii) {
         char text[32];
@@ -181,7 +181,7 @@ void PolyvolTechnique::publishVolume(FrameOutput& out, std::int64_t triangles) {
     cracks.image = mask;
     cracks.extent = {total.width, total.height, 1};
     out.intermediates.push_back(cracks);
-    out.airlight = render::readRgb(mAirlight);
+    render::readBackAirlight(input, mAirlight, out);
 }
 
 }  // namespace viz::polyvol_detail

@@ -87,7 +87,7 @@ PreparedLights PreparedLights::build(const scene::Scene& scene, int areaSamples)
             case scene::LightType::Spot: {
                 PointEmitter e;
                 e.position = light.position;
-                e.intensity = light.intensity * light.color;
+                e.intensity = light.intensity * light.colour;
                 e.light = int(li);
                 if (light.type == scene::LightType::Spot) {
                     const LinearTexture* cookie =
@@ -102,7 +102,7 @@ PreparedLights PreparedLights::build(const scene::Scene& scene, int areaSamples)
             }
             case scene::LightType::Directional: {
                 out.directionals.push_back(
-                    DirectionalEmitter{glm::normalize(light.direction), light.intensity * light.color, int(li)});
+                    DirectionalEmitter{glm::normalize(light.direction), light.intensity * light.colour, int(li)});
                 break;
             }
             case scene::LightType::Area: {

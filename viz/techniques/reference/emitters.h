@@ -43,7 +43,7 @@ enum class ProfileKind { Isotropic, Spot, Lambertian };
 // A point source: radiant intensity I(x) = intensity * profile(direction P -> x).
 struct PointEmitter {
     glm::dvec3 position{0.0};
-    glm::dvec3 intensity{0.0};  // point/spot: I * color; area cell: int_cell L_e dA (RGB)
+    glm::dvec3 intensity{0.0};  // point/spot: I * colour; area cell: int_cell L_e dA (RGB)
     ProfileKind kind = ProfileKind::Isotropic;
     const SpotProfile* spot = nullptr;  // kind == Spot
     glm::dvec3 normal{0.0};             // kind == Lambertian: emitter normal, profile = max(0, cos)
@@ -57,7 +57,7 @@ struct PointEmitter {
 
 struct DirectionalEmitter {
     glm::dvec3 direction{0, 0, -1};  // travel direction, unit
-    glm::dvec3 irradiance{0.0};      // I * color
+    glm::dvec3 irradiance{0.0};      // I * colour
     int light = -1;
 };
 

@@ -63,7 +63,7 @@ const ParamTable<SlicesSettings>& slicesParams() {
             .add(&S::cookie, {"cookie", "1: project the spot's cookie (when it has one)", 1, 0, 1, true})
             .add(&S::noise, {"noise", "1: two scrolling tiled noise layers modulate the density", 0, 0, 1, true})
             .add(&S::noiseTiles, {"noise_tiles", "noise repeats across the light's frustum", 2, 0.01, 100, false})
-            .add(&S::time, animationTimeParam("scrolls the noise layers"))
+            .declare(animationTimeParam("scrolls the noise layers"))
             .add(&S::falloff, {"falloff", "artistic: 1/d^2 falloff on (0: constant intensity)", 1, 0, 1, true})
             .add(&S::ambient, {"ambient", "artistic: add the paper's ambient term 0.35 to 1/d^2", 1, 0, 1, true})
             .add(&S::artisticUnits, {"artistic_units", "artistic: paper units per scene unit in 20000/d^2", 100, 1e-6,
@@ -88,9 +88,7 @@ const ParamTable<SlicesSettings>& slicesParams() {
                                       "frustum (atomic counter)", 0, 0, 1, true})
             .add(&S::meshView, {"mesh_view", "1: draw the planes from an orbit camera of its own, with the scene, the "
                                 "camera frustum and the lights (slices.plane_view)", 0, 0, 1, true})
-            .add(&S::meshYaw, orbitParams("mesh_view"), kOrbitYaw)
-            .add(&S::meshPitch, orbitParams("mesh_view"), kOrbitPitch)
-            .add(&S::meshZoom, orbitParams("mesh_view"), kOrbitZoom)
+            .declare(orbitParams("mesh_view"))
             .declare(pickParam('x', "planes slices.ray_planes lists"))
             .declare(pickParam('y', "planes slices.ray_planes lists"))
             .add(&S::rayPlanes, {"ray_planes", "1: record the picked pixel's planes (slices.ray_planes: the planes "
@@ -161,14 +159,12 @@ std::optional<StiffBound> SlicesTechnique::stiffBound(const std::string& caseCla
         {"depth-range", {0.03, "distance-valued R32F maps keep the precision near the occluders"}},
         {"phase", {0.05, "the HG lobe is sampled plane by plane; g = 0.99 is the worst"}},
     };
-    const auto it = kBounds.find(caseClass);
-    return it == kBounds.end() ? std::nullopt : std::optional<StiffBound>(it->second);
+    return boundOf(kBounds, caseClass);
 }
 
 Plan SlicesTechnique::plan(const scene::Scene& scene, const Settings& settings) const {
     const SlicesSettings s = slicesParams().read(settings);
-    Plan p;
-    for (const StageInfo& st : mStages) p.stages.push_back({st.id, true, ""});
+    Plan p = planEveryStage(mStages);
     const bool hasSpot = render::hasLightOfType(scene, scene::LightType::Spot);
     const bool hasDir = render::hasLightOfType(scene, scene::LightType::Directional);
     const bool hasOther = render::hasLightOfType(scene, scene::LightType::Point) || render::hasLightOfType(scene, scene::LightType::Area);
@@ -278,10 +274,10 @@ FrameOutput SlicesTechnique::run(const FrameInput& input) {
     if (!mView.runSharedStages(stages, input, "slices", out, [&] {
             out.intermediates.push_back(render::textureIntermediate(
                 kCookies, "Cookies", "spot cookie textures (sRGB bytes), one layer per cookie", "",
-                ViewKind::Color, 0.0f, 1.0f, mView.lights().cookies()));
+                ViewKind::Colour, 0.0f, 1.0f, mView.lights().cookies()));
             out.intermediates.push_back(render::textureIntermediate(
                 kNoise, "Noise", "two tileable value-noise layers (r, g), generated, projected from the light", "",
-                ViewKind::Color, 0.0f, 1.0f, mNoise));
+                ViewKind::Colour, 0.0f, 1.0f, mNoise));
         }))
         return out;
 
@@ -310,13 +306,13 @@ FrameOutput SlicesTechnique::run(const FrameInput& input) {
                 kAccum, "Accumulation after " + std::to_string(drawn) + " of " + std::to_string(n) + " planes",
                 t.mask ? "plane i added to channel i mod 4 (r, g, b, a), times the store scale"
                        : "sum of the planes drawn so far (back to front), times the store scale",
-                "stored value", ViewKind::Color, 0.0f, 1.0f, mAccum));
+                "stored value", ViewKind::Colour, 0.0f, 1.0f, mAccum));
             out.intermediates.push_back(render::textureIntermediate(
                 kPlane, "Plane " + std::to_string(drawn), "the last plane drawn alone (every light), float",
-                "stored value", ViewKind::Color, 0.0f, 0.05f, mPlane));
+                "stored value", ViewKind::Colour, 0.0f, 0.05f, mPlane));
             out.intermediates.push_back(polygonIntermediate());
             if (s.meshView) {
-                mMeshView.begin(scene, mView.gpuScene(), {s.meshYaw, s.meshPitch, s.meshZoom},
+                mMeshView.begin(scene, mView.gpuScene(), render::orbitOf(input.controls),
                                 input.width, input.height);
                 // Each drawn plane's outline, far planes dim and near ones bright (the drawing order).
                 const std::size_t count = mPolygons.size();
@@ -335,7 +331,7 @@ FrameOutput SlicesTechnique::run(const FrameInput& input) {
                     kPlaneView, "Sampling planes (orbit view)",
                     "the drawn planes' outlines (far dim, near bright) with the scene, the camera frustum (blue) and the "
                     "lights (yellow); mesh_yaw, mesh_pitch, mesh_zoom move the camera",
-                    "", ViewKind::Color, 0.0f, 1.0f, mMeshView.texture());
+                    "", ViewKind::Colour, 0.0f, 1.0f, mMeshView.texture());
                 view.orbit = true;  // the window turns it by dragging
                 view.picture = true;
                 out.intermediates.push_back(std::move(view));
@@ -364,7 +360,7 @@ FrameOutput SlicesTechnique::run(const FrameInput& input) {
                              "as stored (orange), scaled to the largest; strip: green added, blue beyond the surface, "
                              "grey clipped by the light frustum, purple by a user plane, black outside the quad; "
                              "bottom: shadow test V (white lit, black shadowed, blue untested)";
-                chart.kind = ViewKind::Color;
+                chart.kind = ViewKind::Colour;
                 chart.image = std::make_shared<Image>(slices::rayPlanesChart(*mRayPlanes));
                 chart.extent = {chart.image->width, chart.image->height, 1};
                 chart.rayView = true;
@@ -397,13 +393,12 @@ FrameOutput SlicesTechnique::run(const FrameInput& input) {
         [&] {
             out.intermediates.push_back(render::textureIntermediate(
                 kAirlight, "L_air", "single-scattered light reaching the eye, decoded from the accumulation",
-                "radiance", ViewKind::Color, 0.0f, 1.0f, mAirlight));
-            out.airlight = render::readRgb(mAirlight);
+                "radiance", ViewKind::Colour, 0.0f, 1.0f, mAirlight));
+            render::readBackAirlight(input, mAirlight, out);
         });
     if (!toCompose) return out;
 
-    stages.run(kComposeIndex, [&] { mView.compose(scene, mAirlight, out.intermediates, "slices"); },
-               [&] { out.final = mView.readFinal(); });
+    mView.runCompose(stages, kComposeIndex, input, mAirlight, out, "slices");
     return out;
 }
 

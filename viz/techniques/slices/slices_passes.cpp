@@ -98,7 +98,7 @@ void SlicesTechnique::drawPlanes(const scene::Scene& scene, const FrameInput& in
     setBoth("uFalloff", s.falloff ? 1 : 0);
     setBoth("uNoiseTiles", float(s.noiseTiles));
     // Two layers scrolling in different directions (slowly: a few hundredths of a tile per second).
-    const float time = float(s.time);
+    const float time = float(input.controls.time);
     setBoth("uScroll", glm::vec4(0.031f * time, 0.017f * time, -0.023f * time, 0.029f * time));
     setBoth("uPlaneWeight", 1.0f);
     // User planes: world y >= clip_y_min and y <= clip_y_max, written in eye-relative space.
@@ -129,11 +129,11 @@ void SlicesTechnique::drawPlanes(const scene::Scene& scene, const FrameInput& in
     const bool worldGrid = s.worldGrid;
     // Channel mask: one scalar per plane (mean of rgb); the colour ratio of the first light is put back
     // on resolve (exact for one light colour, the paper's monochrome assumption).
-    mMaskColor = glm::vec3(1.0f);
+    mMaskColour = glm::vec3(1.0f);
     if (!lights.empty()) {
-        const glm::dvec3 c = scene.lights[std::size_t(lights.front().info.w)].color;
+        const glm::dvec3 c = scene.lights[std::size_t(lights.front().info.w)].colour;
         const double mean = (c.r + c.g + c.b) / 3.0;
-        if (mean > 0.0) mMaskColor = glm::vec3(c / mean);
+        if (mean > 0.0) mMaskColour = glm::vec3(c / mean);
     }
     // Draw sets: each spot light (and, with directional_box, each directional light) gets N planes in
     // its own frustum's box, clipped to it. Every other light (point, area-light VPL, directional) lights
@@ -205,12 +205,12 @@ void SlicesTechnique::drawPlanes(const scene::Scene& scene, const FrameInput& in
             pickBase += drawn;
         }
         // Back to front: plane 0 is the farthest, so the first k planes are the k farthest.
-        mFramebuffer.attachColor(0, mAccum);
+        mFramebuffer.attachColour(0, mAccum);
         mFramebuffer.checkComplete();
         mFramebuffer.bind();
         glDrawArrays(GL_TRIANGLES, 0, 6 * drawn);
         // The last plane alone, for stepping and the per-plane readback.
-        mFramebuffer.attachColor(0, mPlane);
+        mFramebuffer.attachColour(0, mPlane);
         mFramebuffer.bind();
         glDrawArrays(GL_TRIANGLES, 6 * (drawn - 1), 6);
         if (pick) {
@@ -251,8 +251,8 @@ void SlicesTechnique::resolve(const Terms& t) {
     const gl::Program& program = it->second;
     program.use();
     program.set("uInvStoreScale", float(1.0 / mLastStoreScale));
-    program.set("uMaskColor", mMaskColor);
-    mFramebuffer.attachColor(0, mAirlight);
+    program.set("uMaskColour", mMaskColour);
+    mFramebuffer.attachColour(0, mAirlight);
     mFramebuffer.checkComplete();
     mFramebuffer.bind();
     glViewport(0, 0, mAirlight.size().x, mAirlight.size().y);

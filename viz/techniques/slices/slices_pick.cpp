@@ -41,7 +41,7 @@ void SlicesTechnique::replayPick(const FrameInput& input, const CameraBasis& bas
     program.set("uUserPlane1", glm::vec4(0, -1, 0, float(mSettings.clipYMax - eyeY)));
     mView.surface().distance().bindUnit(0);
     mReplay.bindUnit(1);
-    mFramebuffer.attachColor(0, mReplay);
+    mFramebuffer.attachColour(0, mReplay);
     mFramebuffer.checkComplete();
     mFramebuffer.bind();
     glViewport(0, 0, columns, rows);
@@ -83,7 +83,7 @@ std::shared_ptr<Image> SlicesTechnique::rayPlaneTable(const std::vector<PickReco
     using namespace slices;
     auto table = std::make_shared<Image>(int(kRayPlaneColumns), int(std::max<std::size_t>(records.size(), 1)), 4);
     const float radianceScale =
-        float(1.0 / mLastStoreScale) * (t.mask ? (mMaskColor.r + mMaskColor.g + mMaskColor.b) : 1.0f);
+        float(1.0 / mLastStoreScale) * (t.mask ? (mMaskColour.r + mMaskColour.g + mMaskColour.b) : 1.0f);
     glm::vec4 before(0.0f);  // the accumulation runs on from one draw set into the next
     for (std::size_t r = 0; r < mPickSets.size(); ++r) {
         const PickSet& ps = mPickSets[r];

@@ -108,7 +108,7 @@ struct SlicesSettings {
     double accumRange = 0.0;
     int shadow = 0;  // off, nearest, pcf
     bool spotFalloff = false, cookie = false, noise = false;
-    double noiseTiles = 0.0, time = 0.0;
+    double noiseTiles = 0.0;
     bool falloff = false, ambient = false;
     double artisticUnits = 0.0;
     bool blur = false, clip = false, userClip = false;
@@ -117,7 +117,6 @@ struct SlicesSettings {
     bool worldGrid = false;  // plane_grid=world
     double distanceScale = 0.0;
     bool countFragments = false, meshView = false;
-    double meshYaw = 0.0, meshPitch = 0.0, meshZoom = 0.0;
     bool rayPlanes = false, forceFeatures = false;
 };
 const ParamTable<SlicesSettings>& slicesParams();
@@ -210,7 +209,7 @@ private:
     render::MeshView mMeshView;
     std::vector<std::vector<glm::dvec3>> mPolygons;       // drawn planes, clipped (eye-relative world)
     double mQueryCounts[2] = {0.0, 0.0};  // occlusion queries: outside the frustum, all
-    glm::vec3 mMaskColor{1.0f};
+    glm::vec3 mMaskColour{1.0f};
     // The picked pixel's planes (slices.ray_planes).
     gl::Buffer mPickRecords;
     gl::Texture mReplay;

@@ -139,8 +139,7 @@ Plan IvsvTechnique::plan(const scene::Scene& scene, const Settings& settings) co
     const bool hasArea = areaLightOf(scene) != nullptr;
     const bool hasOthers = int(scene.lights.size()) > (hasArea ? 1 : 0);
     checkTileSize(s.tile);
-    Plan p;
-    for (const StageInfo& st : mStages) p.stages.push_back({st.id, true, ""});
+    Plan p = planEveryStage(mStages);
     if (!hasArea) {
         for (int i : {kVplsIndex, kShadowsIndex, kVoxelizeIndex, kScanIndex}) {
             p.stages[std::size_t(i)].runs = false;
@@ -235,7 +234,7 @@ FrameOutput IvsvTechnique::run(const FrameInput& input) {
             if (!area) return;
             out.intermediates.push_back(cpuIntermediate(
                 kVplImage, "VPLs on the emitter", "emitter uv square (u right, v down): each VPL's L_e as a dot",
-                ViewKind::Color, vplImage()));
+                ViewKind::Colour, vplImage()));
             out.intermediates.back().picture = true;
         }))
         return out;
@@ -373,7 +372,7 @@ FrameOutput IvsvTechnique::run(const FrameInput& input) {
                 const std::shared_ptr<Image> perVpl = perVplImage(count);
                 out.intermediates.push_back(cpuIntermediate(
                     kPerVpl, "Per-VPL airlight of pixel (" + std::to_string(pickX) + ", " + std::to_string(pickY) + ")",
-                    "x = VPL index: its unscaled contribution to L_air (only VPLs this pixel gathered)", ViewKind::Color,
+                    "x = VPL index: its unscaled contribution to L_air (only VPLs this pixel gathered)", ViewKind::Colour,
                     perVpl, 0.0f, 0.0f));
                 out.intermediates.back().plots = {perVplPlot(*perVpl)};
                 out.intermediates.back().rayView = true;
@@ -382,18 +381,17 @@ FrameOutput IvsvTechnique::run(const FrameInput& input) {
                     ViewKind::Scalar, interleaveImage(input.width, input.height, gatherMode)));
             }
             out.intermediates.push_back(render::textureIntermediate(
-                kAirlight, "L_air", "single-scattered light reaching the eye", "radiance", ViewKind::Color, 0.0f, 1.0f,
+                kAirlight, "L_air", "single-scattered light reaching the eye", "radiance", ViewKind::Colour, 0.0f, 1.0f,
                 mAirlight));
             out.intermediates.push_back(render::textureIntermediate(
                 kVisibility, "Visibility", "mean over the gathered VPLs of the phi-uniform lit fraction of the ray", "",
                 ViewKind::Scalar, 0.0f, 1.0f, mVisibility));
-            out.airlight = render::readRgb(mAirlight);
+            render::readBackAirlight(input, mAirlight, out);
         }))
         return out;
 
     // ---- compose ----
-    stages.run(kComposeIndex, [&] { mView.compose(scene, mAirlight, out.intermediates, "ivsv"); },
-               [&] { out.final = mView.readFinal(); });
+    mView.runCompose(stages, kComposeIndex, input, mAirlight, out, "ivsv");
     return out;
 }
 

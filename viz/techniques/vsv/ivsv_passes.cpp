@@ -168,8 +168,9 @@ void IvsvTechnique::addOtherLights(const FrameInput& input) {
     in.scene = &mOtherLightsScene;
     in.width = input.width;
     in.height = input.height;
-    in.settings = completeSettings(*mVsv, {{"voxels", double(mSettings.voxels)}});
+    setRunSettings(in, completeSettings(*mVsv, {{"voxels", double(mSettings.voxels)}}));
     in.stopAfterStage = 4;  // vsv.gather: L_air exists, no compose needed
+    in.readBack = false;    // the add reads the inner L_air's texture
     mAdder.add(mAirlight, mVsv->run(in), vsv_detail::kAirlight);
 }
 

@@ -31,8 +31,7 @@ inline std::optional<StiffBound> stiffBound(const std::string& caseClass) {
         {"phase", {0.045, "each lit run integrates the HG lobe analytically; g = 0.99 peaks near the solar "
                           "epipole, where the sun's light lines are coarsest"}},
     };
-    const auto it = kBounds.find(caseClass);
-    return it == kBounds.end() ? std::nullopt : std::optional<StiffBound>(it->second);
+    return boundOf(kBounds, caseClass);
 }
 
 }  // namespace viz::vsv

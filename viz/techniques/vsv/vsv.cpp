@@ -201,7 +201,7 @@ FrameOutput VsvTechnique::run(const FrameInput& input) {
                 out.intermediates.back().sentinels = {{0.5f, "beyond the fragment: not read"}};
             }
             out.intermediates.push_back(render::textureIntermediate(
-                kAirlight, "L_air", "single-scattered light reaching the eye", "radiance", ViewKind::Color, 0.0f, 1.0f,
+                kAirlight, "L_air", "single-scattered light reaching the eye", "radiance", ViewKind::Colour, 0.0f, 1.0f,
                 mAirlight));
             out.intermediates.push_back(render::textureIntermediate(
                 kVisibility, "Visibility",
@@ -213,19 +213,17 @@ FrameOutput VsvTechnique::run(const FrameInput& input) {
                                                  {"visibility of the fragment", "", ViewKind::Scalar, 0.0f, 1.0f},
                                                  {"alpha cell", "cells", ViewKind::Scalar, 0.0f, float(size.alpha)},
                                                  {"theta cell", "cells", ViewKind::Scalar, 0.0f, float(size.theta)}};
-            out.airlight = render::readRgb(mAirlight);
+            render::readBackAirlight(input, mAirlight, out);
         });
     if (!toCompose) return out;
 
-    stages.run(kComposeIndex, [&] { mView.compose(scene, mAirlight, out.intermediates, "vsv"); },
-               [&] { out.final = mView.readFinal(); });
+    mView.runCompose(stages, kComposeIndex, input, mAirlight, out, "vsv");
     return out;
 }
 
 Plan VsvTechnique::planFor(const scene::Scene& scene, const Settings& settings, int width, int height) const {
     const VsvSettings s = vsvParams().read(settings);
-    Plan p;
-    for (const StageInfo& st : mStages) p.stages.push_back({st.id, true, ""});
+    Plan p = planEveryStage(mStages);
     const std::vector<int> lights = shadedLights(scene);
     const bool hasArea = render::hasLightOfType(scene, scene::LightType::Area);
     if (lights.empty()) {

@@ -48,8 +48,9 @@ void VsvTechnique::addAreaLights(const FrameInput& input) {
     in.scene = &mAreaLightsScene;
     in.width = input.width;
     in.height = input.height;
-    in.settings = completeSettings(*mIvsv, {{"voxels", std::min(512.0, double(mSettings.voxels))}});
+    setRunSettings(in, completeSettings(*mIvsv, {{"voxels", std::min(512.0, double(mSettings.voxels))}}));
     in.stopAfterStage = 5;  // ivsv.gather: L_air exists, no compose needed
+    in.readBack = false;    // the add reads the inner L_air's texture
     mAdder.add(mAirlight, mIvsv->run(in), ivsv_detail::kAirlight);
 }
 

@@ -1,0 +1,50 @@
+// FrameInput::readBack: a caller that reads no CPU images (vsv's and ivsv's inner runs for each other's
+// lights) gets none, the same intermediates, and leaves the technique as it was for the next run.
+#include <gtest/gtest.h>
+
+#include "gl/technique_test_util.h"
+#include "scene/builtin_scenes.h"
+
+namespace viz::testing {
+namespace {
+
+class ReadBackTest : public TechniqueTest {};
+
+std::vector<std::string> idsOf(const FrameOutput& out) {
+    std::vector<std::string> ids;
+    for (const Intermediate& i : out.intermediates) ids.push_back(i.id);
+    return ids;
+}
+
+// tv-room has an area light next to its other lights, so vsv and ivsv each run the other inside.
+TEST_F(ReadBackTest, ARunWithoutReadBackReturnsNoImagesAndPublishesTheSameViews) {
+    const scene::Scene scene = scene::makeBuiltinScene("tv-room");
+    int gpu = 0;
+    for (const std::string& id : techniqueIds()) {
+        const auto t = makeTechnique(id);
+        if (!t->needsGl()) continue;
+        ++gpu;
+        const Settings given = id == "polyvol" ? Settings{{"shadow_map", 256}} : Settings{};
+        FrameInput in = frameInput(&scene, 48, 36, completeSettings(*t, given));
+        const FrameOutput full = t->run(in);
+        ASSERT_EQ(full.airlight.pixels.size(), 48u * 36u * 3u) << id;
+        ASSERT_EQ(full.final.pixels.size(), 48u * 36u * 3u) << id;
+        const std::vector<std::string> shown = idsOf(full);
+
+        in.readBack = false;
+        const FrameOutput bare = t->run(in);
+        EXPECT_TRUE(bare.airlight.pixels.empty()) << id;
+        EXPECT_TRUE(bare.final.pixels.empty()) << id;
+        EXPECT_EQ(idsOf(bare), shown) << id;
+        EXPECT_EQ(bare.lastStageRun, full.lastStageRun) << id;
+
+        in.readBack = true;
+        const FrameOutput again = t->run(in);
+        EXPECT_EQ(again.airlight.pixels, full.airlight.pixels) << id;
+        EXPECT_EQ(again.final.pixels, full.final.pixels) << id;
+    }
+    EXPECT_EQ(gpu, 6);
+}
+
+}  // namespace
+}  // namespace viz::testing
