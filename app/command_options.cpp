@@ -69,6 +69,12 @@ CommonOptions parseOptions(Args& args, const std::string& command, const std::st
             o.frames = int(frames);
             o.framesGiven = true;
         } else if (flag == "--path") o.path = args.next(flag);
+        else if (flag == "--path-frames") {
+            const double frames = parseNumber(args.next(flag), flag);
+            if (frames != std::floor(frames) || frames < 2 || frames > 100000)
+                throw InputError("--path-frames must be a whole number from 2 to 100000");
+            o.pathFrames = int(frames);
+        }
         else if (flag == "--exr") o.exr = true;
         else if (flag == "--fps") {
             const double fps = parseNumber(args.next(flag), flag);

@@ -34,7 +34,8 @@ struct CommonOptions {
     bool sceneGiven = false, techniqueGiven = false, sizeGiven = false;
     std::string preset = "default";  // --preset: "paper" starts from the technique's paperSettings()
     bool framesGiven = false;
-    std::string path;  // animate only: the motion path (scene/motion_path.h)
+    std::string path;  // animate, gui: the motion path (scene/motion_path.h)
+    int pathFrames = 120;  // gui only: frames of the path's loop (--path-frames)
     int fps = 25;      // animate only
     bool exr = false;  // animate only: EXR frames beside the PNGs
 };

@@ -20,6 +20,7 @@
 #include "render_job.h"
 #include "scene/builtin_scenes.h"
 #include "scene/gltf_writer.h"
+#include "scene/motion_path.h"
 #include "scene/scene_source.h"
 #include "session_state.h"
 #include "techniques/registry.h"
@@ -74,7 +75,7 @@ lights as KHR_lights_punctual, area lights as emissive meshes, the medium in sce
 
 constexpr const char* kGuiHelp = R"(usage: airlight gui [--scene S] [--technique T] [--size WxH] [--set name=value]...
                     [--state FILE] [--script FILE] [--export-dir DIR] [--screenshot OUT.png [--frames N]]
-                    [--lesson NAME] [--ui-scale S]
+                    [--lesson NAME] [--ui-scale S] [--path P [--path-frames N]]
 
 Opens the window: the final frame beside one intermediate. Its keys are listed below.
 
@@ -85,6 +86,11 @@ Opens the window: the final frame beside one intermediate. Its keys are listed b
                       screenshot PATH; one per line), then exit (after writing --screenshot if given)
 --ui-scale S          text and widgets S times larger (0.5 to 4; default 1, times the display's HiDPI
                       scale) for a projector; Ctrl+= and Ctrl+- change it in the window, F11 is full screen
+--path P              what P (play) moves: a motion path as 'airlight animate' takes it (camera-orbit:30deg,
+                      camera-dolly:20%, light-orbit, light-sweep:20deg, several joined by commas, or a
+                      keyframe .json), looping over --path-frames N frames (default 120) at 30 frames a
+                      second of play, from the camera and lights as they are when play starts. Without
+                      it P turns the first light about its aim point.
 --export-dir DIR      where E (the intermediate view as EXR and PNG) and F12 (the window) write
                       (default airlight-exports/)
 --lesson NAME         open the lesson player beside the views: lessons/NAME.md or a path to a .md file
@@ -308,7 +314,7 @@ int runGuiCommand(Args& args) {
         std::printf("\nKeys and mouse (where a key applies only in one context, it is named):\n%s", plainKeyTable().c_str());
         return 0;
     }
-    CommonOptions o = parseOptions(args, "gui", " --scene --technique --size --set --preset --screenshot --frames --state --script --export-dir --lesson --no-default-light --ui-scale ");
+    CommonOptions o = parseOptions(args, "gui", " --scene --technique --size --set --preset --screenshot --frames --state --script --export-dir --lesson --no-default-light --ui-scale --path --path-frames ");
     if (!o.screenshot.empty() && viz::extensionOf(o.screenshot) != ".png")
         throw InputError("--screenshot '" + o.screenshot + "' must end in .png");
     if (o.frames < 1) throw InputError("--frames must be at least 1");
@@ -343,6 +349,9 @@ int runGuiCommand(Args& args) {
     g.sizeGiven = o.sizeGiven;
     if (!o.exportDir.empty()) g.exportDir = o.exportDir;
     g.uiScale = o.uiScale;
+    if (!o.path.empty()) viz::scene::parseMotionPath(o.path);  // a bad path fails before the window opens
+    g.path = o.path;
+    g.pathFrames = o.pathFrames;
     // An unknown lesson name fails here; a malformed lesson file opens and shows its error in the panel.
     if (!o.lesson.empty()) g.lesson = findLesson(o.lesson);
     return runGui(g);

@@ -63,6 +63,10 @@ GuiApp::GuiApp(const GuiOptions& options, viz::scene::Scene scene, viz::Window& 
         for (int i = 0; i < count; ++i) dropped.emplace_back(paths[i]);
         static_cast<GuiApp*>(glfwGetWindowUserPointer(w))->onDrop(dropped);
     });
+    if (!options.path.empty()) {
+        mAnimation.path = viz::scene::parseMotionPath(options.path);
+        mAnimation.pathFrames = options.pathFrames;
+    }
     mSceneWatch.watch(mOptions.scene);
     mGeometryHash = viz::scene::geometryContentHash(mScene);
     selectTechnique(mCurrent);
@@ -171,6 +175,18 @@ void GuiApp::togglePlaying() {
         return;
     }
     mAnimation.light.reset();
+    if (mAnimation.path) {
+        // Every frame is the path's function of where play starts: the camera and lights as they are now.
+        // Playing again after a pause continues the loop, unless the camera or the lights were moved in
+        // between: then the loop starts again from there.
+        if (!mAnimation.pathStart || !mAnimation.pathShown || !samePose(*mAnimation.pathShown, mController.camera(), mScene.lights)) {
+            mAnimation.pathStart = viz::scene::Pose{mController.camera(), mScene.lights};
+            mAnimation.centre = mController.target();
+            mAnimation.pathClock = mAnimation.clock;
+            mAnimation.pathFrame = 0;
+        }
+        return;
+    }
     if (!mScene.lights.empty() && mScene.lights[0].type != viz::scene::LightType::Area) {
         mAnimation.light = mScene.lights[0];
         mAnimation.centre = mController.target();
@@ -186,6 +202,11 @@ void GuiApp::advanceAnimation(double dt) {
         mSettings[viz::kAnimationTime] = mAnimation.clock;
         mDirty = true;
     }
+    if (mAnimation.path && mAnimation.pathStart) {
+        // 30 path frames per second of play (under automation, one per window frame).
+        const int frame = int(std::llround((mAnimation.clock - mAnimation.pathClock) * 30.0) % mAnimation.pathFrames);
+        if (frame != mAnimation.pathFrame) playPathFrame(frame);
+    }
     if (mAnimation.light && (technique().needsGl() || mComparison.isOpen()) && !mScene.lights.empty()) {
         mAnimation.turn = std::fmod(mAnimation.turn + dt / kLightTurnSeconds, 1.0);
         mScene.lights[0] = orbitLight(*mAnimation.light, mAnimation.centre, mAnimation.turn);
@@ -193,6 +214,29 @@ void GuiApp::advanceAnimation(double dt) {
     }
     // The comparison grid plays the same frame for every technique.
     if (mComparison.isOpen()) mComparison.playFrame(mScene, mAnimation.frame, comparisonRunner());
+}
+
+void GuiApp::playPathFrame(int frame) {
+    // What the path does not move stays as the user leaves it while playing (a light dragged during a
+    // camera orbit); what it moves is its function of the start.
+    viz::scene::Pose start = *mAnimation.pathStart;
+    if (!mAnimation.path->movesCamera()) start.camera = mController.camera();
+    if (!mAnimation.path->movesLight()) start.lights = mScene.lights;
+    viz::scene::applyPose(start, mScene);
+    try {
+        const viz::scene::Pose pose = viz::scene::poseAt(*mAnimation.path, mScene, frame, mAnimation.pathFrames);
+        viz::scene::applyPose(pose, mScene);
+        if (mAnimation.path->movesCamera()) mController.place(pose.camera, mAnimation.centre);
+        mAnimation.pathFrame = frame;
+        mAnimation.pathShown = viz::scene::Pose{mController.camera(), mScene.lights};
+    } catch (const viz::InputError& e) {
+        // A scene picked or reloaded since start that the path cannot move: play stops, saying why.
+        mError = "--path: " + std::string(e.what());
+        mAnimation.playing = false;
+        mAnimation.pathStart.reset();
+        mAnimation.pathShown.reset();
+    }
+    mDirty = true;
 }
 
 void GuiApp::selectTechnique(int index) {
@@ -366,6 +410,8 @@ int runGui(const GuiOptions& options) {
     viz::scene::Scene scene = viz::scene::loadScene(effective.scene, options.load);
     if (session.medium && effective.scene == session.scene) scene.medium = *session.medium;
     if (effective.scene == session.scene) applyLightPlacements(session.lights, scene);
+    // A path that cannot move this scene (a light motion without a movable light) fails here.
+    if (!options.path.empty()) (void)viz::scene::poseAt(viz::scene::parseMotionPath(options.path), scene, 1, options.pathFrames);
     // Each --set must name a parameter of some technique (the window switches between them), and the
     // values must suit the technique the window opens with.
     std::vector<std::unique_ptr<viz::Technique>> all;

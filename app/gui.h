@@ -36,6 +36,10 @@ struct GuiOptions {
     // A lesson's .md file: the lesson player's panel opens beside the views (lesson_player.h). With
     // sizeGiven, every step renders at width x height.
     std::string lesson;
+    // --path: what P plays (a motion path, scene/motion_path.h) and the frames of its loop; empty: the
+    // first light's orbit.
+    std::string path;
+    int pathFrames = 120;
     float uiScale = 1.0f;  // --ui-scale: times the display's content scale (Ctrl+= / Ctrl+- change it)
     bool loadStateAtStart = false;
     bool sceneGiven = false, techniqueGiven = false, sizeGiven = false;

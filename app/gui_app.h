@@ -124,16 +124,16 @@ private:
     void showInFocusedView(const std::string& id);
     void setLessonSetting(const std::string& name, double value) override;
 
-    // ---- animation (P): the first light circles its aim point, and a technique with a `time`
-    // parameter (slices' scrolling noise) follows the clock. GPU techniques run every frame while it plays;
-    // the reference (seconds per frame on its worker) keeps the light where it is. Pausing keeps the
-    // state where it is; playing again continues from there.
+    // ---- animation (P): the first light circles its aim point (or --path's motion plays), a `time`
+    // parameter (slices' noise) follows the clock. GPU techniques run every frame while it plays; the
+    // reference keeps the light where it is. Pausing keeps the state; playing again continues from there.
     static constexpr double kLightTurnSeconds = 8.0;
 
     void togglePlaying();
     // Runs a technique for the comparison grid with the window's settings for it.
     ComparisonGrid::RunTechnique comparisonRunner();
     void advanceAnimation(double dt);
+    void playPathFrame(int frame);  // --path: frame `frame` of the loop, from where play started
     void setLessonLight(const viz::scene::Light& light) override;
 
     // Camera, view and exposure of the session (the scene, medium and technique are applied before).

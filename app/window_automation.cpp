@@ -226,6 +226,11 @@ void GuiApp::writeSidecar(const std::string& path) {
                             {"temporal_pairs", mAnimation.temporal.pairs()}};
     // The temporal view's score, once there is one (two frames played).
     if (std::isfinite(mAnimation.temporal.score())) sidecar["animation"]["temporal_change_rms"] = mAnimation.temporal.score();
+    // --path: the motion and the loop's frame shown.
+    if (mAnimation.path)
+        sidecar["animation"]["path"] = {{"text", mAnimation.path->text},
+                                        {"frames", mAnimation.pathFrames},
+                                        {"frame", mAnimation.pathFrame}};
     // The scene and parameter panel under the grid (null when there is no room for it).
     sidecar["parameters_panel"] = mParamsRect.size().y > 0.0f
                                       ? nlohmann::json::array({mParamsRect.min.x, mParamsRect.min.y, mParamsRect.max.x,
