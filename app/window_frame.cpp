@@ -75,6 +75,11 @@ void GuiApp::draw() {
     const bool flying = mode == CameraController::Mode::Fly;
     const std::string help = (flying ? std::string("camera: FLY   ")
                                      : "camera: ORBIT (target " + format("%.2f", mController.targetDistance()) + ")   ") +
+                             (mAnimation.path ? "path " + mAnimation.path->text + " frame " +
+                                                    std::to_string(mAnimation.pathFrame + 1) + "/" +
+                                                    std::to_string(mAnimation.pathFrames) +
+                                                    (mAnimation.playing ? " (P pauses)   " : " (P plays)   ")
+                                              : std::string()) +
                              helpLine(HelpLine::Frame, flying);
     const float bottom = float(fb.y) - 2.0f * line - pad;
     dl.textClipped({pad, bottom}, help, kDim, float(fb.x) - pad);
