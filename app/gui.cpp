@@ -179,12 +179,9 @@ void GuiApp::togglePlaying() {
         // Every frame is the path's function of where play starts: the camera and lights as they are now.
         // Playing again after a pause continues the loop, unless the camera or the lights were moved in
         // between: then the loop starts again from there.
-        if (!mAnimation.pathStart || !mAnimation.pathShown || !samePose(*mAnimation.pathShown, mController.camera(), mScene.lights)) {
-            mAnimation.pathStart = viz::scene::Pose{mController.camera(), mScene.lights};
-            mAnimation.centre = mController.target();
-            mAnimation.pathClock = mAnimation.clock;
-            mAnimation.pathFrame = 0;
-        }
+        if (!mAnimation.pathStart || !mAnimation.pathShown || mAnimation.pathScene != mGeometryHash ||
+            !samePose(*mAnimation.pathShown, mController.camera(), mScene.lights))
+            startPathLoop();
         return;
     }
     if (!mScene.lights.empty() && mScene.lights[0].type != viz::scene::LightType::Area) {
@@ -202,7 +199,11 @@ void GuiApp::advanceAnimation(double dt) {
         mSettings[viz::kAnimationTime] = mAnimation.clock;
         mDirty = true;
     }
-    if (mAnimation.path && mAnimation.pathStart) {
+    // A path moves what every technique sees; the reference (seconds per frame on its worker) keeps the
+    // still frame, as with the light's orbit, unless the comparison grid plays.
+    if (mAnimation.path && mAnimation.pathStart && (technique().needsGl() || mComparison.isOpen())) {
+        // Another scene loaded while playing: the loop starts again from it.
+        if (mAnimation.pathScene != mGeometryHash) startPathLoop();
         // 30 path frames per second of play (under automation, one per window frame).
         const int frame = int(std::llround((mAnimation.clock - mAnimation.pathClock) * 30.0) % mAnimation.pathFrames);
         if (frame != mAnimation.pathFrame) playPathFrame(frame);
@@ -214,6 +215,15 @@ void GuiApp::advanceAnimation(double dt) {
     }
     // The comparison grid plays the same frame for every technique.
     if (mComparison.isOpen()) mComparison.playFrame(mScene, mAnimation.frame, comparisonRunner());
+}
+
+void GuiApp::startPathLoop() {
+    mAnimation.pathStart = viz::scene::Pose{mController.camera(), mScene.lights};
+    mAnimation.pathShown.reset();
+    mAnimation.pathScene = mGeometryHash;
+    mAnimation.centre = mController.target();
+    mAnimation.pathClock = mAnimation.clock;
+    mAnimation.pathFrame = 0;
 }
 
 void GuiApp::playPathFrame(int frame) {

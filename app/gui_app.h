@@ -128,12 +128,12 @@ private:
     // parameter (slices' noise) follows the clock. GPU techniques run every frame while it plays; the
     // reference keeps the light where it is. Pausing keeps the state; playing again continues from there.
     static constexpr double kLightTurnSeconds = 8.0;
-
     void togglePlaying();
     // Runs a technique for the comparison grid with the window's settings for it.
     ComparisonGrid::RunTechnique comparisonRunner();
     void advanceAnimation(double dt);
-    void playPathFrame(int frame);  // --path: frame `frame` of the loop, from where play started
+    void startPathLoop();           // --path: frame 0 is the camera and lights as they are now
+    void playPathFrame(int frame);  // --path: frame `frame` of the loop, from where it started
     void setLessonLight(const viz::scene::Light& light) override;
 
     // Camera, view and exposure of the session (the scene, medium and technique are applied before).

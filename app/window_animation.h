@@ -3,6 +3,7 @@
 // temporal view's monitor and the focused view's recording (E). GuiApp owns one; gui.cpp advances it.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <vector>
 
@@ -44,6 +45,7 @@ struct WindowAnimation {
     std::optional<viz::scene::Pose> pathStart;
     std::optional<viz::scene::Pose> pathShown;  // the pose the last path frame set
     double pathClock = 0.0;                     // `clock` when the loop started
+    std::uint64_t pathScene = 0;                // the scene's geometry hash then
     int pathFrame = 0;
     double recordStart = 0.0;                 // `clock` when the recording started
 };

@@ -208,6 +208,25 @@ TEST_F(GuiAnimation, APausedPathContinuesUnlessTheCameraMoved) {
     EXPECT_GE(frameOf(restarted), 1);
 }
 
+// Picking another scene while a light path plays starts the loop again from that scene's own light (the
+// previous scene's light is never carried over): grate's spot, then colonnade's sun, swept.
+TEST_F(GuiAnimation, APathFollowsASceneChangeWhilePlaying) {
+    const fs::path script = writeText("pick.txt", "frames 1\nkey P\nframes 3\nclick scene\nframes 1\n"
+                                                  "click \"scene/colonnade\"\nframes 4\nscreenshot " + path("after.png").string() + "\n");
+    const RunResult r = run("gui --scene grate --technique raymarch --size 24x18 --set samples=4 --path light-sweep:20deg "
+                            "--path-frames 12 --script " + script.string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const nlohmann::json after = nlohmann::json::parse(readFile(path("after.json")));
+    EXPECT_EQ(after.at("scene"), "colonnade");
+    EXPECT_TRUE(after.at("animation").at("playing").get<bool>());
+    const nlohmann::json& light = after.at("lights")[0];
+    EXPECT_EQ(light.at("name"), "sun");
+    EXPECT_EQ(light.at("intensity").get<double>(), 10.0);
+    const int frame = after.at("animation").at("path").at("frame").get<int>();
+    EXPECT_GE(frame, 1) << "the sun is being swept";
+    EXPECT_LT(frame, after.at("animation").at("frame").get<int>()) << "the loop started again at the pick";
+}
+
 // A path that is not one, or that cannot move the scene (tv-room's first light is an area light, which no
 // light motion moves), is a one-line error before the window opens.
 TEST_F(GuiAnimation, ABadPathIsAOneLineErrorBeforeTheWindowOpens) {
