@@ -19,7 +19,8 @@ StageRunner::StageRunner(const std::vector<StageInfo>& stages, const FrameInput&
     : mStages(stages), mOut(out), mReuse(reuse), mTimer(timer) {
     // The controls reach a run as FrameInput::controls only; a request built without setRunSettings or
     // frameInput would leave them in the settings, where no technique reads them.
-    for (const auto& [name, value] : controlSettings({}))
+    static const Settings kControlNames = controlSettings({});  // built once, not per run
+    for (const auto& [name, value] : kControlNames)
         VIZ_CHECK(!input.settings.contains(name), "FrameInput::settings holds the control '" + name +
                                                       "': build the run request with setRunSettings or frameInput");
     const int last = int(stages.size()) - 1;
