@@ -309,7 +309,14 @@ std::string animationFigure(const LessonStep& s, RenderJob& job, std::size_t k, 
     if (s.animation.kind == LessonAnimation::Kind::Substeps) {
         const int stage = stageIndex(job.technique(), s.stage);
         substepParam = job.technique().stages()[std::size_t(stage)].substepParam;
-        const std::vector<double> all = job.technique().substepValues(stage, viz::completeSettings(job.technique(), s.settings));
+        std::vector<double> all = job.technique().substepValues(stage, viz::completeSettings(job.technique(), s.settings));
+        // The still state's run knows the stage's own count where it is fewer (minmax's walk: its nodes).
+        const auto counted = job.lastOutput().substepCounts.find(stage);
+        if (counted != job.lastOutput().substepCounts.end() && counted->second < int(all.size())) {
+            const double whole = all.back();
+            all.resize(std::size_t(std::max(counted->second, 1)));
+            all.back() = whole;
+        }
         const int count = int(all.size());
         frames = std::min(count, 48);
         for (int i = 0; i < frames; ++i)

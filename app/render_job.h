@@ -39,6 +39,7 @@ public:
     RenderJob& operator=(const RenderJob&) = delete;
 
     const viz::FrameOutput& run();
+    const viz::FrameOutput& lastOutput() const { return mOutput; }
     // Frame index along an animation for the next run() (FrameInput::frame).
     void setFrame(int frame) { mInput.frame = frame; }
     // One setting for the next run() (an animated sub-step parameter); the name must be the technique's.

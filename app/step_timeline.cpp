@@ -17,8 +17,15 @@ constexpr glm::vec4 kMark = viz::ui::theme::kAccent;
 int lastStage(const std::vector<TimelineSegment>& segments) { return segments.empty() ? -1 : segments.back().stage; }
 }  // namespace
 
+int substepCountOf(const viz::Technique& technique, int stage, const viz::Settings& settings,
+                   const std::map<int, int>& runCounts) {
+    const int listed = int(technique.substepValues(stage, settings).size());
+    const auto it = runCounts.find(stage);
+    return listed > 0 && it != runCounts.end() ? std::clamp(it->second, 1, listed) : listed;
+}
+
 std::vector<TimelineSegment> timelineSegments(const viz::Technique& technique, const viz::Settings& settings,
-                                              float x0, float x1) {
+                                              float x0, float x1, const std::map<int, int>& runCounts) {
     std::vector<TimelineSegment> segments;
     const auto& stages = technique.stages();
     float total = 0.0f;
@@ -27,7 +34,7 @@ std::vector<TimelineSegment> timelineSegments(const viz::Technique& technique, c
         TimelineSegment s;
         s.stage = k;
         s.label = stages[std::size_t(k)].label;
-        s.substeps = int(technique.substepValues(k, settings).size());
+        s.substeps = substepCountOf(technique, k, settings, runCounts);
         weight.push_back(s.substeps > 1 ? 2.0f : 1.0f);
         total += weight.back();
         segments.push_back(s);

@@ -3,6 +3,7 @@
 // hit-testing are plain functions (tested); drawing goes into the window's draw lists.
 #pragma once
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -19,8 +20,12 @@ struct TimelineSegment {
 };
 
 // Segments for `technique`'s stages along [x0, x1]: a stage with sub-steps is wider (more to point at).
+// `runCounts`: the last run's own sub-step counts (FrameOutput::substepCounts), where they are fewer.
 std::vector<TimelineSegment> timelineSegments(const viz::Technique& technique, const viz::Settings& settings,
-                                              float x0, float x1);
+                                              float x0, float x1, const std::map<int, int>& runCounts = {});
+// A stage's sub-steps: as substepValues lists them, or the run's own count where it is fewer.
+int substepCountOf(const viz::Technique& technique, int stage, const viz::Settings& settings,
+                   const std::map<int, int>& runCounts);
 // The cursor under horizontal position x (clamped to the ends): the last stage whole is the complete
 // frame ({-1, 0}); inside a stage with sub-steps, the sub-step under x.
 StepCursor timelineCursorAt(const std::vector<TimelineSegment>& segments, float x);

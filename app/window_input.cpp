@@ -10,7 +10,8 @@ int GuiApp::stageShown() const {
 }
 
 std::pair<int, int> GuiApp::substepState() const {
-    const int count = int(technique().substepValues(stageShown(), mSettings).size());
+    // The last run's own count where it is fewer (minmax's walk: the picked ray's nodes).
+    const int count = substepCountOf(technique(), stageShown(), mSettings, mOutput.substepCounts);
     if (count == 0) return {0, 0};
     return {mCursor.substep <= 0 ? count : std::min(mCursor.substep, count), count};
 }
@@ -71,7 +72,7 @@ void GuiApp::setSubstepAt(int k) {
 }
 
 void GuiApp::drawStepTimeline() {
-    mTimeline = timelineSegments(technique(), mSettings, mTimelineRect.min.x, mTimelineRect.max.x);
+    mTimeline = timelineSegments(technique(), mSettings, mTimelineRect.min.x, mTimelineRect.max.x, mOutput.substepCounts);
     drawTimeline(*mBackground, *mDrawList, mTimelineRect, mTimeline, mCursor, mScale);
     mNamedRects["timeline"] = mTimelineRect;
     mHits.push_back({mTimelineRect, [this] {

@@ -397,6 +397,37 @@ TEST_F(GuiCli, SteppingStopsAtAStageAndInsideItAtASubstep) {
     EXPECT_EQ(click.at("stage"), "slices.shadow_maps") << "the timeline's left end is the first stage";
 }
 
+// minmax's walk is stepped node by node as far as the picked ray's walk goes, not a fixed 64 sub-steps (the
+// centre's walk on grate has more): End stops on its last node N, D past it says so, and `render` agrees
+// that the walk has N nodes:
+// trace_steps=N draws the whole walk (the image of trace_steps=0) and trace_steps=N-1 does not.
+TEST_F(GuiCli, SteppingMinmaxsWalkEndsOnThePickedRaysLastNode) {
+    const fs::path script = writeText("walk.txt", "key Shift+S\nframes 1\nscreenshot " + path("first.png").string() +
+                                                      "\nkey End\nframes 1\nkey D\nframes 1\n");
+    const RunResult r = run("gui --scene grate --technique minmax --size 40x30 --script " + script.string() +
+                            " --screenshot " + path("end.png").string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const nlohmann::json first = nlohmann::json::parse(readFile(path("first.json")));
+    const nlohmann::json end = nlohmann::json::parse(readFile(path("end.json")));
+    EXPECT_EQ(first.at("stage"), "minmax.traverse");
+    EXPECT_EQ(first.at("substep"), 1);
+    const int nodes = first.at("substep_count").get<int>();
+    ASSERT_GE(nodes, 2) << "the picked pixel (the centre) is walked";
+    EXPECT_EQ(end.at("substep"), nodes);
+    EXPECT_EQ(end.at("substep_count"), nodes);
+    EXPECT_NE(end.at("notice").get<std::string>().find("already at the last sub-step"), std::string::npos) << end.at("notice");
+
+    const auto trace = [&](int steps) {
+        const fs::path out = path("trace" + std::to_string(steps) + ".exr");
+        EXPECT_EQ(run("render --scene grate --technique minmax --size 40x30 --layer minmax.trace --set trace_steps=" +
+                      std::to_string(steps) + " --out " + out.string()).exitCode, 0);
+        return readImage(out.string());
+    };
+    const Image whole = trace(0), last = trace(nodes), before = trace(nodes - 1);
+    EXPECT_EQ(last.pixels, whole.pixels) << "trace_steps=" << nodes << " draws every node of the walk";
+    EXPECT_NE(before.pixels, whole.pixels) << "trace_steps=" << nodes - 1 << " leaves the last node out";
+}
+
 // Stepping the vsv scan pass by pass and moving on leaves nothing behind: the complete frame afterwards is
 // the one `render` writes (the old window kept scan_passes=2 as a setting and drew a wrong gather).
 TEST_F(GuiCli, LeavingAStageRestoresTheCompleteFrame) {

@@ -116,6 +116,10 @@ struct FrameOutput {
     // note; the window shows the first in its header.
     std::vector<std::string> notes;
     int lastStageRun = -1;
+    // Stages whose number of sub-steps depends on the run, not on the settings alone (minmax's walk: the
+    // picked ray's nodes): stage index -> this run's count, at most what substepValues lists. A stage not
+    // in it has the listed count.
+    std::map<int, int> substepCounts;
     // The first stage this run computed (> 0: the earlier ones were carried over from the previous run
     // of the same instance, FrameInput::resumeAtStage; timing lists only the stages that ran).
     int firstStageRun = 0;

@@ -89,6 +89,12 @@ Image traceView(const std::vector<glm::vec2>& tree, float beta, float cEnd, int 
     return img;
 }
 
+int walkLength(const std::vector<glm::vec2>& tree, float beta, float cEnd) {
+    int visited = 0;
+    traverse(tree, beta, std::min(cEnd, float(tree.size() / 2)), [](const LitRun&) {}, [&](const VisitedNode&) { ++visited; });
+    return visited;
+}
+
 Image singularValuesView(const LowRank& lr) {
     Image img(kGrid, 64, 3);
     const double top = std::log10(std::max(lr.singularValues.front(), 1e-300));

@@ -30,6 +30,8 @@ Image pyramidView(const std::vector<glm::vec2>& tree, int levelsBuilt);
 // below one band per level with the nodes of the walk (minmax_tree.h traverse), the first `steps` (0: all):
 // green lit, red shadowed, grey mixed.
 Image traceView(const std::vector<glm::vec2>& tree, float beta, float cEnd, int steps);
+// The nodes that walk visits in all (what traceView draws with steps = 0; steps >= it draws them all).
+int walkLength(const std::vector<glm::vec2>& tree, float beta, float cEnd);
 
 // Singular values as log10 bars over 12 decades (kept ones green), and B_i / Gamma_i as curves.
 Image singularValuesView(const LowRank& lr);

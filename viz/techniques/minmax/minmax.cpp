@@ -68,7 +68,7 @@ MinmaxTechnique::MinmaxTechnique() {
         {kStageTraverse, "Traverse", "per pixel: walk the slice's tree, integrate the lit segments",
          {"integrand", "rank", "traversal", "point_lights", "spot_pieces", "epipole_radius", "march_samples",
           "pick_x", "pick_y", "trace_steps", "force_features"},
-         {kAirlight, kVisited, kNearMask, kRayCoords, kTrace}, kTraceSubsteps, "trace_steps"},
+         {kAirlight, kVisited, kNearMask, kRayCoords, kTrace}, 1, "trace_steps"},
         render::SceneViewPasses::composeStage("minmax"),
     };
     // The rectified maps and the trees stay in LightWork between runs.
@@ -77,13 +77,13 @@ MinmaxTechnique::MinmaxTechnique() {
 }
 
 std::vector<double> MinmaxTechnique::substepValues(int stage, const Settings& settings) const {
-    if (stage != kMipmapIndex) return Technique::substepValues(stage, settings);
+    if (stage != kMipmapIndex && stage != kTraverseIndex) return Technique::substepValues(stage, settings);
     const MinmaxSettings s = minmaxParams().read(settings);
     const int wanted = s.columns > 0 ? s.columns : s.shadowMap;
     const int columns = minmax::rectifiedColumns(wanted);
-    const int levels = std::bit_width(unsigned(columns)) - 1;
+    const int last = stage == kMipmapIndex ? std::bit_width(unsigned(columns)) - 1 : 2 * columns - 1;
     std::vector<double> values;
-    for (int k = 1; k < levels; ++k) values.push_back(double(k));
+    for (int k = 1; k < last; ++k) values.push_back(double(k));
     values.push_back(0.0);
     return values;
 }

@@ -56,9 +56,6 @@ constexpr const char* kPyramid = "minmax.pyramid";
 constexpr const char* kTrace = "minmax.trace";
 constexpr const char* kAirlight = "minmax.airlight";
 constexpr const char* kVisited = "minmax.visited";
-// Stepping the picked pixel's walk node by node: sub-steps 1 .. 63 show its first k nodes, the last the
-// whole walk (trace_steps = 0); walks are a few dozen nodes on the built-in scenes.
-constexpr int kTraceSubsteps = 64;
 constexpr const char* kNearMask = "minmax.near_epipole";
 constexpr const char* kRayCoords = "minmax.ray_coords";
 constexpr const char* kSingularValues = "minmax.singular_values";
@@ -130,9 +127,10 @@ class MinmaxTechnique final : public Technique {
 public:
     MinmaxTechnique();
 
-    // Stepping the mipmap level by level: mip_levels = 1 .. log2(columns) - 1, then 0 (all levels);
-    // the traversal default (trace_steps 1 .. kTraceSubsteps - 1, then 0 = the whole walk) comes from
-    // StageInfo.
+    // Stepping the mipmap level by level: mip_levels = 1 .. log2(columns) - 1, then 0 (all levels).
+    // Stepping the picked pixel's walk node by node: trace_steps = 1 .. 2 columns - 2, then 0 (the whole
+    // walk), a walk visiting each of the row's 2 columns - 1 nodes at most; each run says how many nodes
+    // the picked walk has (FrameOutput::substepCounts), and stepping ends there (about 80 on grate).
     std::vector<double> substepValues(int stage, const Settings& s) const override;
 
     std::string id() const override { return "minmax"; }

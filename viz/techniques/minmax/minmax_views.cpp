@@ -167,6 +167,9 @@ void MinmaxTechnique::publishTraverse(FrameOutput& out, const FrameInput& input)
     glGetTextureSubImage(mRayCoords.id(), 0, px.x, input.height - 1 - px.y, 0, 1, 1, 1, GL_RGBA, GL_FLOAT,
                          sizeof coords, coords);
     const int row = std::clamp(int(coords[0]), 0, w.setup.frame.slices - 1);
+    const std::vector<glm::vec2> tree = readTreeRow(w.tree, row);
+    // Stepping the walk goes as far as it has nodes (a walk of one node or none is one sub-step).
+    out.substepCounts[kTraverseIndex] = std::max(1, minmax::walkLength(tree, coords[1], coords[2]));
     out.intermediates.push_back(cpuIntermediate(
         kTrace, "Picked ray vs heightfield",
         "top: S of the picked pixel's slice as a heightfield over columns (grey; a ray is lit where it passes "
@@ -174,7 +177,7 @@ void MinmaxTechnique::publishTraverse(FrameOutput& out, const FrameInput& input)
         "end; below: the nodes the walk visited (CPU mirror of the shader, first trace_steps), one band per "
         "level, green lit, red shadowed, grey mixed. A pixel marched near the epipole has no walk (row 0, "
         "beta 0 shown)", ViewKind::Colour,
-        std::make_shared<Image>(minmax::traceView(readTreeRow(w.tree, row), coords[1], coords[2],
+        std::make_shared<Image>(minmax::traceView(tree, coords[1], coords[2],
                                                   int(substepLimit(input, kTraverseIndex))))));
     out.intermediates.back().rayView = true;
     out.intermediates.back().picture = true;
