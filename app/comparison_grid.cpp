@@ -67,20 +67,21 @@ void ComparisonGrid::runTechniques(const RunTechnique& run) {
     mExposure = std::log2(autoExposure(mReference));
 }
 
-void ComparisonGrid::playFrame(const viz::scene::Scene& moved, int frame, const RunTechnique& run) {
+void ComparisonGrid::playFrame(const viz::scene::Scene& moved, int frame, const RunTechnique& run, bool followCamera,
+                               std::shared_ptr<const viz::Image> reference) {
     if (mWaiting || mDue || mTiles.empty()) return;  // the still frame first
     if (mPlayedFrames == 0)
         for (ComparisonTile& tile : mTiles)
             if (tile.technique != "reference" && tile.failure.empty()) tile.temporal.add(tile.lastAirlight);
     ++mPlayedFrames;
     viz::scene::Scene scene = moved;
-    scene.camera = mScene.camera;
+    if (!followCamera) scene.camera = mScene.camera;
     for (ComparisonTile& tile : mTiles) {
         if (tile.technique == "reference" || !tile.failure.empty()) continue;
         try {
             const viz::FrameOutput out = run(tile.technique, scene, mSize, frame);
             tile.playMilliseconds = out.timing.totalMilliseconds();
-            tile.temporal.add(out.airlight);
+            tile.temporal.add(out.airlight, reference);
             tile.lastAirlight = out.airlight;
             uploadImage(tile.pane, out.airlight);
         } catch (const std::exception& e) {
@@ -125,12 +126,14 @@ nlohmann::json ComparisonGrid::toJson() const {
                          {"error", tileErrorText(t.error)},
                          {"failure", t.failure},
                          {"played_frames", mPlayedFrames},
-                         {"change_pairs", t.temporal.pairs()}});
+                         {"change_pairs", t.temporal.pairs()},
+                         {"error_change_pairs", t.temporal.errorPairs()}});
     // Figures only where they are defined (the caption says why one is not).
     for (std::size_t i = 0; i < mTiles.size(); ++i) {
         if (std::isfinite(mTiles[i].error.relativeL2)) tiles[i]["relative_l2"] = mTiles[i].error.relativeL2;
         if (std::isfinite(mTiles[i].error.maxAbsolute)) tiles[i]["max_abs"] = mTiles[i].error.maxAbsolute;
         if (std::isfinite(mTiles[i].temporal.score())) tiles[i]["change_rms"] = mTiles[i].temporal.score();
+        if (std::isfinite(mTiles[i].temporal.errorScore())) tiles[i]["error_change_rms"] = mTiles[i].temporal.errorScore();
     }
     return tiles;
 }

@@ -4,9 +4,11 @@
 // the frame) while the window stays responsive; once it is in, the window runs the GPU techniques on its
 // own thread (they need its GL context). The grid is a snapshot: it does not follow later changes, except
 // while the window's animation plays (P): then every GPU technique renders each played frame side by side
-// (the light moving as in the window, FrameInput::frame advancing), each tile with its run time and the
-// running change of its L_air (temporal_monitor.h); the reference tile keeps the still frame, so there is
-// no error figure while playing. When play stops the tiles show the still frame again.
+// (the lights moving as in the window, and the camera too along a --path that moves it; FrameInput::frame
+// advancing), each tile with its run time and the running change of its L_air (temporal_monitor.h). The
+// reference tile keeps the still frame; along a --path the window renders the reference on the loop's
+// frames (path_reference.h), and each tile also scores the change of its error against them, the
+// flicker `report --temporal` ranks by. When play stops the tiles show the still frame again.
 #pragma once
 
 #include <functional>
@@ -61,15 +63,19 @@ public:
     // Runs every technique but the reference twice and keeps the second run (the first compiles shaders
     // and allocates), its time and its error against the reference.
     void runTechniques(const RunTechnique& run);
-    // Playing (the reference is in): every technique but the reference once on `moved` (the snapshot's
-    // camera, the window's moving lights) as frame `frame`; its tile shows it with its time and running
-    // change. stopPlaying() shows the still frame again (runTechniques on the snapshot).
-    void playFrame(const viz::scene::Scene& moved, int frame, const RunTechnique& run);
+    // Playing (the reference is in): every technique but the reference once on `moved` (the window's
+    // moving lights; its camera with `followCamera`, else the snapshot's) as frame `frame`; its tile shows
+    // it with its time and running change, and the change of its error where `reference` (the reference on
+    // this frame at the grid's size and camera) is known. stopPlaying() shows the still frame again
+    // (runTechniques on the snapshot).
+    void playFrame(const viz::scene::Scene& moved, int frame, const RunTechnique& run, bool followCamera = false,
+                   std::shared_ptr<const viz::Image> reference = nullptr);
     bool playing() const { return mPlayedFrames > 0; }
     int playedFrames() const { return mPlayedFrames; }
     void stopPlaying(const RunTechnique& run);
-    // The snapshot's scene (its camera is the one compared).
+    // The snapshot's scene (its camera is the one compared) and the tiles' image size.
     const viz::scene::Scene& scene() const { return mScene; }
+    glm::ivec2 size() const { return mSize; }
 
     std::vector<ComparisonTile>& tiles() { return mTiles; }
     const std::vector<ComparisonTile>& tiles() const { return mTiles; }

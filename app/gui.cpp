@@ -151,7 +151,8 @@ int GuiApp::run() {
         ++mFramesDrawn;
         if (!mOptions.script.empty()) {
             // Each frame runs the script's next actions; the window closes when it is done.
-            if (mHaveOutput && !mWorker->progress().busy && !otherPending() && !mComparison.pending() && !stepScript()) {
+            if (mHaveOutput && !mWorker->progress().busy && !otherPending() && !mComparison.pending() &&
+                !mAnimation.reference.busy() && !stepScript()) {
                 if (!mOptions.screenshot.empty()) writeScreenshot(mOptions.screenshot);
                 return 0;
             }
@@ -171,6 +172,7 @@ void GuiApp::togglePlaying() {
     mAnimation.temporal.reset();  // the temporal view measures from the frame play starts on
     if (!mAnimation.playing) {
         if (mComparison.isOpen()) mComparison.stopPlaying(comparisonRunner());  // back to the still frame
+        mAnimation.reference.stop();
         stopRecording();
         return;
     }
@@ -214,7 +216,9 @@ void GuiApp::advanceAnimation(double dt) {
         mDirty = true;
     }
     // The comparison grid plays the same frame for every technique.
-    if (mComparison.isOpen()) mComparison.playFrame(mScene, mAnimation.frame, comparisonRunner());
+    if (mComparison.isOpen())
+        mComparison.playFrame(mScene, mAnimation.frame, comparisonRunner(), mAnimation.path && mAnimation.path->movesCamera(),
+                              pathReferenceFrame(true));
 }
 
 void GuiApp::startPathLoop() {
@@ -229,10 +233,7 @@ void GuiApp::startPathLoop() {
 void GuiApp::playPathFrame(int frame) {
     // What the path does not move stays as the user leaves it while playing (a light dragged during a
     // camera orbit); what it moves is its function of the start.
-    viz::scene::Pose start = *mAnimation.pathStart;
-    if (!mAnimation.path->movesCamera()) start.camera = mController.camera();
-    if (!mAnimation.path->movesLight()) start.lights = mScene.lights;
-    viz::scene::applyPose(start, mScene);
+    viz::scene::applyPose(mAnimation.loopStart(mController.camera(), mScene.lights), mScene);
     try {
         const viz::scene::Pose pose = viz::scene::poseAt(*mAnimation.path, mScene, frame, mAnimation.pathFrames);
         viz::scene::applyPose(pose, mScene);
@@ -247,6 +248,41 @@ void GuiApp::playPathFrame(int frame) {
         mAnimation.pathShown.reset();
     }
     mDirty = true;
+}
+
+std::shared_ptr<const viz::Image> GuiApp::pathReferenceFrame(bool forGrid) {
+    // One loop's reference frames are rendered at a time: the comparison grid's while it is open (its
+    // tiles score their flicker), else the main views' while a temporal view is shown; nothing when
+    // nobody looks (the reference is seconds a frame).
+    const std::vector<std::string> shown = shownContents();
+    const bool temporalShown = std::find(shown.begin(), shown.end(), kTemporalChangeId) != shown.end() ||
+                               std::find(shown.begin(), shown.end(), kTemporalErrorChangeId) != shown.end();
+    if (!mAnimation.playing || !mAnimation.path || !mAnimation.pathStart || !(temporalShown || mComparison.isOpen())) {
+        mAnimation.reference.stop();
+        return nullptr;
+    }
+    // The frame shown is one of the loop's only while nothing moved it since the path set it.
+    if (!mAnimation.pathShown || !samePose(*mAnimation.pathShown, mController.camera(), mScene.lights)) return nullptr;
+    // The main views' loop at the full size (a reduced frame while dragging has none and keeps the loop
+    // going); the grid's at its size, seen from its own camera unless the path moves the camera.
+    const viz::scene::Pose start = mAnimation.loopStart(mController.camera(), mScene.lights);
+    viz::scene::Pose gridStart = start;
+    if (mComparison.isOpen() && !mAnimation.path->movesCamera()) gridStart.camera = mComparison.scene().camera;
+    const glm::ivec2 size{mOptions.width, mOptions.height};
+    const glm::ivec2 gridSize = mComparison.isOpen() ? mComparison.size() : size;
+    const viz::Settings settings = otherSettings("reference");
+    const auto keyOf = [&](const viz::scene::Pose& from, glm::ivec2 at) {
+        return pathLoopKey(mGeometryHash, mScene, *mAnimation.path, from, mAnimation.pathFrames, at.x, at.y, settings);
+    };
+    const bool gridDrives = mComparison.isOpen();
+    const viz::scene::Pose& wantedStart = gridDrives ? gridStart : start;
+    const glm::ivec2 wantedSize = gridDrives ? gridSize : size;
+    mAnimation.reference.follow(keyOf(wantedStart, wantedSize), mAnimation.pathFrame, [&] {
+        return makePathLoop(mScene, *mAnimation.path, wantedStart, mAnimation.pathFrames, wantedSize.x, wantedSize.y, settings);
+    });
+    // The other consumer has frames only where its loop is the same one.
+    return forGrid ? mAnimation.reference.frame(keyOf(gridStart, gridSize), mAnimation.pathFrame)
+                   : mAnimation.reference.frame(keyOf(start, size), mAnimation.pathFrame);
 }
 
 void GuiApp::selectTechnique(int index) {
@@ -303,8 +339,12 @@ void GuiApp::render() {
     try {
         // The scheduler re-runs only the stages whose inputs changed (a sub-step: its stage alone).
         mOutput = mRunners.at(t.id())->run(mScene, size.x, size.y, mSettings, mCursor, shownContents(), mAnimation.frame);
-        // While playing, the temporal view: this frame's L_air against the previous one's.
-        if (mAnimation.playing && mAnimation.temporal.add(mOutput.airlight)) mOutput.intermediates.push_back(mAnimation.temporal.view());
+        // While playing, the temporal views: this frame's L_air against the previous one's, and its error
+        // against the reference's frames when they are known (--path).
+        if (mAnimation.playing && mAnimation.temporal.add(mOutput.airlight, pathReferenceFrame())) {
+            mOutput.intermediates.push_back(mAnimation.temporal.view());
+            if (mAnimation.temporal.errorPairs() > 0) mOutput.intermediates.push_back(mAnimation.temporal.errorView());
+        }
         mError.clear();
         mHaveOutput = true;
         mPass = 1;

@@ -3,7 +3,6 @@
 // drawing, gizmo, inspector, tools, frame, parameters); gui.cpp holds the frame loop and the runs.
 #pragma once
 
-
 #include <epoxy/gl.h>
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -126,7 +125,7 @@ private:
 
     // ---- animation (P): the first light circles its aim point (or --path's motion plays), a `time`
     // parameter (slices' noise) follows the clock. GPU techniques run every frame while it plays; the
-    // reference keeps the light where it is. Pausing keeps the state; playing again continues from there.
+    // reference keeps the light where it is. A pause keeps the state; playing again continues from there.
     static constexpr double kLightTurnSeconds = 8.0;
     void togglePlaying();
     // Runs a technique for the comparison grid with the window's settings for it.
@@ -134,6 +133,9 @@ private:
     void advanceAnimation(double dt);
     void startPathLoop();           // --path: frame 0 is the camera and lights as they are now
     void playPathFrame(int frame);  // --path: frame `frame` of the loop, from where it started
+    // --path: the reference's L_air on the frame shown, for the main views' temporal view or the
+    // comparison grid's tiles (at its size and camera); null until known.
+    std::shared_ptr<const viz::Image> pathReferenceFrame(bool forGrid = false);
     void setLessonLight(const viz::scene::Light& light) override;
 
     // Camera, view and exposure of the session (the scene, medium and technique are applied before).
@@ -243,9 +245,8 @@ private:
     // The session's grid, or the default one around its `view`.
     void applySessionGrid();
 
-    // A view of the final frame, L_air or an intermediate the size of the frame: its texels are the
-    // frame's pixels, so cursors link across such views.
-    // A view with one texel per frame pixel (an orbit view is frame-sized but seen from elsewhere).
+    // A view with one texel per frame pixel, so cursors link across such views (an orbit view is
+    // frame-sized but seen from elsewhere).
     bool isScreenSpace(const ViewState& v) const;
 
     // Builds the view's pane from the last run (and its difference image in difference mode).
@@ -307,8 +308,7 @@ private:
 
     glm::vec2 cursorPixels(double x, double y) const;
 
-    // Keys are dispatched from one table (input_table.h), which also writes the help lines and the
-    // README's key table.
+    // Keys are dispatched from one table (input_table.h), which also writes the help lines and README.
     void onKey(int key, int action, int mods);
     void perform(Command command, int offset);
     void onChar(unsigned codepoint);

@@ -10,6 +10,7 @@
 #include <glm/glm.hpp>
 
 #include "scene/motion_path.h"
+#include "path_reference.h"
 #include "scene/scene.h"
 #include "temporal_monitor.h"
 #include "view_recorder.h"
@@ -36,7 +37,8 @@ struct WindowAnimation {
     int frame = 0;                            // frames played (FrameInput::frame)
     std::optional<viz::scene::Light> light;   // the first light as it was when play started
     glm::dvec3 centre{0.0};                   // the point it circles (--path: the camera's target at start)
-    TemporalMonitor temporal;                 // L_air's change from frame to frame
+    TemporalMonitor temporal;                 // L_air's change from frame to frame (and its error's)
+    PathReference reference;                  // --path: the reference's frames, while a temporal view shows
     ViewRecorder recorder;                    // E while playing: the focused view's frames (a GIF)
     // --path: the motion played instead of the light's orbit, frames of its loop, where play started from
     // (each frame is the path's pure function of it) and the frame shown.
@@ -48,6 +50,15 @@ struct WindowAnimation {
     std::uint64_t pathScene = 0;                // the scene's geometry hash then
     int pathFrame = 0;
     double recordStart = 0.0;                 // `clock` when the recording started
+
+    // --path: where the loop's frames are computed from: the start, with what the path does not move as
+    // it is now (a light dragged during a camera orbit).
+    viz::scene::Pose loopStart(const viz::scene::Camera& camera, const std::vector<viz::scene::Light>& lights) const {
+        viz::scene::Pose start = *pathStart;
+        if (!path->movesCamera()) start.camera = camera;
+        if (!path->movesLight()) start.lights = lights;
+        return start;
+    }
 };
 
 }  // namespace airlight

@@ -226,6 +226,13 @@ void GuiApp::writeSidecar(const std::string& path) {
                             {"temporal_pairs", mAnimation.temporal.pairs()}};
     // The temporal view's score, once there is one (two frames played).
     if (std::isfinite(mAnimation.temporal.score())) sidecar["animation"]["temporal_change_rms"] = mAnimation.temporal.score();
+    // Against the reference (--path with a temporal view shown): its frames and the error's score.
+    sidecar["animation"]["temporal_error_pairs"] = mAnimation.temporal.errorPairs();
+    if (std::isfinite(mAnimation.temporal.errorScore()))
+        sidecar["animation"]["temporal_error_rms"] = mAnimation.temporal.errorScore();
+    sidecar["animation"]["reference_frames"] = {{"ready", mAnimation.reference.ready()},
+                                                {"total", mAnimation.reference.total()},
+                                                {"error", mAnimation.reference.error()}};
     // --path: the motion and the loop's frame shown.
     if (mAnimation.path)
         sidecar["animation"]["path"] = {{"text", mAnimation.path->text},

@@ -57,8 +57,8 @@ void GuiApp::drawComparison(DrawList& dl, const Rect& area) {
     const bool playing = mComparison.playing();
     dl.textClipped({area.min.x, area.min.y - line},
                    playing ? "comparison (G), playing (P): frame " + std::to_string(mComparison.playedFrames()) +
-                                 " of every technique, its run time and the RMS change of its L_air per frame over its "
-                                 "mean (the reference and the plot: the still frame; P stops)"
+                                 ", run time and the change of L_air per frame (along a --path, its error's flicker "
+                                 "against the reference's frames; the plot: the still frame; P stops)"
                            : std::string("comparison (G): L_air at the reference's exposure, time of a warm run and "
                                          "relative L2 against the reference"),
                    kAccent, area.max.x);
@@ -85,8 +85,17 @@ void GuiApp::drawComparison(DrawList& dl, const Rect& area) {
         std::string caption = tile.technique;
         std::string figures = tile.failure.empty()
             ? (tile.pane.texture == 0 ? std::string("")
-               : tile.technique == "reference" ? std::string(playing ? "ground truth, still frame" : "ground truth")
-               : playing ? format("%.1f ms", tile.playMilliseconds) + format("   change %.3g", tile.temporal.score())
+               : tile.technique == "reference"
+                   ? std::string(!playing ? "ground truth"
+                                 : mAnimation.reference.total() > 0
+                                     ? "still frame; path frames " + std::to_string(mAnimation.reference.ready()) + "/" +
+                                           std::to_string(mAnimation.reference.total())
+                                     : "ground truth, still frame")
+               // Playing: the flicker against the reference's path frames once known (the figure to rank
+               // by, where a tile has room for one), else the change of L_air.
+               : playing ? (tile.temporal.errorPairs() > 0
+                                ? format("%.0f ms", tile.playMilliseconds) + format("  flicker %.3g", tile.temporal.errorScore())
+                                : format("%.1f ms", tile.playMilliseconds) + format("   change %.3g", tile.temporal.score()))
                          : format("%.1f ms", tile.milliseconds) + "   " + tileErrorText(tile.error))
             : "failed: " + firstLine(tile.failure);
         if (tile.error.nanPixels + tile.error.infPixels > 0)

@@ -144,9 +144,19 @@ std::pair<std::string, std::string> GuiApp::viewTitle(const ViewState& v) const 
     if (!mHaveOutput) return {technique().needsGl() ? "(no view)" : "computing...", ""};
     std::string title = v.pane.label.empty() ? v.content : v.pane.label;
     // The temporal view's running score, first: titles are shortened in the middle to fit.
+    const bool temporal = v.pane.id == kTemporalChangeId || v.pane.id == kTemporalErrorChangeId;
     if (v.pane.id == kTemporalChangeId) title += ": " + mAnimation.temporal.describe();
+    if (v.pane.id == kTemporalErrorChangeId) title += ": " + mAnimation.temporal.describeError();
+    // --path: how far the reference's frames of the loop are while some are still to come (the error
+    // change view needs two in a row), or why there are none.
+    if (temporal && !mAnimation.reference.error().empty()) {
+        title += "   reference failed: " + mAnimation.reference.error();
+    } else if (temporal && mAnimation.reference.ready() < mAnimation.reference.total()) {
+        title += "   reference frames " + std::to_string(mAnimation.reference.ready()) + "/" +
+                 std::to_string(mAnimation.reference.total());
+    }
     if (v.shown >= 0) title += "   [" + std::to_string(v.shown + 1) + "/" + std::to_string(contentCount()) + "]";
-    if (v.pane.id != "final" && v.pane.id != "airlight" && v.pane.id != kTemporalChangeId) {
+    if (v.pane.id != "final" && v.pane.id != "airlight" && !temporal) {
         title += "  " + v.pane.id;
         // The stage that publishes it (stepping shows it from that stage on).
         for (const viz::StageInfo& st : technique().stages())

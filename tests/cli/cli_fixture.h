@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <sstream>
 #include <string>
 
@@ -77,6 +78,26 @@ protected:
 // "images=N missing=M", or empty when no browser is installed.
 // A CliTest that opens the window: skipped without a display (X11 or Wayland), a failure instead when
 // VIZ_REQUIRE_DISPLAY=1 (CI runs these under xvfb-run).
+// Points the reference's disk cache (AIRLIGHT_CACHE_DIR) at `dir` while it lives, so a test neither
+// reads frames another run left nor leaves its own behind; the variable is put back as it was.
+class ScopedCacheDir {
+public:
+    explicit ScopedCacheDir(const fs::path& dir) {
+        if (const char* old = std::getenv("AIRLIGHT_CACHE_DIR")) mOld = old, mHad = true;
+        ::setenv("AIRLIGHT_CACHE_DIR", dir.c_str(), 1);
+    }
+    ~ScopedCacheDir() {
+        if (mHad) ::setenv("AIRLIGHT_CACHE_DIR", mOld.c_str(), 1);
+        else ::unsetenv("AIRLIGHT_CACHE_DIR");
+    }
+    ScopedCacheDir(const ScopedCacheDir&) = delete;
+    ScopedCacheDir& operator=(const ScopedCacheDir&) = delete;
+
+private:
+    std::string mOld;
+    bool mHad = false;
+};
+
 class WindowCliTest : public CliTest {
 protected:
     void SetUp() override {

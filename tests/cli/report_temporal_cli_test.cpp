@@ -10,6 +10,7 @@
 #include <map>
 #include <set>
 #include <sstream>
+#include <memory>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -36,16 +37,13 @@ class ReportTemporalTest : public CliTest {
 protected:
     void SetUp() override {
         CliTest::SetUp();
-        if (const char* old = std::getenv("AIRLIGHT_CACHE_DIR")) mOldCache = old, mHadCache = true;
-        ::setenv("AIRLIGHT_CACHE_DIR", path("cache").c_str(), 1);
+        mCache = std::make_unique<ScopedCacheDir>(path("cache"));
     }
     void TearDown() override {
-        if (mHadCache) ::setenv("AIRLIGHT_CACHE_DIR", mOldCache.c_str(), 1);
-        else ::unsetenv("AIRLIGHT_CACHE_DIR");
+        mCache.reset();
         CliTest::TearDown();
     }
-    std::string mOldCache;
-    bool mHadCache = false;
+    std::unique_ptr<ScopedCacheDir> mCache;
 };
 
 TEST_F(ReportTemporalTest, QuickWritesFiniteTemporalFiguresForEveryTechniqueWithFlickerMaps) {

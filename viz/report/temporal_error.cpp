@@ -78,6 +78,8 @@ void TemporalAccumulator::add(const Image& test, const Image& reference) {
     ++mFrames;
 }
 
+void TemporalAccumulator::gap() { std::fill(mValid.begin(), mValid.end(), 0); }
+
 TemporalMetrics TemporalAccumulator::finish() const {
     TemporalMetrics m;
     m.frames = mFrames;

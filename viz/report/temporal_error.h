@@ -52,6 +52,9 @@ class TemporalAccumulator {
 public:
     // Frames in path order; every frame the size and channel count of the first (VIZ_CHECK).
     void add(const Image& test, const Image& reference);
+    // The next frame does not follow the last one added (the frames between them have no reference): it
+    // takes no difference, as if every pixel's previous error were left out (counted in excludedDifferences).
+    void gap();
     TemporalMetrics finish() const;
     int frames() const { return mFrames; }
 

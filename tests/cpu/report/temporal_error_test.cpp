@@ -194,5 +194,27 @@ TEST(TemporalError, TheAccumulatorTakesFramesOneAtATime) {
     EXPECT_GT(whole.temporalRms, 0.0);
 }
 
+// A gap (frames between two added ones had no reference) takes no difference across it: errors +a, -a,
+// then after the gap 100a and 98a. The jump of 101a across the gap is not counted; the two differences
+// taken are both of size 2a, so the temporal RMS is a / mean(R) as for +a/-a alone.
+TEST(TemporalError, AGapTakesNoDifferenceAcrossIt) {
+    const std::vector<Image> reference = movingReference(8, 6, 4);
+    const float a = 0.0625f;
+    const float errors[4] = {a, -a, 100.0f * a, 98.0f * a};
+    const std::vector<Image> test = withError(reference, [&](int, int, int t) { return errors[t]; });
+    TemporalAccumulator accumulator;
+    accumulator.add(test[0], reference[0]);
+    accumulator.add(test[1], reference[1]);
+    accumulator.gap();
+    accumulator.add(test[2], reference[2]);
+    accumulator.add(test[3], reference[3]);
+    const TemporalMetrics m = accumulator.finish();
+    EXPECT_NEAR(m.temporalRms, double(a) / referenceMean(reference), 1e-12);
+    EXPECT_EQ(m.excludedDifferences, std::size_t(8 * 6)) << "frame 2's difference, every pixel";
+    EXPECT_TRUE(std::isnan(m.frameTemporal[2]));
+    // Without the gap the jump counts and the score is far larger.
+    EXPECT_GT(temporalMetrics(test, reference).temporalRms, 10.0 * m.temporalRms);
+}
+
 }  // namespace
 }  // namespace viz::report
