@@ -1,5 +1,6 @@
 #include "path_reference.h"
 
+#include <cstdio>
 #include <exception>
 #include <sstream>
 #include <utility>
@@ -41,111 +42,123 @@ PathLoop makePathLoop(const viz::scene::Scene& scene, const viz::scene::MotionPa
     return loop;
 }
 
-PathReference::PathReference() : mThread([this] { loop(); }) {}
+PathReference::PathReference() : mState(std::make_shared<State>()) {
+    mThread = std::thread([state = mState] { work(*state); });
+}
 
 PathReference::~PathReference() {
+    bool rendering = false;
     {
-        std::lock_guard lock(mMutex);
-        mQuit = true;
+        std::lock_guard lock(mState->mutex);
+        mState->quit = true;
+        rendering = mState->rendering;
     }
-    mWake.notify_all();
-    mThread.join();  // a reference frame being rendered finishes first (seconds at most)
+    mState->wake.notify_all();
+    if (rendering) {
+        std::fprintf(stderr, "airlight: leaving a reference frame of the path to finish in the background\n");
+        mThread.detach();
+    } else {
+        mThread.join();
+    }
 }
 
 void PathReference::start(PathLoop loop, int firstFrame) {
     {
-        std::lock_guard lock(mMutex);
+        std::lock_guard lock(mState->mutex);
         const int n = int(loop.poses.size());
-        mLoop = std::make_shared<const PathLoop>(std::move(loop));
-        mNext = n > 0 ? ((firstFrame % n) + n) % n : 0;
-        mDone = 0;
-        mFrames.clear();
-        mError.clear();
+        mState->loop = std::make_shared<const PathLoop>(std::move(loop));
+        mState->next = n > 0 ? ((firstFrame % n) + n) % n : 0;
+        mState->done = 0;
+        mState->frames.clear();
+        mState->error.clear();
     }
-    mWake.notify_all();
+    mState->wake.notify_all();
 }
 
 void PathReference::stop() {
-    std::lock_guard lock(mMutex);
-    mLoop.reset();
-    mFrames.clear();
-    mDone = 0;
-    mError.clear();
+    std::lock_guard lock(mState->mutex);
+    mState->loop.reset();
+    mState->frames.clear();
+    mState->done = 0;
+    mState->error.clear();
 }
 
 std::shared_ptr<const viz::Image> PathReference::frame(const std::string& key, int frame) const {
-    std::lock_guard lock(mMutex);
-    if (!mLoop || mLoop->key != key) return nullptr;
-    const auto it = mFrames.find(frame);
-    return it == mFrames.end() ? nullptr : it->second;
+    std::lock_guard lock(mState->mutex);
+    if (!mState->loop || mState->loop->key != key) return nullptr;
+    const auto it = mState->frames.find(frame);
+    return it == mState->frames.end() ? nullptr : it->second;
 }
 
 int PathReference::ready() const {
-    std::lock_guard lock(mMutex);
-    return mLoop ? mDone : 0;
+    std::lock_guard lock(mState->mutex);
+    return mState->loop ? mState->done : 0;
 }
 
 int PathReference::total() const {
-    std::lock_guard lock(mMutex);
-    return mLoop ? int(mLoop->poses.size()) : 0;
+    std::lock_guard lock(mState->mutex);
+    return mState->loop ? int(mState->loop->poses.size()) : 0;
 }
 
 bool PathReference::busy() const {
-    std::lock_guard lock(mMutex);
-    return mLoop && mError.empty() && mDone < int(mLoop->poses.size());
+    std::lock_guard lock(mState->mutex);
+    return mState->loop && mState->error.empty() && mState->done < int(mState->loop->poses.size());
 }
 
 std::string PathReference::error() const {
-    std::lock_guard lock(mMutex);
-    return mError;
+    std::lock_guard lock(mState->mutex);
+    return mState->error;
 }
 
 std::string PathReference::currentKey() const {
-    std::lock_guard lock(mMutex);
-    return mLoop ? mLoop->key : std::string();
+    std::lock_guard lock(mState->mutex);
+    return mState->loop ? mState->loop->key : std::string();
 }
 
-void PathReference::loop() {
+void PathReference::work(State& s) {
     for (;;) {
         std::shared_ptr<const PathLoop> job;
         int index = 0;
         {
-            std::unique_lock lock(mMutex);
-            mWake.wait(lock, [&] { return mQuit || (mLoop && mError.empty() && mDone < int(mLoop->poses.size())); });
-            if (mQuit) return;
-            job = mLoop;
-            index = mNext;
+            std::unique_lock lock(s.mutex);
+            s.wake.wait(lock, [&] { return s.quit || (s.loop && s.error.empty() && s.done < int(s.loop->poses.size())); });
+            if (s.quit) return;
+            job = s.loop;
+            index = s.next;
+            s.rendering = true;
         }
         std::shared_ptr<viz::Image> airlight;
         std::string error;
         try {
-            if (!mReference) mReference = viz::makeTechnique("reference");
+            if (!s.reference) s.reference = viz::makeTechnique("reference");
             // One copy of the scene per loop; each frame only sets the camera and lights.
-            if (mSceneOf != job) {
-                mScene = job->scene;
-                mSceneOf = job;
+            if (s.sceneOf != job) {
+                s.scene = job->scene;
+                s.sceneOf = job;
             }
-            viz::scene::applyPose(job->poses[std::size_t(index)], mScene);
+            viz::scene::applyPose(job->poses[std::size_t(index)], s.scene);
             // The window's settings for the reference, less the names only other techniques have (the
             // difference views read them the same way); a value out of range is the frame's error.
             std::string invalid;
-            const viz::Settings settings = settingsFor(*mReference, job->settings, invalid);
+            const viz::Settings settings = settingsFor(*s.reference, job->settings, invalid);
             if (!invalid.empty()) throw viz::InputError(invalid);
-            const viz::FrameInput input = viz::frameInput(&mScene, job->width, job->height, settings);
-            airlight = std::make_shared<viz::Image>(mReference->run(input).airlight);
+            const viz::FrameInput input = viz::frameInput(&s.scene, job->width, job->height, settings);
+            airlight = std::make_shared<viz::Image>(s.reference->run(input).airlight);
         } catch (const std::exception& e) {
             error = e.what();
         }
-        std::lock_guard lock(mMutex);
-        if (mLoop != job) continue;  // another loop was asked for meanwhile: this frame is not its
+        std::lock_guard lock(s.mutex);
+        s.rendering = false;
+        if (s.loop != job) continue;  // another loop was asked for meanwhile: this frame is not its
         if (!error.empty()) {
-            mError = error;
+            s.error = error;
         } else {
-            mFrames[index] = std::move(airlight);
-            ++mDone;
-            mNext = (index + 1) % int(job->poses.size());
+            s.frames[index] = std::move(airlight);
+            ++s.done;
+            s.next = (index + 1) % int(job->poses.size());
         }
-        if (!mQuit) glfwPostEmptyEvent();  // the window may be waiting for events
+        // Wake the window out of glfwWaitEventsTimeout; after quit it may be gone (the mutex orders the two).
+        if (!s.quit) glfwPostEmptyEvent();
     }
 }
 

@@ -71,21 +71,26 @@ public:
     std::string currentKey() const;
 
 private:
+    // Shared with the thread, so that a frame still rendering when the window closes (tv-room's area light
+    // takes minutes) finishes on a detached thread without touching freed memory, as CpuWorker does.
+    struct State {
+        mutable std::mutex mutex;
+        std::condition_variable wake;
+        std::shared_ptr<const PathLoop> loop;  // the loop asked for (null: none)
+        int next = 0;                          // the next frame to render
+        int done = 0;                          // frames of the loop rendered
+        std::map<int, std::shared_ptr<const viz::Image>> frames;
+        std::string error;
+        bool quit = false, rendering = false;
+        // The thread's own: the reference instance and the scene of the loop it renders.
+        std::unique_ptr<viz::Technique> reference;
+        std::shared_ptr<const PathLoop> sceneOf;
+        viz::scene::Scene scene;
+    };
     void start(PathLoop loop, int firstFrame);
-    void loop();
+    static void work(State& s);
 
-    mutable std::mutex mMutex;
-    std::condition_variable mWake;
-    std::shared_ptr<const PathLoop> mLoop;  // the loop asked for (null: none)
-    int mNext = 0;                          // the next frame to render, and how many are done
-    int mDone = 0;
-    std::map<int, std::shared_ptr<const viz::Image>> mFrames;
-    std::string mError;
-    bool mQuit = false;
-    // The worker's own: the reference instance and the scene of the loop it renders.
-    std::unique_ptr<viz::Technique> mReference;
-    std::shared_ptr<const PathLoop> mSceneOf;
-    viz::scene::Scene mScene;
+    std::shared_ptr<State> mState;
     std::thread mThread;
 };
 
