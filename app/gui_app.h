@@ -45,6 +45,7 @@
 #include "platform/window_glfw.h"
 #include "render_job.h"
 #include "run_scheduler.h"
+#include "screen_map.h"
 #include "step_timeline.h"
 #include "window_animation.h"
 #include "scene/scene_source.h"
@@ -576,15 +577,9 @@ private:
     std::optional<PixelInspection> mProbeInspection;  // cache of probeInspection()
     int mScriptDragStep = 0;                 // a script's drag: 0 before the press, 1-4 moving, 5 release
     glm::vec2 mScriptDragFrom{0.0f}, mScriptDragTo{0.0f};  // its ends, fixed at the press
-    struct ViewRect {
-        std::string name, title;
-        Rect rect;      // the image's rectangle in window pixels
-        int cell = -1;  // the grid's view number (-1: the comparison grid)
-    };
-    std::vector<ViewRect> mViewRects;  // what the last frame showed where (screenshot sidecar)
-    // Sidebar items "technique:ID", "view:LABEL"; per grid view N: "cell:N" (image), "title:N", "strip:N"
-    // (the display strip's toggle).
-    std::map<std::string, Rect> mNamedRects;
+    // What the last frame drew where (scripts, sidecar): sidebar items "technique:ID", "view:LABEL"; per
+    // grid view N "cell:N" (image), "title:N", "strip:N" (its display strip's toggle); the views' images.
+    ScreenMap mScreen;
     std::size_t mScriptIndex = 0;
     int mScriptWait = 0;
     std::optional<bool> mSyntheticDown;  // the script holds the left button (down / just released)

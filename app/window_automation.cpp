@@ -4,16 +4,9 @@
 namespace airlight {
 
 Rect GuiApp::scriptTarget(const ScriptAction& a) const {
-    if (const auto it = mUi->widgetRects().find(a.target); it != mUi->widgetRects().end()) return it->second;
-    for (const auto& v : mViewRects)
-        if (v.name == a.target) return v.rect;
-    if (const auto it = mNamedRects.find(a.target); it != mNamedRects.end()) return it->second;
-    std::string known;
-    for (const auto& [name, r] : mNamedRects) known += (known.empty() ? "" : ", ") + name;
-    for (const auto& v : mViewRects) known += ", " + v.name;
-    for (const auto& [name, r] : mUi->widgetRects()) known += ", " + name;
+    if (const std::optional<Rect> r = mScreen.find(a.target, mUi->widgetRects())) return *r;
     throw viz::InputError(mOptions.scriptPath + ":" + std::to_string(a.line) + ": nothing named '" + a.target +
-                          "' is on screen (on screen: " + known + ")");
+                          "' is on screen (on screen: " + mScreen.known(mUi->widgetRects()) + ")");
 }
 
 bool GuiApp::revealScriptTarget(const ScriptAction& a) {
@@ -166,7 +159,7 @@ void GuiApp::writeWindowImage(const std::string& path) {
 void GuiApp::writeSidecar(const std::string& path) {
     const glm::ivec2 fb = mWindow.framebufferSize();
     nlohmann::json views = nlohmann::json::array();
-    for (const auto& v : mViewRects) {
+    for (const auto& v : mScreen.views()) {
         nlohmann::json entry = {{"name", v.name}, {"title", v.title},
                                 {"rect", {v.rect.min.x, v.rect.min.y, v.rect.max.x, v.rect.max.y}}};
         if (v.cell >= 0 && mViews.count(v.cell)) entry.update(viewSidecar(v.cell, mViews.at(v.cell)));

@@ -22,7 +22,7 @@ void GuiApp::drawColourBar(int id, ViewState& v) {
         drawColourBarText(v.colourBar, v.bar, *mFont, mScale, *mDrawList, *mBackground, {kText, kDim, kError, kDim});
     v.ramp = layout.ramp;
     for (const BarImageDraw& d : barImageDraws(v, layout, mapping)) mPaneDraws.push_back({d.rect, d.pane, d.view, d.mapping});
-    mNamedRects["colour_bar:" + std::to_string(id)] = v.bar;
+    mScreen.place("colour_bar:" + std::to_string(id), v.bar);
     if (v.bar.contains(mHover)) mUi->tooltipNow({layout.heading, layout.legend});
 }
 

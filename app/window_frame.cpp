@@ -23,10 +23,9 @@ void GuiApp::draw() {
     mBackground->clear();
     mHits.clear();
     mPaneDraws.clear();
-    mViewRects.clear();
-    mNamedRects.clear();
+    mScreen.clear();
     mElidedTitles = 0;
-    mNamedRects["window"] = Rect{{0.0f, 0.0f}, glm::vec2(fb)};  // scripts: any point, by window fraction
+    mScreen.place("window", Rect{{0.0f, 0.0f}, glm::vec2(fb)});  // scripts: any point, by window fraction
     const float s = mScale;
     const float pad = kPad * s;
     const float line = mFont->lineHeight();
@@ -97,7 +96,7 @@ void GuiApp::draw() {
         const std::string name = (i < 9 ? std::to_string(i + 1) + "  " : "   ") + mIds[std::size_t(i)];
         const Rect item{{pad * 0.5f, y}, {sidebarWidth - pad * 0.5f, y + line + 2.0f * s}};
         listItem(item, name, i == mCurrent, [this, i] { selectTechnique(i); });
-        mNamedRects["technique:" + mIds[std::size_t(i)]] = item;
+        mScreen.place("technique:" + mIds[std::size_t(i)], item);
         y += line + 4.0f * s;
     }
     y += line;
@@ -110,7 +109,7 @@ void GuiApp::draw() {
             const std::string name = contentLabel(i);
             const Rect item{{pad * 0.5f, y}, {sidebarWidth - pad * 0.5f, y + line + 2.0f * s}};
             listItem(item, name, i == shown, [this, i] { selectView(i); });
-            mNamedRects["view:" + name] = item;
+            mScreen.place("view:" + name, item);
             y += line + 4.0f * s;
         }
     }

@@ -74,7 +74,7 @@ void GuiApp::setSubstepAt(int k) {
 void GuiApp::drawStepTimeline() {
     mTimeline = timelineSegments(technique(), mSettings, mTimelineRect.min.x, mTimelineRect.max.x, mOutput.substepCounts);
     drawTimeline(*mBackground, *mDrawList, mTimelineRect, mTimeline, mCursor, mScale);
-    mNamedRects["timeline"] = mTimelineRect;
+    mScreen.place("timeline", mTimelineRect);
     mHits.push_back({mTimelineRect, [this] {
                          mDragTimeline = true;
                          mNotice.clear();

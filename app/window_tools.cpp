@@ -67,7 +67,7 @@ void GuiApp::drawComparison(DrawList& dl, const Rect& area) {
         const glm::vec2 at = area.min + glm::vec2(float(n % cols), float(n / cols)) * cell;
         const Rect box{at + pad, at + glm::vec2(float(cols - n % cols), 1.0f) * cell - pad};
         viz::plot::drawPlot(dl, box, mComparison.errorAgainstTime());
-        mViewRects.push_back({"comparison.error_vs_time", "relative L2 against time", box, -1});
+        mScreen.placeView({"comparison.error_vs_time", "relative L2 against time", box, -1});
     }
     for (int i = 0; i < n; ++i) {
         ComparisonTile& tile = mComparison.tiles()[std::size_t(i)];

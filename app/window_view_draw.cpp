@@ -136,7 +136,7 @@ void GuiApp::drawViewGrid(const Rect& area) {
     if (mComparison.isOpen()) {
         const Rect grid{{area.max.x - half, area.min.y + mFont->lineHeight()}, area.max};
         drawComparison(*mDrawList, grid);
-        mViewRects.push_back({"comparison", "comparison grid", grid, -1});
+        mScreen.placeView({"comparison", "comparison grid", grid, -1});
     }
 }
 
@@ -237,23 +237,23 @@ void GuiApp::drawView(int id, ViewState& v) {
         w.display.stripOpen = !w.display.stripOpen;
         mFocused = id;
     });
-    mNamedRects["strip:" + std::to_string(id)] = toggleRect;
-    mNamedRects["title:" + std::to_string(id)] = v.title;
-    mNamedRects["cell:" + std::to_string(id)] = v.image;
+    mScreen.place("strip:" + std::to_string(id), toggleRect);
+    mScreen.place("title:" + std::to_string(id), v.title);
+    mScreen.place("cell:" + std::to_string(id), v.image);
 
     // The image, framed; the background batch is drawn before the images.
     mBackground->rect({v.image.min - 1.0f, v.image.max + 1.0f}, focused ? kHighlight : kPanel);
     if (!v.pane.plots.empty()) {
         // The technique's plots of this intermediate, stacked (its image is what `render --layer` writes).
         drawPlots(v);
-        mViewRects.push_back({v.pane.id, title + early + counts, v.image, id});
+        mScreen.placeView({v.pane.id, title + early + counts, v.image, id});
         drawStatusBands(dl, v.image);
         if (v.display.stripOpen && v.strip.size().y > 0.0f) drawStrip(id, v);
         return;
     }
     mPaneDraws.push_back({v.image, &v.pane, &v.transform, resolveMapping(v.pane, v.display, mExposure, v.measured)});
-    mViewRects.push_back({mHaveOutput ? (v.pane.id.empty() ? v.content : v.pane.id) : std::string("none"),
-                          title + early + counts, v.image, id});
+    mScreen.placeView({mHaveOutput ? (v.pane.id.empty() ? v.content : v.pane.id) : std::string("none"),
+                       title + early + counts, v.image, id});
     if (!v.pane.unavailable.empty())
         dl.textClipped({v.image.min.x + 8.0f * s, v.image.min.y + 8.0f * s}, v.pane.unavailable, kDim, v.image.max.x);
     if (v.pane.texture != 0) texelValues(v.pane, v.image, v.transform);

@@ -3,6 +3,8 @@
 
 #include <cmath>
 #include <limits>
+#include <memory>
+#include <utility>
 
 #include "temporal_monitor.h"
 
@@ -65,6 +67,44 @@ TEST(TemporalMonitor, ASizeChangeStartsAgainAndNaNIsLeftOut) {
     EXPECT_NEAR(m.view().image->at(0, 0, 0), 1.0, 1e-6);
     EXPECT_TRUE(std::isfinite(m.score()));
     EXPECT_GT(m.score(), 0.0);
+}
+
+// Against the reference: a reference that moves (R alternating between 1 and 3) and L = R + error with
+// the error alternating +e, -e. The change of L includes the motion (score far above e); the error's
+// change is d = +-2e, so its flicker is e / mean(R) with mean(R) = 2 over the frames added. A frame whose
+// reference is not known (null) takes no difference on either side, and its error change is not counted.
+TEST(TemporalMonitor, AgainstTheReferenceTheMotionIsGoneAndAFrameWithoutOneIsSkipped) {
+    airlight::TemporalMonitor m;
+    const float e = 0.125f;
+    const auto frame = [&](int i) {
+        const float r = i % 2 == 0 ? 1.0f : 3.0f, err = i % 2 == 0 ? e : -e;
+        return std::pair{filled(4, 3, r + err, r + err, r + err), std::make_shared<const viz::Image>(filled(4, 3, r, r, r))};
+    };
+    for (int i = 0; i < 4; ++i) {
+        auto [l, r] = frame(i);
+        m.add(l, r);
+    }
+    EXPECT_EQ(m.errorPairs(), 3);
+    EXPECT_NEAR(m.errorScore(), e / 2.0, 1e-12);
+    EXPECT_GT(m.score(), 4.0 * m.errorScore()) << "the change of L holds the reference's own motion";
+    const viz::Intermediate v = m.errorView();
+    EXPECT_EQ(v.id, airlight::kTemporalErrorChangeId);
+    EXPECT_NEAR(v.image->at(1, 1, 0), -2.0 * e, 1e-6);  // frame 3 (error -e) after frame 2 (+e): d = -2e
+    // A frame without its reference, then two with: only the last pair counts, and across the gap the
+    // error jumps (to 10e) without being counted.
+    m.add(frame(4).first, nullptr);
+    EXPECT_EQ(m.errorPairs(), 3);
+    auto [l5, r5] = frame(5);
+    for (float& x : l5.pixels) x += 10.0f * e;  // a large error, but constant from here on
+    m.add(l5, r5);
+    EXPECT_EQ(m.errorPairs(), 3) << "no difference across the frame without a reference";
+    auto [l7, r7] = frame(7);
+    for (float& x : l7.pixels) x += 10.0f * e;
+    m.add(l7, r7);
+    EXPECT_EQ(m.errorPairs(), 4);
+    // Frames 5 and 7 have the same error (10e - e): their pair adds d = 0, so sqrt(mean d^2) / 2 is
+    // sqrt(3 (2e)^2 / 4) / 2; mean(R) is over the six frames with a reference, R = 1, 3, 1, 3, 3, 3.
+    EXPECT_NEAR(m.errorScore(), std::sqrt(3.0 * 4.0 * e * e / 4.0) / 2.0 / (14.0 / 6.0), 1e-12);
 }
 
 }  // namespace
