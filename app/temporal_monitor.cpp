@@ -46,8 +46,12 @@ std::shared_ptr<viz::Image> luminanceOfChange(const viz::Image& now, const viz::
 
 // A signed view of `image`, symmetric about 0 at the 99th percentile of |value| (the largest few are the
 // light's own pixels).
-viz::Intermediate signedView(const std::shared_ptr<viz::Image>& image) {
+viz::Intermediate signedView(const std::shared_ptr<viz::Image>& image, const char* id, const char* label,
+                             const char* note) {
     viz::Intermediate i;
+    i.id = id;
+    i.label = label;
+    i.note = note;
     i.units = "radiance";
     i.kind = viz::ViewKind::Signed;
     float bound = 0.0f;
@@ -127,23 +131,17 @@ std::string TemporalMonitor::describeError() const {
 }
 
 viz::Intermediate TemporalMonitor::view() const {
-    viz::Intermediate i = signedView(mChange);
-    i.id = kTemporalChangeId;
-    i.label = "L_air change per frame";
-    i.note = "luminance of L_air(t) - L_air(t-1) while the animation plays (red: brighter, blue: darker); the "
-             "title's score includes the motion's own change (the error change view and report --temporal "
-             "measure against the reference)";
-    return i;
+    return signedView(mChange, kTemporalChangeId, "L_air change per frame",
+                      "luminance of L_air(t) - L_air(t-1) while the animation plays (red: brighter, blue: darker); "
+                      "the title's score includes the motion's own change (the error change view and report "
+                      "--temporal measure against the reference)");
 }
 
 viz::Intermediate TemporalMonitor::errorView() const {
-    viz::Intermediate i = signedView(mErrorChange);
-    i.id = kTemporalErrorChangeId;
-    i.label = "Error change per frame";
-    i.note = "luminance of e(t) - e(t-1), e = L_air - reference on the same path frame: the flicker, without "
-             "the motion's own change (red: the error grew, blue: it fell); the title's flicker is report "
-             "--temporal's temporal RMS over the pairs of frames shown whose references are known";
-    return i;
+    return signedView(mErrorChange, kTemporalErrorChangeId, "Error change per frame",
+                      "luminance of e(t) - e(t-1), e = L_air - reference on the same path frame: the flicker, "
+                      "without the motion's own change (red: the error grew, blue: it fell); the title's flicker "
+                      "is report --temporal's temporal RMS over the pairs of frames shown whose references are known");
 }
 
 }  // namespace airlight
