@@ -94,7 +94,7 @@ GuiApp::~GuiApp() {
     mViews.clear();
     mComparison.close();
     mOutput = {};
-    mTechniques.clear();
+    mOtherRunners.clear();
     mRunners.clear();
 }
 

@@ -131,6 +131,7 @@ private:
     void togglePlaying();
     // Runs a technique for the comparison grid with the window's settings for it.
     ComparisonGrid::RunTechnique comparisonRunner();
+    RunScheduler& otherRunner(const std::string& id);  // mOtherRunners' for `id`, made on first use
     void advanceAnimation(double dt);
     void startPathLoop();           // --path: frame 0 is the camera and lights as they are now
     void playPathFrame(int frame);  // --path: frame `frame` of the loop, from where it started
@@ -474,8 +475,9 @@ private:
     CameraController mController;
     double mGizmoArm = 1.0;  // scene units (kGizmoArm of the scene camera's orbit distance)
     std::vector<std::string> mIds;
-    // Instances for the other consumers (difference views, the comparison grid), apart from mRunners.
-    std::map<std::string, std::unique_ptr<viz::Technique>> mTechniques;
+    // The other consumers' runs (difference views, the comparison grid; both keep copies of the images):
+    // one scheduler per technique, apart from the main views' mRunners, whose textures panes borrow.
+    std::map<std::string, std::unique_ptr<RunScheduler>> mOtherRunners;
     int mCurrent = 0;
     viz::Settings mSettings;
     viz::Plan mPlan;

@@ -174,14 +174,14 @@ const GuiApp::OtherRun* GuiApp::otherRun(const std::string& id) {
     OtherRun& run = mOtherRuns[id];
     if (run.key == key) return &run;
     try {
-        if (!mTechniques.count(id)) mTechniques[id] = viz::makeTechnique(id);
+        (void)otherRunner(id);
     } catch (const std::exception& e) {
         run = OtherRun{key, {}, {}, e.what(), ""};
         return &run;
     }
     if (run.pending == key) return nullptr;
     run.pending = key;
-    if (mTechniques.at(id)->needsGl()) {
+    if (otherRunner(id).technique().needsGl()) {
         mGpuOthersDue = true;
         return nullptr;
     }
@@ -190,7 +190,7 @@ const GuiApp::OtherRun* GuiApp::otherRun(const std::string& id) {
     else if (mOtherSceneKey != sceneOnlyKey()) mOtherWorker->setScene(mScene);
     mOtherSceneKey = sceneOnlyKey();
     std::string ignored;
-    mOtherWorker->submit({id, mController.camera(), settingsFor(*mTechniques.at(id), otherSettings(id), ignored),
+    mOtherWorker->submit({id, mController.camera(), settingsFor(otherRunner(id).technique(), otherSettings(id), ignored),
                           mOutputSize.x, mOutputSize.y});
     return nullptr;
 }
@@ -219,17 +219,17 @@ std::string GuiApp::otherRunKey(const std::string& id) const {
 void GuiApp::runDueGpuOthers() {
     mGpuOthersDue = false;
     for (auto& [id, run] : mOtherRuns) {
-        if (run.pending.empty() || !mTechniques.count(id) || !mTechniques.at(id)->needsGl()) continue;
+        if (run.pending.empty() || !mOtherRunners.count(id) || !mOtherRunners.at(id)->technique().needsGl()) continue;
         const std::string key = std::exchange(run.pending, std::string());
         if (key != otherRunKey(id)) continue;  // stale: the next refresh asks again
         run = OtherRun{key, {}, {}, "", ""};
         try {
-            viz::Technique& t = *mTechniques.at(id);
+            RunScheduler& runner = otherRunner(id);
             std::string ignored;
             viz::scene::Scene scene = mScene;
             scene.camera = mController.camera();
-            viz::FrameInput in = viz::frameInput(&scene, mOutputSize.x, mOutputSize.y, settingsFor(t, otherSettings(id), ignored));
-            viz::FrameOutput out = t.run(in);
+            viz::FrameOutput out = runner.run(scene, mOutputSize.x, mOutputSize.y,
+                                              settingsFor(runner.technique(), otherSettings(id), ignored), {}, {}, 0);
             glBindFramebuffer(GL_FRAMEBUFFER, 0);
             run.airlight = std::move(out.airlight);
             run.final = std::move(out.final);

@@ -32,17 +32,21 @@ void GuiApp::showLessonComparison(const std::vector<std::string>& techniques) {
 
 ComparisonGrid::RunTechnique GuiApp::comparisonRunner() {
     return [this](const std::string& id, const viz::scene::Scene& scene, glm::ivec2 size, int frame) {
-        if (!mTechniques.count(id)) mTechniques[id] = viz::makeTechnique(id);
-        viz::Technique& t = *mTechniques.at(id);
-        viz::Settings given = mSession.settings.count(id) ? mSession.settings.at(id) : viz::Settings{};
-        for (const auto& [name, value] : mOptions.settings) given[name] = value;
+        RunScheduler& runner = otherRunner(id);
+        runner.invalidate();  // the grid times whole runs: nothing carried over from the last one
         std::string ignored;
-        viz::FrameInput input = viz::frameInput(&scene, size.x, size.y, settingsFor(t, given, ignored));
-        input.frame = frame;
-        viz::FrameOutput out = t.run(input);
+        viz::FrameOutput out = runner.run(scene, size.x, size.y, settingsFor(runner.technique(), otherSettings(id), ignored),
+                                          {}, {}, frame);
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         return out;
     };
+}
+
+RunScheduler& GuiApp::otherRunner(const std::string& id) {
+    auto it = mOtherRunners.find(id);
+    // makeTechnique throws for an unknown id before anything is stored.
+    if (it == mOtherRunners.end()) it = mOtherRunners.emplace(id, std::make_unique<RunScheduler>(viz::makeTechnique(id))).first;
+    return *it->second;
 }
 
 void GuiApp::runComparisonTechniques() { mComparison.runTechniques(comparisonRunner()); }
