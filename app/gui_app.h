@@ -123,6 +123,7 @@ private:
     // A lesson's view goes to the focused view of the grid (the right-hand one by default).
     void showInFocusedView(const std::string& id);
     void setLessonSetting(const std::string& name, double value) override;
+    int lessonSubstepCount(int stage) const override;
 
     // ---- animation (P): the first light circles its aim point (or --path's motion plays), a `time`
     // parameter (slices' noise) follows the clock. GPU techniques run every frame while it plays; the

@@ -120,6 +120,8 @@ void LessonPlayer::applyStep(LessonHost& host) {
         if (s->animation.kind == LessonAnimation::Kind::Substeps) {
             mSubstepParam = stages[std::size_t(w.stage)].substepParam;
             mSubstepValues = technique->substepValues(w.stage, w.settings);
+            mSubstepStage = w.stage;
+            mSubstepShown = int(mSubstepValues.size());
         }
         if (s->animation.kind == LessonAnimation::Kind::LightOrbit) {
             if (w.lights.empty()) throw viz::InputError("light orbit: the scene has no light");
@@ -148,10 +150,12 @@ void LessonPlayer::animate(LessonHost& host) {
     if (!s || !mWanted || s->animation.kind == LessonAnimation::Kind::None) return;
     const double t = std::clamp(mTime / s->animation.seconds, 0.0, 1.0);
     if (s->animation.kind == LessonAnimation::Kind::Substeps && !mSubstepParam.empty() && !mSubstepValues.empty()) {
-        // Sub-step k of N for the k-th Nth of the time; the end shows them all (the last value).
-        const int count = int(mSubstepValues.size());
+        // Sub-step k of N for the k-th Nth of the time; the end shows them all (the last value). N: as many
+        // as the last run counted where that is fewer (a walk's nodes).
+        const int count = std::clamp(host.lessonSubstepCount(mSubstepStage), 1, int(mSubstepValues.size()));
+        mSubstepShown = count;
         const int k = t >= 1.0 ? count : std::clamp(1 + int(t * double(count)), 1, count);
-        host.setLessonSetting(mSubstepParam, mSubstepValues[std::size_t(k - 1)]);
+        host.setLessonSetting(mSubstepParam, k == count ? mSubstepValues.back() : mSubstepValues[std::size_t(k - 1)]);
     } else if (s->animation.kind == LessonAnimation::Kind::LightOrbit && !mWanted->lights.empty()) {
         host.setLessonLight(orbitLight(mWanted->lights[0], mOrbitCentre, t));
     }
@@ -333,7 +337,7 @@ void LessonPlayer::draw(const LessonHost& host, viz::ui::Context& ui, DrawList& 
         const float fraction = float(std::clamp(mTime / s.animation.seconds, 0.0, 1.0));
         std::string progress = "animation: " + describeAnimation(s.animation);
         if (!mMatches) progress = "the animation plays on the step's state (B)";
-        const int count = int(mSubstepValues.size());
+        const int count = mSubstepShown;
         if (!mSubstepParam.empty() && count > 0)
             progress += ", " + std::to_string(fraction >= 1.0f ? count : std::clamp(1 + int(fraction * float(count)), 1, count)) +
                         "/" + std::to_string(count);

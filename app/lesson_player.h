@@ -71,6 +71,12 @@ public:
     // The caption the window's view title gives a view id ("final", "airlight" or an intermediate of the
     // last run); the id itself when the last run did not publish it.
     virtual std::string lessonViewCaption(const std::string& id) const = 0;
+    // The sub-steps of stage `stage` as the last run counted them, where a run knows fewer than the
+    // settings list (minmax's walk: the picked ray's nodes); a `substeps` animation ends there.
+    virtual int lessonSubstepCount(int stage) const {
+        (void)stage;
+        return std::numeric_limits<int>::max();
+    }
 };
 
 // The first light of a step's `animate: light orbit` at `turn` (0..1, one full turn): scene/light_orbit.h.
@@ -139,6 +145,8 @@ private:
     std::optional<LessonWindowState> mBase;
     std::string mSubstepParam;          // a substeps animation: the parameter and its value per sub-step
     std::vector<double> mSubstepValues;  // (Technique::substepValues; the last one runs the stage whole)
+    int mSubstepStage = -1;              // the stage they step
+    int mSubstepShown = 0;               // how many the animation goes through (LessonHost::lessonSubstepCount)
     glm::dvec3 mOrbitCentre{0.0};
 
     bool mPlaying = false;

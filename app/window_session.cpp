@@ -190,6 +190,10 @@ void GuiApp::setLessonSetting(const std::string& name, double value) {
     mDirty = true;
 }
 
+int GuiApp::lessonSubstepCount(int stage) const {
+    return substepCountOf(technique(), stage, mSettings, mOutput.substepCounts);
+}
+
 void GuiApp::setLessonLight(const viz::scene::Light& light) {
     // GPU techniques read the scene at every run; the reference (its worker holds a copy of the scene,
     // seconds per frame) keeps the light where it is.

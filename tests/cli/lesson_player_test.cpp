@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/cli_fixture.h"
+#include "core/image_io.h"
 
 namespace viz::testing {
 namespace {
@@ -334,6 +335,34 @@ TEST_F(LessonPlayer, ASubstepAnimationStepsThroughThePlanesAndEndsOnTheStep) {
     EXPECT_TRUE(again.at("lesson").at("animation").at("playing").get<bool>());
     EXPECT_LT(again.at("substep").get<int>(), k);
     EXPECT_GE(again.at("substep").get<int>(), 1);
+}
+
+// A substeps animation of minmax's walk goes through the picked ray's nodes, as many as the run counts,
+// not the bound the settings list (2 columns - 1); `render` agrees on the count: trace_steps=N draws the
+// whole walk and N-1 does not.
+TEST_F(LessonPlayer, ASubstepAnimationOfTheWalkEndsOnItsLastNode) {
+    const fs::path lesson = writeText("walk.md", "# Walk\n\n## one\n```airlight\nscene: grate\ntechnique: minmax\n"
+                                                 "stage: minmax.traverse\nviews: minmax.trace\nanimate: substeps 1s\n```\n"
+                                                 "The walk node by node.\n");
+    const fs::path script = writeText("walk.txt", "frames 10\nscreenshot " + path("mid.png").string() + "\nframes 30\n");
+    const RunResult r = run("--lesson " + lesson.string() + " --size 40x30 --script " + script.string() + " --screenshot " +
+                            path("done.png").string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const json mid = sidecar("mid.png"), done = sidecar("done.png");
+    const int nodes = mid.at("substep_count").get<int>();
+    ASSERT_GE(nodes, 2);
+    EXPECT_GE(mid.at("substep").get<int>(), 1);
+    EXPECT_LT(mid.at("substep").get<int>(), nodes);
+    EXPECT_EQ(done.at("substep"), nodes) << "the animation ends on the walk's last node";
+    const auto trace = [&](int steps) {
+        const fs::path out = path("trace" + std::to_string(steps) + ".exr");
+        EXPECT_EQ(run("render --scene grate --technique minmax --size 40x30 --layer minmax.trace --set trace_steps=" +
+                      std::to_string(steps) + " --out " + out.string()).exitCode, 0);
+        return viz::readImage(out.string());
+    };
+    const viz::Image whole = trace(0);
+    EXPECT_EQ(trace(nodes).pixels, whole.pixels);
+    EXPECT_NE(trace(nodes - 1).pixels, whole.pixels);
 }
 
 TEST_F(LessonPlayer, ALightOrbitCirclesTheAimPointAndReturnsToTheStart) {
