@@ -1,5 +1,6 @@
 #include "path_reference.h"
 
+#include <chrono>
 #include <cstdio>
 #include <exception>
 #include <sstream>
@@ -105,6 +106,11 @@ bool PathReference::busy() const {
     return mState->loop && mState->error.empty() && mState->done < int(mState->loop->poses.size());
 }
 
+double PathReference::secondsPerFrame() const {
+    std::lock_guard lock(mState->mutex);
+    return mState->secondsPerFrame;
+}
+
 std::string PathReference::error() const {
     std::lock_guard lock(mState->mutex);
     return mState->error;
@@ -129,6 +135,8 @@ void PathReference::work(State& s) {
         }
         std::shared_ptr<viz::Image> airlight;
         std::string error;
+        bool computed = false;
+        const auto started = std::chrono::steady_clock::now();
         try {
             if (!s.reference) s.reference = viz::makeTechnique("reference");
             // One copy of the scene per loop; each frame only sets the camera and lights.
@@ -143,12 +151,16 @@ void PathReference::work(State& s) {
             const viz::Settings settings = settingsFor(*s.reference, job->settings, invalid);
             if (!invalid.empty()) throw viz::InputError(invalid);
             const viz::FrameInput input = viz::frameInput(&s.scene, job->width, job->height, settings);
-            airlight = std::make_shared<viz::Image>(s.reference->run(input).airlight);
+            viz::FrameOutput out = s.reference->run(input);
+            computed = out.timing.clock != "cache";
+            airlight = std::make_shared<viz::Image>(std::move(out.airlight));
         } catch (const std::exception& e) {
             error = e.what();
         }
         std::lock_guard lock(s.mutex);
         s.rendering = false;
+        // A frame read from the cache says nothing about the cost of the next one to compute.
+        if (computed) s.secondsPerFrame = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
         if (s.loop != job) continue;  // another loop was asked for meanwhile: this frame is not its
         if (!error.empty()) {
             s.error = error;

@@ -67,6 +67,8 @@ public:
     int ready() const;
     int total() const;
     bool busy() const;          // a loop has frames left to render
+    // Seconds the last frame computed (not read from the disk cache) took; 0 before one.
+    double secondsPerFrame() const;
     std::string error() const;  // the reference's failure on the current loop ("" when none)
     std::string currentKey() const;
 
@@ -81,6 +83,7 @@ private:
         int done = 0;                          // frames of the loop rendered
         std::map<int, std::shared_ptr<const viz::Image>> frames;
         std::string error;
+        double secondsPerFrame = 0.0;
         bool quit = false, rendering = false;
         // The thread's own: the reference instance and the scene of the loop it renders.
         std::unique_ptr<viz::Technique> reference;

@@ -225,6 +225,7 @@ void GuiApp::writeSidecar(const std::string& path) {
         sidecar["animation"]["temporal_error_rms"] = mAnimation.temporal.errorScore();
     sidecar["animation"]["reference_frames"] = {{"ready", mAnimation.reference.ready()},
                                                 {"total", mAnimation.reference.total()},
+                                                {"seconds_per_frame", mAnimation.reference.secondsPerFrame()},
                                                 {"error", mAnimation.reference.error()}};
     // --path: the motion and the loop's frame shown.
     if (mAnimation.path)

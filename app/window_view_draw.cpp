@@ -154,6 +154,9 @@ std::pair<std::string, std::string> GuiApp::viewTitle(const ViewState& v) const 
     } else if (temporal && mAnimation.reference.ready() < mAnimation.reference.total()) {
         title += "   reference frames " + std::to_string(mAnimation.reference.ready()) + "/" +
                  std::to_string(mAnimation.reference.total());
+        // What the rest will take, once one frame has been computed (minutes a frame for an area light).
+        if (const double s = mAnimation.reference.secondsPerFrame(); s > 0.0)
+            title += format(", %.3g s each", s);
     }
     if (v.shown >= 0) title += "   [" + std::to_string(v.shown + 1) + "/" + std::to_string(contentCount()) + "]";
     if (v.pane.id != "final" && v.pane.id != "airlight" && !temporal) {

@@ -82,6 +82,7 @@ TEST_F(GuiTemporalReference, TheErrorChangeViewScoresTheFlickerAgainstTheReferen
     EXPECT_EQ(a.at("reference_frames").at("ready"), 2) << a.dump();
     EXPECT_EQ(a.at("reference_frames").at("total"), 2);
     EXPECT_EQ(a.at("reference_frames").at("error"), "");
+    EXPECT_GT(a.at("reference_frames").at("seconds_per_frame").get<double>(), 0.0) << "computed, not read from a cache";
     ASSERT_GE(a.at("temporal_error_pairs").get<int>(), 4) << a.dump();
     const double windowScore = a.at("temporal_error_rms").get<double>();
 
