@@ -25,6 +25,14 @@ int actionsPerScene() {
     return n ? std::max(1, std::atoi(n)) : kActions;
 }
 
+// Every other scene plays a --path loop of 4 frames when P is pressed (the camera turning, so that every
+// scene can play it), whose reference frames render while a temporal view or the comparison grid shows;
+// the rest play the light's orbit. AIRLIGHT_WINDOW_FUZZ_PATH=1 gives every scene the path.
+bool playsAPath(unsigned seed) {
+    const char* all = std::getenv("AIRLIGHT_WINDOW_FUZZ_PATH");
+    return (all && std::string(all) == "1") || seed % 2 == 1;
+}
+
 std::vector<std::string> fuzzScenes() {
     std::vector<std::string> names = viz::scene::builtinSceneNames();
     for (const auto& c : viz::scene::stiffCases()) names.push_back("stiff/" + c.id);
@@ -87,9 +95,11 @@ TEST_P(WindowFuzz, RandomActionsNeitherAbortNorRaiseGlErrorsNorPutNaNInTheState)
     const unsigned seed = unsigned(std::hash<std::string>{}(scene) % 100000u) + 20261124u;
     const fs::path stats = path("stats.jsonl"), state = path("session.json");
     const fs::path script = writeText("fuzz.txt", fuzzScript(seed, actionsPerScene(), stats.string()));
-    const RunResult r = run("gui --scene " + scene + " --size 32x24 --state " + state.string() + " --export-dir " +
-                            path("exports").string() + " --script " + script.string() + " --screenshot " +
-                            path("end.png").string());
+    const ScopedCacheDir cache(path("cache"));  // the path's reference frames, and the difference views'
+    const std::string motion = playsAPath(seed) ? " --path camera-orbit:20deg --path-frames 4" : "";
+    const RunResult r = run("gui --scene " + scene + " --size 32x24" + motion + " --state " + state.string() +
+                            " --export-dir " + path("exports").string() + " --script " + script.string() +
+                            " --screenshot " + path("end.png").string());
     ASSERT_EQ(r.exitCode, 0) << scene << " (seed " << seed << "): " << r.err << "\nscript:\n" << readFile(script);
     EXPECT_EQ(r.err.find("check failed"), std::string::npos) << r.err;
     EXPECT_EQ(r.err.find("internal error"), std::string::npos) << r.err;
@@ -102,7 +112,8 @@ TEST_P(WindowFuzz, RandomActionsNeitherAbortNorRaiseGlErrorsNorPutNaNInTheState)
     // handle that does not apply (a directional light has no position) or is behind the camera.
     findBadNumbers(nlohmann::json::parse(readFile(path("end.json"))), "sidecar", {"cursor", "linked_pixel", "gizmo", "position", "tip", "root", "position_grab", "tip_grab", "inspected"}, bad);
     for (const std::string& b : bad) ADD_FAILURE() << scene << " (seed " << seed << "): " << b;
-    if (HasFailure()) {  // keep the script to replay: airlight gui --scene S --size 32x24 --script FILE
+    if (HasFailure()) {  // keep the script to replay: airlight gui --scene S --size 32x24 [PATH] --script FILE
+        ADD_FAILURE() << "replay with:" << (motion.empty() ? " (no --path)" : motion);
         const fs::path kept = fs::current_path() / ("window_fuzz_" + std::to_string(seed) + ".txt");
         fs::copy_file(script, kept, fs::copy_options::overwrite_existing);
         ADD_FAILURE() << "script kept as " << kept;
