@@ -3,7 +3,6 @@
 #pragma once
 
 #include <chrono>
-#include <cstdio>
 #include <condition_variable>
 #include <map>
 #include <memory>
@@ -17,6 +16,7 @@
 
 #include "debug/technique.h"
 #include "scene/scene.h"
+#include "worker_thread.h"
 
 namespace airlight {
 
@@ -53,20 +53,7 @@ public:
         mThread = std::thread([state = mState] { loop(*state); });
     }
     ~CpuWorker() {
-        bool running = false;
-        {
-            std::lock_guard lock(mState->mutex);
-            mState->quit = true;
-            mState->request.reset();
-            running = mState->progress.busy;
-        }
-        mState->wake.notify_all();
-        if (running) {
-            std::fprintf(stderr, "airlight: leaving a reference pass to finish in the background\n");
-            mThread.detach();
-        } else {
-            mThread.join();
-        }
+        endWorker(mThread, mState->mutex, mState->wake, mState->quit, mState->progress.busy, "a reference pass");
     }
     CpuWorker(const CpuWorker&) = delete;
     CpuWorker& operator=(const CpuWorker&) = delete;

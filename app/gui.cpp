@@ -277,12 +277,13 @@ std::shared_ptr<const viz::Image> GuiApp::pathReferenceFrame(bool forGrid) {
     const bool gridDrives = mComparison.isOpen();
     const viz::scene::Pose& wantedStart = gridDrives ? gridStart : start;
     const glm::ivec2 wantedSize = gridDrives ? gridSize : size;
-    mAnimation.reference.follow(keyOf(wantedStart, wantedSize), mAnimation.pathFrame, [&] {
+    const std::string wantedKey = keyOf(wantedStart, wantedSize);
+    mAnimation.reference.follow(wantedKey, mAnimation.pathFrame, [&] {
         return makePathLoop(mScene, *mAnimation.path, wantedStart, mAnimation.pathFrames, wantedSize.x, wantedSize.y, settings);
     });
     // The other consumer has frames only where its loop is the same one.
-    return forGrid ? mAnimation.reference.frame(keyOf(gridStart, gridSize), mAnimation.pathFrame)
-                   : mAnimation.reference.frame(keyOf(start, size), mAnimation.pathFrame);
+    const std::string key = forGrid == gridDrives ? wantedKey : forGrid ? keyOf(gridStart, gridSize) : keyOf(start, size);
+    return mAnimation.reference.frame(key, mAnimation.pathFrame);
 }
 
 void GuiApp::selectTechnique(int index) {

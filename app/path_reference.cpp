@@ -1,7 +1,6 @@
 #include "path_reference.h"
 
 #include <chrono>
-#include <cstdio>
 #include <exception>
 #include <sstream>
 #include <utility>
@@ -12,6 +11,7 @@
 #include "scene/scene_source.h"
 #include "techniques/registry.h"
 #include "window_common.h"
+#include "worker_thread.h"
 
 namespace airlight {
 
@@ -48,19 +48,7 @@ PathReference::PathReference() : mState(std::make_shared<State>()) {
 }
 
 PathReference::~PathReference() {
-    bool rendering = false;
-    {
-        std::lock_guard lock(mState->mutex);
-        mState->quit = true;
-        rendering = mState->rendering;
-    }
-    mState->wake.notify_all();
-    if (rendering) {
-        std::fprintf(stderr, "airlight: leaving a reference frame of the path to finish in the background\n");
-        mThread.detach();
-    } else {
-        mThread.join();
-    }
+    endWorker(mThread, mState->mutex, mState->wake, mState->quit, mState->rendering, "a reference frame of the path");
 }
 
 void PathReference::start(PathLoop loop, int firstFrame) {

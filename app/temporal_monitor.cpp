@@ -15,10 +15,14 @@ bool sameShape(const viz::Image& a, const viz::Image& b) {
 }
 
 // The Rec. 709 luminance of d = (now - nowReference) - (before - beforeReference) per pixel (the
-// references taken as zero when null); NaN where any value is not finite. The squares of d per channel
-// add to `sumSquares` and their count to `count` (finite pixels only).
+// references taken as zero when null); NaN where any value is not finite. With `sums`, the squares of d per
+// channel add to sums->squares and their count to sums->count (finite pixels only).
+struct SquareSums {
+    double& squares;
+    long long& count;
+};
 std::shared_ptr<viz::Image> luminanceOfChange(const viz::Image& now, const viz::Image& before, const viz::Image* nowReference,
-                                              const viz::Image* beforeReference, double& sumSquares, long long& count) {
+                                              const viz::Image* beforeReference, const SquareSums* sums) {
     static constexpr double kLuminance[3] = {0.2126, 0.7152, 0.0722};
     const int w = now.width, h = now.height, c = now.channels;
     auto change = std::make_shared<viz::Image>(w, h, 1);
@@ -35,8 +39,7 @@ std::shared_ptr<viz::Image> luminanceOfChange(const viz::Image& now, const viz::
                     continue;
                 }
                 const double d = (a - ar) - (b - br);
-                sumSquares += d * d;
-                ++count;
+                if (sums) sums->squares += d * d, ++sums->count;
                 luminance += (c >= 3 && k < 3 ? kLuminance[k] : (c >= 3 ? 0.0 : 1.0 / c)) * d;
             }
             change->at(x, y, 0) = finite ? float(luminance) : std::numeric_limits<float>::quiet_NaN();
@@ -84,12 +87,11 @@ bool TemporalMonitor::add(const viz::Image& airlight, std::shared_ptr<const viz:
     const bool comparable = !mPrevious.empty() && sameShape(mPrevious, airlight);
     if (!comparable) reset();
     if (comparable) {
-        double ignored = 0.0;
-        long long ignoredCount = 0;
-        mChange = luminanceOfChange(airlight, mPrevious, nullptr, nullptr, mSumSquares, mCount);
+        const SquareSums sums{mSumSquares, mCount};
+        mChange = luminanceOfChange(airlight, mPrevious, nullptr, nullptr, &sums);
         ++mPairs;
         if (reference && mPreviousReference) {
-            mErrorChange = luminanceOfChange(airlight, mPrevious, reference.get(), mPreviousReference.get(), ignored, ignoredCount);
+            mErrorChange = luminanceOfChange(airlight, mPrevious, reference.get(), mPreviousReference.get(), nullptr);
             ++mErrorPairs;
         }
     }
@@ -97,7 +99,7 @@ bool TemporalMonitor::add(const viz::Image& airlight, std::shared_ptr<const viz:
     if (reference) {
         if (!mPreviousReference && mAgainst.frames() > 0) mAgainst.gap();
         mAgainst.add(airlight, *reference);
-        if (mErrorPairs > 0) mErrorScore = mAgainst.finish().temporalRms;
+        if (mErrorPairs > 0) mErrorScore = mAgainst.temporalRms();
     }
     for (float v : airlight.pixels)
         if (std::isfinite(v)) mSumValues += v, ++mValues;

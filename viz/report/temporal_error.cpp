@@ -80,6 +80,19 @@ void TemporalAccumulator::add(const Image& test, const Image& reference) {
 
 void TemporalAccumulator::gap() { std::fill(mValid.begin(), mValid.end(), 0); }
 
+double TemporalAccumulator::referenceMean() const {
+    return mReferenceValues > 0 ? mReferenceSum / double(mReferenceValues) : kNaN;
+}
+
+double TemporalAccumulator::temporalRms() const {
+    double total = 0.0;
+    std::size_t count = 0;
+    for (std::size_t p = 0; p < mSumSquares.size(); ++p)
+        if (mCount[p] > 0) total += mSumSquares[p], count += mCount[p];
+    const double channels = double(std::max(mChannels, 1));
+    return relative(count > 0 ? 0.5 * std::sqrt(total / (double(count) * channels)) : kNaN, referenceMean());
+}
+
 TemporalMetrics TemporalAccumulator::finish() const {
     TemporalMetrics m;
     m.frames = mFrames;
@@ -87,7 +100,7 @@ TemporalMetrics TemporalAccumulator::finish() const {
     m.nonFiniteTestPixels = mNonFiniteTest;
     m.nonFiniteReferencePixels = mNonFiniteReference;
     m.excludedDifferences = mExcluded;
-    m.referenceMean = mReferenceValues > 0 ? mReferenceSum / double(mReferenceValues) : kNaN;
+    m.referenceMean = referenceMean();
 
     double errorSum = 0.0;
     std::size_t errorFrames = 0;
@@ -104,8 +117,6 @@ TemporalMetrics TemporalAccumulator::finish() const {
     }
 
     m.flicker = Image(mWidth, mHeight, 1);
-    double total = 0.0;
-    std::size_t count = 0;
     std::vector<double> perPixel;
     perPixel.reserve(mSumSquares.size());
     for (std::size_t p = 0; p < mSumSquares.size(); ++p) {
@@ -117,10 +128,8 @@ TemporalMetrics TemporalAccumulator::finish() const {
         const double f = 0.5 * std::sqrt(mSumSquares[p] / (double(mCount[p]) * channels));
         m.flicker.pixels[p] = float(f);
         perPixel.push_back(f);
-        total += mSumSquares[p];
-        count += mCount[p];
     }
-    m.temporalRms = relative(count > 0 ? 0.5 * std::sqrt(total / (double(count) * channels)) : kNaN, m.referenceMean);
+    m.temporalRms = temporalRms();
     if (perPixel.empty()) {
         m.worstFlicker = kNaN;
     } else {

@@ -56,6 +56,10 @@ public:
     // takes no difference, as if every pixel's previous error were left out (counted in excludedDifferences).
     void gap();
     TemporalMetrics finish() const;
+    // finish()'s temporalRms and referenceMean alone, without the flicker image and its percentile (a
+    // window updates them every frame).
+    double temporalRms() const;
+    double referenceMean() const;
     int frames() const { return mFrames; }
 
 private:
