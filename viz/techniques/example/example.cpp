@@ -5,7 +5,7 @@
 #include <string_view>
 
 #include "core/error.h"
-#include "debug/param_table.h"
+#include "debug/declared_technique.h"
 #include "debug/stage_runner.h"
 #include "scene/camera.h"
 #include "shared/airlight.h"
@@ -45,9 +45,15 @@ const ParamTable<ExampleSettings>& exampleParams() {
     return table;
 }
 
-class ExampleTechnique final : public Technique {
+// The card (id, description, what it needs) and the parameters are data; DeclaredTechnique answers the
+// accessors from them and the stages the constructor declares.
+class ExampleTechnique final : public DeclaredTechnique<ExampleSettings> {
 public:
-    ExampleTechnique() {
+    ExampleTechnique()
+        : DeclaredTechnique({.id = "example",
+                             .description = "worked example: unshadowed airlight of suns, no surfaces",
+                             .needsGl = false},
+                            exampleParams()) {
         mStages = {
             {kStageLengths, "Ray lengths", "every eye ray runs to zfar: the example has no surfaces", {},
              {kLengths}, 1},
@@ -59,14 +65,8 @@ public:
         checkStageOrder(mStages, kStageOrder);
     }
 
-    std::string id() const override { return "example"; }
-    std::string description() const override { return "worked example: unshadowed airlight of suns, no surfaces"; }
-    const std::vector<StageInfo>& stages() const override { return mStages; }
-    const std::vector<ParamInfo>& params() const override { return exampleParams().infos(); }
-    bool needsGl() const override { return false; }
-
     Plan plan(const scene::Scene& scene, const Settings& settings) const override {
-        const ExampleSettings s = exampleParams().read(settings);
+        const ExampleSettings s = read(settings);
         Plan p = planEveryStage(mStages);
         if (scene.medium.sigma_s == 0.0) {
             p.stages[kAirlightIndex].runs = false;
@@ -89,7 +89,7 @@ public:
     FrameOutput run(const FrameInput& input) override {
         VIZ_CHECK(input.scene != nullptr, "FrameInput::scene is null");
         const scene::Scene& scene = *input.scene;
-        const ExampleSettings s = exampleParams().read(input.settings);
+        const ExampleSettings s = read(input.settings);
         const int w = input.width, h = input.height;
         FrameOutput out;
         out.plan = plan(scene, input.settings);
@@ -157,7 +157,6 @@ private:
         return L;
     }
 
-    std::vector<StageInfo> mStages;
     StageReuse mReuse;
     std::shared_ptr<Image> mLengths;  // the lengths stage's output, kept for a run that resumes after it
 };

@@ -54,7 +54,11 @@ const ParamTable<MinmaxSettings>& minmaxParams() {
     return table;
 }
 
-MinmaxTechnique::MinmaxTechnique() {
+MinmaxTechnique::MinmaxTechnique()
+    : GlTechnique({.id = "minmax",
+                   .description = "1D min-max mipmaps in epipolar space (Chen, Baran, Durand, Jarosz 2011)",
+                   .controls = {.pickedPixel = true}},
+                  minmaxParams()) {
     mStages = {
         render::SceneViewPasses::shadowStage("minmax"),
         render::SceneViewPasses::surfaceStage("minmax"),
@@ -265,12 +269,10 @@ Plan MinmaxTechnique::plan(const scene::Scene& scene, const Settings& settings) 
 
 FrameOutput MinmaxTechnique::run(const FrameInput& input) {
     const scene::Scene& scene = *input.scene;
-    mSettings = minmaxParams().read(input.settings);
-    const MinmaxSettings& s = mSettings;
+    FrameOutput out;
+    const MinmaxSettings& s = startRun(input, out);
     mMarkCamera = scene.camera;
     mMarkSize = {input.width, input.height};
-    FrameOutput out;
-    out.plan = plan(scene, input.settings);
     gl::StageClock clock;
     StageRunner stages(mStages, input, out, mReuse, clock);
     if (!stages.substepOnly(kTraverseIndex)) mMarkTraversed = false;

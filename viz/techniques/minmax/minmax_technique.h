@@ -4,34 +4,16 @@
 // files include it; the rest of the program knows minmax through minmax.h.
 #pragma once
 
-#include <array>
-#include <algorithm>
 #include <bit>
 #include <cstdint>
 #include <cstdio>
-#include <cmath>
-#include <map>
-#include <memory>
 #include <numbers>
-#include <string>
-#include <vector>
 
-#include "core/error.h"
-#include "debug/permutations.h"
-#include "debug/param_table.h"
-#include "debug/stage_runner.h"
 #include "gl/buffer.h"
-#include "gl/program.h"
-#include "gl/stage_clock.h"
-#include "gl/texture.h"
 #include "render/camera_ray.h"
+#include "render/gl_technique.h"
 #include "render/host_device.h"
-#include "render/intermediates.h"
-#include "render/light_culling.h"
-#include "render/medium_block.h"
-#include "render/scene_view.h"
 #include "render/shadow_map_markers.h"
-#include "scene/camera.h"
 #include "techniques/minmax/charts.h"
 #include "techniques/minmax/epipolar_setup.h"
 #include "techniques/minmax/low_rank.h"
@@ -123,7 +105,7 @@ struct MinmaxSettings {
 };
 const ParamTable<MinmaxSettings>& minmaxParams();
 
-class MinmaxTechnique final : public Technique {
+class MinmaxTechnique final : public render::GlTechnique<MinmaxSettings> {
 public:
     MinmaxTechnique();
 
@@ -132,15 +114,6 @@ public:
     // walk), a walk visiting each of the row's 2 columns - 1 nodes at most; each run says how many nodes
     // the picked walk has (FrameOutput::substepCounts), and stepping ends there (about 80 on grate).
     std::vector<double> substepValues(int stage, const Settings& s) const override;
-
-    std::string id() const override { return "minmax"; }
-    std::string description() const override {
-        return "1D min-max mipmaps in epipolar space (Chen, Baran, Durand, Jarosz 2011)";
-    }
-    const std::vector<StageInfo>& stages() const override { return mStages; }
-    const std::vector<ParamInfo>& params() const override { return minmaxParams().infos(); }
-    Controls controls() const override { return {.pickedPixel = true}; }
-    bool needsGl() const override { return true; }
 
     // Shadow-map size, slice count and rank (issue 9), cheapest first: the analytic integrand at growing
     // shadow maps and slice counts (with the spot pieces and brute-force samples that go with them), then
@@ -234,11 +207,6 @@ private:
 
     void publishTraverse(FrameOutput& out, const FrameInput& input);
 
-    MinmaxSettings mSettings;  // the current run's, read once at its start
-    std::vector<StageInfo> mStages;
-    render::SceneViewPasses mView;
-    render::MediumBlock mMedium;  // sigma_s, sigma_t, g for the shaders (common/medium.glsl)
-    StageReuse mReuse;  // stages carried over from the last run (FrameInput::resumeAtStage)
     std::vector<LightWork> mWork;
     std::vector<int> mBruteLights;  // GpuLights indices marched by brute force
     gl::Program mRectify, mRectifyPoint, mGammaRange, mMipmap, mTraverse, mPrefix, mPrefixPoint;

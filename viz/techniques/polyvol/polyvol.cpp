@@ -46,7 +46,11 @@ const ParamTable<PolyvolSettings>& polyvolParams() {
     return table;
 }
 
-PolyvolTechnique::PolyvolTechnique() {
+PolyvolTechnique::PolyvolTechnique()
+    : GlTechnique({.id = "polyvol",
+                   .description = "polygonal light volumes from the shadow map, signed airlight per crossing (Billeter 2010)",
+                   .controls = {.orbitCamera = true}},
+                  polyvolParams()) {
     mStages = {
         render::SceneViewPasses::shadowStage("polyvol"),
         render::SceneViewPasses::surfaceStage("polyvol"),
@@ -206,10 +210,8 @@ Plan PolyvolTechnique::plan(const scene::Scene& scene, const Settings& settings)
 
 FrameOutput PolyvolTechnique::run(const FrameInput& input) {
     const scene::Scene& scene = *input.scene;
-    mSettings = polyvolParams().read(input.settings);
-    const PolyvolSettings& s = mSettings;
     FrameOutput out;
-    out.plan = plan(scene, input.settings);
+    const PolyvolSettings& s = startRun(input, out);
     // The light volume mesh view: as `wireframe` says, or (wireframe=off) from the orbit camera when
     // the caller shows polyvol.mesh, so that the view always has a picture.
     mWireMode = s.wireframe;

@@ -5,37 +5,20 @@
 // through polyvol.h.
 #pragma once
 
-#include <algorithm>
-#include <array>
 #include <bit>
 #include <chrono>
 #include <cstdio>
-#include <cmath>
-#include <map>
-#include <memory>
-#include <string>
 
-#include "core/error.h"
 #include "gl/buffer.h"
 #include "gl/framebuffer.h"
-#include "debug/param_table.h"
-#include "debug/permutations.h"
-#include "debug/stage_runner.h"
-#include "gl/program.h"
 #include "gl/readback.h"
-#include "gl/stage_clock.h"
-#include "gl/texture.h"
 #include "gl/vertex_array.h"
 #include "render/camera_ray.h"
 #include "render/eye_space.h"
+#include "render/gl_technique.h"
 #include "render/host_device.h"
-#include "render/intermediates.h"
-#include "render/light_culling.h"
-#include "render/medium_block.h"
-#include "render/scene_view.h"
-#include "render/shadow_map_markers.h"
-#include "scene/camera.h"
 #include "render/mesh_view.h"
+#include "render/shadow_map_markers.h"
 #include "techniques/polyvol/adaptive_tessellation.h"
 #include "techniques/polyvol/airlight_lut.h"
 #include "techniques/polyvol/crack_check.h"
@@ -105,7 +88,7 @@ struct PolyvolSettings {
 };
 const ParamTable<PolyvolSettings>& polyvolParams();
 
-class PolyvolTechnique final : public Technique {
+class PolyvolTechnique final : public render::GlTechnique<PolyvolSettings> {
 public:
     PolyvolTechnique();
 
@@ -113,15 +96,6 @@ public:
     // then one level finer per step, then -1 (refined fully). No sub-steps with static tessellation or
     // when the plan leaves adaptive out below its break-even size.
     std::vector<double> substepValues(int stage, const Settings& s) const override;
-
-    std::string id() const override { return "polyvol"; }
-    std::string description() const override {
-        return "polygonal light volumes from the shadow map, signed airlight per crossing (Billeter 2010)";
-    }
-    const std::vector<StageInfo>& stages() const override { return mStages; }
-    const std::vector<ParamInfo>& params() const override { return polyvolParams().infos(); }
-    Controls controls() const override { return {.orbitCamera = true}; }
-    bool needsGl() const override { return true; }
 
     // Issue 9's knobs: the shadow-map size (the volume's resolution, one vertex per texel) with static
     // tessellation, then adaptive at the sizes where it was measured to pay off (README, benchmark).
@@ -217,11 +191,6 @@ private:
         gl::Buffer buffer;
     };
 
-    std::vector<StageInfo> mStages;
-    PolyvolSettings mSettings;  // the current run's, read once at its start
-    render::SceneViewPasses mView;
-    render::MediumBlock mMedium;  // sigma_s, sigma_t, g for the shaders (common/medium.glsl)
-    StageReuse mReuse;  // stages carried over from the last run (FrameInput::resumeAtStage)
     gl::Program mProgram;
     std::string mProgramKey;
     gl::Texture mTotal, mPositive, mNegative, mCrossings;

@@ -42,7 +42,10 @@ const ParamTable<MarchSettings>& marchParams() {
     return table;
 }
 
-RaymarchTechnique::RaymarchTechnique() {
+RaymarchTechnique::RaymarchTechnique()
+    : GlTechnique({.id = "raymarch",
+                   .description = "brute-force ray marching through shadow maps (N samples per pixel)"},
+                  marchParams()) {
     mStages = {
         render::SceneViewPasses::shadowStage("raymarch"),
         render::SceneViewPasses::surfaceStage("raymarch"),
@@ -175,9 +178,8 @@ Plan RaymarchTechnique::plan(const scene::Scene& scene, const Settings& settings
 
 FrameOutput RaymarchTechnique::run(const FrameInput& input) {
     const scene::Scene& scene = *input.scene;
-    const Settings& s = input.settings;
     FrameOutput out;
-    out.plan = plan(scene, s);
+    startRun(input, out);
     gl::StageClock clock;
     StageRunner stages(mStages, input, out, mReuse, clock);
     if (!mView.runSharedStages(stages, input, "raymarch", out)) return out;

@@ -37,7 +37,7 @@ const gl::Program& RaymarchTechnique::marchProgram(const Plan& plan) {
 
 void RaymarchTechnique::march(const gl::Program& program, const scene::Scene& scene, const FrameInput& input) {
     const scene::Camera& cam = scene.camera;
-    const MarchSettings s = marchParams().read(input.settings);
+    const MarchSettings& s = mSettings;
     program.use();
     render::bindCameraRay(program, cam, input.width, input.height);
     program.set("uSamples", s.samples);

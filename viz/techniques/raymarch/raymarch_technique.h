@@ -4,19 +4,9 @@
 // raymarch.h.
 #pragma once
 
-#include <array>
 #include <cstdint>
-#include <map>
-#include <string>
-#include <vector>
 
-#include "debug/param_table.h"
-#include "debug/permutations.h"
-#include "debug/stage_runner.h"
-#include "gl/program.h"
-#include "gl/texture.h"
-#include "render/medium_block.h"
-#include "render/scene_view.h"
+#include "render/gl_technique.h"
 #include "techniques/raymarch/raymarch.h"
 
 namespace viz::raymarch_detail {
@@ -70,17 +60,9 @@ struct MarchSettings {
 
 const ParamTable<MarchSettings>& marchParams();
 
-class RaymarchTechnique final : public Technique {
+class RaymarchTechnique final : public render::GlTechnique<MarchSettings> {
 public:
     RaymarchTechnique();
-
-    std::string id() const override { return "raymarch"; }
-    std::string description() const override {
-        return "brute-force ray marching through shadow maps (N samples per pixel)";
-    }
-    const std::vector<StageInfo>& stages() const override { return mStages; }
-    const std::vector<ParamInfo>& params() const override { return marchParams().infos(); }
-    bool needsGl() const override { return true; }
 
     bool readsFrame(const Settings& settings) const override;
     std::vector<StabilisingOption> stabilisingOptions(const scene::Scene& scene) const override;
@@ -109,11 +91,7 @@ private:
     // raymarch_views.cpp: the march stage's intermediates and L_air.
     void publishMarch(FrameOutput& out, const FrameInput& input) const;
 
-    std::vector<StageInfo> mStages;
     gl::Texture mBlueNoise;
-    render::SceneViewPasses mView;
-    render::MediumBlock mMedium;  // sigma_s, sigma_t, g for the shaders (common/medium.glsl)
-    StageReuse mReuse;  // stages carried over from the last run (FrameInput::resumeAtStage)
     static std::int64_t pairsPerDispatch(const MarchSettings& s) {
         return s.exact ? kPairsPerDispatchExact : kPairsPerDispatchPlain;
     }

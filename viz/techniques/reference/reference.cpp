@@ -35,7 +35,12 @@ const ParamTable<ReferenceSettings>& referenceParams() {
     return table;
 }
 
-ReferenceTechnique::ReferenceTechnique() {
+ReferenceTechnique::ReferenceTechnique()
+    : DeclaredTechnique({.id = "reference",
+                         .description = "CPU ground truth in double precision: exact visibility transitions and "
+                                        "per-interval integrals",
+                         .needsGl = false},
+                        referenceParams()) {
     mStages = {
         {kStageTrace, "Trace primary rays", "first hit of each pixel ray with Embree; d = min(hit, zfar)",
          {}, {kDistance}, 1},

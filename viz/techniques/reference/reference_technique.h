@@ -10,7 +10,7 @@
 #include <string_view>
 #include <vector>
 
-#include "debug/param_table.h"
+#include "debug/declared_technique.h"
 #include "debug/stage_runner.h"
 #include "techniques/reference/parallel.h"
 #include "techniques/reference/ray_integrals.h"
@@ -82,17 +82,9 @@ struct ReferenceSettings {
 
 const ParamTable<ReferenceSettings>& referenceParams();
 
-class ReferenceTechnique final : public Technique {
+class ReferenceTechnique final : public DeclaredTechnique<ReferenceSettings> {
 public:
     ReferenceTechnique();
-
-    std::string id() const override { return "reference"; }
-    std::string description() const override {
-        return "CPU ground truth in double precision: exact visibility transitions and per-interval integrals";
-    }
-    const std::vector<StageInfo>& stages() const override { return mStages; }
-    const std::vector<ParamInfo>& params() const override { return referenceParams().infos(); }
-    bool needsGl() const override { return false; }
 
     Plan plan(const scene::Scene& scene, const Settings& settings) const override;
     FrameOutput run(const FrameInput& input) override;
@@ -113,7 +105,6 @@ private:
     // summing to 1).
     static double litFraction(const std::vector<VisibilitySearch>& list, const PreparedLights& lights, double d);
 
-    std::vector<StageInfo> mStages;
 };
 
 }  // namespace viz::reference_detail

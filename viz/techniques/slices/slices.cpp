@@ -100,7 +100,12 @@ const ParamTable<SlicesSettings>& slicesParams() {
     return table;
 }
 
-SlicesTechnique::SlicesTechnique() {
+SlicesTechnique::SlicesTechnique()
+    : GlTechnique({.id = "slices",
+                   .description = "Mitchell 2004: view-aligned sampling planes through the light frustum, "
+                                  "additively blended",
+                   .controls = {.pickedPixel = true, .orbitCamera = true, .animationTime = true}},
+                  slicesParams()) {
     mStages = {
         render::SceneViewPasses::shadowStage("slices", {kCookies, kNoise}),
         render::SceneViewPasses::surfaceStage("slices"),
@@ -251,10 +256,8 @@ Plan SlicesTechnique::plan(const scene::Scene& scene, const Settings& settings) 
 
 FrameOutput SlicesTechnique::run(const FrameInput& input) {
     const scene::Scene& scene = *input.scene;
-    mSettings = slicesParams().read(input.settings);
-    const SlicesSettings& s = mSettings;
     FrameOutput out;
-    out.plan = plan(scene, input.settings);
+    const SlicesSettings& s = startRun(input, out);
     gl::StageClock clock;
     StageRunner stages(mStages, input, out, mReuse, clock);
 

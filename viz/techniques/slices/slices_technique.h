@@ -5,37 +5,20 @@
 // knows slices through slices.h.
 #pragma once
 
-#include <algorithm>
-#include <array>
-#include <cmath>
 #include <cstdint>
-#include <map>
-#include <memory>
-#include <string>
-#include <vector>
 
-#include "core/error.h"
-#include "debug/param_table.h"
-#include "debug/stage_runner.h"
 #include "gl/buffer.h"
 #include "gl/framebuffer.h"
-#include "gl/program.h"
 #include "gl/readback.h"
-#include "gl/stage_clock.h"
-#include "gl/texture.h"
 #include "gl/vertex_array.h"
-#include "render/mesh_view.h"
 #include "render/compose.h"
 #include "render/eye_space.h"
+#include "render/gl_technique.h"
 #include "render/gpu_lights.h"
 #include "render/gpu_scene.h"
-#include "render/intermediates.h"
-#include "render/light_culling.h"
-#include "render/medium_block.h"
-#include "render/scene_view.h"
+#include "render/mesh_view.h"
 #include "render/shadow_maps.h"
 #include "render/surface_pass.h"
-#include "scene/camera.h"
 #include "techniques/slices/ray_planes.h"
 #include "techniques/slices/slice_geometry.h"
 #include "techniques/slices/slices.h"
@@ -121,18 +104,9 @@ struct SlicesSettings {
 };
 const ParamTable<SlicesSettings>& slicesParams();
 
-class SlicesTechnique final : public Technique {
+class SlicesTechnique final : public render::GlTechnique<SlicesSettings> {
 public:
     SlicesTechnique();
-
-    std::string id() const override { return "slices"; }
-    std::string description() const override {
-        return "Mitchell 2004: view-aligned sampling planes through the light frustum, additively blended";
-    }
-    const std::vector<StageInfo>& stages() const override { return mStages; }
-    const std::vector<ParamInfo>& params() const override { return slicesParams().infos(); }
-    Controls controls() const override { return {.pickedPixel = true, .orbitCamera = true, .animationTime = true}; }
-    bool needsGl() const override { return true; }
 
     // Plane count in float accumulation, then the precision lab's targets at one plane count.
     std::vector<QualitySetting> qualitySweep(bool quick) const override;
@@ -193,11 +167,6 @@ private:
 
     void resolve(const Terms& t);
 
-    SlicesSettings mSettings;  // the current run's, read once at its start
-    std::vector<StageInfo> mStages;
-    render::SceneViewPasses mView;
-    render::MediumBlock mMedium;  // sigma_s, sigma_t, g for the shaders (common/medium.glsl)
-    StageReuse mReuse;  // stages carried over from the last run (FrameInput::resumeAtStage)
     std::unique_ptr<render::FullscreenTriangle> mTriangle;
     std::map<std::string, gl::Program> mPlanePrograms, mResolvePrograms;
     gl::VertexArray mVao;

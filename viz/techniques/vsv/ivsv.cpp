@@ -77,7 +77,11 @@ const ParamTable<IvsvSettings>& ivsvParams() {
     return table;
 }
 
-IvsvTechnique::IvsvTechnique() {
+IvsvTechnique::IvsvTechnique()
+    : GlTechnique({.id = "ivsv",
+                   .description = "imperfect voxelized shadow volumes (Wyman and Dai 2013): area lights as many VPL shadow volumes",
+                   .controls = {.pickedPixel = true}},
+                  ivsvParams()) {
     mStages = {
         {kStageVpls, "VPLs", "Halton points on the area light: position, normal, L_e dA from the emission texture",
          {"vpls"}, {kVplImage}, 1},
@@ -202,10 +206,8 @@ Plan IvsvTechnique::plan(const scene::Scene& scene, const Settings& settings) co
 
 FrameOutput IvsvTechnique::run(const FrameInput& input) {
     const scene::Scene& scene = *input.scene;
-    mSettings = ivsvParams().read(input.settings);
-    const IvsvSettings& s = mSettings;
     FrameOutput out;
-    out.plan = plan(scene, input.settings);
+    const IvsvSettings& s = startRun(input, out);
     const scene::Light* area = areaLightOf(scene);
     const bool naive = s.naive;
     const int count = area ? s.vpls : 0;

@@ -5,33 +5,15 @@
 // Only those files include it; the rest of the program knows ivsv through ivsv.h.
 #pragma once
 
-#include <array>
-#include <algorithm>
-#include <cmath>
 #include <cstdio>
-#include <map>
-#include <memory>
 #include <numbers>
 #include <optional>
-#include <string>
-#include <vector>
 
-#include "core/error.h"
-#include "debug/permutations.h"
-#include "debug/param_table.h"
-#include "debug/stage_runner.h"
 #include "gl/buffer.h"
-#include "gl/program.h"
-#include "gl/stage_clock.h"
-#include "gl/texture.h"
 #include "render/camera_ray.h"
+#include "render/gl_technique.h"
 #include "render/host_device.h"
-#include "render/intermediates.h"
-#include "render/light_culling.h"
-#include "render/medium_block.h"
-#include "render/scene_view.h"
 #include "render/shadow_map_markers.h"
-#include "scene/camera.h"
 #include "techniques/vsv/add_airlight.h"
 #include "techniques/vsv/bits128.h"
 #include "techniques/vsv/epipolar_setup.h"
@@ -134,22 +116,13 @@ struct IvsvSettings {
 };
 const ParamTable<IvsvSettings>& ivsvParams();
 
-class IvsvTechnique final : public Technique {
+class IvsvTechnique final : public render::GlTechnique<IvsvSettings> {
 public:
     IvsvTechnique();
 
     // Stepping: the segmented scan pass by pass (scan_passes = 0 before any pass, 1, ..., then -1 = all),
     // and the gather VPL by VPL (vpl_step = 0 gathers VPL 0 only, 1 adds VPL 1, ..., then -1 = all).
     std::vector<double> substepValues(int stage, const Settings& s) const override;
-
-    std::string id() const override { return "ivsv"; }
-    std::string description() const override {
-        return "imperfect voxelized shadow volumes (Wyman and Dai 2013): area lights as many VPL shadow volumes";
-    }
-    const std::vector<StageInfo>& stages() const override { return mStages; }
-    const std::vector<ParamInfo>& params() const override { return ivsvParams().infos(); }
-    Controls controls() const override { return {.pickedPixel = true}; }
-    bool needsGl() const override { return true; }
 
     // VPL count (the area light's sampling) and voxel resolution (each VPL grid's), issue 9's knobs:
     // cheapest first. On a scene without an area light only `voxels` matters (the inner vsv).
@@ -252,12 +225,9 @@ private:
 
     static std::shared_ptr<Image> interleaveImage(int width, int height, int mode);
 
-    IvsvSettings mSettings;  // the current run's, read once at its start
-    std::vector<StageInfo> mStages;
-    render::SceneViewPasses mView;       // surface term and compose
-    render::MediumBlock mMedium;  // sigma_s, sigma_t, g for the shaders (common/medium.glsl)
+    // mView (GlTechnique) draws the surface term and composes; no ivsv stage keeps its outputs yet, so
+    // every run starts at stage 0 (mReuse carries nothing).
     render::SceneViewPasses mNaiveView;  // mode=naive: one point light (cube map) per VPL
-    StageReuse mReuse;  // no ivsv stage keeps its outputs yet: every run starts at stage 0
     bool mSurfaceRan = false, mNaiveBuilt = false;  // in the last run (markersFor)
     std::unique_ptr<Technique> mVsv;     // the scene's other lights
     // The scene vsv renders: a member, so that its address (with its geometry) stays the same from frame

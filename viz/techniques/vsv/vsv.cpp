@@ -46,7 +46,11 @@ const ParamTable<VsvSettings>& vsvParams() {
     return table;
 }
 
-VsvTechnique::VsvTechnique() {
+VsvTechnique::VsvTechnique()
+    : GlTechnique({.id = "vsv",
+                   .description = "voxelized shadow volumes (Wyman 2011): epipolar voxel grid, prefix-OR extrusion, one texel per ray",
+                   .controls = {.pickedPixel = true}},
+                  vsvParams()) {
     mStages = {
         render::SceneViewPasses::shadowStage("vsv"),
         render::SceneViewPasses::surfaceStage("vsv"),
@@ -93,8 +97,7 @@ Plan VsvTechnique::plan(const scene::Scene& scene, const Settings& settings) con
 
 FrameOutput VsvTechnique::run(const FrameInput& input) {
     const scene::Scene& scene = *input.scene;
-    mSettings = vsvParams().read(input.settings);
-    const VsvSettings& s = mSettings;
+    const VsvSettings& s = mSettings = read(input.settings);
     FrameOutput out;
     out.plan = planFor(scene, input.settings, input.width, input.height);
     const std::vector<int> lights = shadedLights(scene);

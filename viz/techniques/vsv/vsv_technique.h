@@ -4,30 +4,12 @@
 // rest of the program knows vsv through vsv.h.
 #pragma once
 
-#include <array>
-#include <algorithm>
-#include <cmath>
-#include <map>
-#include <memory>
 #include <optional>
-#include <string>
-#include <vector>
 
-#include "core/error.h"
-#include "debug/permutations.h"
-#include "debug/param_table.h"
-#include "debug/stage_runner.h"
-#include "gl/program.h"
-#include "gl/stage_clock.h"
-#include "gl/texture.h"
 #include "render/camera_ray.h"
+#include "render/gl_technique.h"
 #include "render/host_device.h"
-#include "render/intermediates.h"
-#include "render/light_culling.h"
-#include "render/medium_block.h"
-#include "render/scene_view.h"
 #include "render/shadow_map_markers.h"
-#include "scene/camera.h"
 #include "techniques/vsv/add_airlight.h"
 #include "techniques/vsv/bits128.h"
 #include "techniques/vsv/epipolar_setup.h"
@@ -120,22 +102,13 @@ inline scene::Scene onlyAreaLights(const scene::Scene& scene) {
 
 using vsv::scanPassCount;
 
-class VsvTechnique final : public Technique {
+class VsvTechnique final : public render::GlTechnique<VsvSettings> {
 public:
     VsvTechnique();
 
     // Stepping the scan pass by pass: scan_passes = 0 (the voxelized grid before any pass), 1, ...,
     // then -1 (all log2(alpha cells) passes).
     std::vector<double> substepValues(int stage, const Settings& s) const override;
-
-    std::string id() const override { return "vsv"; }
-    std::string description() const override {
-        return "voxelized shadow volumes (Wyman 2011): epipolar voxel grid, prefix-OR extrusion, one texel per ray";
-    }
-    const std::vector<StageInfo>& stages() const override { return mStages; }
-    const std::vector<ParamInfo>& params() const override { return vsvParams().infos(); }
-    Controls controls() const override { return {.pickedPixel = true}; }
-    bool needsGl() const override { return true; }
 
     // Voxel resolution per axis, the one quality knob (issue 9): the grid's alpha, theta and phi cells
     // bound how finely shadow edges and the light's falloff along each ray are resolved.
@@ -204,11 +177,6 @@ private:
     std::shared_ptr<Image> columnImage(const scene::Scene& scene, const FrameInput& input, int sceneLight,
                                        const vsv::EpipolarGrid& g, int slot, int x, int y) const;
 
-    VsvSettings mSettings;  // the current run's, read once at its start
-    std::vector<StageInfo> mStages;
-    render::SceneViewPasses mView;
-    render::MediumBlock mMedium;  // sigma_s, sigma_t, g for the shaders (common/medium.glsl)
-    StageReuse mReuse;  // stages carried over from the last run (FrameInput::resumeAtStage)
     gl::Program mVoxelize, mPack, mScan, mGather;
     std::string mGatherKey;
     glm::ivec3 mGridSize{0};
