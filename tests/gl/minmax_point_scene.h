@@ -15,12 +15,11 @@ namespace viz::testing {
 // behind the camera). The light shines through the bars onto the floor and lights the room above.
 inline scene::Scene pointGrate(const std::string& camera) {
     scene::Scene s = scene::makeBuiltinScene("grate");
-    scene::Light l;
-    l.name = "point";
-    l.type = scene::LightType::Point;
-    l.position = {0.0, 6.0, 0.0};
-    l.intensity = 400.0;
-    l.colour = {1.0, 0.92, 0.8};
+    scene::Light l{.name = "point",
+                   .type = scene::LightType::Point,
+                   .position = {0.0, 6.0, 0.0},
+                   .colour = {1.0, 0.92, 0.8},
+                   .intensity = 400.0};
     s.lights = {l};
     s.name = "point-grate-" + camera;
     if (camera == "on") s.camera = scene::lookAt("on", {0.0, 0.8, 7.0}, {0.0, 3.2, 0.0}, 0.9, 0.05, 40.0);

@@ -279,12 +279,11 @@ TEST_F(MinmaxPointTest, CpuMirrorEqualsGpuForSampledPixels) {
 // force_features=1 leaves the point-light image unchanged.
 TEST_F(MinmaxPointTest, SpotAndPointTogetherAndSvdAndForcedFeatures) {
     viz::scene::Scene scene = viz::scene::makeBuiltinScene("grate");
-    viz::scene::Light l;
-    l.name = "point";
-    l.type = viz::scene::LightType::Point;
-    l.position = {1.5, 4.5, -1.0};
-    l.intensity = 150.0;
-    l.colour = {0.7, 0.8, 1.0};
+    viz::scene::Light l{.name = "point",
+                        .type = viz::scene::LightType::Point,
+                        .position = {1.5, 4.5, -1.0},
+                        .colour = {0.7, 0.8, 1.0},
+                        .intensity = 150.0};
     scene.lights.push_back(l);
     // 160x120 and a 2048 map, as MinmaxTest.MatchesTheReferenceOnGrateAndTerrain: at 80x60 the spot's own
     // slice quantisation is near 3 % (README, "Slices, columns and the epipole").

@@ -91,11 +91,10 @@ TEST_F(RenderLights, GpuLightAndMaterialLayoutsMatchGlsl) {
     mat.emissiveFactor = {1.5f, 2.5f, 3.5f};
     mat.emissiveStrength = 2.0f;
     s.materials.push_back(mat);
-    scene::Light point;
-    point.type = scene::LightType::Point;
-    point.position = {1.0, 2.0, 3.0};
-    point.colour = {0.5, 0.25, 1.0};
-    point.intensity = 7.0;
+    scene::Light point{.type = scene::LightType::Point,
+                       .position = {1.0, 2.0, 3.0},
+                       .colour = {0.5, 0.25, 1.0},
+                       .intensity = 7.0};
     scene::Light spot = point;
     spot.type = scene::LightType::Spot;
     spot.direction = glm::normalize(glm::dvec3(0.2, -1.0, 0.1));
@@ -187,15 +186,14 @@ TEST_F(RenderLights, SpotCookieAndAttenuationMatchTheDefinition) {
     big.height = 7;
     big.rgba8.assign(9 * 7 * 4, 200);
     s.textures = {big, cookie};
-    scene::Light spot;
-    spot.type = scene::LightType::Spot;
-    spot.position = {0.3, 3.0, -0.2};
-    spot.direction = glm::normalize(glm::dvec3(0.15, -1.0, 0.1));
-    spot.colour = {1.0, 0.8, 0.6};
-    spot.intensity = 12.0;
-    spot.innerConeAngle = 0.25;
-    spot.outerConeAngle = 0.6;
-    spot.cookie = 1;
+    scene::Light spot{.type = scene::LightType::Spot,
+                      .position = {0.3, 3.0, -0.2},
+                      .direction = glm::normalize(glm::dvec3(0.15, -1.0, 0.1)),
+                      .colour = {1.0, 0.8, 0.6},
+                      .intensity = 12.0,
+                      .innerConeAngle = 0.25,
+                      .outerConeAngle = 0.6,
+                      .cookie = 1};
     scene::Light spot2 = spot;  // same light using the big texture: forces a 9x7 array
     spot2.cookie = 0;
     s.lights = {spot, spot2};
@@ -228,13 +226,12 @@ TEST_F(RenderLights, SpotCookieAndAttenuationMatchTheDefinition) {
 TEST_F(RenderLights, AreaLightBecomesVplsThatIntegrateTheEmitter) {
     scene::Scene s;
     s.meshes.push_back(floorQuad(3.0));
-    scene::Light area;
-    area.type = scene::LightType::Area;
-    area.position = {0.0, 2.0, 0.0};
-    area.direction = {0.0, -1.0, 0.0};
-    area.halfU = {0.5, 0.0, 0.0};
-    area.halfV = {0.0, 0.0, -0.25};  // cross(halfU, halfV) = (0, 0.125, 0)... any orientation works for weights
-    area.radiance = {2.0, 3.0, 4.0};
+    scene::Light area{.type = scene::LightType::Area,
+                      .position = {0.0, 2.0, 0.0},
+                      .direction = {0.0, -1.0, 0.0},
+                      .halfU = {0.5, 0.0, 0.0},
+                      .halfV = {0.0, 0.0, -0.25},  // cross(halfU, halfV) = (0, 0.125, 0)... any orientation works for weights
+                      .radiance = {2.0, 3.0, 4.0}};
     s.lights = {area};
     GpuScene gpuScene(s);
     for (int n : {1, 3, 4}) {
@@ -262,13 +259,12 @@ TEST_F(RenderLights, AreaLightBecomesVplsThatIntegrateTheEmitter) {
 TEST_F(RenderLights, VplIrradianceHasTheCosineLobe) {
     scene::Scene s;
     s.meshes.push_back(floorQuad(3.0));
-    scene::Light area;
-    area.type = scene::LightType::Area;
-    area.position = {0.0, 2.0, 0.0};
-    area.direction = {0.0, -1.0, 0.0};
-    area.halfU = {0.1, 0.0, 0.0};
-    area.halfV = {0.0, 0.0, 0.1};
-    area.radiance = {1.0, 2.0, 3.0};
+    scene::Light area{.type = scene::LightType::Area,
+                      .position = {0.0, 2.0, 0.0},
+                      .direction = {0.0, -1.0, 0.0},
+                      .halfU = {0.1, 0.0, 0.0},
+                      .halfV = {0.0, 0.0, 0.1},
+                      .radiance = {1.0, 2.0, 3.0}};
     s.lights = {area};
     GpuScene gpuScene(s);
     GpuLights lights(s, glm::dvec3(0.0), 1);

@@ -158,11 +158,10 @@ TEST_F(RenderPipeline, LambertUnderAPointLightMatchesTheCpuFormula) {
     s.camera = lookCamera({0.3, 2.0, 4.0}, {0.0, 0.0, -1.0}, 30.0);
     s.medium.sigma_s = 0.05;
     s.medium.sigma_a = 0.02;
-    scene::Light light;
-    light.type = scene::LightType::Point;
-    light.position = {0.5, 3.0, -1.0};
-    light.colour = {1.0, 0.9, 0.8};
-    light.intensity = 20.0;
+    scene::Light light{.type = scene::LightType::Point,
+                       .position = {0.5, 3.0, -1.0},
+                       .colour = {1.0, 0.9, 0.8},
+                       .intensity = 20.0};
     s.lights = {light};
     const int w = 80, h = 60;
     const Frame f = renderSurface(s, w, h);
@@ -192,19 +191,17 @@ TEST_F(RenderPipeline, LambertSumsSpotAndDirectionalLights) {
     s.meshes.push_back(quad({0.0, 0.0, 0.0}, 1, {6.0, 6.0}));
     s.camera = lookCamera({0.3, 2.0, 4.0}, {0.0, 0.0, -1.0}, 30.0);
     s.medium.sigma_s = 0.1;
-    scene::Light spot;
-    spot.type = scene::LightType::Spot;
-    spot.position = {0.2, 2.5, -0.5};
-    spot.direction = glm::normalize(glm::dvec3(0.1, -1.0, 0.3));
-    spot.colour = {0.9, 1.0, 0.7};
-    spot.intensity = 15.0;
-    spot.innerConeAngle = 0.3;
-    spot.outerConeAngle = 0.7;
-    scene::Light sun;
-    sun.type = scene::LightType::Directional;
-    sun.direction = glm::normalize(glm::dvec3(0.4, -1.0, -0.2));
-    sun.colour = {1.0, 0.5, 0.25};
-    sun.intensity = 2.0;
+    scene::Light spot{.type = scene::LightType::Spot,
+                      .position = {0.2, 2.5, -0.5},
+                      .direction = glm::normalize(glm::dvec3(0.1, -1.0, 0.3)),
+                      .colour = {0.9, 1.0, 0.7},
+                      .intensity = 15.0,
+                      .innerConeAngle = 0.3,
+                      .outerConeAngle = 0.7};
+    scene::Light sun{.type = scene::LightType::Directional,
+                     .direction = glm::normalize(glm::dvec3(0.4, -1.0, -0.2)),
+                     .colour = {1.0, 0.5, 0.25},
+                     .intensity = 2.0};
     s.lights = {spot, sun};
     const int w = 80, h = 60;
     const Frame f = renderSurface(s, w, h);
@@ -274,11 +271,10 @@ scene::Scene occluderScene() {
 
 // A spot 3 above the floor pointing straight down over the occluder (cone half-angle 1 rad).
 scene::Light spotAboveOccluder() {
-    scene::Light spot;
-    spot.type = scene::LightType::Spot;
-    spot.position = {0.0, 3.0, 0.0};
-    spot.direction = {0.0, -1.0, 0.0};
-    spot.outerConeAngle = 1.0;
+    scene::Light spot{.type = scene::LightType::Spot,
+                      .position = {0.0, 3.0, 0.0},
+                      .direction = {0.0, -1.0, 0.0},
+                      .outerConeAngle = 1.0};
     return spot;
 }
 
@@ -366,9 +362,7 @@ TEST_F(RenderPipeline, NearestStoredDistanceIsTheMinimumOverTheMapsTexels) {
 
 TEST_F(RenderPipeline, DirectionalShadowMapOccludesAlongTheTravelDirection) {
     scene::Scene s = occluderScene();
-    scene::Light sun;
-    sun.type = scene::LightType::Directional;
-    sun.direction = glm::normalize(glm::dvec3(0.3, -1.0, 0.2));
+    scene::Light sun{.type = scene::LightType::Directional, .direction = glm::normalize(glm::dvec3(0.3, -1.0, 0.2))};
     s.lights = {sun};
     // Shadow of the occluder centre on the floor: c + dir * (2 / |dir.y|) = (0.85, 0, 0.65); half 0.15.
     const glm::dvec3 c = glm::dvec3(0.25, 2.0, 0.25) + sun.direction * (2.0 / -sun.direction.y);
@@ -395,9 +389,7 @@ TEST_F(RenderPipeline, PointShadowCubeOccludesOnEveryFace) {
         }
     }
     s.camera = lookCamera({0.1, 0.2, 0.3}, {0.0, 0.0, -1.0}, 50.0);
-    scene::Light point;
-    point.type = scene::LightType::Point;
-    point.position = {0.0, 0.0, 0.0};
+    scene::Light point{.type = scene::LightType::Point, .position = {0.0, 0.0, 0.0}};
     s.lights = {point};
     std::vector<glm::dvec3> pts;
     std::vector<float> expected;
@@ -421,13 +413,12 @@ TEST_F(RenderPipeline, PointShadowCubeOccludesOnEveryFace) {
 
 TEST_F(RenderPipeline, VplShadowCubeOccludesBelowTheOccluderOnly) {
     scene::Scene s = occluderScene();
-    scene::Light area;
-    area.type = scene::LightType::Area;
-    area.position = {0.0, 3.0, 0.0};
-    area.direction = {0.0, -1.0, 0.0};
-    area.halfU = {0.05, 0.0, 0.0};
-    area.halfV = {0.0, 0.0, 0.05};
-    area.radiance = {1.0, 1.0, 1.0};
+    scene::Light area{.type = scene::LightType::Area,
+                      .position = {0.0, 3.0, 0.0},
+                      .direction = {0.0, -1.0, 0.0},
+                      .halfU = {0.05, 0.0, 0.0},
+                      .halfV = {0.0, 0.0, 0.05},
+                      .radiance = {1.0, 1.0, 1.0}};
     s.lights = {area};
     // One VPL at the centre (visibility() uses area_samples = 1): the same shadow as the spot test.
     const std::vector<glm::dvec3> pts = {{0.75, 0.0, 0.75}, {0.6, 0.0, 0.9}, {0.5, 1.0, 0.5},
@@ -439,10 +430,7 @@ TEST_F(RenderPipeline, VplShadowCubeOccludesBelowTheOccluderOnly) {
 
 TEST_F(RenderPipeline, ShadowedFloorIsDarkInTheSurfacePass) {
     scene::Scene s = occluderScene();
-    scene::Light point;
-    point.type = scene::LightType::Point;
-    point.position = {0.0, 3.0, 0.0};
-    point.intensity = 10.0;
+    scene::Light point{.type = scene::LightType::Point, .position = {0.0, 3.0, 0.0}, .intensity = 10.0};
     s.lights = {point};
     // Looking down at the shadow centre (0.75, 0, 0.75); the view ray passes the occluder's height at
     // z = 1.17, beside it, so the centre pixel sees shadowed floor.
@@ -486,9 +474,7 @@ TEST_F(RenderPipeline, TexturedAlbedoMatchesTheCpuFormula) {
     s.meshes.push_back(quad({0.0, 0.0, 0.0}, 1, {2.0, 2.0}, true, 0));
     s.meshes.push_back(quad({0.0, -5.0, 0.0}, 1, {0.5, 0.5}, true, 1));  // out of view
     s.camera = lookCamera({0.2, 3.0, 2.5}, {0.0, 0.0, 0.0}, 30.0);
-    scene::Light light;
-    light.position = {0.3, 2.5, 0.4};
-    light.intensity = 8.0;
+    scene::Light light{.position = {0.3, 2.5, 0.4}, .intensity = 8.0};
     s.lights = {light};
     const int w = 64, h = 48;
     const Frame f = renderSurface(s, w, h);
@@ -603,23 +589,17 @@ TEST_F(RenderPipeline, DISABLED_RenderBenchmark) {
         const double x = -3.0 + 0.3 * i, z = 1.5 * std::sin(i);
         s.meshes.push_back(quad({x, 0.5 + 0.05 * i, z}, i % 3, {0.2, 0.3}));
     }
-    scene::Light spot;
-    spot.type = scene::LightType::Spot;
-    spot.position = {0.0, 3.0, 0.0};
-    spot.direction = {0.0, -1.0, 0.0};
+    scene::Light spot{.type = scene::LightType::Spot, .position = {0.0, 3.0, 0.0}, .direction = {0.0, -1.0, 0.0}};
     scene::Light point = spot;
     point.type = scene::LightType::Point;
     point.position = {1.0, 2.0, 1.0};
-    scene::Light sun;
-    sun.type = scene::LightType::Directional;
-    sun.direction = glm::normalize(glm::dvec3(0.3, -1.0, 0.2));
-    scene::Light area;
-    area.type = scene::LightType::Area;
-    area.position = {-1.0, 2.5, 0.0};
-    area.direction = {0.0, -1.0, 0.0};
-    area.halfU = {0.3, 0.0, 0.0};
-    area.halfV = {0.0, 0.0, 0.3};
-    area.radiance = {1.0, 1.0, 1.0};
+    scene::Light sun{.type = scene::LightType::Directional, .direction = glm::normalize(glm::dvec3(0.3, -1.0, 0.2))};
+    scene::Light area{.type = scene::LightType::Area,
+                      .position = {-1.0, 2.5, 0.0},
+                      .direction = {0.0, -1.0, 0.0},
+                      .halfU = {0.3, 0.0, 0.0},
+                      .halfV = {0.0, 0.0, 0.3},
+                      .radiance = {1.0, 1.0, 1.0}};
     s.lights = {spot, point, sun, area};
     auto ms = [](auto&& f) {
         glFinish();

@@ -43,7 +43,7 @@ struct Mesh {
 enum class LightType { Point, Spot, Directional, Area };
 
 struct Light {
-    std::string name;
+    std::string name{};  // {}: a designated initializer may leave it out (-Wmissing-field-initializers)
     LightType type = LightType::Point;
     glm::dvec3 position{0.0};        // point, spot; area: centre of the rectangle
     glm::dvec3 direction{0, 0, -1};  // unit; spot/directional: direction the light travels (node -Z);

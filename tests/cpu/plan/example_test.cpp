@@ -24,12 +24,11 @@ scene::Scene openSky() {
     s.camera.yfov = 0.9;
     s.camera.zfar = 40.0;
     s.medium = {0.05, 0.02, 0.6};
-    scene::Light sun;
-    sun.name = "sun";
-    sun.type = scene::LightType::Directional;
-    sun.direction = glm::normalize(glm::dvec3(0.3, -0.4, 1.0));  // towards the camera: forward scattering
-    sun.colour = {1.0, 0.8, 0.6};
-    sun.intensity = 3.0;
+    scene::Light sun{.name = "sun",
+                     .type = scene::LightType::Directional,
+                     .direction = glm::normalize(glm::dvec3(0.3, -0.4, 1.0)),  // towards the camera: forward scattering
+                     .colour = {1.0, 0.8, 0.6},
+                     .intensity = 3.0};
     s.lights.push_back(sun);
     scene::Light lamp;  // the example shades suns only, and its plan says so
     lamp.name = "lamp";

@@ -13,12 +13,11 @@ namespace viz::render {
 namespace {
 
 scene::Light spot(glm::dvec3 position, glm::dvec3 direction, double outer) {
-    scene::Light l;
-    l.type = scene::LightType::Spot;
-    l.position = position;
-    l.direction = glm::normalize(direction);
-    l.outerConeAngle = outer;
-    l.innerConeAngle = outer * 0.5;
+    scene::Light l{.type = scene::LightType::Spot,
+                   .position = position,
+                   .direction = glm::normalize(direction),
+                   .innerConeAngle = outer * 0.5,
+                   .outerConeAngle = outer};
     return l;
 }
 
@@ -37,15 +36,10 @@ TEST(LightCulling, ObviousCases) {
     // A wide cone near the side plane that still leaks into view is kept.
     EXPECT_TRUE(lightReachesView(spot({-20, 1, 0}, {-1, 0, 0}, 1.5), cam));
     // Point and directional light fill all space.
-    scene::Light point;
-    point.type = scene::LightType::Point;
-    point.position = {0, 1, 100};
+    scene::Light point{.type = scene::LightType::Point, .position = {0, 1, 100}};
     EXPECT_TRUE(lightReachesView(point, cam));
     // An area light facing away from everything in view is culled; turned round, it is not.
-    scene::Light area;
-    area.type = scene::LightType::Area;
-    area.position = {0, 1, 8};
-    area.direction = {0, 0, 1};
+    scene::Light area{.type = scene::LightType::Area, .position = {0, 1, 8}, .direction = {0, 0, 1}};
     EXPECT_FALSE(lightReachesView(area, cam));
     area.direction = {0, 0, -1};
     EXPECT_TRUE(lightReachesView(area, cam));

@@ -45,14 +45,13 @@ scene::Scene panelScene() {
         {255, 255, 255}, {0, 0, 0},     {30, 200, 120},  {180, 60, 20},  {60, 60, 200}};
     for (const auto& c : rgb) tex.rgba8.insert(tex.rgba8.end(), {c[0], c[1], c[2], 255});
     s.textures.push_back(tex);
-    scene::Light l;
-    l.type = scene::LightType::Area;
-    l.position = {0.0, 1.3, -2.9};
-    l.direction = {0.0, 0.0, 1.0};
-    l.halfU = {0.8, 0.0, 0.0};
-    l.halfV = {0.0, -0.45, 0.0};
-    l.radiance = {12.0, 12.0, 12.0};
-    l.emissionTexture = 0;
+    scene::Light l{.type = scene::LightType::Area,
+                   .position = {0.0, 1.3, -2.9},
+                   .direction = {0.0, 0.0, 1.0},
+                   .halfU = {0.8, 0.0, 0.0},
+                   .halfV = {0.0, -0.45, 0.0},
+                   .radiance = {12.0, 12.0, 12.0},
+                   .emissionTexture = 0};
     s.lights.push_back(l);
     return s;
 }

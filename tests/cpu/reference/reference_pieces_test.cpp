@@ -19,14 +19,13 @@ using reference_test::spotA;
 const reference::MediumParams kMedium{0.3, 0.45, 0.5};
 
 scene::Light makeSpot(double inner, double outer) {
-    scene::Light l;
-    l.type = scene::LightType::Spot;
-    l.position = {0.0, 3.0, 0.0};
-    l.direction = glm::normalize(glm::dvec3(0.2, -1.0, 0.1));
-    l.colour = {1.0, 0.8, 0.6};
-    l.intensity = 25.0;
-    l.innerConeAngle = inner;
-    l.outerConeAngle = outer;
+    scene::Light l{.type = scene::LightType::Spot,
+                   .position = {0.0, 3.0, 0.0},
+                   .direction = glm::normalize(glm::dvec3(0.2, -1.0, 0.1)),
+                   .colour = {1.0, 0.8, 0.6},
+                   .intensity = 25.0,
+                   .innerConeAngle = inner,
+                   .outerConeAngle = outer};
     return l;
 }
 
@@ -199,14 +198,13 @@ TEST(ReferencePieces, AreaLightMatchesMidpointAndConverges) {
     tex.height = 2;
     tex.rgba8 = {255, 200, 120, 255, 180, 255, 90, 255, 120, 160, 255, 255, 255, 255, 255, 255};
     s.textures.push_back(tex);
-    scene::Light l;
-    l.type = scene::LightType::Area;
-    l.position = {0.0, 3.0, 0.0};
-    l.direction = {0.0, -1.0, 0.0};
-    l.halfU = {0.4, 0.0, 0.0};
-    l.halfV = {0.0, 0.0, 0.3};
-    l.radiance = {2.0, 1.5, 1.0};
-    l.emissionTexture = 0;
+    scene::Light l{.type = scene::LightType::Area,
+                   .position = {0.0, 3.0, 0.0},
+                   .direction = {0.0, -1.0, 0.0},
+                   .halfU = {0.4, 0.0, 0.0},
+                   .halfV = {0.0, 0.0, 0.3},
+                   .radiance = {2.0, 1.5, 1.0},
+                   .emissionTexture = 0};
     s.lights.push_back(l);
     // The ray climbs through the emitter's plane (y = 3) beside the rectangle: behind it cos theta_e < 0.
     const glm::dvec3 o(-2.0, 1.0, 4.0);

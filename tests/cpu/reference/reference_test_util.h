@@ -49,15 +49,14 @@ inline scene::Scene makeSlabScene() {
         const float x = 0.7f * float(i);
         addBox(s, {x - 0.15f, 2.0f, -3.0f}, {x + 0.15f, 2.1f, 3.0f}, 0);
     }
-    scene::Light spot;
-    spot.name = "spot";
-    spot.type = scene::LightType::Spot;
-    spot.position = {0.2, 4.0, 0.3};
-    spot.direction = glm::normalize(glm::dvec3(0.1, -1.0, 0.05));
-    spot.colour = {1.0, 0.9, 0.7};
-    spot.intensity = 40.0;
-    spot.innerConeAngle = 0.35;
-    spot.outerConeAngle = 0.6;
+    scene::Light spot{.name = "spot",
+                      .type = scene::LightType::Spot,
+                      .position = {0.2, 4.0, 0.3},
+                      .direction = glm::normalize(glm::dvec3(0.1, -1.0, 0.05)),
+                      .colour = {1.0, 0.9, 0.7},
+                      .intensity = 40.0,
+                      .innerConeAngle = 0.35,
+                      .outerConeAngle = 0.6};
     s.lights.push_back(spot);
     s.camera.position = {0.3, 1.2, 6.0};
     s.camera.forward = glm::normalize(glm::dvec3(-0.05, 0.05, -1.0));

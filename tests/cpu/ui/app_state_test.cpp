@@ -25,11 +25,10 @@ AppState sampleState() {
     a.medium.sigma_s = 0.3;
     a.medium.sigma_a = 0.02;
     a.medium.g = -0.4;
-    viz::scene::Light l;
-    l.type = viz::scene::LightType::Spot;
-    l.position = {0.0, 5.0, 0.0};
-    l.direction = {0.0, -1.0, 0.0};
-    l.intensity = 250.0;
+    viz::scene::Light l{.type = viz::scene::LightType::Spot,
+                        .position = {0.0, 5.0, 0.0},
+                        .direction = {0.0, -1.0, 0.0},
+                        .intensity = 250.0};
     a.lights = {l};
     a.exposure = -1.5f;
     a.exposureSet = true;

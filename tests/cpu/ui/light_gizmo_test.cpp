@@ -25,10 +25,9 @@ viz::scene::Camera testCamera() {
 const glm::ivec2 kFrame{160, 120};
 
 Light spot() {
-    Light l;
-    l.type = LightType::Spot;
-    l.position = {0.5, 3.0, 2.0};
-    l.direction = glm::normalize(glm::dvec3(0.2, -1.0, -0.3));
+    Light l{.type = LightType::Spot,
+            .position = {0.5, 3.0, 2.0},
+            .direction = glm::normalize(glm::dvec3(0.2, -1.0, -0.3))};
     return l;
 }
 
@@ -120,9 +119,7 @@ TEST(LightGizmo, ADirectionalLightsHandleIsWhereItsLightComesFrom) {
     const glm::dvec3 anchor{0.0, 0.0, 0.0};
     const double arm = 3.0;
     const LightGizmo gizmo(cam, kFrame, arm, anchor);
-    Light sun;
-    sun.type = LightType::Directional;
-    sun.direction = glm::normalize(glm::dvec3(0.3, -1.0, 0.2));
+    Light sun{.type = LightType::Directional, .direction = glm::normalize(glm::dvec3(0.3, -1.0, 0.2))};
     const auto h = gizmo.handles(sun);
     EXPECT_FALSE(h.position);
     ASSERT_TRUE(h.tip && h.root);
