@@ -1,6 +1,6 @@
 // The window's application object: one GLFW window, its state and its parts. The class is declared here
 // and defined by concept across app/window_*.cpp (automation, session and lesson host, input, panes, view
-// drawing, gizmo, inspector, tools, frame, parameters); gui.cpp holds the frame loop and the runs.
+// drawing, gizmo, inspector, tools, frame, parameters, animation); gui.cpp holds the frame loop and the runs.
 #pragma once
 
 #include <epoxy/gl.h>

@@ -1,6 +1,7 @@
 // The window's animation (P) and what runs while it plays: the first light's orbit, the clock a `time`
 // parameter follows, the frame index techniques with per-frame noise read (FrameInput::frame), the
-// temporal view's monitor and the focused view's recording (E). GuiApp owns one; gui.cpp advances it.
+// temporal view's monitor and the focused view's recording (E). GuiApp owns one; window_animation.cpp
+// advances it.
 #pragma once
 
 #include <cstdint>
