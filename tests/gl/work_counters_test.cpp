@@ -1,7 +1,7 @@
 // Work counters (gl/work_counters.h) against counts known without them: raymarch's shadow-map lookups and
 // ray samples are pixels x samples x lights exactly; minmax's tree nodes for one picked pixel equal the CPU
-// mirror's walk of that pixel (pixel_mirror.h); an ordinary run carries no counts, and counting does not
-// change the image.
+// mirror's walk of that pixel (pixel_mirror.h); the primitives drawn are the scene's triangles once per
+// pass and shadow-map face; an ordinary run carries no counts, and counting does not change the image.
 #include <gtest/gtest.h>
 
 #include <optional>
@@ -46,7 +46,7 @@ TEST_F(WorkCountersTest, RaymarchLooksUpTheShadowMapOncePerPixelSampleAndLight) 
     const FrameOutput counted = render(scene, "raymarch", settings, w, h);
     const StageTiming* march = stage(counted, "raymarch.march");
     ASSERT_NE(march, nullptr);
-    ASSERT_EQ(march->work.size(), std::size_t(hd::kWorkCounterCount));
+    ASSERT_EQ(march->work.size(), std::size_t(gl::kWorkCounts));
     const std::uint64_t expected = std::uint64_t(w) * h * samples;
     EXPECT_EQ(march->work[hd::kWorkShadowLookups], expected);
     EXPECT_EQ(march->work[hd::kWorkRaySamples], expected);
@@ -65,6 +65,36 @@ TEST_F(WorkCountersTest, RaymarchLooksUpTheShadowMapOncePerPixelSampleAndLight) 
     ASSERT_EQ(counted.airlight.pixels.size(), plain.airlight.pixels.size());
     for (std::size_t i = 0; i < plain.airlight.pixels.size(); ++i)
         ASSERT_EQ(counted.airlight.pixels[i], plain.airlight.pixels[i]) << i;
+}
+
+// The primitives counter against the scene's triangles, counted from its meshes: the surface pass draws
+// every mesh once; the shadow pass draws them once into a sun's 2D map and once per face into a point
+// light's cube map. The march itself is a compute pass and draws nothing.
+TEST_F(WorkCountersTest, PrimitivesAreTheScenesTrianglesOncePerPassAndShadowFace) {
+    struct Case {
+        const char* scene;
+        scene::LightType light;
+        std::uint64_t shadowPasses;
+    };
+    for (const Case c : {Case{"colonnade", scene::LightType::Directional, 1}, Case{"grate", scene::LightType::Point, 6}}) {
+        scene::Scene scene = scene::makeBuiltinScene(c.scene);
+        ASSERT_EQ(scene.lights.size(), 1u) << c.scene;
+        scene.lights[0].type = c.light;
+        std::uint64_t triangles = 0;
+        for (const scene::Mesh& m : scene.meshes) triangles += m.indices.size() / 3;
+        ASSERT_GT(triangles, 0u);
+        gl::WorkCounters::setEnabled(true);
+        const FrameOutput counted = render(scene, "raymarch", {{"samples", 4.0}}, 40, 30);
+        gl::WorkCounters::setEnabled(false);
+        const StageTiming* shadow = stage(counted, "raymarch.shadow_maps");
+        const StageTiming* surface = stage(counted, "raymarch.surface");
+        const StageTiming* march = stage(counted, "raymarch.march");
+        ASSERT_TRUE(shadow && surface && march) << c.scene;
+        ASSERT_EQ(shadow->work.size(), std::size_t(gl::kWorkCounts));
+        EXPECT_EQ(shadow->work[gl::kWorkPrimitives], c.shadowPasses * triangles) << c.scene;
+        EXPECT_EQ(surface->work[gl::kWorkPrimitives], triangles) << c.scene;
+        EXPECT_EQ(march->work[gl::kWorkPrimitives], 0u) << c.scene;
+    }
 }
 
 TEST_F(WorkCountersTest, MinmaxTreeNodesOfAPickedPixelEqualTheCpuMirrorsWalk) {
@@ -92,7 +122,7 @@ TEST_F(WorkCountersTest, MinmaxTreeNodesOfAPickedPixelEqualTheCpuMirrorsWalk) {
             gl::WorkCounters::countPixel(std::nullopt);
             const StageTiming* traverse = stage(counted, "minmax.traverse");
             ASSERT_NE(traverse, nullptr);
-            ASSERT_EQ(traverse->work.size(), std::size_t(hd::kWorkCounterCount));
+            ASSERT_EQ(traverse->work.size(), std::size_t(gl::kWorkCounts));
             EXPECT_EQ(traverse->work[hd::kWorkTreeNodes], std::uint64_t(mirror.visited))
                 << name << " pixel " << p.x << "," << p.y;
             EXPECT_GT(mirror.visited, 0) << name;

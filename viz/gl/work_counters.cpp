@@ -8,9 +8,7 @@
 #include <glm/glm.hpp>
 
 #include "gl/buffer.h"
-
-// The binding point and the counter indices, shared with the shaders (as render/host_device.h does).
-#include "../../shaders/common/host_device.glsl"
+#include "gl/handle.h"
 
 namespace viz::gl {
 
@@ -23,6 +21,9 @@ struct State {
     bool enabled = false;
     glm::ivec4 pixel{-1, -1, 0, 0};
     std::unique_ptr<Buffer> buffer;
+    Handle<QueryTraits> primitivesQuery;
+    bool primitivesRunning = false;
+    std::uint64_t primitives = 0;  // assembled since counting began, up to the last restart
 };
 
 // Never destroyed: a buffer still held at exit would be deleted after its context is gone. Contexts call
@@ -46,9 +47,38 @@ Buffer& buffer() {
     return *s.buffer;
 }
 
+// Ends the primitives' query, if it runs, and adds what it counted.
+void stopPrimitives() {
+    State& s = state();
+    if (!s.primitivesRunning) return;
+    glEndQuery(GL_PRIMITIVES_GENERATED);
+    GLuint64 n = 0;
+    glGetQueryObjectui64v(s.primitivesQuery.get(), GL_QUERY_RESULT, &n);  // waits for the result
+    s.primitives += n;
+    s.primitivesRunning = false;
+}
+
+// The primitives assembled so far; the query restarts, so that the next read counts from here. One query
+// runs at a time, however the stage clocks nest (ivsv's gather runs vsv's stages inside it).
+std::uint64_t primitivesSoFar() {
+    State& s = state();
+    stopPrimitives();
+    if (!s.primitivesQuery) {
+        GLuint id = 0;
+        glCreateQueries(GL_PRIMITIVES_GENERATED, 1, &id);
+        s.primitivesQuery = Handle<QueryTraits>(id);
+    }
+    glBeginQuery(GL_PRIMITIVES_GENERATED, s.primitivesQuery.get());
+    s.primitivesRunning = true;
+    return s.primitives;
+}
+
 }  // namespace
 
-void WorkCounters::setEnabled(bool enabled) { state().enabled = enabled; }
+void WorkCounters::setEnabled(bool enabled) {
+    if (!enabled) stopPrimitives();
+    state().enabled = enabled;
+}
 
 bool WorkCounters::enabled() { return state().enabled; }
 
@@ -69,23 +99,30 @@ WorkCounts WorkCounters::read() {
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
     std::vector<std::uint32_t> raw(static_cast<std::size_t>(kWorkCounterCount));
     buffer().download(kHeaderBytes, raw.size() * sizeof(std::uint32_t), raw.data());
-    return WorkCounts(raw.begin(), raw.end());
+    WorkCounts counts(raw.begin(), raw.end());
+    counts.push_back(primitivesSoFar());
+    return counts;
 }
 
-void WorkCounters::release() { state().buffer.reset(); }
+void WorkCounters::release() {
+    stopPrimitives();
+    state().primitivesQuery = {};
+    state().buffer.reset();
+}
 
 const char* WorkCounters::name(int counter) {
     static const char* kNames[] = {"shadow_lookups", "shadow_texels",  "ray_samples",    "closed_form_segments",
                                    "tree_nodes",     "fragments",      "voxels_written", "voxels_read",
-                                   "quadrature_nodes"};
-    static_assert(sizeof(kNames) / sizeof(kNames[0]) == std::size_t(kWorkCounterCount));
-    return counter >= 0 && counter < kWorkCounterCount ? kNames[counter] : "?";
+                                   "quadrature_nodes", "primitives"};
+    static_assert(sizeof(kNames) / sizeof(kNames[0]) == std::size_t(kWorkCounts));
+    return counter >= 0 && counter < kWorkCounts ? kNames[counter] : "?";
 }
 
 WorkCounts workBetween(const WorkCounts& before, const WorkCounts& after) {
     if (before.size() != after.size()) return after;
     WorkCounts d(after.size());
-    // The shader counters are 32-bit: the difference modulo 2^32 is right while a stage adds less.
+    // The shader counters are 32-bit: the difference modulo 2^32 is right while a stage adds less (the
+    // primitives' total is 64-bit, its difference taken the same way).
     for (std::size_t i = 0; i < d.size(); ++i)
         d[i] = std::uint64_t(std::uint32_t(std::uint32_t(after[i]) - std::uint32_t(before[i])));
     return d;
