@@ -37,6 +37,9 @@ struct ViewState {
     // Difference mode: the figures against the other technique, and why there is no difference image.
     std::optional<viz::report::ErrorMetrics> error;
     std::string differenceNote;
+    // The content chosen, when this run does not make it and the view shows another in its stead: which
+    // and why, for the title's warning ("" while the view shows what was chosen).
+    std::string standIn;
     bool titleElided = false, noteElided = false;  // shortened to fit the last frame (sidecar)
 
     // Its colour bar as last drawn, and the tiny images its ramp and legend swatches are drawn from (the

@@ -4,6 +4,26 @@
 
 namespace airlight {
 
+namespace {
+
+// Why the run `out` of `technique` has no intermediate `id`: a view of another technique, a stage the
+// run stopped before or the plan skipped, or a stage that ran without it (a setting leaves it out).
+std::string notMadeBecause(const viz::Technique& technique, const viz::FrameOutput& out, const std::string& id) {
+    const std::vector<viz::StageInfo>& stages = technique.stages();
+    for (int k = 0; k < int(stages.size()); ++k) {
+        const viz::StageInfo& stage = stages[std::size_t(k)];
+        if (std::find(stage.intermediates.begin(), stage.intermediates.end(), id) == stage.intermediates.end()) continue;
+        if (k > out.lastStageRun) return "chosen: " + id + ", made by " + stage.label + ", after where the run stops";
+        if (k < int(out.plan.stages.size()) && !out.plan.stages[std::size_t(k)].runs)
+            return "chosen: " + id + ", not made: " + stage.label + " skipped (" +
+                   out.plan.stages[std::size_t(k)].why + ")";
+        return "chosen: " + id + ", not made with these settings";
+    }
+    return "chosen: " + id + ", not a view of " + technique.id();
+}
+
+}  // namespace
+
 int GuiApp::contentCount() const { return 2 + int(mOutput.intermediates.size()); }
 
 std::vector<std::string> GuiApp::shownContents() const {
@@ -50,6 +70,7 @@ void GuiApp::buildPane(ViewState& v) {
     v.pane = {};
     v.error.reset();
     v.differenceNote.clear();
+    v.standIn.clear();
     v.shown = -1;
     if (!mHaveOutput) return;
     const auto& all = mOutput.intermediates;
@@ -62,7 +83,10 @@ void GuiApp::buildPane(ViewState& v) {
         } else if (const int first = contentIndexOf(content); first >= 2) {
             index = first - 2;
         }
-        if (index < 0) content = "airlight";  // not in this run: L_air (the choice is kept for later runs)
+        if (index < 0) {  // not in this run: L_air, saying so (the choice is kept for later runs)
+            v.standIn = notMadeBecause(technique(), mOutput, content);
+            content = "airlight";
+        }
     }
     // Stepped to a stage before the final frame or L_air exists: show what that stage published instead
     // (preferring what no other view shows), rather than an empty "(not produced by this run)" pane.

@@ -207,7 +207,8 @@ void GuiApp::drawView(int id, ViewState& v) {
                           {v.title.max.x - 2.0f * s, v.title.min.y + line + 2.0f * s}};
     // Not the complete algorithm: every view says where the run stopped, in the warning colour.
     const std::string why = mHaveOutput ? stoppedEarly() : std::string();
-    const std::string early = why.empty() ? why : "   [" + why + "]";
+    std::string early = why.empty() ? why : "   [" + why + "]";
+    if (!v.standIn.empty()) early += "   [" + v.standIn + "]";
     const SpecialCounts& n = v.counts;
     std::string counts;
     if (n.nan + n.inf + n.negative > 0) {

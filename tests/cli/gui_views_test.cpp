@@ -8,7 +8,9 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <map>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -258,6 +260,52 @@ TEST_F(GuiViews, TheGridComesBackFromTheSessionFile) {
     ASSERT_EQ(second.at("views").size(), 1u);
     EXPECT_EQ(second.at("views")[0].at("name"), first.at("views")[0].at("name"));
     EXPECT_TRUE(second.at("views")[0].at("display").at("strip_open").get<bool>());
+}
+
+// A view whose chosen content the run does not make shows L_air in its stead and says, in its title,
+// which content it was and why: an intermediate of another technique, or one a setting leaves out
+// (minmax's SVD tables under its default analytic integrand). The choice is kept.
+TEST_F(GuiViews, AViewWhoseContentTheRunDoesNotMakeSaysWhichAndWhy) {
+    json views = json::array();
+    const std::vector<std::string> contents = {"final", "slices.accumulation", "minmax.singular_values"};
+    for (int i = 0; i < int(contents.size()); ++i)
+        views.push_back({{"id", i}, {"content", contents[std::size_t(i)]}, {"against", "reference"},
+                         {"center", {0.5, 0.5}}, {"channel", 0}, {"colour_map", 0}, {"difference", 0}, {"layer", 0},
+                         {"log", false}, {"manual", {0.0, 1.0}}, {"mark_negative", -1}, {"range", 0},
+                         {"strip_open", false}, {"zoom", 1.0}});
+    const json session = {{"version", 1}, {"scene", "grate"}, {"technique", "minmax"}, {"settings", json::object()},
+                          {"size", {32, 24}}, {"exposure", 0.0}, {"exposure_set", false}, {"view", "final"},
+                          {"view_grid", {{"focused", 0}, {"layout", "x(0.3333,0,x(0.5,1,2))"}, {"maximised", -1},
+                                         {"views", views}}}};
+    const fs::path state = writeText("state.json", session.dump());
+    const RunResult r = run("gui --state " + state.string() + " --screenshot " + path("a.png").string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const json j = sidecar("a.png");
+    ASSERT_EQ(j.at("views").size(), 3u);
+    std::map<std::string, std::string> titleOf;  // by what each view shows
+    int standIns = 0;
+    for (const json& v : j.at("views")) {
+        const std::string title = v.at("title").get<std::string>();
+        if (title.find("[chosen: ") == std::string::npos) continue;
+        ++standIns;
+        EXPECT_EQ(v.at("name"), "airlight") << title;
+        titleOf[title.substr(title.find("[chosen: "))] = title;
+    }
+    EXPECT_EQ(standIns, 2);
+    EXPECT_EQ(titleOf.count("[chosen: slices.accumulation, not a view of minmax]"), 1u) << j.at("views").dump();
+    EXPECT_EQ(titleOf.count("[chosen: minmax.singular_values, not made with these settings]"), 1u) << j.at("views").dump();
+    // The same grid with the SVD integrand: the view shows what was chosen, without a warning.
+    const RunResult svd =
+        run("gui --state " + state.string() + " --set integrand=svd --screenshot " + path("b.png").string());
+    ASSERT_EQ(svd.exitCode, 0) << svd.err;
+    bool shown = false;
+    const json b = sidecar("b.png");
+    for (const json& v : b.at("views")) {
+        if (v.at("name") != "minmax.singular_values") continue;
+        shown = true;
+        EXPECT_EQ(v.at("title").get<std::string>().find("[chosen:"), std::string::npos) << v.at("title");
+    }
+    EXPECT_TRUE(shown) << b.at("views").dump();
 }
 
 // Benchmark (not a test): the CPU cost of the window's UI with seven views, three display strips open
