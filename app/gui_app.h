@@ -30,6 +30,7 @@
 #include "comparison_grid.h"
 #include "cpu_worker.h"
 #include "lesson_player.h"
+#include "on_off_slider.h"
 #include "pane_image.h"
 #include "process_stats.h"
 #include "ray_inspection.h"
@@ -564,10 +565,9 @@ private:
     std::string mProbeTechnique;
     bool mProbeHasValue = false;
     glm::dvec3 mProbeValue{0.0};
-    // The light panel's intensity slider: a declared log range (candela or lux) covering every scene's
-    // lights, from millimetre models to the stiff cases; 0 is the "on" box unticked.
-    static constexpr float kIntensitySliderMin = 1e-6f, kIntensitySliderMax = 1e12f;
-    double mLightIntensityOff = 0.0;  // the intensity before "on" was unticked
+    // The panel's light intensity (candela or lux) and medium coefficients (per scene unit): declared log
+    // ranges covering every built-in scene and stiff case (millimetre models, scales 1e-3 to 1e4).
+    OnOffSlider mIntensitySlider{1e-6f, 1e12f, 1.0}, mSigmaSSlider{1e-7f, 1e3f, 0.1}, mSigmaASlider{1e-7f, 1e3f, 0.01};
     int mDragView = -1;                      // the view a drag pans
     int mDragOrbit = -1;                     // the orbit view a drag turns
     bool mShowGizmo = true;                   // L: the light gizmo over the frame views

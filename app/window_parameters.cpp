@@ -12,11 +12,14 @@ void GuiApp::drawParameters(glm::ivec2 fb) {
         bool sceneChanged = false;
         if (mUi->collapsingHeader("Medium", true)) {
             // Values change only when a widget reports a change, so the scene keeps its exact doubles.
-            float sigmaS = float(mScene.medium.sigma_s), sigmaA = float(mScene.medium.sigma_a), g = float(mScene.medium.g);
-            if (mUi->sliderFloat("sigma_s (scattering)", sigmaS, 1e-4f, 10.0f, true))
-                mScene.medium.sigma_s = sigmaS, sceneChanged = true;
-            if (mUi->dragFloat("sigma_a (absorption)", sigmaA, 0.001f, 0.0f, 50.0f))
-                mScene.medium.sigma_a = sigmaA, sceneChanged = true;
+            // 0 is a box unticked ("scatters", "absorbs"): sigma_s = 0 makes L_air 0, sigma_a = 0 leaves
+            // extinction to scattering.
+            viz::scene::Medium& m = mScene.medium;
+            sceneChanged = mSigmaSSlider.draw(*mUi, "scatters", "sigma_s (scattering)", m.sigma_s) || sceneChanged;
+            mUi->tooltip("per scene unit; untick 'scatters' for sigma_s = 0 (no airlight)");
+            sceneChanged = mSigmaASlider.draw(*mUi, "absorbs", "sigma_a (absorption)", m.sigma_a) || sceneChanged;
+            mUi->tooltip("per scene unit; untick 'absorbs' for sigma_a = 0");
+            float g = float(mScene.medium.g);
             if (mUi->sliderFloat("g (Henyey-Greenstein)", g, -0.99f, 0.99f)) mScene.medium.g = g, sceneChanged = true;
             mUi->tooltip("phase function asymmetry: > 0 scatters forward, < 0 back");
         }
@@ -29,27 +32,11 @@ void GuiApp::drawParameters(glm::ivec2 fb) {
             int picked = selectedLightIndex();
             if (mUi->combo("light", picked, names)) {
                 mLight = picked;
-                mLightIntensityOff = 0.0;
+                mIntensitySlider.forget();
             }
         }
         if (!mScene.lights.empty() && mUi->collapsingHeader("Light: " + selectedLight().name, true)) {
-            // The slider's range is declared, never derived from the light (a light of intensity 0, or
-            // one from a millimetre model, once gave an empty or inverted range): a log scale over the
-            // intensities scenes use, and "on" for the light switched off (0).
-            double& value = selectedLight().intensity;
-            bool on = value > 0.0;
-            if (mUi->checkbox("on", on)) {
-                if (on) value = mLightIntensityOff > 0.0 ? mLightIntensityOff : 1.0;
-                else mLightIntensityOff = value, value = 0.0;
-                sceneChanged = true;
-            }
-            if (on) {
-                float intensity = float(value);
-                if (mUi->sliderFloat("intensity", intensity, kIntensitySliderMin, kIntensitySliderMax, true)) {
-                    value = intensity;
-                    sceneChanged = true;
-                }
-            }
+            sceneChanged = mIntensitySlider.draw(*mUi, "on", "intensity", selectedLight().intensity) || sceneChanged;
         }
         // Folded by default: the technique's parameters stay in view on small windows.
         if (!mScene.lights.empty() && mUi->collapsingHeader("Light placement", false)) {

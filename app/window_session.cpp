@@ -96,7 +96,9 @@ void GuiApp::loadLessonScene(const std::string& name) {
     mController = CameraController(mScene.camera, orbitDistance(mScene));
     mGizmoArm = kGizmoArm * mController.targetDistance();
     mWorker->setScene(mScene);
-    mLightIntensityOff = 0.0;
+    mIntensitySlider.forget();
+    mSigmaSSlider.forget();
+    mSigmaASlider.forget();
     mNotice = sceneNotesLine(mScene);
     mComparison.close();
     mProbe.reset();

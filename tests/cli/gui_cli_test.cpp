@@ -175,6 +175,29 @@ TEST_F(GuiCli, ALightOfIntensityZeroOpensAndCanBeSwitchedOn) {
     EXPECT_NEAR(std::log10(on.at("lights")[0].at("intensity").get<double>()), 7.5, 0.2);
 }
 
+// The medium's coefficients: log sliders over declared ranges (1e-7 to 1e3 per scene unit) and 0 as a box
+// unticked. A stiff case's 5e-7 stays exact until a widget changes it; unticking "scatters" makes sigma_s 0
+// and ticking it brings 5e-7 back exactly; the middle of the slider is 1e-2 whatever the scene had;
+// unticking "absorbs" makes sigma_a 0.
+TEST_F(GuiCli, TheMediumsCoefficientsSlideOverDeclaredRangesAndABoxSwitchesThemOff) {
+    const std::string shot = "\nframes 2\nscreenshot ";
+    const fs::path script = writeText("medium.txt", "frames 2\nscreenshot " + path("start.png").string() +
+                                                        "\nclick scatters" + shot + path("off.png").string() +
+                                                        "\nclick scatters" + shot + path("back.png").string() +
+                                                        "\nclick \"sigma_s (scattering)\" 0.5 0.5" + shot +
+                                                        path("middle.png").string() + "\nclick absorbs\nframes 2\n");
+    const RunResult r = run("gui --scene stiff/extinction-1e-6 --technique raymarch --size 40x30 --set samples=8 --script " +
+                            script.string() + " --screenshot " + path("end.png").string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const auto medium = [&](const char* name) { return nlohmann::json::parse(readFile(path(name))).at("medium"); };
+    EXPECT_EQ(medium("start.json").at("sigma_s").get<double>(), 5e-7);
+    EXPECT_EQ(medium("off.json").at("sigma_s").get<double>(), 0.0);
+    EXPECT_EQ(medium("back.json").at("sigma_s").get<double>(), 5e-7);
+    EXPECT_NEAR(std::log10(medium("middle.json").at("sigma_s").get<double>()), -2.0, 0.1);
+    EXPECT_EQ(medium("middle.json").at("sigma_a").get<double>(), 5e-7);
+    EXPECT_EQ(medium("end.json").at("sigma_a").get<double>(), 0.0);
+}
+
 // In fly mode W A S D Q E belong to the camera: S and Shift+S do not step the stage, E does not export a
 // view, and holding S moves the camera back. Back in orbit mode (C) Shift+S steps again.
 TEST_F(GuiCli, InFlyModeTheMovementKeysOnlyMoveTheCamera) {
