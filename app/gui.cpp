@@ -8,6 +8,10 @@
 // worker thread in progressive passes (1/4, 1/2, then full resolution) so the window never freezes.
 #include "gui_app.h"
 
+#include <cstdlib>
+
+#include "gl/gpu_timer.h"
+
 namespace airlight {
 
 GuiApp::GuiApp(const GuiOptions& options, viz::scene::Scene scene, viz::Window& window, SessionState session,
@@ -41,6 +45,13 @@ GuiApp::GuiApp(const GuiOptions& options, viz::scene::Scene scene, viz::Window& 
     const auto it = std::find(mIds.begin(), mIds.end(), wanted);
     mCurrent = it == mIds.end() ? 0 : int(it - mIds.begin());
     mClockName = viz::gl::StageClock::method();
+    // Where GL timer queries measure the work, the main views' stages are timed without waiting for the
+    // GPU (the times shown are a frame or a few old); AIRLIGHT_GPU_TIMER=1 forces it (tests on llvmpipe,
+    // where its times mean nothing).
+    const char* forced = std::getenv("AIRLIGHT_GPU_TIMER");
+    if (mClockName == viz::gl::StageClock::methodName(viz::gl::ClockMethod::TimestampQuery) ||
+        (forced && std::string(forced) == "1"))
+        mGpuTimer = std::make_unique<viz::gl::GpuTimer>();
 
     glfwSetWindowUserPointer(mWindow.handle(), this);
     glfwSetKeyCallback(mWindow.handle(), [](GLFWwindow* w, int key, int, int action, int mods) {
@@ -172,7 +183,10 @@ void GuiApp::selectTechnique(int index) {
     index = ((index % n) + n) % n;
     const std::string& id = mIds[std::size_t(index)];
     try {
-        if (!mRunners.count(id)) mRunners[id] = std::make_unique<RunScheduler>(viz::makeTechnique(id));
+        if (!mRunners.count(id)) {
+            mRunners[id] = std::make_unique<RunScheduler>(viz::makeTechnique(id));
+            mRunners[id]->setTimer(mGpuTimer.get());
+        }
     } catch (const std::exception& e) {
         mError = e.what();
         return;

@@ -484,6 +484,7 @@ private:
     viz::Settings mSettings;
     viz::Plan mPlan;
     std::string mSettingsError, mError, mClockName;
+    std::unique_ptr<viz::StageTimer> mGpuTimer;  // main views' GPU runs where timer queries count (gl/gpu_timer.h)
 
     std::unique_ptr<viz::ui::FontAtlas> mFont;
     std::unique_ptr<viz::ui::TextRenderer> mTextRenderer;

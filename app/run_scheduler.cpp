@@ -83,6 +83,7 @@ viz::FrameOutput RunScheduler::run(const viz::scene::Scene& scene, int width, in
     input.substepOnly = mResume.substepOnly;
     input.views = key.views;
     input.frame = frame;
+    input.timer = mTechnique->needsGl() ? mTimer : nullptr;  // GL only: the reference runs on a worker
     mLastViews = key.views;
     mPrevious.reset();  // a run that throws leaves nothing to resume from
     viz::FrameOutput out = mTechnique->run(input);

@@ -69,9 +69,12 @@ public:
     ResumePoint lastResume() const { return mResume; }
     // The next run starts from stage 0 (its textures were touched by someone else, a GL reset, ...).
     void invalidate() { mPrevious.reset(); }
+    // The clock a GPU technique's stages are timed by (FrameInput::timer; null: the technique's own).
+    void setTimer(viz::StageTimer* timer) { mTimer = timer; }
 
 private:
     std::unique_ptr<viz::Technique> mTechnique;
+    viz::StageTimer* mTimer = nullptr;
     std::optional<RunKey> mPrevious;
     int mPreviousLastStage = -1;
     ResumePoint mResume;

@@ -1,6 +1,8 @@
 // The window under automation: the script player (gui --script) and the screenshot sidecar.
 #include "gui_app.h"
 
+#include <cmath>
+
 namespace airlight {
 
 Rect GuiApp::scriptTarget(const ScriptAction& a) const {
@@ -190,6 +192,13 @@ void GuiApp::writeSidecar(const std::string& path) {
                               {"direction", {l.direction.x, l.direction.y, l.direction.z}},
                               {"intensity", l.intensity}});
         sidecar["lights"] = lights;
+    }
+    // The last run's stage times with the clock that took them (a GPU's ring: the latest known).
+    if (mHaveOutput) {
+        nlohmann::json stages = nlohmann::json::array();
+        for (const viz::StageTiming& s : mOutput.timing.stages)
+            if (std::isfinite(s.milliseconds)) stages.push_back({{"stage", s.stage}, {"ms", s.milliseconds}});
+        sidecar["timing"] = {{"clock", mOutput.timing.clock}, {"stages", stages}};
     }
     // The light gizmo in the first view that shows it: its handles in that view's frame pixels.
     sidecar["gizmo"] = nullptr;

@@ -199,6 +199,31 @@ TEST_F(GuiCli, TheMediumsCoefficientsSlideOverDeclaredRangesAndABoxSwitchesThemO
     EXPECT_EQ(medium("end.json").at("sigma_a").get<double>(), 0.0);
 }
 
+// Where GL timer queries measure the work the window times the main views' GPU stages with gl::GpuTimer,
+// which does not wait for the GPU; AIRLIGHT_GPU_TIMER=1 asks for it here (its times mean nothing on
+// llvmpipe). The sidecar's timing names the clock and gives every stage run a time, stepping included;
+// ivsv on grate runs vsv inside its gather (nested stages). Without it the window waits for each stage.
+TEST_F(GuiCli, TheWindowTimesGpuStagesWithoutWaitingWhereAskedTo) {
+    const fs::path script = writeText("timer.txt", "frames 3\nkey S\nframes 2\nscreenshot " + path("step.png").string() +
+                                                       "\nkey Shift+S\nframes 3\n");
+    const std::string args = "gui --scene grate --technique ivsv --size 40x30 --set vpls=4 --script " + script.string();
+    ::setenv("AIRLIGHT_GPU_TIMER", "1", 1);
+    const RunResult r = run(args + " --screenshot " + path("ring.png").string());
+    ::unsetenv("AIRLIGHT_GPU_TIMER");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const auto timing = [&](const char* name) { return nlohmann::json::parse(readFile(path(name))).at("timing"); };
+    const nlohmann::json ring = timing("ring.json"), step = timing("step.json");  // before the plain run's
+    const RunResult plain = run(args + " --screenshot " + path("plain.png").string());
+    ASSERT_EQ(plain.exitCode, 0) << plain.err;
+    EXPECT_EQ(ring.at("clock").get<std::string>().rfind("GL_TIMESTAMP ring", 0), 0u) << ring.at("clock");
+    EXPECT_EQ(step.at("clock"), ring.at("clock"));
+    EXPECT_EQ(ring.at("stages").size(), 7u) << ring.dump();  // vpls .. compose
+    EXPECT_EQ(step.at("stages").size(), 1u) << step.dump();  // S: stopped after the first stage
+    for (const nlohmann::json& s : ring.at("stages")) EXPECT_GE(s.at("ms").get<double>(), 0.0) << s.dump();
+    EXPECT_EQ(timing("plain.json").at("clock"), "glFinish+steady_clock");
+    EXPECT_EQ(timing("plain.json").at("stages").size(), 7u);
+}
+
 // In fly mode W A S D Q E belong to the camera: S and Shift+S do not step the stage, E does not export a
 // view, and holding S moves the camera back. Back in orbit mode (C) Shift+S steps again.
 TEST_F(GuiCli, InFlyModeTheMovementKeysOnlyMoveTheCamera) {

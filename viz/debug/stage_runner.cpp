@@ -16,7 +16,7 @@ void checkStageOrder(const std::vector<StageInfo>& stages, const std::string_vie
 
 StageRunner::StageRunner(const std::vector<StageInfo>& stages, const FrameInput& input, FrameOutput& out,
                          StageReuse& reuse, StageTimer& timer)
-    : mStages(stages), mOut(out), mReuse(reuse), mTimer(timer) {
+    : mStages(stages), mOut(out), mReuse(reuse), mTimer(input.timer ? *input.timer : timer) {
     // The controls reach a run as FrameInput::controls only; a request built without setRunSettings or
     // frameInput would leave them in the settings, where no technique reads them.
     static const Settings kControlNames = controlSettings({});  // built once, not per run
@@ -25,7 +25,7 @@ StageRunner::StageRunner(const std::vector<StageInfo>& stages, const FrameInput&
                                                       "': build the run request with setRunSettings or frameInput");
     const int last = int(stages.size()) - 1;
     mStop = input.stopAfterStage < 0 || input.stopAfterStage > last ? last : input.stopAfterStage;
-    out.timing.clock = timer.name();
+    out.timing.clock = mTimer.name();
     reuse.begin(input, out);
 }
 

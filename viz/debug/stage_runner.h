@@ -39,7 +39,8 @@ void checkStageOrder(const std::vector<StageInfo>& stages, const std::array<std:
 
 class StageRunner {
 public:
-    // Begins the run: `reuse` learns where it starts (out.firstStageRun), out.timing which clock.
+    // Begins the run: `reuse` learns where it starts (out.firstStageRun), out.timing which clock. The
+    // stages are timed by `timer`, or by the caller's input.timer where it gives one.
     StageRunner(const std::vector<StageInfo>& stages, const FrameInput& input, FrameOutput& out, StageReuse& reuse,
                 StageTimer& timer);
 

@@ -103,6 +103,9 @@ struct FrameInput {
     // technique's textures alone (vsv's and ivsv's inner runs for each other's lights) asks for none and
     // a GPU technique then saves two read-backs per frame; the intermediates are published either way.
     bool readBack = true;
+    // The caller's clock for the stages, instead of the technique's own (null): the window's gl::GpuTimer
+    // on a GPU, whose records carry the latest time known for each stage rather than waiting for it.
+    StageTimer* timer = nullptr;
 };
 
 struct FrameOutput {

@@ -171,6 +171,7 @@ void IvsvTechnique::addOtherLights(const FrameInput& input) {
     setRunSettings(in, completeSettings(*mVsv, {{"voxels", double(mSettings.voxels)}}));
     in.stopAfterStage = 4;  // vsv.gather: L_air exists, no compose needed
     in.readBack = false;    // the add reads the inner L_air's texture
+    in.timer = input.timer;  // the caller's clock, if it gave one, times the inner stages too
     mAdder.add(mAirlight, mVsv->run(in), vsv_detail::kAirlight);
 }
 

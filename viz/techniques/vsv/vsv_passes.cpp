@@ -51,6 +51,7 @@ void VsvTechnique::addAreaLights(const FrameInput& input) {
     setRunSettings(in, completeSettings(*mIvsv, {{"voxels", std::min(512.0, double(mSettings.voxels))}}));
     in.stopAfterStage = 5;  // ivsv.gather: L_air exists, no compose needed
     in.readBack = false;    // the add reads the inner L_air's texture
+    in.timer = input.timer;  // the caller's clock, if it gave one, times the inner stages too
     mAdder.add(mAirlight, mIvsv->run(in), ivsv_detail::kAirlight);
 }
 
