@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <set>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -212,6 +213,38 @@ TEST_F(IvsvTest, PerVplContributionsOfThePickedPixelAddUp) {
         const double first3 = double(per.at(0, 0, c)) + per.at(1, 0, c) + per.at(2, 0, c);
         EXPECT_NEAR(partial.airlight.at(px, py, c), first3, 1e-4 * (1.0 + first3)) << c;
     }
+}
+
+// The interleaved gather: the picked pixel gathers exactly the VPLs of its subset, by the subset's
+// definition checked over every VPL index (VPL i is in subset (i + i / 9) mod 9; the pixel's subset is
+// (x mod 3) + 3 (y mod 3), GL rows), however the shader walks them; four pixels of four subsets.
+TEST_F(IvsvTest, TheInterleavedGatherTakesExactlyThePixelsSubset) {
+    const viz::scene::Scene scene = viz::scene::makeBuiltinScene("tv-room");
+    const int w = 80, h = 60, vpls = 256;
+    std::set<int> phases;
+    for (const glm::ivec2 pick : {glm::ivec2(60, 40), glm::ivec2(61, 40), glm::ivec2(62, 41), glm::ivec2(60, 42)}) {
+        const int glY = h - 1 - pick.y;
+        const int phase = (pick.x % 3) + 3 * (glY % 3);
+        phases.insert(phase);
+        const viz::Settings s{{"vpls", vpls}, {"voxels", 32}, {"points", 20000}, {"gather", 1},
+                              {"pick_x", pick.x}, {"pick_y", pick.y}};
+        const viz::FrameOutput out = render(scene, "ivsv", s, w, h, -1, {"ivsv.pixel_vpls"});
+        const viz::Image& per = *find(out, "ivsv.pixel_vpls")->image;
+        ASSERT_EQ(per.width, vpls);
+        int members = 0, lit = 0;
+        for (int i = 0; i < vpls; ++i) {
+            const bool member = (i + i / 9) % 9 == phase;
+            const bool written = per.at(i, 0, 0) != 0.0f || per.at(i, 0, 1) != 0.0f || per.at(i, 0, 2) != 0.0f;
+            members += member;
+            lit += member && written;
+            if (!member) {
+                EXPECT_FALSE(written) << "pixel " << pick.x << "," << pick.y << " gathered VPL " << i;
+            }
+        }
+        EXPECT_NEAR(members, vpls / 9.0, 1.0) << phase;  // a ninth of the VPLs
+        EXPECT_GT(lit, members / 2) << "pixel " << pick.x << "," << pick.y << ": most of its subset reaches it";
+    }
+    EXPECT_EQ(phases.size(), 4u);
 }
 
 // The picked pixel's column in the shown VPL's grid, as in vsv: up to the fragment, row 0 is one column of
