@@ -10,8 +10,6 @@
 // anything; the window uses it there (app/run_scheduler.h), and tests drive its mechanics anywhere.
 #pragma once
 
-#include <epoxy/gl.h>
-
 #include <chrono>
 #include <cstddef>
 #include <deque>
@@ -20,7 +18,7 @@
 #include <vector>
 
 #include "debug/timing.h"
-#include "gl/handle.h"
+#include "gl/timestamp_pair.h"
 
 namespace viz::gl {
 
@@ -41,19 +39,16 @@ public:
     double latest(const std::string& stage) const;
 
 private:
-    struct Pair {
-        Handle<QueryTraits> start, end;
-    };
     struct Waiting {
         std::string stage;
-        Pair queries;
+        TimestampPair queries;
     };
-    Pair takePair();
-    void read(Waiting& w);  // waits for the result if it is not there yet
+    // Reads the oldest waiting stage (waiting for its result if it is not there yet) and frees its pair.
+    void readOldest();
 
     std::size_t mRing;
-    std::vector<Pair> mFree;
-    std::vector<std::pair<Pair, std::chrono::steady_clock::time_point>> mOpen;  // begun, not ended (nested)
+    std::vector<TimestampPair> mFree;
+    std::vector<std::pair<TimestampPair, std::chrono::steady_clock::time_point>> mOpen;  // begun, not ended (nested)
     std::deque<Waiting> mWaiting;
     std::map<std::string, double> mLatest;
 };

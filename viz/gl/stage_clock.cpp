@@ -9,12 +9,7 @@ namespace viz::gl {
 StageClock::StageClock() : StageClock(methodForRenderer(contextInfo().renderer)) {}
 
 StageClock::StageClock(ClockMethod method) : mMethod(method) {
-    if (mMethod == ClockMethod::TimestampQuery) {
-        GLuint ids[2] = {0, 0};
-        glCreateQueries(GL_TIMESTAMP, 2, ids);
-        mStartQuery = Handle<QueryTraits>(ids[0]);
-        mEndQuery = Handle<QueryTraits>(ids[1]);
-    }
+    if (mMethod == ClockMethod::TimestampQuery) mQueries = TimestampPair::create();
 }
 
 void StageClock::begin() {
@@ -26,7 +21,7 @@ void StageClock::begin() {
     }
     mWallStart = std::chrono::steady_clock::now();
     if (mMethod == ClockMethod::TimestampQuery) {
-        glQueryCounter(mStartQuery.get(), GL_TIMESTAMP);
+        mQueries.markStart();
     } else {
         // Earlier work must not be billed to this stage.
         glFinish();
@@ -38,12 +33,8 @@ double StageClock::endMilliseconds() {
     VIZ_CHECK(mRunning, "StageClock::endMilliseconds called without begin");
     mRunning = false;
     if (mMethod == ClockMethod::TimestampQuery) {
-        glQueryCounter(mEndQuery.get(), GL_TIMESTAMP);
-        GLuint64 start = 0, end = 0;
-        // GL_QUERY_RESULT waits until the result is available.
-        glGetQueryObjectui64v(mStartQuery.get(), GL_QUERY_RESULT, &start);
-        glGetQueryObjectui64v(mEndQuery.get(), GL_QUERY_RESULT, &end);
-        return end > start ? static_cast<double>(end - start) * 1e-6 : 0.0;
+        mQueries.markEnd();
+        return mQueries.milliseconds();  // waits until the results are available
     }
     glFinish();
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - mStart)

@@ -15,7 +15,7 @@
 #include <string>
 
 #include "debug/timing.h"
-#include "gl/handle.h"
+#include "gl/timestamp_pair.h"
 
 namespace viz::gl {
 
@@ -43,7 +43,7 @@ public:
 
 private:
     ClockMethod mMethod;
-    Handle<QueryTraits> mStartQuery, mEndQuery;
+    TimestampPair mQueries;  // TimestampQuery only
     std::chrono::steady_clock::time_point mStart, mWallStart;
     bool mRunning = false;
     WorkCounts mWorkAtBegin;  // counting runs (gl/work_counters.h): the totals when the stage began
