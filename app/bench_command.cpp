@@ -26,7 +26,7 @@ using viz::InputError;
 namespace {
 
 constexpr const char* kBenchHelp = R"(usage: airlight bench [--scenes A,B] [--techniques T1,T2] [--axes size,shadow_map,vpls,triangles]
-                      [--size WxH] [--runs N] [--quick] --out DIR
+                      [--size WxH] [--runs N] [--set name=value]... [--quick] --out DIR
 
 Measures how each technique's cost per stage grows as one kind of work grows, everything else fixed at
 the defaults: the median of N timed runs after one warm-up run, per stage, with the clock named (GL timer
@@ -47,6 +47,8 @@ axis and a fitted exponent k per technique and stage (cost ~ work^k), and the pl
   --sizes LIST  the size axis's points instead (WxH,WxH,...)
   --size WxH    the image size of the other axes (default 640x480; 160x120 with --quick)
   --runs N      timed runs per point (default 5; 3 with --quick)
+  --set name=value  a parameter on top of the defaults, for every technique that has it (an axis's own
+                value still wins); e.g. --set integrand=svd to time minmax's other integrand
   --quick       fewer, smaller points: sizes 160x120, 240x180, 320x240; shadow maps 256 to 1024;
                 4 to 64 VPLs; detail 1 and 10; the other axes at 160x120; 3 runs)
 )";
@@ -58,6 +60,7 @@ struct Options {
     int runs = 0;
     bool quick = false;
     std::string out;
+    viz::Settings settings;  // --set, for the techniques that have each parameter
 };
 
 Options parseBenchOptions(Args& args) {
@@ -80,6 +83,7 @@ Options parseBenchOptions(Args& args) {
             o.runs = int(runs);
         } else if (flag == "--quick") o.quick = true;
         else if (flag == "--out") o.out = args.next(flag);
+        else if (flag == "--set") parseSetting(args.next(flag), o.settings);
         else throw InputError("unknown option '" + flag + "' for 'bench' (run 'airlight bench --help')");
     }
     if (o.out.empty()) throw InputError("bench needs --out DIR (the folder to write bench.csv and bench.html into)");
@@ -99,6 +103,12 @@ Options parseBenchOptions(Args& args) {
         o.height = o.quick ? 120 : 480;
     }
     if (!o.runs) o.runs = o.quick ? 3 : 5;
+    for (const auto& [name, value] : o.settings) {
+        const bool taken = std::any_of(o.techniques.begin(), o.techniques.end(), [&](const std::string& id) {
+            return viz::findParam(*viz::makeTechnique(id), name) != nullptr;
+        });
+        if (!taken) throw InputError("--set " + name + ": none of the techniques measured has that parameter");
+    }
     return o;
 }
 
@@ -202,7 +212,11 @@ int runBenchCommand(Args& args, const std::string& commandLine) {
                 }
                 const viz::ParamInfo* param = viz::findParam(*technique, axis);  // shadow_map, vpls
                 Job job{si, id, axis, axisPoints(axis, o, param ? param->maxValue : 0.0)};
-                for (const AxisPoint& p : job.points) viz::completeSettings(*technique, p.settings);
+                for (AxisPoint& p : job.points) {
+                    for (const auto& [name, value] : o.settings)
+                        if (viz::findParam(*technique, name)) p.settings.try_emplace(name, value);
+                    viz::completeSettings(*technique, p.settings);
+                }
                 steps += int(job.points.size());
                 jobs.push_back(std::move(job));
             }
@@ -307,7 +321,13 @@ int runBenchCommand(Args& args, const std::string& commandLine) {
     for (const std::string& c : clocks) meta.clock += (meta.clock.empty() ? "" : ", ") + c;
     meta.runs = o.runs;
     meta.quick = o.quick;
-    meta.fixed = "Fixed: each technique's default settings; the axes other than size at " + std::to_string(o.width) +
+    std::string set;
+    for (const auto& [name, value] : o.settings) {
+        char number[32];
+        std::snprintf(number, sizeof number, "%g", value);
+        set += " " + name + "=" + number;
+    }
+    meta.fixed = "Fixed: each technique's default settings" + (set.empty() ? "" : " with" + set) + "; the axes other than size at " + std::to_string(o.width) +
                  "x" + std::to_string(o.height) + "; the scene at detail 1 except on the triangles axis.";
     if (!skipped.empty()) {
         meta.fixed += " Not measured:";

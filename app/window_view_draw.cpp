@@ -249,6 +249,8 @@ void GuiApp::drawView(int id, ViewState& v) {
     mBackground->rect({v.image.min - 1.0f, v.image.max + 1.0f}, focused ? kHighlight : kPanel);
     if (!v.pane.plots.empty()) {
         // The technique's plots of this intermediate, stacked (its image is what `render --layer` writes).
+        // No colour bar: the one the view had when it showed an image is gone with it.
+        v.colourBar = {};
         drawPlots(v);
         mScreen.placeView({v.pane.id, title + early + counts, v.image, id});
         drawStatusBands(dl, v.image);

@@ -273,7 +273,9 @@ TEST_F(GuiViews, AViewWhoseContentTheRunDoesNotMakeSaysWhichAndWhy) {
                          {"center", {0.5, 0.5}}, {"channel", 0}, {"colour_map", 0}, {"difference", 0}, {"layer", 0},
                          {"log", false}, {"manual", {0.0, 1.0}}, {"mark_negative", -1}, {"range", 0},
                          {"strip_open", false}, {"zoom", 1.0}});
-    const json session = {{"version", 1}, {"scene", "grate"}, {"technique", "minmax"}, {"settings", json::object()},
+    // minmax with the analytic integrand: its run makes no SVD tables, so nothing is a singular-values view.
+    const json session = {{"version", 1}, {"scene", "grate"}, {"technique", "minmax"},
+                          {"settings", {{"minmax", {{"integrand", 0.0}}}}},
                           {"size", {32, 24}}, {"exposure", 0.0}, {"exposure_set", false}, {"view", "final"},
                           {"view_grid", {{"focused", 0}, {"layout", "x(0.3333,0,x(0.5,1,2))"}, {"maximised", -1},
                                          {"views", views}}}};

@@ -228,7 +228,7 @@ TEST_F(MinmaxPointTest, CpuMirrorEqualsGpuForSampledPixels) {
     const viz::scene::Scene scene = pointGrate("off");
     const int w = 64, h = 48, size = 256;
     const viz::FrameOutput out =
-        render(scene, "minmax", {{"shadow_map", size}}, w, h, 4,
+        render(scene, "minmax", {{"shadow_map", size}, {"integrand", 0}}, w, h, 4,  // the mirror's integrand
                {"minmax.tree", "minmax.ray_coords", "minmax.visited", "minmax.near_epipole"});
     const auto* tree = find(out, "minmax.tree");
     const auto* coords = find(out, "minmax.ray_coords");

@@ -189,7 +189,8 @@ TEST_F(MinmaxTest, CpuMirrorEqualsGpuForSampledPixels) {
     for (const char* name : {"grate", "terrain"}) {
         const viz::scene::Scene scene = viz::scene::makeBuiltinScene(name);
         const int w = 80, h = 60, size = 512;
-        const viz::FrameOutput out = render(scene, "minmax", {{"shadow_map", size}}, w, h, 4,
+        // The mirror integrates with the analytic integrand (integrand=auto takes svd on both scenes).
+        const viz::FrameOutput out = render(scene, "minmax", {{"shadow_map", size}, {"integrand", 0}}, w, h, 4,
                                             {"minmax.tree", "minmax.ray_coords", "minmax.visited",
                                              "minmax.near_epipole"});
         const auto* visited = find(out, "minmax.visited");
@@ -323,7 +324,9 @@ TEST_F(MinmaxTest, PlanNamesFeaturesAndDefines) {
     EXPECT_NE(feature(grate, "NEAR_EPIPOLE").why.find("NEAR_EPIPOLE"), std::string::npos);
     EXPECT_FALSE(feature(grate, "COOKIE").enabled);
     EXPECT_NE(feature(grate, "COOKIE").why.find("LIGHTS_NO_COOKIE"), std::string::npos);
-    EXPECT_FALSE(feature(grate, "INTEGRAND_SVD").enabled);
+    // integrand=auto: the spot's integrand is low-rank and the tables resolve it, so svd.
+    EXPECT_TRUE(feature(grate, "INTEGRAND_SVD").enabled);
+    EXPECT_NE(feature(grate, "INTEGRAND_SVD").why.find("integrand=auto: svd"), std::string::npos);
     // The forest's sun is low and in front of the camera; the terrain's crosses the view from the side.
     viz::scene::Scene side = viz::scene::makeBuiltinScene("terrain");
     side.lights[0].direction = glm::normalize(glm::cross(side.camera.forward, side.camera.up));

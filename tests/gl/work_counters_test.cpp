@@ -101,7 +101,8 @@ TEST_F(WorkCountersTest, MinmaxTreeNodesOfAPickedPixelEqualTheCpuMirrorsWalk) {
     for (const char* name : {"grate", "terrain"}) {
         const scene::Scene scene = scene::makeBuiltinScene(name);
         const int w = 80, h = 60, size = 512;
-        const Settings settings{{"shadow_map", double(size)}};
+        // The analytic integrand, whose quadrature nodes the counters below bound.
+        const Settings settings{{"shadow_map", double(size)}, {"integrand", 0.0}};
         const FrameOutput out = render(scene, "minmax", settings, w, h, -1,
                                        {"minmax.tree", "minmax.ray_coords", "minmax.near_epipole"});
         const Intermediate* tree = find(out, "minmax.tree");

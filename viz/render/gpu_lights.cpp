@@ -47,18 +47,24 @@ ShadowRange rangeFrom(const glm::dvec3& origin, const glm::dvec3& center, double
     return ShadowRange{far * 1e-4, far};
 }
 
-gl::Texture uploadCookies(const scene::Scene& scene, std::map<int, int>& layerOf) {
-    int width = 1, height = 1;
+// Each spot cookie's layer of the cookie array, in the order the lights first use them.
+std::map<int, int> cookieLayers(const scene::Scene& scene) {
+    std::map<int, int> layerOf;
     for (const auto& light : scene.lights) {
         if (light.type != scene::LightType::Spot || light.cookie < 0) continue;
         if (light.cookie >= static_cast<int>(scene.textures.size())) {
             throw InputError("light '" + light.name + "': cookie texture " + std::to_string(light.cookie) +
                              " does not exist");
         }
-        if (layerOf.count(light.cookie)) continue;
-        const int layer = static_cast<int>(layerOf.size());
-        layerOf[light.cookie] = layer;
-        const auto& t = scene.textures[static_cast<std::size_t>(light.cookie)];
+        if (!layerOf.count(light.cookie)) layerOf.emplace(light.cookie, static_cast<int>(layerOf.size()));
+    }
+    return layerOf;
+}
+
+gl::Texture uploadCookies(const scene::Scene& scene, const std::map<int, int>& layerOf) {
+    int width = 1, height = 1;
+    for (const auto& [texture, layer] : layerOf) {
+        const auto& t = scene.textures[static_cast<std::size_t>(texture)];
         width = std::max(width, t.width);
         height = std::max(height, t.height);
     }
@@ -84,7 +90,7 @@ gl::Texture uploadCookies(const scene::Scene& scene, std::map<int, int>& layerOf
 }  // namespace
 
 
-GpuLights::GpuLights(const scene::Scene& scene, glm::dvec3 eye, int areaSamples) : mEye(eye) {
+LightDescription describeLights(const scene::Scene& scene, glm::dvec3 eye, int areaSamples) {
     if (areaSamples < 1) {
         throw InputError("area_samples must be at least 1 (got " + std::to_string(areaSamples) + ")");
     }
@@ -94,9 +100,11 @@ GpuLights::GpuLights(const scene::Scene& scene, glm::dvec3 eye, int areaSamples)
     const double radius = std::max(world.radius(), 1e-6);
     const double biasConstant = kBiasRelative * radius;
 
-    std::map<int, int> cookieLayer;
-    mCookies = uploadCookies(scene, cookieLayer);
+    const std::map<int, int> cookieLayer = cookieLayers(scene);
     const QuadratureRule rule = gaussLegendreRule(areaSamples);
+    LightDescription out;
+    std::vector<GpuLightCpu>& lights = out.lights;
+    ShadowLayout& layout = out.layout;
 
     for (std::size_t li = 0; li < scene.lights.size(); ++li) {
         const scene::Light& light = scene.lights[li];
@@ -116,11 +124,11 @@ GpuLights::GpuLights(const scene::Scene& scene, glm::dvec3 eye, int areaSamples)
         switch (light.type) {
             case scene::LightType::Point: {
                 g.info.x = hd::kLightPoint;
-                g.info.z = mLayout.cubes++;
+                g.info.z = layout.cubes++;
                 const ShadowRange r = rangeFrom(pos, center, radius);
                 // A cube face spans 90 degrees: a texel at distance d covers ~2 d / size.
                 g.shadow = glm::vec4(float(r.near), float(r.far), float(kBiasTexels * 2.0), float(biasConstant));
-                mLights.push_back(g);
+                lights.push_back(g);
                 break;
             }
             case scene::LightType::Spot: {
@@ -143,7 +151,7 @@ GpuLights::GpuLights(const scene::Scene& scene, glm::dvec3 eye, int areaSamples)
                     g.frameX.w = float(t.width);
                     g.frameY.w = float(t.height);
                 }
-                g.info.z = mLayout.maps2D++;
+                g.info.z = layout.maps2D++;
                 const ShadowRange r = rangeFrom(pos, center, radius);
                 const double half = std::min(light.outerConeAngle, kMaxSpotHalfAngle);
                 const glm::dmat4 proj = glm::perspective(2.0 * half, 1.0, r.near, r.far);
@@ -152,7 +160,7 @@ GpuLights::GpuLights(const scene::Scene& scene, glm::dvec3 eye, int areaSamples)
                 // Texel footprint at distance d along the axis: 2 d tan(half) / size.
                 g.shadow = glm::vec4(float(r.near), float(r.far), float(kBiasTexels * 2.0 * std::tan(half)),
                                      float(biasConstant));
-                mLights.push_back(g);
+                lights.push_back(g);
                 break;
             }
             case scene::LightType::Directional: {
@@ -162,7 +170,7 @@ GpuLights::GpuLights(const scene::Scene& scene, glm::dvec3 eye, int areaSamples)
                 spotFrame(dir, fx, fy);
                 g.frameX = glm::vec4(glm::vec3(fx), 1.0f);
                 g.frameY = glm::vec4(glm::vec3(fy), 1.0f);
-                g.info.z = mLayout.maps2D++;
+                g.info.z = layout.maps2D++;
                 // Orthographic map over the scene's bounding sphere, looking along the travel direction.
                 const double r = radius * 1.01;
                 const glm::dvec3 from = center - dir * r;
@@ -173,7 +181,7 @@ GpuLights::GpuLights(const scene::Scene& scene, glm::dvec3 eye, int areaSamples)
                 // display); the texel footprint is the constant 2 r / size.
                 const double mid = glm::dot(center, dir);
                 g.shadow = glm::vec4(float(mid - r), float(mid + r), float(kBiasTexels * 2.0 * r), float(biasConstant));
-                mLights.push_back(g);
+                lights.push_back(g);
                 break;
             }
             case scene::LightType::Area: {
@@ -201,11 +209,11 @@ GpuLights::GpuLights(const scene::Scene& scene, glm::dvec3 eye, int areaSamples)
                         const glm::dvec3 p = pos + s * light.halfU + t * light.halfV;
                         v.position = glm::vec4(glm::vec3(p), 1.0f);
                         v.radiant = glm::vec4(glm::vec3(le * dA), 0.0f);
-                        v.info = glm::ivec4(hd::kLightVpl, -1, mLayout.vplCubes++, static_cast<int>(li));
+                        v.info = glm::ivec4(hd::kLightVpl, -1, layout.vplCubes++, static_cast<int>(li));
                         const ShadowRange r = rangeFrom(p, center, radius);
                         v.shadow = glm::vec4(float(r.near), float(r.far), float(kBiasTexels * 2.0),
                                              float(biasConstant));
-                        mLights.push_back(v);
+                        lights.push_back(v);
                     }
                 }
                 break;
@@ -213,6 +221,14 @@ GpuLights::GpuLights(const scene::Scene& scene, glm::dvec3 eye, int areaSamples)
         }
     }
 
+    return out;
+}
+
+GpuLights::GpuLights(const scene::Scene& scene, glm::dvec3 eye, int areaSamples) : mEye(eye) {
+    LightDescription described = describeLights(scene, eye, areaSamples);
+    mLights = std::move(described.lights);
+    mLayout = described.layout;
+    mCookies = uploadCookies(scene, cookieLayers(scene));
     if (mLights.size() > static_cast<std::size_t>(hd::kMaxGpuLights)) {
         throw InputError("the scene needs " + std::to_string(mLights.size()) + " GPU lights (area lights count " +
                          std::to_string(areaSamples) + "^2 each) but at most " + std::to_string(hd::kMaxGpuLights) +

@@ -26,6 +26,15 @@ struct ShadowLayout {
     int vplCubes = 0;   // VPLs, one cube each
 };
 
+// The lights as the GPU sees them, worked out on the CPU (no GL): what GpuLights uploads, and what a plan
+// may look at before any GL object exists (minmax's integrand=auto sets up each light's epipolar frame).
+// Throws InputError for areaSamples < 1 and for a cookie or emission texture that does not exist.
+struct LightDescription {
+    std::vector<GpuLightCpu> lights;
+    ShadowLayout layout;
+};
+LightDescription describeLights(const scene::Scene& scene, glm::dvec3 eye, int areaSamples);
+
 class GpuLights {
 public:
     // areaSamples >= 1 nodes per axis for each area light. Throws InputError for areaSamples < 1 and

@@ -95,6 +95,48 @@ TEST(MinmaxLowRank, TablesReachTheOptimalRankNError) {
     }
 }
 
+// rowIntegralError (what integrand=auto decides on) sees what the grid's own reconstruction error cannot:
+// on a moderate medium both are small and the row error falls with rank and table resolution; a thick
+// medium (sigma_t = 50: the integrand changes within a grid step) leaves the row error over ten times the
+// grid's, and a sun whose gamma range is 1e6 long (its light lives in the first of 64 grid steps) leaves
+// the factorisation exact on the grid and the tables wholly wrong on the rays.
+TEST(MinmaxLowRank, RowIntegralErrorSeesWhatTheGridCannot) {
+    using viz::minmax::lowRankIntegrand;
+    using viz::minmax::rowIntegralError;
+    auto spot = viz::minmax::makeFrame<double>(LightKind::Spot, glm::dvec3(0.0, 6.0, -7.0), glm::dvec3(0.1, -1.0, 0.0));
+    spot.gammaLo = 0.3;
+    spot.gammaHi = 1.4;
+    const double betaLo = 0.3, betaHi = 1.9;
+    const auto coarse = lowRankIntegrand(spot, betaLo, betaHi, 0.12, 0.13, 0.2, 2);
+    const auto fine = lowRankIntegrand(spot, betaLo, betaHi, 0.12, 0.13, 0.2, 8);
+    const double eCoarse = rowIntegralError(spot, coarse, 0.12, 0.13, 0.2, 16);
+    const double eFine = rowIntegralError(spot, fine, 0.12, 0.13, 0.2, 1024);
+    EXPECT_LT(eFine, 1e-3);
+    EXPECT_LT(eFine, eCoarse);
+
+    // The thick medium seen from 0.5 units beside the light (as in the stiff case extinction-50).
+    auto close = viz::minmax::makeFrame<double>(LightKind::Spot, glm::dvec3(0.0, 0.3, -0.4), glm::dvec3(0.1, -1.0, 0.0));
+    close.gammaLo = 0.3;
+    close.gammaHi = 1.4;
+    const auto thick = lowRankIntegrand(close, betaLo, betaHi, 25.0, 50.0, 0.2, 4);
+    const double eThick = rowIntegralError(close, thick, 25.0, 50.0, 0.2, 256);
+    EXPECT_GT(eThick, 10.0 * thick.reconstructionError);
+
+    auto sun = viz::minmax::makeFrame<double>(LightKind::Directional, glm::dvec3(0.0), glm::dvec3(0.3, -1.0, 0.2));
+    sun.gammaLo = 0.0;
+    sun.gammaHi = 1e6;
+    const auto huge = lowRankIntegrand(sun, betaLo, betaHi, 0.05, 0.1, 0.0, 4);
+    EXPECT_LT(huge.reconstructionError, 1e-3);
+    EXPECT_GT(rowIntegralError(sun, huge, 0.05, 0.1, 0.0, 256), 0.5);
+    sun.gammaHi = 30.0;  // the same sun over the 30 units its light reaches: resolved
+    const auto near = lowRankIntegrand(sun, betaLo, betaHi, 0.05, 0.1, 0.0, 4);
+    EXPECT_LT(rowIntegralError(sun, near, 0.05, 0.1, 0.0, 256), 0.01);
+    std::printf("row integral error: spot rank 2 / 16 texels %.2e, rank 8 / 1024 texels %.2e, sigma_t 50 %.2e "
+                "(grid %.2e), sun over 1e6 %.2e (grid %.2e)\n",
+                eCoarse, eFine, eThick, thick.reconstructionError, rowIntegralError(sun, huge, 0.05, 0.1, 0.0, 256),
+                huge.reconstructionError);
+}
+
 }  // namespace
 
 // The plots the window shows for the low-rank integrand (charts.h) carry its numbers: every positive

@@ -18,19 +18,21 @@ Plan minmaxPlan(const std::string& sceneName, const Settings& given = {}) {
 }
 
 struct Expected {
-    bool nearEpipole, spot, cookie, cubes, maps2D, brute, rectify;
+    bool nearEpipole, spot, cookie, cubes, maps2D, brute, rectify, svd;
 };
 
 // grate: a spot seen from the side, its position in the image; stained-glass: a spot with a cookie in
 // view; colonnade and terrain: a sun whose epipoles lie far off screen; forest: a sun low in the view
 // (its epipole near the screen); tv-room: one area light, marched as VPLs with cube maps.
+// integrand=auto takes svd but on forest, whose sun's map reaches far beyond the trees: its rank-4 tables
+// are 4 % off on fully lit rays there (integrand_choice.h), and on tv-room (no light to factorise).
 const std::map<std::string, Expected> kExpected = {
-    {"grate", {true, true, false, false, true, false, true}},
-    {"stained-glass", {true, true, true, false, true, false, true}},
-    {"colonnade", {false, false, false, false, true, false, true}},
-    {"terrain", {false, false, false, false, true, false, true}},
-    {"forest", {true, false, false, false, true, false, true}},
-    {"tv-room", {false, false, false, true, false, true, false}},
+    {"grate", {true, true, false, false, true, false, true, true}},
+    {"stained-glass", {true, true, true, false, true, false, true, true}},
+    {"colonnade", {false, false, false, false, true, false, true, true}},
+    {"terrain", {false, false, false, false, true, false, true, true}},
+    {"forest", {true, false, false, false, true, false, true, false}},
+    {"tv-room", {false, false, false, true, false, true, false, false}},
 };
 
 TEST(MinmaxPlan, EachBuiltinSceneRunsWhatItsLightsAndCameraNeed) {
@@ -39,7 +41,7 @@ TEST(MinmaxPlan, EachBuiltinSceneRunsWhatItsLightsAndCameraNeed) {
         const std::map<std::string, bool> features = {
             {"NEAR_EPIPOLE", e.nearEpipole}, {"SPOT", e.spot},           {"COOKIE", e.cookie},
             {"SHADOW_MAPS_CUBE", e.cubes},   {"SHADOW_MAPS_2D", e.maps2D}, {"BRUTE_FORCE_LIGHTS", e.brute},
-            {"INTEGRAND_SVD", false},        {"TREE_TRAVERSAL", true}};
+            {"INTEGRAND_SVD", e.svd},        {"TREE_TRAVERSAL", true}};
         for (const auto& [name, on] : features) {
             const FeaturePlan* f = findFeature(plan, name);
             ASSERT_NE(f, nullptr) << sceneName << " lists no feature " << name;
@@ -90,7 +92,7 @@ TEST(MinmaxPlan, ForceFeaturesTurnsEveryScenePrunedPartOn) {
             EXPECT_TRUE(f->enabled) << sceneName << ": " << name << " (" << f->why << ")";
         }
         // Setting choices are not scene pruning: force leaves them alone.
-        EXPECT_FALSE(findFeature(plan, "INTEGRAND_SVD")->enabled) << sceneName;
+        EXPECT_EQ(findFeature(plan, "INTEGRAND_SVD")->enabled, e.svd) << sceneName;
     }
     // Forcing a feature the scene uses anyway changes nothing.
     EXPECT_EQ(findFeature(minmaxPlan("grate", {{"force_features", 1.0}}), "SPOT")->why,

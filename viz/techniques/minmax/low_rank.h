@@ -41,4 +41,15 @@ LowRank lowRankIntegrand(const EpipolarFrame<double>& f, double betaLo, double b
 // Rank-N reconstruction of the scaled integrand at grid point (k, j).
 double reconstruct(const LowRank& lr, int k, int j);
 
+// How far the tables the shaders read are from the true airlight of a fully lit ray, measured where the
+// factorisation was not fitted: at the 63 betas half way between the grid's, each ray's integral over the
+// frame's whole gamma range as the traversal would take it (B_i and Gamma_i interpolated linearly between
+// their 64 samples as the shaders do, Gamma_i summed at the centres of `textureColumns` table texels as
+// prefix.comp does) against the segment integral of the same ray (shared/airlight.h: pointSegment or
+// directionalSegment, the analytic integrand's). Relative L2 over the 63 rays (0 when they carry no light).
+// It sees what the grid's reconstruction error cannot: an integrand that changes within one grid step or
+// one table texel (a thick medium, a sun's map spanning far more than the extinction length).
+double rowIntegralError(const EpipolarFrame<double>& f, const LowRank& lr, double sigmaS, double sigmaT, double g,
+                        int textureColumns);
+
 }  // namespace viz::minmax

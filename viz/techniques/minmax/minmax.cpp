@@ -21,9 +21,11 @@ const ParamTable<MinmaxSettings>& minmaxParams() {
                   0, 0, 1, true, {"screen", "fixed"}})
             .add(&S::columns, {"columns", "gamma texels per slice (rounded up to a power of two); 0: the shadow map's "
                                "size", 0, 0, minmax::kMaxColumns, true})
-            .add(&S::svd, {"integrand", "analytic: the segment integral per lit run (closed form for suns, "
-                           "Gauss-Legendre panels for point and spot lights); svd: rank-N approximation with prefix "
-                           "sums", 0, 0, 1, true, {"analytic", "svd"}})
+            .add(&S::integrand, {"integrand", "analytic: the segment integral per lit run (closed form for suns, "
+                                 "Gauss-Legendre panels for point and spot lights); svd: rank-N approximation with "
+                                 "prefix sums; auto: svd where its rank-N approximation holds the scene's integrand "
+                                 "(the faster one), analytic elsewhere (the plan says which and why)",
+                                 2, 0, 2, true, {"analytic", "svd", "auto"}})
             .add(&S::rank, {"rank", "singular vectors kept by integrand=svd", 4, 1, 8, true})
             .add(&S::textureColumns, {"texture_columns", "integrand=svd: gamma texels of the prefix-sum tables of "
                                       "Gamma_i T (the light texture's own resolution, lower than the shadow map's)",
@@ -105,7 +107,7 @@ std::vector<QualitySetting> MinmaxTechnique::qualitySweep(bool quick) const {
     std::vector<QualitySetting> sweep;
     auto grid = [&](int map, int slices, int pieces, int samples) {
         sweep.push_back({"map=" + std::to_string(map) + " slices=" + (slices ? std::to_string(slices) : "auto"),
-                         {{"shadow_map", double(map)}, {"slices", double(slices)},
+                         {{"integrand", 0.0}, {"shadow_map", double(map)}, {"slices", double(slices)},
                           {"spot_pieces", double(pieces)}, {"march_samples", double(samples)}}});
     };
     auto svd = [&](int rank, int samples) {
@@ -181,12 +183,16 @@ Plan MinmaxTechnique::plan(const scene::Scene& scene, const Settings& settings) 
                           fixedFrame ? "slice_frame=fixed: slices at multiples of 2 pi / 2^m from a world-fixed "
                                        "direction (up to twice the paper's count)"
                                      : "slice_frame=screen: the paper's slices, centred on the image centre"});
-    const bool svd = s.svd;
-    p.features.push_back({"INTEGRAND_SVD", svd,
-                          svd ? "rank-" + std::to_string(s.rank) +
-                                    " SVD of I(beta, gamma) with prefix sums of Gamma_i"
-                              : "integrand=analytic: closed form (airlight.glsl pointSegment / "
-                                "directionalSegment) per lit segment"});
+    bool svd = s.integrand == Integrand::Svd;
+    std::string integrandWhy = svd ? "rank-" + std::to_string(s.rank) + " SVD of I(beta, gamma) with prefix sums of Gamma_i"
+                                   : "integrand=analytic: closed form (airlight.glsl pointSegment / directionalSegment) "
+                                     "per lit segment";
+    if (s.integrand == Integrand::Auto) {
+        const minmax::IntegrandChoice choice = mIntegrandChooser.choose(scene, s.rank, s.textureColumns, marchPoints);
+        svd = choice.svd;
+        integrandWhy = choice.why;
+    }
+    p.features.push_back({"INTEGRAND_SVD", svd, integrandWhy});
     if (svd) {
         const bool spot = render::hasLightOfType(scene, scene::LightType::Spot);
         const bool sun = render::hasLightOfType(scene, scene::LightType::Directional);
@@ -270,7 +276,7 @@ Plan MinmaxTechnique::plan(const scene::Scene& scene, const Settings& settings) 
 FrameOutput MinmaxTechnique::run(const FrameInput& input) {
     const scene::Scene& scene = *input.scene;
     FrameOutput out;
-    const MinmaxSettings& s = startRun(input, out);
+    startRun(input, out);
     mMarkCamera = scene.camera;
     mMarkSize = {input.width, input.height};
     gl::StageClock clock;
@@ -281,7 +287,8 @@ FrameOutput MinmaxTechnique::run(const FrameInput& input) {
     // The plan decides (sigma_s = 0 skips the epipolar stages unless force_features=1 runs them).
     const auto runs = [&](int stage) { return out.plan.stages[std::size_t(stage)].runs; };
     // ---- rectify ----
-    const bool svd = s.svd;
+    mSvd = findFeature(out.plan, "INTEGRAND_SVD")->enabled;  // integrand=auto: the plan's choice
+    const bool svd = mSvd;
     const bool toMipmap = stages.run(
         kRectifyIndex,
         [&] {

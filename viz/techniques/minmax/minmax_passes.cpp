@@ -235,7 +235,7 @@ void MinmaxTechnique::traverse(const gl::Program& program, const scene::Scene& s
         if (e.antiEpipole.valid) epipoles = glm::vec4(epipoles.x, epipoles.y, glm::vec2(e.antiEpipole.pixel));
         work->tree.bindUnit(render::hd::kFirstFreeTextureUnit + 1);
         if (work->point()) work->rowGamma.bindBase(GL_SHADER_STORAGE_BUFFER, render::hd::kFirstFreeSsboBinding);
-        if (s.svd && work->prefix) {
+        if (mSvd && work->prefix) {
             const minmax::LowRank& lr = work->lowRank;
             program.set("uRank", lr.rank);
             program.set("uPrefixTexels", work->prefix.size().x - 1);

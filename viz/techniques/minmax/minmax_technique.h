@@ -16,6 +16,7 @@
 #include "render/shadow_map_markers.h"
 #include "techniques/minmax/charts.h"
 #include "techniques/minmax/epipolar_setup.h"
+#include "techniques/minmax/integrand_choice.h"
 #include "techniques/minmax/low_rank.h"
 
 namespace viz::minmax_detail {
@@ -88,12 +89,16 @@ struct LightWork {
     int prefixRows = 0;
 };
 
+// integrand=: the segment integral per lit run, the paper's low-rank approximation, or whichever of the two
+// plan() picks for the scene (integrand_choice.h).
+enum class Integrand { Analytic = 0, Svd = 1, Auto = 2 };
+
 // The settings a run reads, each declared once with its parameter (minmaxParams(), debug/param_table.h).
 struct MinmaxSettings {
     int slices = 0, sliceOversampling = 0;
     bool fixedFrame = false;  // slice_frame=fixed
     int columns = 0;
-    bool svd = false;  // integrand=svd
+    Integrand integrand = Integrand::Auto;
     int rank = 0, textureColumns = 0;
     bool linear = false;       // traversal=linear
     bool marchPoints = false;  // point_lights=march
@@ -124,8 +129,9 @@ public:
     std::vector<StabilisingOption> stabilisingOptions(const scene::Scene& scene) const override;
 
     // The accurate end of the knobs: every camera ray within 1/8 pixel of a slice (slice_oversampling 4),
-    // 128 spot pieces, 1024 near-epipole samples; the analytic integrand (the SVD's own error is measured
-    // by the quality sweep). Keeps the 21 cases at 33x25 within seconds.
+    // 128 spot pieces, 1024 near-epipole samples; the default integrand=auto (analytic on the cases whose
+    // integrand the SVD's tables do not hold: tests/gl/minmax_integrand_test.cpp). Keeps the 21 cases at
+    // 33x25 within seconds.
     // Chen et al. 2011: the rank-4 SVD integrand with prefix sums, one slice per half pixel (k = 1).
     Settings paperSettings() const override {
         return {{"integrand", 1.0}, {"rank", 4.0}, {"slice_oversampling", 1.0}};
@@ -209,6 +215,8 @@ private:
 
     std::vector<LightWork> mWork;
     std::vector<int> mBruteLights;  // GpuLights indices marched by brute force
+    bool mSvd = false;              // the run's integrand (the plan's INTEGRAND_SVD: integrand=auto decides there)
+    minmax::IntegrandChooser mIntegrandChooser;  // integrand=auto, for plan()
     gl::Program mRectify, mRectifyPoint, mGammaRange, mMipmap, mTraverse, mPrefix, mPrefixPoint;
     std::string mProgramKey;
     gl::Texture mAirlight, mVisited, mNearMask, mRayCoords;
