@@ -323,9 +323,14 @@ int runBenchCommand(Args& args, const std::string& commandLine) {
     meta.quick = o.quick;
     std::string set;
     for (const auto& [name, value] : o.settings) {
-        char number[32];
-        std::snprintf(number, sizeof number, "%g", value);
-        set += " " + name + "=" + number;
+        char text[32];
+        std::snprintf(text, sizeof text, "%g", value);
+        std::string shown = text;
+        for (const std::string& id : o.techniques)  // a named value by its name (integrand=svd)
+            if (const viz::ParamInfo* p = viz::findParam(*viz::makeTechnique(id), name);
+                p && value >= 0.0 && value < double(p->choices.size()) && value == std::floor(value))
+                shown = p->choices[std::size_t(value)];
+        set += " " + name + "=" + shown;
     }
     meta.fixed = "Fixed: each technique's default settings" + (set.empty() ? "" : " with" + set) + "; the axes other than size at " + std::to_string(o.width) +
                  "x" + std::to_string(o.height) + "; the scene at detail 1 except on the triangles axis.";

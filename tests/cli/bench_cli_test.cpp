@@ -101,6 +101,24 @@ TEST_F(CliTest, BenchWritesPerStageTimesFitsAndPlotsForEachAxis) {
     EXPECT_NE(r.out.find("total ~ work^"), std::string::npos) << r.out;
 }
 
+// --set reaches the techniques that have the parameter and only them: minmax's integrand beside raymarch
+// (which would refuse an unknown name), an out-of-range value refused by the technique it reaches, a name no
+// measured technique has refused outright; the page names what was set.
+TEST_F(CliTest, BenchSetsAParameterForTheTechniquesThatHaveIt) {
+    const fs::path out = path("bench");
+    const RunResult r = run("bench --scenes grate --techniques raymarch,minmax --axes size --sizes 32x24 --runs 1 "
+                            "--set integrand=svd --out " + out.string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(readFile(out / "bench.html").find("default settings with integrand=svd"), std::string::npos);
+    const fs::path other = path("bench2");
+    expectUserError(run("bench --scenes grate --techniques raymarch --axes size --sizes 32x24 --runs 1 "
+                        "--set samples=0 --out " + other.string()),
+                    "'samples' = 0 is out of range");
+    expectUserError(run("bench --techniques raymarch --set integrand=svd --out " + other.string()),
+                    "none of the techniques measured has that parameter");
+    EXPECT_FALSE(fs::exists(other));
+}
+
 TEST_F(CliTest, BenchRejectsWhatItCannotMeasureBeforeWritingAnything) {
     const fs::path out = path("bench");
     expectUserError(run("bench --axes sizes --out " + out.string()), "unknown axis 'sizes'");
