@@ -185,6 +185,16 @@ void GuiApp::writeSidecar(const std::string& path) {
                                     {"views", views}};
     sidecar.update(sidecarStateOf(appState()));  // the app state: one function, as the session file
     {
+        // The plan the parameter panel's plan section shows: skipped stages and every feature, with reasons.
+        const viz::Plan& plan = mHaveOutput ? mOutput.plan : mPlan;
+        nlohmann::json skipped = nlohmann::json::array(), features = nlohmann::json::array();
+        for (const viz::StagePlan& st : plan.stages)
+            if (!st.runs) skipped.push_back({{"stage", st.stage}, {"why", st.why}});
+        for (const viz::FeaturePlan& f : plan.features)
+            features.push_back({{"feature", f.feature}, {"on", f.enabled}, {"why", f.why}});
+        sidecar["plan"] = {{"skipped", skipped}, {"features", features}};
+    }
+    {
         nlohmann::json lights = nlohmann::json::array();
         for (const auto& l : mScene.lights)
             lights.push_back({{"name", l.name},

@@ -1,6 +1,7 @@
-// The scene and parameter panel: scene and stiff-case pickers, medium, lights, preset and the technique's
-// declared parameters.
+// The scene and parameter panel: scene and stiff-case pickers, medium, lights, preset, the technique's
+// declared parameters and its plan.
 #include "gui_app.h"
+#include "plan_panel.h"
 
 namespace airlight {
 
@@ -43,6 +44,7 @@ void GuiApp::drawParameters(glm::ivec2 fb) {
             sceneChanged = lightPlacementWidgets(selectedLight()) || sceneChanged;
         }
         if (mUi->collapsingHeader(technique().id() + " parameters", true)) parameterWidgets();
+        drawPlanSection(*mUi, mHaveOutput ? mOutput.plan : mPlan);
         mUi->endPanel();
         if (sceneChanged) sceneEdited();
     }

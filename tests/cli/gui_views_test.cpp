@@ -417,4 +417,37 @@ TEST_F(GuiViews, DISABLED_UiCostWithSevenViews) {
 }
 
 }  // namespace
+// The parameter panel's plan section shows what `airlight plan` prints: every feature on or off with its
+// reason (the sidecar carries what the section lists), so minmax's integrand=auto choice is visible in the
+// window: analytic on forest, svd on grate.
+TEST_F(GuiViews, ThePlanSectionSaysWhatAirlightPlanSays) {
+    const fs::path script = writeText("plan.txt", "frames 1\nclick \"plan: what runs and why\"\nframes 1\n");
+    for (const char* scene : {"forest", "grate"}) {
+        const std::string png = std::string(scene) + ".png";
+        const RunResult r = run(std::string("gui --scene ") + scene + " --technique minmax --size 32x24 --script " +
+                                script.string() + " --screenshot " + path(png).string());
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        const RunResult cli = run(std::string("plan --scene ") + scene + " --technique minmax");
+        ASSERT_EQ(cli.exitCode, 0) << cli.err;
+        const json features = sidecar(png).at("plan").at("features");
+        ASSERT_GT(features.size(), 5u);
+        for (const json& f : features) {
+            const std::string line = "feature " + f.at("feature").get<std::string>();
+            const std::size_t at = cli.out.find(line + " ");
+            ASSERT_NE(at, std::string::npos) << line;
+            const std::string printed = cli.out.substr(at, cli.out.find('\n', at) - at);
+            EXPECT_NE(printed.find(f.at("on").get<bool>() ? " on " : " off "), std::string::npos) << printed;
+            EXPECT_NE(printed.find(f.at("why").get<std::string>()), std::string::npos) << printed;
+        }
+        bool integrand = false;
+        for (const json& f : features)
+            if (f.at("feature") == "INTEGRAND_SVD") {
+                integrand = true;
+                EXPECT_EQ(f.at("on").get<bool>(), std::string(scene) == "grate") << f.dump();
+                EXPECT_EQ(f.at("why").get<std::string>().rfind("integrand=auto: ", 0), 0u) << f.dump();
+            }
+        EXPECT_TRUE(integrand) << scene;
+    }
+}
+
 }  // namespace viz::testing
