@@ -483,6 +483,7 @@ private:
     int mCurrent = 0;
     viz::Settings mSettings;
     viz::Plan mPlan;
+    const viz::Plan& shownPlan() const { return mHaveOutput ? mOutput.plan : mPlan; }  // last run's, else mPlan
     std::string mSettingsError, mError, mClockName;
     std::unique_ptr<viz::StageTimer> mGpuTimer;  // main views' GPU runs where timer queries count (gl/gpu_timer.h)
 

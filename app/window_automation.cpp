@@ -186,7 +186,7 @@ void GuiApp::writeSidecar(const std::string& path) {
     sidecar.update(sidecarStateOf(appState()));  // the app state: one function, as the session file
     {
         // The plan the parameter panel's plan section shows: skipped stages and every feature, with reasons.
-        const viz::Plan& plan = mHaveOutput ? mOutput.plan : mPlan;
+        const viz::Plan& plan = shownPlan();
         nlohmann::json skipped = nlohmann::json::array(), features = nlohmann::json::array();
         for (const viz::StagePlan& st : plan.stages)
             if (!st.runs) skipped.push_back({{"stage", st.stage}, {"why", st.why}});

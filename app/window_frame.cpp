@@ -56,7 +56,7 @@ void GuiApp::draw() {
     viz::Timing timing = mOutput.timing;
     if (timing.clock.empty()) timing.clock = t.needsGl() ? mClockName : "steady_clock";
     dl.textClipped({pad, pad + line}, mHaveOutput ? timingLine(timing) : "timings: (no run yet)", kDim, float(fb.x) - pad);
-    std::string third = skippedLine(mHaveOutput ? mOutput.plan : mPlan);
+    std::string third = skippedLine(shownPlan());
     glm::vec4 thirdColour = kDim;
     if (!mError.empty() || !mSettingsError.empty()) {
         third = "error: " + firstLine(mError.empty() ? mSettingsError + " (using defaults)" : mError);

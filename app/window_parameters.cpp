@@ -44,7 +44,7 @@ void GuiApp::drawParameters(glm::ivec2 fb) {
             sceneChanged = lightPlacementWidgets(selectedLight()) || sceneChanged;
         }
         if (mUi->collapsingHeader(technique().id() + " parameters", true)) parameterWidgets();
-        drawPlanSection(*mUi, mHaveOutput ? mOutput.plan : mPlan);
+        drawPlanSection(*mUi, shownPlan());
         mUi->endPanel();
         if (sceneChanged) sceneEdited();
     }

@@ -100,9 +100,10 @@ LightDescription describeLights(const scene::Scene& scene, glm::dvec3 eye, int a
     const double radius = std::max(world.radius(), 1e-6);
     const double biasConstant = kBiasRelative * radius;
 
-    const std::map<int, int> cookieLayer = cookieLayers(scene);
-    const QuadratureRule rule = gaussLegendreRule(areaSamples);
     LightDescription out;
+    out.cookieLayers = cookieLayers(scene);
+    const std::map<int, int>& cookieLayer = out.cookieLayers;
+    const QuadratureRule rule = gaussLegendreRule(areaSamples);
     std::vector<GpuLightCpu>& lights = out.lights;
     ShadowLayout& layout = out.layout;
 
@@ -228,7 +229,7 @@ GpuLights::GpuLights(const scene::Scene& scene, glm::dvec3 eye, int areaSamples)
     LightDescription described = describeLights(scene, eye, areaSamples);
     mLights = std::move(described.lights);
     mLayout = described.layout;
-    mCookies = uploadCookies(scene, cookieLayers(scene));
+    mCookies = uploadCookies(scene, described.cookieLayers);
     if (mLights.size() > static_cast<std::size_t>(hd::kMaxGpuLights)) {
         throw InputError("the scene needs " + std::to_string(mLights.size()) + " GPU lights (area lights count " +
                          std::to_string(areaSamples) + "^2 each) but at most " + std::to_string(hd::kMaxGpuLights) +

@@ -6,6 +6,7 @@
 // (computed in double). Shadow layers and matrices are assigned here too, so ShadowMaps only renders.
 #pragma once
 
+#include <map>
 #include <optional>
 #include <vector>
 
@@ -32,6 +33,7 @@ struct ShadowLayout {
 struct LightDescription {
     std::vector<GpuLightCpu> lights;
     ShadowLayout layout;
+    std::map<int, int> cookieLayers;  // scene texture -> layer of the cookie array, in first-use order
 };
 LightDescription describeLights(const scene::Scene& scene, glm::dvec3 eye, int areaSamples);
 

@@ -28,9 +28,9 @@ std::string percent(double fraction) {
     return text;
 }
 
-}  // namespace
-
-IntegrandChoice chooseIntegrand(const scene::Scene& scene, int rank, int textureColumns, bool marchPoints) {
+// chooseIntegrand over the epipolar lights already described.
+IntegrandChoice chooseFor(const scene::Scene& scene, const std::vector<render::GpuLightCpu>& lights, int rank,
+                          int textureColumns) {
     IntegrandChoice c;
     const std::string r = "rank-" + std::to_string(rank);
     if (scene.medium.sigma_s == 0.0) {
@@ -42,7 +42,7 @@ IntegrandChoice chooseIntegrand(const scene::Scene& scene, int rank, int texture
     const double aspect = scene.camera.aspectRatio > 0.0 ? scene.camera.aspectRatio : 4.0 / 3.0;
     const int width = 64, height = std::max(1, int(std::lround(64.0 / aspect)));
     int epipolar = 0;
-    for (const render::GpuLightCpu& L : epipolarLights(scene, marchPoints)) {
+    for (const render::GpuLightCpu& L : lights) {
         ++epipolar;
         const Setup setup = setupLight({.light = &L, .camera = &scene.camera, .width = width, .height = height,
                                         .slices = 0, .columns = 64, .oversampling = 1});
@@ -70,13 +70,20 @@ IntegrandChoice chooseIntegrand(const scene::Scene& scene, int rank, int texture
     return c;
 }
 
+}  // namespace
+
+IntegrandChoice chooseIntegrand(const scene::Scene& scene, int rank, int textureColumns, bool marchPoints) {
+    return chooseFor(scene, epipolarLights(scene, marchPoints), rank, textureColumns);
+}
+
 IntegrandChoice IntegrandChooser::choose(const scene::Scene& scene, int rank, int textureColumns,
                                          bool marchPoints) const {
     // Everything chooseIntegrand reads, byte for byte: the epipolar lights (all 4-byte fields, no padding),
     // the camera, the medium, the settings.
     std::string key;
     auto append = [&key](const void* data, std::size_t bytes) { key.append(static_cast<const char*>(data), bytes); };
-    for (const render::GpuLightCpu& L : epipolarLights(scene, marchPoints)) append(&L, sizeof L);
+    const std::vector<render::GpuLightCpu> lights = epipolarLights(scene, marchPoints);
+    for (const render::GpuLightCpu& L : lights) append(&L, sizeof L);
     const scene::Camera& c = scene.camera;
     for (double v : {c.position.x, c.position.y, c.position.z, c.forward.x, c.forward.y, c.forward.z, c.up.x, c.up.y,
                      c.up.z, c.yfov, c.aspectRatio, scene.medium.sigma_s, scene.medium.sigma_t(), scene.medium.g,
@@ -84,7 +91,7 @@ IntegrandChoice IntegrandChooser::choose(const scene::Scene& scene, int rank, in
         append(&v, sizeof v);
     const std::lock_guard lock(mMutex);
     if (key != mKey) {
-        mChoice = chooseIntegrand(scene, rank, textureColumns, marchPoints);
+        mChoice = chooseFor(scene, lights, rank, textureColumns);
         mKey = std::move(key);
     }
     return mChoice;
