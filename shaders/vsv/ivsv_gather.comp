@@ -8,7 +8,11 @@
 // Each VPL is a cosine-lobe point light of intensity L_e dA along its normal (render/gpu_lights.h).
 // Variants: the invocation's pixel is uScale * id of the full image (uScale = 2 for the quarter-resolution
 // gather); with 3x3 interleaving (uVplStride = 9) a pixel gathers one ninth of the VPLs (the subset of
-// its place in the 3x3 pattern), scaled by 9, and a bilateral filter recombines the nine.
+// its place in the 3x3 pattern), scaled by 9, and a bilateral filter recombines the nine. DEINTERLEAVE:
+// the invocations run over the nine sub-images of the pattern side by side (sub-image (bx, by) holds the
+// pixels (3 u + bx, 3 v + by)), each uSubSize invocations, a whole number of work groups, so a work group's
+// pixels all gather the same VPLs and read the same grid tiles; each pixel computes exactly what it would
+// in screen order.
 // EPIPOLE (the paper's rule, Wyman and Dai 2013 Sec. 5): within one alpha cell of a VPL's epipole its grid
 // is degenerate (one texel holds every ray there), so the ray's visibility is one test instead: toward the
 // VPL, lit when the fragment lies beyond the VPL's foot point on the ray, less 4 alpha cells of depth (the
@@ -32,7 +36,8 @@ layout(rgba32f, binding = 1) uniform image2D uAirlight;   // at the invocation's
 layout(r32f, binding = 2) uniform image2D uVisibility;    // mean lit fraction over the VPLs gathered
 layout(std430, binding = 6) buffer PickContributions { vec4 gPick[]; };
 
-uniform ivec2 uOutSize;   // invocations
+uniform ivec2 uOutSize;   // the output image's size (full or quarter resolution)
+uniform ivec2 uSubSize;   // DEINTERLEAVE: invocations per sub-image
 uniform int uScale;
 uniform ivec3 uCells;
 uniform int uFirstVpl;
@@ -70,7 +75,10 @@ float litBits(uvec4 c, int first, int last) {
 }
 
 void main() {
-    ivec2 id = ivec2(gl_GlobalInvocationID.xy);
+    ivec2 id = ivec2(gl_GlobalInvocationID.xy);  // the output texel
+#ifdef DEINTERLEAVE
+    id = 3 * (id % uSubSize) + id / uSubSize;
+#endif
     if (any(greaterThanEqual(id, uOutSize))) return;
     ivec2 pixel = min(id * uScale, uSize - 1);
     vec3 w = pixelRay(pixel);

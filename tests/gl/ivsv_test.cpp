@@ -93,6 +93,38 @@ TEST_F(IvsvTest, InterleavedGatherIsWithinTwoPercentAtTwiceTheResolution) {
     EXPECT_LT(e, 0.02);
 }
 
+// Deinterleaved (the default: the invocations run over the nine 3x3 sub-images side by side) and in
+// screen order, the interleaved gather gives every pixel the same VPLs in the same order: the images are
+// bit for bit the same, at sizes that are multiples neither of 3 nor of the 8 x 8 work group, for a VPL count
+// that is not a multiple of 9, and with the pattern shifted (subsets=per-frame). A pixel the remapping
+// missed would keep the texture's zero; one it wrote twice, or at the wrong place, would differ.
+TEST_F(IvsvTest, DeinterleavedGatherWritesWhatScreenOrderWrites) {
+    const viz::scene::Scene scene = viz::scene::makeBuiltinScene("tv-room");
+    for (const auto& [w, h] : {std::pair{161, 117}, std::pair{50, 31}}) {
+        for (double subsets : {0.0, 1.0}) {
+            const viz::Settings base{{"vpls", 40}, {"voxels", 64}, {"gather", 1}, {"subsets", subsets}};
+            viz::Settings on = base, off = base;
+            on["deinterleave"] = 1;
+            off["deinterleave"] = 0;
+            const viz::FrameOutput a = render(scene, "ivsv", on, w, h, -1, {"ivsv.visibility"});
+            const viz::FrameOutput b = render(scene, "ivsv", off, w, h, -1, {"ivsv.visibility"});
+            EXPECT_TRUE(feature(a.plan, "DEINTERLEAVE").enabled);
+            EXPECT_FALSE(feature(b.plan, "DEINTERLEAVE").enabled);
+            ASSERT_EQ(a.airlight.pixels.size(), b.airlight.pixels.size());
+            int differ = 0, lit = 0;
+            for (std::size_t i = 0; i < a.airlight.pixels.size(); ++i) {
+                differ += a.airlight.pixels[i] != b.airlight.pixels[i] ? 1 : 0;
+                lit += b.airlight.pixels[i] > 0.0f ? 1 : 0;
+            }
+            EXPECT_EQ(differ, 0) << w << "x" << h << " subsets " << subsets;
+            EXPECT_GT(lit, int(a.airlight.pixels.size()) / 2) << "the comparison needs light to compare";
+            const viz::Image& va = *find(a, "ivsv.visibility")->image;
+            const viz::Image& vb = *find(b, "ivsv.visibility")->image;
+            EXPECT_TRUE(va.pixels == vb.pixels) << w << "x" << h << " subsets " << subsets;
+        }
+    }
+}
+
 // The imperfect shadow maps (a point subset per VPL plus push-pull) give nearly the airlight of the naive
 // path's rasterized cube maps.
 TEST_F(IvsvTest, ImperfectShadowMapsAgreeWithNaiveCubeMaps) {

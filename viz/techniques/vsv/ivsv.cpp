@@ -39,6 +39,11 @@ const ParamTable<IvsvSettings>& ivsvParams() {
                   "3x3 screen pattern); per-frame: the pattern steps by one subset each frame of an animation, so "
                   "every pixel sees all nine over nine frames (what temporal accumulation would want)",
                   0, 0, 1, true, {"fixed", "per-frame"}})
+            .add(&S::deinterleave,
+                 {"deinterleave", "gather=interleaved: on: the invocations run over the nine 3x3 sub-images side by "
+                  "side, so every work group gathers one ninth of the VPLs (its pixels read the same VPLs and grid "
+                  "tiles); off: in screen order, every group mixes all nine. The same image either way",
+                  1, 0, 1, true, {"off", "on"}})
             .add(&S::naive, {"mode", "imperfect: ISMs and one pass per step for all VPLs; naive: cube shadow maps "
                              "and a full VSV per VPL", 0, 0, 1, true, {"imperfect", "naive"}})
             .add(&S::points, {"points", "point cloud size for the imperfect shadow maps (split among the VPLs)",
@@ -98,7 +103,7 @@ IvsvTechnique::IvsvTechnique()
         {kStageScan, "Extrude (segmented scan)", "prefix OR along alpha restarting at every tile boundary",
          {"scan_passes"}, {kScanSlice}, kMaxScanPasses, "scan_passes"},
         {kStageGather, "Gather", "per pixel: sum over VPLs of visibility x airlight (full, interleaved, quarter)",
-         {"combine", "gather", "subsets", "interp", "epipole", "chunk_bits", "vpl_disc", "bilateral_sigma", "vpl_step", "pick_x", "pick_y",
+         {"combine", "gather", "subsets", "deinterleave", "interp", "epipole", "chunk_bits", "vpl_disc", "bilateral_sigma", "vpl_step", "pick_x", "pick_y",
           "force_features"},
          {kColumn, kPerVpl, kInterleave, kAirlight, kVisibility}, 1, "vpl_step"},
         render::SceneViewPasses::composeStage("ivsv"),
@@ -184,6 +189,10 @@ Plan IvsvTechnique::plan(const scene::Scene& scene, const Settings& settings) co
         p.features.push_back({"SUBSETS_PER_FRAME", cycle,
                               cycle ? "subsets=per-frame: the 3x3 VPL pattern steps by one subset every frame"
                                     : "subsets=fixed: each pixel keeps its ninth of the VPLs from frame to frame"});
+        p.features.push_back({"DEINTERLEAVE", s.deinterleave,
+                              s.deinterleave ? "each work group gathers the pixels of one ninth of the VPLs (the "
+                                               "3x3 sub-images side by side): coherent VPL and grid reads"
+                                             : "deinterleave=off: work groups in screen order mix all nine ninths"});
     }
     p.features.push_back({"INTERP", interp, interp ? "two texels along theta" : "nearest texel"});
     const bool epipole = hasArea && s.epipole;

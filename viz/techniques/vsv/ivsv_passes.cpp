@@ -92,15 +92,16 @@ void IvsvTechnique::allocateOutputs(int width, int height) {
         {.target = GL_TEXTURE_2D, .format = GL_R32F, .size = {width, height, 1}, .levels = 1, .label = kVisibility});
 }
 
-const gl::Program& IvsvTechnique::gatherProgram(bool exact, bool interp, bool epipole, bool naive) {
-    const std::string key =
-        std::string(exact ? "E" : "F") + (interp ? "I" : "N") + (epipole ? "P" : "-") + (naive ? "C" : "-");
+const gl::Program& IvsvTechnique::gatherProgram(bool exact, bool interp, bool epipole, bool naive, bool deinterleave) {
+    const std::string key = std::string(exact ? "E" : "F") + (interp ? "I" : "N") + (epipole ? "P" : "-") +
+                            (naive ? "C" : "-") + (deinterleave ? "D" : "-");
     if (key != mGatherKey || !mGather) {
         gl::ShaderDefines defines;
         if (exact) defines.push_back({"COMBINE_EXACT", "1"});
         if (interp) defines.push_back({"INTERP", "1"});
         if (epipole) defines.push_back({"EPIPOLE", "1"});
         if (naive) defines.push_back({"CUBE", "1"});
+        if (deinterleave) defines.push_back({"DEINTERLEAVE", "1"});
         mGather = gl::Program::compile({.stages = {"vsv/ivsv_gather.comp"}, .defines = defines, .label = "ivsv.gather"});
         mGatherKey = key;
     }
@@ -112,12 +113,19 @@ void IvsvTechnique::gather(const scene::Scene& scene, const FrameInput& input, i
     const IvsvSettings& s = mSettings;
     const scene::Camera& cam = scene.camera;
     const bool epipole = s.epipole;
-    const gl::Program& program = gatherProgram(s.exactCombine, s.interp, epipole, naive);
+    const bool deinterleave = mode == kGatherInterleaved && s.deinterleave;
+    const gl::Program& program = gatherProgram(s.exactCombine, s.interp, epipole, naive, deinterleave);
     const int w = input.width, h = input.height;
     gl::Texture& target = mode == kGatherFull ? mAirlight : (mode == kGatherInterleaved ? mRaw : mLow);
     const glm::ivec2 outSize = mode == kGatherQuarter ? glm::ivec2((w + 1) / 2, (h + 1) / 2) : glm::ivec2(w, h);
+    // Deinterleaved: the invocations cover the nine sub-images (pixels of one place in the 3x3 pattern)
+    // side by side, each padded to whole work groups, so no group straddles two sub-images.
+    const glm::ivec3 groupSize = program.workGroupSize();
+    auto wholeGroups = [](int n, int g) { return (n + g - 1) / g * g; };
+    const glm::ivec2 subSize{wholeGroups((w + 2) / 3, groupSize.x), wholeGroups((h + 2) / 3, groupSize.y)};
     program.use();
     program.set("uOutSize", outSize);
+    if (deinterleave) program.set("uSubSize", subSize);
     render::bindCameraRay(program, cam, w, h);
     program.set("uScale", mode == kGatherQuarter ? 2 : 1);
     program.set("uCells", glm::ivec3(cells, cells, kPhiBits));
@@ -136,7 +144,8 @@ void IvsvTechnique::gather(const scene::Scene& scene, const FrameInput& input, i
     mResult->bindImage(0, GL_READ_ONLY);
     target.bindImage(1, GL_READ_WRITE);
     mVisibility.bindImage(2, GL_READ_WRITE);
-    const glm::ivec3 groups = gl::groupCount({outSize.x, outSize.y, 1}, program.workGroupSize());
+    const glm::ivec2 invocations = deinterleave ? 3 * subSize : outSize;
+    const glm::ivec3 groups = gl::groupCount({invocations.x, invocations.y, 1}, groupSize);
     // Naive: one gather pass per VPL, accumulating; imperfect: one pass over all of them.
     const int passes = naive ? gathered : 1;
     for (int i = 0; i < passes; ++i) {

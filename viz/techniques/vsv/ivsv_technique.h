@@ -103,6 +103,7 @@ struct IvsvSettings {
     bool exactCombine = false;  // combine=exact
     int gather = kGatherFull;
     bool subsetsPerFrame = false;  // subsets=per-frame
+    bool deinterleave = false;     // deinterleave=on
     bool naive = false;            // mode=naive
     int points = 0, fillLevels = 0;
     double alphaBias = 0.0, phiBias = 0.0;
@@ -191,7 +192,7 @@ private:
 
     void allocateOutputs(int width, int height);
 
-    const gl::Program& gatherProgram(bool exact, bool interp, bool epipole, bool naive);
+    const gl::Program& gatherProgram(bool exact, bool interp, bool epipole, bool naive, bool deinterleave);
 
     void gather(const scene::Scene& scene, const FrameInput& input, int mode, int gathered, int cells, bool naive,
                 glm::ivec2 pickGl);
