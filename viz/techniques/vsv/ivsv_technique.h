@@ -72,6 +72,7 @@ inline const PermutationTable kDefines = {
     {"COMBINE_EXACT", {"COMBINE_EXACT", nullptr}},
     {"INTERP", {"INTERP", nullptr}},
     {"EPIPOLE", {"EPIPOLE", nullptr}},
+    {"DEINTERLEAVE", {"DEINTERLEAVE", nullptr}},
 };
 
 using vsv::scanPassCount;
