@@ -77,6 +77,18 @@ for scene in $scenes; do
     done
     pack
 done
+# 1b. The fast paths whose choice waits for a GPU, each pair side by side: minmax's prefix sums (sequential
+# rows against log2 passes, integrand=svd) and ivsv's interleaved gather (deinterleaved or screen order).
+for variant in "minmax stained-glass prefix_sums=sequential" "minmax stained-glass prefix_sums=log2" \
+               "ivsv tv-room deinterleave=on" "ivsv tv-room deinterleave=off"; do
+    set -- $variant
+    [ "$(left)" -gt 200 ] || { say "skip $variant: too little time left"; continue; }
+    extra="--set integrand=svd"; [ "$1" = ivsv ] && extra="--set gather=interleaved --set vpls=256"
+    timeout 40 "$A" bench --scenes "$2" --techniques "$1" --axes size --sizes "$sizes" --runs 3 $extra --set "$3" \
+        --out "$work/variant-$1-$3" >"$work/variant-$1-$3.txt" 2>"$work/variant-$1-$3.err"
+    say "variant $1 $2 $3 exit $? ($(left) s left)"
+done
+pack
 # 2. Error against time at the report's size (the reference on the CPU's threads, cached on disk).
 say "== report ($(left) s left)"
 timeout $(( $(left) - 70 )) "$A" report --scenes "${REPORT_SCENES:-colonnade}" --size "${REPORT_SIZE:-1920x1080}" --quick --runs 3 \

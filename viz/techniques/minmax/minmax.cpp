@@ -30,6 +30,11 @@ const ParamTable<MinmaxSettings>& minmaxParams() {
             .add(&S::textureColumns, {"texture_columns", "integrand=svd: gamma texels of the prefix-sum tables of "
                                       "Gamma_i T (the light texture's own resolution, lower than the shadow map's)",
                                       256, 16, 4096, true})
+            .add(&S::prefixScan, {"prefix_sums", "integrand=svd: how a table row is summed; sequential: one "
+                                  "invocation adds the row's texels in order; log2: one work group per row, its "
+                                  "chunk sums scanned in log2 passes in shared memory (Chen et al. 2011 Sec. 3.4); "
+                                  "auto: sequential unless a row is too long for llvmpipe's loop limit",
+                                  2, 0, 2, true, {"sequential", "log2", "auto"}})
             .add(&S::linear, {"traversal", "tree: min-max mipmap walk (Figure 5); linear: scan every texel of the row",
                               0, 0, 1, true, {"tree", "linear"}})
             .add(&S::marchPoints, {"point_lights", "epipolar: point lights rectified from their cube maps; march: "
@@ -67,7 +72,7 @@ MinmaxTechnique::MinmaxTechnique()
         {kStageRectify, "Rectify", "shadow map -> S[alpha, gamma] = beta of the occluder on each light ray "
          "(point lights: each slice's gamma range first, then their cube map); integrand=svd: SVD of "
          "I(beta, gamma) and prefix sums of Gamma_i T per slice",
-         {"slices", "slice_oversampling", "slice_frame", "columns", "integrand", "rank", "texture_columns", "point_lights"},
+         {"slices", "slice_oversampling", "slice_frame", "columns", "integrand", "rank", "texture_columns", "prefix_sums", "point_lights"},
          {kRectified, kRectifiedView, kRowGamma, kSingularValues, kBasis, kPrefixSums, kReconstructionError}, 1},
         {kStageMipmap, "Min-max mipmap", "per row of S: a 1D min-max tree, one pass per level",
          {"mip_levels"}, {kTree, kPyramid}, 1, "mip_levels"},
@@ -204,6 +209,19 @@ Plan MinmaxTechnique::plan(const scene::Scene& scene, const Settings& settings) 
         if (render::hasLightOfType(scene, scene::LightType::Point) && !marchPoints)
             p.features.back().why += "; point lights: T is constant, but each slice has its own gamma range, "
                                      "so each has its own table too";
+        const bool fits = sequentialScanFits(s.textureColumns, s.rank);
+        const bool log2 = s.prefixScan == PrefixScan::Log2 || (s.prefixScan == PrefixScan::Auto && !fits);
+        const std::string row = std::to_string(s.textureColumns) + " texels at rank " + std::to_string(s.rank);
+        std::string why = s.prefixScan == PrefixScan::Log2 ? "prefix_sums=log2: a work group per table row, log2 "
+                                                             "passes over its chunk sums in shared memory"
+                          : log2 ? "prefix_sums=auto: log2 passes: a sequential scan of " + row +
+                                       " would pass llvmpipe's 65,535 loop iterations per invocation"
+                                 : "prefix_sums=" + std::string(s.prefixScan == PrefixScan::Auto ? "auto" : "sequential") +
+                                       ": one invocation per table row adds its texels in order (cheaper on a CPU "
+                                       "renderer)";
+        if (!log2 && !fits)
+            why += "; warning: " + row + " passes llvmpipe's loop limit, where the rows' ends are left unsummed";
+        p.features.push_back({"PREFIX_LOG2_PASSES", log2, why});
     }
     const bool linear = s.linear;
     p.features.push_back({"TREE_TRAVERSAL", !linear,
@@ -289,6 +307,8 @@ FrameOutput MinmaxTechnique::run(const FrameInput& input) {
     // ---- rectify ----
     mSvd = findFeature(out.plan, "INTEGRAND_SVD")->enabled;  // integrand=auto: the plan's choice
     const bool svd = mSvd;
+    const FeaturePlan* log2 = findFeature(out.plan, "PREFIX_LOG2_PASSES");
+    mLog2Prefix = log2 && log2->enabled;
     const bool toMipmap = stages.run(
         kRectifyIndex,
         [&] {

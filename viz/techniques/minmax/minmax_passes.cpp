@@ -140,12 +140,14 @@ void MinmaxTechnique::prefixSums(LightWork& w, const scene::Scene& scene) {
         w.prefix.setWrap(GL_CLAMP_TO_EDGE);
     }
     w.prefixRows = rows;
-    if (!mPrefix) mPrefix = gl::Program::compile({.stages = {"minmax/prefix.comp"}, .label = "minmax.prefix"});
-    if (w.point() && !mPrefixPoint)
-        mPrefixPoint = gl::Program::compile({.stages = {"minmax/prefix.comp"},
-                                             .defines = {{"EPIPOLAR_POINT", "1"}},
-                                             .label = "minmax.prefix"});
-    const gl::Program& program = w.point() ? mPrefixPoint : mPrefix;
+    const int variant = (w.point() ? 1 : 0) | (mLog2Prefix ? 2 : 0);
+    gl::Program& program = mPrefix[variant];
+    if (!program) {
+        gl::ShaderDefines defines;
+        if (w.point()) defines.push_back({"EPIPOLAR_POINT", "1"});
+        if (mLog2Prefix) defines.push_back({"LOG2_PASSES", "1"});
+        program = gl::Program::compile({.stages = {"minmax/prefix.comp"}, .defines = defines, .label = "minmax.prefix"});
+    }
     program.use();
     setFrameUniforms(program, minmax::toFloat(f));
     program.set("uLight", w.gpuIndex);
@@ -159,8 +161,9 @@ void MinmaxTechnique::prefixSums(LightWork& w, const scene::Scene& scene) {
     mView.lights().bind();
     if (w.point()) w.rowGamma.bindBase(GL_SHADER_STORAGE_BUFFER, render::hd::kFirstFreeSsboBinding);
     w.prefix.bindImage(0, GL_WRITE_ONLY);
-    const glm::ivec3 groups = gl::groupCount({rows, 1, 1}, program.workGroupSize());
-    glDispatchCompute(GLuint(groups.x), 1, 1);
+    // log2 passes: one work group per row; sequential: one invocation per row.
+    const int groups = mLog2Prefix ? rows : gl::groupCount({rows, 1, 1}, program.workGroupSize()).x;
+    glDispatchCompute(GLuint(groups), 1, 1);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
 }
 

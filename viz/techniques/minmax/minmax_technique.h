@@ -7,6 +7,7 @@
 #include <bit>
 #include <cstdint>
 #include <cstdio>
+#include <map>
 #include <numbers>
 
 #include "gl/buffer.h"
@@ -59,6 +60,7 @@ inline const PermutationTable kDefines = {
     {"NEAR_EPIPOLE", {"NEAR_EPIPOLE", nullptr}},
     {"EPIPOLAR_POINT", {"EPIPOLAR_POINT", nullptr}},
     {"INTEGRAND_SVD", {"INTEGRAND_SVD", nullptr}},
+    {"PREFIX_LOG2_PASSES", {"LOG2_PASSES", nullptr}},
     {"SPOT", {nullptr, "LIGHTS_NO_SPOT"}},
     {"COOKIE", {nullptr, "LIGHTS_NO_COOKIE"}},
     {"SHADOW_MAPS_CUBE", {nullptr, "SHADOW_NO_CUBE"}},
@@ -92,6 +94,15 @@ struct LightWork {
 // integrand=: the segment integral per lit run, the paper's low-rank approximation, or whichever of the two
 // plan() picks for the scene (integrand_choice.h).
 enum class Integrand { Analytic = 0, Svd = 1, Auto = 2 };
+enum class PrefixScan { Sequential = 0, Log2 = 1, Auto = 2 };
+
+// Whether prefix.comp's sequential scan of one table row stays within llvmpipe's loop limit: it stops an
+// invocation's loops after 65,535 iterations in total (docs/numerics.md, "GPU loop limits"), and a row
+// takes about texels x (rank + layers + 4) (rank 8 with 4096 texels went silently wrong at texel 3855).
+inline bool sequentialScanFits(int texels, int rank) {
+    const long layers = (3 * rank + 3) / 4;
+    return long(texels) * (rank + layers + 4) + 64 <= 65535;
+}
 
 // The settings a run reads, each declared once with its parameter (minmaxParams(), debug/param_table.h).
 struct MinmaxSettings {
@@ -100,6 +111,7 @@ struct MinmaxSettings {
     int columns = 0;
     Integrand integrand = Integrand::Auto;
     int rank = 0, textureColumns = 0;
+    PrefixScan prefixScan = PrefixScan::Auto;  // prefix_sums
     bool linear = false;       // traversal=linear
     bool marchPoints = false;  // point_lights=march
     int spotPieces = 0;
@@ -215,9 +227,11 @@ private:
 
     std::vector<LightWork> mWork;
     std::vector<int> mBruteLights;  // GpuLights indices marched by brute force
+    bool mLog2Prefix = false;       // the plan's PREFIX_LOG2_PASSES
     bool mSvd = false;              // the run's integrand (the plan's INTEGRAND_SVD: integrand=auto decides there)
     minmax::IntegrandChooser mIntegrandChooser;  // integrand=auto, for plan()
-    gl::Program mRectify, mRectifyPoint, mGammaRange, mMipmap, mTraverse, mPrefix, mPrefixPoint;
+    gl::Program mRectify, mRectifyPoint, mGammaRange, mMipmap, mTraverse;
+    std::map<int, gl::Program> mPrefix;  // by variant: 1 point light (EPIPOLAR_POINT), 2 LOG2_PASSES
     std::string mProgramKey;
     gl::Texture mAirlight, mVisited, mNearMask, mRayCoords;
     // What markersFor needs of the last run.
