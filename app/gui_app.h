@@ -34,6 +34,7 @@
 #include "pane_image.h"
 #include "process_stats.h"
 #include "ray_inspection.h"
+#include "ray_inspector.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/image_io.h"
@@ -203,10 +204,9 @@ private:
     // technique's value for that pixel. The cursor elsewhere clears it.
     void inspectPixelUnderCursor();
     void inspectPixel(int x, int y);
-    void drawInspector(DrawList& dl, const Rect& area);
-
-    // A cross on the inspected pixel in a screen-space view.
-    void markProbe(DrawList& dl, const ViewState& v);
+    // The technique's readings at the inspected pixel when the run shown is the inspected technique's
+    // (null otherwise): read back once per run and pixel.
+    const PixelInspection* inspectedReadings();
 
     // ---- techniques and rendering ----
 
@@ -287,8 +287,6 @@ private:
     bool otherPending() const;
     void refreshView(ViewState& v);
 
-    // The technique's view of the inspected pixel in the last run, read back once per run and pixel.
-    const PixelInspection& probeInspection();
     void refreshPanes();
 
     // [ ] and the views list: what the focused view shows.
@@ -544,7 +542,7 @@ private:
     std::unique_ptr<viz::ui::Context> mUi;   // the widgets
     viz::ui::Input mUiInput;                 // keys, text and wheel gathered since the last frame
     Rect mParamsRect;                        // the widget panel's area last frame
-    std::optional<viz::reference::RayProbe> mProbe;  // the ray inspector's pixel, if any
+    RayInspector mInspector;  // the ray inspector's pixel, if any (ray_inspector.h)
     std::optional<glm::ivec2> mPendingInspect;  // a lesson step's pixel, inspected when its result is in
     std::unique_ptr<LessonPlayer> mLesson;      // the lesson panel, when a lesson is open
     glm::ivec2 mLessonSize{0};                  // --size given with a lesson: every step at that size
@@ -564,9 +562,6 @@ private:
     bool mTextTab = false, mTextEnter = false;  // Tab / Enter pressed in a text field this frame
     int mScriptHeld = -1;           // the key a script's `hold` keeps down (-1: none)
     bool mScriptHeldShift = false;  // ... with Shift
-    std::string mProbeTechnique;
-    bool mProbeHasValue = false;
-    glm::dvec3 mProbeValue{0.0};
     // The panel's light intensity (candela or lux) and medium coefficients (per scene unit): declared log
     // ranges covering every built-in scene and stiff case (millimetre models, scales 1e-3 to 1e4).
     OnOffSlider mIntensitySlider{1e-6f, 1e12f, 1.0}, mSigmaSSlider{1e-7f, 1e3f, 0.1}, mSigmaASlider{1e-7f, 1e3f, 0.01};
@@ -579,7 +574,6 @@ private:
     GLFWcursor* mArrowCursor = nullptr;       // stays null: the default cursor
     GLFWcursor* mColumnCursor = nullptr;      // created on first use, destroyed with the app
     GLFWcursor* mRowCursor = nullptr;
-    std::optional<PixelInspection> mProbeInspection;  // cache of probeInspection()
     int mScriptDragStep = 0;                 // a script's drag: 0 before the press, 1-4 moving, 5 release
     glm::vec2 mScriptDragFrom{0.0f}, mScriptDragTo{0.0f};  // its ends, fixed at the press
     // What the last frame drew where (scripts, sidecar): sidebar items "technique:ID", "view:LABEL"; per

@@ -263,38 +263,7 @@ void GuiApp::writeSidecar(const std::string& path) {
                             {"linked_pixel", mLinkedPixel ? nlohmann::json::array({mLinkedPixel->x, mLinkedPixel->y})
                                                           : nlohmann::json(nullptr)}};
     if (mComparison.isOpen()) sidecar["comparison"] = mComparison.toJson();
-    if (mProbe) {
-        const auto rgb = [](glm::dvec3 v) { return nlohmann::json::array({v.x, v.y, v.z}); };
-        nlohmann::json lights = nlohmann::json::array();
-        for (const auto& l : mProbe->lights) {
-            nlohmann::json spans = nlohmann::json::array();
-            for (const auto& iv : l.lit) spans.push_back({iv.a, iv.b});
-            lights.push_back({{"name", l.name}, {"lit", spans}, {"airlight", rgb(l.airlight)}});
-        }
-        sidecar["inspector"] = {{"pixel", {mProbe->x, mProbe->y}},
-                                {"d", mProbe->d},
-                                {"reference", rgb(mProbe->airlight)},
-                                {"technique", mProbeTechnique},
-                                {"technique_value", mProbeHasValue ? rgb(mProbeValue) : nlohmann::json(nullptr)},
-                                {"lights", lights}};
-        if (mHaveOutput && mProbeTechnique == technique().id()) {
-            nlohmann::json readings = nlohmann::json::object();
-            for (const PixelReading& r : probeInspection().readings) {
-                std::vector<double> values;
-                for (int c = 0; c < r.channels; ++c) values.push_back(r.value[c]);
-                readings[r.id] = values;
-            }
-            sidecar["inspector"]["readings"] = readings;
-            sidecar["inspector"]["ray_views"] = probeInspection().rayViews;
-            nlohmann::json series = nlohmann::json::object();
-            for (const viz::plot::Series& s : probeInspection().series) {
-                nlohmann::json points = nlohmann::json::array();
-                for (const glm::dvec2& q : s.points) points.push_back({q.x, q.y});
-                series[s.name] = points;
-            }
-            sidecar["inspector"]["ray_series"] = series;
-        }
-    }
+    if (mInspector.active()) sidecar["inspector"] = mInspector.sidecar(inspectedReadings());
     if (mLesson) sidecar["lesson"] = mLesson->sidecar(*this);
     std::filesystem::path json(path);
     json.replace_extension(".json");

@@ -126,7 +126,7 @@ void GuiApp::draw() {
     const float aspect = float(mOptions.height) / float(std::max(1, mOptions.width));
     float gridHeight = std::clamp(half * aspect + chrome, 0.5f * panes.size().y, 0.74f * panes.size().y);
     // The ray inspector's plot needs height: the grid gives some up while it is open.
-    if (mProbe) gridHeight = std::min(gridHeight, 0.56f * panes.size().y);
+    if (mInspector.active()) gridHeight = std::min(gridHeight, 0.56f * panes.size().y);
     // The stepping timeline sits between the grid and the panels.
     const float timelineHeight = line + 8.0f * s;
     // The panels below keep room for six lines (the parameter panel's header and a few rows, which then
@@ -148,8 +148,8 @@ void GuiApp::draw() {
     drawStepTimeline();
     const Rect left{{panes.min.x, mTimelineRect.max.y + pad}, {panes.min.x + half, panes.max.y}};
     const Rect right{{panes.max.x - half, mTimelineRect.max.y + pad}, panes.max};
-    if (mProbe) {
-        if (left.size().y > 6.0f * line) drawInspector(dl, left);
+    if (mInspector.active()) {
+        if (left.size().y > 6.0f * line) mInspector.draw(dl, left, line, mScale, inspectedReadings());
     } else if (mHaveOutput && !mOutput.timing.stages.empty()) {
         // Per-stage timings of the last run as bars, with the clock that measured them.
         viz::plot::BarChart chart;

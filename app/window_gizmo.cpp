@@ -8,7 +8,7 @@ std::optional<LightGizmo> GuiApp::gizmoFor(const ViewState& v) const {
     if ((v.content != "final" && v.content != "airlight") || !isScreenSpace(v)) return {};
     // It would cover what the view is showing: the inspected pixel (the ray inspector's cross), or in a
     // lesson the NaN / Inf pixels the step is about.
-    if (mProbe || (mLesson && v.counts.nan + v.counts.inf > 0)) return {};
+    if (mInspector.active() || (mLesson && v.counts.nan + v.counts.inf > 0)) return {};
     return LightGizmo(mController.camera(), v.pane.size, mGizmoArm, mController.target());
 }
 

@@ -312,15 +312,9 @@ void GuiApp::refreshView(ViewState& v) {
     }
 }
 
-const PixelInspection& GuiApp::probeInspection() {
-    if (!mProbeInspection)
-        mProbeInspection = inspectRun(technique(), mOutput, {mOptions.width, mOptions.height}, {mProbe->x, mProbe->y});
-    return *mProbeInspection;
-}
-
 void GuiApp::refreshPanes() {
     mMarkerCache.clear();
-    mProbeInspection.reset();
+    mInspector.forgetRun();
     // Automatic exposure from the final image, or from L_air while a stopped run has none yet.
     const viz::Image& exposed = mOutput.final.empty() ? mOutput.airlight : mOutput.final;
     if (mHaveOutput && !mExposureSet && !exposed.empty()) {

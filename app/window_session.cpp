@@ -31,7 +31,7 @@ AppState GuiApp::appState() const {
         a.views.push_back({id, v.content, v.layer, v.transform.zoom, v.transform.center, v.display});
     }
     a.inspected = mPendingInspect;
-    if (mProbe) a.inspected = glm::ivec2(mProbe->x, mProbe->y);
+    if (mInspector.active()) a.inspected = mInspector.pixel();
     return a;
 }
 
@@ -101,7 +101,7 @@ void GuiApp::loadLessonScene(const std::string& name) {
     mSigmaASlider.forget();
     mNotice = sceneNotesLine(mScene);
     mComparison.close();
-    mProbe.reset();
+    mInspector.clear();
     mDirty = true;
 }
 
@@ -134,7 +134,7 @@ void GuiApp::applyLessonWindowState(const LessonWindowState& s) {
         mCursor.substep = c->substep;
     replan();
     layOutLessonViews(s.views.empty() ? std::vector<std::string>{s.view} : s.views);
-    mProbe.reset();
+    mInspector.clear();
     mPendingInspect = s.inspect;
     mExposureSet = false;
     mComparison.close();

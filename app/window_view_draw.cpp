@@ -277,7 +277,7 @@ void GuiApp::drawView(int id, ViewState& v) {
         crosshair(dl, v.image.min + glm::vec2(v.transform.uvToPane(uv)) * v.image.size(), v.image);
     }
     if (mLinkedPixel && !isScreenSpace(v) && v.pane.texture != 0) drawMarkers(dl, v, markersFor(v));
-    markProbe(dl, v);
+    if (isScreenSpace(v)) mInspector.mark(dl, v.image, v.transform, {mOptions.width, mOptions.height}, mScale);
     drawGizmo(dl, id, v);
 
     drawColourBar(id, v);
