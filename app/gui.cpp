@@ -113,9 +113,9 @@ int GuiApp::run() {
     auto last = Clock::now();
     while (!mWindow.shouldClose()) {
         const bool flying = mController.mode() == CameraController::Mode::Fly && anyFlyKeyDown();
-        const bool busy = mWorker->progress().busy || otherPending() || mComparison.pending();
+        const bool busy = mWorker->progress().busy || mDifferenceRuns.pending() || mComparison.pending();
         const bool automated = !mOptions.screenshot.empty() || !mOptions.script.empty();
-        if (flying || mDirty || automated || mAnimation.playing || mGpuOthersDue || mComparison.due() ||
+        if (flying || mDirty || automated || mAnimation.playing || mDifferenceRuns.due() || mComparison.due() ||
             (mLesson && mLesson->animating())) {
             glfwPollEvents();
         } else {
@@ -128,7 +128,7 @@ int GuiApp::run() {
         last = now;
         loadPendingScene();
         if (mSceneWatch.changed(now)) reloadScene();
-        if (mGpuOthersDue) runDueGpuOthers();  // after a frame that said "computing it..."
+        if (mDifferenceRuns.due()) runDueGpuOthers();  // after a frame that said "computing it..."
         if (mComparison.due()) runComparisonTechniques();
         if (mController.mode() == CameraController::Mode::Fly) fly(dt);
         // Automation advances animations by a fixed 1/30 s per frame, so runs repeat exactly.
@@ -162,13 +162,13 @@ int GuiApp::run() {
         ++mFramesDrawn;
         if (!mOptions.script.empty()) {
             // Each frame runs the script's next actions; the window closes when it is done.
-            if (mHaveOutput && !mWorker->progress().busy && !otherPending() && !mComparison.pending() &&
+            if (mHaveOutput && !mWorker->progress().busy && !mDifferenceRuns.pending() && !mComparison.pending() &&
                 !mAnimation.reference.busy() && !stepScript()) {
                 if (!mOptions.screenshot.empty()) writeScreenshot(mOptions.screenshot);
                 return 0;
             }
         } else if (automated && mFramesDrawn >= mOptions.frames && mHaveOutput && !mWorker->progress().busy &&
-                   !otherPending()) {
+                   !mDifferenceRuns.pending()) {
             writeScreenshot(mOptions.screenshot);
             return 0;
         }

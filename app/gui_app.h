@@ -29,6 +29,7 @@
 #include "camera_controller.h"
 #include "comparison_grid.h"
 #include "cpu_worker.h"
+#include "difference_runs.h"
 #include "lesson_player.h"
 #include "on_off_slider.h"
 #include "pane_image.h"
@@ -220,14 +221,6 @@ private:
 
     // ---- the view grid: what each view shows ----
 
-    // The other side of a difference view: one technique's images for one scene, camera and size.
-    struct OtherRun {
-        std::string key;  // scene, camera, size and settings it was run for
-        viz::Image airlight, final;
-        std::string failure;
-        std::string pending;  // a CPU technique: the key of the run the worker computes
-    };
-
     // Contents in the views list: the final frame, L_air, then every intermediate of the run.
     int contentCount() const;
     // What the grid's views show (content ids), for the run's on-demand views.
@@ -261,30 +254,21 @@ private:
     // report's error figures in the title.
     void makeDifference(ViewState& v, const std::string& content);
 
-    // The other side of difference views: `id`'s images for the current scene, camera and size, kept
-    // until any of those change. CPU techniques (the reference, from its on-disk cache when it has the
-    // frame) run on a worker thread of their own, so that the window stays responsive: null until its
-    // full-size pass arrives (pollOtherWorker). GPU techniques need this thread's GL context: they are
-    // queued and run at the start of the next frame (runDueGpuOthers), after a frame that says so, as
-    // the window does for a slow run of its own technique. The current technique is its own last output.
-    const OtherRun* otherRun(const std::string& id);
+    // The other side of difference views (difference_runs.h): `id`'s images for the current scene,
+    // camera and size, null while they are computed or during an interaction. The current technique is
+    // its own last output.
+    const DifferenceRuns::Run* otherRun(const std::string& id);
+    // The window's request for `id` now (its settings completed by its technique where it can be made).
+    DifferenceRequest differenceRequest(const std::string& id);
 
     // The settings `id` runs with on the other side: the session's for it, then the command line's.
     viz::Settings otherSettings(const std::string& id) const;
 
-    // What the other side's images depend on: technique, size, camera, scene (medium, lights), settings.
-    std::string otherRunKey(const std::string& id) const;
-
-    // The GPU techniques queued by otherRun: run now (this blocks the thread; the frame before said
-    // "computing it..."), unless the scene, camera or size moved on since they were asked for.
+    // The GPU runs queued by otherRun (this blocks the thread; the frame before said "computing it..."),
+    // and the worker's finished pass: each refreshes the views that compare against its technique.
     void runDueGpuOthers();
-
-    // The medium and lights: what a CPU worker's scene copy depends on besides the camera.
-    std::string sceneOnlyKey() const;
-
-    // The difference worker's full-size pass: the other side of the difference views it was asked for.
     void pollOtherWorker();
-    bool otherPending() const;
+    void refreshDifferenceViews(const std::string& against);
     void refreshView(ViewState& v);
 
     void refreshPanes();
@@ -513,11 +497,9 @@ private:
     int mHoveredView = -1;
     int mDragTitle = -1;                     // a title dragged onto another view swaps the two
     std::vector<Rect> mStripRects;           // open display strips' widget panels last frame
-    std::map<std::string, OtherRun> mOtherRuns;  // difference views' other side, by technique id
-    OtherRun mSelfRun;
-    std::unique_ptr<CpuWorker> mOtherWorker;  // CPU techniques on the other side of difference views
-    bool mGpuOthersDue = false;               // GPU techniques queued for difference views (next frame)
-    std::string mOtherSceneKey;
+    // Difference views' other side (by technique id), through the same schedulers as the comparison grid.
+    DifferenceRuns mDifferenceRuns{[this](const std::string& id) -> RunScheduler& { return otherRunner(id); }};
+    DifferenceRuns::Run mSelfRun;
     double mGridMilliseconds = 0.0;  // CPU time drawViewGrid took last frame
     double mUiMilliseconds = 0.0;    // CPU time of building the whole frame's UI (before its draw calls)
     glm::vec2 mHoverDrawn{-1.0f};    // the mouse position the widgets saw last frame

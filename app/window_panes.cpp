@@ -150,7 +150,7 @@ void GuiApp::buildPane(ViewState& v) {
 void GuiApp::makeDifference(ViewState& v, const std::string& content) {
     const DisplaySettings& d = v.display;
     const viz::Image& mine = content == "final" ? mOutput.final : mOutput.airlight;
-    const OtherRun* other = otherRun(d.against);
+    const DifferenceRuns::Run* other = otherRun(d.against);
     if (!other) {
         v.differenceNote = mReduced ? "difference to " + d.against + ": after the interaction"
                                     : "difference to " + d.against + ": computing it...";
@@ -188,35 +188,24 @@ void GuiApp::makeDifference(ViewState& v, const std::string& content) {
     v.pane = std::move(pane);
 }
 
-const GuiApp::OtherRun* GuiApp::otherRun(const std::string& id) {
+const DifferenceRuns::Run* GuiApp::otherRun(const std::string& id) {
     if (mReduced) return nullptr;
     if (id == technique().id()) {
         mSelfRun = {"", mOutput.airlight, mOutput.final, "", ""};
         return &mSelfRun;
     }
-    const std::string key = otherRunKey(id);
-    OtherRun& run = mOtherRuns[id];
-    if (run.key == key) return &run;
+    return mDifferenceRuns.get(id, differenceRequest(id));
+}
+
+DifferenceRequest GuiApp::differenceRequest(const std::string& id) {
+    DifferenceRequest r{&mScene, mGeometryHash, mController.camera(), mOutputSize, otherSettings(id)};
     try {
-        (void)otherRunner(id);
-    } catch (const std::exception& e) {
-        run = OtherRun{key, {}, {}, e.what(), ""};
-        return &run;
+        std::string ignored;
+        r.settings = settingsFor(otherRunner(id).technique(), r.settings, ignored);
+    } catch (const std::exception&) {
+        // An id that makes no technique: DifferenceRuns::get records the failure.
     }
-    if (run.pending == key) return nullptr;
-    run.pending = key;
-    if (otherRunner(id).technique().needsGl()) {
-        mGpuOthersDue = true;
-        return nullptr;
-    }
-    // The worker keeps its own copy of the scene: handed the new one when the medium or lights changed.
-    if (!mOtherWorker) mOtherWorker = std::make_unique<CpuWorker>(mScene);
-    else if (mOtherSceneKey != sceneOnlyKey()) mOtherWorker->setScene(mScene);
-    mOtherSceneKey = sceneOnlyKey();
-    std::string ignored;
-    mOtherWorker->submit({id, mController.camera(), settingsFor(otherRunner(id).technique(), otherSettings(id), ignored),
-                          mOutputSize.x, mOutputSize.y});
-    return nullptr;
+    return r;
 }
 
 viz::Settings GuiApp::otherSettings(const std::string& id) const {
@@ -225,80 +214,18 @@ viz::Settings GuiApp::otherSettings(const std::string& id) const {
     return given;
 }
 
-std::string GuiApp::otherRunKey(const std::string& id) const {
-    // Everything the run depends on: the scene (sceneOnlyKey: its geometry too, so a file reloaded with a
-    // moved mesh but the same lights does not keep the old image), the window's camera, the size and the
-    // settings.
-    std::string key = id + " " + std::to_string(mOutputSize.x) + "x" + std::to_string(mOutputSize.y);
-    const viz::scene::Camera c = mController.camera();
-    char buf[512];
-    std::snprintf(buf, sizeof buf, " %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g", c.position.x,
-                  c.position.y, c.position.z, c.forward.x, c.forward.y, c.forward.z, c.up.x, c.up.y, c.up.z, c.yfov);
-    key += buf;
-    key += " " + sceneOnlyKey();
-    for (const auto& [name, value] : otherSettings(id)) key += " " + name + "=" + format("%.17g", value);
-    return key;
-}
-
 void GuiApp::runDueGpuOthers() {
-    mGpuOthersDue = false;
-    for (auto& [id, run] : mOtherRuns) {
-        if (run.pending.empty() || !mOtherRunners.count(id) || !mOtherRunners.at(id)->technique().needsGl()) continue;
-        const std::string key = std::exchange(run.pending, std::string());
-        if (key != otherRunKey(id)) continue;  // stale: the next refresh asks again
-        run = OtherRun{key, {}, {}, "", ""};
-        try {
-            RunScheduler& runner = otherRunner(id);
-            std::string ignored;
-            viz::scene::Scene scene = mScene;
-            scene.camera = mController.camera();
-            viz::FrameOutput out = runner.run(scene, mOutputSize.x, mOutputSize.y,
-                                              settingsFor(runner.technique(), otherSettings(id), ignored), {}, {}, 0);
-            glBindFramebuffer(GL_FRAMEBUFFER, 0);
-            run.airlight = std::move(out.airlight);
-            run.final = std::move(out.final);
-        } catch (const std::exception& e) {
-            run.failure = e.what();
-        }
-        for (auto& [vid, v] : mViews)
-            if (v.display.difference != DifferenceMode::Off && v.display.against == id) refreshView(v);
-    }
-}
-
-std::string GuiApp::sceneOnlyKey() const {
-    char buf[128];
-    std::snprintf(buf, sizeof buf, "%016llx %.17g %.17g %.17g",
-                  static_cast<unsigned long long>(mGeometryHash), mScene.medium.sigma_s,
-                  mScene.medium.sigma_a, mScene.medium.g);
-    std::string key = buf;
-    for (const auto& l : mScene.lights)
-        for (const double x : {l.position.x, l.position.y, l.position.z, l.direction.x, l.direction.y,
-                               l.direction.z, l.intensity, l.colour.x, l.colour.y, l.colour.z}) {
-            key += ' ';  // appended apart: GCC 12 at -O3 warns (-Wrestrict) on " " + a temporary here
-            key += format("%.17g", x);
-        }
-    return key;
+    for (const std::string& id : mDifferenceRuns.runDue([this](const std::string& id) { return differenceRequest(id); }))
+        refreshDifferenceViews(id);
 }
 
 void GuiApp::pollOtherWorker() {
-    if (!mOtherWorker) return;
-    std::optional<CpuResult> result = mOtherWorker->take();
-    if (!result || (result->error.empty() && result->pass < result->passCount)) return;
-    auto it = mOtherRuns.find(result->technique);
-    if (it == mOtherRuns.end() || it->second.pending.empty()) return;
-    OtherRun& run = it->second;
-    run.key = std::exchange(run.pending, std::string());
-    run.failure = result->error;
-    run.airlight = std::move(result->output.airlight);
-    run.final = std::move(result->output.final);
-    for (auto& [id, v] : mViews)
-        if (v.display.difference != DifferenceMode::Off && v.display.against == result->technique) refreshView(v);
+    if (const std::optional<std::string> id = mDifferenceRuns.poll()) refreshDifferenceViews(*id);
 }
 
-bool GuiApp::otherPending() const {
-    for (const auto& [id, run] : mOtherRuns)
-        if (!run.pending.empty()) return true;
-    return false;
+void GuiApp::refreshDifferenceViews(const std::string& against) {
+    for (auto& [vid, v] : mViews)
+        if (v.display.difference != DifferenceMode::Off && v.display.against == against) refreshView(v);
 }
 
 void GuiApp::refreshView(ViewState& v) {
