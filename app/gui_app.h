@@ -261,8 +261,10 @@ private:
     // The window's request for `id` now (its settings completed by its technique where it can be made).
     DifferenceRequest differenceRequest(const std::string& id);
 
-    // The settings `id` runs with on the other side: the session's for it, then the command line's.
+    // The settings `id` runs with on the other side: the session's for it, then the command line's;
+    // completed: over its technique's defaults (throws for an id that makes no technique).
     viz::Settings otherSettings(const std::string& id) const;
+    viz::Settings completedOtherSettings(const std::string& id);
 
     // The GPU runs queued by otherRun (this blocks the thread; the frame before said "computing it..."),
     // and the worker's finished pass: each refreshes the views that compare against its technique.

@@ -200,8 +200,7 @@ const DifferenceRuns::Run* GuiApp::otherRun(const std::string& id) {
 DifferenceRequest GuiApp::differenceRequest(const std::string& id) {
     DifferenceRequest r{&mScene, mGeometryHash, mController.camera(), mOutputSize, otherSettings(id)};
     try {
-        std::string ignored;
-        r.settings = settingsFor(otherRunner(id).technique(), r.settings, ignored);
+        r.settings = completedOtherSettings(id);
     } catch (const std::exception&) {
         // An id that makes no technique: DifferenceRuns::get records the failure.
     }
@@ -212,6 +211,11 @@ viz::Settings GuiApp::otherSettings(const std::string& id) const {
     viz::Settings given = mSession.settings.count(id) ? mSession.settings.at(id) : viz::Settings{};
     for (const auto& [name, value] : mOptions.settings) given[name] = value;
     return given;
+}
+
+viz::Settings GuiApp::completedOtherSettings(const std::string& id) {
+    std::string ignored;
+    return settingsFor(otherRunner(id).technique(), otherSettings(id), ignored);
 }
 
 void GuiApp::runDueGpuOthers() {

@@ -34,9 +34,7 @@ ComparisonGrid::RunTechnique GuiApp::comparisonRunner() {
     return [this](const std::string& id, const viz::scene::Scene& scene, glm::ivec2 size, int frame) {
         RunScheduler& runner = otherRunner(id);
         runner.invalidate();  // the grid times whole runs: nothing carried over from the last one
-        std::string ignored;
-        viz::FrameOutput out = runner.run(scene, size.x, size.y, settingsFor(runner.technique(), otherSettings(id), ignored),
-                                          {}, {}, frame);
+        viz::FrameOutput out = runner.run(scene, size.x, size.y, completedOtherSettings(id), {}, {}, frame);
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         return out;
     };
