@@ -35,6 +35,7 @@ std::vector<TimelineSegment> timelineSegments(const viz::Technique& technique, c
         s.stage = k;
         s.label = stages[std::size_t(k)].label;
         s.substeps = substepCountOf(technique, k, settings, runCounts);
+        s.upTo = stages[std::size_t(k)].substepsPerRun && s.substeps > 1 && !runCounts.count(k);
         weight.push_back(s.substeps > 1 ? 2.0f : 1.0f);
         total += weight.back();
         segments.push_back(s);
@@ -90,7 +91,7 @@ void drawTimeline(viz::ui::DrawList& background, viz::ui::DrawList& text, const 
             }
         }
         std::string label = std::to_string(s.stage + 1) + " " + s.label;
-        if (s.substeps > 1) label += " (" + std::to_string(s.substeps) + ")";
+        if (s.substeps > 1) label += (s.upTo ? " (up to " : " (") + std::to_string(s.substeps) + ")";
         text.textClipped({box.min.x + 3.0f * scale, r.min.y + 1.0f * scale}, label, kLabel, box.max.x - 2.0f * scale);
     }
     const float x = timelineMarkX(segments, cursor);

@@ -16,6 +16,7 @@ struct TimelineSegment {
     int stage = 0;
     std::string label;
     int substeps = 0;       // 0: the stage has none
+    bool upTo = false;      // `substeps` is the listed maximum; the run will count its own
     float x0 = 0.0f, x1 = 0.0f;
 };
 

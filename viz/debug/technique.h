@@ -41,6 +41,10 @@ struct StageInfo {
     // writes), so a run resuming after it (FrameInput::resumeAtStage) republishes them instead of running
     // it (debug/stage_runner.h). A stage that leaves its results in locals of run() cannot.
     bool keepsOutputs = false;
+    // The listed sub-steps are a maximum: a run counts its own (FrameOutput::substepCounts), which can be
+    // fewer (minmax's walk has as many nodes as the picked ray visits). Until the stage has run, a
+    // timeline says "up to" the listed count.
+    bool substepsPerRun = false;
 };
 
 // One point of a technique's quality sweep (`airlight report`): a short label and the settings that

@@ -84,6 +84,7 @@ MinmaxTechnique::MinmaxTechnique()
     };
     // The rectified maps and the trees stay in LightWork between runs.
     mStages[kRectifyIndex].keepsOutputs = mStages[kMipmapIndex].keepsOutputs = true;
+    mStages[kTraverseIndex].substepsPerRun = true;  // the picked ray's walk sets the count
     checkStageOrder(mStages, kStageOrder);
 }
 
