@@ -49,6 +49,8 @@
 #include "render_job.h"
 #include "run_scheduler.h"
 #include "screen_map.h"
+#include "sidebar.h"
+#include "status_bar.h"
 #include "step_timeline.h"
 #include "window_animation.h"
 #include "scene/scene_source.h"
@@ -182,6 +184,8 @@ private:
     // The cursor's sub-step position: {at, count} (1-based; {count, count} when the stage runs whole,
     // {0, 0} for a stage without sub-steps).
     std::pair<int, int> substepState() const;
+    // What the status lines say (status_bar.h), with the shown timing's clock named.
+    StatusFacts statusFacts(const viz::Timing& timing) const;
 
     // Whether the frame is the complete algorithm: the last stage, whole, and no sub-step parameter a
     // lesson (or --set) left cutting an earlier stage short.

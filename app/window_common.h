@@ -101,23 +101,6 @@ inline std::string firstLine(const std::string& text) { return viz::firstLine(te
 
 using viz::format;
 
-inline std::string timingLine(const viz::Timing& timing) {
-    if (timing.stages.empty()) return "timings: (none yet)";
-    std::string line = "timings:";
-    for (const auto& st : timing.stages) line += "  " + st.stage + " " + format("%.1f ms", st.milliseconds);
-    line += "  | total " + format("%.1f ms", timing.totalMilliseconds()) + "  (clock: " + timing.clock + ")";
-    return line;
-}
-
-inline std::string skippedLine(const viz::Plan& plan) {
-    std::string line;
-    for (const auto& st : plan.stages) {
-        if (st.runs) continue;
-        line += (line.empty() ? "skipped: " : ";  ") + st.stage + (st.why.empty() ? "" : " (" + st.why + ")");
-    }
-    return line.empty() ? "skipped: none" : line;
-}
-
 // `text` shortened in the middle ("start ... end") to fit `width` pixels in `font`; unchanged when it fits.
 inline std::string elideMiddle(const viz::ui::FontAtlas& font, const std::string& text, float width) {
     if (font.measure(text) <= width) return text;

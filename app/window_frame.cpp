@@ -33,42 +33,9 @@ void GuiApp::draw() {
 
     // Status lines at the top.
     const CameraController::Mode mode = mController.mode();
-    std::string head = "scene: " + sceneTitle() + "   technique: " + t.id() + " - " + t.description() +
-                       "   render " + std::to_string(mOptions.width) + "x" + std::to_string(mOptions.height);
-    if (mHaveOutput && mReduced) head += "   (interactive: " + std::to_string(mOutputSize.x) + "x" + std::to_string(mOutputSize.y) + ")";
-    if (mHaveOutput && mPassCount > 1) {
-        head += "   (showing pass " + std::to_string(mPass) + "/" + std::to_string(mPassCount) + ": " +
-                std::to_string(mOutputSize.x) + "x" + std::to_string(mOutputSize.y) + ")";
-    }
-    {
-        const auto& stages = t.stages();
-        const int shown = stageShown();
-        head += "   stage " + std::to_string(shown + 1) + "/" + std::to_string(stages.size()) + " " +
-                stages[std::size_t(shown)].id;
-        const auto [at, count] = substepState();
-        if (count > 0) head += " sub-step " + std::to_string(at) + "/" + std::to_string(count);
-        head += " (S, D, Home, End)";
-        if (mHaveOutput && mOutput.firstStageRun > 0)
-            head += "   re-ran from stage " + std::to_string(mOutput.firstStageRun + 1) + " (earlier ones kept)";
-    }
-    mBackground->rect({{0.0f, 0.0f}, {float(fb.x), 3.0f * line + 2.0f * pad}}, kPanel);
-    dl.textClipped({pad, pad}, head, kText, float(fb.x) - pad);
     viz::Timing timing = mOutput.timing;
     if (timing.clock.empty()) timing.clock = t.needsGl() ? mClockName : "steady_clock";
-    dl.textClipped({pad, pad + line}, mHaveOutput ? timingLine(timing) : "timings: (no run yet)", kDim, float(fb.x) - pad);
-    std::string third = skippedLine(shownPlan());
-    glm::vec4 thirdColour = kDim;
-    if (!mError.empty() || !mSettingsError.empty()) {
-        third = "error: " + firstLine(mError.empty() ? mSettingsError + " (using defaults)" : mError);
-        thirdColour = kError;
-    } else if (!mNotice.empty()) {
-        third = mNotice + "   |   " + third;
-    } else if (mHaveOutput && !mOutput.notes.empty()) {
-        third = "note: " + mOutput.notes.front() + "   |   " + third;
-        thirdColour = kAccent;
-    }
-    dl.textClipped({pad, pad + 2.0f * line}, third, thirdColour, float(fb.x) - pad);
-    const float top = 3.0f * line + 3.0f * pad;
+    const float top = drawStatusLines(*mBackground, dl, statusLines(statusFacts(timing)), float(fb.x), pad, line);
 
     // Help lines at the bottom, from the key table.
     const bool flying = mode == CameraController::Mode::Fly;
@@ -84,34 +51,22 @@ void GuiApp::draw() {
     dl.textClipped({pad, bottom}, help, kDim, float(fb.x) - pad);
     dl.textClipped({pad, bottom + line}, helpLine(HelpLine::Views, flying), kDim, float(fb.x) - pad);
 
-    // Sidebar: techniques, then views.
-    float sidebarWidth = kSidebarMin * s;
-    for (const std::string& id : mIds) sidebarWidth = std::max(sidebarWidth, mFont->measure(id) + 4.0f * pad);
-    const Rect sidebar{{0.0f, top - pad}, {sidebarWidth, bottom - pad}};
-    mBackground->rect(sidebar, kPanel);
-    float y = top;
-    dl.text({pad, y}, "Techniques (Tab)", kAccent);
-    y += line + 2.0f * s;
-    for (int i = 0; i < int(mIds.size()); ++i) {
-        const std::string name = (i < 9 ? std::to_string(i + 1) + "  " : "   ") + mIds[std::size_t(i)];
-        const Rect item{{pad * 0.5f, y}, {sidebarWidth - pad * 0.5f, y + line + 2.0f * s}};
-        listItem(item, name, i == mCurrent, [this, i] { selectTechnique(i); });
-        mScreen.place("technique:" + mIds[std::size_t(i)], item);
-        y += line + 4.0f * s;
-    }
-    y += line;
-    dl.text({pad, y}, "Views ([ ])", kAccent);
-    y += line + 2.0f * s;
-    if (mHaveOutput) {
-        // Clicking an entry shows it in the focused view.
-        const int shown = focusedView().shown;
-        for (int i = 0; i < contentCount() && y + line < sidebar.max.y; ++i) {
-            const std::string name = contentLabel(i);
-            const Rect item{{pad * 0.5f, y}, {sidebarWidth - pad * 0.5f, y + line + 2.0f * s}};
-            listItem(item, name, i == shown, [this, i] { selectView(i); });
-            mScreen.place("view:" + name, item);
-            y += line + 4.0f * s;
-        }
+    // Sidebar: techniques, then views (sidebar.h).
+    std::vector<std::string> views;
+    if (mHaveOutput)
+        for (int i = 0; i < contentCount(); ++i) views.push_back(contentLabel(i));
+    const SidebarLayout side =
+        layoutSidebar(mIds, mCurrent, views, mHaveOutput ? focusedView().shown : -1,
+                      {top, bottom, pad, line, s, kSidebarMin * s, [this](const std::string& x) { return mFont->measure(x); }});
+    const float sidebarWidth = side.panel.max.x;
+    mBackground->rect(side.panel, kPanel);
+    for (const SidebarHeading& h : side.headings) dl.text(h.at, h.text, kAccent);
+    for (const SidebarEntry& e : side.entries) {
+        const int i = e.index;
+        // Clicking a view's entry shows it in the focused view.
+        if (e.list == SidebarEntry::List::Techniques) listItem(e.rect, e.text, e.selected, [this, i] { selectTechnique(i); });
+        else listItem(e.rect, e.text, e.selected, [this, i] { selectView(i); });
+        mScreen.place(e.screenName, e.rect);
     }
 
     // The view grid on top; under it the ray inspector or the stage times (left) and the widgets (right);
@@ -169,6 +124,32 @@ void GuiApp::draw() {
         mImageDisplay->draw(*d.pane, d.rect, fb, d.mapping, d.view ? *d.view : viz::ui::ImageViewTransform{});
     mTextRenderer->draw(dl, fb);
     mTextRenderer->draw(mUi->drawList(), fb);
+}
+
+StatusFacts GuiApp::statusFacts(const viz::Timing& timing) const {
+    const viz::Technique& t = technique();
+    StatusFacts f;
+    f.scene = sceneTitle();
+    f.technique = t.id();
+    f.description = t.description();
+    f.renderSize = {mOptions.width, mOptions.height};
+    f.haveOutput = mHaveOutput;
+    f.reduced = mReduced;
+    f.outputSize = mOutputSize;
+    f.pass = mPass;
+    f.passCount = mPassCount;
+    f.stage = stageShown();
+    f.stageCount = int(t.stages().size());
+    f.stageId = t.stages()[std::size_t(f.stage)].id;
+    std::tie(f.substep, f.substepCount) = substepState();
+    f.firstStageRun = mHaveOutput ? mOutput.firstStageRun : 0;
+    f.timing = timing;
+    f.plan = shownPlan();
+    f.error = mError;
+    f.settingsError = mSettingsError;
+    f.notice = mNotice;
+    if (mHaveOutput && !mOutput.notes.empty()) f.note = mOutput.notes.front();
+    return f;
 }
 
 void GuiApp::beginWidgets(glm::ivec2 fb) {

@@ -1,0 +1,47 @@
+// The sidebar at the window's left edge: the techniques (Tab, 1-9) and the frame's views ([ ]), two
+// headed lists of entries. The layout is a plain function (tested); the window draws each entry as a
+// clickable list item and registers it for scripts under its screen name.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "ui/immediate.h"
+
+namespace airlight {
+
+struct SidebarEntry {
+    enum class List { Techniques, Views };
+    List list = List::Techniques;
+    int index = 0;            // into the list given
+    std::string text;         // as drawn ("1  reference")
+    std::string screenName;   // for scripts ("technique:reference", "view:Final image")
+    bool selected = false;
+    viz::ui::Rect rect;
+};
+
+struct SidebarHeading {
+    std::string text;
+    glm::vec2 at{0.0f};
+};
+
+struct SidebarLayout {
+    viz::ui::Rect panel;
+    std::vector<SidebarHeading> headings;
+    std::vector<SidebarEntry> entries;
+};
+
+struct SidebarMetrics {
+    float top = 0.0f, bottom = 0.0f;  // the panel's vertical extent (its first line starts at `top`)
+    float pad = 0.0f, line = 0.0f, scale = 1.0f;
+    float minWidth = 0.0f;
+    std::function<float(const std::string&)> measure;  // text width in pixels
+};
+
+// Techniques first, every one of them, numbered 1-9 for the digit keys; then as many views as fit above
+// the panel's bottom (none before the first run: `views` empty). Wide enough for every technique's name.
+SidebarLayout layoutSidebar(const std::vector<std::string>& techniques, int currentTechnique,
+                            const std::vector<std::string>& views, int shownView, const SidebarMetrics& m);
+
+}  // namespace airlight
