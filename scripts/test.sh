@@ -11,15 +11,14 @@ export VIZ_REQUIRE_DISPLAY="${VIZ_REQUIRE_DISPLAY:-1}"
 export VIZ_REQUIRE_BROWSER="${VIZ_REQUIRE_BROWSER:-1}"
 export LP_NUM_THREADS="${LP_NUM_THREADS:-2}"
 export AIRLIGHT_CACHE_DIR="${AIRLIGHT_CACHE_DIR:-$PWD/build/ci/cache}"
-# The scene code and the airlight kernel built with clang, ASan and UBSan (preset fuzz): the scene tests
-# (the loader's hardening and fuzz regressions among them) and the kernel's tests with leak checks, then
-# the fuzz target: the regressions and seeds replayed, and 60 s of fuzzing. (minmax's and vsv's CPU tests
-# pass there too, but they link the techniques' GL libraries: with them the job ended about 4.5 minutes
-# after the suite, which CI then waits for.) AIRLIGHT_SKIP_FUZZ=1 leaves it out (a quick local run).
+# The scene code and the CPU maths built with clang, ASan and UBSan (preset fuzz): the scene tests (the
+# loader's hardening and fuzz regressions among them), the airlight kernel's and minmax's and vsv's CPU
+# tests with leak checks, then the fuzz target: the regressions and seeds replayed, and 60 s of fuzzing.
+# AIRLIGHT_SKIP_FUZZ=1 leaves it out (a quick local run).
 fuzz() {
     cmake --preset fuzz >/dev/null &&
         cmake --build --preset fuzz -j "$1" &&
-        for t in viz_scene_tests viz_math_tests; do
+        for t in viz_scene_tests viz_math_tests viz_minmax_tests viz_vsv_tests; do
             ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
                 "build/fuzz/tests/$t" --gtest_brief=1 || return 1
         done &&
