@@ -86,11 +86,14 @@ float occluderBeta(float gamma, float stored) {
     return atan(stored * sin(gamma), uLightDistance - stored * cos(gamma));
 }
 
-int sliceRow(float alpha) {
-    int row = int(floor((alpha - uAlphaLo) / uAlphaSpacing + 0.5));
+// Row `row` of the rectified map, wrapped around the circle of slices (uWrap) or clamped to its ends.
+int wrapRow(int row) {
     if (uWrap) return ((row % uSlices) + uSlices) % uSlices;
     return clamp(row, 0, uSlices - 1);
 }
+// The slice position of angle alpha in rows (row k's slice at k); the nearest slice's row is sliceRow.
+float slicePosition(float alpha) { return (alpha - uAlphaLo) / uAlphaSpacing; }
+int sliceRow(float alpha) { return wrapRow(int(floor(slicePosition(alpha) + 0.5))); }
 
 float columnOf(float gamma) { return (gamma - MINMAX_GAMMA_LO) / columnWidth(); }
 float gammaOfColumn(float column) { return MINMAX_GAMMA_LO + column * columnWidth(); }

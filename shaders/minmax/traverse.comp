@@ -158,27 +158,52 @@ vec3 integrateRunAnalytic(GpuLight L, vec3 w, RayLightGeometry g, float beta, fl
 #ifdef INTEGRAND_SVD
 // Low-rank integrand (`integrand=svd`, low_rank.h): each lit run adds the difference of the prefix sums of
 // Gamma_i T at its ends (hardware linear filtering between the table's texels, which are coarser than the
-// columns); the sum is weighted by B_i(beta) / sin(beta) once at the end of the walk.
+// columns); the sum is weighted by B_i(beta) / sin(beta) once at the end of the walk. A spot's T changes
+// with alpha (its cone's edge, its cookie): with uBlendRows (slice_blend=linear) the sums are interpolated
+// between the tables of the two slices either side of the pixel's ray, gPrefixRow and gPrefixRow1 with
+// weight gPrefixBlend, instead of read from the nearest slice's alone (the paper), whose T is up to half a
+// slice off the ray's.
 layout(binding = kFirstFreeTextureUnit + 2) uniform sampler2DArray uPrefix;
 uniform int uRank;
 uniform int uPrefixTexels;
 uniform int uPrefixRows;
+uniform bool uBlendRows;
 uniform float uBetaLo;
 uniform float uBetaHi;
 // B_i at 64 beta samples (inclusive ends), rank-major, four to a vec4 (see prefix.comp).
 uniform vec4 uBetaBasis[8 * 16];
 float betaBasisAt(int j) { return uBetaBasis[j >> 2][j & 3]; }
 vec4 gAccumulated[6];
-int gPrefixRow = 0;
+int gPrefixRow = 0, gPrefixRow1 = 0;
+float gPrefixBlend = 0.0;
+
+// The table rows a ray at angle alpha in slice row `row` reads.
+void selectPrefixRows(float alpha, int row) {
+    gPrefixRow = gPrefixRow1 = uPrefixRows == 1 ? 0 : row;
+    gPrefixBlend = 0.0;
+    if (uBlendRows && uPrefixRows > 1) {
+        float x = slicePosition(alpha);
+        float below = floor(x);
+        gPrefixRow = wrapRow(int(below));
+        gPrefixRow1 = wrapRow(int(below) + 1);
+        gPrefixBlend = x - below;
+    }
+}
+
+vec4 prefixDifference(float u0, float u1, int row, int layer) {
+    float v = (float(row) + 0.5) / float(uPrefixRows);
+    return texture(uPrefix, vec3(u1, v, float(layer))) - texture(uPrefix, vec3(u0, v, float(layer)));
+}
 
 void accumulateRun(float c0, float c1) {
-    float v = (float(gPrefixRow) + 0.5) / float(uPrefixRows);
     float scale = float(uPrefixTexels) / float(uColumns);
     float u0 = (c0 * scale + 0.5) / float(uPrefixTexels + 1);
     float u1 = (c1 * scale + 0.5) / float(uPrefixTexels + 1);
     int layers = (3 * uRank + 3) / 4;
     for (int layer = 0; layer < layers; ++layer) {
-        gAccumulated[layer] += texture(uPrefix, vec3(u1, v, float(layer))) - texture(uPrefix, vec3(u0, v, float(layer)));
+        vec4 sum = prefixDifference(u0, u1, gPrefixRow, layer);
+        if (gPrefixBlend > 0.0) sum = mix(sum, prefixDifference(u0, u1, gPrefixRow1, layer), gPrefixBlend);
+        gAccumulated[layer] += sum;
     }
 }
 
@@ -243,7 +268,8 @@ void main() {
         sum = marchGamma(L, w, betaOf(w), d);
     } else {
         float beta = betaOf(w);
-        int row = sliceRow(alphaOf(w));
+        float alpha = alphaOf(w);
+        int row = sliceRow(alpha);
         selectRow(row);
         float cEnd = max(columnOf(gammaAlongRay(beta, d)), 0.0);
         float end = min(cEnd, float(uColumns));
@@ -251,7 +277,7 @@ void main() {
         if (uWriteCoords) imageStore(uRayCoords, texel, vec4(float(row), beta, cEnd, d));
 #ifdef INTEGRAND_SVD
         for (int layer = 0; layer < 6; ++layer) gAccumulated[layer] = vec4(0.0);
-        gPrefixRow = uPrefixRows == 1 ? 0 : row;
+        selectPrefixRows(alpha, row);
 #endif
         float runBegin = -1.0, runEnd = -1.0;
         if (uLinear) {

@@ -35,6 +35,11 @@ const ParamTable<MinmaxSettings>& minmaxParams() {
                                   "chunk sums scanned in log2 passes in shared memory (Chen et al. 2011 Sec. 3.4); "
                                   "auto: sequential unless a row is too long for llvmpipe's loop limit",
                                   2, 0, 2, true, {"sequential", "log2", "auto"}})
+            .add(&S::blendRows, {"slice_blend", "integrand=svd, spot lights: where a ray reads its slice's "
+                                 "prefix sums of Gamma_i T; nearest: the nearest slice's (the paper), whose cone "
+                                 "edge and cookie are up to half a slice off the ray's; linear: interpolated "
+                                 "between the two slices either side of the ray", 1, 0, 1, true,
+                                 {"nearest", "linear"}})
             .add(&S::linear, {"traversal", "tree: min-max mipmap walk (Figure 5); linear: scan every texel of the row",
                               0, 0, 1, true, {"tree", "linear"}})
             .add(&S::marchPoints, {"point_lights", "epipolar: point lights rectified from their cube maps; march: "
@@ -77,7 +82,7 @@ MinmaxTechnique::MinmaxTechnique()
         {kStageMipmap, "Min-max mipmap", "per row of S: a 1D min-max tree, one pass per level",
          {"mip_levels"}, {kTree, kPyramid}, 1, "mip_levels"},
         {kStageTraverse, "Traverse", "per pixel: walk the slice's tree, integrate the lit segments",
-         {"integrand", "rank", "traversal", "point_lights", "spot_pieces", "epipole_radius", "march_samples",
+         {"integrand", "rank", "slice_blend", "traversal", "point_lights", "spot_pieces", "epipole_radius", "march_samples",
           "pick_x", "pick_y", "trace_steps", "force_features"},
          {kAirlight, kVisited, kNearMask, kRayCoords, kTrace}, 1, "trace_steps"},
         render::SceneViewPasses::composeStage("minmax"),

@@ -243,6 +243,8 @@ void MinmaxTechnique::traverse(const gl::Program& program, const scene::Scene& s
             program.set("uRank", lr.rank);
             program.set("uPrefixTexels", work->prefix.size().x - 1);
             program.set("uPrefixRows", work->prefixRows);
+            // A point light's rows each span their own gamma range: their tables' texels do not line up.
+            program.set("uBlendRows", s.blendRows && !work->point() && work->prefixRows > 1);
             program.set("uBetaLo", float(lr.betaLo));
             program.set("uBetaHi", float(lr.betaHi));
             VIZ_CHECK(lr.basisB.size() % 4 == 0, "minmax: the beta basis is packed four floats to a vec4");

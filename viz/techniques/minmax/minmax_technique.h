@@ -112,6 +112,7 @@ struct MinmaxSettings {
     Integrand integrand = Integrand::Auto;
     int rank = 0, textureColumns = 0;
     PrefixScan prefixScan = PrefixScan::Auto;  // prefix_sums
+    bool blendRows = true;                     // slice_blend=linear
     bool linear = false;       // traversal=linear
     bool marchPoints = false;  // point_lights=march
     int spotPieces = 0;
@@ -144,9 +145,10 @@ public:
     // 128 spot pieces, 1024 near-epipole samples; the default integrand=auto (analytic on the cases whose
     // integrand the SVD's tables do not hold: tests/gl/minmax_integrand_test.cpp). Keeps the 21 cases at
     // 33x25 within seconds.
-    // Chen et al. 2011: the rank-4 SVD integrand with prefix sums, one slice per half pixel (k = 1).
+    // Chen et al. 2011: the rank-4 SVD integrand with prefix sums, one slice per half pixel (k = 1), each
+    // ray reading its nearest slice's table.
     Settings paperSettings() const override {
-        return {{"integrand", 1.0}, {"rank", 4.0}, {"slice_oversampling", 1.0}};
+        return {{"integrand", 1.0}, {"rank", 4.0}, {"slice_oversampling", 1.0}, {"slice_blend", 0.0}};
     }
     Settings stiffSettings() const override {
         return {{"slice_oversampling", 4.0}, {"spot_pieces", 128.0}, {"march_samples", 1024.0}};
