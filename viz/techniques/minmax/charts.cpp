@@ -36,15 +36,27 @@ Image rectifiedView(const std::function<std::vector<float>(int)>& readRow, int c
     return img;
 }
 
+int pyramidBandRows(int width, int levels) { return std::max(4, 2 * (width / (6 * std::max(levels, 1)))); }
+
 Image pyramidView(const std::vector<glm::vec2>& tree, int levelsBuilt) {
     const int n = int(tree.size() / 2);
     const int levels = std::bit_width(unsigned(n));  // log2(n) + 1
-    const int band = 4;
-    Image img(n, levels * band, 3);
+    const int width = std::min(n, kChartWidth);
+    const int band = pyramidBandRows(width, levels);
+    Image img(width, levels * band, 3);
     for (int l = 0; l < levels; ++l) {
         const bool built = l >= levels - 1 - levelsBuilt;  // the leaves (l = levels - 1) always are
-        for (int x = 0; x < n; ++x) {
-            const glm::vec2 mm = tree[std::size_t((1 << l) + x / (n >> l))];
+        const long long count = 1LL << l;                  // nodes on level l, at tree[count .. 2 count)
+        for (int x = 0; x < width; ++x) {
+            // The nodes under pixel x: one (a level narrower than the image), or the pixel's share of a
+            // wider level, merged as the level above would merge them (min of mins, max of maxes).
+            const long long first = x * count / width;
+            const long long last = std::max(first, (x + 1) * count / width - 1);
+            glm::vec2 mm = tree[std::size_t(count + first)];
+            for (long long k = first + 1; k <= last; ++k) {
+                const glm::vec2 node = tree[std::size_t(count + k)];
+                mm = {std::min(mm.x, node.x), std::max(mm.y, node.y)};
+            }
             for (int b = 0; b < band; ++b) {
                 const float grey = greyOfBeta(b < band / 2 ? mm.x : mm.y);
                 setRgb(img, x, l * band + b, built ? glm::vec3(grey) : glm::vec3(0.0f, 0.0f, 0.5f));
@@ -57,7 +69,9 @@ Image pyramidView(const std::vector<glm::vec2>& tree, int levelsBuilt) {
 Image traceView(const std::vector<glm::vec2>& tree, float beta, float cEnd, int steps) {
     const int n = int(tree.size() / 2);
     const int levels = std::bit_width(unsigned(n));
-    const int plotH = 128, band = 3;
+    // The heightfield and the node bands grow with the row, so that a long row is not a thin strip: about
+    // 3:1 for 1024 columns (plot 170 px, bands of 15).
+    const int plotH = std::clamp(n / 6, 128, 256), band = std::max(3, plotH / levels);
     Image img(n, plotH + levels * band, 3);
     // Vertical range: the row's finite S values and the ray's beta, padded by a tenth.
     float lo = beta, hi = beta;

@@ -22,13 +22,20 @@ namespace viz::minmax {
 // readRow(r) returns row r of S (columns floats).
 Image rectifiedView(const std::function<std::vector<float>(int)>& readRow, int columns, int rows, int pickedRow);
 
-// The 2n nodes of one row as a pyramid: level 0 (root) at the top, bands of 4 rows (min over max, beta / pi
-// as grey); levels above the last `levelsBuilt` passes (plus the leaves) in blue.
+// The widest chart of a row's columns, in pixels; a wider row's pixels each stand for several columns.
+inline constexpr int kChartWidth = 1024;
+
+// The 2n nodes of one row as a pyramid: level 0 (root) at the top, one band per level (min over max, beta /
+// pi as grey); levels above the last `levelsBuilt` passes (plus the leaves) in blue. At most kChartWidth
+// wide (a pixel over several nodes of a level shows their min and max), and its bands tall enough for
+// about a 3:1 image (pyramidBandRows), so that a 2048-column row is not a strip a few pixels high.
 Image pyramidView(const std::vector<glm::vec2>& tree, int levelsBuilt);
+// Rows per band of the pyramid `width` pixels wide with `levels` levels: even, at least 4.
+int pyramidBandRows(int width, int levels);
 
 // The ray at height beta ending at column cEnd against the row's heightfield (grey where beta < S), and
 // below one band per level with the nodes of the walk (minmax_tree.h traverse), the first `steps` (0: all):
-// green lit, red shadowed, grey mixed.
+// green lit, red shadowed, grey mixed. One pixel per column; the plot and the bands taller for a longer row.
 Image traceView(const std::vector<glm::vec2>& tree, float beta, float cEnd, int steps);
 // The nodes that walk visits in all (what traceView draws with steps = 0; steps >= it draws them all).
 int walkLength(const std::vector<glm::vec2>& tree, float beta, float cEnd);
