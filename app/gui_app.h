@@ -57,6 +57,7 @@
 #include "scene/stiff_scenes.h"
 #include "scene/builtin_scenes.h"
 #include "session_state.h"
+#include "image_fit.h"
 #include "light_gizmo.h"
 #include "view_layout.h"
 #include "view_state.h"

@@ -6,14 +6,7 @@ namespace airlight {
 
 Rect GuiApp::fitImage(const Rect& area, glm::ivec2 imageSize) const {
     if (imageSize.x <= 0 || imageSize.y <= 0) imageSize = {mOptions.width, mOptions.height};
-    const float aspect = float(imageSize.x) / float(std::max(1, imageSize.y));
-    float w = area.size().x, h = w / aspect;
-    if (h > area.size().y) {
-        h = area.size().y;
-        w = h * aspect;
-    }
-    const float x = area.min.x + 0.5f * (area.size().x - w);
-    return {{x, area.min.y}, {x + w, area.min.y + h}};
+    return fitImageRect(area, imageSize);
 }
 
 void GuiApp::listItem(const Rect& r, const std::string& text, bool selected, std::function<void()> onClick) {
