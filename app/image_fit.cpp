@@ -6,7 +6,9 @@ namespace airlight {
 
 float displayAspect(glm::ivec2 size) {
     const float aspect = float(std::max(1, size.x)) / float(std::max(1, size.y));
-    return size.y <= kStripMaxRows ? std::min(aspect, kMaxStripAspect) : aspect;
+    if (size.y <= kStripMaxRows) return std::min(aspect, kMaxStripAspect);
+    if (size.x <= kStripMaxRows) return std::max(aspect, 1.0f / kMaxStripAspect);
+    return aspect;
 }
 
 viz::ui::Rect fitImageRect(const viz::ui::Rect& area, glm::ivec2 imageSize) {

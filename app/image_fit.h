@@ -1,6 +1,7 @@
 // Where a view's image goes in its area: as large as fits, centred across, at its own aspect, except a
 // data strip (a table of a few rows, such as a picked ray's 128 bits before and after a scan, or one value
-// per VPL), which is stretched to at most kMaxStripAspect:1 so that its rows can be seen and pointed at.
+// per VPL; or of a few columns, such as slices' planes along the picked ray), which is stretched to at most
+// kMaxStripAspect:1 (or 1:kMaxStripAspect) so that its rows or columns can be seen and pointed at.
 #pragma once
 
 #include <glm/glm.hpp>
@@ -10,7 +11,7 @@
 namespace airlight {
 
 inline constexpr float kMaxStripAspect = 8.0f;
-inline constexpr int kStripMaxRows = 16;  // an image this short and wider than kMaxStripAspect is a strip
+inline constexpr int kStripMaxRows = 16;  // an image this short (or narrow) and longer than kMaxStripAspect: a strip
 
 // Width / height the image is drawn at.
 float displayAspect(glm::ivec2 imageSize);

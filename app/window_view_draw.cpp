@@ -203,10 +203,13 @@ void GuiApp::drawView(int id, ViewState& v) {
     std::string early = why.empty() ? why : "   [" + why + "]";
     if (!v.standIn.empty()) early += "   [" + v.standIn + "]";
     const SpecialCounts& n = v.counts;
+    // Negative values are a warning where the view would mark them (radiance, or asked for): in data such
+    // as a plane's signed distance they are values, as the legend under the image treats them.
+    const int negative = resolveMapping(v.pane, v.display, mExposure, v.measured).markNegative ? n.negative : 0;
     std::string counts;
-    if (n.nan + n.inf + n.negative > 0) {
+    if (n.nan + n.inf + negative > 0) {
         counts = " ";
-        if (n.negative) counts += " " + std::to_string(n.negative) + " negative";
+        if (negative) counts += " " + std::to_string(negative) + " negative";
         if (n.nan) counts += " " + std::to_string(n.nan) + " NaN";
         if (n.inf) counts += " " + std::to_string(n.inf) + " Inf";
         counts += " px";

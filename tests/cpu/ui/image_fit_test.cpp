@@ -1,5 +1,6 @@
 // A view's image rectangle (app/image_fit.h): pictures keep their aspect and fill the area's width or
-// height; a data strip (a few rows, much wider than tall) is stretched to at most 8:1.
+// height; a data strip (a few rows much wider than tall, or a few columns much taller than wide) is
+// stretched to at most 8:1 (1:8).
 #include <gtest/gtest.h>
 
 #include "image_fit.h"
@@ -22,7 +23,7 @@ TEST(ImageFit, PicturesKeepTheirAspectAndFillTheArea) {
     EXPECT_FLOAT_EQ(line.size().y, 1000.0f * 17.0f / 2048.0f);
 }
 
-TEST(ImageFit, AStripOfAFewRowsIsStretchedToEightToOne) {
+TEST(ImageFit, AStripOfAFewRowsOrColumnsIsStretchedToEightToOne) {
     const viz::ui::Rect column = fitImageRect(kArea, {128, 2});  // a picked ray's bits before and after
     EXPECT_FLOAT_EQ(column.size().x, 1000.0f);
     EXPECT_FLOAT_EQ(column.size().y, 125.0f);
@@ -31,6 +32,11 @@ TEST(ImageFit, AStripOfAFewRowsIsStretchedToEightToOne) {
     const viz::ui::Rect narrow = fitImageRect(kArea, {12, 2});  // 6:1 already: as is
     EXPECT_FLOAT_EQ(narrow.size().x / narrow.size().y, 6.0f);
     EXPECT_FLOAT_EQ(displayAspect({0, 0}), 1.0f) << "an empty image does not divide by zero";
+    // A few columns, many rows (slices' planes along the picked ray: 6 x 128): 1:8, height-limited.
+    const viz::ui::Rect table = fitImageRect(kArea, {6, 128});
+    EXPECT_FLOAT_EQ(table.size().y, 400.0f);
+    EXPECT_FLOAT_EQ(table.size().x, 50.0f);
+    EXPECT_FLOAT_EQ(displayAspect({17, 400}), 17.0f / 400.0f) << "more than 16 columns: a picture";
 }
 
 }  // namespace
