@@ -137,6 +137,13 @@ std::vector<StiffCase> makeCases() {
         "colonnade", [](Scene& s) {
             const double e = 2.0 * 3.14159265358979323846 / 180.0;
             s.lights[0].direction = glm::dvec3(-std::cos(e), -std::sin(e), 0.0);
+            // colonnade's roof is a slab; this case is about a one-sided ceiling: one quad, facing down.
+            for (Mesh& m : s.meshes) {
+                if (m.name != "roof") continue;
+                MeshBuilder ceiling("roof", m.material);
+                ceiling.quad({-10, 6, -6.4}, {10, 6, -6.4}, {10, 6, 6}, {-10, 6, 6});
+                m = ceiling.take();
+            }
         });
 
     // ---- where the camera is ----
