@@ -1,7 +1,7 @@
 #include "status_bar.h"
 
-#include "core/text.h"
 #include "ui/theme.h"
+#include "window_common.h"
 
 namespace airlight {
 
@@ -55,8 +55,7 @@ std::array<StatusLine, 3> statusLines(const StatusFacts& f) {
     // the skipped stages (which an error replaces: the plan shown is not this run's).
     StatusLine third{skippedLine(f.plan), StatusTone::Dim};
     if (!f.error.empty() || !f.settingsError.empty()) {
-        third = {"error: " + viz::firstLine(f.error.empty() ? f.settingsError + " (using defaults)" : f.error, "  (...)"),
-                 StatusTone::Error};
+        third = {"error: " + firstLine(f.error.empty() ? f.settingsError + " (using defaults)" : f.error), StatusTone::Error};
     } else if (!f.notice.empty()) {
         third.text = f.notice + "   |   " + third.text;
     } else if (f.haveOutput && !f.note.empty()) {

@@ -1,5 +1,5 @@
 // The window's shared vocabulary: its palette and sizes, and the small helpers its parts share (settings
-// completed with defaults, status-line text, the orbit distance of a scene, GLFW keys the widgets take).
+// completed with defaults, a message's first line, the orbit distance of a scene, GLFW keys the widgets take).
 #pragma once
 
 #include <chrono>
