@@ -52,7 +52,7 @@ else
     suite -E '^Soak\.' || status=$?
     fuzz_status=0
     wait "$fuzz_pid" || fuzz_status=$?
-    echo "---- preset fuzz (scene and kernel tests under ASan and UBSan, gltf_fuzz), beside the suite ----"
+    echo "---- preset fuzz (scene, kernel, minmax and vsv CPU tests under ASan and UBSan, gltf_fuzz), beside the suite ----"
     cat build/fuzz-run.log
     if [ "$fuzz_status" != 0 ]; then
         echo "preset fuzz failed (exit $fuzz_status)"
