@@ -204,6 +204,18 @@ std::string contextName(KeyContext c) {
     return "";
 }
 
+// The `index`-th key named in back quotes in a binding's label ("`S` / `Shift+S`": 0 "S", 1 "Shift+S").
+std::string labelKey(const std::string& label, int index) {
+    std::size_t at = 0;
+    for (int i = 0;; ++i) {
+        const std::size_t open = label.find('`', at);
+        const std::size_t close = open == std::string::npos ? open : label.find('`', open + 1);
+        if (close == std::string::npos) return "";
+        if (i == index) return label.substr(open + 1, close - open - 1);
+        at = close + 1;
+    }
+}
+
 }  // namespace
 
 const std::vector<KeyBinding>& keyBindings() {
@@ -249,6 +261,22 @@ std::string helpLine(HelpLine line, bool fly) {
         if (b.line != line || b.brief.empty() || b.context == KeyContext::Lesson || !applies(b.context, state)) continue;
         if (!out.empty()) out += "   ";
         out += b.brief;
+    }
+    return out;
+}
+
+std::string keyNames(const std::vector<Command>& commands, const KeyState& state) {
+    std::string out;
+    for (const Command c : commands) {
+        // The binding the key handler would dispatch to for one of the command's keys, where it applies.
+        for (const KeyBinding& b : keyBindings()) {
+            if ((b.command != c && b.shifted != c) || !applies(b.context, state) || b.keys.empty()) continue;
+            const int key = b.command == c || b.backKeys.empty() ? b.keys.front() : b.backKeys.front();
+            if (commandForKey(key, b.command != c && b.backKeys.empty(), false, state) != c) continue;
+            const std::string name = labelKey(b.label, b.command == c ? 0 : 1);
+            if (!name.empty()) out += (out.empty() ? "" : ", ") + name;
+            break;
+        }
     }
     return out;
 }

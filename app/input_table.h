@@ -73,6 +73,10 @@ Command commandForKey(int key, bool shift, bool repeat, const KeyState& state, i
 // The command for a typed character (exposure + and -), or Command::None.
 Command commandForChar(unsigned codepoint);
 
+// The keys of `commands` where the window is (`state`), as the key table names them, comma-separated:
+// {NextStage, NextSubstep, FirstSubstep, LastSubstep} gives "S, D, Home, End" with the orbit camera and
+// "Home, End" in fly mode (S and D drive the camera there). A command without a key there is left out.
+std::string keyNames(const std::vector<Command>& commands, const KeyState& state);
 // The help line at the bottom of the window (fly or orbit camera).
 std::string helpLine(HelpLine line, bool fly);
 // The README's key table (Markdown, one row per binding, with a context column).

@@ -1,5 +1,6 @@
 #include "status_bar.h"
 
+#include "input_table.h"
 #include "ui/theme.h"
 #include "window_common.h"
 
@@ -46,7 +47,10 @@ std::array<StatusLine, 3> statusLines(const StatusFacts& f) {
                 sizeText(f.outputSize) + ")";
     head += "   stage " + std::to_string(f.stage + 1) + "/" + std::to_string(f.stageCount) + " " + f.stageId;
     if (f.substepCount > 0) head += " sub-step " + std::to_string(f.substep) + "/" + std::to_string(f.substepCount);
-    head += " (S, D, Home, End)";
+    const std::string keys = keyNames({Command::NextStage, Command::NextSubstep, Command::FirstSubstep,
+                                        Command::LastSubstep},
+                                       KeyState{.fly = f.fly});
+    if (!keys.empty()) head += " (" + keys + ")";
     if (f.haveOutput && f.firstStageRun > 0)
         head += "   re-ran from stage " + std::to_string(f.firstStageRun + 1) + " (earlier ones kept)";
     if (!f.description.empty()) head += "   (" + f.technique + ": " + f.description + ")";

@@ -28,6 +28,7 @@ struct StatusFacts {
     int stage = 0, stageCount = 1;
     std::string stageId;
     int substep = 0, substepCount = 0;
+    bool fly = false;       // the camera is in fly mode: the stepping keys it takes are not offered
     int firstStageRun = 0;  // > 0: the run resumed there, the earlier stages kept
     viz::Timing timing;     // with its clock named
     viz::Plan plan;         // the plan shown: its skipped stages

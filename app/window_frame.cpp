@@ -142,6 +142,7 @@ StatusFacts GuiApp::statusFacts(const viz::Timing& timing) const {
     f.stageCount = int(t.stages().size());
     f.stageId = t.stages()[std::size_t(f.stage)].id;
     std::tie(f.substep, f.substepCount) = substepState();
+    f.fly = mController.mode() == CameraController::Mode::Fly;
     f.firstStageRun = mHaveOutput ? mOutput.firstStageRun : 0;
     f.timing = timing;
     f.plan = shownPlan();

@@ -119,5 +119,14 @@ TEST(InputTable, HelpLinesFollowTheCameraMode) {
     EXPECT_EQ(helpLine(HelpLine::Views, true).find("E export"), std::string::npos) << "E belongs to the fly camera";
 }
 
+TEST(InputTable, KeyNamesAreTheKeysThatDoItWhereTheWindowIs) {
+    const std::vector<Command> stepping = {Command::NextStage, Command::NextSubstep, Command::FirstSubstep,
+                                           Command::LastSubstep};
+    EXPECT_EQ(keyNames(stepping, KeyState{}), "S, D, Home, End");
+    EXPECT_EQ(keyNames(stepping, KeyState{.fly = true}), "Home, End") << "S and D drive the fly camera";
+    EXPECT_EQ(keyNames({Command::PrevStage, Command::PrevView, Command::PlayPause}, KeyState{}), "Shift+S, [, P");
+    EXPECT_EQ(keyNames({Command::FlyMove}, KeyState{}), "") << "no key moves the orbit camera that way";
+}
+
 }  // namespace
 }  // namespace airlight

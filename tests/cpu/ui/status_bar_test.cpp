@@ -39,6 +39,13 @@ TEST(StatusBar, BeforeAnyRunTheLinesSayWhereTheCursorIsAndNothingAboutARun) {
     EXPECT_EQ(lines[2].tone, StatusTone::Dim);
 }
 
+TEST(StatusBar, InFlyModeTheStepHintOffersOnlyTheKeysThatStillStep) {
+    StatusFacts f = frameFacts();
+    f.fly = true;
+    EXPECT_TRUE(contains(statusLines(f)[0].text, "stage 6/6 minmax.compose (Home, End)   "))
+        << statusLines(f)[0].text;
+}
+
 TEST(StatusBar, ARunAddsItsSizeItsPassItsResumeAndItsStageTimes) {
     StatusFacts f = frameFacts();
     f.haveOutput = true;
