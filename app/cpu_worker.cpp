@@ -14,23 +14,28 @@ namespace airlight {
 
 using Clock = std::chrono::steady_clock;
 
+CpuWorker::MakeTechnique CpuWorker::defaultMaker() {
+    return [](const std::string& id) { return viz::makeTechnique(id); };
+}
+
 void CpuWorker::loop(State& s) {
     for (;;) {
-        CpuRequest request;
+        Pending pending;
         {
             std::unique_lock lock(s.mutex);
             s.wake.wait(lock, [&] { return s.quit || s.request.has_value(); });
             if (s.quit) return;
-            request = std::move(*s.request);
+            pending = std::move(*s.request);
             s.request.reset();
             // Only this thread reads s.scene: it changes between requests, never under a running pass.
             if (s.nextScene) s.scene = std::move(*std::exchange(s.nextScene, std::nullopt));
         }
-        runPasses(s, request);
+        runPasses(s, pending);
     }
 }
 
-void CpuWorker::runPasses(State& s, const CpuRequest& request) {
+void CpuWorker::runPasses(State& s, const Pending& pending) {
+    const CpuRequest& request = pending.request;
     // Passes at 1/4, 1/2 and full resolution, skipping ones too small to be worth showing.
     std::vector<glm::ivec2> sizes;
     for (int div : {4, 2}) {
@@ -49,10 +54,11 @@ void CpuWorker::runPasses(State& s, const CpuRequest& request) {
         }
         CpuResult result;
         result.technique = request.technique;
+        result.ticket = pending.ticket;
         result.pass = int(i) + 1;
         result.passCount = int(sizes.size());
         try {
-            if (!technique) technique = viz::makeTechnique(request.technique);
+            if (!technique) technique = s.make(request.technique);
             viz::FrameInput input;
             input.scene = &s.scene;
             input.width = sizes[i].x;

@@ -4,6 +4,8 @@
 
 #include <chrono>
 #include <condition_variable>
+#include <cstdint>
+#include <functional>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -29,13 +31,14 @@ struct CpuRequest {
 
 struct CpuResult {
     std::string technique;
+    std::uint64_t ticket = 0;  // submit()'s for the request it answers
     viz::FrameOutput output;
     int pass = 0, passCount = 1;
     std::string error;
 };
 
 struct CpuProgress {
-    bool busy = false;
+    bool busy = false;  // a pass is running, or a request waits for the thread to take it
     int pass = 0, passCount = 1;
     glm::ivec2 size{0};
     double elapsed = 0.0;   // seconds in this pass
@@ -44,12 +47,19 @@ struct CpuProgress {
 
 // Runs one CPU technique at a time in passes of growing resolution. A new request supersedes the
 // pending one and stops the running one after its current pass (Technique::run cannot be
-// interrupted). The state lives in a shared_ptr so that a pass still running at exit can finish
-// on a detached thread without touching freed memory.
+// interrupted): that pass's result still arrives, with the ticket of the request it answers, so a
+// consumer compares it with its latest submit() and drops what a later request superseded. The state
+// lives in a shared_ptr so that a pass still running at exit can finish on a detached thread without
+// touching freed memory.
 class CpuWorker {
 public:
-    explicit CpuWorker(const viz::scene::Scene& scene) : mState(std::make_shared<State>()) {
+    // Makes the technique a request names (the registry's; tests pass their own).
+    using MakeTechnique = std::function<std::unique_ptr<viz::Technique>(const std::string&)>;
+
+    explicit CpuWorker(const viz::scene::Scene& scene, MakeTechnique make = defaultMaker())
+        : mState(std::make_shared<State>()) {
         mState->scene = scene;
+        mState->make = std::move(make);
         mThread = std::thread([state = mState] { loop(*state); });
     }
     ~CpuWorker() {
@@ -66,12 +76,16 @@ public:
         mState->nextScene = scene;
     }
 
-    void submit(CpuRequest request) {
+    // Returns the request's ticket: increasing, never 0; the results of its passes carry it.
+    std::uint64_t submit(CpuRequest request) {
+        std::uint64_t ticket = 0;
         {
             std::lock_guard lock(mState->mutex);
-            mState->request = std::move(request);
+            ticket = ++mState->lastTicket;
+            mState->request = Pending{std::move(request), ticket};
         }
         mState->wake.notify_all();
+        return ticket;
     }
     std::optional<CpuResult> take() {
         std::lock_guard lock(mState->mutex);
@@ -80,18 +94,25 @@ public:
     CpuProgress progress() const {
         std::lock_guard lock(mState->mutex);
         CpuProgress p = mState->progress;
+        if (!p.busy && mState->request) return CpuProgress{.busy = true};  // taken by the thread soon
         if (p.busy) p.elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - mState->passStart).count();
         return p;
     }
 
 private:
+    struct Pending {
+        CpuRequest request;
+        std::uint64_t ticket = 0;
+    };
     struct State {
         viz::scene::Scene scene;  // the worker's own copy; the camera comes with each request
         std::optional<viz::scene::Scene> nextScene;  // setScene's, taken with the next request
         std::map<std::string, std::unique_ptr<viz::Technique>> techniques;
         mutable std::mutex mutex;
         std::condition_variable wake;
-        std::optional<CpuRequest> request;
+        MakeTechnique make;
+        std::optional<Pending> request;
+        std::uint64_t lastTicket = 0;
         std::optional<CpuResult> result;
         CpuProgress progress;
         std::chrono::steady_clock::time_point passStart;
@@ -99,8 +120,9 @@ private:
         bool quit = false;
     };
 
+    static MakeTechnique defaultMaker();
     static void loop(State& s);
-    static void runPasses(State& s, const CpuRequest& request);
+    static void runPasses(State& s, const Pending& pending);
 
     std::shared_ptr<State> mState;
     std::thread mThread;

@@ -40,15 +40,22 @@ std::string runKey(const std::string& id, const DifferenceRequest& request) {
 const DifferenceRuns::Run* DifferenceRuns::get(const std::string& id, const DifferenceRequest& request) {
     const std::string key = runKey(id, request);
     Run& run = mRuns[id];
+    run.held = false;
     if (run.key == key) return &run;
     RunScheduler* runner = nullptr;
     try {
         runner = &mRunnerFor(id);
     } catch (const std::exception& e) {
-        run = Run{key, {}, {}, e.what(), ""};
+        run = Run{key, {}, {}, e.what(), "", 0, false};
         return &run;
     }
     if (run.pending == key) return nullptr;
+    if (request.hold && !runner->technique().needsGl() && (!run.pending.empty() || !run.key.empty())) {
+        // The pass under way finishes for the request it has; until then nothing, after it that.
+        if (run.key.empty()) return nullptr;
+        run.held = true;
+        return &run;
+    }
     run.pending = key;
     if (runner->technique().needsGl()) {
         mDue = true;
@@ -57,10 +64,10 @@ const DifferenceRuns::Run* DifferenceRuns::get(const std::string& id, const Diff
     // The worker keeps its own copy of the scene: handed the new one when the medium, lights or geometry
     // changed.
     const std::string scene = sceneKey(*request.scene, request.geometryHash);
-    if (!mWorker) mWorker = std::make_unique<CpuWorker>(*request.scene);
+    if (!mWorker) mWorker = mMake ? std::make_unique<CpuWorker>(*request.scene, mMake) : std::make_unique<CpuWorker>(*request.scene);
     else if (mWorkerSceneKey != scene) mWorker->setScene(*request.scene);
     mWorkerSceneKey = scene;
-    mWorker->submit({id, request.camera, request.settings, request.size.x, request.size.y});
+    run.ticket = mWorker->submit({id, request.camera, request.settings, request.size.x, request.size.y});
     return nullptr;
 }
 
@@ -79,7 +86,7 @@ std::vector<std::string> DifferenceRuns::runDue(const std::function<DifferenceRe
         const DifferenceRequest request = current(id);
         const std::string key = std::exchange(run.pending, std::string());
         if (key != runKey(id, request)) continue;  // stale: the next get asks again
-        run = Run{key, {}, {}, "", ""};
+        run = Run{key, {}, {}, "", "", 0, false};
         try {
             viz::scene::Scene scene = *request.scene;
             scene.camera = request.camera;
@@ -100,7 +107,9 @@ std::optional<std::string> DifferenceRuns::poll() {
     std::optional<CpuResult> result = mWorker->take();
     if (!result || (result->error.empty() && result->pass < result->passCount)) return std::nullopt;
     auto it = mRuns.find(result->technique);
-    if (it == mRuns.end() || it->second.pending.empty()) return std::nullopt;
+    // A pass of a request that a later one superseded (the camera moved while it ran) is not the pending
+    // run's: its images would be kept under the new key. The superseding request's passes follow.
+    if (it == mRuns.end() || it->second.pending.empty() || result->ticket != it->second.ticket) return std::nullopt;
     Run& run = it->second;
     run.key = std::exchange(run.pending, std::string());
     run.failure = result->error;

@@ -29,6 +29,9 @@ struct DifferenceRequest {
     viz::scene::Camera camera;
     glm::ivec2 size{0};
     viz::Settings settings;  // complete: the technique's defaults under the session's and the command line's
+    // The window's animation plays: a CPU technique is not asked again for every played frame (each
+    // request would supersede the last before any pass finished); its last image stands, as Run::held.
+    bool hold = false;
 };
 
 // The medium, lights and geometry: what a CPU worker's scene copy depends on besides the camera.
@@ -44,14 +47,19 @@ public:
         viz::Image airlight, final;
         std::string failure;
         std::string pending;  // the key of the run being computed (worker or queue)
+        std::uint64_t ticket = 0;  // the worker's for `pending` (CPU runs): a superseded request's pass is not it
+        bool held = false;  // get() returned it for a different request (DifferenceRequest::hold)
     };
     // The scheduler that runs technique `id` (shared with the comparison grid); throws for an unknown id.
     using RunnerFor = std::function<RunScheduler&(const std::string&)>;
 
-    explicit DifferenceRuns(RunnerFor runnerFor) : mRunnerFor(std::move(runnerFor)) {}
+    // `make`: what the CPU worker makes a technique with (the registry's; tests pass their own).
+    explicit DifferenceRuns(RunnerFor runnerFor, CpuWorker::MakeTechnique make = nullptr)
+        : mRunnerFor(std::move(runnerFor)), mMake(std::move(make)) {}
 
     // `id`'s images for `request`: kept ones when the request is the same, a failure when the technique
-    // cannot be made, otherwise null while they are computed (started here, or queued for runDue).
+    // cannot be made, otherwise null while they are computed (started here, or queued for runDue). With
+    // `request.hold`, a CPU technique's last images (held) once it has some.
     const Run* get(const std::string& id, const DifferenceRequest& request);
 
     // GPU runs are queued: the window runs them on its next frame.
@@ -67,6 +75,7 @@ public:
 
 private:
     RunnerFor mRunnerFor;
+    CpuWorker::MakeTechnique mMake;
     std::map<std::string, Run> mRuns;  // by technique id
     std::unique_ptr<CpuWorker> mWorker;
     std::string mWorkerSceneKey;

@@ -52,6 +52,7 @@ GuiApp::GuiApp(const GuiOptions& options, viz::scene::Scene scene, viz::Window& 
     if (mClockName == viz::gl::StageClock::methodName(viz::gl::ClockMethod::TimestampQuery) ||
         (forced && std::string(forced) == "1"))
         mGpuTimer = std::make_unique<viz::gl::GpuTimer>();
+    mRuns.setViewsTimer(mGpuTimer.get());
 
     glfwSetWindowUserPointer(mWindow.handle(), this);
     glfwSetKeyCallback(mWindow.handle(), [](GLFWwindow* w, int key, int, int action, int mods) {
@@ -105,8 +106,7 @@ GuiApp::~GuiApp() {
     mViews.clear();
     mComparison.close();
     mOutput = {};
-    mOtherRunners.clear();
-    mRunners.clear();
+    mRuns.clear();
 }
 
 int GuiApp::run() {
@@ -137,7 +137,7 @@ int GuiApp::run() {
         if (mReduced && mDragButton < 0 && !mGizmoDrag && !anyFlyKeyDown()) mDirty = true;
         // A view now shows (or no longer shows) something the technique draws only on demand.
         if (!mDirty && mHaveOutput && technique().needsGl()) {
-            const RunScheduler& runner = *mRunners.at(technique().id());
+            const RunScheduler& runner = mRuns.at(Consumer::Views, technique().id());
             if (runner.onDemandAmong(shownContents()) != runner.lastViews()) mDirty = true;
         }
         if (mDirty) {
@@ -162,8 +162,11 @@ int GuiApp::run() {
         ++mFramesDrawn;
         if (!mOptions.script.empty()) {
             // Each frame runs the script's next actions; the window closes when it is done.
-            if (mHaveOutput && !mWorker->progress().busy && !mDifferenceRuns.pending() && !mComparison.pending() &&
-                !mAnimation.reference.busy() && !stepScript()) {
+            // Each action waits for the runs it caused, but a held key counts window frames as a user's
+            // would: flying with a CPU technique shown asks for a new frame every frame.
+            const bool settled = mHaveOutput && !mWorker->progress().busy && !mDifferenceRuns.pending() &&
+                                 !mComparison.pending() && !mAnimation.reference.busy();
+            if ((settled || mScriptHeld >= 0) && !stepScript()) {
                 if (!mOptions.screenshot.empty()) writeScreenshot(mOptions.screenshot);
                 return 0;
             }
@@ -183,10 +186,7 @@ void GuiApp::selectTechnique(int index) {
     index = ((index % n) + n) % n;
     const std::string& id = mIds[std::size_t(index)];
     try {
-        if (!mRunners.count(id)) {
-            mRunners[id] = std::make_unique<RunScheduler>(viz::makeTechnique(id));
-            mRunners[id]->setTimer(mGpuTimer.get());
-        }
+        (void)mRuns.runner(Consumer::Views, id);
     } catch (const std::exception& e) {
         mError = e.what();
         return;
@@ -221,6 +221,9 @@ void GuiApp::render() {
     viz::Technique& t = technique();
     if (!t.needsGl()) {
         mReduced = false;  // the worker's progressive passes play that role
+        // While the animation plays a CPU technique keeps its still frame (seconds a pass: a request per
+        // played frame would supersede every pass before it finished); play stopping asks again.
+        if (mAnimation.playing && (mHaveOutput || mWorker->progress().busy)) return;
         mWorker->submit({t.id(), mScene.camera, mSettings, mOptions.width, mOptions.height});
         return;
     }
@@ -234,7 +237,7 @@ void GuiApp::render() {
     const auto start = Clock::now();
     try {
         // The scheduler re-runs only the stages whose inputs changed (a sub-step: its stage alone).
-        mOutput = mRunners.at(t.id())->run(mScene, size.x, size.y, mSettings, mCursor, shownContents(), mAnimation.frame);
+        mOutput = mRuns.runner(Consumer::Views, t.id()).run(mScene, size.x, size.y, mSettings, mCursor, shownContents(), mAnimation.frame);
         // While playing, the temporal views: this frame's L_air against the previous one's, and its error
         // against the reference's frames when they are known (--path).
         if (mAnimation.playing && mAnimation.temporal.add(mOutput.airlight, pathReferenceFrame())) {
@@ -263,7 +266,11 @@ void GuiApp::render() {
 }
 
 void GuiApp::acceptCpuResult(CpuResult result) {
-    if (result.technique != mIds[std::size_t(mCurrent)]) return;  // from a technique no longer shown
+    // From a technique no longer shown, or older than the pass shown. A pass of a request that a later
+    // one superseded (the camera moved while it ran) is shown until the later one's passes replace it:
+    // while the camera flies, the latest pass finished is the view's preview.
+    if (result.technique != mIds[std::size_t(mCurrent)] || result.ticket < mCpuShownTicket) return;
+    mCpuShownTicket = result.ticket;
     if (!result.error.empty()) {
         mError = result.error;
         return;

@@ -47,6 +47,7 @@
 #include "gl/vertex_array.h"
 #include "platform/window_glfw.h"
 #include "render_job.h"
+#include "run_pool.h"
 #include "run_scheduler.h"
 #include "screen_map.h"
 #include "sidebar.h"
@@ -138,7 +139,6 @@ private:
     void togglePlaying();
     // Runs a technique for the comparison grid with the window's settings for it.
     ComparisonGrid::RunTechnique comparisonRunner();
-    RunScheduler& otherRunner(const std::string& id);  // mOtherRunners' for `id`, made on first use
     void advanceAnimation(double dt);
     void startPathLoop();           // --path: frame 0 is the camera and lights as they are now
     void playPathFrame(int frame);  // --path: frame `frame` of the loop, from where it started
@@ -217,8 +217,8 @@ private:
     // ---- techniques and rendering ----
 
     // The main views' instance of the current technique (its own: no other consumer runs it).
-    viz::Technique& technique() { return mRunners.at(mIds[std::size_t(mCurrent)])->technique(); }
-    const viz::Technique& technique() const { return mRunners.at(mIds[std::size_t(mCurrent)])->technique(); }
+    viz::Technique& technique() { return mRuns.runner(Consumer::Views, mIds[std::size_t(mCurrent)]).technique(); }
+    const viz::Technique& technique() const { return mRuns.at(Consumer::Views, mIds[std::size_t(mCurrent)]).technique(); }
 
     void selectTechnique(int index);
     void render();
@@ -466,9 +466,9 @@ private:
     CameraController mController;
     double mGizmoArm = 1.0;  // scene units (kGizmoArm of the scene camera's orbit distance)
     std::vector<std::string> mIds;
-    // The other consumers' runs (difference views, the comparison grid; both keep copies of the images):
-    // one scheduler per technique, apart from the main views' mRunners, whose textures panes borrow.
-    std::map<std::string, std::unique_ptr<RunScheduler>> mOtherRunners;
+    // Every technique instance, by consumer: the main views' (their panes borrow its textures) and the
+    // others' (difference views, the comparison grid: both copy their images out).
+    RunPool mRuns;
     int mCurrent = 0;
     viz::Settings mSettings;
     viz::Plan mPlan;
@@ -482,6 +482,7 @@ private:
     std::unique_ptr<DrawList> mBackground;  // panels behind the images
     std::unique_ptr<ImageDisplay> mImageDisplay;
     std::unique_ptr<CpuWorker> mWorker;
+    std::uint64_t mCpuShownTicket = 0;  // the request of mWorker's pass the main views show (none older after it)
     float mScale = 1.0f;           // sizes' factor: the display's content scale times the UI scale
     float mContentScale = 1.0f;    // from GLFW (HiDPI)
     float mUiScale = 1.0f;         // --ui-scale, Ctrl+= / Ctrl+-
@@ -505,7 +506,7 @@ private:
     int mDragTitle = -1;                     // a title dragged onto another view swaps the two
     std::vector<Rect> mStripRects;           // open display strips' widget panels last frame
     // Difference views' other side (by technique id), through the same schedulers as the comparison grid.
-    DifferenceRuns mDifferenceRuns{[this](const std::string& id) -> RunScheduler& { return otherRunner(id); }};
+    DifferenceRuns mDifferenceRuns{[this](const std::string& id) -> RunScheduler& { return mRuns.runner(Consumer::Others, id); }};
     DifferenceRuns::Run mSelfRun;
     double mGridMilliseconds = 0.0;  // CPU time drawViewGrid took last frame
     double mUiMilliseconds = 0.0;    // CPU time of building the whole frame's UI (before its draw calls)
@@ -536,8 +537,6 @@ private:
     std::unique_ptr<LessonPlayer> mLesson;      // the lesson panel, when a lesson is open
     glm::ivec2 mLessonSize{0};                  // --size given with a lesson: every step at that size
     StepCursor mCursor;                      // stepping: where the main views' run stops (not a setting)
-    // The main views' technique instances, one per technique, each with its last run's key.
-    std::map<std::string, std::unique_ptr<RunScheduler>> mRunners;
     std::vector<TimelineSegment> mTimeline;  // the stepping timeline as drawn last
     Rect mTimelineRect;
     bool mDragTimeline = false;

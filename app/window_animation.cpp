@@ -11,6 +11,9 @@ void GuiApp::togglePlaying() {
         if (mComparison.isOpen()) mComparison.stopPlaying(comparisonRunner());  // back to the still frame
         mAnimation.reference.stop();
         stopRecording();
+        // A CPU technique kept its still frame while playing (render), and difference views against one
+        // kept its last image: both are asked again for the frame as play leaves it.
+        mDirty = true;
         return;
     }
     mAnimation.light.reset();

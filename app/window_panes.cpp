@@ -170,7 +170,8 @@ void GuiApp::makeDifference(ViewState& v, const std::string& content) {
     const viz::Image diff = differenceImage(mine, theirs, d.difference);
     PaneImage pane;
     pane.id = v.pane.id;
-    pane.label = v.pane.label + ": " + differenceModeNames()[std::size_t(d.difference)] + ", b = " + d.against;
+    pane.label = v.pane.label + ": " + differenceModeNames()[std::size_t(d.difference)] + ", b = " + d.against +
+                 (other->held ? " (held while playing)" : "");
     pane.note = d.difference == DifferenceMode::Signed
         ? "sum over RGB of (a - b): blue where a is darker, red where brighter"
         : d.difference == DifferenceMode::Relative
@@ -191,14 +192,14 @@ void GuiApp::makeDifference(ViewState& v, const std::string& content) {
 const DifferenceRuns::Run* GuiApp::otherRun(const std::string& id) {
     if (mReduced) return nullptr;
     if (id == technique().id()) {
-        mSelfRun = {"", mOutput.airlight, mOutput.final, "", ""};
+        mSelfRun = {"", mOutput.airlight, mOutput.final, "", "", 0, false};
         return &mSelfRun;
     }
     return mDifferenceRuns.get(id, differenceRequest(id));
 }
 
 DifferenceRequest GuiApp::differenceRequest(const std::string& id) {
-    DifferenceRequest r{&mScene, mGeometryHash, mController.camera(), mOutputSize, otherSettings(id)};
+    DifferenceRequest r{&mScene, mGeometryHash, mController.camera(), mOutputSize, otherSettings(id), mAnimation.playing};
     try {
         r.settings = completedOtherSettings(id);
     } catch (const std::exception&) {
@@ -215,7 +216,7 @@ viz::Settings GuiApp::otherSettings(const std::string& id) const {
 
 viz::Settings GuiApp::completedOtherSettings(const std::string& id) {
     std::string ignored;
-    return settingsFor(otherRunner(id).technique(), otherSettings(id), ignored);
+    return settingsFor(mRuns.runner(Consumer::Others, id).technique(), otherSettings(id), ignored);
 }
 
 void GuiApp::runDueGpuOthers() {

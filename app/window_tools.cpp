@@ -32,19 +32,12 @@ void GuiApp::showLessonComparison(const std::vector<std::string>& techniques) {
 
 ComparisonGrid::RunTechnique GuiApp::comparisonRunner() {
     return [this](const std::string& id, const viz::scene::Scene& scene, glm::ivec2 size, int frame) {
-        RunScheduler& runner = otherRunner(id);
+        RunScheduler& runner = mRuns.runner(Consumer::Others, id);
         runner.invalidate();  // the grid times whole runs: nothing carried over from the last one
         viz::FrameOutput out = runner.run(scene, size.x, size.y, completedOtherSettings(id), {}, {}, frame);
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         return out;
     };
-}
-
-RunScheduler& GuiApp::otherRunner(const std::string& id) {
-    auto it = mOtherRunners.find(id);
-    // makeTechnique throws for an unknown id before anything is stored.
-    if (it == mOtherRunners.end()) it = mOtherRunners.emplace(id, std::make_unique<RunScheduler>(viz::makeTechnique(id))).first;
-    return *it->second;
 }
 
 void GuiApp::runComparisonTechniques() { mComparison.runTechniques(comparisonRunner()); }

@@ -417,9 +417,12 @@ void GuiApp::drawStatusBands(DrawList& dl, const Rect& image) {
     const CpuProgress progress = mWorker->progress();
     if (progress.busy && !technique().needsGl()) {
         // Progress of the running pass, estimated from the previous pass's time per pixel.
-        std::string text = "computing... pass " + std::to_string(progress.pass) + "/" + std::to_string(progress.passCount) +
-                           " (" + std::to_string(progress.size.x) + "x" + std::to_string(progress.size.y) + ")  " +
-                           format("%.1f s", progress.elapsed);
+        // Pass 0: the request waits for the worker to take it (its previous pass is finishing).
+        std::string text = progress.pass == 0
+                               ? std::string("computing... starting")
+                               : "computing... pass " + std::to_string(progress.pass) + "/" +
+                                     std::to_string(progress.passCount) + " (" + std::to_string(progress.size.x) +
+                                     "x" + std::to_string(progress.size.y) + ")  " + format("%.1f s", progress.elapsed);
         float fraction = -1.0f;
         // An estimate the pass has clearly outrun (the previous pass came from the cache, say)
         // is dropped rather than shown as a full bar.

@@ -179,6 +179,33 @@ TEST_F(GuiViews, ADifferenceViewCarriesTheReportsErrorAgainstTheReference) {
     EXPECT_NEAR(toSlices->at("difference").at("relative_l2").get<double>(), toSlicesL2, 1e-6 * toSlicesL2);
 }
 
+TEST_F(GuiViews, ADifferenceViewAgainstTheReferenceIsHeldWhilePlayingAndFollowsWhenPlayStops) {
+    // While P plays the light turns every frame; the reference (seconds a pass) is not asked again per
+    // frame: its last image stands, titled so. When play stops it renders the frame as play left it.
+    const fs::path script = writeText("play.txt", "key F\nframes 1\nscreenshot " + path("still.png").string() +
+                                                      "\nkey P\nframes 12\nscreenshot " + path("play.png").string() +
+                                                      "\nkey P\nframes 1\n");
+    const RunResult r = run("gui --scene grate --technique raymarch --size 40x30 --set samples=16 --script " +
+                            script.string() + " --screenshot " + path("stopped.png").string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const auto view = [&](const std::string& png) {
+        const json j = sidecar(png);
+        const json* v = viewWithCell(j, 1);
+        EXPECT_TRUE(v && v->contains("difference")) << png;
+        return v ? *v : json::object();
+    };
+    const json still = view("still.png"), playing = view("play.png"), stopped = view("stopped.png");
+    const auto l2 = [](const json& v) { return v.at("difference").at("relative_l2").get<double>(); };
+    EXPECT_EQ(still.at("title").get<std::string>().find("held"), std::string::npos);
+    EXPECT_NE(playing.at("title").get<std::string>().find("(held while playing)"), std::string::npos)
+        << playing.at("title");
+    EXPECT_EQ(stopped.at("title").get<std::string>().find("held"), std::string::npos) << stopped.at("title");
+    // Held, the reference is of the still light: raymarch's moved shafts are far from it. Once play stops
+    // the two are of the same frame again, as close as on the still frame.
+    EXPECT_GT(l2(playing), 5.0 * l2(still));
+    EXPECT_LT(l2(stopped), 2.0 * l2(still));
+}
+
 TEST_F(GuiViews, SentinelTexelsAreCountedApartAndMinmaxMarksThePixelsEpipolarRow) {
     // minmax's rectified map stores -1 for light rays outside the spot's cone: a sentinel the view
     // counts apart; hovering the final frame marks the pixel's slice as a row there.
