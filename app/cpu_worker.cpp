@@ -8,15 +8,11 @@
 #include <utility>
 #include <vector>
 
-#include "techniques/registry.h"
 
 namespace airlight {
 
 using Clock = std::chrono::steady_clock;
 
-CpuWorker::MakeTechnique CpuWorker::defaultMaker() {
-    return [](const std::string& id) { return viz::makeTechnique(id); };
-}
 
 void CpuWorker::loop(State& s) {
     for (;;) {
@@ -58,7 +54,7 @@ void CpuWorker::runPasses(State& s, const Pending& pending) {
         result.pass = int(i) + 1;
         result.passCount = int(sizes.size());
         try {
-            if (!technique) technique = s.make(request.technique);
+            if (!technique) technique = s.make ? s.make(request.technique) : viz::makeTechnique(request.technique);
             viz::FrameInput input;
             input.scene = &s.scene;
             input.width = sizes[i].x;

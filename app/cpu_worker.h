@@ -5,7 +5,6 @@
 #include <chrono>
 #include <condition_variable>
 #include <cstdint>
-#include <functional>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -18,6 +17,7 @@
 
 #include "debug/technique.h"
 #include "scene/scene.h"
+#include "techniques/registry.h"
 #include "worker_thread.h"
 
 namespace airlight {
@@ -53,10 +53,8 @@ struct CpuProgress {
 // touching freed memory.
 class CpuWorker {
 public:
-    // Makes the technique a request names (the registry's; tests pass their own).
-    using MakeTechnique = std::function<std::unique_ptr<viz::Technique>(const std::string&)>;
-
-    explicit CpuWorker(const viz::scene::Scene& scene, MakeTechnique make = defaultMaker())
+    // `make`: what makes the technique a request names (null: the registry; tests pass their own).
+    explicit CpuWorker(const viz::scene::Scene& scene, viz::TechniqueMaker make = nullptr)
         : mState(std::make_shared<State>()) {
         mState->scene = scene;
         mState->make = std::move(make);
@@ -110,7 +108,7 @@ private:
         std::map<std::string, std::unique_ptr<viz::Technique>> techniques;
         mutable std::mutex mutex;
         std::condition_variable wake;
-        MakeTechnique make;
+        viz::TechniqueMaker make;
         std::optional<Pending> request;
         std::uint64_t lastTicket = 0;
         std::optional<CpuResult> result;
@@ -120,7 +118,6 @@ private:
         bool quit = false;
     };
 
-    static MakeTechnique defaultMaker();
     static void loop(State& s);
     static void runPasses(State& s, const Pending& pending);
 

@@ -64,7 +64,7 @@ const DifferenceRuns::Run* DifferenceRuns::get(const std::string& id, const Diff
     // The worker keeps its own copy of the scene: handed the new one when the medium, lights or geometry
     // changed.
     const std::string scene = sceneKey(*request.scene, request.geometryHash);
-    if (!mWorker) mWorker = mMake ? std::make_unique<CpuWorker>(*request.scene, mMake) : std::make_unique<CpuWorker>(*request.scene);
+    if (!mWorker) mWorker = std::make_unique<CpuWorker>(*request.scene, mMake);
     else if (mWorkerSceneKey != scene) mWorker->setScene(*request.scene);
     mWorkerSceneKey = scene;
     run.ticket = mWorker->submit({id, request.camera, request.settings, request.size.x, request.size.y});

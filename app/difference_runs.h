@@ -54,7 +54,7 @@ public:
     using RunnerFor = std::function<RunScheduler&(const std::string&)>;
 
     // `make`: what the CPU worker makes a technique with (the registry's; tests pass their own).
-    explicit DifferenceRuns(RunnerFor runnerFor, CpuWorker::MakeTechnique make = nullptr)
+    explicit DifferenceRuns(RunnerFor runnerFor, viz::TechniqueMaker make = nullptr)
         : mRunnerFor(std::move(runnerFor)), mMake(std::move(make)) {}
 
     // `id`'s images for `request`: kept ones when the request is the same, a failure when the technique
@@ -75,7 +75,7 @@ public:
 
 private:
     RunnerFor mRunnerFor;
-    CpuWorker::MakeTechnique mMake;
+    viz::TechniqueMaker mMake;
     std::map<std::string, Run> mRuns;  // by technique id
     std::unique_ptr<CpuWorker> mWorker;
     std::string mWorkerSceneKey;

@@ -284,39 +284,6 @@ void GuiApp::acceptCpuResult(CpuResult result) {
     refreshPanes();
 }
 
-void GuiApp::setUiScale(float scale) {
-    scale = std::clamp(scale, kMinUiScale, kMaxUiScale);
-    if (scale == mUiScale) {
-        mNotice = "UI scale " + format("%.2f", double(mUiScale)) + " (the limit)";
-        return;
-    }
-    mUiScale = scale;
-    mScale = mContentScale * mUiScale;
-    // The glyphs are baked at the new size into the same atlas (the draw lists and widgets keep their
-    // reference to it); the text renderer uploads them again.
-    *mFont = viz::ui::FontAtlas::bake(viz::ui::FontAtlas::defaultFontPath(), kFontSize * mScale);
-    mTextRenderer = std::make_unique<viz::ui::TextRenderer>(*mFont);
-    mNotice = "UI scale " + format("%.2f", double(mUiScale));
-}
-
-void GuiApp::toggleFullscreen() {
-    GLFWwindow* w = mWindow.handle();
-    if (GLFWmonitor* monitor = glfwGetWindowMonitor(w)) {
-        (void)monitor;
-        glfwSetWindowMonitor(w, nullptr, mWindowedRect.x, mWindowedRect.y, mWindowedRect.z, mWindowedRect.w, 0);
-        return;
-    }
-    GLFWmonitor* primary = glfwGetPrimaryMonitor();
-    const GLFWvidmode* mode = primary ? glfwGetVideoMode(primary) : nullptr;
-    if (!mode) {
-        mNotice = "full screen: no monitor found";
-        return;
-    }
-    glfwGetWindowPos(w, &mWindowedRect.x, &mWindowedRect.y);
-    glfwGetWindowSize(w, &mWindowedRect.z, &mWindowedRect.w);
-    glfwSetWindowMonitor(w, primary, 0, 0, mode->width, mode->height, mode->refreshRate);
-}
-
 void GuiApp::sceneEdited() {
     mWorker->setScene(mScene);
     replan();
@@ -330,8 +297,6 @@ void GuiApp::replan() {
     }
     mDirty = true;
 }
-
-
 
 int runGui(const GuiOptions& options) {
     if (options.width < 1 || options.height < 1) throw viz::InputError("render size must be at least 1x1");

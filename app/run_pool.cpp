@@ -1,7 +1,5 @@
 #include "run_pool.h"
 
-#include "techniques/registry.h"
-
 namespace airlight {
 
 RunScheduler& RunPool::runner(Consumer who, const std::string& id) {

@@ -12,8 +12,8 @@
 #include <string>
 #include <utility>
 
-#include "cpu_worker.h"
 #include "run_scheduler.h"
+#include "techniques/registry.h"
 
 namespace airlight {
 
@@ -22,7 +22,7 @@ enum class Consumer { Views, Others };
 class RunPool {
 public:
     // `make`: what makes a technique (the registry's when null; tests pass their own).
-    explicit RunPool(CpuWorker::MakeTechnique make = nullptr) : mMake(std::move(make)) {}
+    explicit RunPool(viz::TechniqueMaker make = nullptr) : mMake(std::move(make)) {}
 
     // `id`'s scheduler for `who`, made on first use. An unknown id throws (InputError), storing nothing.
     RunScheduler& runner(Consumer who, const std::string& id);
@@ -35,7 +35,7 @@ public:
     void clear() { mRunners.clear(); }
 
 private:
-    CpuWorker::MakeTechnique mMake;
+    viz::TechniqueMaker mMake;
     viz::StageTimer* mViewsTimer = nullptr;
     std::map<std::pair<Consumer, std::string>, std::unique_ptr<RunScheduler>> mRunners;
 };

@@ -1,5 +1,5 @@
 // One frame of the window: the status lines, the sidebar, the view grid or comparison, the panels under it
-// and the help lines.
+// and the help lines; and the window's presentation (UI scale, full screen).
 #include "gui_app.h"
 
 namespace airlight {
@@ -162,6 +162,39 @@ void GuiApp::beginWidgets(glm::ivec2 fb) {
     mUiInput = {};
     mUi->setTime(glfwGetTime());
     mUi->beginFrame(in, glm::vec2(fb), mScale);
+}
+
+void GuiApp::setUiScale(float scale) {
+    scale = std::clamp(scale, kMinUiScale, kMaxUiScale);
+    if (scale == mUiScale) {
+        mNotice = "UI scale " + format("%.2f", double(mUiScale)) + " (the limit)";
+        return;
+    }
+    mUiScale = scale;
+    mScale = mContentScale * mUiScale;
+    // The glyphs are baked at the new size into the same atlas (the draw lists and widgets keep their
+    // reference to it); the text renderer uploads them again.
+    *mFont = viz::ui::FontAtlas::bake(viz::ui::FontAtlas::defaultFontPath(), kFontSize * mScale);
+    mTextRenderer = std::make_unique<viz::ui::TextRenderer>(*mFont);
+    mNotice = "UI scale " + format("%.2f", double(mUiScale));
+}
+
+void GuiApp::toggleFullscreen() {
+    GLFWwindow* w = mWindow.handle();
+    if (GLFWmonitor* monitor = glfwGetWindowMonitor(w)) {
+        (void)monitor;
+        glfwSetWindowMonitor(w, nullptr, mWindowedRect.x, mWindowedRect.y, mWindowedRect.z, mWindowedRect.w, 0);
+        return;
+    }
+    GLFWmonitor* primary = glfwGetPrimaryMonitor();
+    const GLFWvidmode* mode = primary ? glfwGetVideoMode(primary) : nullptr;
+    if (!mode) {
+        mNotice = "full screen: no monitor found";
+        return;
+    }
+    glfwGetWindowPos(w, &mWindowedRect.x, &mWindowedRect.y);
+    glfwGetWindowSize(w, &mWindowedRect.z, &mWindowedRect.w);
+    glfwSetWindowMonitor(w, primary, 0, 0, mode->width, mode->height, mode->refreshRate);
 }
 
 }  // namespace airlight

@@ -2,6 +2,7 @@
 // docs/architecture.md#explicit-registry).
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -14,6 +15,8 @@ namespace viz {
 std::vector<std::string> techniqueIds();
 // Throws InputError("unknown technique 'x' (known: reference, raymarch)") for an unknown id.
 std::unique_ptr<Technique> makeTechnique(std::string_view id);
+// What makes a technique by id where a caller may be handed another (tests pass fakes); null: makeTechnique.
+using TechniqueMaker = std::function<std::unique_ptr<Technique>(const std::string&)>;
 
 // Adds a technique after the listed ones (or replaces the factory of a listed id), for this process: the
 // tests register the worked example technique (viz/techniques/example/) this way; the product never does.
