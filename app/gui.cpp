@@ -36,6 +36,9 @@ GuiApp::GuiApp(const GuiOptions& options, viz::scene::Scene scene, viz::Window& 
     mUi = std::make_unique<viz::ui::Context>(*mFont);
     mDrawList = std::make_unique<DrawList>(*mFont);
     mBackground = std::make_unique<DrawList>(*mFont);
+    mCanvas.overlay = mDrawList.get();
+    mCanvas.background = mBackground.get();
+    mCanvas.font = mFont.get();
     mImageDisplay = std::make_unique<ImageDisplay>();
     mWorker = std::make_unique<CpuWorker>(mScene);
     std::string wanted = options.technique.empty() ? mIds.front() : options.technique;

@@ -28,6 +28,7 @@
 
 #include "camera_controller.h"
 #include "comparison_grid.h"
+#include "comparison_panel.h"
 #include "cpu_worker.h"
 #include "difference_runs.h"
 #include "lesson_player.h"
@@ -36,6 +37,7 @@
 #include "process_stats.h"
 #include "ray_inspection.h"
 #include "ray_inspector.h"
+#include "frame_canvas.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/image_io.h"
@@ -157,7 +159,6 @@ private:
 
     // The grid's techniques with the window's instances and settings (this thread holds the GL context).
     void runComparisonTechniques();
-    void drawComparison(DrawList& dl, const Rect& area);
 
     // ---- export ----
 
@@ -520,15 +521,9 @@ private:
     double mLastRunSeconds = 0.0;
     bool mReduced = false;  // the last GPU run was at half size during an interaction
 
-    std::vector<std::pair<Rect, std::function<void()>>> mHits;  // clickable rectangles of the last frame
-    struct PaneDraw {
-        Rect rect;
-        const PaneImage* pane;
-        const viz::ui::ImageViewTransform* view;  // nullptr: the whole image
-        DisplayMapping mapping;
-    };
+    // What the frame is drawn into: draw lists, images, clickable and named rectangles (frame_canvas.h).
+    FrameCanvas mCanvas;
     ComparisonGrid mComparison;  // G
-    std::vector<PaneDraw> mPaneDraws;
     std::unique_ptr<viz::ui::Context> mUi;   // the widgets
     viz::ui::Input mUiInput;                 // keys, text and wheel gathered since the last frame
     Rect mParamsRect;                        // the widget panel's area last frame
@@ -564,9 +559,6 @@ private:
     GLFWcursor* mRowCursor = nullptr;
     int mScriptDragStep = 0;                 // a script's drag: 0 before the press, 1-4 moving, 5 release
     glm::vec2 mScriptDragFrom{0.0f}, mScriptDragTo{0.0f};  // its ends, fixed at the press
-    // What the last frame drew where (scripts, sidecar): sidebar items "technique:ID", "view:LABEL"; per
-    // grid view N "cell:N" (image), "title:N", "strip:N" (its display strip's toggle); the views' images.
-    ScreenMap mScreen;
     std::size_t mScriptIndex = 0;
     int mScriptWait = 0;
     std::optional<bool> mSyntheticDown;  // the script holds the left button (down / just released)

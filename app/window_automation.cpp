@@ -6,9 +6,9 @@
 namespace airlight {
 
 Rect GuiApp::scriptTarget(const ScriptAction& a) const {
-    if (const std::optional<Rect> r = mScreen.find(a.target, mUi->widgetRects())) return *r;
+    if (const std::optional<Rect> r = mCanvas.screen.find(a.target, mUi->widgetRects())) return *r;
     throw viz::InputError(mOptions.scriptPath + ":" + std::to_string(a.line) + ": nothing named '" + a.target +
-                          "' is on screen (on screen: " + mScreen.known(mUi->widgetRects()) + ")");
+                          "' is on screen (on screen: " + mCanvas.screen.known(mUi->widgetRects()) + ")");
 }
 
 bool GuiApp::revealScriptTarget(const ScriptAction& a) {
@@ -161,7 +161,7 @@ void GuiApp::writeWindowImage(const std::string& path) {
 void GuiApp::writeSidecar(const std::string& path) {
     const glm::ivec2 fb = mWindow.framebufferSize();
     nlohmann::json views = nlohmann::json::array();
-    for (const auto& v : mScreen.views()) {
+    for (const auto& v : mCanvas.screen.views()) {
         nlohmann::json entry = {{"name", v.name}, {"title", v.title},
                                 {"rect", {v.rect.min.x, v.rect.min.y, v.rect.max.x, v.rect.max.y}}};
         if (v.cell >= 0 && mViews.count(v.cell)) entry.update(viewSidecar(v.cell, mViews.at(v.cell)));

@@ -21,8 +21,8 @@ void GuiApp::drawColourBar(int id, ViewState& v) {
     const ColourBarLayout layout =
         drawColourBarText(v.colourBar, v.bar, *mFont, mScale, *mDrawList, *mBackground, {kText, kDim, kError, kDim});
     v.ramp = layout.ramp;
-    for (const BarImageDraw& d : barImageDraws(v, layout, mapping)) mPaneDraws.push_back({d.rect, d.pane, d.view, d.mapping});
-    mScreen.place("colour_bar:" + std::to_string(id), v.bar);
+    for (const BarImageDraw& d : barImageDraws(v, layout, mapping)) mCanvas.panes.push_back({d.rect, d.pane, d.view, d.mapping});
+    mCanvas.screen.place("colour_bar:" + std::to_string(id), v.bar);
     if (v.bar.contains(mHover)) mUi->tooltipNow({layout.heading, layout.legend});
 }
 

@@ -19,13 +19,9 @@ void GuiApp::draw() {
     const auto frameStart = Clock::now();
 
     DrawList& dl = *mDrawList;
-    dl.clear();
-    mBackground->clear();
-    mHits.clear();
-    mPaneDraws.clear();
-    mScreen.clear();
+    mCanvas.scale = mScale;
+    mCanvas.begin(fb);  // "window": scripts name any point by window fraction
     mElidedTitles = 0;
-    mScreen.place("window", Rect{{0.0f, 0.0f}, glm::vec2(fb)});  // scripts: any point, by window fraction
     const float s = mScale;
     const float pad = kPad * s;
     const float line = mFont->lineHeight();
@@ -66,7 +62,7 @@ void GuiApp::draw() {
         // Clicking a view's entry shows it in the focused view.
         if (e.list == SidebarEntry::List::Techniques) listItem(e.rect, e.text, e.selected, [this, i] { selectTechnique(i); });
         else listItem(e.rect, e.text, e.selected, [this, i] { selectView(i); });
-        mScreen.place(e.screenName, e.rect);
+        mCanvas.screen.place(e.screenName, e.rect);
     }
 
     // The view grid on top; under it the ray inspector or the stage times (left) and the widgets (right);
@@ -120,7 +116,7 @@ void GuiApp::draw() {
     mUiMilliseconds = std::chrono::duration<double, std::milli>(Clock::now() - frameStart).count();
     // Panels, then the images, then the text batch over them.
     mTextRenderer->draw(*mBackground, fb);
-    for (const PaneDraw& d : mPaneDraws)
+    for (const PaneDraw& d : mCanvas.panes)
         mImageDisplay->draw(*d.pane, d.rect, fb, d.mapping, d.view ? *d.view : viz::ui::ImageViewTransform{});
     mTextRenderer->draw(dl, fb);
     mTextRenderer->draw(mUi->drawList(), fb);

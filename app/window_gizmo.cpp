@@ -79,7 +79,7 @@ void GuiApp::drawGizmo(DrawList& dl, int id, const ViewState& v) {
         for (int pass = 0; pass < 2; ++pass)
             for (int i = 0; i < 4; ++i)
                 dl.line(corners[i], corners[(i + 1) % 4], pass == 0 ? w + 2.0f * mScale : w, pass == 0 ? shadow : lit(true));
-        mScreen.place("gizmo:direction", {b - r, b + r}, true);
+        mCanvas.screen.place("gizmo:direction", {b - r, b + r}, true);
     }
     if (h.position) {
         const glm::vec2 c = handlePoint(v, *h.position, inside);
@@ -93,7 +93,7 @@ void GuiApp::drawGizmo(DrawList& dl, int id, const ViewState& v) {
                              ? c.x + r + 4.0f * mScale
                              : c.x - r - 4.0f * mScale - mFont->measure(name);
         dl.textClipped({tx, c.y - 0.5f * mFont->lineHeight()}, name, yellow, v.image.max.x);
-        mScreen.place("gizmo:position", {c - r, c + r}, true);
+        mCanvas.screen.place("gizmo:position", {c - r, c + r}, true);
     }
     dl.popClip();
 }

@@ -74,8 +74,8 @@ void GuiApp::setSubstepAt(int k) {
 void GuiApp::drawStepTimeline() {
     mTimeline = timelineSegments(technique(), mSettings, mTimelineRect.min.x, mTimelineRect.max.x, mOutput.substepCounts);
     drawTimeline(*mBackground, *mDrawList, mTimelineRect, mTimeline, mCursor, mScale);
-    mScreen.place("timeline", mTimelineRect);
-    mHits.push_back({mTimelineRect, [this] {
+    mCanvas.screen.place("timeline", mTimelineRect);
+    mCanvas.hits.push_back({mTimelineRect, [this] {
                          mDragTimeline = true;
                          mNotice.clear();
                          moveCursor(timelineCursorAt(mTimeline, mHover.x));
@@ -210,7 +210,7 @@ void GuiApp::onMouseButtonAt(int button, int action, glm::vec2 p) {
     }
     if (action == GLFW_PRESS) {
         if (button == GLFW_MOUSE_BUTTON_LEFT) {
-            for (const auto& [rect, action2] : mHits) {
+            for (const auto& [rect, action2] : mCanvas.hits) {
                 if (rect.contains(p)) {
                     action2();
                     return;

@@ -14,7 +14,7 @@ void GuiApp::listItem(const Rect& r, const std::string& text, bool selected, std
     if (selected) dl.rect(r, kHighlight);
     else if (r.contains(mHover)) dl.rect(r, kHover);
     dl.textClipped({r.min.x + 6.0f * mScale, r.min.y + 1.0f * mScale}, text, selected ? kText : kDim, r.max.x - 4.0f * mScale);
-    mHits.push_back({r, std::move(onClick)});
+    mCanvas.hits.push_back({r, std::move(onClick)});
 }
 
 glm::ivec2 GuiApp::texelAt(const PaneImage& pane, const Rect& image, const viz::ui::ImageViewTransform& view,
@@ -128,8 +128,8 @@ void GuiApp::drawViewGrid(const Rect& area) {
     if (frameHeight > 1.0f) mImageHeight = frameHeight;
     if (mComparison.isOpen()) {
         const Rect grid{{area.max.x - half, area.min.y + mFont->lineHeight()}, area.max};
-        drawComparison(*mDrawList, grid);
-        mScreen.placeView({"comparison", "comparison grid", grid, -1});
+        drawComparison(mCanvas, grid, mComparison, {mAnimation.reference.ready(), mAnimation.reference.total()});
+        mCanvas.screen.placeView({"comparison", "comparison grid", grid, -1});
     }
 }
 
@@ -237,9 +237,9 @@ void GuiApp::drawView(int id, ViewState& v) {
         w.display.stripOpen = !w.display.stripOpen;
         mFocused = id;
     });
-    mScreen.place("strip:" + std::to_string(id), toggleRect);
-    mScreen.place("title:" + std::to_string(id), v.title);
-    mScreen.place("cell:" + std::to_string(id), v.image);
+    mCanvas.screen.place("strip:" + std::to_string(id), toggleRect);
+    mCanvas.screen.place("title:" + std::to_string(id), v.title);
+    mCanvas.screen.place("cell:" + std::to_string(id), v.image);
 
     // The image, framed; the background batch is drawn before the images.
     mBackground->rect({v.image.min - 1.0f, v.image.max + 1.0f}, focused ? kHighlight : kPanel);
@@ -248,13 +248,13 @@ void GuiApp::drawView(int id, ViewState& v) {
         // No colour bar: the one the view had when it showed an image is gone with it.
         v.colourBar = {};
         drawPlots(v);
-        mScreen.placeView({v.pane.id, title + early + counts, v.image, id});
+        mCanvas.screen.placeView({v.pane.id, title + early + counts, v.image, id});
         drawStatusBands(dl, v.image);
         if (v.display.stripOpen && v.strip.size().y > 0.0f) drawStrip(id, v);
         return;
     }
-    mPaneDraws.push_back({v.image, &v.pane, &v.transform, resolveMapping(v.pane, v.display, mExposure, v.measured)});
-    mScreen.placeView({mHaveOutput ? (v.pane.id.empty() ? v.content : v.pane.id) : std::string("none"),
+    mCanvas.panes.push_back({v.image, &v.pane, &v.transform, resolveMapping(v.pane, v.display, mExposure, v.measured)});
+    mCanvas.screen.placeView({mHaveOutput ? (v.pane.id.empty() ? v.content : v.pane.id) : std::string("none"),
                        title + early + counts, v.image, id});
     if (!v.pane.unavailable.empty())
         dl.textClipped({v.image.min.x + 8.0f * s, v.image.min.y + 8.0f * s}, v.pane.unavailable, kDim, v.image.max.x);

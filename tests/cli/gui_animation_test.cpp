@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -12,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/cli_fixture.h"
+#include "cli/sidecar_views.h"
 #include "core/animation_io.h"
 
 namespace viz::testing {
@@ -126,12 +128,23 @@ TEST_F(GuiAnimation, TheComparisonGridPlaysEveryTechniqueSideBySide) {
         EXPECT_GE(t.at("played_frames").get<int>(), 5);
         EXPECT_EQ(t.at("change_pairs").get<int>(), t.at("played_frames").get<int>());
         EXPECT_GT(t.at("change_rms").get<double>(), 0.0) << "the spot moved: every technique's L_air changed";
+        // Its caption says the same (no --path: no reference frames, so the change of L_air, not flicker).
+        char figure[32];
+        std::snprintf(figure, sizeof figure, "change %.3g", t.at("change_rms").get<double>());
+        const std::string title = sidecarViewTitle(playing, "comparison:" + t.at("technique").get<std::string>());
+        EXPECT_NE(title.find(figure), std::string::npos) << title << " lacks " << figure;
     }
     EXPECT_EQ(gpuTiles, 6);
+    EXPECT_NE(sidecarViewTitle(playing, "comparison:reference").find("ground truth, still frame"), std::string::npos);
     for (const auto& t : stopped.at("comparison")) {
         SCOPED_TRACE(t.dump());
         EXPECT_EQ(t.at("played_frames").get<int>(), 0);
         EXPECT_TRUE(t.contains("relative_l2")) << "the still frame's error is back";
+        if (t.at("technique") != "reference") {
+            EXPECT_NE(sidecarViewTitle(stopped, "comparison:" + t.at("technique").get<std::string>())
+                          .find("   " + t.at("error").get<std::string>()),
+                      std::string::npos);
+        }
     }
 }
 

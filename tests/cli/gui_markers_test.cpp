@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/cli_fixture.h"
+#include "cli/sidecar_views.h"
 
 namespace viz::testing {
 namespace {
@@ -19,12 +20,6 @@ using nlohmann::json;
 class GuiMarkers : public WindowCliTest {
 protected:
     json sidecar(const std::string& png) { return json::parse(readFile(path(png).replace_extension(".json"))); }
-
-    static const json* viewNamed(const json& j, const std::string& name) {
-        for (const auto& v : j.at("views"))
-            if (v.value("name", std::string()) == name) return &v;
-        return nullptr;
-    }
 };
 
 TEST_F(GuiMarkers, PolyvolShadowMapShowsTheRaysSignedCrossings) {
@@ -34,7 +29,7 @@ TEST_F(GuiMarkers, PolyvolShadowMapShowsTheRaysSignedCrossings) {
                             script.string() + " --screenshot " + path("poly.png").string());
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const json j = sidecar("poly.png");
-    const json* map = viewNamed(j, "polyvol.shadow_map");
+    const json* map = sidecarView(j, "polyvol.shadow_map");
     ASSERT_NE(map, nullptr);
     ASSERT_TRUE(map->contains("markers"));
     const json& marks = map->at("markers");
@@ -68,7 +63,7 @@ TEST_F(GuiMarkers, CubeMapMarksNameTheirFaceAndTheViewShowsThatFace) {
                              "--set shadow_map=64 --set samples=8 --script ";
     ASSERT_EQ(run(args + first.string() + " --screenshot " + path("cube0.png").string()).exitCode, 0);
     const json before = sidecar("cube0.png");
-    const json* cube = viewNamed(before, "raymarch.shadow_map");
+    const json* cube = sidecarView(before, "raymarch.shadow_map");
     ASSERT_NE(cube, nullptr);
     ASSERT_GE(cube->at("markers").size(), 1u);
     const int face = cube->at("markers")[0].at("layer");
@@ -80,7 +75,7 @@ TEST_F(GuiMarkers, CubeMapMarksNameTheirFaceAndTheViewShowsThatFace) {
                                                    "frames 1\n" + steps + "frames 1\n");
     ASSERT_EQ(run(args + second.string() + " --screenshot " + path("cube1.png").string()).exitCode, 0);
     const json j = sidecar("cube1.png");
-    const json* shown = viewNamed(j, "raymarch.shadow_map");
+    const json* shown = sidecarView(j, "raymarch.shadow_map");
     ASSERT_NE(shown, nullptr);
     EXPECT_EQ(shown->at("layer"), face);
     EXPECT_EQ(shown->at("markers").size(), cube->at("markers").size());

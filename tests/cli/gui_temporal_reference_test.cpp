@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <string>
 #include <utility>
@@ -14,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/cli_fixture.h"
+#include "cli/sidecar_views.h"
 #include "core/image_io.h"
 
 namespace viz::testing {
@@ -125,6 +127,11 @@ TEST_F(GuiTemporalReference, TheComparisonGridPlaysTheCameraPathAndScoresEachTil
         EXPECT_GT(t.at("change_rms").get<double>(), 0.0) << "the camera turned: every tile's L_air changed";
         ASSERT_GE(t.at("error_change_pairs").get<int>(), 3);
         EXPECT_TRUE(t.contains("error_change_rms"));
+        // The tile's caption ranks by the same figure: its image is named after it, titled with the caption.
+        const std::string title = sidecarViewTitle(j, "comparison:" + t.at("technique").get<std::string>());
+        char figure[32];
+        std::snprintf(figure, sizeof figure, "flicker %.3g", t.at("error_change_rms").get<double>());
+        EXPECT_NE(title.find(figure), std::string::npos) << title << " lacks " << figure;
         if (t.at("technique") == "raymarch") {
             EXPECT_LT(t.at("error_change_rms").get<double>(), t.at("change_rms").get<double>());
             EXPECT_GE(t.at("error_change_rms").get<double>(), lo);
@@ -132,6 +139,7 @@ TEST_F(GuiTemporalReference, TheComparisonGridPlaysTheCameraPathAndScoresEachTil
         }
     }
     EXPECT_EQ(gpuTiles, 6);
+    EXPECT_NE(sidecarViewTitle(j, "comparison:reference").find("path frames 2/2"), std::string::npos);
 }
 
 }  // namespace
