@@ -14,7 +14,7 @@ void ComparisonGrid::open(const viz::scene::Scene& scene, glm::ivec2 size, const
     mSize = size;
     for (const std::string& id : ids) mTiles.push_back(ComparisonTile{id, "", {}, 0.0, {}});
     const auto reference = viz::makeTechnique("reference");
-    mWorker = std::make_unique<CpuWorker>(mScene);
+    mWorker = &mPool.freshWorker(Worker::Comparison, mScene);
     mWorker->submit({"reference", mScene.camera, viz::completeSettings(*reference, {}), mSize.x, mSize.y});
     mWaiting = true;
 }
@@ -22,7 +22,8 @@ void ComparisonGrid::open(const viz::scene::Scene& scene, glm::ivec2 size, const
 void ComparisonGrid::close() {
     mPlayedFrames = 0;
     mTiles.clear();
-    mWorker.reset();
+    if (mWorker) mPool.dropWorker(Worker::Comparison);
+    mWorker = nullptr;
     mWaiting = mDue = false;
     mReference = {};
 }

@@ -21,6 +21,7 @@
 
 #include "cpu_worker.h"
 #include "pane_image.h"
+#include "run_pool.h"
 #include "temporal_monitor.h"
 #include "plot/plot.h"
 #include "report/error_metrics.h"
@@ -44,6 +45,9 @@ std::string tileErrorText(const viz::report::ErrorMetrics& error);
 
 class ComparisonGrid {
 public:
+    // The reference renders on the pool's Worker::Comparison thread, a new one for every open.
+    explicit ComparisonGrid(RunPool& pool) : mPool(pool) {}
+
     // Runs technique `id` once on `scene` at `size` with the window's settings for it (throws on failure).
     // `frame`: FrameInput::frame (0 for the still frame).
     using RunTechnique = std::function<viz::FrameOutput(const std::string& id, const viz::scene::Scene& scene,
@@ -88,8 +92,9 @@ public:
     nlohmann::json toJson() const;
 
 private:
+    RunPool& mPool;
     std::vector<ComparisonTile> mTiles;
-    std::unique_ptr<CpuWorker> mWorker;  // the reference
+    CpuWorker* mWorker = nullptr;  // the reference's, the pool's while the grid is open
     bool mWaiting = false, mDue = false;
     viz::Image mReference;
     viz::scene::Scene mScene;

@@ -23,6 +23,10 @@ void CpuWorker::loop(State& s) {
             if (s.quit) return;
             pending = std::move(*s.request);
             s.request.reset();
+            // Busy from the moment the request is taken, under the same lock: progress() never sees a
+            // moment with neither a request waiting nor a pass running while one is about to start.
+            s.progress = CpuProgress{.busy = true};
+            s.passStart = Clock::now();
             // Only this thread reads s.scene: it changes between requests, never under a running pass.
             if (s.nextScene) s.scene = std::move(*std::exchange(s.nextScene, std::nullopt));
         }
@@ -70,7 +74,7 @@ void CpuWorker::runPasses(State& s, const Pending& pending) {
         if (result.error.empty() && result.output.timing.clock != "cache") {
             s.secondsPerPixel = seconds / (double(sizes[i].x) * double(sizes[i].y));
         }
-        s.progress.busy = false;
+        // Still busy until the last pass has been stored (the loop's end says otherwise).
         const bool failed = !result.error.empty();
         s.result = std::move(result);
         // Wake the main thread out of glfwWaitEventsTimeout (thread-safe in GLFW). After quit the

@@ -44,7 +44,7 @@ const DifferenceRuns::Run* DifferenceRuns::get(const std::string& id, const Diff
     if (run.key == key) return &run;
     RunScheduler* runner = nullptr;
     try {
-        runner = &mRunnerFor(id);
+        runner = &runnerFor(id);
     } catch (const std::exception& e) {
         run = Run{key, {}, {}, e.what(), "", 0, false};
         return &run;
@@ -64,7 +64,7 @@ const DifferenceRuns::Run* DifferenceRuns::get(const std::string& id, const Diff
     // The worker keeps its own copy of the scene: handed the new one when the medium, lights or geometry
     // changed.
     const std::string scene = sceneKey(*request.scene, request.geometryHash);
-    if (!mWorker) mWorker = std::make_unique<CpuWorker>(*request.scene, mMake);
+    if (!mWorker) mWorker = &mPool.worker(Worker::Differences, *request.scene);
     else if (mWorkerSceneKey != scene) mWorker->setScene(*request.scene);
     mWorkerSceneKey = scene;
     run.ticket = mWorker->submit({id, request.camera, request.settings, request.size.x, request.size.y});
@@ -78,7 +78,7 @@ std::vector<std::string> DifferenceRuns::runDue(const std::function<DifferenceRe
         if (run.pending.empty()) continue;
         RunScheduler* runner = nullptr;
         try {
-            runner = &mRunnerFor(id);
+            runner = &runnerFor(id);
         } catch (const std::exception&) {
             continue;  // get() recorded the failure when it asked
         }

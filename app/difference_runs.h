@@ -17,6 +17,7 @@
 #include <glm/glm.hpp>
 
 #include "cpu_worker.h"
+#include "run_pool.h"
 #include "run_scheduler.h"
 #include "scene/scene.h"
 
@@ -50,12 +51,9 @@ public:
         std::uint64_t ticket = 0;  // the worker's for `pending` (CPU runs): a superseded request's pass is not it
         bool held = false;  // get() returned it for a different request (DifferenceRequest::hold)
     };
-    // The scheduler that runs technique `id` (shared with the comparison grid); throws for an unknown id.
-    using RunnerFor = std::function<RunScheduler&(const std::string&)>;
-
-    // `make`: what the CPU worker makes a technique with (the registry's; tests pass their own).
-    explicit DifferenceRuns(RunnerFor runnerFor, viz::TechniqueMaker make = nullptr)
-        : mRunnerFor(std::move(runnerFor)), mMake(std::move(make)) {}
+    // Runs with the pool's instances for Consumer::Others (shared with the comparison grid) and its
+    // Worker::Differences thread.
+    explicit DifferenceRuns(RunPool& pool) : mPool(pool) {}
 
     // `id`'s images for `request`: kept ones when the request is the same, a failure when the technique
     // cannot be made, otherwise null while they are computed (started here, or queued for runDue). With
@@ -74,10 +72,11 @@ public:
     bool pending() const;
 
 private:
-    RunnerFor mRunnerFor;
-    viz::TechniqueMaker mMake;
+    RunScheduler& runnerFor(const std::string& id) { return mPool.runner(Consumer::Others, id); }
+
+    RunPool& mPool;
     std::map<std::string, Run> mRuns;  // by technique id
-    std::unique_ptr<CpuWorker> mWorker;
+    CpuWorker* mWorker = nullptr;  // the pool's, once a CPU technique was asked for
     std::string mWorkerSceneKey;
     bool mDue = false;
 };

@@ -40,7 +40,7 @@ GuiApp::GuiApp(const GuiOptions& options, viz::scene::Scene scene, viz::Window& 
     mCanvas.background = mBackground.get();
     mCanvas.font = mFont.get();
     mImageDisplay = std::make_unique<ImageDisplay>();
-    mWorker = std::make_unique<CpuWorker>(mScene);
+    (void)cpuWorker();  // the main views' CPU worker starts with the window
     std::string wanted = options.technique.empty() ? mIds.front() : options.technique;
     if (!options.techniqueGiven && !mSession.technique.empty() &&
         std::find(mIds.begin(), mIds.end(), mSession.technique) != mIds.end())
@@ -116,7 +116,7 @@ int GuiApp::run() {
     auto last = Clock::now();
     while (!mWindow.shouldClose()) {
         const bool flying = mController.mode() == CameraController::Mode::Fly && anyFlyKeyDown();
-        const bool busy = mWorker->progress().busy || mDifferenceRuns.pending() || mComparison.pending();
+        const bool busy = cpuWorker().progress().busy || mDifferenceRuns.pending() || mComparison.pending();
         const bool automated = !mOptions.screenshot.empty() || !mOptions.script.empty();
         if (flying || mDirty || automated || mAnimation.playing || mDifferenceRuns.due() || mComparison.due() ||
             (mLesson && mLesson->animating())) {
@@ -153,9 +153,9 @@ int GuiApp::run() {
             }
             render();
         }
-        if (auto result = mWorker->take()) acceptCpuResult(std::move(*result));
+        if (auto result = cpuWorker().take()) acceptCpuResult(std::move(*result));
         // A lesson step's pixel: inspected once its full-size result is in (the value beside the truth).
-        if (mPendingInspect && mHaveOutput && mPass == mPassCount && !mWorker->progress().busy) {
+        if (mPendingInspect && mHaveOutput && mPass == mPassCount && !cpuWorker().progress().busy) {
             inspectPixel(mPendingInspect->x, mPendingInspect->y);
             mPendingInspect.reset();
         }
@@ -167,13 +167,13 @@ int GuiApp::run() {
             // Each frame runs the script's next actions; the window closes when it is done.
             // Each action waits for the runs it caused, but a held key counts window frames as a user's
             // would: flying with a CPU technique shown asks for a new frame every frame.
-            const bool settled = mHaveOutput && !mWorker->progress().busy && !mDifferenceRuns.pending() &&
+            const bool settled = mHaveOutput && !cpuWorker().progress().busy && !mDifferenceRuns.pending() &&
                                  !mComparison.pending() && !mAnimation.reference.busy();
             if ((settled || mScriptHeld >= 0) && !stepScript()) {
                 if (!mOptions.screenshot.empty()) writeScreenshot(mOptions.screenshot);
                 return 0;
             }
-        } else if (automated && mFramesDrawn >= mOptions.frames && mHaveOutput && !mWorker->progress().busy &&
+        } else if (automated && mFramesDrawn >= mOptions.frames && mHaveOutput && !cpuWorker().progress().busy &&
                    !mDifferenceRuns.pending()) {
             writeScreenshot(mOptions.screenshot);
             return 0;
@@ -226,8 +226,8 @@ void GuiApp::render() {
         mReduced = false;  // the worker's progressive passes play that role
         // While the animation plays a CPU technique keeps its still frame (seconds a pass: a request per
         // played frame would supersede every pass before it finished); play stopping asks again.
-        if (mAnimation.playing && (mHaveOutput || mWorker->progress().busy)) return;
-        mWorker->submit({t.id(), mScene.camera, mSettings, mOptions.width, mOptions.height});
+        if (mAnimation.playing && (mHaveOutput || cpuWorker().progress().busy)) return;
+        cpuWorker().submit({t.id(), mScene.camera, mSettings, mOptions.width, mOptions.height});
         return;
     }
     glm::ivec2 size{mOptions.width, mOptions.height};
@@ -288,7 +288,7 @@ void GuiApp::acceptCpuResult(CpuResult result) {
 }
 
 void GuiApp::sceneEdited() {
-    mWorker->setScene(mScene);
+    cpuWorker().setScene(mScene);
     replan();
 }
 

@@ -422,9 +422,6 @@ private:
     void beginWidgets(glm::ivec2 fb);
     void drawParameters(glm::ivec2 fb);
 
-    // The preset picker: "ours" (the defaults) or "paper" (the technique's paperSettings(), as --preset
-    // paper) for the parameters where the two differ; "(mixed)" when those parameters are neither.
-    void presetWidget(const std::string& id);
 
     // The scene pickers: the built-in scenes (and the file given on the command line, if any) in one
     // list, the stiff cases of `airlight report --suite stiff` in another (one long list would not fit
@@ -448,10 +445,7 @@ private:
     viz::scene::Light& selectedLight() { return mScene.lights[std::size_t(selectedLightIndex())]; }
     const viz::scene::Light& selectedLight() const { return mScene.lights[std::size_t(selectedLightIndex())]; }
 
-    // Where the light points and where it is: azimuth and elevation of the direction for spot and
-    // directional lights, position for point and spot lights (an area light's rectangle is scene
-    // geometry and stays put). Returns whether the light changed.
-    bool lightPlacementWidgets(viz::scene::Light& light);
+    // The preset picker and the technique's parameters (parameter_widgets.h), except the sub-steps.
     void parameterWidgets();
     void replan();
 
@@ -482,8 +476,9 @@ private:
     std::unique_ptr<DrawList> mDrawList;    // text and overlays, drawn last in one call
     std::unique_ptr<DrawList> mBackground;  // panels behind the images
     std::unique_ptr<ImageDisplay> mImageDisplay;
-    std::unique_ptr<CpuWorker> mWorker;
-    std::uint64_t mCpuShownTicket = 0;  // the request of mWorker's pass the main views show (none older after it)
+    // The main views' CPU worker (the pool's Worker::Views, made with the window).
+    CpuWorker& cpuWorker() { return mRuns.worker(Worker::Views, mScene); }
+    std::uint64_t mCpuShownTicket = 0;  // the request of the worker's pass the main views show (none older after it)
     float mScale = 1.0f;           // sizes' factor: the display's content scale times the UI scale
     float mContentScale = 1.0f;    // from GLFW (HiDPI)
     float mUiScale = 1.0f;         // --ui-scale, Ctrl+= / Ctrl+-
@@ -507,7 +502,7 @@ private:
     int mDragTitle = -1;                     // a title dragged onto another view swaps the two
     std::vector<Rect> mStripRects;           // open display strips' widget panels last frame
     // Difference views' other side (by technique id), through the same schedulers as the comparison grid.
-    DifferenceRuns mDifferenceRuns{[this](const std::string& id) -> RunScheduler& { return mRuns.runner(Consumer::Others, id); }};
+    DifferenceRuns mDifferenceRuns{mRuns};
     DifferenceRuns::Run mSelfRun;
     double mGridMilliseconds = 0.0;  // CPU time drawViewGrid took last frame
     double mUiMilliseconds = 0.0;    // CPU time of building the whole frame's UI (before its draw calls)
@@ -523,7 +518,7 @@ private:
 
     // What the frame is drawn into: draw lists, images, clickable and named rectangles (frame_canvas.h).
     FrameCanvas mCanvas;
-    ComparisonGrid mComparison;  // G
+    ComparisonGrid mComparison{mRuns};  // G
     std::unique_ptr<viz::ui::Context> mUi;   // the widgets
     viz::ui::Input mUiInput;                 // keys, text and wheel gathered since the last frame
     Rect mParamsRect;                        // the widget panel's area last frame

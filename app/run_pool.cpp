@@ -19,4 +19,21 @@ void RunPool::setViewsTimer(viz::StageTimer* timer) {
         if (key.first == Consumer::Views) runner->setTimer(timer);
 }
 
+CpuWorker& RunPool::worker(Worker who, const viz::scene::Scene& scene) {
+    std::unique_ptr<CpuWorker>& w = mWorkers[who];
+    if (!w) w = std::make_unique<CpuWorker>(scene, mMake);
+    return *w;
+}
+
+CpuWorker& RunPool::freshWorker(Worker who, const viz::scene::Scene& scene) {
+    mWorkers.erase(who);
+    return worker(who, scene);
+}
+
+bool RunPool::cpuBusy() const {
+    for (const auto& [who, w] : mWorkers)
+        if (w->progress().busy) return true;
+    return false;
+}
+
 }  // namespace airlight

@@ -80,7 +80,7 @@ void GuiApp::loadSessionNow() {
 void GuiApp::restoreSessionOverStep() {
     const bool lights = applyLightPlacements(mSession.lights, mScene);
     if (mSession.medium) mScene.medium = *mSession.medium;
-    if (mSession.medium || lights) mWorker->setScene(mScene);  // the CPU worker keeps its own copy of the scene
+    if (mSession.medium || lights) cpuWorker().setScene(mScene);  // the CPU worker keeps its own copy of the scene
     const auto it = std::find(mIds.begin(), mIds.end(), mSession.technique);
     selectTechnique(it == mIds.end() ? mCurrent : int(it - mIds.begin()));
     applySessionView();
@@ -95,7 +95,7 @@ void GuiApp::loadLessonScene(const std::string& name) {
     mLight = 0;
     mController = CameraController(mScene.camera, orbitDistance(mScene));
     mGizmoArm = kGizmoArm * mController.targetDistance();
-    mWorker->setScene(mScene);
+    cpuWorker().setScene(mScene);
     mIntensitySlider.forget();
     mSigmaSSlider.forget();
     mSigmaASlider.forget();
@@ -117,7 +117,7 @@ void GuiApp::applyLessonWindowState(const LessonWindowState& s) {
     }
     mScene.medium = s.medium;
     mScene.lights = s.lights;
-    if (lighting) mWorker->setScene(mScene);  // it keeps its own copy of the scene
+    if (lighting) cpuWorker().setScene(mScene);  // it keeps its own copy of the scene
     mController.place(s.camera, s.orbitTarget);
     mOptions.width = s.size.x;
     mOptions.height = s.size.y;

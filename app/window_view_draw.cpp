@@ -414,7 +414,7 @@ void GuiApp::drawStatusBands(DrawList& dl, const Rect& image) {
         dl.rect(band, {0.0f, 0.0f, 0.0f, 0.65f});
         dl.textClipped({band.min.x + 6.0f * mScale, band.min.y + 3.0f * mScale}, text, kText, band.max.x);
     }
-    const CpuProgress progress = mWorker->progress();
+    const CpuProgress progress = cpuWorker().progress();
     if (progress.busy && !technique().needsGl()) {
         // Progress of the running pass, estimated from the previous pass's time per pixel.
         // Pass 0: the request waits for the worker to take it (its previous pass is finishing).

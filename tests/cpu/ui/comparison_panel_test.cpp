@@ -73,7 +73,8 @@ TEST(ComparisonPanel, StillTilesSayTheirTimeAndErrorAndTheReferenceIsTheGroundTr
     nan.error.infPixels = 1;
     ComparisonTile failed = tile("polyvol", 0.0, 0.0, false);
     failed.failure = "shader did not compile\n0:12: syntax error";
-    ComparisonGrid grid;
+    RunPool pool;
+    ComparisonGrid grid(pool);
     grid.tiles().push_back(tile("reference", 0.0, 0.0));
     grid.tiles().push_back(tile("minmax", 12.345, 0.01234));
     grid.tiles().push_back(tile("slices", 1.0, 0.5, false));

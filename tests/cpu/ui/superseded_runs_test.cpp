@@ -5,81 +5,16 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
-#include <condition_variable>
 #include <memory>
-#include <mutex>
 #include <thread>
 
-#include "cpu_worker.h"
+#include "cpu/ui/gated_technique.h"
 #include "difference_runs.h"
 
 namespace airlight {
 namespace {
 
-using namespace std::chrono_literals;
-
-// Passes wait here until the test lets them go, one by one.
-struct Gate {
-    std::mutex mutex;
-    std::condition_variable changed;
-    int entered = 0, released = 0;
-
-    void pass() {
-        std::unique_lock lock(mutex);
-        const int me = ++entered;
-        changed.notify_all();
-        changed.wait(lock, [&] { return released >= me; });
-    }
-    // Waits (up to 20 s) until `n` passes have entered.
-    bool waitEntered(int n) {
-        std::unique_lock lock(mutex);
-        return changed.wait_for(lock, 20s, [&] { return entered >= n; });
-    }
-    void release() {
-        std::lock_guard lock(mutex);
-        ++released;
-        changed.notify_all();
-    }
-};
-
-class GatedTechnique : public viz::Technique {
-public:
-    explicit GatedTechnique(std::shared_ptr<Gate> gate) : mGate(std::move(gate)) {}
-    std::string id() const override { return "gated"; }
-    std::string description() const override { return "waits for the test"; }
-    const std::vector<viz::StageInfo>& stages() const override { return mStages; }
-    const std::vector<viz::ParamInfo>& params() const override { return mParams; }
-    bool needsGl() const override { return false; }
-    viz::Plan plan(const viz::scene::Scene&, const viz::Settings&) const override { return {}; }
-    viz::FrameOutput run(const viz::FrameInput& in) override {
-        mGate->pass();
-        viz::FrameOutput out;
-        out.airlight = viz::Image(in.width, in.height, 3);
-        for (float& v : out.airlight.pixels) v = float(in.scene->camera.position.x);
-        out.final = out.airlight;
-        return out;
-    }
-
-private:
-    std::shared_ptr<Gate> mGate;
-    std::vector<viz::StageInfo> mStages{{"gated.all", "All", "", {}, {}, 1}};
-    std::vector<viz::ParamInfo> mParams;
-};
-
-viz::scene::Camera cameraAt(double x) {
-    viz::scene::Camera c;
-    c.position = {x, 0.0, 0.0};
-    return c;
-}
-
-// Takes the worker's next result (up to 20 s).
-std::optional<CpuResult> nextResult(CpuWorker& worker) {
-    for (auto start = std::chrono::steady_clock::now(); std::chrono::steady_clock::now() - start < 20s;) {
-        if (auto r = worker.take()) return r;
-        std::this_thread::sleep_for(1ms);
-    }
-    return std::nullopt;
-}
+using namespace airlight::testing;
 
 // Waits (up to 20 s) for the worker's next accepted result.
 std::optional<std::string> polled(DifferenceRuns& runs) {
@@ -94,7 +29,7 @@ std::optional<std::string> polled(DifferenceRuns& runs) {
 TEST(SupersededRuns, EveryResultCarriesTheTicketOfTheRequestItAnswers) {
     auto gate = std::make_shared<Gate>();
     viz::scene::Scene scene;
-    CpuWorker worker(scene, [gate](const std::string&) { return std::make_unique<GatedTechnique>(gate); });
+    CpuWorker worker(scene, gatedMaker(gate));
     EXPECT_FALSE(worker.progress().busy);
     const std::uint64_t first = worker.submit({"gated", cameraAt(1.0), {}, 4, 3});
     EXPECT_TRUE(worker.progress().busy) << "a request not yet taken by the thread is work to wait for";
@@ -118,14 +53,8 @@ TEST(SupersededRuns, EveryResultCarriesTheTicketOfTheRequestItAnswers) {
 
 TEST(SupersededRuns, ADifferenceViewNeverKeepsASupersededPassUnderTheNewRequest) {
     auto gate = std::make_shared<Gate>();
-    std::map<std::string, std::unique_ptr<RunScheduler>> runners;
-    DifferenceRuns runs(
-        [&](const std::string& id) -> RunScheduler& {
-            auto& r = runners[id];
-            if (!r) r = std::make_unique<RunScheduler>(std::make_unique<GatedTechnique>(gate));
-            return *r;
-        },
-        [gate](const std::string&) { return std::make_unique<GatedTechnique>(gate); });
+    RunPool pool(gatedMaker(gate));
+    DifferenceRuns runs(pool);
     viz::scene::Scene scene;
     DifferenceRequest request{&scene, 0, cameraAt(1.0), {4, 3}, {}};
     EXPECT_EQ(runs.get("gated", request), nullptr);  // started
@@ -148,9 +77,8 @@ TEST(SupersededRuns, ADifferenceViewNeverKeepsASupersededPassUnderTheNewRequest)
 
 TEST(SupersededRuns, WhilePlayingACpuTechniquesLastImageStandsInsteadOfARequestPerFrame) {
     auto gate = std::make_shared<Gate>();
-    RunScheduler runner(std::make_unique<GatedTechnique>(gate));
-    DifferenceRuns runs([&](const std::string&) -> RunScheduler& { return runner; },
-                        [gate](const std::string&) { return std::make_unique<GatedTechnique>(gate); });
+    RunPool pool(gatedMaker(gate));
+    DifferenceRuns runs(pool);
     viz::scene::Scene scene;
     DifferenceRequest request{&scene, 0, cameraAt(1.0), {4, 3}, {}, true};
     EXPECT_EQ(runs.get("gated", request), nullptr);  // nothing yet: the first request starts
