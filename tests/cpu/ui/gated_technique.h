@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "cpu_worker.h"
-#include "debug/technique.h"
+#include "cpu/ui/fake_technique.h"
 
 namespace airlight::testing {
 
@@ -43,15 +43,11 @@ struct Gate {
     }
 };
 
-class GatedTechnique : public viz::Technique {
+class GatedTechnique : public FakeTechnique {
 public:
-    explicit GatedTechnique(std::shared_ptr<Gate> gate) : mGate(std::move(gate)) {}
-    std::string id() const override { return "gated"; }
-    std::string description() const override { return "waits for the test"; }
-    const std::vector<viz::StageInfo>& stages() const override { return mStages; }
-    const std::vector<viz::ParamInfo>& params() const override { return mParams; }
-    bool needsGl() const override { return false; }
-    viz::Plan plan(const viz::scene::Scene&, const viz::Settings&) const override { return {}; }
+    explicit GatedTechnique(std::shared_ptr<Gate> gate) : FakeTechnique("gated", "waits for the test"), mGate(std::move(gate)) {
+        mStages = {{"gated.all", "All", "", {}, {}, 1}};
+    }
     viz::FrameOutput run(const viz::FrameInput& in) override {
         mGate->pass();
         viz::FrameOutput out;
@@ -63,8 +59,6 @@ public:
 
 private:
     std::shared_ptr<Gate> mGate;
-    std::vector<viz::StageInfo> mStages{{"gated.all", "All", "", {}, {}, 1}};
-    std::vector<viz::ParamInfo> mParams;
 };
 
 inline viz::scene::Camera cameraAt(double x) {

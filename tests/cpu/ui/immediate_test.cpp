@@ -10,44 +10,12 @@
 
 #include "ui/font.h"
 #include "ui/immediate.h"
+#include "cpu/ui/synthetic_panel.h"
 
 namespace viz::ui {
 namespace {
 
-const FontAtlas& font() {
-    static const FontAtlas atlas = FontAtlas::bake(FontAtlas::kDefaultFontPath, 14.0f);
-    return atlas;
-}
-
-class ImmediateTest : public ::testing::Test {
-protected:
-    // Runs one frame: the UI is one panel over the whole 400x300 display.
-    void frame(const Input& in, const std::function<void(Context&)>& ui) {
-        ctx.beginFrame(in, {400.0f, 300.0f});
-        ctx.beginPanel("Panel", {{0.0f, 0.0f}, {400.0f, 300.0f}});
-        ui(ctx);
-        ctx.endPanel();
-        ctx.endFrame();
-    }
-    static Input at(glm::vec2 p, bool down = false) {
-        Input in;
-        in.mouse = p;
-        in.mouseDown = down;
-        return in;
-    }
-    static Input keys(std::vector<Key> k, bool shift = false) {
-        Input in;
-        in.keys = std::move(k);
-        in.shift = shift;
-        return in;
-    }
-    glm::vec2 centreOf(const std::string& name) const {
-        const auto it = ctx.widgetRects().find(name);
-        EXPECT_NE(it, ctx.widgetRects().end()) << name;
-        return it == ctx.widgetRects().end() ? glm::vec2(-1.0f) : (it->second.min + it->second.max) * 0.5f;
-    }
-    Context ctx{font()};
-};
+class ImmediateTest : public ::testing::Test, protected testing::SyntheticPanel {};
 
 TEST_F(ImmediateTest, AButtonClicksOnReleaseOverItAfterAPressOnIt) {
     int clicks = 0;

@@ -10,7 +10,7 @@
 
 #include "parameter_widgets.h"
 #include "techniques/registry.h"
-#include "ui/font.h"
+#include "cpu/ui/synthetic_panel.h"
 
 namespace airlight {
 namespace {
@@ -18,28 +18,7 @@ namespace {
 using viz::ui::Context;
 using viz::ui::Input;
 
-const viz::ui::FontAtlas& font() {
-    static const viz::ui::FontAtlas atlas = viz::ui::FontAtlas::bake(viz::ui::FontAtlas::kDefaultFontPath, 14.0f);
-    return atlas;
-}
-
-// One panel of 400x300 holding the widgets `ui` draws.
-struct Panel {
-    Context ctx{font()};
-    void frame(const Input& in, const std::function<void(Context&)>& ui) {
-        ctx.beginFrame(in, {400.0f, 300.0f});
-        ctx.beginPanel("Panel", {{0.0f, 0.0f}, {400.0f, 300.0f}});
-        ui(ctx);
-        ctx.endPanel();
-        ctx.endFrame();
-    }
-    static Input at(glm::vec2 p, bool down) {
-        Input in;
-        in.mouse = p;
-        in.mouseDown = down;
-        return in;
-    }
-};
+using Panel = viz::ui::testing::SyntheticPanel;
 
 // Every value the widget hands back while the mouse presses at `from`, moves to `to` in steps and lets go.
 void gesture(Panel& panel, const viz::ParamInfo& p, double& value, glm::vec2 from, glm::vec2 to,

@@ -8,15 +8,16 @@
 #include <array>
 #include <memory>
 
+#include "cpu/ui/fake_technique.h"
 #include "debug/stage_reuse.h"
 #include "run_scheduler.h"
 
 namespace airlight {
 namespace {
 
-class CountingTechnique : public viz::Technique {
+class CountingTechnique : public airlight::testing::FakeTechnique {
 public:
-    explicit CountingTechnique(unsigned instance) : mInstance(instance) {
+    explicit CountingTechnique(unsigned instance) : FakeTechnique("fake", "counts stage runs"), mInstance(instance) {
         mParams = {{"a", "", 1, 0, 100, true},  {"b", "", 2, 0, 100, true},  {"c", "", 3, 0, 100, true},
                    {"step", "", 0, 0, 4, true}, {"look", "", 0, 0, 1, true}};
         mStages = {{"fake.a", "A", "", {"a"}, {"fake.a"}, 1},
@@ -24,13 +25,6 @@ public:
                    {"fake.c", "C", "", {"c", "step"}, {"fake.c"}, 5, "step"},
                    {"fake.d", "D", "", {}, {"fake.d"}, 1}};
     }
-    std::string id() const override { return "fake"; }
-    std::string description() const override { return "counts stage runs"; }
-    const std::vector<viz::StageInfo>& stages() const override { return mStages; }
-    const std::vector<viz::ParamInfo>& params() const override { return mParams; }
-    bool needsGl() const override { return false; }
-    viz::Plan plan(const viz::scene::Scene&, const viz::Settings&) const override { return {}; }
-
     viz::FrameOutput run(const viz::FrameInput& in) override {
         viz::FrameOutput out;
         const int stop = in.stopAfterStage < 0 ? 3 : in.stopAfterStage;
@@ -69,8 +63,6 @@ private:
         return std::move(out);
     }
     unsigned mInstance;
-    std::vector<viz::ParamInfo> mParams;
-    std::vector<viz::StageInfo> mStages;
     viz::StageReuse mReuse;
     std::array<double, 4> mValue{};
 };
