@@ -156,10 +156,13 @@ void drawPlot(ui::DrawList& list, const ui::Rect& area, const PlotSpec& spec) {
     if (!spec.highlighted.empty()) legendWidth = std::max(legendWidth, font.measure(spec.highlightName));
     legendWidth += legendWidth > 0.0f ? line * 2.0f : 0.0f;
     const float pad = line * 0.5f;
+    // The last x label is centred on the frame's right end: the legend (or the area's edge) starts past
+    // its half.
+    const float rightGap = std::max(pad, (xt.labels.empty() ? 0.0f : font.measure(xt.labels.back()) * 0.5f) + pad * 0.5f);
     ui::Rect frame;
     frame.min = {area.min.x + pad + line + pad + yLabelWidth + pad,
                  area.min.y + pad + (spec.title.empty() ? 0.0f : line + pad) + (spec.yLabel.empty() ? 0.0f : line + pad)};
-    frame.max = {area.max.x - pad - legendWidth, area.max.y - pad - line - pad - line - pad};
+    frame.max = {area.max.x - rightGap - legendWidth, area.max.y - pad - line - pad - line - pad};
     // A narrow area drops the legend before the plot; one too small for any plot says so.
     bool legend = true;
     if (frame.max.x - frame.min.x < 10.0f && legendWidth > 0.0f) {
@@ -245,7 +248,7 @@ void drawPlot(ui::DrawList& list, const ui::Rect& area, const PlotSpec& spec) {
     // Legend: from the frame's top down; what does not fit above the area's bottom is counted in a last
     // line ("+3 more") instead of running out of the plot.
     float y = frame.min.y;
-    const float x = frame.max.x + pad;
+    const float x = frame.max.x + rightGap;
     int entries = int(spec.bands.size()) + (spec.highlighted.empty() ? 0 : 1);
     for (const Series& s : spec.series) entries += s.name.empty() ? 0 : 1;
     if (!legend) entries = 0;
