@@ -99,8 +99,7 @@ void ComparisonGrid::stopPlaying(const RunTechnique& run) {
 std::string ComparisonGrid::waitingText() const {
     if (!mWaiting) return "running...";
     const CpuProgress progress = mWorker ? mWorker->progress() : CpuProgress{};
-    if (progress.pass == 0) return "computing the reference... starting";
-    return "computing the reference... pass " + std::to_string(progress.pass) + "/" + std::to_string(progress.passCount);
+    return "computing the reference... " + passText(progress);
 }
 
 viz::plot::PlotSpec ComparisonGrid::errorAgainstTime() const {

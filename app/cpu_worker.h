@@ -45,6 +45,11 @@ struct CpuProgress {
     double estimate = 0.0;  // expected seconds for this pass, 0 = unknown
 };
 
+// "starting" while a request waits for its first pass, else "pass 2/3".
+inline std::string passText(const CpuProgress& p) {
+    return p.pass == 0 ? std::string("starting") : "pass " + std::to_string(p.pass) + "/" + std::to_string(p.passCount);
+}
+
 // Runs one CPU technique at a time in passes of growing resolution. A new request supersedes the
 // pending one and stops the running one after its current pass (Technique::run cannot be
 // interrupted): that pass's result still arrives, with the ticket of the request it answers, so a

@@ -46,7 +46,7 @@ const DifferenceRuns::Run* DifferenceRuns::get(const std::string& id, const Diff
     try {
         runner = &runnerFor(id);
     } catch (const std::exception& e) {
-        run = Run{key, {}, {}, e.what(), "", 0, false};
+        run = Run{.key = key, .failure = e.what()};
         return &run;
     }
     if (run.pending == key) return nullptr;
@@ -86,7 +86,7 @@ std::vector<std::string> DifferenceRuns::runDue(const std::function<DifferenceRe
         const DifferenceRequest request = current(id);
         const std::string key = std::exchange(run.pending, std::string());
         if (key != runKey(id, request)) continue;  // stale: the next get asks again
-        run = Run{key, {}, {}, "", "", 0, false};
+        run = Run{.key = key};
         try {
             viz::scene::Scene scene = *request.scene;
             scene.camera = request.camera;

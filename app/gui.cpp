@@ -17,6 +17,7 @@ namespace airlight {
 GuiApp::GuiApp(const GuiOptions& options, viz::scene::Scene scene, viz::Window& window, SessionState session,
                std::string notice)
     : mOptions(options)
+    , mScript(options.script, options.scriptPath)
     , mSession(std::move(session))
     , mNotice(std::move(notice))
     , mScene(std::move(scene))
@@ -169,7 +170,7 @@ int GuiApp::run() {
             // would: flying with a CPU technique shown asks for a new frame every frame.
             const bool settled = mHaveOutput && !cpuWorker().progress().busy && !mDifferenceRuns.pending() &&
                                  !mComparison.pending() && !mAnimation.reference.busy();
-            if ((settled || mScriptHeld >= 0) && !stepScript()) {
+            if ((settled || mScript.heldKey() >= 0) && !mScript.step(*this)) {
                 if (!mOptions.screenshot.empty()) writeScreenshot(mOptions.screenshot);
                 return 0;
             }

@@ -77,27 +77,17 @@
 #include "app_state.h"
 #include "input_table.h"
 #include "scene_file.h"
+#include "script_player.h"
 #include "window_common.h"
 
 namespace airlight {
 
-class GuiApp : public LessonHost {
+class GuiApp : public LessonHost, private ScriptHost {
 public:
     GuiApp(const GuiOptions& options, viz::scene::Scene scene, viz::Window& window, SessionState session,
            std::string notice);
     ~GuiApp();
     int run();
-
-    // ---- scripted actions (ui_script.h) ----
-
-    // The rectangle of a widget, view or sidebar item drawn last frame.
-    Rect scriptTarget(const ScriptAction& a) const;
-
-    // Runs actions until one needs frames to pass; false when the script is done.
-    // A widget named by a script action is scrolled into view first, as a user would: the request is
-    // served on the next frame and the new rectangle known the frame after. Returns true while waiting.
-    bool revealScriptTarget(const ScriptAction& a);
-    bool stepScript();
 
     // The back buffer as drawn (before the swap) to the PNG, and the views' rectangles beside it.
     // The window as PNG (when `image`) and its sidecar JSON (the same path, .json).
@@ -106,6 +96,22 @@ public:
     void writeSidecar(const std::string& path);
 
 private:
+    // ---- ScriptHost: the script player's actions on the window (script_player.h) ----
+
+    std::optional<Rect> scriptRect(const std::string& name) const override;
+    std::string knownNames() const override;
+    bool isWidget(const std::string& name) const override;
+    void revealWidget(const std::string& name) override;
+    void pressKey(int key, int modifiers) override;
+    void typeText(const std::string& text) override;
+    void dropFile(const std::string& path) override;
+    void hoverAt(glm::vec2 p) override;
+    void dragTo(glm::vec2 p) override;
+    void leftButton(bool press, glm::vec2 p) override;
+    void wheel(float notches) override;
+    void screenshot(const std::string& path, bool image) override;
+    bool appendStats(const std::string& path) override;
+
     // ---- the session file ----
 
     // The window's state as one value (app_state.h); the session, the lesson state and the sidecar's
@@ -451,7 +457,7 @@ private:
 
     GuiOptions mOptions;
     long mGlErrors = 0;  // GL errors seen by the script's stats actions
-    int mScriptRevealFrames = 0;  // frames left until a script action's widget is scrolled into view
+    ScriptPlayer mScript;  // gui --script
     WindowAnimation mAnimation;  // P
     std::vector<std::string> mSceneChoices, mStiffChoices;  // the scene pickers' lists (built lazily)
     SessionState mSession;  // as loaded (or defaults); settings of techniques not yet visited come from it
@@ -538,8 +544,6 @@ private:
     SceneFileWatch mSceneWatch;                // the scene file, when the scene is one
     std::string mOpenPath;                     // File > Open's text field
     bool mTextTab = false, mTextEnter = false;  // Tab / Enter pressed in a text field this frame
-    int mScriptHeld = -1;           // the key a script's `hold` keeps down (-1: none)
-    bool mScriptHeldShift = false;  // ... with Shift
     // The panel's light intensity (candela or lux) and medium coefficients (per scene unit): declared log
     // ranges covering every built-in scene and stiff case (millimetre models, scales 1e-3 to 1e4).
     OnOffSlider mIntensitySlider{1e-6f, 1e12f, 1.0}, mSigmaSSlider{1e-7f, 1e3f, 0.1}, mSigmaASlider{1e-7f, 1e3f, 0.01};
@@ -552,12 +556,6 @@ private:
     GLFWcursor* mArrowCursor = nullptr;       // stays null: the default cursor
     GLFWcursor* mColumnCursor = nullptr;      // created on first use, destroyed with the app
     GLFWcursor* mRowCursor = nullptr;
-    int mScriptDragStep = 0;                 // a script's drag: 0 before the press, 1-4 moving, 5 release
-    glm::vec2 mScriptDragFrom{0.0f}, mScriptDragTo{0.0f};  // its ends, fixed at the press
-    std::size_t mScriptIndex = 0;
-    int mScriptWait = 0;
-    std::optional<bool> mSyntheticDown;  // the script holds the left button (down / just released)
-    glm::vec2 mScriptPoint{0.0f};
     int mFramesDrawn = 0;
     Rect mViewArea;
     float mImageHeight = 1.0f;

@@ -1,138 +1,48 @@
 // The window under automation: the script player (gui --script) and the screenshot sidecar.
 #include "gui_app.h"
+#include "sidecar_json.h"
 
 #include <cmath>
 
 namespace airlight {
 
-Rect GuiApp::scriptTarget(const ScriptAction& a) const {
-    if (const std::optional<Rect> r = mCanvas.screen.find(a.target, mUi->widgetRects())) return *r;
-    throw viz::InputError(mOptions.scriptPath + ":" + std::to_string(a.line) + ": nothing named '" + a.target +
-                          "' is on screen (on screen: " + mCanvas.screen.known(mUi->widgetRects()) + ")");
-}
+// ---- ScriptHost: what the script player (script_player.h) does to the window ----
 
-bool GuiApp::revealScriptTarget(const ScriptAction& a) {
-    if (mScriptRevealFrames > 0) return --mScriptRevealFrames > 0;  // 0: revealed, go on
-    if (!mUi->widgetRects().count(a.target)) return false;
-    mUi->reveal(a.target);
-    mScriptRevealFrames = 2;
-    return true;
-}
+std::optional<Rect> GuiApp::scriptRect(const std::string& name) const { return mCanvas.screen.find(name, mUi->widgetRects()); }
 
-bool GuiApp::stepScript() {
-    while (mScriptIndex < mOptions.script.size()) {
-        const ScriptAction& a = mOptions.script[mScriptIndex];
-        switch (a.kind) {
-            case ScriptAction::Kind::Frames:
-                if (mScriptWait == 0) mScriptWait = a.frames;
-                if (--mScriptWait > 0) return true;
-                ++mScriptIndex;
-                return true;
-            case ScriptAction::Kind::Key:
-                onKey(scriptKeyCode(a.target), GLFW_PRESS, a.modifiers);
-                ++mScriptIndex;
-                return true;
-            case ScriptAction::Kind::Hold:
-                if (mScriptWait == 0) {
-                    onKey(scriptKeyCode(a.target), GLFW_PRESS, a.modifiers);
-                    mScriptHeld = scriptKeyCode(a.target);
-                    mScriptHeldShift = (a.modifiers & GLFW_MOD_SHIFT) != 0;
-                    mScriptWait = a.frames + 1;
-                }
-                if (--mScriptWait > 0) return true;
-                mScriptHeld = -1;
-                ++mScriptIndex;
-                return true;
-            case ScriptAction::Kind::Hover: {
-                if (revealScriptTarget(a)) return true;
-                const Rect r = scriptTarget(a);
-                mHover = r.min + a.fraction * r.size();
-                ++mScriptIndex;
-                return true;
-            }
-            case ScriptAction::Kind::Wheel: {
-                if (revealScriptTarget(a)) return true;
-                const Rect r = scriptTarget(a);
-                mHover = r.min + 0.5f * r.size();
-                onScroll(double(a.notches));
-                ++mScriptIndex;
-                return true;
-            }
-            case ScriptAction::Kind::Screenshot:
-            case ScriptAction::Kind::Sidecar:
-                writeScreenshot(a.target, a.kind == ScriptAction::Kind::Screenshot);
-                ++mScriptIndex;
-                break;
-            case ScriptAction::Kind::Type:
-                if (mUi->textFocused()) {
-                    mUiInput.text += a.target;
-                } else {
-                    for (unsigned char c : a.target) onChar(c);
-                }
-                ++mScriptIndex;
-                return true;
-            case ScriptAction::Kind::Drop:
-                onDrop({a.target});
-                ++mScriptIndex;
-                return true;
-            case ScriptAction::Kind::Stats: {
-                while (glGetError() != GL_NO_ERROR) ++mGlErrors;
-                std::ofstream out(a.target, std::ios::app);
-                out << statsJsonLine(currentProcessStats(), long(mFramesDrawn), mGlErrors) << "\n";
-                if (!out) throw viz::InputError(mOptions.scriptPath + ":" + std::to_string(a.line) + ": cannot append to '" + a.target + "'");
-                ++mScriptIndex;
-                break;
-            }
-            case ScriptAction::Kind::Drag: {
-                // Frame 1: press at the start; frames 2-5: move a quarter of the way each; then release.
-                // Both ends are fixed at the press: what is dragged (a divider, a handle) moves.
-                if (mScriptDragStep == 0) {
-                    const Rect r = scriptTarget(a);
-                    Rect onto = r;
-                    if (!a.onto.empty()) {
-                        ScriptAction other = a;
-                        other.target = a.onto;
-                        onto = scriptTarget(other);
-                    }
-                    mScriptDragFrom = r.min + a.fraction * r.size();
-                    mScriptDragTo = onto.min + a.to * onto.size();
-                    mHover = mScriptDragFrom;
-                    mSyntheticDown = true;  // widgets (a splitter, a slider) see the button held
-                    onMouseButtonAt(GLFW_MOUSE_BUTTON_LEFT, GLFW_PRESS, mScriptDragFrom);
-                    mScriptDragStep = 1;
-                } else if (mScriptDragStep <= 4) {
-                    const glm::vec2 p = mScriptDragFrom + (mScriptDragTo - mScriptDragFrom) * (float(mScriptDragStep) / 4.0f);
-                    onCursorPixels(p);
-                    ++mScriptDragStep;
-                } else {
-                    mSyntheticDown.reset();
-                    onMouseButtonAt(GLFW_MOUSE_BUTTON_LEFT, GLFW_RELEASE, mScriptDragTo);
-                    mScriptDragStep = 0;
-                    ++mScriptIndex;
-                }
-                return true;
-            }
-            case ScriptAction::Kind::Click: {
-                // Frame 1: move there and press; frame 2: release (widgets click on release).
-                if (!mSyntheticDown) {
-                    if (revealScriptTarget(a)) return true;
-                    const Rect r = scriptTarget(a);
-                    mScriptPoint = r.min + a.fraction * r.size();
-                    mHover = mScriptPoint;
-                    mSyntheticDown = true;
-                    onMouseButtonAt(GLFW_MOUSE_BUTTON_LEFT, GLFW_PRESS, mScriptPoint);
-                } else {
-                    mHover = mScriptPoint;
-                    mSyntheticDown = false;
-                    onMouseButtonAt(GLFW_MOUSE_BUTTON_LEFT, GLFW_RELEASE, mScriptPoint);
-                    mSyntheticDown.reset();
-                    ++mScriptIndex;
-                }
-                return true;
-            }
-        }
+std::string GuiApp::knownNames() const { return mCanvas.screen.known(mUi->widgetRects()); }
+
+bool GuiApp::isWidget(const std::string& name) const { return mUi->widgetRects().count(name) > 0; }
+
+void GuiApp::revealWidget(const std::string& name) { mUi->reveal(name); }
+
+void GuiApp::pressKey(int key, int modifiers) { onKey(key, GLFW_PRESS, modifiers); }
+
+void GuiApp::typeText(const std::string& text) {
+    if (mUi->textFocused()) {
+        mUiInput.text += text;
+    } else {
+        for (unsigned char c : text) onChar(c);
     }
-    return false;
+}
+
+void GuiApp::dropFile(const std::string& path) { onDrop({path}); }
+
+void GuiApp::hoverAt(glm::vec2 p) { mHover = p; }
+
+void GuiApp::dragTo(glm::vec2 p) { onCursorPixels(p); }
+
+void GuiApp::leftButton(bool press, glm::vec2 p) { onMouseButtonAt(GLFW_MOUSE_BUTTON_LEFT, press ? GLFW_PRESS : GLFW_RELEASE, p); }
+
+void GuiApp::wheel(float notches) { onScroll(double(notches)); }
+
+void GuiApp::screenshot(const std::string& path, bool image) { writeScreenshot(path, image); }
+
+bool GuiApp::appendStats(const std::string& path) {
+    while (glGetError() != GL_NO_ERROR) ++mGlErrors;
+    std::ofstream out(path, std::ios::app);
+    out << statsJsonLine(currentProcessStats(), long(mFramesDrawn), mGlErrors) << "\n";
+    return bool(out);
 }
 
 void GuiApp::writeScreenshot(const std::string& path, bool image) {
@@ -184,32 +94,11 @@ void GuiApp::writeSidecar(const std::string& path) {
                                     {"notice", mNotice},
                                     {"views", views}};
     sidecar.update(sidecarStateOf(appState()));  // the app state: one function, as the session file
-    {
-        // The plan the parameter panel's plan section shows: skipped stages and every feature, with reasons.
-        const viz::Plan& plan = shownPlan();
-        nlohmann::json skipped = nlohmann::json::array(), features = nlohmann::json::array();
-        for (const viz::StagePlan& st : plan.stages)
-            if (!st.runs) skipped.push_back({{"stage", st.stage}, {"why", st.why}});
-        for (const viz::FeaturePlan& f : plan.features)
-            features.push_back({{"feature", f.feature}, {"on", f.enabled}, {"why", f.why}});
-        sidecar["plan"] = {{"skipped", skipped}, {"features", features}};
-    }
-    {
-        nlohmann::json lights = nlohmann::json::array();
-        for (const auto& l : mScene.lights)
-            lights.push_back({{"name", l.name},
-                              {"position", {l.position.x, l.position.y, l.position.z}},
-                              {"direction", {l.direction.x, l.direction.y, l.direction.z}},
-                              {"intensity", l.intensity}});
-        sidecar["lights"] = lights;
-    }
+    // The plan the parameter panel's plan section shows: skipped stages and every feature, with reasons.
+    sidecar["plan"] = planJson(shownPlan());
+    sidecar["lights"] = lightsJson(mScene.lights);
     // The last run's stage times with the clock that took them (a GPU's ring: the latest known).
-    if (mHaveOutput) {
-        nlohmann::json stages = nlohmann::json::array();
-        for (const viz::StageTiming& s : mOutput.timing.stages)
-            if (std::isfinite(s.milliseconds)) stages.push_back({{"stage", s.stage}, {"ms", s.milliseconds}});
-        sidecar["timing"] = {{"clock", mOutput.timing.clock}, {"stages", stages}};
-    }
+    if (mHaveOutput) sidecar["timing"] = timingJson(mOutput.timing);
     // The light gizmo in the first view that shows it: its handles in that view's frame pixels.
     sidecar["gizmo"] = nullptr;
     for (const ViewCellRect& c : mCells) {
@@ -295,32 +184,8 @@ nlohmann::json GuiApp::viewSidecar(int id, const ViewState& v) {
                         {"negative_pixels", v.counts.negative},
                         {"nan_pixels", v.counts.nan},
                         {"inf_pixels", v.counts.inf}};
-    if (v.colourBar.kind != ColourBar::Kind::None) {
-        // What the bar under the view says, as drawn in the last frame (non-finite numbers as null).
-        const auto number = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
-        const ColourBar& b = v.colourBar;
-        const char* kind = b.kind == ColourBar::Kind::Ramp ? "ramp" : b.kind == ColourBar::Kind::Classes ? "classes" : "picture";
-        nlohmann::json bar = {{"kind", kind},
-                              {"lo", number(b.lo)}, {"hi", number(b.hi)}, {"log", b.logarithmic},
-                              {"units", b.units}, {"caption", b.caption},
-                              {"rect", {v.bar.min.x, v.bar.min.y, v.bar.max.x, v.bar.max.y}},
-                              {"ramp_rect", {v.ramp.min.x, v.ramp.min.y, v.ramp.max.x, v.ramp.max.y}}};
-        nlohmann::json ticks = nlohmann::json::array(), at = nlohmann::json::array();
-        for (std::size_t i = 0; i < b.ticks.size(); ++i) ticks.push_back(number(b.ticks[i])), at.push_back(b.tickAt[i]);
-        bar["ticks"] = ticks;
-        bar["tick_labels"] = b.tickLabels;
-        bar["tick_at"] = at;
-        if (b.kind == ColourBar::Kind::Classes) bar["classes"] = b.classLabels;
-        nlohmann::json legend = nlohmann::json::array();
-        for (const LegendSwatch& sw : b.legend)
-            // The overlays' values are NaN and Inf themselves: named, not null.
-            legend.push_back({{"label", sw.label},
-                              {"value", std::isfinite(sw.value) ? nlohmann::json(sw.value)
-                                                                : nlohmann::json(std::isnan(sw.value) ? "NaN" : sw.value > 0 ? "Inf" : "-Inf")},
-                              {"pixels", sw.pixels}, {"sentinel", sw.sentinel}});
-        bar["legend"] = legend;
-        j["colour_bar"] = std::move(bar);
-    }
+    // What the bar under the view says, as drawn in the last frame.
+    if (v.colourBar.kind != ColourBar::Kind::None) j["colour_bar"] = colourBarJson(v.colourBar, v.bar, v.ramp);
     if (d.difference != DifferenceMode::Off) {
         // Figures only where they were computed and are defined (relative L2 is not against a black
         // reference); the note says why one is missing.

@@ -153,7 +153,7 @@ void GuiApp::beginWidgets(glm::ivec2 fb) {
     viz::ui::Input in = mUiInput;
     in.mouse = mHover;
     mHoverDrawn = mHover;
-    in.mouseDown = mSyntheticDown ? *mSyntheticDown
+    in.mouseDown = mScript.leftButtonDown() ? *mScript.leftButtonDown()
                                   : glfwGetMouseButton(mWindow.handle(), GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
     mUiInput = {};
     mUi->setTime(glfwGetTime());

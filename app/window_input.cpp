@@ -365,7 +365,7 @@ void GuiApp::onScroll(double dy) {
     mDirty = true;
 }
 
-bool GuiApp::keyDown(int key) const { return glfwGetKey(mWindow.handle(), key) == GLFW_PRESS || key == mScriptHeld; }
+bool GuiApp::keyDown(int key) const { return glfwGetKey(mWindow.handle(), key) == GLFW_PRESS || key == mScript.heldKey(); }
 
 bool GuiApp::anyFlyKeyDown() const {
     for (int key : {GLFW_KEY_W, GLFW_KEY_A, GLFW_KEY_S, GLFW_KEY_D, GLFW_KEY_Q, GLFW_KEY_E})
@@ -378,7 +378,7 @@ void GuiApp::fly(double dt) {
     const glm::dvec3 dir{down(GLFW_KEY_D) - down(GLFW_KEY_A), down(GLFW_KEY_E) - down(GLFW_KEY_Q),
                          down(GLFW_KEY_W) - down(GLFW_KEY_S)};
     if (dir == glm::dvec3(0.0)) return;
-    const bool fast = keyDown(GLFW_KEY_LEFT_SHIFT) || (mScriptHeld >= 0 && mScriptHeldShift);
+    const bool fast = keyDown(GLFW_KEY_LEFT_SHIFT) || (mScript.heldKey() >= 0 && mScript.heldShift());
     mController.move(dir * (kFlySpeed * dt * (fast ? 4.0 : 1.0)));
     mDirty = true;
 }

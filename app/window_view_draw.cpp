@@ -418,11 +418,10 @@ void GuiApp::drawStatusBands(DrawList& dl, const Rect& image) {
     if (progress.busy && !technique().needsGl()) {
         // Progress of the running pass, estimated from the previous pass's time per pixel.
         // Pass 0: the request waits for the worker to take it (its previous pass is finishing).
-        std::string text = progress.pass == 0
-                               ? std::string("computing... starting")
-                               : "computing... pass " + std::to_string(progress.pass) + "/" +
-                                     std::to_string(progress.passCount) + " (" + std::to_string(progress.size.x) +
-                                     "x" + std::to_string(progress.size.y) + ")  " + format("%.1f s", progress.elapsed);
+        std::string text = "computing... " + passText(progress);
+        if (progress.pass > 0)
+            text += " (" + std::to_string(progress.size.x) + "x" + std::to_string(progress.size.y) + ")  " +
+                    format("%.1f s", progress.elapsed);
         float fraction = -1.0f;
         // An estimate the pass has clearly outrun (the previous pass came from the cache, say)
         // is dropped rather than shown as a full bar.
