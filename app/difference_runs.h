@@ -44,10 +44,10 @@ std::string runKey(const std::string& id, const DifferenceRequest& request);
 class DifferenceRuns {
 public:
     struct Run {
-        std::string key;  // the request it was run for
-        viz::Image airlight, final;
-        std::string failure;
-        std::string pending;  // the key of the run being computed (worker or queue)
+        std::string key{};  // the request it was run for
+        viz::Image airlight{}, final{};
+        std::string failure{};
+        std::string pending{};  // the key of the run being computed (worker or queue)
         std::uint64_t ticket = 0;  // the worker's for `pending` (CPU runs): a superseded request's pass is not it
         bool held = false;  // get() returned it for a different request (DifferenceRequest::hold)
     };
