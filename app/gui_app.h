@@ -396,13 +396,7 @@ private:
     // read a texel back for them).
     std::vector<viz::ViewMarker> markersFor(const ViewState& v);
 
-    // A small cross with a dark outline, so that it shows on bright and dark images alike.
-    void crosshair(DrawList& dl, glm::vec2 c, const Rect& clip);
 
-    // Technique markers: data uv (row 0 = the first row stored; a GL texture's row 0, shown at the bottom,
-    // also when the pane shows a layer read back) -> the view's image uv -> window. Marks of another layer
-    // (cube face, array layer) than the one shown are left out.
-    void drawMarkers(DrawList& dl, const ViewState& v, const std::vector<viz::ViewMarker>& marks);
 
     // "rendering..." while a slow GPU run blocks, the CPU worker's progress while it computes.
     void drawStatusBands(DrawList& dl, const Rect& image);

@@ -1,6 +1,7 @@
 // Drawing the view grid: each view's title, image, texel values, markers, plots, display strip and
 // histogram, and the dividers between views.
 #include "gui_app.h"
+#include "view_markers.h"
 
 namespace airlight {
 
@@ -270,9 +271,9 @@ void GuiApp::drawView(int id, ViewState& v) {
         // that screenshots and a projector show which pixel the others follow.
         if (id != mHoveredView) readAt = *mLinkedPixel;
         const glm::dvec2 uv = (glm::dvec2(*mLinkedPixel) + 0.5) / glm::dvec2(v.pane.size);
-        crosshair(dl, v.image.min + glm::vec2(v.transform.uvToPane(uv)) * v.image.size(), v.image);
+        drawCrosshair(dl, v.image.min + glm::vec2(v.transform.uvToPane(uv)) * v.image.size(), v.image, mScale);
     }
-    if (mLinkedPixel && !isScreenSpace(v) && v.pane.texture != 0) drawMarkers(dl, v, markersFor(v));
+    if (mLinkedPixel && !isScreenSpace(v) && v.pane.texture != 0) drawViewMarkers(dl, *mFont, mScale, v, markersFor(v));
     if (isScreenSpace(v)) mInspector.mark(dl, v.image, v.transform, {mOptions.width, mOptions.height}, mScale);
     drawGizmo(dl, id, v);
 
@@ -317,92 +318,6 @@ std::vector<viz::ViewMarker> GuiApp::markersFor(const ViewState& v) {
         mError = e.what();
         return {};
     }
-}
-
-void GuiApp::crosshair(DrawList& dl, glm::vec2 c, const Rect& clip) {
-    if (!clip.contains(c)) return;
-    const float r = 7.0f * mScale, w = 1.5f * mScale;
-    for (int pass = 0; pass < 2; ++pass) {
-        const float width = pass == 0 ? w + 2.0f * mScale : w;
-        const glm::vec4 colour = pass == 0 ? glm::vec4(0.0f, 0.0f, 0.0f, 0.8f) : glm::vec4(0.2f, 1.0f, 1.0f, 1.0f);
-        dl.line({c.x - r, c.y}, {c.x - 2.0f * mScale, c.y}, width, colour);
-        dl.line({c.x + 2.0f * mScale, c.y}, {c.x + r, c.y}, width, colour);
-        dl.line({c.x, c.y - r}, {c.x, c.y - 2.0f * mScale}, width, colour);
-        dl.line({c.x, c.y + 2.0f * mScale}, {c.x, c.y + r}, width, colour);
-    }
-}
-
-void GuiApp::drawMarkers(DrawList& dl, const ViewState& v, const std::vector<viz::ViewMarker>& marks) {
-    const auto toWindow = [&](glm::vec2 data) {
-        const glm::dvec2 uv{data.x, v.pane.glRows ? 1.0 - double(data.y) : double(data.y)};
-        return v.image.min + glm::vec2(v.transform.uvToPane(uv)) * v.image.size();
-    };
-    dl.pushClip(v.image);
-    std::vector<Rect> placed;  // labels drawn so far
-    glm::vec4 colour(0.0f);
-    float width = 1.0f;
-    const float line = mFont->lineHeight();
-    const auto shown = [&](const viz::ViewMarker& m) { return m.layer < 0 || m.layer == v.pane.layer; };
-    // Several labelled points (a ray's crossings lie close together): each gets a number beside it and
-    // its label goes into a key at the image's bottom left, so that labels do not pile up.
-    const auto points = std::count_if(marks.begin(), marks.end(), [&](const viz::ViewMarker& m) {
-        return shown(m) && m.from == m.to && !m.label.empty();
-    });
-    std::vector<std::string> key;
-    for (std::size_t i = 0; i < marks.size(); ++i) {
-        if (!shown(marks[i])) continue;
-        const glm::vec2 a = toWindow(marks[i].from), b = toWindow(marks[i].to);
-        // The first mark thin cyan, the others yellow; an unlabelled one continues the previous (a
-        // polyline).
-        if (i == 0 || !marks[i].label.empty()) {
-            colour = i == 0 ? glm::vec4(0.2f, 1.0f, 1.0f, 0.9f) : glm::vec4(1.0f, 0.85f, 0.2f, 1.0f);
-            width = i == 0 ? 1.0f : 2.0f;
-        }
-        if (a == b) {
-            crosshair(dl, a, v.image);
-        } else {
-            dl.line(a, b, 3.0f * mScale, {0.0f, 0.0f, 0.0f, 0.6f});
-            dl.line(a, b, width * mScale, colour);
-        }
-        const glm::vec2 at{std::max(std::min(a.x, b.x), v.image.min.x) + 4.0f * mScale,
-                           std::min(a.y, b.y) - line - 2.0f * mScale};
-        if (marks[i].label.empty()) continue;  // a piece of a polyline labelled once
-        if (a == b && points > 2) {
-            const std::string tag = std::to_string(key.size() + 1);
-            const glm::vec2 tagAt = a + glm::vec2(5.0f, -line - 1.0f) * glm::vec2(mScale, 1.0f);
-            dl.rect({tagAt - 1.0f, tagAt + glm::vec2(mFont->measure(tag) + 2.0f, line)}, {0.0f, 0.0f, 0.0f, 0.6f});
-            dl.textClipped(tagAt, tag, colour, v.image.max.x);
-            key.push_back(tag + "  " + marks[i].label);
-            continue;
-        }
-        // A label that would run past the image's right edge moves left to end there; one that would
-        // cover a label already placed moves down a line (marks close together, e.g. a ray's crossings).
-        const float labelWidth = mFont->measure(marks[i].label);
-        const float labelX = i == 0 ? at.x : std::max(a.x, b.x) + 4.0f * mScale;
-        glm::vec2 labelAt{std::max(v.image.min.x, std::min(labelX, v.image.max.x - labelWidth - 2.0f)),
-                          std::clamp(i == 0 ? at.y : std::max(a.y, b.y) + 2.0f * mScale, v.image.min.y,
-                                     v.image.max.y - line)};
-        const auto overlaps = [&](const Rect& r) {
-            return labelAt.x < r.max.x && labelAt.x + labelWidth > r.min.x && labelAt.y < r.max.y &&
-                   labelAt.y + line > r.min.y;
-        };
-        for (int tries = 0; tries < 8 && std::any_of(placed.begin(), placed.end(), overlaps); ++tries)
-            labelAt.y += line + 1.0f;
-        placed.push_back({labelAt, labelAt + glm::vec2(labelWidth, line)});
-        dl.rect({labelAt - 1.0f, labelAt + glm::vec2(labelWidth + 2.0f, line)}, {0.0f, 0.0f, 0.0f, 0.6f});
-        dl.textClipped(labelAt, marks[i].label, colour, v.image.max.x);
-    }
-    if (!key.empty()) {
-        float keyWidth = 0.0f;
-        for (const std::string& k : key) keyWidth = std::max(keyWidth, mFont->measure(k));
-        const float pad = 3.0f * mScale;
-        const glm::vec2 origin{v.image.min.x + pad, v.image.max.y - pad - float(key.size()) * line};
-        dl.rect({origin - pad, origin + glm::vec2(keyWidth + pad, float(key.size()) * line + pad)},
-                {0.0f, 0.0f, 0.0f, 0.7f});
-        for (std::size_t k = 0; k < key.size(); ++k)
-            dl.textClipped(origin + glm::vec2(0.0f, float(k) * line), key[k], {1.0f, 0.85f, 0.2f, 1.0f}, v.image.max.x);
-    }
-    dl.popClip();
 }
 
 void GuiApp::drawStatusBands(DrawList& dl, const Rect& image) {
