@@ -121,6 +121,17 @@ Image singularValuesView(const LowRank& lr) {
     return img;
 }
 
+Image reconstructionErrorView(const LowRank& lr) {
+    Image img(kGrid, kGrid, 1);
+    double peak = 0.0;
+    for (double v : lr.samples) peak = std::max(peak, std::abs(v));
+    if (!(peak > 0.0)) return img;
+    for (int k = 0; k < kGrid; ++k)
+        for (int j = 0; j < kGrid; ++j)
+            img.at(j, k, 0) = float(std::abs(lr.samples[std::size_t(k + kGrid * j)] - reconstruct(lr, k, j)) / peak);
+    return img;
+}
+
 Image basisView(const LowRank& lr) {
     const int h = 64;
     Image img(kGrid, 2 * h, 3);

@@ -42,6 +42,9 @@ int walkLength(const std::vector<glm::vec2>& tree, float beta, float cEnd);
 
 // Singular values as log10 bars over 12 decades (kept ones green), and B_i / Gamma_i as curves.
 Image singularValuesView(const LowRank& lr);
+// Where the rank-N factorisation errs: |I - I_N| / max |I| on each cell of the 64 x 64 grid of I sin(beta),
+// x = gamma_j (gammaLo at the left), y = beta_k (betaLo at the top); all 0 when I is 0 everywhere.
+Image reconstructionErrorView(const LowRank& lr);
 Image basisView(const LowRank& lr);
 // The same as plots with axes: sigma_i against i (log scale; kept and dropped ones as two curves), and
 // B_i over beta (degrees) and Gamma_i over gamma (degrees; for a directional light gamma is the light

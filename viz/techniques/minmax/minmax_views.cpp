@@ -90,12 +90,18 @@ void MinmaxTechnique::publishLowRank(FrameOutput& out) const {
         "largest magnitude, zero in the middle; i = 1.. in red, green, blue, yellow, ...",
         ViewKind::Colour, std::make_shared<Image>(minmax::basisView(lr))));
     out.intermediates.back().plots = minmax::basisPlots(lr, w.setup.frame.kind == minmax::LightKind::Directional);
-    auto error = std::make_shared<Image>(1, 1, 1);
-    error->at(0, 0) = float(lr.reconstructionError);
-    out.intermediates.push_back(cpuIntermediate(
-        kReconstructionError, "Rank-N reconstruction error",
-        "||I - I_N|| / ||I|| (Frobenius) of I sin(beta) on the 64 x 64 grid, first epipolar light",
-        ViewKind::Scalar, error));
+    // Where the factorisation errs, cell by cell, on a range of its own (the errors are small: 0 to 1 showed
+    // a black square).
+    auto error = std::make_shared<Image>(minmax::reconstructionErrorView(lr));
+    float worst = 0.0f;
+    for (float v : error->pixels) worst = std::max(worst, v);
+    char errorNote[200];
+    std::snprintf(errorNote, sizeof errorNote,
+                  "|I - I_N| / max |I| per cell of the 64 x 64 grid of I sin(beta), first epipolar light; x: gamma, "
+                  "y: beta (top: the screen's smallest); rank %d: ||I - I_N|| / ||I|| = %.3g", lr.rank,
+                  lr.reconstructionError);
+    out.intermediates.push_back(cpuIntermediate(kReconstructionError, "Rank-N reconstruction error", errorNote,
+                                                ViewKind::Scalar, error, 0.0f, worst > 0.0f ? worst : 1.0f));
     out.intermediates.push_back(render::textureIntermediate(
         kPrefixSums, "Prefix sums of Gamma_i T", "x: gamma texel boundary k; y: slice (one row when shared); "
         "layer q / 4, channel q % 4 holds rank i = q / 3, colour q % 3", "", ViewKind::Colour, 0.0f, 1.0f,
