@@ -130,3 +130,30 @@ TEST_F(MeshViewRender, PolyvolDrawsItsOrbitViewWhenTheCallerShowsTheMesh) {
     EXPECT_NE(mesh->note.find("this view is shown"), std::string::npos) << mesh->note;
     EXPECT_EQ(shown.airlight.pixels, airlight.pixels);
 }
+
+// slices' planes' table (slices.plane_mesh) is a vertex list, a row per plane; shown (FrameInput::views),
+// the planes stage draws it as the orbit view of the planes' outlines instead, as polyvol does its mesh
+// (a table stretched into an image says nothing), with mesh_view=0 and under the table's own id.
+TEST_F(MeshViewRender, SlicesDrawsThePlanesAsAnOrbitViewWhenTheCallerShowsTheirTable) {
+    const viz::scene::Scene scene = viz::scene::makeBuiltinScene("grate");
+    auto slices = viz::makeTechnique("slices");
+    viz::FrameInput in = viz::frameInput(&scene, 160, 120, viz::completeSettings(*slices, {{"planes", 16}}));
+    const viz::FrameOutput plain = slices->run(in);
+    const viz::Intermediate* table = find(plain, "slices.plane_mesh");
+    ASSERT_TRUE(table && table->image);
+    EXPECT_EQ(table->kind, viz::ViewKind::Mesh);
+    EXPECT_EQ(table->image->height, 16) << "a row per plane drawn";
+    EXPECT_FALSE(table->orbit);
+    const viz::Image airlight = plain.airlight;
+
+    in.views = {"slices.plane_mesh"};
+    const viz::FrameOutput shown = slices->run(in);
+    const viz::Intermediate* view = find(shown, "slices.plane_mesh");
+    ASSERT_TRUE(view && view->glTexture != 0);
+    EXPECT_TRUE(view->orbit && view->picture);
+    EXPECT_EQ(find(shown, "slices.plane_view"), nullptr) << "mesh_view=0: the orbit view only under the table's id";
+    EXPECT_NE(view->note.find("this view is shown"), std::string::npos) << view->note;
+    const viz::Image picture = viz::gl::readTexture(view->glTexture);
+    EXPECT_GT(pixelsNear(picture, {0.35f, 0.65f, 1.0f}), 10) << "the camera frustum";
+    EXPECT_EQ(shown.airlight.pixels, airlight.pixels);
+}

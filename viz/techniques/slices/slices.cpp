@@ -115,7 +115,8 @@ SlicesTechnique::SlicesTechnique()
           "noise", "noise_tiles", "time", "falloff", "ambient", "artistic_units", "clip", "user_clip",
           "clip_y_min", "clip_y_max", "directional_box", "plane_grid", "distance_scale", "count_fragments", "mesh_view",
           "mesh_yaw", "mesh_pitch", "mesh_zoom", "pick_x", "pick_y", "ray_planes", "force_features"},
-         {kAccum, kPlane, kPlaneMesh, kPlaneView, kFragments, kRayPlanes, kRayPlanesChart}, 128, "planes_drawn", "planes"},
+         {kAccum, kPlane, kPlaneMesh, kPlaneView, kFragments, kRayPlanes, kRayPlanesChart}, 128, "planes_drawn", "planes",
+         {kPlaneMesh}},
         {kStageResolve, "Resolve", "accumulation -> L_air: undo the 8-bit scale, sum the mask channels, blur",
          {"blur"}, {kAirlight}, 1},
         render::SceneViewPasses::composeStage("slices"),
@@ -314,7 +315,11 @@ FrameOutput SlicesTechnique::run(const FrameInput& input) {
                 kPlane, "Plane " + std::to_string(drawn), "the last plane drawn alone (every light), float",
                 "stored value", ViewKind::Colour, 0.0f, 0.05f, mPlane));
             out.intermediates.push_back(polygonIntermediate());
-            if (s.meshView) {
+            // Shown in the window, the planes' table is drawn as the orbit view too (as polyvol's mesh):
+            // a table of vertices stretched into an image says nothing.
+            const std::size_t tableIndex = out.intermediates.size() - 1;
+            const bool tableShown = std::find(input.views.begin(), input.views.end(), kPlaneMesh) != input.views.end();
+            if (s.meshView || tableShown) {
                 mMeshView.begin(scene, mView.gpuScene(), render::orbitOf(input.controls),
                                 input.width, input.height);
                 // Each drawn plane's outline, far planes dim and near ones bright (the drawing order).
@@ -337,7 +342,14 @@ FrameOutput SlicesTechnique::run(const FrameInput& input) {
                     "", ViewKind::Colour, 0.0f, 1.0f, mMeshView.texture());
                 view.orbit = true;  // the window turns it by dragging
                 view.picture = true;
-                out.intermediates.push_back(std::move(view));
+                if (tableShown) {
+                    Intermediate asTable = view;
+                    asTable.id = kPlaneMesh;
+                    asTable.label = "Sampling planes (mesh)";
+                    if (!s.meshView) asTable.note += "; drawn because this view is shown (its time counts in the planes stage)";
+                    out.intermediates[tableIndex] = std::move(asTable);
+                }
+                if (s.meshView) out.intermediates.push_back(std::move(view));
             }
             if (mRayPlanes) {
                 Intermediate i;
