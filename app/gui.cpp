@@ -199,10 +199,7 @@ void GuiApp::selectTechnique(int index) {
     mCursor = {};  // a new technique starts on its complete frame
     mError.clear();
     mSettingsError.clear();
-    // The session's values for this technique, then the command line's on top.
-    viz::Settings given = mSession.settings.count(id) ? mSession.settings.at(id) : viz::Settings{};
-    for (const auto& [name, value] : mOptions.settings) given[name] = value;
-    mSettings = settingsFor(technique(), given, mSettingsError);
+    mSettings = settingsFor(technique(), givenSettings(id), mSettingsError);
     if (auto c = takeSubsteps(technique(), mSettings)) mCursor = *c;
     try {
         mPlan = technique().plan(mScene, mSettings);

@@ -273,9 +273,11 @@ private:
     // The window's request for `id` now (its settings completed by its technique where it can be made).
     DifferenceRequest differenceRequest(const std::string& id);
 
-    // The settings `id` runs with on the other side: the session's for it, then the command line's;
-    // completed: over its technique's defaults (throws for an id that makes no technique).
-    viz::Settings otherSettings(const std::string& id) const;
+    // The settings `id` runs with (in the main views when it is picked, on the other side of a difference
+    // view or in the comparison grid): the session's for it, then the command line's on top (a parameter
+    // the user changes in the panel leaves the command line's); completed: over its technique's defaults
+    // (throws for an id that makes no technique).
+    viz::Settings givenSettings(const std::string& id) const;
     viz::Settings completedOtherSettings(const std::string& id);
 
     // The GPU runs queued by otherRun (this blocks the thread; the frame before said "computing it..."),

@@ -110,7 +110,7 @@ std::shared_ptr<const viz::Image> GuiApp::pathReferenceFrame(bool forGrid) {
     if (mComparison.isOpen() && !mAnimation.path->movesCamera()) gridStart.camera = mComparison.scene().camera;
     const glm::ivec2 size{mOptions.width, mOptions.height};
     const glm::ivec2 gridSize = mComparison.isOpen() ? mComparison.size() : size;
-    const viz::Settings settings = otherSettings("reference");
+    const viz::Settings settings = givenSettings("reference");
     const auto keyOf = [&](const viz::scene::Pose& from, glm::ivec2 at) {
         return pathLoopKey(mGeometryHash, mScene, *mAnimation.path, from, mAnimation.pathFrames, at.x, at.y, settings);
     };

@@ -199,7 +199,7 @@ const DifferenceRuns::Run* GuiApp::otherRun(const std::string& id) {
 }
 
 DifferenceRequest GuiApp::differenceRequest(const std::string& id) {
-    DifferenceRequest r{&mScene, mGeometryHash, mController.camera(), mOutputSize, otherSettings(id), mAnimation.playing};
+    DifferenceRequest r{&mScene, mGeometryHash, mController.camera(), mOutputSize, givenSettings(id), mAnimation.playing};
     try {
         r.settings = completedOtherSettings(id);
     } catch (const std::exception&) {
@@ -208,7 +208,7 @@ DifferenceRequest GuiApp::differenceRequest(const std::string& id) {
     return r;
 }
 
-viz::Settings GuiApp::otherSettings(const std::string& id) const {
+viz::Settings GuiApp::givenSettings(const std::string& id) const {
     viz::Settings given = mSession.settings.count(id) ? mSession.settings.at(id) : viz::Settings{};
     for (const auto& [name, value] : mOptions.settings) given[name] = value;
     return given;
@@ -216,7 +216,7 @@ viz::Settings GuiApp::otherSettings(const std::string& id) const {
 
 viz::Settings GuiApp::completedOtherSettings(const std::string& id) {
     std::string ignored;
-    return settingsFor(mRuns.runner(Consumer::Others, id).technique(), otherSettings(id), ignored);
+    return settingsFor(mRuns.runner(Consumer::Others, id).technique(), givenSettings(id), ignored);
 }
 
 void GuiApp::runDueGpuOthers() {
