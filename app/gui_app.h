@@ -64,6 +64,7 @@
 #include "light_gizmo.h"
 #include "view_layout.h"
 #include "view_state.h"
+#include "view_title.h"
 #include "view_stats.h"
 #include "techniques/registry.h"
 #include "plot/plot.h"
@@ -389,8 +390,9 @@ private:
     void setResizeCursor(std::optional<SplitAxis> axis);
     void drawViewGrid(const Rect& area);
 
-    // "name  [i/n]  id  layer k/n  |  3 negative px" and the note with the range or the error figures.
-    std::pair<std::string, std::string> viewTitle(const ViewState& v) const;
+    // What a view's title lines (view_title.h: name, list position, id, stage, layer; the note with the
+    // range or the error figures) need from the window.
+    ViewTitleFacts viewTitleFacts() const;
     void drawView(int id, ViewState& v);
     void drawPlots(const ViewState& v);
 

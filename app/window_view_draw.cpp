@@ -1,6 +1,7 @@
 // Drawing the view grid: each view's title, image, texel values, markers, plots, display strip and
 // histogram, and the dividers between views.
 #include "gui_app.h"
+#include "view_title.h"
 #include "view_markers.h"
 
 namespace airlight {
@@ -134,64 +135,27 @@ void GuiApp::drawViewGrid(const Rect& area) {
     }
 }
 
-std::pair<std::string, std::string> GuiApp::viewTitle(const ViewState& v) const {
-    if (!mHaveOutput) return {technique().needsGl() ? "(no view)" : "computing...", ""};
-    std::string title = v.pane.label.empty() ? v.content : v.pane.label;
-    // The temporal view's running score, first: titles are shortened in the middle to fit.
-    const bool temporal = v.pane.id == kTemporalChangeId || v.pane.id == kTemporalErrorChangeId;
-    if (v.pane.id == kTemporalChangeId) title += ": " + mAnimation.temporal.describe();
-    if (v.pane.id == kTemporalErrorChangeId) title += ": " + mAnimation.temporal.describeError();
-    // --path: how far the reference's frames of the loop are while some are still to come (the error
-    // change view needs two in a row), or why there are none.
-    if (temporal && !mAnimation.reference.error().empty()) {
-        title += "   reference failed: " + mAnimation.reference.error();
-    } else if (temporal && mAnimation.reference.ready() < mAnimation.reference.total()) {
-        title += "   reference frames " + std::to_string(mAnimation.reference.ready()) + "/" +
-                 std::to_string(mAnimation.reference.total());
-        // What the rest will take, once one frame has been computed (minutes a frame for an area light).
-        if (const double s = mAnimation.reference.secondsPerFrame(); s > 0.0)
-            title += format(", %.3g s each", s);
-    }
-    if (v.shown >= 0) title += "   [" + std::to_string(v.shown + 1) + "/" + std::to_string(contentCount()) + "]";
-    if (v.pane.id != "final" && v.pane.id != "airlight" && !temporal) {
-        title += "  " + v.pane.id;
-        // The stage that publishes it (stepping shows it from that stage on).
-        for (const viz::StageInfo& st : technique().stages())
-            if (std::find(st.intermediates.begin(), st.intermediates.end(), v.pane.id) != st.intermediates.end()) {
-                title += "  (stage " + st.id + ")";
-                break;
-            }
-    }
-    if (v.pane.layers > 1) title += "   layer " + std::to_string(v.pane.layer + 1) + "/" + std::to_string(v.pane.layers);
-    std::string note = v.pane.note;
-    if (v.pane.id == "final" && v.display.difference == DifferenceMode::Off)
-        note = "surface radiance * exp(-sigma_t d) + L_air   (exposure " + format("%+.1f EV)", mExposure);
-    const DisplayMapping m = resolveMapping(v.pane, v.display, mExposure, v.measured);
-    const bool picture = v.pane.picture && m.mode == DisplayMode::RangeColour;  // no range to state
-    if (m.mode != DisplayMode::HdrColour && !picture) {
-        // A multi-quantity pane names the channel shown, with that quantity's units.
-        const viz::ChannelInfo* declared = declaredChannel(v.pane, v.display.channel);
-        const std::string& units = declared ? declared->units : v.pane.units;
-        note += "   [" + format("%.4g", m.lo) + ", " + format("%.4g", m.hi) + "]" + (v.display.logScale ? " log" : "") +
-                (units.empty() ? "" : " " + units) + ", " +
-                (declared ? "showing " + declared->name : std::string(viz::viewKindName(v.pane.kind)));
-    }
-    if (v.error) {
-        const auto figure = [](double x) { return std::isfinite(x) ? format("%.3g", x) : std::string("n/a"); };
-        note = "relative L2 " + figure(v.error->relativeL2) + "   max |a - b| " + figure(v.error->maxAbsolute) +
-               "   RMSE " + figure(v.error->rmse) + "   |   " + note;
-    } else if (!v.differenceNote.empty()) {
-        note = v.differenceNote + "   |   " + note;
-    }
-    if (v.transform.zoom > 1.0) note = format("zoom %.0fx (wheel; drag to pan; 0 fits)   ", v.transform.zoom) + note;
-    return {title, note};
+ViewTitleFacts GuiApp::viewTitleFacts() const {
+    ViewTitleFacts f;
+    f.haveOutput = mHaveOutput;
+    f.gpuTechnique = technique().needsGl();
+    f.contentCount = contentCount();
+    f.exposure = mExposure;
+    f.stages = &technique().stages();
+    f.temporalChange = mAnimation.temporal.describe();
+    f.temporalErrorChange = mAnimation.temporal.describeError();
+    f.referenceReady = mAnimation.reference.ready();
+    f.referenceTotal = mAnimation.reference.total();
+    f.referenceSecondsPerFrame = mAnimation.reference.secondsPerFrame();
+    f.referenceError = mAnimation.reference.error();
+    return f;
 }
 
 void GuiApp::drawView(int id, ViewState& v) {
     DrawList& dl = *mDrawList;
     const float line = mFont->lineHeight(), s = mScale;
     const bool focused = id == mFocused;
-    const auto [title, note] = viewTitle(v);
+    const auto [title, note] = viewTitle(v, viewTitleFacts());
     // Title bar: highlighted when focused (keys and the views list act on it); drag it onto another
     // view to swap the two.
     mBackground->rect(v.title, focused ? kHighlight : kPanel);

@@ -1,0 +1,65 @@
+#include "view_title.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/text.h"
+#include "temporal_monitor.h"
+
+namespace airlight {
+
+std::pair<std::string, std::string> viewTitle(const ViewState& v, const ViewTitleFacts& f) {
+    if (!f.haveOutput) return {f.gpuTechnique ? "(no view)" : "computing...", ""};
+    std::string title = v.pane.label.empty() ? v.content : v.pane.label;
+    // The temporal view's running score, first: titles are shortened in the middle to fit.
+    const bool temporal = v.pane.id == kTemporalChangeId || v.pane.id == kTemporalErrorChangeId;
+    if (v.pane.id == kTemporalChangeId) title += ": " + f.temporalChange;
+    if (v.pane.id == kTemporalErrorChangeId) title += ": " + f.temporalErrorChange;
+    // --path: how far the reference's frames of the loop are while some are still to come (the error
+    // change view needs two in a row), or why there are none.
+    if (temporal && !f.referenceError.empty()) {
+        title += "   reference failed: " + f.referenceError;
+    } else if (temporal && f.referenceReady < f.referenceTotal) {
+        title += "   reference frames " + std::to_string(f.referenceReady) + "/" +
+                 std::to_string(f.referenceTotal);
+        // What the rest will take, once one frame has been computed (minutes a frame for an area light).
+        if (const double s = f.referenceSecondsPerFrame; s > 0.0)
+            title += viz::format(", %.3g s each", s);
+    }
+    if (v.shown >= 0) title += "   [" + std::to_string(v.shown + 1) + "/" + std::to_string(f.contentCount) + "]";
+    if (v.pane.id != "final" && v.pane.id != "airlight" && !temporal) {
+        title += "  " + v.pane.id;
+        // The stage that publishes it (stepping shows it from that stage on).
+        const std::vector<viz::StageInfo> none;
+        for (const viz::StageInfo& st : f.stages ? *f.stages : none)
+            if (std::find(st.intermediates.begin(), st.intermediates.end(), v.pane.id) != st.intermediates.end()) {
+                title += "  (stage " + st.id + ")";
+                break;
+            }
+    }
+    if (v.pane.layers > 1) title += "   layer " + std::to_string(v.pane.layer + 1) + "/" + std::to_string(v.pane.layers);
+    std::string note = v.pane.note;
+    if (v.pane.id == "final" && v.display.difference == DifferenceMode::Off)
+        note = "surface radiance * exp(-sigma_t d) + L_air   (exposure " + viz::format("%+.1f EV)", f.exposure);
+    const DisplayMapping m = resolveMapping(v.pane, v.display, f.exposure, v.measured);
+    const bool picture = v.pane.picture && m.mode == DisplayMode::RangeColour;  // no range to state
+    if (m.mode != DisplayMode::HdrColour && !picture) {
+        // A multi-quantity pane names the channel shown, with that quantity's units.
+        const viz::ChannelInfo* declared = declaredChannel(v.pane, v.display.channel);
+        const std::string& units = declared ? declared->units : v.pane.units;
+        note += "   [" + viz::format("%.4g", m.lo) + ", " + viz::format("%.4g", m.hi) + "]" + (v.display.logScale ? " log" : "") +
+                (units.empty() ? "" : " " + units) + ", " +
+                (declared ? "showing " + declared->name : std::string(viz::viewKindName(v.pane.kind)));
+    }
+    if (v.error) {
+        const auto figure = [](double x) { return std::isfinite(x) ? viz::format("%.3g", x) : std::string("n/a"); };
+        note = "relative L2 " + figure(v.error->relativeL2) + "   max |a - b| " + figure(v.error->maxAbsolute) +
+               "   RMSE " + figure(v.error->rmse) + "   |   " + note;
+    } else if (!v.differenceNote.empty()) {
+        note = v.differenceNote + "   |   " + note;
+    }
+    if (v.transform.zoom > 1.0) note = viz::format("zoom %.0fx (wheel; drag to pan; 0 fits)   ", v.transform.zoom) + note;
+    return {title, note};
+}
+
+}  // namespace airlight

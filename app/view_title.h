@@ -1,0 +1,33 @@
+// A grid view's two title lines: what it shows ("Rank-N reconstruction error   [10/19]  minmax.reconstruction_error
+// (stage minmax.rectify)   layer 1/6") and the note under it (the intermediate's note, the range and units
+// it is shown over, the difference figures, the zoom). A plain function of the view and a few facts about
+// the window, so tests write the expected text out by hand (tests/cpu/ui/view_title_test.cpp).
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "debug/technique.h"
+#include "view_state.h"
+
+namespace airlight {
+
+struct ViewTitleFacts {
+    bool haveOutput = false;    // a run has finished (else "(no view)" or "computing...")
+    bool gpuTechnique = true;   // the current technique runs on the GPU
+    int contentCount = 0;       // entries of the views list: final, L_air and the run's intermediates
+    float exposure = 0.0f;      // the window's, in EV (the final image's note states it)
+    const std::vector<viz::StageInfo>* stages = nullptr;  // the technique's: the stage publishing a view is named
+    // While playing: the temporal views' running scores (TemporalMonitor::describe, describeError) and,
+    // along a --path, the reference's frames.
+    std::string temporalChange, temporalErrorChange;
+    int referenceReady = 0, referenceTotal = 0;
+    double referenceSecondsPerFrame = 0.0;
+    std::string referenceError;
+};
+
+// {title, note}.
+std::pair<std::string, std::string> viewTitle(const ViewState& v, const ViewTitleFacts& facts);
+
+}  // namespace airlight

@@ -1,0 +1,104 @@
+// A grid view's title lines (app/view_title.h) for each kind of view, the expected text written out by
+// hand: the list position, the id and the stage that publishes it, the layer, the final image's exposure,
+// the range a grey view is shown over, the difference figures, the zoom, the temporal views' scores and
+// the reference's frames along a path.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "temporal_monitor.h"
+#include "view_title.h"
+
+namespace airlight {
+namespace {
+
+class ViewTitleTest : public ::testing::Test {
+protected:
+    ViewTitleTest() {
+        stages = {{"minmax.rectify", "Rectify", "", {}, {"minmax.rectified"}, 1},
+                  {"minmax.mipmap", "Min-max mipmap", "", {}, {"minmax.tree", "minmax.pyramid"}, 1}};
+        facts.haveOutput = true;
+        facts.contentCount = 19;
+        facts.exposure = 1.5f;
+        facts.stages = &stages;
+    }
+    static ViewState view(const std::string& id, const std::string& label, int shown) {
+        ViewState v;
+        v.content = id;
+        v.pane.id = id;
+        v.pane.label = label;
+        v.pane.note = "the note";
+        v.shown = shown;
+        return v;
+    }
+    std::vector<viz::StageInfo> stages;
+    ViewTitleFacts facts;
+};
+
+TEST_F(ViewTitleTest, BeforeAnyRunTheTitleSaysWhy) {
+    facts.haveOutput = false;
+    EXPECT_EQ(viewTitle(view("final", "Final image", 0), facts), std::make_pair(std::string("(no view)"), std::string()));
+    facts.gpuTechnique = false;
+    EXPECT_EQ(viewTitle(view("final", "Final image", 0), facts).first, "computing...");
+}
+
+TEST_F(ViewTitleTest, AnIntermediateNamesItsPlaceItsIdItsStageAndItsLayer) {
+    ViewState v = view("minmax.tree", "Min-max mipmaps", 11);
+    EXPECT_EQ(viewTitle(v, facts).first, "Min-max mipmaps   [12/19]  minmax.tree  (stage minmax.mipmap)");
+    EXPECT_EQ(viewTitle(v, facts).second, "the note");
+    v.pane.layers = 6;
+    v.pane.layer = 2;
+    EXPECT_EQ(viewTitle(v, facts).first, "Min-max mipmaps   [12/19]  minmax.tree  (stage minmax.mipmap)   layer 3/6");
+    // An id no stage declares (a shared pass's) has no stage; an empty label falls back to the content.
+    ViewState shared = view("minmax.shadow_map", "", 2);
+    EXPECT_EQ(viewTitle(shared, facts).first, "minmax.shadow_map   [3/19]  minmax.shadow_map");
+}
+
+TEST_F(ViewTitleTest, TheFinalImageStatesTheExposureAndAGreyViewItsRange) {
+    EXPECT_EQ(viewTitle(view("final", "Final image", 0), facts),
+              std::make_pair(std::string("Final image   [1/19]"),
+                             std::string("surface radiance * exp(-sigma_t d) + L_air   (exposure +1.5 EV)")));
+    ViewState grey = view("minmax.rectified", "Rectified shadow map", 5);
+    grey.pane.kind = viz::ViewKind::Scalar;
+    grey.pane.mode = DisplayMode::Grey;
+    grey.pane.rangeMin = 0.0f;
+    grey.pane.rangeMax = 3.14159f;
+    grey.pane.units = "radians";
+    EXPECT_EQ(viewTitle(grey, facts).second, "the note   [0, 3.142] radians, scalar");
+}
+
+TEST_F(ViewTitleTest, DifferenceFiguresAndTheZoomComeFirstInTheNote) {
+    ViewState v = view("airlight", "Airlight L_air", 1);
+    v.error = viz::report::ErrorMetrics{};
+    v.error->relativeL2 = 0.0123;
+    v.error->maxAbsolute = 0.5;
+    v.error->rmse = std::numeric_limits<double>::quiet_NaN();
+    EXPECT_EQ(viewTitle(v, facts).second, "relative L2 0.0123   max |a - b| 0.5   RMSE n/a   |   the note");
+    v.error.reset();
+    v.differenceNote = "against the reference: computing it...";
+    v.transform.zoom = 4.0;
+    EXPECT_EQ(viewTitle(v, facts).second,
+              "zoom 4x (wheel; drag to pan; 0 fits)   against the reference: computing it...   |   the note");
+}
+
+TEST_F(ViewTitleTest, TemporalViewsLeadWithTheirScoreAndThePathsReferenceFrames) {
+    ViewState v = view(kTemporalErrorChangeId, "Error change per frame", 4);
+    facts.contentCount = 9;
+    facts.temporalErrorChange = "temporal RMS 0.012 over 5 pairs";
+    facts.referenceReady = 2;
+    facts.referenceTotal = 6;
+    facts.referenceSecondsPerFrame = 1.5;
+    EXPECT_EQ(viewTitle(v, facts).first,
+              "Error change per frame: temporal RMS 0.012 over 5 pairs   reference frames 2/6, 1.5 s each   [5/9]");
+    facts.referenceError = "reference: out of memory";
+    EXPECT_EQ(viewTitle(v, facts).first,
+              "Error change per frame: temporal RMS 0.012 over 5 pairs   reference failed: reference: out of memory   [5/9]");
+    facts.referenceError.clear();
+    facts.referenceReady = 6;
+    EXPECT_EQ(viewTitle(v, facts).first, "Error change per frame: temporal RMS 0.012 over 5 pairs   [5/9]")
+        << "every frame in: no count";
+}
+
+}  // namespace
+}  // namespace airlight
