@@ -400,8 +400,6 @@ private:
     // read a texel back for them).
     std::vector<viz::ViewMarker> markersFor(const ViewState& v);
 
-
-
     // "rendering..." while a slow GPU run blocks, the CPU worker's progress while it computes.
     void drawStatusBands(DrawList& dl, const Rect& image);
 
@@ -425,7 +423,6 @@ private:
     // The widgets' frame starts before the view grid (its display strips) and ends after this panel.
     void beginWidgets(glm::ivec2 fb);
     void drawParameters(glm::ivec2 fb);
-
 
     // The scene pickers: the built-in scenes (and the file given on the command line, if any) in one
     // list, the stiff cases of `airlight report --suite stiff` in another (one long list would not fit

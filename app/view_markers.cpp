@@ -8,6 +8,17 @@ namespace airlight {
 using viz::ui::DrawList;
 using viz::ui::Rect;
 
+namespace {
+
+// Whether `r` overlaps none of the rectangles placed so far.
+bool clearOf(const Rect& r, const std::vector<Rect>& placed) {
+    return std::none_of(placed.begin(), placed.end(), [&](const Rect& p) {
+        return r.min.x < p.max.x && p.min.x < r.max.x && r.min.y < p.max.y && p.min.y < r.max.y;
+    });
+}
+
+}  // namespace
+
 void drawCrosshair(DrawList& dl, glm::vec2 c, const Rect& clip, float scale) {
     if (!clip.contains(c)) return;
     const float r = 7.0f * scale, w = 1.5f * scale;
@@ -72,15 +83,11 @@ std::vector<Rect> drawViewMarkers(DrawList& dl, const viz::ui::FontAtlas& font, 
             const glm::vec2 candidates[] = {{a.x + gap, a.y - line - 1.0f}, {a.x + gap, a.y + 1.0f},
                                             {a.x - gap - size.x, a.y - line - 1.0f}, {a.x - gap - size.x, a.y + 1.0f}};
             glm::vec2 tagAt = candidates[0];
-            for (const glm::vec2 c : candidates) {
-                const Rect r{c - 1.0f, c + size};
-                if (std::none_of(placed.begin(), placed.end(), [&](const Rect& p) {
-                        return r.min.x < p.max.x && p.min.x < r.max.x && r.min.y < p.max.y && p.min.y < r.max.y;
-                    })) {
+            for (const glm::vec2 c : candidates)
+                if (clearOf({c - 1.0f, c + size}, placed)) {
                     tagAt = c;
                     break;
                 }
-            }
             placed.push_back({tagAt - 1.0f, tagAt + size});
             dl.rect({tagAt - 1.0f, tagAt + size}, {0.0f, 0.0f, 0.0f, 0.6f});
             dl.textClipped(tagAt, tag, colour, v.image.max.x);
@@ -94,11 +101,7 @@ std::vector<Rect> drawViewMarkers(DrawList& dl, const viz::ui::FontAtlas& font, 
         glm::vec2 labelAt{std::max(v.image.min.x, std::min(labelX, v.image.max.x - labelWidth - 2.0f)),
                           std::clamp(i == 0 ? at.y : std::max(a.y, b.y) + 2.0f * scale, v.image.min.y,
                                      v.image.max.y - line)};
-        const auto overlaps = [&](const Rect& r) {
-            return labelAt.x < r.max.x && labelAt.x + labelWidth > r.min.x && labelAt.y < r.max.y &&
-                   labelAt.y + line > r.min.y;
-        };
-        for (int tries = 0; tries < 8 && std::any_of(placed.begin(), placed.end(), overlaps); ++tries)
+        for (int tries = 0; tries < 8 && !clearOf({labelAt, labelAt + glm::vec2(labelWidth, line)}, placed); ++tries)
             labelAt.y += line + 1.0f;
         placed.push_back({labelAt, labelAt + glm::vec2(labelWidth, line)});
         dl.rect({labelAt - 1.0f, labelAt + glm::vec2(labelWidth + 2.0f, line)}, {0.0f, 0.0f, 0.0f, 0.6f});
