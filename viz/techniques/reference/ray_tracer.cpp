@@ -36,7 +36,9 @@ RTCRay makeRay(const glm::dvec3& origin, const glm::dvec3& dir, double tNear, do
 }  // namespace
 
 RayTracer::RayTracer(const scene::Scene& scene) {
-    mDevice = rtcNewDevice("threads=1");
+    // Embree's default configuration: "threads=1" would cap the whole process's oneTBB at one thread while
+    // the device lives, and with it the reference's row loop (tests/cpu/reference/parallel_rows_test.cpp).
+    mDevice = rtcNewDevice(nullptr);
     VIZ_CHECK(mDevice != nullptr, "rtcNewDevice failed");
     rtcSetDeviceErrorFunction(mDevice, embreeError, nullptr);
     mScene = rtcNewScene(mDevice);
