@@ -20,7 +20,7 @@ class MinmaxIntegrandTest : public viz::testing::TechniqueTest {};
 
 using viz::testing::allFinite;
 
-struct Case {
+struct IntegrandCase {
     std::string name;
     viz::scene::Scene scene;
     int width, height;
@@ -28,9 +28,9 @@ struct Case {
     viz::Image exclude;  // a stiff case's pixels left out of the error (the light's own), or empty
 };
 
-std::vector<Case> cases() {
+std::vector<IntegrandCase> cases() {
     auto technique = viz::makeTechnique("minmax");
-    std::vector<Case> out;
+    std::vector<IntegrandCase> out;
     for (const viz::scene::StiffCase& c : viz::scene::stiffCases()) {
         viz::scene::Scene scene = viz::scene::buildStiffScene(c);
         viz::Image mask = viz::report::stiffExclusionMask(c, scene);
@@ -57,7 +57,7 @@ double errorOf(const viz::Image& test, const viz::Image& reference, const viz::I
 TEST_F(MinmaxIntegrandTest, AutoTakesSvdWhereItStaysWithinTheBoundAndAnalyticWhereSvdWouldBeWorse) {
     auto technique = viz::makeTechnique("minmax");
     int svdCases = 0, analyticCases = 0;
-    for (const Case& c : cases()) {
+    for (const IntegrandCase& c : cases()) {
         const viz::Settings autoSettings = technique->stiffSettings();  // no integrand: auto
         const viz::Plan plan = technique->plan(c.scene, viz::completeSettings(*technique, autoSettings));
         const viz::FeaturePlan* f = viz::findFeature(plan, "INTEGRAND_SVD");

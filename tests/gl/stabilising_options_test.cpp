@@ -25,7 +25,7 @@ std::string settingsSummary(const Settings& s) {
     return text;
 }
 
-struct Case {
+struct StabilisingCase {
     std::string technique, option, scene, path;
 };
 
@@ -47,7 +47,7 @@ TEST_F(StabilisingOptions, EachLowersItsTechniquesTemporalError) {
     constexpr int kW = 80, kH = 60, kFrames = 6;
     // Scenes and paths where each option's motion shows: a spot light (grate) turned about by the camera,
     // the sun moving over colonnade, tv-room's area light seen from an orbiting camera.
-    std::vector<Case> cases = {
+    std::vector<StabilisingCase> cases = {
         {"raymarch", "jitter_time=constant (white)", "grate", "camera-orbit:10deg"},
         {"raymarch", "jitter_time=constant (blue)", "grate", "camera-orbit:10deg"},
         {"slices", "plane_grid=world", "grate", "camera-orbit:10deg"},
@@ -55,7 +55,7 @@ TEST_F(StabilisingOptions, EachLowersItsTechniquesTemporalError) {
         {"ivsv", "subsets=fixed", "tv-room", "camera-orbit:10deg"},
     };
     std::map<std::string, std::vector<Image>> references;
-    for (const Case& c : cases) {
+    for (const StabilisingCase& c : cases) {
         SCOPED_TRACE(c.technique + " " + c.option + " on " + c.scene);
         const scene::Scene base = scene::makeBuiltinScene(c.scene);
         const scene::MotionPath path = scene::parseMotionPath(c.path);

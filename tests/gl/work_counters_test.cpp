@@ -71,12 +71,13 @@ TEST_F(WorkCountersTest, RaymarchLooksUpTheShadowMapOncePerPixelSampleAndLight) 
 // every mesh once; the shadow pass draws them once into a sun's 2D map and once per face into a point
 // light's cube map. The march itself is a compute pass and draws nothing.
 TEST_F(WorkCountersTest, PrimitivesAreTheScenesTrianglesOncePerPassAndShadowFace) {
-    struct Case {
+    struct PassCase {
         const char* scene;
         scene::LightType light;
         std::uint64_t shadowPasses;
     };
-    for (const Case c : {Case{"colonnade", scene::LightType::Directional, 1}, Case{"grate", scene::LightType::Point, 6}}) {
+    for (const PassCase c :
+         {PassCase{"colonnade", scene::LightType::Directional, 1}, PassCase{"grate", scene::LightType::Point, 6}}) {
         scene::Scene scene = scene::makeBuiltinScene(c.scene);
         ASSERT_EQ(scene.lights.size(), 1u) << c.scene;
         scene.lights[0].type = c.light;

@@ -8,6 +8,7 @@
 #include <sstream>
 #include <tuple>
 
+#include "report/page_style.h"
 #include "report/text_output.h"
 
 namespace viz::report {
@@ -87,10 +88,7 @@ void writeBenchCsv(const std::string& path, const std::vector<BenchRow>& rows) {
 
 namespace {
 
-constexpr const char* kStyle = R"(body{font-family:DejaVu Sans,sans-serif;margin:2em;color:#222;max-width:80em}
-table{border-collapse:collapse;margin:0.5em 0 1.5em}td,th{border:1px solid #ccc;padding:0.2em 0.6em;text-align:right}
-th{background:#f2f2f2}td.l,th.l{text-align:left}figure{display:inline-block;margin:0.3em;text-align:center;vertical-align:top}
-figure img{border:1px solid #ccc}.note{color:#555;font-size:0.9em}tr.total td{font-weight:bold})";
+constexpr const char* kBenchStyle = "tr.total td{font-weight:bold}";
 
 std::string cell(double v, const char* format) {
     const std::string text = formatFigure(v, format);
@@ -102,7 +100,7 @@ std::string cell(double v, const char* format) {
 void writeBenchHtml(const std::string& path, const BenchMeta& meta, const std::vector<BenchRow>& rows,
                     const std::vector<BenchFit>& fits, const std::vector<BenchPlot>& plots) {
     std::ostringstream h;
-    h << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>Airlight bench</title><style>" << kStyle
+    h << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>Airlight bench</title><style>" << kPageStyle << kBenchStyle
       << "</style></head><body>\n<h1>Airlight bench: how each technique's cost grows</h1>\n<p class=\"note\">"
       << escapeHtml(meta.date) << " &middot; <code>" << escapeHtml(meta.command) << "</code><br>machine: "
       << escapeHtml(meta.machine) << "<br>renderer: " << escapeHtml(meta.renderer) << "<br>clock: " << escapeHtml(meta.clock)

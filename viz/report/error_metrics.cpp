@@ -11,10 +11,6 @@
 
 namespace viz::report {
 
-namespace {
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-}
-
 double toneMapScale(const Image& reference) {
     double sum = 0.0;
     for (float v : reference.pixels) sum += std::isfinite(v) ? std::max(0.0, double(v)) : 0.0;
@@ -37,7 +33,7 @@ ErrorMetrics compareImages(const Image& test, const Image& reference) {
     ErrorMetrics m;
     countNonFinite(test, m);
     if (!m.finite() || test.pixels.empty()) {
-        m.relativeL2 = m.rmse = m.maxAbsolute = m.relativeP999 = m.psnr = kNaN;
+        m.relativeL2 = m.rmse = m.maxAbsolute = m.relativeP999 = m.psnr = kUndefined;
         return m;
     }
     const double scale = toneMapScale(reference);
@@ -52,7 +48,7 @@ ErrorMetrics compareImages(const Image& test, const Image& reference) {
         tone2 += t * t;
     }
     const double values = double(test.pixels.size());
-    m.relativeL2 = ref2 > 0.0 ? std::sqrt(diff2 / ref2) : (diff2 == 0.0 ? 0.0 : kNaN);
+    m.relativeL2 = ref2 > 0.0 ? std::sqrt(diff2 / ref2) : (diff2 == 0.0 ? 0.0 : kUndefined);
     m.rmse = std::sqrt(diff2 / values);
     m.maxAbsolute = maxAbs;
     m.psnr = tone2 > 0.0 ? -10.0 * std::log10(tone2 / values) : std::numeric_limits<double>::infinity();
@@ -68,7 +64,7 @@ ErrorMetrics compareImages(const Image& test, const Image& reference) {
                 r += std::abs(double(reference.at(x, y, c)));
             }
             const double denominator = std::max(r, floor);
-            relative.push_back(denominator > 0.0 ? d / denominator : (d == 0.0 ? 0.0 : kNaN));
+            relative.push_back(denominator > 0.0 ? d / denominator : (d == 0.0 ? 0.0 : kUndefined));
         }
     // Nearest-rank percentile.
     const std::size_t rank = std::min(relative.size() - 1, std::size_t(std::ceil(0.999 * double(relative.size()))) - 1);

@@ -5,10 +5,14 @@
 #pragma once
 
 #include <cstddef>
+#include <limits>
 
 #include "core/image.h"
 
 namespace viz::report {
+
+// An undefined figure (see above).
+inline constexpr double kUndefined = std::numeric_limits<double>::quiet_NaN();
 
 struct ErrorMetrics {
     double relativeL2 = 0.0;    // ||test - ref||_2 / ||ref||_2

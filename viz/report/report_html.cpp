@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "report/page_style.h"
 #include "report/report_table.h"
 #include "report/temporal_report.h"
 #include "report/text_output.h"
@@ -59,11 +60,7 @@ void appendTargetTable(std::ostringstream& h, const std::string& title, const st
     h << "</table>\n";
 }
 
-constexpr const char* kStyle = R"(body{font-family:DejaVu Sans,sans-serif;margin:2em;color:#222;max-width:72em}
-table{border-collapse:collapse;margin:0.5em 0 1.5em}td,th{border:1px solid #ccc;padding:0.2em 0.6em;text-align:right}
-th{background:#f2f2f2}td.l,th.l{text-align:left}tr.front td{font-weight:bold}
-figure{display:inline-block;margin:0.3em;text-align:center}figure img{image-rendering:pixelated;border:1px solid #ccc}
-.bad{color:#b00}.note{color:#555;font-size:0.9em})";
+constexpr const char* kReportStyle = "body{max-width:72em}tr.front td{font-weight:bold}figure img{image-rendering:pixelated}";
 
 }  // namespace
 
@@ -76,7 +73,7 @@ void writeHtml(const std::string& path, const ReportMeta& meta, const std::vecto
 
     std::ostringstream h;
     h << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>Airlight report</title><style>"
-      << kStyle << "</style></head><body>\n<h1>Airlight report: error against run time</h1>\n";
+      << kPageStyle << kReportStyle << "</style></head><body>\n<h1>Airlight report: error against run time</h1>\n";
     h << "<p class=\"note\">" << escapeHtml(meta.date) << " &middot; " << escapeHtml(meta.machine) << " &middot; "
       << escapeHtml(meta.renderer) << " &middot; " << meta.width << "&times;" << meta.height << " &middot; median of "
       << meta.runs << " runs after one warm-up" << (meta.quick ? " &middot; quick sweep" : "")

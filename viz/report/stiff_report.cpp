@@ -12,7 +12,7 @@
 namespace viz::report {
 
 namespace {
-std::string number(double v) { return formatFigure(v, "%.4g"); }
+std::string stiffFigure(double v) { return formatFigure(v, "%.4g"); }
 }  // namespace
 
 void writeStiffFiles(const std::string& folder, const ReportMeta& meta, const std::vector<StiffOutcome>& outcomes) {
@@ -20,10 +20,10 @@ void writeStiffFiles(const std::string& folder, const ReportMeta& meta, const st
     csv << "case,class,technique,passed,ran,relative_l2,bound,max_abs,nan_pixels,inf_pixels,negative_pixels,ms,verdict\n";
     for (const StiffOutcome& o : outcomes)
         csv << csvField(o.caseId) << "," << o.caseClass << "," << o.technique << "," << (o.passed ? 1 : 0) << ","
-            << (o.ran ? 1 : 0) << "," << number(o.error.relativeL2) << ","
-            << (o.bound ? number(o.bound->relativeL2) : "") << "," << number(o.error.maxAbsolute) << ","
+            << (o.ran ? 1 : 0) << "," << stiffFigure(o.error.relativeL2) << ","
+            << (o.bound ? stiffFigure(o.bound->relativeL2) : "") << "," << stiffFigure(o.error.maxAbsolute) << ","
             << o.error.nanPixels << "," << o.error.infPixels << "," << o.error.negativePixels << ","
-            << number(o.milliseconds) << "," << csvField(o.verdict) << "\n";
+            << stiffFigure(o.milliseconds) << "," << csvField(o.verdict) << "\n";
     writeTextFile((std::filesystem::path(folder) / "stiff.csv").string(), csv.str());
 
     std::vector<std::string> cases, techniques;

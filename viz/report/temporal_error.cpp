@@ -11,13 +11,11 @@ namespace viz::report {
 
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
 // a / b with relative L2's convention: 0 / 0 is 0 (nothing moved, nothing to compare with), x / 0 is NaN.
 double relative(double value, double mean) {
-    if (std::isnan(value)) return kNaN;
+    if (std::isnan(value)) return kUndefined;
     if (mean > 0.0) return value / mean;
-    return value == 0.0 ? 0.0 : kNaN;
+    return value == 0.0 ? 0.0 : kUndefined;
 }
 
 }  // namespace
@@ -81,7 +79,7 @@ void TemporalAccumulator::add(const Image& test, const Image& reference) {
 void TemporalAccumulator::gap() { std::fill(mValid.begin(), mValid.end(), 0); }
 
 double TemporalAccumulator::referenceMean() const {
-    return mReferenceValues > 0 ? mReferenceSum / double(mReferenceValues) : kNaN;
+    return mReferenceValues > 0 ? mReferenceSum / double(mReferenceValues) : kUndefined;
 }
 
 double TemporalAccumulator::temporalRms() const {
@@ -90,7 +88,7 @@ double TemporalAccumulator::temporalRms() const {
     for (std::size_t p = 0; p < mSumSquares.size(); ++p)
         if (mCount[p] > 0) total += mSumSquares[p], count += mCount[p];
     const double channels = double(std::max(mChannels, 1));
-    return relative(count > 0 ? 0.5 * std::sqrt(total / (double(count) * channels)) : kNaN, referenceMean());
+    return relative(count > 0 ? 0.5 * std::sqrt(total / (double(count) * channels)) : kUndefined, referenceMean());
 }
 
 TemporalMetrics TemporalAccumulator::finish() const {
@@ -108,11 +106,11 @@ TemporalMetrics TemporalAccumulator::finish() const {
         if (std::isfinite(e)) errorSum += e, ++errorFrames;
         else ++m.framesWithoutError;
     }
-    m.meanFrameError = errorFrames > 0 ? errorSum / double(errorFrames) : kNaN;
+    m.meanFrameError = errorFrames > 0 ? errorSum / double(errorFrames) : kUndefined;
 
     const double channels = double(std::max(mChannels, 1));
     for (std::size_t t = 0; t < mFrameSquares.size(); ++t) {
-        const double rms = mFrameCount[t] > 0 ? 0.5 * std::sqrt(mFrameSquares[t] / (double(mFrameCount[t]) * channels)) : kNaN;
+        const double rms = mFrameCount[t] > 0 ? 0.5 * std::sqrt(mFrameSquares[t] / (double(mFrameCount[t]) * channels)) : kUndefined;
         m.frameTemporal.push_back(relative(rms, m.referenceMean));
     }
 
@@ -131,7 +129,7 @@ TemporalMetrics TemporalAccumulator::finish() const {
     }
     m.temporalRms = temporalRms();
     if (perPixel.empty()) {
-        m.worstFlicker = kNaN;
+        m.worstFlicker = kUndefined;
     } else {
         // Nearest rank, as the single-frame percentile.
         const std::size_t rank =

@@ -3,16 +3,14 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <limits>
 #include <map>
 
+#include "report/error_metrics.h"
 #include "report/text_output.h"
 
 namespace viz::report {
 
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 std::string figure(double v, const char* format = "%.3g") {
     const std::string text = formatFigure(v, format);
@@ -40,7 +38,7 @@ std::vector<TechniqueRank> rankTechniques(const std::vector<ReportRow>& rows, co
     for (const ReportRow& r : rows) {
         if (r.scene != scene) continue;
         auto [it, added] = index.emplace(r.technique, ranks.size());
-        if (added) ranks.push_back({r.technique, kNaN, "", kNaN, "", kNaN, "", kNaN, 0, 0, 0});
+        if (added) ranks.push_back({r.technique, kUndefined, "", kUndefined, "", kUndefined, "", kUndefined, 0, 0, 0});
         TechniqueRank& t = ranks[it->second];
         const double e = r.error.relativeL2;
         if (std::isfinite(e) && !(t.bestError <= e)) t.bestError = e, t.bestErrorSetting = r.setting;

@@ -35,10 +35,6 @@ std::optional<double> number(const std::string& text) {
     return v;
 }
 
-bool endsWith(const std::string& text, const std::string& tail) {
-    return text.size() >= tail.size() && text.compare(text.size() - tail.size(), tail.size(), tail) == 0;
-}
-
 std::string lower(std::string s) {
     std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return char(std::tolower(c)); });
     return s;
@@ -48,11 +44,11 @@ double angle(const std::string& value, const std::string& name, const std::strin
     const std::string bad = "path '" + whole + "': " + name + " takes an angle such as " + name + ":30deg or " +
                             name + ":0.5rad, got '" + value + "'";
     double radians = 0.0;
-    if (endsWith(value, "deg")) {
+    if (value.ends_with("deg")) {
         const auto v = number(value.substr(0, value.size() - 3));
         if (!v) throw InputError(bad);
         radians = *v * std::numbers::pi / 180.0;
-    } else if (endsWith(value, "rad")) {
+    } else if (value.ends_with("rad")) {
         const auto v = number(value.substr(0, value.size() - 3));
         if (!v) throw InputError(bad);
         radians = *v;
@@ -83,7 +79,7 @@ Motion motion(const std::string& item, const std::string& whole) {
                                     "orbit target)";
         if (!value) throw InputError("path '" + whole + "': camera-dolly needs a distance, " + example);
         m.kind = MotionKind::CameraDolly;
-        m.percent = endsWith(*value, "%");
+        m.percent = value->ends_with("%");
         const auto v = number(m.percent ? value->substr(0, value->size() - 1) : *value);
         if (!v) throw InputError("path '" + whole + "': camera-dolly distance '" + *value + "' is not a number, " + example);
         m.amount = m.percent ? *v / 100.0 : *v;
@@ -200,7 +196,7 @@ MotionPath parseKeyframes(const std::string& json, const std::string& source) {
 
 MotionPath parseMotionPath(const std::string& text) {
     if (text.empty()) throw InputError("path is empty (known motions: " + std::string(kKnown) + ")");
-    if (endsWith(lower(text), ".json")) {
+    if (lower(text).ends_with(".json")) {
         std::error_code ec;
         const auto bytes = std::filesystem::file_size(text, ec);
         if (ec) throw InputError("keyframe file '" + text + "' cannot be read (" + ec.message() + ")");

@@ -14,7 +14,7 @@
 namespace viz::scene {
 namespace {
 
-bool endsWith(const std::string& s, const std::string& suffix) {
+bool endsWithIgnoringCase(const std::string& s, const std::string& suffix) {
     if (s.size() < suffix.size()) return false;
     return std::equal(suffix.rbegin(), suffix.rend(), s.rbegin(),
                       [](char a, char b) { return std::tolower((unsigned char)a) == std::tolower((unsigned char)b); });
@@ -76,7 +76,7 @@ Scene loadScene(const std::string& nameOrPath, const LoadOptions& options) {
             throw InputError("unknown stiff case '" + nameOrPath + "' (known: " + known + ")");
         }
         scene = buildStiffScene(*c);
-    } else if (endsWith(nameOrPath, ".gltf") || endsWith(nameOrPath, ".glb")) {
+    } else if (endsWithIgnoringCase(nameOrPath, ".gltf") || endsWithIgnoringCase(nameOrPath, ".glb")) {
         scene = loadGltf(nameOrPath, options);
     } else {
         std::string known;

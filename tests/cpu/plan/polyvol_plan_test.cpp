@@ -13,7 +13,7 @@
 namespace viz {
 namespace {
 
-const FeaturePlan& feature(const Plan& plan, const std::string& name) {
+const FeaturePlan& requiredFeature(const Plan& plan, const std::string& name) {
     static const FeaturePlan kNone;
     const FeaturePlan* f = findFeature(plan, name);
     if (!f) ADD_FAILURE() << "polyvol lists no feature " << name;
@@ -49,25 +49,25 @@ TEST(PolyvolPlan, CompilesOnlyTheLightAndShadowCodeEachSceneUses) {
     for (const auto& [name, row] : table) {
         const Plan p = polyvolPlan(name);
         for (const StagePlan& s : p.stages) EXPECT_TRUE(s.runs) << name << " " << s.stage;
-        EXPECT_EQ(feature(p, "SPOT").enabled, row.spot) << name;
-        EXPECT_EQ(feature(p, "COOKIE").enabled, row.cookie) << name;
-        EXPECT_EQ(feature(p, "SHADOW_MAPS_CUBE").enabled, row.cube) << name;
-        EXPECT_EQ(feature(p, "SHADOW_MAPS_2D").enabled, row.maps2D) << name;
-        EXPECT_EQ(feature(p, "AREA_VPLS").enabled, row.area) << name;
-        EXPECT_FALSE(feature(p, "AIRLIGHT_LUT").enabled) << name << ": analytic by default, no table";
-        EXPECT_FALSE(feature(p, "ADAPTIVE").enabled) << name << ": static by default";
+        EXPECT_EQ(requiredFeature(p, "SPOT").enabled, row.spot) << name;
+        EXPECT_EQ(requiredFeature(p, "COOKIE").enabled, row.cookie) << name;
+        EXPECT_EQ(requiredFeature(p, "SHADOW_MAPS_CUBE").enabled, row.cube) << name;
+        EXPECT_EQ(requiredFeature(p, "SHADOW_MAPS_2D").enabled, row.maps2D) << name;
+        EXPECT_EQ(requiredFeature(p, "AREA_VPLS").enabled, row.area) << name;
+        EXPECT_FALSE(requiredFeature(p, "AIRLIGHT_LUT").enabled) << name << ": analytic by default, no table";
+        EXPECT_FALSE(requiredFeature(p, "ADAPTIVE").enabled) << name << ": static by default";
         // The define that leaves each unused path out is named.
         if (!row.spot) {
-            EXPECT_TRUE(mentions(feature(p, "SPOT"), "LIGHTS_NO_SPOT")) << name;
+            EXPECT_TRUE(mentions(requiredFeature(p, "SPOT"), "LIGHTS_NO_SPOT")) << name;
         }
         if (!row.cookie) {
-            EXPECT_TRUE(mentions(feature(p, "COOKIE"), "LIGHTS_NO_COOKIE")) << name;
+            EXPECT_TRUE(mentions(requiredFeature(p, "COOKIE"), "LIGHTS_NO_COOKIE")) << name;
         }
         if (!row.cube) {
-            EXPECT_TRUE(mentions(feature(p, "SHADOW_MAPS_CUBE"), "SHADOW_NO_CUBE")) << name;
+            EXPECT_TRUE(mentions(requiredFeature(p, "SHADOW_MAPS_CUBE"), "SHADOW_NO_CUBE")) << name;
         }
         if (!row.maps2D) {
-            EXPECT_TRUE(mentions(feature(p, "SHADOW_MAPS_2D"), "SHADOW_NO_2D")) << name;
+            EXPECT_TRUE(mentions(requiredFeature(p, "SHADOW_MAPS_2D"), "SHADOW_NO_2D")) << name;
         }
         for (const FeaturePlan& f : p.features) EXPECT_NE(f.feature.rfind("LIGHT ", 0), 0u) << name << ": no culled light";
     }
@@ -89,10 +89,10 @@ TEST(PolyvolPlan, VolumeStageAnnouncesItsTriangleCount) {
 // Choices made by settings: the table and adaptive tessellation (2D maps only), and a medium that
 // scatters nothing skips the volume stage.
 TEST(PolyvolPlan, SettingsChooseTheTableAndTheTessellation) {
-    EXPECT_TRUE(feature(polyvolPlan("grate", {{"airlight", 1}}), "AIRLIGHT_LUT").enabled);
-    EXPECT_TRUE(feature(polyvolPlan("colonnade", {{"tessellation", 1}}), "ADAPTIVE").enabled);
-    EXPECT_TRUE(feature(polyvolPlan("colonnade", {{"tessellation", 1}, {"shadow_map", 512}}), "ADAPTIVE").enabled);
-    const FeaturePlan cubes = feature(polyvolPlan("tv-room", {{"tessellation", 1}}), "ADAPTIVE");
+    EXPECT_TRUE(requiredFeature(polyvolPlan("grate", {{"airlight", 1}}), "AIRLIGHT_LUT").enabled);
+    EXPECT_TRUE(requiredFeature(polyvolPlan("colonnade", {{"tessellation", 1}}), "ADAPTIVE").enabled);
+    EXPECT_TRUE(requiredFeature(polyvolPlan("colonnade", {{"tessellation", 1}, {"shadow_map", 512}}), "ADAPTIVE").enabled);
+    const FeaturePlan cubes = requiredFeature(polyvolPlan("tv-room", {{"tessellation", 1}}), "ADAPTIVE");
     EXPECT_FALSE(cubes.enabled);
     EXPECT_TRUE(mentions(cubes, "cubes stay static")) << cubes.why;
     scene::Scene clear = scene::makeBuiltinScene("grate");
@@ -108,16 +108,16 @@ TEST(PolyvolPlan, SettingsChooseTheTableAndTheTessellation) {
 // and says why, unless force_features keeps it.
 TEST(PolyvolPlan, AdaptiveTessellationIsLeftOutBelowItsBreakEvenSize) {
     for (const std::string name : {"colonnade", "forest", "grate"}) {
-        const FeaturePlan small = feature(polyvolPlan(name, {{"tessellation", 1}, {"shadow_map", 256}}), "ADAPTIVE");
+        const FeaturePlan small = requiredFeature(polyvolPlan(name, {{"tessellation", 1}, {"shadow_map", 256}}), "ADAPTIVE");
         EXPECT_FALSE(small.enabled) << name;
         EXPECT_TRUE(mentions(small, "did not pay off")) << small.why;
         const FeaturePlan forced =
-            feature(polyvolPlan(name, {{"tessellation", 1}, {"shadow_map", 256}, {"force_features", 1}}), "ADAPTIVE");
+            requiredFeature(polyvolPlan(name, {{"tessellation", 1}, {"shadow_map", 256}, {"force_features", 1}}), "ADAPTIVE");
         EXPECT_TRUE(forced.enabled) << name;
         EXPECT_TRUE(mentions(forced, "forced on")) << forced.why;
     }
     // Static stays static whatever the size, forced or not.
-    EXPECT_FALSE(feature(polyvolPlan("forest", {{"shadow_map", 2048}, {"force_features", 1}}), "ADAPTIVE").enabled);
+    EXPECT_FALSE(requiredFeature(polyvolPlan("forest", {{"shadow_map", 2048}, {"force_features", 1}}), "ADAPTIVE").enabled);
 }
 
 // A light whose lit volume misses the view volume is culled (render::planCulledLights): it is listed,
@@ -131,7 +131,7 @@ TEST(PolyvolPlan, CulledLightsAreListedAndAddNoTriangles) {
     behind.direction = -scene.camera.forward;  // shines away from everything the camera sees
     scene.lights.push_back(behind);
     const Plan after = polyvolPlan(scene, {{"shadow_map", 256}});
-    const FeaturePlan& culled = feature(after, "LIGHT behind");
+    const FeaturePlan& culled = requiredFeature(after, "LIGHT behind");
     EXPECT_FALSE(culled.enabled);
     EXPECT_FALSE(culled.why.empty());
     EXPECT_EQ(std::stoll(after.stages[2].why), std::stoll(before.stages[2].why));
@@ -143,11 +143,11 @@ TEST(PolyvolPlan, ForceFeaturesTurnsOnEverySceneChoiceOnly) {
     for (const std::string name : {"grate", "colonnade", "tv-room"}) {
         const Plan p = polyvolPlan(name, {{"force_features", 1}});
         for (const char* f : {"SPOT", "COOKIE", "SHADOW_MAPS_CUBE", "SHADOW_MAPS_2D"}) {
-            EXPECT_TRUE(feature(p, f).enabled) << name << " " << f;
-            EXPECT_EQ(mentions(feature(p, f), "forced on"), !feature(polyvolPlan(name), f).enabled) << name << " " << f;
+            EXPECT_TRUE(requiredFeature(p, f).enabled) << name << " " << f;
+            EXPECT_EQ(mentions(requiredFeature(p, f), "forced on"), !requiredFeature(polyvolPlan(name), f).enabled) << name << " " << f;
         }
-        EXPECT_FALSE(feature(p, "AIRLIGHT_LUT").enabled) << name;
-        EXPECT_FALSE(feature(p, "ADAPTIVE").enabled) << name;
+        EXPECT_FALSE(requiredFeature(p, "AIRLIGHT_LUT").enabled) << name;
+        EXPECT_FALSE(requiredFeature(p, "ADAPTIVE").enabled) << name;
     }
     scene::Scene clear = scene::makeBuiltinScene("grate");
     clear.medium.sigma_s = 0.0;

@@ -19,7 +19,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kNaNFigure = std::numeric_limits<double>::quiet_NaN();
 
 ReportRow row(const std::string& technique, const std::string& setting, double ms, double error,
               std::optional<double> temporalRms) {
@@ -52,7 +52,7 @@ protected:
         // stable; minmax: never measured along the path.
         mRows = {row("raymarch", "N=16", 40.0, 0.2, 0.02), row("raymarch", "N=64", 90.0, 0.05, 0.004),
                  row("slices", "planes=32", 5.0, 0.3, 0.2), row("vsv", "voxels=64", 8.0, 0.4, 0.01),
-                 row("minmax", "map=512", 12.0, kNaN, std::nullopt)};
+                 row("minmax", "map=512", 12.0, kNaNFigure, std::nullopt)};
     }
     void TearDown() override { fs::remove_all(mDir); }
     std::string read(const std::string& name) const {
