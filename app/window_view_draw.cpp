@@ -1,6 +1,8 @@
 // Drawing the view grid: each view's title, image, texel values, markers, plots, display strip and
 // histogram, and the dividers between views.
 #include "gui_app.h"
+#include "progress_band.h"
+#include "view_histogram.h"
 #include "view_title.h"
 #include "view_markers.h"
 
@@ -285,36 +287,16 @@ std::vector<viz::ViewMarker> GuiApp::markersFor(const ViewState& v) {
 }
 
 void GuiApp::drawStatusBands(DrawList& dl, const Rect& image) {
-    const float line = mFont->lineHeight();
-    if (mRendering) {
-        const std::string text = mHaveOutput ? "rendering... (last run " + format("%.1f s)", mLastRunSeconds)
-                                             : std::string("rendering...");
-        const Rect band{{image.min.x, image.max.y - line - 10.0f * mScale}, image.max};
-        dl.rect(band, {0.0f, 0.0f, 0.0f, 0.65f});
-        dl.textClipped({band.min.x + 6.0f * mScale, band.min.y + 3.0f * mScale}, text, kText, band.max.x);
-    }
+    const auto band = [&](const ProgressBand& b) {
+        const Rect r{{image.min.x, image.max.y - mFont->lineHeight() - 10.0f * mScale}, image.max};
+        dl.rect(r, {0.0f, 0.0f, 0.0f, 0.65f});
+        if (b.fraction >= 0.0f)
+            dl.rect({{r.min.x, r.max.y - 3.0f * mScale}, {r.min.x + b.fraction * r.size().x, r.max.y}}, kAccent);
+        dl.textClipped({r.min.x + 6.0f * mScale, r.min.y + 3.0f * mScale}, b.text, kText, r.max.x);
+    };
+    if (mRendering) band({renderingText(mHaveOutput, mLastRunSeconds)});
     const CpuProgress progress = cpuWorker().progress();
-    if (progress.busy && !technique().needsGl()) {
-        // Progress of the running pass, estimated from the previous pass's time per pixel.
-        // Pass 0: the request waits for the worker to take it (its previous pass is finishing).
-        std::string text = "computing... " + passText(progress);
-        if (progress.pass > 0)
-            text += " (" + std::to_string(progress.size.x) + "x" + std::to_string(progress.size.y) + ")  " +
-                    format("%.1f s", progress.elapsed);
-        float fraction = -1.0f;
-        // An estimate the pass has clearly outrun (the previous pass came from the cache, say)
-        // is dropped rather than shown as a full bar.
-        if (progress.estimate > 0.0 && progress.elapsed < 1.5 * progress.estimate) {
-            fraction = float(std::min(0.99, progress.elapsed / progress.estimate));
-            text += format(" of ~%.1f s", progress.estimate);
-        }
-        const Rect band{{image.min.x, image.max.y - line - 10.0f * mScale}, image.max};
-        dl.rect(band, {0.0f, 0.0f, 0.0f, 0.65f});
-        if (fraction >= 0.0f) {
-            dl.rect({{band.min.x, band.max.y - 3.0f * mScale}, {band.min.x + fraction * band.size().x, band.max.y}}, kAccent);
-        }
-        dl.textClipped({band.min.x + 6.0f * mScale, band.min.y + 3.0f * mScale}, text, kText, band.max.x);
-    }
+    if (progress.busy && !technique().needsGl()) band(cpuProgressBand(progress));
 }
 
 void GuiApp::drawStrip(int id, ViewState& v) {
@@ -375,37 +357,8 @@ void GuiApp::drawStrip(int id, ViewState& v) {
 
 void GuiApp::drawHistogram(const ViewState& v, const Rect& area) {
     if (area.size().x < 80.0f * mScale || area.size().y < 4.0f * mFont->lineHeight()) return;
-    const Histogram& h = v.histogram;
-    viz::plot::PlotSpec spec;
-    spec.title = "histogram, " + channelChoices(v.pane)[std::size_t(v.display.channel)] +
-                 (v.values.empty() ? " (no values)" : ", % of values per bin");
-    spec.logX = h.logarithmic;
-    const auto edge = [&](std::size_t i) {
-        const double t = double(i) / double(std::max<std::size_t>(1, h.bins.size()));
-        return h.logarithmic ? std::pow(10.0, std::log10(h.lo) + t * (std::log10(h.hi) - std::log10(h.lo)))
-                             : h.lo + t * (double(h.hi) - double(h.lo));
-    };
-    viz::plot::Series counts{"", {0.85f, 0.45f, 0.05f, 1.0f}, {}, true, false};
-    std::size_t total = h.below + h.above;
-    for (std::size_t c : h.bins) total += c;
-    const double percent = 100.0 / double(std::max<std::size_t>(total, 1));
-    double top = 1.0;
-    for (std::size_t i = 0; i < h.bins.size(); ++i) {
-        counts.points.push_back({edge(i), double(h.bins[i]) * percent});
-        counts.points.push_back({edge(i + 1), double(h.bins[i]) * percent});
-        top = std::max(top, double(h.bins[i]) * percent);
-    }
-    spec.series.push_back(std::move(counts));
-    const DisplayMapping m = resolveMapping(v.pane, v.display, mExposure, v.measured);
-    if (m.mode != DisplayMode::HdrColour && !h.bins.empty()) {
-        viz::plot::Series shown{"range", {0.3f, 0.85f, 1.0f, 1.0f}, {}, true, false};
-        for (double x : {double(m.lo), double(m.hi)}) {
-            if (x < h.lo || x > h.hi) continue;  // outside the data: the axis would stretch to it
-            viz::plot::Series mark{"", shown.colour, {{x, 0.0}, {x, top}}, true, false};
-            spec.series.push_back(std::move(mark));
-        }
-    }
-    viz::plot::drawPlot(*mDrawList, area, spec);
+    const DisplayMapping shown = resolveMapping(v.pane, v.display, mExposure, v.measured);
+    viz::plot::drawPlot(*mDrawList, area, histogramPlot(v.histogram, !v.values.empty(), shown));
 }
 
 }  // namespace airlight
