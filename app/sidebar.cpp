@@ -1,8 +1,30 @@
 #include "sidebar.h"
 
 #include <algorithm>
+#include <cctype>
 
 namespace airlight {
+namespace {
+
+std::string stemOf(const std::string& name) {
+    const std::size_t space = name.find_last_of(' ');
+    if (space == std::string::npos || space + 1 == name.size()) return name;
+    for (std::size_t i = space + 1; i < name.size(); ++i)
+        if (!std::isdigit(static_cast<unsigned char>(name[i]))) return name;
+    return name.substr(0, space);
+}
+
+}  // namespace
+
+std::vector<ViewGroup> groupViews(const std::vector<std::string>& views) {
+    std::vector<ViewGroup> groups;
+    for (int i = 0; i < int(views.size()); ++i) {
+        const std::string stem = stemOf(views[std::size_t(i)]);
+        if (!groups.empty() && groups.back().stem == stem) ++groups.back().count;
+        else groups.push_back({i, 1, stem});
+    }
+    return groups;
+}
 
 SidebarLayout layoutSidebar(const std::vector<std::string>& techniques, int currentTechnique,
                             const std::vector<std::string>& views, int shownView, const SidebarMetrics& m) {
@@ -25,10 +47,16 @@ SidebarLayout layoutSidebar(const std::vector<std::string>& techniques, int curr
     y += m.line;
     out.headings.push_back({"Views ([ ])", {m.pad, y}});
     y += m.line + 2.0f * m.scale;
-    for (int i = 0; i < int(views.size()) && y + m.line < out.panel.max.y; ++i) {
-        const std::string& name = views[std::size_t(i)];
-        out.entries.push_back({SidebarEntry::List::Views, i, name, "view:" + name, i == shownView, item(y)});
-        y += m.line + 4.0f * m.scale;
+    for (const ViewGroup& g : groupViews(views)) {
+        const bool holdsShown = shownView >= g.first && shownView < g.first + g.count;
+        const bool collapsed = g.count >= kViewGroupMin && !holdsShown;
+        for (int i = g.first; i < g.first + (collapsed ? 1 : g.count); ++i) {
+            if (y + m.line >= out.panel.max.y) return out;
+            const std::string& name = views[std::size_t(i)];
+            const std::string text = collapsed ? g.stem + " (" + std::to_string(g.count) + ")" : name;
+            out.entries.push_back({SidebarEntry::List::Views, i, text, "view:" + name, i == shownView, item(y)});
+            y += m.line + 4.0f * m.scale;
+        }
     }
     return out;
 }

@@ -41,6 +41,18 @@ struct SidebarMetrics {
 
 // Techniques first, every one of them, numbered 1-9 for the digit keys; then as many views as fit above
 // the panel's bottom (none before the first run: `views` empty). Wide enough for every technique's name.
+// A run of kViewGroupMin or more views named alike ("VPL shadow cube", "VPL shadow cube 1", ...) is one
+// entry, "VPL shadow cube (16)", that shows its first view, unless the view shown is one of them:
+// then each is listed. [ ] step through every view either way.
+inline constexpr int kViewGroupMin = 4;
+
+// The runs of views named alike: a name's stem is the name less a trailing " <digits>".
+struct ViewGroup {
+    int first = 0, count = 1;
+    std::string stem;
+};
+std::vector<ViewGroup> groupViews(const std::vector<std::string>& views);
+
 SidebarLayout layoutSidebar(const std::vector<std::string>& techniques, int currentTechnique,
                             const std::vector<std::string>& views, int shownView, const SidebarMetrics& m);
 

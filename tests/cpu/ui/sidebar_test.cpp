@@ -63,5 +63,57 @@ TEST(Sidebar, ThePanelIsWideEnoughForTheLongestTechniqueAndNoViewsBeforeARun) {
     EXPECT_TRUE(wide.entries.back().selected);
 }
 
+// vsv's views on an area light: 16 VPL cube maps between the frame's images and the rest.
+std::vector<std::string> vsvViews() {
+    std::vector<std::string> v = {"Final image", "Airlight L_air", "VPL shadow cube"};
+    for (int i = 1; i < 16; ++i) v.push_back("VPL shadow cube " + std::to_string(i));
+    v.insert(v.end(), {"Distance d", "Surface radiance", "L_air 2", "Visibility"});
+    return v;
+}
+
+std::vector<std::string> viewTexts(const SidebarLayout& side) {
+    std::vector<std::string> out;
+    for (const SidebarEntry& e : side.entries)
+        if (e.list == SidebarEntry::List::Views) out.push_back(e.text);
+    return out;
+}
+
+TEST(Sidebar, ViewsNamedAlikeAreGroupedByTheirStem) {
+    const std::vector<ViewGroup> groups = groupViews(vsvViews());
+    ASSERT_EQ(groups.size(), 7u);
+    EXPECT_EQ(groups[2].stem, "VPL shadow cube");
+    EXPECT_EQ(groups[2].first, 2);
+    EXPECT_EQ(groups[2].count, 16);
+    EXPECT_EQ(groups[5].stem, "L_air");  // a single numbered view is a group of one
+    EXPECT_EQ(groups[5].count, 1);
+    // Only a trailing run of digits after a space is a number: "L_air" and "Distance d" keep their names.
+    EXPECT_EQ(groupViews({"a1", "a2", "a3", "a4"}).size(), 4u);
+    EXPECT_EQ(groupViews({"a 1", "a 2", "a 3x", "a 4"}).size(), 3u);
+}
+
+TEST(Sidebar, AGroupOfFourOrMoreIsOneEntryUntilTheViewShownIsInIt) {
+    const auto views = vsvViews();
+    SidebarLayout side = layoutSidebar({"vsv"}, 0, views, 1, metrics(60.0f, 2000.0f));
+    const std::vector<std::string> collapsed = {"Final image", "Airlight L_air", "VPL shadow cube (16)",
+                                                "Distance d", "Surface radiance", "L_air 2", "Visibility"};
+    EXPECT_EQ(viewTexts(side), collapsed);
+    // The group's entry shows its first view and carries that view's script name.
+    const SidebarEntry& group = side.entries[1 + 2];
+    EXPECT_EQ(group.index, 2);
+    EXPECT_EQ(group.screenName, "view:VPL shadow cube");
+    EXPECT_FALSE(group.selected);
+    // Showing one of them lists each, the shown one selected, in order.
+    side = layoutSidebar({"vsv"}, 0, views, 7, metrics(60.0f, 2000.0f));
+    EXPECT_EQ(viewTexts(side), views);
+    for (const SidebarEntry& e : side.entries) {
+        if (e.list == SidebarEntry::List::Views) {
+            EXPECT_EQ(e.selected, e.index == 7) << e.text;
+        }
+    }
+    // Three alike stay three entries.
+    const std::vector<std::string> three = {"map", "map 1", "map 2", "other"};
+    EXPECT_EQ(viewTexts(layoutSidebar({"t"}, 0, three, 0, metrics(60.0f, 2000.0f))), three);
+}
+
 }  // namespace
 }  // namespace airlight
