@@ -60,6 +60,7 @@
 #include "scene/stiff_scenes.h"
 #include "scene/builtin_scenes.h"
 #include "session_state.h"
+#include "sidecar_json.h"
 #include "image_fit.h"
 #include "light_gizmo.h"
 #include "view_layout.h"
@@ -414,7 +415,7 @@ private:
     void drawHistogram(const ViewState& v, const Rect& area);
 
     // What the sidecar says of a view (tests assert on it).
-    nlohmann::json viewSidecar(int id, const ViewState& v);
+    ViewSidecarFacts viewSidecarFacts(int id);
     void draw();
 
     // ---- scene and technique controls (immediate-mode widgets) ----

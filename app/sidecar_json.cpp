@@ -1,5 +1,6 @@
 #include "sidecar_json.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace airlight {
@@ -58,6 +59,63 @@ nlohmann::json colourBarJson(const ColourBar& b, const viz::ui::Rect& rect, cons
                           {"pixels", sw.pixels}, {"sentinel", sw.sentinel}});
     bar["legend"] = legend;
     return bar;
+}
+
+nlohmann::json viewSidecar(const ViewState& v, const ViewSidecarFacts& facts) {
+    const DisplaySettings& d = v.display;
+    const DisplayMapping m = resolveMapping(v.pane, d, facts.exposure, v.measured);
+    nlohmann::json j = {{"cell", facts.id},
+                        {"content", v.content},
+                        {"cell_rect", {v.cell.min.x, v.cell.min.y, v.cell.max.x, v.cell.max.y}},
+                        {"focused", facts.focused},
+                        {"layer", v.pane.layer},
+                        {"zoom", v.transform.zoom},
+                        {"center", {v.transform.center.x, v.transform.center.y}},
+                        {"size", {v.pane.size.x, v.pane.size.y}},
+                        {"screen_space", facts.screenSpace},
+                        {"display", {{"channel", channelChoices(v.pane)[std::size_t(d.channel)]},
+                                     {"range", rangeModeNames()[std::size_t(d.range)]},
+                                     {"lo", m.lo}, {"hi", m.hi}, {"log", d.logScale},
+                                     {"colour_map", colourMapNames()[std::size_t(d.colourMap)]},
+                                     {"mode", int(m.mode)}, {"mark_negative", m.markNegative},
+                                     {"strip_open", d.stripOpen}}},
+                        {"plots", v.pane.plots.size()},
+                        {"title_elided", v.titleElided},
+                        {"note_elided", v.noteElided},
+                        {"negative_pixels", v.counts.negative},
+                        {"nan_pixels", v.counts.nan},
+                        {"inf_pixels", v.counts.inf}};
+    // What the bar under the view says, as drawn in the last frame.
+    if (v.colourBar.kind != ColourBar::Kind::None) j["colour_bar"] = colourBarJson(v.colourBar, v.bar, v.ramp);
+    if (d.difference != DifferenceMode::Off) {
+        // Figures only where they were computed and are defined (relative L2 is not against a black
+        // reference); the note says why one is missing.
+        nlohmann::json diff = {{"mode", differenceModeNames()[std::size_t(d.difference)]},
+                               {"against", d.against}, {"note", v.differenceNote}};
+        if (v.error && std::isfinite(v.error->relativeL2)) diff["relative_l2"] = v.error->relativeL2;
+        if (v.error && std::isfinite(v.error->maxAbsolute)) diff["max_abs"] = v.error->maxAbsolute;
+        j["difference"] = std::move(diff);
+    }
+    // The linked cursor as this view marks it: the pixel itself in screen-space views.
+    j["cursor"] = nullptr;
+    if (facts.linkedPixel && facts.screenSpace) {
+        const glm::ivec2 at = *facts.linkedPixel;
+        j["cursor"] = {at.x, at.y};
+        if (glm::vec4 value(0.0f); valueAt(v, at, value)) {
+            nlohmann::json values = nlohmann::json::array();
+            for (int c = 0; c < std::clamp(v.meaningful, 1, 4); ++c)
+                values.push_back(std::isfinite(value[c]) ? nlohmann::json(value[c]) : nlohmann::json(nullptr));
+            j["cursor_value"] = values;
+        }
+    }
+    if (facts.markers) {
+        nlohmann::json marks = nlohmann::json::array();
+        for (const viz::ViewMarker& mk : *facts.markers)
+            marks.push_back({{"from", {mk.from.x, mk.from.y}}, {"to", {mk.to.x, mk.to.y}}, {"label", mk.label},
+                             {"layer", mk.layer}});
+        j["markers"] = marks;
+    }
+    return j;
 }
 
 }  // namespace airlight

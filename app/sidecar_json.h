@@ -1,8 +1,9 @@
 // Parts of the screenshot sidecar (the JSON beside a window screenshot that tests and handouts read) that
 // are plain conversions of one value: the plan, the lights, the last run's stage times, a colour bar as
-// drawn. The window assembles the sidecar from them (window_automation.cpp).
+// drawn, one view of the grid. The window assembles the sidecar from them (window_automation.cpp).
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -11,6 +12,7 @@
 #include "debug/technique.h"
 #include "scene/scene.h"
 #include "ui/text_renderer.h"
+#include "view_state.h"
 
 namespace airlight {
 
@@ -23,5 +25,21 @@ nlohmann::json timingJson(const viz::Timing& timing);
 // What the bar under a view says: kind, range, units, caption, ticks (non-finite numbers as null), the
 // classes of a class bar, the legend's swatches (NaN and Inf named), and where it and its ramp were drawn.
 nlohmann::json colourBarJson(const ColourBar& bar, const viz::ui::Rect& rect, const viz::ui::Rect& ramp);
+
+// What the window knows about a view beyond the view itself.
+struct ViewSidecarFacts {
+    int id = 0;                               // its cell in the view grid
+    bool focused = false;
+    bool screenSpace = false;                 // one texel per frame pixel: the linked cursor is its pixel
+    float exposure = 0.0f;                    // the window's, for the resolved display mapping
+    std::optional<glm::ivec2> linkedPixel;    // the linked cursor, when there is one
+    std::optional<std::vector<viz::ViewMarker>> markers;  // what a data view marks for the linked cursor
+};
+
+// One view of the grid: what it shows and how (content, layer, zoom, the display settings resolved),
+// its counts of negative, NaN and Inf pixels, its colour bar, the difference figures when it shows a
+// difference (only those defined), the linked cursor and the values under it (non-finite as null), and
+// the markers a data view draws for it.
+nlohmann::json viewSidecar(const ViewState& v, const ViewSidecarFacts& facts);
 
 }  // namespace airlight

@@ -74,7 +74,7 @@ void GuiApp::writeSidecar(const std::string& path) {
     for (const auto& v : mCanvas.screen.views()) {
         nlohmann::json entry = {{"name", v.name}, {"title", v.title},
                                 {"rect", {v.rect.min.x, v.rect.min.y, v.rect.max.x, v.rect.max.y}}};
-        if (v.cell >= 0 && mViews.count(v.cell)) entry.update(viewSidecar(v.cell, mViews.at(v.cell)));
+        if (v.cell >= 0 && mViews.count(v.cell)) entry.update(viewSidecar(mViews.at(v.cell), viewSidecarFacts(v.cell)));
         views.push_back(entry);
     }
     nlohmann::json sidecar = {{"window", {fb.x, fb.y}},
@@ -160,64 +160,16 @@ void GuiApp::writeSidecar(const std::string& path) {
     if (!error.empty()) throw viz::InputError("cannot write '" + json.string() + "': " + error);
 }
 
-nlohmann::json GuiApp::viewSidecar(int id, const ViewState& v) {
-    const DisplaySettings& d = v.display;
-    const DisplayMapping m = resolveMapping(v.pane, d, mExposure, v.measured);
-    nlohmann::json j = {{"cell", id},
-                        {"content", v.content},
-                        {"cell_rect", {v.cell.min.x, v.cell.min.y, v.cell.max.x, v.cell.max.y}},
-                        {"focused", id == mFocused},
-                        {"layer", v.pane.layer},
-                        {"zoom", v.transform.zoom},
-                        {"center", {v.transform.center.x, v.transform.center.y}},
-                        {"size", {v.pane.size.x, v.pane.size.y}},
-                        {"screen_space", isScreenSpace(v)},
-                        {"display", {{"channel", channelChoices(v.pane)[std::size_t(d.channel)]},
-                                     {"range", rangeModeNames()[std::size_t(d.range)]},
-                                     {"lo", m.lo}, {"hi", m.hi}, {"log", d.logScale},
-                                     {"colour_map", colourMapNames()[std::size_t(d.colourMap)]},
-                                     {"mode", int(m.mode)}, {"mark_negative", m.markNegative},
-                                     {"strip_open", d.stripOpen}}},
-                        {"plots", v.pane.plots.size()},
-                        {"title_elided", v.titleElided},
-                        {"note_elided", v.noteElided},
-                        {"negative_pixels", v.counts.negative},
-                        {"nan_pixels", v.counts.nan},
-                        {"inf_pixels", v.counts.inf}};
-    // What the bar under the view says, as drawn in the last frame.
-    if (v.colourBar.kind != ColourBar::Kind::None) j["colour_bar"] = colourBarJson(v.colourBar, v.bar, v.ramp);
-    if (d.difference != DifferenceMode::Off) {
-        // Figures only where they were computed and are defined (relative L2 is not against a black
-        // reference); the note says why one is missing.
-        nlohmann::json diff = {{"mode", differenceModeNames()[std::size_t(d.difference)]},
-                               {"against", d.against}, {"note", v.differenceNote}};
-        if (v.error && std::isfinite(v.error->relativeL2)) diff["relative_l2"] = v.error->relativeL2;
-        if (v.error && std::isfinite(v.error->maxAbsolute)) diff["max_abs"] = v.error->maxAbsolute;
-        j["difference"] = std::move(diff);
-    }
-    // The linked cursor as this view marks it: the pixel itself in screen-space views.
-    std::optional<glm::ivec2> at;
-    if (mLinkedPixel && isScreenSpace(v)) at = *mLinkedPixel;
-    if (at) {
-        glm::vec4 value(0.0f);
-        j["cursor"] = {at->x, at->y};
-        if (valueAt(v, *at, value)) {
-            nlohmann::json values = nlohmann::json::array();
-            for (int c = 0; c < std::clamp(v.meaningful, 1, 4); ++c)
-                values.push_back(std::isfinite(value[c]) ? nlohmann::json(value[c]) : nlohmann::json(nullptr));
-            j["cursor_value"] = values;
-        }
-    } else {
-        j["cursor"] = nullptr;
-    }
-    if (mLinkedPixel && !isScreenSpace(v) && v.pane.texture != 0) {
-        nlohmann::json marks = nlohmann::json::array();
-        for (const viz::ViewMarker& mk : markersFor(v))
-            marks.push_back({{"from", {mk.from.x, mk.from.y}}, {"to", {mk.to.x, mk.to.y}}, {"label", mk.label},
-                             {"layer", mk.layer}});
-        j["markers"] = marks;
-    }
-    return j;
+ViewSidecarFacts GuiApp::viewSidecarFacts(int id) {
+    ViewState& v = mViews.at(id);
+    ViewSidecarFacts f;
+    f.id = id;
+    f.focused = id == mFocused;
+    f.screenSpace = isScreenSpace(v);
+    f.exposure = mExposure;
+    f.linkedPixel = mLinkedPixel;
+    if (mLinkedPixel && !f.screenSpace && v.pane.texture != 0) f.markers = markersFor(v);
+    return f;
 }
 
 }  // namespace airlight

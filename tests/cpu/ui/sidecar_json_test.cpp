@@ -61,5 +61,68 @@ TEST(SidecarJson, AColourBarKeepsNonFiniteNumbersAsNullAndNamesNanAndInfSwatches
     EXPECT_FALSE(j.contains("classes")) << "a ramp has no classes";
 }
 
+// A 2x1 view's values: texel (1, 0) holds 0.25, NaN, 4.
+ViewState twoTexelView() {
+    ViewState v;
+    v.content = "airlight";
+    v.values = viz::Image(2, 1, 3);
+    v.values.at(1, 0, 0) = 0.25f;
+    v.values.at(1, 0, 1) = std::numeric_limits<float>::quiet_NaN();
+    v.values.at(1, 0, 2) = 4.0f;
+    v.meaningful = 3;
+    v.counts.nan = 1;
+    return v;
+}
+
+TEST(SidecarJson, AScreenSpaceViewGivesTheLinkedPixelAndItsValuesWithNaNAsNull) {
+    const ViewState v = twoTexelView();
+    ViewSidecarFacts f;
+    f.id = 3;
+    f.focused = true;
+    f.screenSpace = true;
+    f.linkedPixel = glm::ivec2(1, 0);
+    const nlohmann::json j = viewSidecar(v, f);
+    EXPECT_EQ(j.at("cell"), 3);
+    EXPECT_EQ(j.at("focused"), true);
+    EXPECT_EQ(j.at("content"), "airlight");
+    EXPECT_EQ(j.at("nan_pixels"), 1);
+    EXPECT_EQ(j.at("cursor"), nlohmann::json::array({1, 0}));
+    EXPECT_EQ(j.at("cursor_value"), nlohmann::json::parse("[0.25, null, 4.0]"));
+    EXPECT_FALSE(j.contains("markers"));
+    EXPECT_FALSE(j.contains("difference")) << "no difference shown";
+    // Outside the values: the cursor, no values.
+    f.linkedPixel = glm::ivec2(5, 0);
+    EXPECT_FALSE(viewSidecar(v, f).contains("cursor_value"));
+}
+
+TEST(SidecarJson, ADataViewListsItsMarkersAndNoCursor) {
+    const ViewState v = twoTexelView();
+    ViewSidecarFacts f;
+    f.linkedPixel = glm::ivec2(1, 0);
+    f.markers = std::vector<viz::ViewMarker>{{{0.5f, 0.5f}, {1.5f, 0.5f}, "ray", 2}};
+    const nlohmann::json j = viewSidecar(v, f);
+    EXPECT_TRUE(j.at("cursor").is_null());
+    ASSERT_EQ(j.at("markers").size(), 1u);
+    EXPECT_EQ(j.at("markers")[0].at("label"), "ray");
+    EXPECT_EQ(j.at("markers")[0].at("layer"), 2);
+    EXPECT_EQ(j.at("markers")[0].at("to"), nlohmann::json::array({1.5, 0.5}));
+}
+
+TEST(SidecarJson, ADifferenceGivesOnlyTheFiguresThatAreDefined) {
+    ViewState v = twoTexelView();
+    v.display.difference = DifferenceMode::Relative;
+    v.display.against = "raymarch";
+    v.differenceNote = "the reference is black";
+    v.error = viz::report::ErrorMetrics{};
+    v.error->relativeL2 = std::numeric_limits<double>::quiet_NaN();
+    v.error->maxAbsolute = 0.5;
+    const nlohmann::json d = viewSidecar(v, ViewSidecarFacts{}).at("difference");
+    EXPECT_EQ(d.at("mode"), differenceModeNames()[std::size_t(DifferenceMode::Relative)]);
+    EXPECT_EQ(d.at("against"), "raymarch");
+    EXPECT_EQ(d.at("note"), "the reference is black");
+    EXPECT_FALSE(d.contains("relative_l2"));
+    EXPECT_EQ(d.at("max_abs"), 0.5);
+}
+
 }  // namespace
 }  // namespace airlight
