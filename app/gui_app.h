@@ -394,7 +394,7 @@ private:
     // What a view's title lines (view_title.h: name, list position, id, stage, layer; the note with the
     // range or the error figures) need from the window.
     ViewTitleFacts viewTitleFacts() const;
-    void drawView(int id, ViewState& v);
+    void drawView(int id, ViewState& v, const ViewTitleFacts& facts);
     void drawPlots(const ViewState& v);
 
     // The technique's marks for the linked pixel, asked once per pixel and run (a GPU technique may

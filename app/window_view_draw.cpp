@@ -124,10 +124,11 @@ void GuiApp::drawViewGrid(const Rect& area) {
     }
     // Camera drags are scaled by the tallest frame-shaped view (the last one when none is shown).
     float frameHeight = 0.0f;
+    const ViewTitleFacts facts = viewTitleFacts();  // the same for every view of the frame
     for (const ViewCellRect& c : mCells) {
         ViewState& v = mViews.at(c.view);
         if (isScreenSpace(v)) frameHeight = std::max(frameHeight, v.image.size().y);
-        drawView(c.view, v);
+        drawView(c.view, v, facts);
     }
     if (frameHeight > 1.0f) mImageHeight = frameHeight;
     if (mComparison.isOpen()) {
@@ -153,11 +154,11 @@ ViewTitleFacts GuiApp::viewTitleFacts() const {
     return f;
 }
 
-void GuiApp::drawView(int id, ViewState& v) {
+void GuiApp::drawView(int id, ViewState& v, const ViewTitleFacts& facts) {
     DrawList& dl = *mDrawList;
     const float line = mFont->lineHeight(), s = mScale;
     const bool focused = id == mFocused;
-    const auto [title, note] = viewTitle(v, viewTitleFacts());
+    const auto [title, note] = viewTitle(v, facts);
     // Title bar: highlighted when focused (keys and the views list act on it); drag it onto another
     // view to swap the two.
     mBackground->rect(v.title, focused ? kHighlight : kPanel);
