@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -150,6 +151,44 @@ TEST_F(SlicesTest, AccumulationAfterKPlanesIsTheSumOfThePlanes) {
     for (float v : full->image->pixels) a += v;
     for (float v : sum.pixels) b += v;
     EXPECT_GT(a, b);
+}
+
+// Plane k's note counts its fragments (an occlusion query on the draw of that plane alone). The image read
+// back bounds the count from below: a texel with any non-zero channel took a fragment (a fragment in shadow
+// may write zero), and a plane with no fragment is black and says why. One spot light: one plane per
+// pixel at most.
+TEST_F(SlicesTest, ThePlanesNoteCountsItsFragmentsAndABlackPlaneSaysWhy) {
+    const viz::scene::Scene scene = viz::scene::makeBuiltinScene("grate");
+    constexpr int kW = 80, kH = 60, kPlanes = 24;
+    int withFragments = 0, withoutFragments = 0;
+    for (int k = 1; k <= kPlanes; ++k) {
+        const viz::FrameOutput out =
+            render(scene, "slices", {{"planes", kPlanes}, {"planes_drawn", k}}, kW, kH, 2, {"slices.plane"});
+        const viz::Intermediate* plane = find(out, "slices.plane");
+        ASSERT_TRUE(plane && plane->image);
+        ASSERT_TRUE(!plane->note.empty() && std::isdigit(static_cast<unsigned char>(plane->note[0]))) << plane->note;
+        const long fragments = std::stol(plane->note);
+        EXPECT_NE(plane->note.find(" fragments"), std::string::npos) << plane->note;
+        long lit = 0;
+        const viz::Image& image = *plane->image;
+        for (int y = 0; y < image.height; ++y)
+            for (int x = 0; x < image.width; ++x) {
+                bool any = false;
+                for (int c = 0; c < image.channels; ++c) any = any || image.at(x, y, c) != 0.0f;
+                lit += any ? 1 : 0;
+            }
+        EXPECT_LE(lit, fragments) << "plane " << k;
+        EXPECT_LE(fragments, long(kW) * kH) << "plane " << k;
+        if (fragments == 0) {
+            ++withoutFragments;
+            EXPECT_NE(plane->note.find("beyond the first surface"), std::string::npos) << plane->note;
+        } else {
+            ++withFragments;
+            EXPECT_EQ(plane->note.find("beyond the first surface"), std::string::npos) << plane->note;
+        }
+    }
+    std::printf("grate, %d planes: %d with fragments, %d without\n", kPlanes, withFragments, withoutFragments);
+    EXPECT_GT(withFragments, 0);
 }
 
 // A scene with no cookie and no noise compiles the plane shader without those terms; a scene with a

@@ -297,6 +297,7 @@ FrameOutput SlicesTechnique::run(const FrameInput& input) {
             glClearTexImage(mPlane.id(), 0, GL_RGBA, GL_FLOAT, zero);
             mCounters.clearZero();
             mQueryCounts[0] = mQueryCounts[1] = 0.0;
+            mPlaneQueriesUsed = 0;
             mPlanesUsed.clear();
             mPolygons.clear();
             mRayPlanes.reset();
@@ -312,7 +313,8 @@ FrameOutput SlicesTechnique::run(const FrameInput& input) {
                        : "sum of the planes drawn so far (back to front), times the store scale",
                 "stored value", ViewKind::Colour, 0.0f, 1.0f, mAccum));
             out.intermediates.push_back(render::textureIntermediate(
-                kPlane, "Plane " + std::to_string(drawn), "the last plane drawn alone (every light), float",
+                kPlane, "Plane " + std::to_string(drawn),
+                planeFragmentsNote() + "the last plane drawn alone (every light), float",
                 "stored value", ViewKind::Colour, 0.0f, 0.05f, mPlane));
             out.intermediates.push_back(polygonIntermediate());
             // Shown in the window, the planes' table is drawn as the orbit view too (as polyvol's mesh):

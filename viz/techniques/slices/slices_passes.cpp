@@ -80,6 +80,7 @@ void SlicesTechnique::drawPlanes(const scene::Scene& scene, const FrameInput& in
     };
     mPlanesUsed.clear();
     mPolygons.clear();
+    mPlaneQueriesUsed = 0;
     const CameraBasis basis{cam.forward, scene::cameraRight(cam), cam.up};
 
     program.use();
@@ -209,10 +210,14 @@ void SlicesTechnique::drawPlanes(const scene::Scene& scene, const FrameInput& in
         mFramebuffer.checkComplete();
         mFramebuffer.bind();
         glDrawArrays(GL_TRIANGLES, 0, 6 * drawn);
-        // The last plane alone, for stepping and the per-plane readback.
+        // The last plane alone, for stepping and the per-plane readback, its fragments counted.
         mFramebuffer.attachColour(0, mPlane);
         mFramebuffer.bind();
+        if (std::size_t(mPlaneQueriesUsed) == mPlaneQueries.size()) mPlaneQueries.emplace_back();
+        gl::SamplesPassedQuery& planeQuery = mPlaneQueries[std::size_t(mPlaneQueriesUsed++)];
+        planeQuery.begin();
         glDrawArrays(GL_TRIANGLES, 6 * (drawn - 1), 6);
+        planeQuery.end();
         if (pick) {
             // The picked pixel alone with colour writes off: the same planes through the same shader
             // (PICK_RAY), which records what each plane computes there. The frame pays one pixel.

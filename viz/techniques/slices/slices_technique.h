@@ -10,6 +10,7 @@
 #include "gl/buffer.h"
 #include "gl/framebuffer.h"
 #include "gl/readback.h"
+#include "gl/samples_query.h"
 #include "gl/vertex_array.h"
 #include "render/compose.h"
 #include "render/eye_space.h"
@@ -178,6 +179,13 @@ private:
     render::MeshView mMeshView;
     std::vector<std::vector<glm::dvec3>> mPolygons;       // drawn planes, clipped (eye-relative world)
     double mQueryCounts[2] = {0.0, 0.0};  // occlusion queries: outside the frustum, all
+    gl::SamplesPassedQuery mCountQuery;
+    // The fragments of the last plane drawn alone (slices.plane), one query per drawn light, read when
+    // the plane's note is written (after the stage's draws, so the count waits for nothing else).
+    std::vector<gl::SamplesPassedQuery> mPlaneQueries;
+    int mPlaneQueriesUsed = 0;
+    // "N fragments: " to start slices.plane's note, and why a plane with none is black.
+    std::string planeFragmentsNote();
     glm::vec3 mMaskColour{1.0f};
     // The picked pixel's planes (slices.ray_planes).
     gl::Buffer mPickRecords;

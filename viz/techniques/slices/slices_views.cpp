@@ -28,21 +28,25 @@ Intermediate SlicesTechnique::polygonIntermediate() const {
 }
 
 void SlicesTechnique::countFragments(const gl::Program& program, int drawn) {
-    GLuint query = 0;
-    glCreateQueries(GL_SAMPLES_PASSED, 1, &query);
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     for (int pass = 1; pass <= 2; ++pass) {
         program.set("uCountPass", pass);
-        glBeginQuery(GL_SAMPLES_PASSED, query);
+        mCountQuery.begin();
         glDrawArrays(GL_TRIANGLES, 0, 6 * drawn);
-        glEndQuery(GL_SAMPLES_PASSED);
-        GLuint samples = 0;
-        glGetQueryObjectuiv(query, GL_QUERY_RESULT, &samples);
-        mQueryCounts[pass == 1 ? 1 : 0] += double(samples);
+        mCountQuery.end();
+        mQueryCounts[pass == 1 ? 1 : 0] += double(mCountQuery.count());
     }
     program.set("uCountPass", 0);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    glDeleteQueries(1, &query);
+}
+
+std::string SlicesTechnique::planeFragmentsNote() {
+    if (mPlaneQueriesUsed == 0) return "";
+    std::uint64_t fragments = 0;
+    for (int i = 0; i < mPlaneQueriesUsed; ++i) fragments += mPlaneQueries[std::size_t(i)].count();
+    // First in the note: a title too narrow for the whole note keeps its start.
+    if (fragments == 0) return "0 fragments, black (beyond the first surface or outside the light's volume): ";
+    return std::to_string(fragments) + " fragments: ";
 }
 
 }  // namespace viz::slices_detail
