@@ -66,7 +66,7 @@ nlohmann::json viewSidecar(const ViewState& v, const ViewSidecarFacts& facts) {
     const DisplayMapping m = resolveMapping(v.pane, d, facts.exposure, v.measured);
     nlohmann::json j = {{"cell", facts.id},
                         {"content", v.content},
-                        {"cell_rect", {v.cell.min.x, v.cell.min.y, v.cell.max.x, v.cell.max.y}},
+                        {"cell_rect", rectJson(v.cell)},
                         {"focused", facts.focused},
                         {"layer", v.pane.layer},
                         {"zoom", v.transform.zoom},

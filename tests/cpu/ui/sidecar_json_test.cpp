@@ -75,7 +75,8 @@ ViewState twoTexelView() {
 }
 
 TEST(SidecarJson, AScreenSpaceViewGivesTheLinkedPixelAndItsValuesWithNaNAsNull) {
-    const ViewState v = twoTexelView();
+    ViewState v = twoTexelView();
+    v.cell = {{10.0f, 20.0f}, {110.0f, 95.0f}};
     ViewSidecarFacts f;
     f.id = 3;
     f.focused = true;
@@ -83,6 +84,7 @@ TEST(SidecarJson, AScreenSpaceViewGivesTheLinkedPixelAndItsValuesWithNaNAsNull) 
     f.linkedPixel = glm::ivec2(1, 0);
     const nlohmann::json j = viewSidecar(v, f);
     EXPECT_EQ(j.at("cell"), 3);
+    EXPECT_EQ(j.at("cell_rect"), nlohmann::json::parse("[10, 20, 110, 95]"));
     EXPECT_EQ(j.at("focused"), true);
     EXPECT_EQ(j.at("content"), "airlight");
     EXPECT_EQ(j.at("nan_pixels"), 1);
