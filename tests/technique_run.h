@@ -8,7 +8,7 @@
 namespace viz::testing {
 
 inline FrameOutput runTechnique(Technique& technique, const scene::Scene& scene, const Settings& given, int w,
-                                int h, int stopAfter = -1, int frame = 0) {
+                                int h, int stopAfter = -1, int frame = 0, const std::vector<std::string>& views = {}) {
     FrameInput in;
     in.scene = &scene;
     in.width = w;
@@ -16,6 +16,7 @@ inline FrameOutput runTechnique(Technique& technique, const scene::Scene& scene,
     setRunSettings(in, completeSettings(technique, given));
     in.stopAfterStage = stopAfter;
     in.frame = frame;
+    in.views = views;
     return technique.run(in);
 }
 

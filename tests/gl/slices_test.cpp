@@ -191,6 +191,33 @@ TEST_F(SlicesTest, ThePlanesNoteCountsItsFragmentsAndABlackPlaneSaysWhy) {
     EXPECT_GT(withFragments, 0);
 }
 
+// slices.plane is drawn only for a caller that shows it (StageInfo::onDemand): unasked, the run publishes its
+// entry without a texture and a note saying when it is drawn, and every other image is the same to the bit
+// (the extra plane is drawn into its own target).
+TEST_F(SlicesTest, TheLastPlaneAloneIsDrawnOnlyWhenShown) {
+    const viz::scene::Scene scene = viz::scene::makeBuiltinScene("grate");
+    const viz::Settings settings = {{"planes", 24}, {"planes_drawn", 12}};
+    auto technique = viz::makeTechnique("slices");
+    const viz::Settings complete = viz::completeSettings(*technique, settings);
+    const viz::FrameOutput unasked = viz::testing::runTechnique(*technique, scene, complete, 80, 60);
+    const viz::Intermediate* plane = find(unasked, "slices.plane");
+    ASSERT_TRUE(plane);
+    EXPECT_EQ(plane->glTexture, 0u);
+    EXPECT_FALSE(plane->image);
+    EXPECT_NE(plane->note.find("drawn when this view is shown"), std::string::npos) << plane->note;
+    const viz::Image unaskedAccum = viz::gl::readTexture(find(unasked, "slices.accumulation")->glTexture);
+    const viz::Image unaskedAirlight = unasked.airlight;
+
+    const viz::FrameOutput shown = viz::testing::runTechnique(*technique, scene, complete, 80, 60, -1, 0, {"slices.plane"});
+    plane = find(shown, "slices.plane");
+    ASSERT_TRUE(plane);
+    EXPECT_NE(plane->glTexture, 0u);
+    EXPECT_NE(plane->note.find(" fragments"), std::string::npos) << plane->note;
+    EXPECT_EQ(viz::gl::readTexture(find(shown, "slices.accumulation")->glTexture).pixels, unaskedAccum.pixels);
+    EXPECT_EQ(shown.airlight.pixels, unaskedAirlight.pixels);
+    EXPECT_EQ(shown.final.pixels, unasked.final.pixels);
+}
+
 // A scene with no cookie and no noise compiles the plane shader without those terms; a scene with a
 // cookie and noise on compiles them in.
 TEST_F(SlicesTest, PermutationKeyLeavesOutUnusedTerms) {

@@ -40,8 +40,9 @@ protected:
     // goes away. Every other GL name in the result is cleared.
     static FrameOutput render(const scene::Scene& scene, const std::string& technique, const Settings& settings,
                               int w, int h, int stopAfter = -1, const std::vector<std::string>& keep = {}) {
+        // What it reads back is what it shows: the on-demand views among them are drawn (StageInfo::onDemand).
         auto t = makeTechnique(technique);
-        FrameOutput out = runTechnique(*t, scene, settings, w, h, stopAfter);
+        FrameOutput out = runTechnique(*t, scene, settings, w, h, stopAfter, 0, onDemandAmong(*t, keep));
         for (auto& i : out.intermediates) {
             if (i.glTexture != 0 && std::find(keep.begin(), keep.end(), i.id) != keep.end())
                 i.image = std::make_shared<Image>(gl::readTexture(i.glTexture));

@@ -116,7 +116,7 @@ SlicesTechnique::SlicesTechnique()
           "clip_y_min", "clip_y_max", "directional_box", "plane_grid", "distance_scale", "count_fragments", "mesh_view",
           "mesh_yaw", "mesh_pitch", "mesh_zoom", "pick_x", "pick_y", "ray_planes", "force_features"},
          {kAccum, kPlane, kPlaneMesh, kPlaneView, kFragments, kRayPlanes, kRayPlanesChart}, 128, "planes_drawn", "planes",
-         {kPlaneMesh}},
+         {kPlaneMesh, kPlane}},
         {kStageResolve, "Resolve", "accumulation -> L_air: undo the 8-bit scale, sum the mask channels, blur",
          {"blur"}, {kAirlight}, 1},
         render::SceneViewPasses::composeStage("slices"),
@@ -291,6 +291,7 @@ FrameOutput SlicesTechnique::run(const FrameInput& input) {
         kPlanesIndex,
         [&] {
             t = terms(scene, s);
+            t.lastPlane = std::find(input.views.begin(), input.views.end(), kPlane) != input.views.end();
             allocateTargets(input.width, input.height, s.accum);
             const float zero[4] = {0, 0, 0, 0};
             glClearTexImage(mAccum.id(), 0, GL_RGBA, GL_FLOAT, zero);
@@ -312,10 +313,7 @@ FrameOutput SlicesTechnique::run(const FrameInput& input) {
                 t.mask ? "plane i added to channel i mod 4 (r, g, b, a), times the store scale"
                        : "sum of the planes drawn so far (back to front), times the store scale",
                 "stored value", ViewKind::Colour, 0.0f, 1.0f, mAccum));
-            out.intermediates.push_back(render::textureIntermediate(
-                kPlane, "Plane " + std::to_string(drawn),
-                planeFragmentsNote() + "the last plane drawn alone (every light), float",
-                "stored value", ViewKind::Colour, 0.0f, 0.05f, mPlane));
+            out.intermediates.push_back(planeIntermediate(drawn, t.lastPlane));
             out.intermediates.push_back(polygonIntermediate());
             // Shown in the window, the planes' table is drawn as the orbit view too (as polyvol's mesh):
             // a table of vertices stretched into an image says nothing.

@@ -210,14 +210,18 @@ void SlicesTechnique::drawPlanes(const scene::Scene& scene, const FrameInput& in
         mFramebuffer.checkComplete();
         mFramebuffer.bind();
         glDrawArrays(GL_TRIANGLES, 0, 6 * drawn);
-        // The last plane alone, for stepping and the per-plane readback, its fragments counted.
-        mFramebuffer.attachColour(0, mPlane);
-        mFramebuffer.bind();
-        if (std::size_t(mPlaneQueriesUsed) == mPlaneQueries.size()) mPlaneQueries.emplace_back();
-        gl::SamplesPassedQuery& planeQuery = mPlaneQueries[std::size_t(mPlaneQueriesUsed++)];
-        planeQuery.begin();
-        glDrawArrays(GL_TRIANGLES, 6 * (drawn - 1), 6);
-        planeQuery.end();
+        if (t.lastPlane) {
+            // The last plane alone, for stepping and the per-plane readback, its fragments counted; only
+            // for a caller that shows slices.plane (its query's result is waited for when the note is
+            // written).
+            mFramebuffer.attachColour(0, mPlane);
+            mFramebuffer.bind();
+            if (std::size_t(mPlaneQueriesUsed) == mPlaneQueries.size()) mPlaneQueries.emplace_back();
+            gl::SamplesPassedQuery& planeQuery = mPlaneQueries[std::size_t(mPlaneQueriesUsed++)];
+            planeQuery.begin();
+            glDrawArrays(GL_TRIANGLES, 6 * (drawn - 1), 6);
+            planeQuery.end();
+        }
         if (pick) {
             // The picked pixel alone with colour writes off: the same planes through the same shader
             // (PICK_RAY), which records what each plane computes there. The frame pays one pixel.

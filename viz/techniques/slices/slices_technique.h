@@ -69,6 +69,7 @@ struct Terms {
     bool spot = false, cookie = false, shadow = false, pcf = false, noise = false;
     bool mask = false, blur = false, clip = true, userClip = false, count = false, cubes = false;
     bool pick = false;  // record the picked pixel's planes (slices.ray_planes)
+    bool lastPlane = false;  // draw the last plane alone too (slices.plane, on demand)
 };
 
 // One draw set as the pick replay needs it again.
@@ -186,6 +187,8 @@ private:
     int mPlaneQueriesUsed = 0;
     // "N fragments: " to start slices.plane's note, and why a plane with none is black.
     std::string planeFragmentsNote();
+    // slices.plane: plane `drawn` alone when it was drawn (Terms::lastPlane), else its entry saying why not.
+    Intermediate planeIntermediate(int drawn, bool wasDrawn);
     glm::vec3 mMaskColour{1.0f};
     // The picked pixel's planes (slices.ray_planes).
     gl::Buffer mPickRecords;

@@ -49,4 +49,21 @@ std::string SlicesTechnique::planeFragmentsNote() {
     return std::to_string(fragments) + " fragments: ";
 }
 
+Intermediate SlicesTechnique::planeIntermediate(int drawn, bool wasDrawn) {
+    const std::string label = "Plane " + std::to_string(drawn);
+    if (wasDrawn)
+        return render::textureIntermediate(kPlane, label,
+                                           planeFragmentsNote() + "the last plane drawn alone (every light), float",
+                                           "stored value", ViewKind::Colour, 0.0f, 0.05f, mPlane);
+    // Drawing it costs one more plane per light and a wait for its fragment count: only for a caller that
+    // shows it (StageInfo::onDemand), so a report's timing does not include it.
+    Intermediate i;
+    i.id = kPlane;
+    i.label = label;
+    i.note = "the last plane drawn alone (every light): drawn when this view is shown";
+    i.units = "stored value";
+    i.kind = ViewKind::Colour;
+    return i;
+}
+
 }  // namespace viz::slices_detail
