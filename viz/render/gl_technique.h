@@ -37,9 +37,12 @@ protected:
     // A run's start: its settings read once into mSettings, and its plan into out.plan.
     const SettingsT& startRun(const FrameInput& input, FrameOutput& out) {
         mSettings = this->read(input.settings);
-        out.plan = this->plan(*input.scene, input.settings);
+        out.plan = planForRun(input);
         return mSettings;
     }
+    // The plan of a run: plan() by default; a technique whose plan depends on the image size (vsv's grid
+    // covers what is in view) plans with the run's own.
+    virtual Plan planForRun(const FrameInput& input) const { return this->plan(*input.scene, input.settings); }
 
     SettingsT mSettings{};  // the current run's (startRun)
     SceneViewPasses mView;

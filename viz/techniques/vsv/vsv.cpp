@@ -97,9 +97,8 @@ Plan VsvTechnique::plan(const scene::Scene& scene, const Settings& settings) con
 
 FrameOutput VsvTechnique::run(const FrameInput& input) {
     const scene::Scene& scene = *input.scene;
-    const VsvSettings& s = mSettings = read(input.settings);
     FrameOutput out;
-    out.plan = planFor(scene, input.settings, input.width, input.height);
+    const VsvSettings& s = startRun(input, out);
     const std::vector<int> lights = shadedLights(scene);
     const GridSize size = gridSize(s);
     gl::StageClock clock;

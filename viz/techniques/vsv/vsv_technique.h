@@ -146,6 +146,9 @@ private:
     std::optional<MarkState> mMark;  // the shown light's grid in the last run, for markersFor
 
     Plan planFor(const scene::Scene& scene, const Settings& settings, int width, int height) const;
+    Plan planForRun(const FrameInput& input) const override {
+        return planFor(*input.scene, input.settings, input.width, input.height);
+    }
 
     void allocate(const GridSize& size, int width, int height, int lightCount);
 
