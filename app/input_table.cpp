@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
 namespace airlight {

@@ -1,74 +1,39 @@
 // The window's input: keys (dispatched from the key table, input_table.h), the mouse, the fly camera, and
 // the stepping cursor they move.
 #include "gui_app.h"
+#include "step_cursor.h"
 
 namespace airlight {
 
-int GuiApp::stageShown() const {
-    const int n = int(technique().stages().size());
-    return mCursor.stage < 0 || mCursor.stage >= n ? n - 1 : mCursor.stage;
-}
+int GuiApp::stageShown() const { return stageShownBy(technique(), mCursor); }
 
 std::pair<int, int> GuiApp::substepState() const {
-    // The last run's own count where it is fewer (minmax's walk: the picked ray's nodes).
-    const int count = substepCountOf(technique(), stageShown(), mSettings, mOutput.substepCounts);
-    if (count == 0) return {0, 0};
-    return {mCursor.substep <= 0 ? count : std::min(mCursor.substep, count), count};
+    const SubstepAt pos = substepAt(technique(), mSettings, mCursor, mOutput.substepCounts);
+    return {pos.at, pos.count};
 }
 
 std::string GuiApp::stoppedEarly() const {
-    const auto& stages = technique().stages();
-    const int shown = stageShown();
-    const auto [at, count] = substepState();
-    std::string why;
-    if (shown < int(stages.size()) - 1)
-        why = "stopped after stage " + std::to_string(shown + 1) + "/" + std::to_string(stages.size()) + " " +
-              stages[std::size_t(shown)].id;
-    if (count > 0 && at < count)
-        why += (why.empty() ? "stopped in " + stages[std::size_t(shown)].id : std::string()) + " at sub-step " +
-               std::to_string(at) + "/" + std::to_string(count);
-    const viz::Settings defaults = viz::completeSettings(technique(), {});
-    for (const viz::StageInfo& st : stages)
-        if (!st.substepParam.empty() && mSettings.count(st.substepParam) &&
-            mSettings.at(st.substepParam) != defaults.at(st.substepParam))
-            why += (why.empty() ? "" : "; ") + st.substepParam + "=" + format("%g", mSettings.at(st.substepParam)) +
-                   " cuts " + st.id + " short";
-    return why;
+    return airlight::stoppedEarly(technique(), mSettings, mCursor, mOutput.substepCounts);
 }
 
 void GuiApp::moveCursor(StepCursor c) {
-    const int n = int(technique().stages().size());
-    if ((c.stage < 0 || c.stage >= n - 1) && c.substep <= 0) c = {};  // the complete frame
-    if (c.stage < 0 && c.substep > 0) c.stage = n - 1;
+    c = normalisedCursor(technique(), c);
     if (c == mCursor) return;
     mCursor = c;
     mDirty = true;
 }
 
 void GuiApp::stepStage(int delta) {
-    const int n = int(technique().stages().size());
-    const int stage = ((stageShown() + delta) % n + n) % n;
-    const bool substeps = !technique().substepValues(stage, mSettings).empty();
-    moveCursor({stage == n - 1 ? -1 : stage, substeps && stage < n - 1 ? 1 : 0});
+    moveCursor(stageStepped(technique(), mSettings, mCursor, delta));
     mNotice.clear();
 }
 
 void GuiApp::stepSubstep(int delta) { setSubstepAt(substepState().first + delta); }
 
 void GuiApp::setSubstepAt(int k) {
-    const auto [at, count] = substepState();
-    const std::string& id = technique().stages()[std::size_t(stageShown())].id;
-    if (count <= 0) {
-        mNotice = id + " has no sub-steps (S steps the stages)";
-        return;
-    }
-    if (k < 1 || k > count) {
-        mNotice = (k < 1 ? "already at the first sub-step of " : "already at the last sub-step of ") + id + " (" +
-                  std::to_string(at) + "/" + std::to_string(count) + ")";
-        return;
-    }
-    mNotice.clear();
-    moveCursor({stageShown(), k == count ? 0 : k});
+    const SubstepMove move = substepMovedTo(technique(), mSettings, mCursor, mOutput.substepCounts, k);
+    mNotice = move.notice;
+    if (move.notice.empty()) moveCursor(move.cursor);
 }
 
 void GuiApp::drawStepTimeline() {

@@ -2,6 +2,7 @@
 // window documents does what its row says in each context, and no key means two things at once.
 #include <gtest/gtest.h>
 
+#define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
 #include <algorithm>
