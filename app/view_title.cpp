@@ -30,12 +30,9 @@ std::pair<std::string, std::string> viewTitle(const ViewState& v, const ViewTitl
     if (v.pane.id != "final" && v.pane.id != "airlight" && !temporal) {
         title += "  " + v.pane.id;
         // The stage that publishes it (stepping shows it from that stage on).
-        const std::vector<viz::StageInfo> none;
-        for (const viz::StageInfo& st : f.stages ? *f.stages : none)
-            if (std::find(st.intermediates.begin(), st.intermediates.end(), v.pane.id) != st.intermediates.end()) {
-                title += "  (stage " + st.id + ")";
-                break;
-            }
+        if (f.stages)
+            if (const int k = viz::stageOfIntermediate(*f.stages, v.pane.id); k >= 0)
+                title += "  (stage " + (*f.stages)[std::size_t(k)].id + ")";
     }
     if (v.pane.layers > 1) title += "   layer " + std::to_string(v.pane.layer + 1) + "/" + std::to_string(v.pane.layers);
     std::string note = v.pane.note;

@@ -9,17 +9,13 @@ namespace {
 // Why the run `out` of `technique` has no intermediate `id`: a view of another technique, a stage the
 // run stopped before or the plan skipped, or a stage that ran without it (a setting leaves it out).
 std::string notMadeBecause(const viz::Technique& technique, const viz::FrameOutput& out, const std::string& id) {
-    const std::vector<viz::StageInfo>& stages = technique.stages();
-    for (int k = 0; k < int(stages.size()); ++k) {
-        const viz::StageInfo& stage = stages[std::size_t(k)];
-        if (std::find(stage.intermediates.begin(), stage.intermediates.end(), id) == stage.intermediates.end()) continue;
-        if (k > out.lastStageRun) return "chosen: " + id + ", made by " + stage.label + ", after where the run stops";
-        if (k < int(out.plan.stages.size()) && !out.plan.stages[std::size_t(k)].runs)
-            return "chosen: " + id + ", not made: " + stage.label + " skipped (" +
-                   out.plan.stages[std::size_t(k)].why + ")";
-        return "chosen: " + id + ", not made with these settings";
-    }
-    return "chosen: " + id + ", not a view of " + technique.id();
+    const int k = viz::stageOfIntermediate(technique.stages(), id);
+    if (k < 0) return "chosen: " + id + ", not a view of " + technique.id();
+    const viz::StageInfo& stage = technique.stages()[std::size_t(k)];
+    if (k > out.lastStageRun) return "chosen: " + id + ", made by " + stage.label + ", after where the run stops";
+    if (k < int(out.plan.stages.size()) && !out.plan.stages[std::size_t(k)].runs)
+        return "chosen: " + id + ", not made: " + stage.label + " skipped (" + out.plan.stages[std::size_t(k)].why + ")";
+    return "chosen: " + id + ", not made with these settings";
 }
 
 }  // namespace

@@ -16,8 +16,10 @@ std::vector<std::string> idsOf(const FrameOutput& out) {
     return ids;
 }
 
-// tv-room has an area light next to its other lights, so vsv and ivsv each run the other inside.
-TEST_F(ReadBackTest, ARunWithoutReadBackReturnsNoImagesAndPublishesTheSameViews) {
+// tv-room has an area light next to its other lights, so vsv and ivsv each run the other inside, and the
+// shared passes publish numbered shadow maps (one per light or area sample). Every view a run publishes
+// belongs to a declared stage the run reached (the window's titles and "not made" notes name it).
+TEST_F(ReadBackTest, ARunWithoutReadBackReturnsNoImagesAndPublishesTheSameDeclaredViews) {
     const scene::Scene scene = scene::makeBuiltinScene("tv-room");
     int gpu = 0;
     for (const std::string& id : techniqueIds()) {
@@ -30,6 +32,14 @@ TEST_F(ReadBackTest, ARunWithoutReadBackReturnsNoImagesAndPublishesTheSameViews)
         ASSERT_EQ(full.airlight.pixels.size(), 48u * 36u * 3u) << id;
         ASSERT_EQ(full.final.pixels.size(), 48u * 36u * 3u) << id;
         const std::vector<std::string> shown = idsOf(full);
+        int numbered = 0;
+        for (const std::string& view : shown) {
+            const int stage = stageOfIntermediate(t->stages(), view);
+            EXPECT_GE(stage, 0) << id << ": " << view << " is declared by no stage";
+            EXPECT_LE(stage, full.lastStageRun) << id << ": " << view;
+            numbered += view.find("shadow_map.") != std::string::npos ? 1 : 0;
+        }
+        EXPECT_GT(numbered, 0) << id << ": tv-room's lights give numbered shadow maps";
 
         in.readBack = false;
         const FrameOutput bare = t->run(in);

@@ -53,6 +53,22 @@ std::vector<std::string> onDemandAmong(const Technique& technique, const std::ve
     return {wanted.begin(), wanted.end()};
 }
 
+int stageOfIntermediate(const std::vector<StageInfo>& stages, const std::string& id) {
+    const auto declares = [&](const StageInfo& st, const std::string& name) {
+        return std::find(st.intermediates.begin(), st.intermediates.end(), name) != st.intermediates.end();
+    };
+    for (int k = 0; k < int(stages.size()); ++k)
+        if (declares(stages[std::size_t(k)], id)) return k;
+    const std::size_t dot = id.find_last_of('.');
+    if (dot == std::string::npos || dot + 1 == id.size()) return -1;
+    for (std::size_t i = dot + 1; i < id.size(); ++i)
+        if (id[i] < '0' || id[i] > '9') return -1;
+    const std::string first = id.substr(0, dot);
+    for (int k = 0; k < int(stages.size()); ++k)
+        if (declares(stages[std::size_t(k)], first)) return k;
+    return -1;
+}
+
 const ParamInfo* findParam(const Technique& technique, const std::string& name) {
     for (const ParamInfo& p : technique.params())
         if (p.name == name) return &p;

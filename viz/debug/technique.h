@@ -232,4 +232,9 @@ Settings completeSettings(const Technique& technique, const Settings& given);
 std::vector<std::string> onDemandAmong(const Technique& technique, const std::vector<std::string>& shown,
                                        bool everything = false);
 
+// The index of the stage that publishes intermediate `id` (StageInfo::intermediates), or -1. A numbered
+// sibling of a declared id is that stage's too: the shared passes publish one shadow map per light or area
+// sample as `prefix.shadow_map`, `prefix.shadow_map.1`, `prefix.shadow_map.2`, ... and declare the first.
+int stageOfIntermediate(const std::vector<StageInfo>& stages, const std::string& id);
+
 }  // namespace viz

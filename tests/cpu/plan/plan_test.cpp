@@ -171,5 +171,26 @@ TEST(Params, ThePickedPixelIsTheCentreByDefaultAndClampsAtTheEdge) {
     EXPECT_EQ(pickedPixel(input), glm::ivec2(0, 19));
 }
 
+// A view's stage: the one that declares it, or for a numbered sibling (`x.shadow_map.3`) the one that
+// declares the first; anything else, a stage's own id among them, has none.
+TEST(StageOfIntermediate, ExactIdsAndNumberedSiblingsOnly) {
+    std::vector<StageInfo> stages(3);
+    stages[0].id = "t.shadow_maps";
+    stages[0].intermediates = {"t.shadow_map", "t.cookies"};
+    stages[1].id = "t.march";
+    stages[1].intermediates = {"t.airlight", "t.map.2d"};
+    stages[2].id = "t.compose";
+    EXPECT_EQ(stageOfIntermediate(stages, "t.shadow_map"), 0);
+    EXPECT_EQ(stageOfIntermediate(stages, "t.shadow_map.1"), 0);
+    EXPECT_EQ(stageOfIntermediate(stages, "t.shadow_map.17"), 0);
+    EXPECT_EQ(stageOfIntermediate(stages, "t.airlight"), 1);
+    EXPECT_EQ(stageOfIntermediate(stages, "t.map.2d"), 1);
+    EXPECT_EQ(stageOfIntermediate(stages, "t.shadow_map.x"), -1);
+    EXPECT_EQ(stageOfIntermediate(stages, "t.shadow_map."), -1);
+    EXPECT_EQ(stageOfIntermediate(stages, "t.shadow_maps"), -1);
+    EXPECT_EQ(stageOfIntermediate(stages, "t.cookies2"), -1);
+    EXPECT_EQ(stageOfIntermediate(stages, "t.march"), -1);
+}
+
 }  // namespace
 }  // namespace viz
