@@ -279,6 +279,44 @@ TEST_F(IvsvTest, TheInterleavedGatherTakesExactlyThePixelsSubset) {
     EXPECT_EQ(phases.size(), 4u);
 }
 
+// The interleaving view shows the subset each pixel gathered: at the picked pixel, on four frames of
+// subsets=per-frame (the pattern steps by one a frame), its value is the subset of every VPL the gather
+// recorded there; with gather=full it is black and says every pixel gathers every VPL.
+TEST_F(IvsvTest, TheInterleavingViewShowsTheSubsetEachPixelGathered) {
+    const viz::scene::Scene scene = viz::scene::makeBuiltinScene("tv-room");
+    const int w = 80, h = 60, vpls = 81;
+    const glm::ivec2 pick(60, 40);
+    auto technique = viz::makeTechnique("ivsv");
+    const viz::Settings s = viz::completeSettings(
+        *technique, {{"vpls", vpls}, {"voxels", 32}, {"points", 20000}, {"gather", 1}, {"subsets", 1},
+                     {"pick_x", pick.x}, {"pick_y", pick.y}});
+    std::set<int> shown;
+    for (int frame = 0; frame < 4; ++frame) {
+        const viz::FrameOutput out = viz::testing::runTechnique(*technique, scene, s, w, h, -1, frame);
+        const viz::Intermediate* pattern = find(out, "ivsv.interleave");
+        ASSERT_TRUE(pattern && pattern->image);
+        const int subset = int(std::lround(8.0f * pattern->image->at(pick.x, pick.y)));
+        const viz::Image& per = *find(out, "ivsv.pixel_vpls")->image;
+        int gathered = 0;
+        for (int i = 0; i < vpls; ++i)
+            if (per.at(i, 0, 0) != 0.0f || per.at(i, 0, 1) != 0.0f || per.at(i, 0, 2) != 0.0f) {
+                ++gathered;
+                EXPECT_EQ((i + i / 9) % 9, subset) << "frame " << frame << ": VPL " << i;
+            }
+        EXPECT_GT(gathered, 0) << "frame " << frame;
+        if (frame > 0) {
+            EXPECT_NE(pattern->note.find("shifted by " + std::to_string(frame)), std::string::npos) << pattern->note;
+        }
+        shown.insert(subset);
+    }
+    EXPECT_EQ(shown.size(), 4u) << "the pattern steps each frame";
+    const viz::FrameOutput full = render(scene, "ivsv", {{"vpls", 9}, {"voxels", 32}, {"points", 20000}}, w, h);
+    const viz::Intermediate* black = find(full, "ivsv.interleave");
+    ASSERT_TRUE(black && black->image);
+    EXPECT_EQ(*std::max_element(black->image->pixels.begin(), black->image->pixels.end()), 0.0f);
+    EXPECT_NE(black->note.find("gathers every VPL"), std::string::npos) << black->note;
+}
+
 // The picked pixel's column in the shown VPL's grid, as in vsv: up to the fragment, row 0 is one column of
 // the voxels slice at the pixel's theta (published separately) and row 1 the prefix OR of that slice's
 // columns up to the same alpha (the segmented scan within the VPL's tile).

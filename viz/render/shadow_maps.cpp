@@ -228,7 +228,10 @@ void ShadowMaps::publish(std::vector<Intermediate>& out, const std::string& pref
             default: {
                 const bool vpl = type == hd::kLightVpl;
                 im.label = vpl ? "VPL shadow cube" : "Point shadow cube";
-                im.note = "distance to the light, cube faces +X -X +Y -Y +Z -Z, " + source;
+                im.note = vpl ? "distance to one sample point of " + source +
+                                    "'s area (the shared passes sample an area light at area_samples^2 such "
+                                    "points, each with its own cube), cube faces +X -X +Y -Y +Z -Z"
+                              : "distance to the light, cube faces +X -X +Y -Y +Z -Z, " + source;
                 im.glTexture = mViews[i].get();
                 im.glTarget = GL_TEXTURE_CUBE_MAP;
                 const int s = vpl ? mVplSize : mSize;

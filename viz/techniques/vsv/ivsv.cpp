@@ -387,9 +387,8 @@ FrameOutput IvsvTechnique::run(const FrameInput& input) {
                     perVpl, 0.0f, 0.0f));
                 out.intermediates.back().plots = {perVplPlot(*perVpl)};
                 out.intermediates.back().rayView = true;
-                out.intermediates.push_back(cpuIntermediate(
-                    kInterleave, "Interleaving pattern", "which ninth of the VPLs each pixel gathers (0..8 / 8)",
-                    ViewKind::Scalar, interleaveImage(input.width, input.height, gatherMode)));
+                out.intermediates.push_back(
+                    interleaveIntermediate(input.width, input.height, gatherMode, phaseShift(s, input)));
             }
             out.intermediates.push_back(render::textureIntermediate(
                 kAirlight, "L_air", "single-scattered light reaching the eye", "radiance", ViewKind::Colour, 0.0f, 1.0f,

@@ -130,7 +130,7 @@ void IvsvTechnique::gather(const scene::Scene& scene, const FrameInput& input, i
     program.set("uScale", mode == kGatherQuarter ? 2 : 1);
     program.set("uCells", glm::ivec3(cells, cells, kPhiBits));
     program.set("uVplStride", mode == kGatherInterleaved ? 9 : 1);
-    program.set("uPhaseShift", s.subsetsPerFrame ? std::max(0, input.frame) % 9 : 0);
+    program.set("uPhaseShift", phaseShift(s, input));
     mMedium.bind(scene.medium);
     program.set("uChunkBits", s.chunkBits);
     program.set("uDiscScale", float(s.vplDisc));

@@ -118,6 +118,12 @@ struct IvsvSettings {
 };
 const ParamTable<IvsvSettings>& ivsvParams();
 
+// The interleaved gather's shift of its 3x3 subset pattern on this frame (subsets=per-frame: the frame
+// index mod 9), 0 otherwise.
+inline int phaseShift(const IvsvSettings& s, const FrameInput& input) {
+    return s.gather == kGatherInterleaved && s.subsetsPerFrame ? std::max(0, input.frame) % 9 : 0;
+}
+
 class IvsvTechnique final : public render::GlTechnique<IvsvSettings> {
 public:
     IvsvTechnique();
@@ -225,7 +231,10 @@ private:
     // ones the pixel did not gather (zero) left out.
     static PlotData perVplPlot(const Image& perVpl);
 
-    static std::shared_ptr<Image> interleaveImage(int width, int height, int mode);
+    static std::shared_ptr<Image> interleaveImage(int width, int height, int mode, int phaseShift);
+    // ivsv.interleave: the 3x3 subset pattern the gather used (its per-frame shift included), or black with a
+    // note saying that every pixel gathers every VPL.
+    static Intermediate interleaveIntermediate(int width, int height, int mode, int phaseShift);
 
     // mView (GlTechnique) draws the surface term and composes; no ivsv stage keeps its outputs yet, so
     // every run starts at stage 0 (mReuse carries nothing).

@@ -156,14 +156,26 @@ PlotData IvsvTechnique::perVplPlot(const Image& perVpl) {
     return p;
 }
 
-std::shared_ptr<Image> IvsvTechnique::interleaveImage(int width, int height, int mode) {
+std::shared_ptr<Image> IvsvTechnique::interleaveImage(int width, int height, int mode, int phaseShift) {
     auto image = std::make_shared<Image>(width, height, 1);
     for (int y = 0; y < height; ++y)
         for (int x = 0; x < width; ++x) {
             const int glY = height - 1 - y;  // the gather works in GL rows
-            image->at(x, y) = mode == kGatherInterleaved ? float((x % 3) + 3 * (glY % 3)) / 8.0f : 0.0f;
+            const int subset = ((x % 3) + 3 * (glY % 3) + phaseShift) % 9;  // as ivsv_gather.comp's phase
+            image->at(x, y) = mode == kGatherInterleaved ? float(subset) / 8.0f : 0.0f;
         }
     return image;
+}
+
+Intermediate IvsvTechnique::interleaveIntermediate(int width, int height, int mode, int phaseShift) {
+    std::string note = "which ninth of the VPLs each pixel gathers (subset 0..8, shown /8)";
+    if (mode != kGatherInterleaved)
+        note = "black: gather=" + std::string(mode == kGatherFull ? "full" : "quarter") +
+               " gathers every VPL at every pixel it shades (gather=interleaved draws the 3x3 pattern here)";
+    else if (phaseShift != 0)
+        note += "; subsets=per-frame: shifted by " + std::to_string(phaseShift) + " on this frame";
+    return cpuIntermediate(kInterleave, "Interleaving pattern", note, ViewKind::Scalar,
+                           interleaveImage(width, height, mode, phaseShift));
 }
 
 }  // namespace viz::ivsv_detail
