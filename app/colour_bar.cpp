@@ -171,4 +171,31 @@ ColourBar colourBarFor(const PaneImage& pane, const DisplayMapping& m, const Spe
     return bar;
 }
 
+void countMaskPixels(ColourBar& bar, const DisplayMapping& m, const viz::Image& values, int meaningful,
+                     const std::vector<viz::Sentinel>& sentinels) {
+    if (m.mode != DisplayMode::Mask || bar.kind != ColourBar::Kind::Classes || values.empty()) return;
+    const int channels = std::clamp(meaningful, 1, values.channels);
+    std::size_t white = 0, counted = 0;
+    for (int y = 0; y < values.height; ++y)
+        for (int x = 0; x < values.width; ++x) {
+            bool special = false;
+            for (int c = 0; c < channels; ++c) special = special || !std::isfinite(values.at(x, y, c));
+            if (special) continue;
+            float v = values.at(x, y, 0);  // Rgb and one-channel images: r, as the shader takes it
+            const int k = int(m.channel);
+            if (k >= 1 && k <= 4) {
+                if (k > channels) continue;
+                v = values.at(x, y, k - 1);
+            } else if (m.channel == Channel::Luminance && channels >= 3) {
+                v = kLuminance[0] * values.at(x, y, 0) + kLuminance[1] * values.at(x, y, 1) +
+                    kLuminance[2] * values.at(x, y, 2);
+            }
+            if (std::any_of(sentinels.begin(), sentinels.end(), [&](const viz::Sentinel& s) { return s.value == v; }))
+                continue;
+            ++counted;
+            white += mapToUnit(v, m.lo, m.hi, m.logScale) > 0.5f ? 1 : 0;
+        }
+    bar.caption += ": " + std::to_string(white) + " of " + std::to_string(counted) + " pixels";
+}
+
 }  // namespace airlight

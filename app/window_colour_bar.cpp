@@ -17,6 +17,7 @@ void GuiApp::drawColourBar(int id, ViewState& v) {
     if (v.bar.size().y <= 0.0f) return;
     const DisplayMapping mapping = resolveMapping(v.pane, v.display, mExposure, v.measured);
     v.colourBar = colourBarFor(v.pane, mapping, v.counts);
+    countMaskPixels(v.colourBar, mapping, v.values, v.meaningful, v.pane.sentinels);
     if (v.colourBar.kind == ColourBar::Kind::None) return;
     const ColourBarLayout layout =
         drawColourBarText(v.colourBar, v.bar, *mFont, mScale, *mDrawList, *mBackground, {kText, kDim, kError, kDim});

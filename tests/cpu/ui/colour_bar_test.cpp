@@ -5,6 +5,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
+
+#include <cmath>
 
 #include "colour_bar.h"
 
@@ -94,6 +97,40 @@ TEST(ColourBar, AnHdrImagesBarEndsWhereTheExposureReachesWhite) {
     EXPECT_EQ(bar.lo, 0.0);
     EXPECT_DOUBLE_EQ(bar.hi, 0.25);
     EXPECT_NE(bar.caption.find("0.25"), std::string::npos) << bar.caption;
+}
+
+// A mask's bar counts its white pixels as the shader classes them (the shown value above the middle of the
+// range), leaving out NaN, Inf and sentinel pixels; each pixel's class written out by hand.
+TEST(ColourBar, AMaskSaysHowManyPixelsAreWhite) {
+    PaneImage mask = paneOf(viz::ViewKind::Mask, 0.0f, 1.0f, "");
+    mask.sentinels = {{0.25f, "not read"}};
+    const DisplayMapping m = resolveMapping(mask, {}, 0.0f, std::nullopt);
+    ASSERT_EQ(m.mode, DisplayMode::Mask);
+    viz::Image values(3, 2, 1);
+    values.pixels = {1.0f, 0.0f, 0.75f,                                  // white, black, white
+                     0.25f, std::nanf(""), std::numeric_limits<float>::infinity()};  // sentinel, NaN, Inf: not counted
+    ColourBar bar = colourBarFor(mask, m, {});
+    countMaskPixels(bar, m, values, 1, mask.sentinels);
+    EXPECT_NE(bar.caption.find(": 2 of 3 pixels"), std::string::npos) << bar.caption;
+    // All black: it says so.
+    viz::Image black(4, 4, 1);
+    ColourBar none = colourBarFor(mask, m, {});
+    countMaskPixels(none, m, black, 1, {});
+    EXPECT_NE(none.caption.find(": 0 of 16 pixels"), std::string::npos) << none.caption;
+    // The green channel chosen: its values decide.
+    viz::Image rgb(2, 1, 3);
+    rgb.pixels = {1.0f, 0.0f, 0.0f, 0.0f, 1.0f, 0.0f};
+    DisplaySettings green;
+    green.channel = Channel::G;
+    const DisplayMapping mg = resolveMapping(mask, green, 0.0f, std::nullopt);
+    ColourBar g = colourBarFor(mask, mg, {});
+    countMaskPixels(g, mg, rgb, 3, {});
+    EXPECT_NE(g.caption.find(": 1 of 2 pixels"), std::string::npos) << g.caption;
+    // Another mode, or no values: unchanged.
+    ColourBar plain = colourBarFor(mask, m, {});
+    const std::string before = plain.caption;
+    countMaskPixels(plain, m, viz::Image{}, 1, {});
+    EXPECT_EQ(plain.caption, before);
 }
 
 TEST(ColourBar, DiscreteMapsGetClassesAndSentinelsLeadTheLegend) {
