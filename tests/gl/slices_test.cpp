@@ -218,6 +218,20 @@ TEST_F(SlicesTest, TheLastPlaneAloneIsDrawnOnlyWhenShown) {
     EXPECT_EQ(shown.final.pixels, unasked.final.pixels);
 }
 
+// The cookie view says whether it shows cookies or the placeholder a scene without one binds.
+TEST_F(SlicesTest, TheCookieViewSaysWhenItIsThePlaceholder) {
+    for (const auto& [name, hasCookie] : {std::pair<std::string, bool>{"forest", false}, {"stained-glass", true}}) {
+        const viz::scene::Scene scene = viz::scene::makeBuiltinScene(name);
+        bool cookie = false;
+        for (const viz::scene::Light& l : scene.lights) cookie = cookie || l.cookie >= 0;
+        ASSERT_EQ(cookie, hasCookie) << name;
+        const viz::FrameOutput out = render(scene, "slices", {}, 32, 24, 0);
+        const viz::Intermediate* view = find(out, "slices.cookie");
+        ASSERT_TRUE(view) << name;
+        EXPECT_EQ(view->note.find("placeholder") != std::string::npos, !hasCookie) << name << ": " << view->note;
+    }
+}
+
 // A scene with no cookie and no noise compiles the plane shader without those terms; a scene with a
 // cookie and noise on compiles them in.
 TEST_F(SlicesTest, PermutationKeyLeavesOutUnusedTerms) {

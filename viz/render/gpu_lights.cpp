@@ -230,6 +230,7 @@ GpuLights::GpuLights(const scene::Scene& scene, glm::dvec3 eye, int areaSamples)
     mLights = std::move(described.lights);
     mLayout = described.layout;
     mCookies = uploadCookies(scene, described.cookieLayers);
+    mCookieCount = int(described.cookieLayers.size());
     if (mLights.size() > static_cast<std::size_t>(hd::kMaxGpuLights)) {
         throw InputError("the scene needs " + std::to_string(mLights.size()) + " GPU lights (area lights count " +
                          std::to_string(areaSamples) + "^2 each) but at most " + std::to_string(hd::kMaxGpuLights) +

@@ -53,6 +53,7 @@ public:
     const gl::Buffer& buffer() const { return mBuffer; }
     // Cookie array (a 1x1 white layer when the scene has no cookie, so the sampler is always valid).
     const gl::Texture& cookies() const { return mCookies; }
+    int cookieCount() const { return mCookieCount; }  // layers in use: 0 when cookies() is the placeholder
 
 private:
     std::vector<GpuLightCpu> mLights;
@@ -60,6 +61,7 @@ private:
     glm::dvec3 mEye{0.0};
     gl::Buffer mBuffer;
     gl::Texture mCookies;
+    int mCookieCount = 0;
 };
 
 }  // namespace viz::render

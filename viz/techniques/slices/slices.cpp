@@ -277,7 +277,11 @@ FrameOutput SlicesTechnique::run(const FrameInput& input) {
     // Shadow maps (with the cookies and the noise they project) and the camera view: the shared stages.
     if (!mView.runSharedStages(stages, input, "slices", out, [&] {
             out.intermediates.push_back(render::textureIntermediate(
-                kCookies, "Cookies", "spot cookie textures (sRGB bytes), one layer per cookie", "",
+                kCookies, "Cookies",
+                mView.lights().cookieCount() > 0
+                    ? "spot cookie textures (sRGB bytes), one layer per cookie"
+                    : "no light in this scene has a cookie: a 1x1 white placeholder (a cookie of 1 changes nothing)",
+                "",
                 ViewKind::Colour, 0.0f, 1.0f, mView.lights().cookies()));
             out.intermediates.push_back(render::textureIntermediate(
                 kNoise, "Noise", "two tileable value-noise layers (r, g), generated, projected from the light", "",
