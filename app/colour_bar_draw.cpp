@@ -55,10 +55,23 @@ ColourBarLayout drawColourBarText(const ColourBar& bar, const Rect& area, const 
     text.textClipped({right, area.min.y + 1.0f * s}, out.heading, colours.dim, area.max.x);
     float x = right;
     const float box = line - 4.0f * s;
+    const auto entryOf = [](const LegendSwatch& sw) { return sw.label + " " + std::to_string(sw.pixels); };
+    const auto width = [&](const std::string& entry) { return box + 3.0f * s + font.measure(entry) + 10.0f * s; };
+    // The overlays (NaN, Inf, negative) are short and must show; a sentinel's meaning is long, so it gets
+    // what they leave, cut at its end (the full entry is in the tooltip), rather than being dropped where it
+    // does not fit whole.
+    float overlays = 0.0f;
+    for (const LegendSwatch& sw : bar.legend)
+        if (!sw.sentinel) overlays += width(entryOf(sw));
     for (std::size_t i = 0; i < bar.legend.size(); ++i) {
         const LegendSwatch& sw = bar.legend[i];
-        const std::string entry = sw.label + " " + std::to_string(sw.pixels);
+        std::string entry = entryOf(sw);
         out.legend += (out.legend.empty() ? "" : "   ") + entry + " px";
+        if (sw.sentinel && x + width(entry) + overlays > area.max.x) {
+            const std::string count = " " + std::to_string(sw.pixels);
+            const float room = area.max.x - overlays - x - width(count);
+            if (room >= font.measure("0: ...")) entry = elideEnd(font, sw.label, room) + count;
+        }
         if (x + box + font.measure(entry) > area.max.x) continue;
         const Rect swatch{{x, labelY + 2.0f * s}, {x + box, labelY + 2.0f * s + box}};
         frames.rect({swatch.min - 1.0f, swatch.max + 1.0f}, colours.frame);

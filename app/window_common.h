@@ -120,6 +120,21 @@ inline std::string elideMiddle(const viz::ui::FontAtlas& font, const std::string
     return text.substr(0, boundary((lo + 1) / 2)) + dots + text.substr(boundary(text.size() - lo / 2));
 }
 
+// `text` cut at the end ("start ...") to fit `width` pixels in `font`; unchanged when it fits. For text
+// whose start says the most (a legend entry's "value: meaning").
+inline std::string elideEnd(const viz::ui::FontAtlas& font, const std::string& text, float width) {
+    if (font.measure(text) <= width) return text;
+    const std::string dots = "...";
+    std::size_t lo = 0, hi = text.size();  // characters kept, found by bisection
+    while (lo < hi) {
+        const std::size_t keep = (lo + hi + 1) / 2;
+        if (font.measure(text.substr(0, keep) + dots) <= width) lo = keep;
+        else hi = keep - 1;
+    }
+    while (lo > 0 && lo < text.size() && (static_cast<unsigned char>(text[lo]) & 0xc0) == 0x80) --lo;  // not inside UTF-8
+    return text.substr(0, lo) + dots;
+}
+
 // A light's kind as the panel names it.
 inline const char* lightTypeName(viz::scene::LightType type) {
     switch (type) {

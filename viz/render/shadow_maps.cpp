@@ -239,6 +239,8 @@ void ShadowMaps::publish(std::vector<Intermediate>& out, const std::string& pref
                 break;
             }
         }
+        // Texels no occluder covers keep the clear value: hatched and counted, left out of the range.
+        im.sentinels = {{kFarAway, "no occluder (cleared far away)"}};
         // One caption per map: the second and later maps carry their index, as their ids do.
         if (i > 0) im.label += " " + std::to_string(i);
         out.push_back(std::move(im));

@@ -7,9 +7,8 @@
 #include <cmath>
 #include <limits>
 
-#include <cmath>
-
 #include "colour_bar.h"
+#include "colour_bar_draw.h"
 
 namespace airlight {
 namespace {
@@ -184,4 +183,32 @@ TEST(ColourBar, ADeclaredChannelBringsItsOwnRangeUnitsAndMap) {
 }
 
 }  // namespace
+// A narrow bar keeps every legend entry: the overlays (NaN, Inf) whole, a sentinel's long meaning cut to
+// what they leave instead of dropped (a shadow map's "no occluder" sentinel vanished from half-width
+// views); each swatch lies inside the bar, after the one before it.
+TEST(ColourBar, ANarrowBarShortensASentinelInsteadOfDroppingIt) {
+    static const viz::ui::FontAtlas font = viz::ui::FontAtlas::bake(viz::ui::FontAtlas::kDefaultFontPath, 14.0f);
+    ColourBar bar;
+    bar.kind = ColourBar::Kind::Ramp;
+    bar.values = {0.0f, 1.0f};
+    bar.units = "scene units";
+    bar.legend = {{"1e+30: no occluder (cleared far away)", 1e30f, 938034, true},
+                  {"NaN", std::nanf(""), 0, false},
+                  {"Inf", std::numeric_limits<float>::infinity(), 0, false}};
+    for (const float width : {540.0f, 900.0f, 1400.0f}) {
+        viz::ui::DrawList text(font), frames(font);
+        const viz::ui::Rect area{{0.0f, 0.0f}, {width, 36.0f}};
+        const ColourBarLayout layout = drawColourBarText(bar, area, font, 1.0f, text, frames, {});
+        ASSERT_EQ(layout.swatches.size(), 3u) << "width " << width;
+        float previous = -1.0f;
+        for (std::size_t k = 0; k < 3; ++k) {
+            EXPECT_EQ(layout.swatches[k].second, k);
+            EXPECT_GT(layout.swatches[k].first.min.x, previous);
+            EXPECT_LE(layout.swatches[k].first.max.x, area.max.x);
+            previous = layout.swatches[k].first.max.x;
+        }
+        EXPECT_NE(layout.legend.find("no occluder (cleared far away) 938034 px"), std::string::npos) << layout.legend;
+    }
+}
+
 }  // namespace airlight
