@@ -159,10 +159,24 @@ void drawPlot(ui::DrawList& list, const ui::Rect& area, const PlotSpec& spec) {
     // The last x label is centred on the frame's right end: the legend (or the area's edge) starts past
     // its half.
     const float rightGap = std::max(pad, (xt.labels.empty() ? 0.0f : font.measure(xt.labels.back()) * 0.5f) + pad * 0.5f);
+    // Lines above and below the frame: the title, the y label (on its own line), the x tick labels and the
+    // x label. A short area drops the title, the y label's line, the x label and the x tick labels, in that
+    // order, until the frame is a readable height (a view's own title already names the plot), rather than
+    // giving up on the plot.
+    bool title = !spec.title.empty(), yLabel = !spec.yLabel.empty(), xTicks = true, xLabel = true;
     ui::Rect frame;
-    frame.min = {area.min.x + pad + line + pad + yLabelWidth + pad,
-                 area.min.y + pad + (spec.title.empty() ? 0.0f : line + pad) + (spec.yLabel.empty() ? 0.0f : line + pad)};
-    frame.max = {area.max.x - rightGap - legendWidth, area.max.y - pad - line - pad - line - pad};
+    const auto place = [&] {
+        frame.min = {area.min.x + pad + line + pad + yLabelWidth + pad,
+                     area.min.y + pad + (title ? line + pad : 0.0f) + (yLabel ? line + pad : 0.0f)};
+        frame.max = {area.max.x - rightGap - legendWidth,
+                     area.max.y - pad - (xTicks ? line + pad : 0.0f) - (xLabel ? line + pad : 0.0f)};
+    };
+    place();
+    for (bool* shown : {&title, &yLabel, &xLabel, &xTicks}) {
+        if (frame.max.y - frame.min.y >= 1.5f * line) break;
+        *shown = false;
+        place();
+    }
     // A narrow area drops the legend before the plot; one too small for any plot says so.
     bool legend = true;
     if (frame.max.x - frame.min.x < 10.0f && legendWidth > 0.0f) {
@@ -177,8 +191,7 @@ void drawPlot(ui::DrawList& list, const ui::Rect& area, const PlotSpec& spec) {
     const AxisMap mx{xt.lo, xt.hi, spec.logX, frame.min.x, frame.max.x};
     const AxisMap my{yt.lo, yt.hi, spec.logY, frame.max.y, frame.min.y};
 
-    if (!spec.title.empty())
-        list.textClipped({frame.min.x, area.min.y + pad}, spec.title, kInk, area.max.x - pad);
+    if (title) list.textClipped({frame.min.x, area.min.y + pad}, spec.title, kInk, area.max.x - pad);
     // Every tick gets its grid line; a label that would touch the one before it is left out (a narrow
     // log axis with 1-2-5 ticks).
     std::vector<float> xs, widths, ys, heights;
@@ -189,7 +202,7 @@ void drawPlot(ui::DrawList& list, const ui::Rect& area, const PlotSpec& spec) {
         const float x = xs[i];
         list.line({x, frame.min.y}, {x, frame.max.y}, 1.0f, kGridLine);
         list.line({x, frame.max.y}, {x, frame.max.y + pad * 0.6f}, 1.0f, kInk);
-        if (keepX[i]) list.text({x - widths[i] * 0.5f, frame.max.y + pad}, xt.labels[i], kInk);
+        if (keepX[i] && xTicks) list.text({x - widths[i] * 0.5f, frame.max.y + pad}, xt.labels[i], kInk);
     }
     for (std::size_t i = 0; i < yt.values.size(); ++i) {
         const float y = ys[i];
@@ -204,12 +217,11 @@ void drawPlot(ui::DrawList& list, const ui::Rect& area, const PlotSpec& spec) {
     list.line(frame.max, {frame.min.x, frame.max.y}, 1.0f, kInk);
     list.line({frame.min.x, frame.max.y}, frame.min, 1.0f, kInk);
     // Axis labels: x centred below the tick labels; y horizontal, on its own line above the frame.
-    if (!spec.xLabel.empty()) {
+    if (!spec.xLabel.empty() && xLabel) {
         const float w = font.measure(spec.xLabel);
         list.text({(frame.min.x + frame.max.x - w) * 0.5f, frame.max.y + pad + line + pad * 0.5f}, spec.xLabel, kInk);
     }
-    if (!spec.yLabel.empty())
-        list.textClipped({area.min.x + pad, frame.min.y - line - pad}, spec.yLabel, kInk, frame.max.x);
+    if (yLabel) list.textClipped({area.min.x + pad, frame.min.y - line - pad}, spec.yLabel, kInk, frame.max.x);
 
     // Series, clipped to the frame by dropping points outside it (ranges cover every usable point).
     const float marker = std::max(2.0f, line * 0.22f);

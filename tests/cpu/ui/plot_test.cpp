@@ -148,6 +148,38 @@ TEST(DrawPlot, TheLastXTickLabelAndTheLegendDoNotOverlap) {
     }
 }
 
+// A short area (a lesson step's grid of four views at 1280x720 gives a plot about 50 px) drops the title and
+// the label lines before the plot: the series' markers are drawn inside the area, where it used to say
+// "(too small for the plot)". A tall area keeps every line.
+TEST(DrawPlot, AShortAreaDropsItsLabelLinesBeforeThePlot) {
+    const ui::FontAtlas font = ui::FontAtlas::bake(ui::FontAtlas::kDefaultFontPath, 14.0f);
+    PlotSpec spec;
+    spec.title = "singular values of I";
+    spec.xLabel = "i";
+    spec.yLabel = "sigma_i";
+    spec.logY = true;
+    const glm::vec4 colour = categoricalColour(2);
+    spec.series.push_back({"kept", colour, {{1, 1.0}, {2, 0.1}, {3, 0.01}, {4, 0.001}}, false, true});
+    for (const float height : {50.0f, 70.0f, 100.0f, 400.0f}) {
+        const ui::Rect area{{10, 20}, {370, 20 + height}};
+        ui::DrawList list(font);
+        drawPlot(list, area, spec);
+        int inside = 0;  // untextured quads of the series' colour: its markers and its legend swatch
+        const auto& quads = list.vertices();
+        for (std::size_t i = 0; i + 5 < quads.size(); i += 6) {
+            if (quads[i].uv != font.whiteUv() || quads[i].colour != ui::packColour(colour)) continue;
+            const glm::vec2 lo = glm::min(quads[i].position, quads[i + 2].position);
+            const glm::vec2 hi = glm::max(quads[i].position, quads[i + 2].position);
+            inside += lo.x >= area.min.x && hi.x <= area.max.x && lo.y >= area.min.y && hi.y <= area.max.y;
+        }
+        EXPECT_GE(inside, 4) << "height " << height << ": the four points (and the legend swatch) are drawn";
+        for (const ui::UiVertex& v : list.vertices()) {
+            EXPECT_GE(v.position.y, area.min.y - 1e-3f) << height;
+            EXPECT_LE(v.position.y, area.max.y + 1e-3f) << height;
+        }
+    }
+}
+
 TEST(KeptTickLabels, LabelsThatWouldTouchTheLastKeptOneAreLeftOut) {
     // 1-2-5 ticks on a narrow log axis: 100, 200, 500, 1000 at 20, 36, 58, 74 px, labels 21-28 px wide.
     const std::vector<bool> kept = keptTickLabels({20, 36, 58, 74}, {21, 21, 21, 28}, 4.0f);
