@@ -1,26 +1,11 @@
 // The view grid's contents: each view's pane built from the last run, difference views and the runs of
 // other techniques they need, and the grid edits (split, close, swap, step).
 #include "gui_app.h"
+#include "view_contents.h"
 
 namespace airlight {
 
-namespace {
-
-// Why the run `out` of `technique` has no intermediate `id`: a view of another technique, a stage the
-// run stopped before or the plan skipped, or a stage that ran without it (a setting leaves it out).
-std::string notMadeBecause(const viz::Technique& technique, const viz::FrameOutput& out, const std::string& id) {
-    const int k = viz::stageOfIntermediate(technique.stages(), id);
-    if (k < 0) return "chosen: " + id + ", not a view of " + technique.id();
-    const viz::StageInfo& stage = technique.stages()[std::size_t(k)];
-    if (k > out.lastStageRun) return "chosen: " + id + ", made by " + stage.label + ", after where the run stops";
-    if (k < int(out.plan.stages.size()) && !out.plan.stages[std::size_t(k)].runs)
-        return "chosen: " + id + ", not made: " + stage.label + " skipped (" + out.plan.stages[std::size_t(k)].why + ")";
-    return "chosen: " + id + ", not made with these settings";
-}
-
-}  // namespace
-
-int GuiApp::contentCount() const { return 2 + int(mOutput.intermediates.size()); }
+int GuiApp::contentCount() const { return airlight::contentCount(mOutput); }
 
 std::vector<std::string> GuiApp::shownContents() const {
     std::vector<std::string> shown;
@@ -29,22 +14,11 @@ std::vector<std::string> GuiApp::shownContents() const {
     return shown;
 }
 
-std::string GuiApp::contentId(int index) const {
-    return index == 0 ? "final" : index == 1 ? "airlight" : mOutput.intermediates[std::size_t(index - 2)].id;
-}
+std::string GuiApp::contentId(int index) const { return airlight::contentId(mOutput, index); }
 
-std::string GuiApp::contentLabel(int index) const {
-    return index == 0 ? "Final image" : index == 1 ? "Airlight L_air" : mOutput.intermediates[std::size_t(index - 2)].label;
-}
+std::string GuiApp::contentLabel(int index) const { return airlight::contentLabel(mOutput, index); }
 
-int GuiApp::contentIndexOf(const std::string& id) const {
-    if (id == "final") return 0;
-    if (id == "airlight") return 1;
-    const auto& all = mOutput.intermediates;
-    for (std::size_t i = 0; i < all.size(); ++i)
-        if (all[i].id == id) return 2 + int(i);
-    return -1;
-}
+int GuiApp::contentIndexOf(const std::string& id) const { return airlight::contentIndexOf(mOutput, id); }
 
 std::string GuiApp::lessonViewCaption(const std::string& id) const {
     const int index = contentIndexOf(id);
