@@ -15,6 +15,20 @@ layout(std430, binding = kFirstFreeSsboBinding) readonly buffer ExtraKeys { uint
 
 out vec3 vPosition;
 
+#ifdef WIRE_CLIP
+// The mesh's orbit view (polyvol.mesh): the volume clipped to the box around the scene and its lights
+// (eye-relative), so that a directional light's skirt and far cap, which reach the camera's far plane,
+// do not cover the whole view. The caller enables the six clip distances for it; uClipOn = 0 writes
+// positive distances for the other wireframe modes (llvmpipe drew nothing there with the box's distances
+// written and the planes not enabled).
+uniform vec3 uClipMin, uClipMax;
+uniform int uClipOn;
+out gl_PerVertex {
+    vec4 gl_Position;
+    float gl_ClipDistance[6];
+};
+#endif
+
 void main() {
     GpuLight L = gLights[uLightIndex];
     int v = gl_VertexID;
@@ -38,4 +52,10 @@ void main() {
     }
     vPosition = p;
     gl_Position = uViewProj * vec4(p, 1.0);
+#ifdef WIRE_CLIP
+    for (int k = 0; k < 3; ++k) {
+        gl_ClipDistance[2 * k] = uClipOn != 0 ? p[k] - uClipMin[k] : 1.0;
+        gl_ClipDistance[2 * k + 1] = uClipOn != 0 ? uClipMax[k] - p[k] : 1.0;
+    }
+#endif
 }

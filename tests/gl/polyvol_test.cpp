@@ -510,6 +510,31 @@ TEST_F(PolyvolTest, WireframeShowsLeavingAndEnteringFaces) {
     EXPECT_EQ(plan.stages[2].why.rfind(std::to_string(expected), 0), 0u) << plan.stages[2].why;
 }
 
+// The orbit view of the mesh (wireframe=orbit) is clipped to the box around the scene and its lights: a
+// directional light's volume reaches the camera's far plane (skirt, far cap, sky texels) and filled the
+// whole view with one colour on colonnade, forest and terrain. Now the background shows around the mesh
+// there, and a spot's cone (apex at the light, inside the box) is still drawn on grate.
+TEST_F(PolyvolTest, TheOrbitViewOfTheMeshStaysInsideTheScenesBox) {
+    for (const std::string name : {"colonnade", "terrain", "grate"}) {
+        const viz::scene::Scene scene = viz::scene::makeBuiltinScene(name);
+        const viz::FrameOutput out =
+            render(scene, "polyvol", {{"shadow_map", 128}, {"wireframe", 3}}, 160, 120, 2, {"polyvol.mesh"});
+        const viz::Intermediate* mesh = find(out, "polyvol.mesh");
+        ASSERT_TRUE(mesh && mesh->image) << name;
+        int faces = 0;  // the wire colours: green (0.1, 0.8, 0.2), red (0.9, 0.15, 0.1)
+        const int pixels = mesh->image->width * mesh->image->height;
+        for (int y = 0; y < mesh->image->height; ++y)
+            for (int x = 0; x < mesh->image->width; ++x) {
+                const float r = mesh->image->at(x, y, 0), g = mesh->image->at(x, y, 1), b = mesh->image->at(x, y, 2);
+                faces += (std::abs(r - 0.1f) < 0.02f && std::abs(g - 0.8f) < 0.02f && std::abs(b - 0.2f) < 0.02f) ||
+                         (std::abs(r - 0.9f) < 0.02f && std::abs(g - 0.15f) < 0.02f && std::abs(b - 0.1f) < 0.02f);
+            }
+        std::printf("%s: mesh faces cover %.1f %% of the orbit view\n", name.c_str(), 100.0 * faces / pixels);
+        EXPECT_GT(faces, pixels / 50) << name << ": the mesh is drawn";
+        EXPECT_LT(faces, pixels / 2) << name << ": the background shows around it";
+    }
+}
+
 // Stepping the refinement: stopping at a coarser level leaves fewer, larger quads (and the level map
 // holds no level below the stop).
 TEST_F(PolyvolTest, StoppingTheRefinementAtALevelGivesACoarserMesh) {

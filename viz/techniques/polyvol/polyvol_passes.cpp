@@ -4,6 +4,8 @@
 
 #include <list>
 
+#include "scene/default_lighting.h"
+
 namespace viz::polyvol_detail {
 
 void PolyvolTechnique::allocateTargets(int width, int height) {
@@ -66,8 +68,10 @@ const gl::Program& PolyvolTechnique::volumeProgram(const Plan& plan) {
         mProgram = gl::Program::compile({.stages = {"polyvol/volume.vert", "polyvol/volume.frag"},
                                          .defines = defines,
                                          .label = "polyvol.volume"});
+        gl::ShaderDefines wireDefines = defines;
+        wireDefines.push_back({"WIRE_CLIP", "1"});
         mWireProgram = gl::Program::compile({.stages = {"polyvol/volume.vert", "polyvol/wire.frag"},
-                                             .defines = defines,
+                                             .defines = wireDefines,
                                              .label = "polyvol.wire"});
         mProgramKey = key;
     }
@@ -273,6 +277,9 @@ void PolyvolTechnique::drawWire(const FrameInput& input, const render::GpuLightC
     mWireProgram.set("uViewProj", viewProj);
     if (wire == 3) mMeshView.bindTarget();
     else mWireFramebuffer.bind();
+    const bool clip = wire == 3 && setOrbitClipBox(*input.scene);
+    mWireProgram.set("uClipOn", clip ? 1 : 0);
+    for (int k = 0; k < 6 && clip; ++k) glEnable(GLenum(GL_CLIP_DISTANCE0 + k));
     glDisable(GL_BLEND);
     glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
     if (adaptive) {
@@ -289,9 +296,22 @@ void PolyvolTechnique::drawWire(const FrameInput& input, const render::GpuLightC
         glDrawArrays(GL_TRIANGLES, 0, GLsizei(3 * (gridTriangles + extraTriangles)));
     }
     glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+    for (int k = 0; k < 6 && clip; ++k) glDisable(GLenum(GL_CLIP_DISTANCE0 + k));
     glEnable(GL_BLEND);
     mFramebuffer.bind();
     mProgram.use();
+}
+
+bool PolyvolTechnique::setOrbitClipBox(const scene::Scene& scene) {
+    scene::Bounds box = scene::sceneBounds(scene);
+    if (box.empty) return false;
+    for (const scene::Light& l : scene.lights)
+        if (l.type != scene::LightType::Directional) box.lo = glm::min(box.lo, l.position), box.hi = glm::max(box.hi, l.position);
+    const glm::dvec3 margin(0.02 * glm::length(box.hi - box.lo));
+    const glm::dvec3& eye = scene.camera.position;
+    mWireProgram.set("uClipMin", render::toEyeRelative(box.lo - margin, eye));
+    mWireProgram.set("uClipMax", render::toEyeRelative(box.hi + margin, eye));
+    return true;
 }
 
 float PolyvolTechnique::nearRadius(const render::GpuLightCpu& L, const scene::Camera& cam, int height) const {

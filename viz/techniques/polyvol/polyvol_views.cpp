@@ -130,7 +130,9 @@ void PolyvolTechnique::publishVolume(FrameOutput& out, const FrameInput& input, 
     mesh.note = count + " (grid: one vertex per shadow-map texel; closure to the light / cap; cube seams)" +
                 (mWireMode != 0 ? "; wireframe: green = rays leave (+L), red = rays enter (-L)" +
                                                 std::string(mWireMode == 3
-                                                                ? "; blue: camera frustum, yellow: lights"
+                                                                ? "; blue: camera frustum, yellow: lights; clipped to the "
+                                                                  "box around the scene and its lights (a sun's volume "
+                                                                  "reaches the far plane)"
                                                                 : "")
                                           : "; wireframe=camera|light|orbit draws it (orbit: a view of its own)") +
                 (mWireMode == 3 && s.wireframe == 0 ? "; drawn because this view is shown (its time counts in the volume stage)" : "");
