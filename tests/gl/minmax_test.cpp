@@ -52,6 +52,24 @@ TEST_F(MinmaxTest, MatchesTheReferenceOnGrateAndTerrain) {
 // shadow-map texels, so what is left is minmax's slice and column quantisation and raymarch's sampling.
 // raymarch's midpoint rule, not its exact mode: on llvmpipe every loop of a shader invocation together
 // stops after 65535 iterations, and 4096 exact segments (pointSegment loops inside) exceed that.
+// Views a scene leaves black say so first: on tv-room (an area light only: its VPLs are marched by brute
+// force) the walk's views are all 0 and their notes start "all 0 here"; on grate (a spot) they are not,
+// and the walk visits nodes. The image read back decides, not the note's own logic.
+TEST_F(MinmaxTest, WalkViewsThatASceneLeavesBlackSaySoFirst) {
+    for (const auto& [name, black] : {std::pair<std::string, bool>{"tv-room", true}, {"grate", false}}) {
+        const viz::FrameOutput out =
+            render(viz::scene::makeBuiltinScene(name), "minmax", {}, 48, 36, -1, {"minmax.visited"});
+        const viz::Intermediate* visited = find(out, "minmax.visited");
+        ASSERT_TRUE(visited && visited->image) << name;
+        const float most = *std::max_element(visited->image->pixels.begin(), visited->image->pixels.end());
+        EXPECT_EQ(most == 0.0f, black) << name << ": most nodes " << most;
+        EXPECT_EQ(visited->note.rfind("all 0 here", 0) == 0, black) << name << ": " << visited->note;
+        const viz::Intermediate* coords = find(out, "minmax.ray_coords");
+        ASSERT_TRUE(coords) << name;
+        EXPECT_EQ(coords->note.rfind("all 0 here", 0) == 0, black) << name << ": " << coords->note;
+    }
+}
+
 TEST_F(MinmaxTest, MatchesRaymarchWithManySamples) {
     for (const char* name : {"grate", "terrain"}) {
         const viz::scene::Scene scene = viz::scene::makeBuiltinScene(name);

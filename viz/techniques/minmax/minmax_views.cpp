@@ -150,14 +150,21 @@ void MinmaxTechnique::publishTraverse(FrameOutput& out, const FrameInput& input)
     out.intermediates.push_back(render::textureIntermediate(
         kAirlight, "L_air", "single-scattered light reaching the eye", "radiance", ViewKind::Colour, 0.0f, 1.0f,
         mAirlight));
+    // A scene without an epipolar light (area lights only) leaves these black: they say why, first (a
+    // title too narrow for the whole note keeps its start).
+    const std::string none = mWork.empty() ? "all 0 here: no spot, directional or point light (area lights' VPLs are "
+                                             "marched by brute force, without a tree); "
+                                           : "";
+    const FeaturePlan* near = findFeature(out.plan, "NEAR_EPIPOLE");
+    const std::string nearOff = !none.empty() ? none : near && !near->enabled ? "all 0 here: " + near->why + "; " : "";
     out.intermediates.push_back(render::textureIntermediate(
-        kVisited, "Nodes visited", "tree nodes (or texels, traversal=linear) processed per pixel, all lights",
+        kVisited, "Nodes visited", none + "tree nodes (or texels, traversal=linear) processed per pixel, all lights",
         "nodes", ViewKind::Scalar, 0.0f, 64.0f, mVisited));
     out.intermediates.push_back(render::textureIntermediate(
-        kNearMask, "Near-epipole mask", "1: marched by brute force near the epipole", "", ViewKind::Mask, 0.0f,
-        1.0f, mNearMask));
+        kNearMask, "Near-epipole mask", nearOff + "1: marched by brute force near the epipole", "", ViewKind::Mask,
+        0.0f, 1.0f, mNearMask));
     out.intermediates.push_back(render::textureIntermediate(
-        kRayCoords, "Ray coordinates", "first epipolar light: (slice row, beta, end column cEnd, d) per pixel",
+        kRayCoords, "Ray coordinates", none + "first epipolar light: (slice row, beta, end column cEnd, d) per pixel",
         "", ViewKind::Colour, 0.0f, 1.0f, mRayCoords));
     const glm::ivec3 map = mWork.empty() ? glm::ivec3(1) : mWork.front().rectified.size();  // columns x slices
     out.intermediates.back().channels = {

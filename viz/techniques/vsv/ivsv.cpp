@@ -394,8 +394,12 @@ FrameOutput IvsvTechnique::run(const FrameInput& input) {
                 kAirlight, "L_air", "single-scattered light reaching the eye", "radiance", ViewKind::Colour, 0.0f, 1.0f,
                 mAirlight));
             out.intermediates.push_back(render::textureIntermediate(
-                kVisibility, "Visibility", "mean over the gathered VPLs of the phi-uniform lit fraction of the ray", "",
-                ViewKind::Scalar, 0.0f, 1.0f, mVisibility));
+                kVisibility, "Visibility",
+                std::string(count == 0 ? "all 1 here: no area light, so no VPL (the other lights are the inner "
+                                         "vsv's); "
+                                       : "") +
+                    "mean over the gathered VPLs of the phi-uniform lit fraction of the ray",
+                "", ViewKind::Scalar, 0.0f, 1.0f, mVisibility));
             render::readBackAirlight(input, mAirlight, out);
         }))
         return out;

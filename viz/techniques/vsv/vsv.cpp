@@ -207,8 +207,11 @@ FrameOutput VsvTechnique::run(const FrameInput& input) {
                 mAirlight));
             out.intermediates.push_back(render::textureIntermediate(
                 kVisibility, "Visibility",
-                "r: phi-uniform lit fraction of the ray's bits; g: interpolated visibility of the fragment's voxel; "
-                "b: alpha cell; a: theta cell, -1 where the epipole case replaced the grid",
+                std::string(lights.empty() ? "all 0 here: no point, spot or directional light has a grid (an area "
+                                             "light is ivsv's, inside this run); "
+                                           : "") +
+                    "r: phi-uniform lit fraction of the ray's bits; g: interpolated visibility of the fragment's voxel; "
+                    "b: alpha cell; a: theta cell, -1 where the epipole case replaced the grid",
                 "", ViewKind::Scalar, 0.0f, 1.0f, mVisibility));
             out.intermediates.back().sentinels = {{-1.0f, "epipole case: a direct ray replaced the grid"}};
             out.intermediates.back().channels = {{"lit fraction of the ray", "", ViewKind::Scalar, 0.0f, 1.0f},
