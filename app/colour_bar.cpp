@@ -21,6 +21,9 @@ void addTicks(ColourBar& bar, bool logarithmic, const std::function<float(double
         const double v = axis.values[i];
         const float place = at(v);  // inside the bar: [0, 1] up to rounding
         if (!(place >= -1e-5f && place <= 1.0f + 1e-5f)) continue;
+        // A mapping that clamps (the diverging map's signedUnit) puts values beyond the ends at the ends.
+        const double slack = 1e-6 * (bar.hi - bar.lo);
+        if (v < bar.lo - slack || v > bar.hi + slack) continue;
         bar.ticks.push_back(v);
         bar.tickLabels.push_back(axis.labels[i]);
     }

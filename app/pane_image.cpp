@@ -73,7 +73,7 @@ DisplayMapping resolveMapping(const PaneImage& pane, const DisplaySettings& sett
     if (settings.range == RangeMode::Manual) {
         m.lo = settings.manualMin;
         m.hi = settings.manualMax;
-    } else if (measured && autoRange && autoRange->valid) {
+    } else if ((measured || pane.rangeFromData) && autoRange && autoRange->valid) {
         m.lo = autoRange->lo;
         m.hi = autoRange->hi;
     }
@@ -150,6 +150,7 @@ void makePane(PaneImage& pane, const viz::Intermediate& in, int layer) {
     pane.sentinels = in.sentinels;
     pane.channelInfo = in.channels;
     pane.picture = in.picture;
+    pane.rangeFromData = in.rangeFromData;
     if (in.image) {
         uploadImage(pane, *in.image);
         return;

@@ -48,6 +48,7 @@ struct PaneImage {
     std::vector<viz::Sentinel> sentinels;       // values that mean "nothing here" (hatched, not counted)
     std::vector<viz::ChannelInfo> channelInfo;  // the quantities packed in r, g, b, a; empty: one quantity
     bool picture = false;                       // drawn by the technique: its note explains its colours
+    bool rangeFromData = false;                 // Intermediate::rangeFromData
 };
 
 // The channel a view starts on for a pane: the first declared quantity of a multi-quantity pane, else all.

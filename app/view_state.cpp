@@ -49,6 +49,8 @@ void updateStatistics(ViewState& view) {
         withoutSentinels(channelValues(view.values, view.display.channel, view.meaningful), sentinels);
     view.finite = finiteRange(values);
     if (view.display.range == RangeMode::Percentiles) view.measured = percentileRange(values, 0.001, 0.999);
+    else if (view.display.range == RangeMode::Suggested && view.pane.rangeFromData)
+        view.measured = percentileRange(values, 0.02, 0.98);
     else view.measured = view.finite;
     ValueRange axis = view.finite;
     if (view.display.logScale) axis = logSafeRange(axis.lo, axis.hi);

@@ -75,6 +75,10 @@ struct Intermediate {
     // A picture the technique draws (a chart, an orbit view, a schematic): its colours are explained in
     // its note, not by a colour map, and the window's colour bar says so.
     bool picture = false;
+    // The suggested range is the data's own: the window measures it from the 0.5th and 99.5th percentiles
+    // (a diverging map takes the larger magnitude of the two), so that a peak does not wash out the rest
+    // (polyvol's signed total, whose values run from 1e-3 to its light's peak).
+    bool rangeFromData = false;
     // Empty: the channels are one quantity (a colour, or a scalar in r). Else channel i (r, g, b, a) is
     // channels[i]; the window starts on the first.
     std::vector<ChannelInfo> channels{};

@@ -9,6 +9,7 @@
 
 #include "colour_bar.h"
 #include "colour_bar_draw.h"
+#include "view_state.h"
 
 namespace airlight {
 namespace {
@@ -86,6 +87,46 @@ TEST(ColourBar, TheDivergingRampIsSymmetricAndInvertsTheSymmetricLog) {
         }
         EXPECT_TRUE(zero) << "0 is always a tick of a diverging bar";
     }
+}
+
+// A diverging bar's ticks lie inside its ends, each where the map puts it: the map clamps, so a tick
+// beyond an end used to land on it ("-1.0" at the left end of a [-0.526, 0.526] bar, polyvol's signed
+// total with its range from the data).
+TEST(ColourBar, ADivergingBarsTicksLieInsideItsEnds) {
+    for (const auto& [lo, hi] : {std::pair{0.0f, 0.5258f}, {-0.5f, 2.0f}, {0.0f, 0.07f}, {-3e-4f, 1e-4f}}) {
+        const PaneImage pane = paneOf(viz::ViewKind::Signed, lo, hi, "radiance");
+        const DisplayMapping m = resolveMapping(pane, {}, 0.0f, std::nullopt);
+        const ColourBar bar = colourBarFor(pane, m, {});
+        ASSERT_GE(bar.ticks.size(), 2u) << lo << " " << hi;
+        for (std::size_t i = 0; i < bar.ticks.size(); ++i) {
+            EXPECT_GE(bar.ticks[i], bar.lo * (1.0 + 1e-6)) << bar.tickLabels[i];
+            EXPECT_LE(bar.ticks[i], bar.hi * (1.0 + 1e-6)) << bar.tickLabels[i];
+            EXPECT_NEAR(bar.tickAt[i], 0.5f * (signedUnit(float(bar.ticks[i]), m.lo, m.hi, false) + 1.0f), 1e-5f);
+        }
+    }
+}
+
+// A view whose range comes from its data (Intermediate::rangeFromData: polyvol's signed total) maps from
+// its own 2nd to 98th percentile, not the declared range and not its peak: 9,900 values spread over
+// [0, 0.1) and 100 at a peak of 10 give a top near 0.1 (the declared 1 or the peak washed the shafts out).
+TEST(ColourBar, ARangeFromTheDataLeavesThePeakOut) {
+    ViewState view;
+    view.pane = paneOf(viz::ViewKind::Signed, -1.0f, 1.0f, "radiance");
+    view.pane.rangeFromData = true;
+    view.values = viz::Image(100, 100, 1);
+    for (int i = 0; i < 10000; ++i) view.values.pixels[std::size_t(i)] = i < 9900 ? 0.1f * float(i) / 9900.0f : 10.0f;
+    view.meaningful = 1;
+    updateStatistics(view);
+    ASSERT_TRUE(view.measured && view.measured->valid);
+    const DisplayMapping m = resolveMapping(view.pane, view.display, 0.0f, view.measured);
+    EXPECT_NEAR(m.hi, 0.1f, 0.005f);
+    EXPECT_NEAR(m.lo, 0.002f, 0.002f);
+    // Without the flag the declared range stands.
+    view.pane.rangeFromData = false;
+    updateStatistics(view);
+    const DisplayMapping declared = resolveMapping(view.pane, view.display, 0.0f, view.measured);
+    EXPECT_EQ(declared.lo, -1.0f);
+    EXPECT_EQ(declared.hi, 1.0f);
 }
 
 TEST(ColourBar, AnHdrImagesBarEndsWhereTheExposureReachesWhite) {

@@ -168,6 +168,7 @@ void PolyvolTechnique::publishVolume(FrameOutput& out, const FrameInput& input, 
         "light, radius half its map's nearest distance (" + (balls.empty() ? std::string("none") : balls) +
             "; 0: none), is added once per pixel, not by crossings",
         units, ViewKind::Signed, -1.0f, 1.0f, mTotal));
+    out.intermediates.back().rangeFromData = true;  // the light's peak would wash out the rest at a fixed range
     const Image total = gl::readTexture(mCrossings);
     const polyvol::CrackReport report = polyvol::countCrackPixels(total, 1);
     auto mask = std::make_shared<Image>(total.width, total.height, 1);
