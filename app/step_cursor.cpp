@@ -1,5 +1,8 @@
 #include "step_cursor.h"
 
+#include <algorithm>
+#include <string>
+
 #include "core/text.h"
 #include "step_timeline.h"
 
