@@ -174,11 +174,11 @@ ColourBar colourBarFor(const PaneImage& pane, const DisplayMapping& m, const Spe
     return bar;
 }
 
-void countMaskPixels(ColourBar& bar, const DisplayMapping& m, const viz::Image& values, int meaningful,
-                     const std::vector<viz::Sentinel>& sentinels) {
-    if (m.mode != DisplayMode::Mask || bar.kind != ColourBar::Kind::Classes || values.empty()) return;
+std::optional<MaskPixels> countMaskPixels(const DisplayMapping& m, const viz::Image& values, int meaningful,
+                                          const std::vector<viz::Sentinel>& sentinels) {
+    if (m.mode != DisplayMode::Mask || values.empty()) return std::nullopt;
     const int channels = std::clamp(meaningful, 1, values.channels);
-    std::size_t white = 0, counted = 0;
+    MaskPixels out;
     for (int y = 0; y < values.height; ++y)
         for (int x = 0; x < values.width; ++x) {
             bool special = false;
@@ -195,10 +195,15 @@ void countMaskPixels(ColourBar& bar, const DisplayMapping& m, const viz::Image& 
             }
             if (std::any_of(sentinels.begin(), sentinels.end(), [&](const viz::Sentinel& s) { return s.value == v; }))
                 continue;
-            ++counted;
-            white += mapToUnit(v, m.lo, m.hi, m.logScale) > 0.5f ? 1 : 0;
+            ++out.counted;
+            out.white += mapToUnit(v, m.lo, m.hi, m.logScale) > 0.5f ? 1 : 0;
         }
-    bar.caption += ": " + std::to_string(white) + " of " + std::to_string(counted) + " pixels";
+    return out;
+}
+
+void describeMaskPixels(ColourBar& bar, const MaskPixels& pixels) {
+    if (bar.kind != ColourBar::Kind::Classes) return;
+    bar.caption += ": " + std::to_string(pixels.white) + " of " + std::to_string(pixels.counted) + " pixels";
 }
 
 }  // namespace airlight

@@ -13,6 +13,7 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -55,11 +56,16 @@ std::string shortNumber(double v, int digits = 3);
 // `counts`: the view's NaN / Inf / negative / sentinel pixel counts (view_stats.h).
 ColourBar colourBarFor(const PaneImage& pane, const DisplayMapping& mapping, const SpecialCounts& counts);
 
-// A mask's bar (DisplayMode::Mask) also says how many pixels are white, counted from the view's values
-// (first `meaningful` channels) as the shader classes them: the shown channel above the middle of the
-// range; NaN, Inf and sentinel pixels, drawn as overlays, are not counted. An all-black mask then says
-// "0 of N pixels" instead of leaving the reader to wonder whether it was drawn. No values: no change.
-void countMaskPixels(ColourBar& bar, const DisplayMapping& mapping, const viz::Image& values, int meaningful,
-                     const std::vector<viz::Sentinel>& sentinels);
+// A mask's white pixels, counted from the view's values (first `meaningful` channels) as the shader classes
+// them: the shown channel above the middle of the range; NaN, Inf and sentinel pixels, drawn as overlays,
+// are not counted. Nothing (nullopt) for another mode or without values.
+struct MaskPixels {
+    std::size_t white = 0, counted = 0;
+};
+std::optional<MaskPixels> countMaskPixels(const DisplayMapping& mapping, const viz::Image& values, int meaningful,
+                                          const std::vector<viz::Sentinel>& sentinels);
+// A mask's bar says how many pixels are white ("...: 0 of 76800 pixels"), so that an all-black mask does not
+// leave the reader to wonder whether it was drawn. For a count countMaskPixels made under the bar's mapping.
+void describeMaskPixels(ColourBar& bar, const MaskPixels& pixels);
 
 }  // namespace airlight

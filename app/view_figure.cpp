@@ -64,7 +64,8 @@ Figure renderFigure(ViewState& view, float exposureStops, const viz::ui::FontAtl
     readBackValues(view);
     const DisplayMapping mapping = resolveMapping(pane, view.display, exposureStops, view.measured);
     view.colourBar = colourBarFor(pane, mapping, view.counts);
-    countMaskPixels(view.colourBar, mapping, view.values, view.meaningful, pane.sentinels);
+    if (const auto pixels = countMaskPixels(mapping, view.values, view.meaningful, pane.sentinels))
+        describeMaskPixels(view.colourBar, *pixels);
     f.caption = captionOf(view.colourBar, mapping);
 
     // Whole texels up to the figure width (nearest-neighbour, as the window shows them), within the height.

@@ -38,6 +38,7 @@ void updateStatistics(ViewState& view) {
     view.counts = {};
     view.finite = {};
     view.measured.reset();
+    view.maskMemo.reset();
     view.histogram = {};
     if (view.values.empty()) return;
     std::vector<float> sentinels;

@@ -33,6 +33,15 @@ struct ViewState {
     SpecialCounts counts;
     ValueRange finite;                 // of the chosen channel
     std::optional<ValueRange> measured;  // min/max or percentiles per display.range, when measured
+    // A mask's white pixels (countMaskPixels) and the mapping they were counted under, kept between frames;
+    // updateStatistics drops them with the values they came from.
+    struct MaskMemo {
+        float lo = 0.0f, hi = 0.0f;
+        Channel channel = Channel::Rgb;
+        bool log = false;
+        MaskPixels pixels;
+    };
+    std::optional<MaskMemo> maskMemo;
     Histogram histogram;               // of the chosen channel over `finite`
     // Difference mode: the figures against the other technique, and why there is no difference image.
     std::optional<viz::report::ErrorMetrics> error;

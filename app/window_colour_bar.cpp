@@ -17,7 +17,14 @@ void GuiApp::drawColourBar(int id, ViewState& v) {
     if (v.bar.size().y <= 0.0f) return;
     const DisplayMapping mapping = resolveMapping(v.pane, v.display, mExposure, v.measured);
     v.colourBar = colourBarFor(v.pane, mapping, v.counts);
-    countMaskPixels(v.colourBar, mapping, v.values, v.meaningful, v.pane.sentinels);
+    // A mask's count, once per values and mapping (a large image costs milliseconds to count).
+    const auto& memo = v.maskMemo;
+    if (mapping.mode == DisplayMode::Mask &&
+        !(memo && memo->lo == mapping.lo && memo->hi == mapping.hi && memo->channel == mapping.channel &&
+          memo->log == mapping.logScale))
+        if (const auto pixels = countMaskPixels(mapping, v.values, v.meaningful, v.pane.sentinels))
+            v.maskMemo = ViewState::MaskMemo{mapping.lo, mapping.hi, mapping.channel, mapping.logScale, *pixels};
+    if (mapping.mode == DisplayMode::Mask && v.maskMemo) describeMaskPixels(v.colourBar, v.maskMemo->pixels);
     if (v.colourBar.kind == ColourBar::Kind::None) return;
     const ColourBarLayout layout =
         drawColourBarText(v.colourBar, v.bar, *mFont, mScale, *mDrawList, *mBackground, {kText, kDim, kError, kDim});

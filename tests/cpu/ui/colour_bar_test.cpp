@@ -149,28 +149,31 @@ TEST(ColourBar, AMaskSaysHowManyPixelsAreWhite) {
     viz::Image values(3, 2, 1);
     values.pixels = {1.0f, 0.0f, 0.75f,                                  // white, black, white
                      0.25f, std::nanf(""), std::numeric_limits<float>::infinity()};  // sentinel, NaN, Inf: not counted
+    const auto pixels = countMaskPixels(m, values, 1, mask.sentinels);
+    ASSERT_TRUE(pixels);
+    EXPECT_EQ(pixels->white, 2u);
+    EXPECT_EQ(pixels->counted, 3u);
     ColourBar bar = colourBarFor(mask, m, {});
-    countMaskPixels(bar, m, values, 1, mask.sentinels);
+    describeMaskPixels(bar, *pixels);
     EXPECT_NE(bar.caption.find(": 2 of 3 pixels"), std::string::npos) << bar.caption;
     // All black: it says so.
     viz::Image black(4, 4, 1);
     ColourBar none = colourBarFor(mask, m, {});
-    countMaskPixels(none, m, black, 1, {});
+    describeMaskPixels(none, *countMaskPixels(m, black, 1, {}));
     EXPECT_NE(none.caption.find(": 0 of 16 pixels"), std::string::npos) << none.caption;
     // The green channel chosen: its values decide.
     viz::Image rgb(2, 1, 3);
     rgb.pixels = {1.0f, 0.0f, 0.0f, 0.0f, 1.0f, 0.0f};
     DisplaySettings green;
     green.channel = Channel::G;
-    const DisplayMapping mg = resolveMapping(mask, green, 0.0f, std::nullopt);
-    ColourBar g = colourBarFor(mask, mg, {});
-    countMaskPixels(g, mg, rgb, 3, {});
-    EXPECT_NE(g.caption.find(": 1 of 2 pixels"), std::string::npos) << g.caption;
-    // Another mode, or no values: unchanged.
-    ColourBar plain = colourBarFor(mask, m, {});
-    const std::string before = plain.caption;
-    countMaskPixels(plain, m, viz::Image{}, 1, {});
-    EXPECT_EQ(plain.caption, before);
+    const auto g = countMaskPixels(resolveMapping(mask, green, 0.0f, std::nullopt), rgb, 3, {});
+    ASSERT_TRUE(g);
+    EXPECT_EQ(g->white, 1u);
+    EXPECT_EQ(g->counted, 2u);
+    // Another mode, or no values: nothing counted.
+    EXPECT_FALSE(countMaskPixels(m, viz::Image{}, 1, {}));
+    PaneImage grey = paneOf(viz::ViewKind::Scalar, 0.0f, 1.0f, "");
+    EXPECT_FALSE(countMaskPixels(resolveMapping(grey, {}, 0.0f, std::nullopt), values, 1, {}));
 }
 
 TEST(ColourBar, DiscreteMapsGetClassesAndSentinelsLeadTheLegend) {
