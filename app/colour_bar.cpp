@@ -183,16 +183,8 @@ std::optional<MaskPixels> countMaskPixels(const DisplayMapping& m, const viz::Im
         for (int x = 0; x < values.width; ++x) {
             bool special = false;
             for (int c = 0; c < channels; ++c) special = special || !std::isfinite(values.at(x, y, c));
-            if (special) continue;
-            float v = values.at(x, y, 0);  // Rgb and one-channel images: r, as the shader takes it
-            const int k = int(m.channel);
-            if (k >= 1 && k <= 4) {
-                if (k > channels) continue;
-                v = values.at(x, y, k - 1);
-            } else if (m.channel == Channel::Luminance && channels >= 3) {
-                v = kLuminance[0] * values.at(x, y, 0) + kLuminance[1] * values.at(x, y, 1) +
-                    kLuminance[2] * values.at(x, y, 2);
-            }
+            const float v = shownScalar(&values.pixels[values.index(x, y)], channels, m.channel);
+            if (special || std::isnan(v)) continue;  // NaN: the texel lacks the chosen channel
             if (std::any_of(sentinels.begin(), sentinels.end(), [&](const viz::Sentinel& s) { return s.value == v; }))
                 continue;
             ++out.counted;

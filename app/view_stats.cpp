@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "core/error.h"
 #include "report/error_metrics.h"
@@ -20,6 +21,13 @@ const std::vector<std::string>& differenceModeNames() {
     return names;
 }
 
+float shownScalar(const float* texel, int n, Channel channel) {
+    if (channel == Channel::Luminance)
+        return n < 3 ? texel[0] : kLuminance[0] * texel[0] + kLuminance[1] * texel[1] + kLuminance[2] * texel[2];
+    const int c = channel == Channel::Rgb ? 0 : int(channel) - 1;
+    return c < n ? texel[c] : std::numeric_limits<float>::quiet_NaN();
+}
+
 std::vector<float> channelValues(const viz::Image& image, Channel channel, int meaningful) {
     const int n = std::clamp(meaningful, 1, image.channels > 0 ? image.channels : 1);
     const std::size_t pixels = std::size_t(image.width) * std::size_t(image.height);
@@ -33,10 +41,7 @@ std::vector<float> channelValues(const viz::Image& image, Channel channel, int m
             for (int c = 0; c < colours; ++c) out.push_back(image.pixels[p * stride + std::size_t(c)]);
     } else if (channel == Channel::Luminance) {
         out.reserve(pixels);
-        for (std::size_t p = 0; p < pixels; ++p) {
-            const float* v = &image.pixels[p * stride];
-            out.push_back(n < 3 ? v[0] : kLuminance[0] * v[0] + kLuminance[1] * v[1] + kLuminance[2] * v[2]);
-        }
+        for (std::size_t p = 0; p < pixels; ++p) out.push_back(shownScalar(&image.pixels[p * stride], n, channel));
     } else {
         const int c = int(channel) - 1;
         if (c >= n) return out;

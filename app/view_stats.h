@@ -24,6 +24,9 @@ inline constexpr float kLuminance[3] = {0.2126f, 0.7152f, 0.0722f};
 // 3) of every pixel; R, G, B, A one value per pixel (none when the image lacks that channel); Luminance
 // one value per pixel (a single-channel image gives its value). NaN and Inf are kept.
 std::vector<float> channelValues(const viz::Image& image, Channel channel, int meaningful);
+// The one value the image shader maps for a texel of `n` meaningful channels: r for Rgb (a one-channel
+// image's value), the chosen channel, or the luminance (r when n < 3). NaN when the texel lacks the channel.
+float shownScalar(const float* texel, int n, Channel channel);
 
 // Pixels with at least one NaN / Inf / negative value among their first `meaningful` channels.
 // Values equal to one of `sentinels` (a pane's "nothing here" values) are not counted as negative; each

@@ -75,7 +75,7 @@ struct Intermediate {
     // A picture the technique draws (a chart, an orbit view, a schematic): its colours are explained in
     // its note, not by a colour map, and the window's colour bar says so.
     bool picture = false;
-    // The suggested range is the data's own: the window measures it from the 0.5th and 99.5th percentiles
+    // The suggested range is the data's own: the window measures it from the 2nd and 98th percentiles
     // (a diverging map takes the larger magnitude of the two), so that a peak does not wash out the rest
     // (polyvol's signed total, whose values run from 1e-3 to its light's peak).
     bool rangeFromData = false;

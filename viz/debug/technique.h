@@ -5,6 +5,7 @@
 // requested stage, at the stepping cursor's sub-step.
 #pragma once
 
+#include <algorithm>
 #include <map>
 #include <memory>
 #include <optional>
@@ -99,6 +100,7 @@ struct FrameInput {
     bool substepOnly = false;
     // The on-demand intermediates (StageInfo::onDemand) the caller will show.
     std::vector<std::string> views{};
+    bool shows(const std::string& id) const { return std::find(views.begin(), views.end(), id) != views.end(); }
     // Frame index along an animation (a motion path's frame i, the window's animation counter); 0 for a
     // still. Read only by options whose noise changes from frame to frame (raymarch jitter_time=per-frame,
     // ivsv subsets=per-frame); every other output is a function of the scene and the settings alone.

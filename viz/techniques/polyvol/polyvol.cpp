@@ -215,7 +215,7 @@ FrameOutput PolyvolTechnique::run(const FrameInput& input) {
     // The light volume mesh view: as `wireframe` says, or (wireframe=off) from the orbit camera when
     // the caller shows polyvol.mesh, so that the view always has a picture.
     mWireMode = s.wireframe;
-    if (mWireMode == 0 && std::find(input.views.begin(), input.views.end(), kMesh) != input.views.end()) mWireMode = 3;
+    if (mWireMode == 0 && input.shows(kMesh)) mWireMode = 3;
 
     mMarkZfar = scene.camera.zfar;
     mMarkCookieMask = float(s.cookieMask);

@@ -159,7 +159,7 @@ private:
     // The wireframe of one light's volume into polyvol.mesh, from the camera (wireframe=1) or from the
     // first 2D light (wireframe=2, through its shadow matrix). Restores the volume pass's state.
     // The orbit view's clip box (the scene's meshes and its lights' positions, 2 % larger) set on the wire
-    // program; false (no clip) for a scene without geometry.
+    // program; false (no clip) for a scene without triangles.
     bool setOrbitClipBox(const scene::Scene& scene);
     void drawWire(const FrameInput& input, const render::GpuLightCpu& L, const polyvol::VolumeGrid& grid,
                   std::int64_t gridTriangles, std::int64_t extraTriangles, bool adaptive);

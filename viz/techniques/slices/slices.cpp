@@ -295,7 +295,7 @@ FrameOutput SlicesTechnique::run(const FrameInput& input) {
         kPlanesIndex,
         [&] {
             t = terms(scene, s);
-            t.lastPlane = std::find(input.views.begin(), input.views.end(), kPlane) != input.views.end();
+            t.lastPlane = input.shows(kPlane);
             allocateTargets(input.width, input.height, s.accum);
             const float zero[4] = {0, 0, 0, 0};
             glClearTexImage(mAccum.id(), 0, GL_RGBA, GL_FLOAT, zero);
@@ -322,7 +322,7 @@ FrameOutput SlicesTechnique::run(const FrameInput& input) {
             // Shown in the window, the planes' table is drawn as the orbit view too (as polyvol's mesh):
             // a table of vertices stretched into an image says nothing.
             const std::size_t tableIndex = out.intermediates.size() - 1;
-            const bool tableShown = std::find(input.views.begin(), input.views.end(), kPlaneMesh) != input.views.end();
+            const bool tableShown = input.shows(kPlaneMesh);
             if (s.meshView || tableShown) {
                 mMeshView.begin(scene, mView.gpuScene(), render::orbitOf(input.controls),
                                 input.width, input.height);

@@ -80,7 +80,6 @@ void SlicesTechnique::drawPlanes(const scene::Scene& scene, const FrameInput& in
     };
     mPlanesUsed.clear();
     mPolygons.clear();
-    mPlaneQueriesUsed = 0;
     const CameraBasis basis{cam.forward, scene::cameraRight(cam), cam.up};
 
     program.use();
