@@ -325,10 +325,10 @@ int runGuiCommand(Args& args) {
             throw InputError("--screenshot '" + o.screenshot + "' would write its view rectangles over the state file '" +
                              o.state + "'");
     }
-    if (!viz::displayAvailable())
-        throw InputError(o.lesson.empty() ? "no display: set DISPLAY (or run under xvfb-run), or use 'airlight render'"
-                                          : "no display: set DISPLAY (or run under xvfb-run), or export the lesson with "
-                                            "'airlight lesson " + o.lesson + " --export DIR'");
+    if (const std::string problem = viz::displayProblem(); !problem.empty())
+        throw InputError(problem + ": set DISPLAY to a running X server (or run under xvfb-run), or " +
+                         (o.lesson.empty() ? std::string("use 'airlight render'")
+                                           : "export the lesson with 'airlight lesson " + o.lesson + " --export DIR'"));
     GuiOptions g;
     g.scene = o.request.scene;
     g.technique = o.request.technique;
@@ -358,7 +358,8 @@ int runGuiCommand(Args& args) {
 }
 
 int runDefault() {
-    if (viz::displayAvailable()) {
+    const std::string problem = viz::displayProblem();
+    if (problem.empty()) {
         GuiOptions g;
         g.scene = viz::scene::defaultSceneName();
         g.technique = kDefaultTechnique;
@@ -367,7 +368,7 @@ int runDefault() {
         return runGui(g);
     }
     const std::string outDir = "out";
-    std::printf("airlight: no display: rendering the default scene '%s' with '%s' headlessly into %s/\n",
+    std::printf("airlight: %s: rendering the default scene '%s' with '%s' headlessly into %s/\n", problem.c_str(),
                 viz::scene::defaultSceneName().c_str(), kDefaultTechnique, outDir.c_str());
     std::filesystem::create_directories(outDir);
     RenderRequest request;

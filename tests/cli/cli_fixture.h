@@ -78,24 +78,35 @@ protected:
 // "images=N missing=M", or empty when no browser is installed.
 // A CliTest that opens the window: skipped without a display (X11 or Wayland), a failure instead when
 // VIZ_REQUIRE_DISPLAY=1 (CI runs these under xvfb-run).
-// Points the reference's disk cache (AIRLIGHT_CACHE_DIR) at `dir` while it lives, so a test neither
-// reads frames another run left nor leaves its own behind; the variable is put back as it was.
-class ScopedCacheDir {
+// Sets (or, given null, unsets) an environment variable while it lives, for the commands a test runs;
+// the variable is put back as it was.
+class ScopedEnv {
 public:
-    explicit ScopedCacheDir(const fs::path& dir) {
-        if (const char* old = std::getenv("AIRLIGHT_CACHE_DIR")) mOld = old, mHad = true;
-        ::setenv("AIRLIGHT_CACHE_DIR", dir.c_str(), 1);
+    ScopedEnv(const char* name, const char* value) : mName(name) {
+        if (const char* old = std::getenv(name)) mOld = old, mHad = true;
+        if (value) ::setenv(name, value, 1);
+        else ::unsetenv(name);
     }
-    ~ScopedCacheDir() {
-        if (mHad) ::setenv("AIRLIGHT_CACHE_DIR", mOld.c_str(), 1);
-        else ::unsetenv("AIRLIGHT_CACHE_DIR");
+    ~ScopedEnv() {
+        if (mHad) ::setenv(mName.c_str(), mOld.c_str(), 1);
+        else ::unsetenv(mName.c_str());
     }
-    ScopedCacheDir(const ScopedCacheDir&) = delete;
-    ScopedCacheDir& operator=(const ScopedCacheDir&) = delete;
+    ScopedEnv(const ScopedEnv&) = delete;
+    ScopedEnv& operator=(const ScopedEnv&) = delete;
 
 private:
-    std::string mOld;
+    std::string mName, mOld;
     bool mHad = false;
+};
+
+// Points the reference's disk cache (AIRLIGHT_CACHE_DIR) at `dir` while it lives, so a test neither
+// reads frames another run left nor leaves its own behind.
+class ScopedCacheDir {
+public:
+    explicit ScopedCacheDir(const fs::path& dir) : mEnv("AIRLIGHT_CACHE_DIR", dir.c_str()) {}
+
+private:
+    ScopedEnv mEnv;
 };
 
 class WindowCliTest : public CliTest {

@@ -560,5 +560,26 @@ TEST_F(GuiCli, ScreenshotOptionsAreChecked) {
     EXPECT_FALSE(fs::exists(path("x.png")));
 }
 
+// Without a display the window command fails in one line that says which: none set, or one set that
+// cannot be reached (a stale DISPLAY), with GLFW's reason, before anything is written.
+TEST_F(CliTest, GuiWithoutAReachableDisplaySaysWhichDisplayAndWhy) {
+    const ScopedEnv noWayland("WAYLAND_DISPLAY", nullptr);
+    {
+        const ScopedEnv noX("DISPLAY", nullptr);
+        const RunResult r = run("gui --scene grate --screenshot " + path("a.png").string());
+        expectUserError(r, "no display: set DISPLAY");
+        EXPECT_EQ(r.err.find("cannot connect"), std::string::npos) << r.err;
+    }
+    {
+        const ScopedEnv staleX("DISPLAY", ":987");  // no X server listens there
+        const RunResult r = run("gui --scene grate --screenshot " + path("b.png").string());
+        expectUserError(r, "cannot connect to display ':987' (GLFW: ");
+        EXPECT_EQ(r.err.find("no display"), std::string::npos) << r.err;
+        const RunResult l = run("gui --lesson 01-airlight-integral --screenshot " + path("c.png").string());
+        expectUserError(l, "export the lesson with 'airlight lesson 01-airlight-integral --export DIR'");
+    }
+    EXPECT_FALSE(fs::exists(path("a.png")) || fs::exists(path("b.png")) || fs::exists(path("c.png")));
+}
+
 }  // namespace
 }  // namespace viz::testing

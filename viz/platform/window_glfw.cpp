@@ -30,13 +30,20 @@ bool initGlfw() {
 
 }  // namespace
 
-bool displayAvailable() {
+std::string displayProblem() {
     const char* x11 = std::getenv("DISPLAY");
     const char* wayland = std::getenv("WAYLAND_DISPLAY");
-    const bool set =
-        (x11 != nullptr && x11[0] != '\0') || (wayland != nullptr && wayland[0] != '\0');
-    return set && initGlfw();
+    const bool hasX11 = x11 != nullptr && x11[0] != '\0';
+    const bool hasWayland = wayland != nullptr && wayland[0] != '\0';
+    if (!hasX11 && !hasWayland) return "no display";
+    gLastGlfwError.clear();
+    if (initGlfw()) return "";
+    const std::string name = hasX11 ? std::string(x11) : std::string(wayland);
+    return "cannot connect to display '" + name + "'" +
+           (gLastGlfwError.empty() ? std::string() : " (GLFW: " + gLastGlfwError + ")");
 }
+
+bool displayAvailable() { return displayProblem().empty(); }
 
 std::unique_ptr<Window> Window::create(int width, int height, const std::string& title,
                                        bool debug) {

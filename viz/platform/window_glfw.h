@@ -10,7 +10,11 @@ struct GLFWwindow;
 
 namespace viz {
 
-// DISPLAY or WAYLAND_DISPLAY is set and glfwInit succeeds.
+// Why no window can be opened, in one line: "no display" when neither DISPLAY nor WAYLAND_DISPLAY is
+// set, "cannot connect to display ':N'" with GLFW's reason when one is set but glfwInit fails (a stale
+// DISPLAY, an X server that has gone); empty when a window can be tried.
+std::string displayProblem();
+// displayProblem() is empty.
 bool displayAvailable();
 
 class Window {
