@@ -20,13 +20,26 @@
 
 namespace airlight {
 
-struct AppState {
+// What the user chose that the window keeps in this one value and nowhere else (GuiApp::mState): the
+// scene source, the technique, the render size, its settings, the stepping cursor, the exposure, the
+// picked light and the focused view.
+struct HeldState {
     std::string scene;                 // built-in name, stiff/ID or a .gltf/.glb path
     std::string technique;
     glm::ivec2 size{320, 240};         // render size
     viz::Settings settings;            // complete, for `technique`; the sub-step parameters at their defaults
-    viz::Settings defaults;            // the technique's defaults (the session keeps only what differs)
     StepCursor cursor;                 // stage -1: the complete frame
+    float exposure = 0.0f;
+    bool exposureSet = false;
+    int selectedLight = 0;             // the light the panel and the gizmo edit
+    int focusedView = 1;               // keys, the views list and exports act on it
+};
+
+// The held state with what its owners keep beside it, taken as one value when a session, a lesson state
+// or a sidecar is written: the camera (the camera controller), the medium and lights (the scene the
+// runs read), the view grid (the layout and its views), the inspected pixel (the ray inspector).
+struct AppState : HeldState {
+    viz::Settings defaults;            // the technique's defaults (the session keeps only what differs)
     int stageShown = 0;                // the stage index the cursor resolves to
     viz::Settings steppedSettings;     // `settings` with the cursor's sub-step written as its stage's parameter
                                        // (how the command line and lessons say where a run stops)
@@ -35,9 +48,6 @@ struct AppState {
     bool flyCamera = false;
     viz::scene::Medium medium;
     std::vector<viz::scene::Light> lights;
-    int selectedLight = 0;
-    float exposure = 0.0f;
-    bool exposureSet = false;
     struct View {
         int id = 0;
         std::string content = "airlight";
@@ -47,7 +57,7 @@ struct AppState {
         DisplaySettings display;
     };
     std::string layout;                // ViewLayout::toText()
-    int focusedView = -1, maximisedView = -1;
+    int maximisedView = -1;
     std::vector<View> views;           // in the layout's reading order
     std::optional<glm::ivec2> inspected;  // the ray inspector's pixel (or a lesson step's, pending)
 };

@@ -46,8 +46,9 @@ GuiApp::GuiApp(const GuiOptions& options, viz::scene::Scene scene, viz::Window& 
     if (!options.techniqueGiven && !mSession.technique.empty() &&
         std::find(mIds.begin(), mIds.end(), mSession.technique) != mIds.end())
         wanted = mSession.technique;
-    const auto it = std::find(mIds.begin(), mIds.end(), wanted);
-    mCurrent = it == mIds.end() ? 0 : int(it - mIds.begin());
+    mState.technique = std::find(mIds.begin(), mIds.end(), wanted) == mIds.end() ? mIds.front() : wanted;
+    mState.scene = options.scene;
+    mState.size = {options.width, options.height};
     mClockName = viz::gl::StageClock::method();
     // Where GL timer queries measure the work, the main views' stages are timed without waiting for the
     // GPU (the times shown are a frame or a few old); AIRLIGHT_GPU_TIMER=1 forces it (tests on llvmpipe,
@@ -83,9 +84,9 @@ GuiApp::GuiApp(const GuiOptions& options, viz::scene::Scene scene, viz::Window& 
         mAnimation.path = viz::scene::parseMotionPath(options.path);
         mAnimation.pathFrames = options.pathFrames;
     }
-    mSceneWatch.watch(mOptions.scene);
+    mSceneWatch.watch(mState.scene);
     mGeometryHash = viz::scene::geometryContentHash(mScene);
-    selectTechnique(mCurrent);
+    selectTechnique(currentIndex());
     applySessionView();
     const std::string lesson = !options.lesson.empty() ? options.lesson : mSession.lesson;
     if (options.sizeGiven) mLessonSize = {options.width, options.height};
@@ -185,6 +186,11 @@ int GuiApp::run() {
     return 0;
 }
 
+int GuiApp::currentIndex() const {
+    const auto it = std::find(mIds.begin(), mIds.end(), mState.technique);
+    return it == mIds.end() ? 0 : int(it - mIds.begin());
+}
+
 void GuiApp::selectTechnique(int index) {
     const int n = int(mIds.size());
     index = ((index % n) + n) % n;
@@ -195,14 +201,14 @@ void GuiApp::selectTechnique(int index) {
         mError = e.what();
         return;
     }
-    mCurrent = index;
-    mCursor = {};  // a new technique starts on its complete frame
+    mState.technique = id;
+    mState.cursor = {};  // a new technique starts on its complete frame
     mError.clear();
     mSettingsError.clear();
-    mSettings = settingsFor(technique(), givenSettings(id), mSettingsError);
-    if (auto c = takeSubsteps(technique(), mSettings)) mCursor = *c;
+    mState.settings = settingsFor(technique(), givenSettings(id), mSettingsError);
+    if (auto c = takeSubsteps(technique(), mState.settings)) mState.cursor = *c;
     try {
-        mPlan = technique().plan(mScene, mSettings);
+        mPlan = technique().plan(mScene, mState.settings);
     } catch (const std::exception& e) {
         mPlan = {};
         mError = e.what();
@@ -225,10 +231,10 @@ void GuiApp::render() {
         // While the animation plays a CPU technique keeps its still frame (seconds a pass: a request per
         // played frame would supersede every pass before it finished); play stopping asks again.
         if (mAnimation.playing && (mHaveOutput || cpuWorker().progress().busy)) return;
-        cpuWorker().submit({t.id(), mScene.camera, mSettings, mOptions.width, mOptions.height});
+        cpuWorker().submit({t.id(), mScene.camera, mState.settings, mState.size.x, mState.size.y});
         return;
     }
-    glm::ivec2 size{mOptions.width, mOptions.height};
+    glm::ivec2 size = mState.size;
     // While the camera is being dragged or flown, render at half size to keep up; the full size
     // follows when the interaction stops.
     mReduced = (mDragButton >= 0 || mGizmoDrag || anyFlyKeyDown()) && size.x >= 64 && size.y >= 48;
@@ -238,7 +244,7 @@ void GuiApp::render() {
     const auto start = Clock::now();
     try {
         // The scheduler re-runs only the stages whose inputs changed (a sub-step: its stage alone).
-        mOutput = mRuns.runner(Consumer::Views, t.id()).run(mScene, size.x, size.y, mSettings, mCursor, shownContents(), mAnimation.frame);
+        mOutput = mRuns.runner(Consumer::Views, t.id()).run(mScene, size.x, size.y, mState.settings, mState.cursor, shownContents(), mAnimation.frame);
         // While playing, the temporal views: this frame's L_air against the previous one's, and its error
         // against the reference's frames when they are known (--path).
         if (mAnimation.playing && mAnimation.temporal.add(mOutput.airlight, pathReferenceFrame())) {
@@ -270,7 +276,7 @@ void GuiApp::acceptCpuResult(CpuResult result) {
     // From a technique no longer shown, or older than the pass shown. A pass of a request that a later
     // one superseded (the camera moved while it ran) is shown until the later one's passes replace it:
     // while the camera flies, the latest pass finished is the view's preview.
-    if (result.technique != mIds[std::size_t(mCurrent)] || result.ticket < mCpuShownTicket) return;
+    if (result.technique != mState.technique || result.ticket < mCpuShownTicket) return;
     mCpuShownTicket = result.ticket;
     if (!result.error.empty()) {
         mError = result.error;
@@ -292,7 +298,7 @@ void GuiApp::sceneEdited() {
 
 void GuiApp::replan() {
     try {
-        mPlan = technique().plan(mScene, mSettings);
+        mPlan = technique().plan(mScene, mState.settings);
     } catch (const std::exception& e) {
         mError = e.what();
     }

@@ -31,6 +31,7 @@
 #include "comparison_panel.h"
 #include "cpu_worker.h"
 #include "difference_runs.h"
+#include "display_strip.h"
 #include "lesson_player.h"
 #include "on_off_slider.h"
 #include "pane_image.h"
@@ -226,8 +227,10 @@ private:
     // ---- techniques and rendering ----
 
     // The main views' instance of the current technique (its own: no other consumer runs it).
-    viz::Technique& technique() { return mRuns.runner(Consumer::Views, mIds[std::size_t(mCurrent)]).technique(); }
-    const viz::Technique& technique() const { return mRuns.at(Consumer::Views, mIds[std::size_t(mCurrent)]).technique(); }
+    viz::Technique& technique() { return mRuns.runner(Consumer::Views, mState.technique).technique(); }
+    const viz::Technique& technique() const { return mRuns.at(Consumer::Views, mState.technique).technique(); }
+    // mState.technique's place in mIds (the technique list, N and Shift+N).
+    int currentIndex() const;
 
     void selectTechnique(int index);
     void render();
@@ -404,15 +407,11 @@ private:
     // "rendering..." while a slow GPU run blocks, the CPU worker's progress while it computes.
     void drawStatusBands(DrawList& dl, const Rect& image);
 
-    // The display strip: channel, range (auto or manual), log scale, colour map, negative overlay and
-    // difference mode as widgets on the left; the histogram of the shown values on the right.
+    // The view's display strip (display_strip.h) in its rectangle; re-does what its widgets changed.
     void drawStrip(int id, ViewState& v);
     // The colour bar under an image view (window_colour_bar.cpp).
     void drawColourBar(int id, ViewState& v);
     float colourBarHeight(const ViewState& v) const;
-
-    // Counts of the shown channel's finite values over their range, with the display range marked.
-    void drawHistogram(const ViewState& v, const Rect& area);
 
     // What the sidecar says of a view (tests assert on it).
     ViewSidecarFacts viewSidecarFacts(int id);
@@ -443,7 +442,7 @@ private:
     // The scene as the window names it: a file's name (and its glTF scene's, when that differs).
     std::string sceneTitle() const;
     // The light the panel and the gizmo edit (the scene's first unless another is picked in the panel).
-    int selectedLightIndex() const { return std::clamp(mLight, 0, std::max(0, int(mScene.lights.size()) - 1)); }
+    int selectedLightIndex() const { return std::clamp(mState.selectedLight, 0, std::max(0, int(mScene.lights.size()) - 1)); }
     viz::scene::Light& selectedLight() { return mScene.lights[std::size_t(selectedLightIndex())]; }
     const viz::scene::Light& selectedLight() const { return mScene.lights[std::size_t(selectedLightIndex())]; }
 
@@ -466,8 +465,10 @@ private:
     // Every technique instance, by consumer: the main views' (their panes borrow its textures) and the
     // others' (difference views, the comparison grid: both copy their images out).
     RunPool mRuns;
-    int mCurrent = 0;
-    viz::Settings mSettings;
+    // What the user chose, held here only (app_state.h): scene source, technique, size, settings, stepping
+    // cursor (not a setting), exposure, picked light, focused view. appState() adds what the camera
+    // controller, the scene, the grid and the inspector keep.
+    HeldState mState;
     viz::Plan mPlan;
     const viz::Plan& shownPlan() const { return mHaveOutput ? mOutput.plan : mPlan; }  // last run's, else mPlan
     std::string mSettingsError, mError, mClockName;
@@ -495,7 +496,6 @@ private:
     // ---- the view grid ----
     ViewLayout mLayout{0};
     std::map<int, ViewState> mViews;  // by the layout's view number
-    int mFocused = 1;                 // keys, the views list and exports act on it
     int mNextView = 2;
     bool mLessonGrid = false;         // the grid is a lesson step's layout of several views
     std::vector<ViewCellRect> mCells;        // where the last frame put each view
@@ -511,8 +511,6 @@ private:
     glm::vec2 mHoverDrawn{-1.0f};    // the mouse position the widgets saw last frame
     // markersFor answers by intermediate id, for one pixel of the current run.
     std::map<std::string, std::pair<glm::ivec2, std::optional<std::vector<viz::ViewMarker>>>> mMarkerCache;
-    float mExposure = 0.0f;
-    bool mExposureSet = false;
     bool mDirty = true;
     bool mRendering = false;  // a GPU run is about to block the thread
     double mLastRunSeconds = 0.0;
@@ -528,12 +526,10 @@ private:
     std::optional<glm::ivec2> mPendingInspect;  // a lesson step's pixel, inspected when its result is in
     std::unique_ptr<LessonPlayer> mLesson;      // the lesson panel, when a lesson is open
     glm::ivec2 mLessonSize{0};                  // --size given with a lesson: every step at that size
-    StepCursor mCursor;                      // stepping: where the main views' run stops (not a setting)
     std::vector<TimelineSegment> mTimeline;  // the stepping timeline as drawn last
     Rect mTimelineRect;
     bool mDragTimeline = false;
     std::optional<std::string> mPendingScene;  // picked in the panel, loaded by loadPendingScene
-    int mLight = 0;                            // selectedLightIndex()
     // geometryContentHash(mScene), computed when a scene is loaded (the window never edits geometry):
     // the difference views' keys read it instead of hashing every mesh and texture per refresh.
     std::uint64_t mGeometryHash = 0;

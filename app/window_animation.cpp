@@ -36,9 +36,9 @@ void GuiApp::togglePlaying() {
 void GuiApp::advanceAnimation(double dt) {
     mAnimation.clock += dt;
     ++mAnimation.frame;
-    if (technique().readsFrame(mSettings)) mDirty = true;  // its noise changes every frame
+    if (technique().readsFrame(mState.settings)) mDirty = true;  // its noise changes every frame
     if (technique().controls().animationTime) {
-        mSettings[viz::kAnimationTime] = mAnimation.clock;
+        mState.settings[viz::kAnimationTime] = mAnimation.clock;
         mDirty = true;
     }
     // A path moves what every technique sees; the reference (seconds per frame on its worker) keeps the
@@ -108,7 +108,7 @@ std::shared_ptr<const viz::Image> GuiApp::pathReferenceFrame(bool forGrid) {
     const viz::scene::Pose start = mAnimation.loopStart(mController.camera(), mScene.lights);
     viz::scene::Pose gridStart = start;
     if (mComparison.isOpen() && !mAnimation.path->movesCamera()) gridStart.camera = mComparison.scene().camera;
-    const glm::ivec2 size{mOptions.width, mOptions.height};
+    const glm::ivec2 size = mState.size;
     const glm::ivec2 gridSize = mComparison.isOpen() ? mComparison.size() : size;
     const viz::Settings settings = givenSettings("reference");
     const auto keyOf = [&](const viz::scene::Pose& from, glm::ivec2 at) {

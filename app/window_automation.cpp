@@ -145,7 +145,7 @@ void GuiApp::writeSidecar(const std::string& path) {
                                       ? nlohmann::json::array({mParamsRect.min.x, mParamsRect.min.y, mParamsRect.max.x,
                                                                mParamsRect.max.y})
                                       : nlohmann::json(nullptr);
-    sidecar["view_grid"] = {{"layout", mLayout.toText()}, {"focused", mFocused},
+    sidecar["view_grid"] = {{"layout", mLayout.toText()}, {"focused", mState.focusedView},
                             {"maximised", mLayout.maximised()},
                             {"cpu_ms_last_frame", mGridMilliseconds},
                             {"ui_cpu_ms_last_frame", mUiMilliseconds},
@@ -164,9 +164,9 @@ ViewSidecarFacts GuiApp::viewSidecarFacts(int id) {
     ViewState& v = mViews.at(id);
     ViewSidecarFacts f;
     f.id = id;
-    f.focused = id == mFocused;
+    f.focused = id == mState.focusedView;
     f.screenSpace = isScreenSpace(v);
-    f.exposure = mExposure;
+    f.exposure = mState.exposure;
     f.linkedPixel = mLinkedPixel;
     if (mLinkedPixel && !f.screenSpace && v.pane.texture != 0) f.markers = markersFor(v);
     return f;

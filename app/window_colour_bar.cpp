@@ -15,7 +15,7 @@ float GuiApp::colourBarHeight(const ViewState& v) const {
 void GuiApp::drawColourBar(int id, ViewState& v) {
     v.colourBar = {};
     if (v.bar.size().y <= 0.0f) return;
-    const DisplayMapping mapping = resolveMapping(v.pane, v.display, mExposure, v.measured);
+    const DisplayMapping mapping = resolveMapping(v.pane, v.display, mState.exposure, v.measured);
     v.colourBar = colourBarFor(v.pane, mapping, v.counts);
     // A mask's count, once per values and mapping (a large image costs milliseconds to count).
     const auto& memo = v.maskMemo;

@@ -47,8 +47,6 @@ constexpr float kExposureStep = 0.5f;  // stops per +/- key press
 constexpr double kOrbitRadiansPerPixel = 0.008;
 constexpr double kLookRadiansPerPixel = 0.004;
 constexpr double kFlySpeed = 0.6;  // target distances per second
-constexpr float kStripSideBySide = 460.0f;  // a view at least this wide has its histogram beside the widgets
-constexpr float kHistogramHeight = 110.0f;
 
 // ---- settings ----
 

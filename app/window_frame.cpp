@@ -52,7 +52,7 @@ void GuiApp::draw() {
     if (mHaveOutput)
         for (int i = 0; i < contentCount(); ++i) views.push_back(contentLabel(i));
     const SidebarLayout side =
-        layoutSidebar(mIds, mCurrent, views, mHaveOutput ? focusedView().shown : -1,
+        layoutSidebar(mIds, currentIndex(), views, mHaveOutput ? focusedView().shown : -1,
                       {top, bottom, pad, line, s, kSidebarMin * s, [this](const std::string& x) { return mFont->measure(x); }});
     const float sidebarWidth = side.panel.max.x;
     mBackground->rect(side.panel, kPanel);
@@ -74,7 +74,7 @@ void GuiApp::draw() {
     const float half = 0.5f * (panes.size().x - pad);
     // As tall as two frame-shaped views side by side need, leaving room for the panels below.
     const float chrome = 3.0f * line + 10.0f * s;
-    const float aspect = float(mOptions.height) / float(std::max(1, mOptions.width));
+    const float aspect = float(mState.size.y) / float(std::max(1, mState.size.x));
     float gridHeight = std::clamp(half * aspect + chrome, 0.5f * panes.size().y, 0.74f * panes.size().y);
     // The ray inspector's plot needs height: the grid gives some up while it is open.
     if (mInspector.active()) gridHeight = std::min(gridHeight, 0.56f * panes.size().y);
@@ -128,7 +128,7 @@ StatusFacts GuiApp::statusFacts(const viz::Timing& timing) const {
     f.scene = sceneTitle();
     f.technique = t.id();
     f.description = t.description();
-    f.renderSize = {mOptions.width, mOptions.height};
+    f.renderSize = mState.size;
     f.haveOutput = mHaveOutput;
     f.reduced = mReduced;
     f.outputSize = mOutputSize;

@@ -5,40 +5,40 @@
 
 namespace airlight {
 
-int GuiApp::stageShown() const { return stageShownBy(technique(), mCursor); }
+int GuiApp::stageShown() const { return stageShownBy(technique(), mState.cursor); }
 
 std::pair<int, int> GuiApp::substepState() const {
-    const SubstepAt pos = substepAt(technique(), mSettings, mCursor, mOutput.substepCounts);
+    const SubstepAt pos = substepAt(technique(), mState.settings, mState.cursor, mOutput.substepCounts);
     return {pos.at, pos.count};
 }
 
 std::string GuiApp::stoppedEarly() const {
-    return airlight::stoppedEarly(technique(), mSettings, mCursor, mOutput.substepCounts);
+    return airlight::stoppedEarly(technique(), mState.settings, mState.cursor, mOutput.substepCounts);
 }
 
 void GuiApp::moveCursor(StepCursor c) {
     c = normalisedCursor(technique(), c);
-    if (c == mCursor) return;
-    mCursor = c;
+    if (c == mState.cursor) return;
+    mState.cursor = c;
     mDirty = true;
 }
 
 void GuiApp::stepStage(int delta) {
-    moveCursor(stageStepped(technique(), mSettings, mCursor, delta));
+    moveCursor(stageStepped(technique(), mState.settings, mState.cursor, delta));
     mNotice.clear();
 }
 
 void GuiApp::stepSubstep(int delta) { setSubstepAt(substepState().first + delta); }
 
 void GuiApp::setSubstepAt(int k) {
-    const SubstepMove move = substepMovedTo(technique(), mSettings, mCursor, mOutput.substepCounts, k);
+    const SubstepMove move = substepMovedTo(technique(), mState.settings, mState.cursor, mOutput.substepCounts, k);
     mNotice = move.notice;
     if (move.notice.empty()) moveCursor(move.cursor);
 }
 
 void GuiApp::drawStepTimeline() {
-    mTimeline = timelineSegments(technique(), mSettings, mTimelineRect.min.x, mTimelineRect.max.x, mOutput.substepCounts);
-    drawTimeline(*mBackground, *mDrawList, mTimelineRect, mTimeline, mCursor, mScale);
+    mTimeline = timelineSegments(technique(), mState.settings, mTimelineRect.min.x, mTimelineRect.max.x, mOutput.substepCounts);
+    drawTimeline(*mBackground, *mDrawList, mTimelineRect, mTimeline, mState.cursor, mScale);
     mCanvas.screen.place("timeline", mTimelineRect);
     mCanvas.hits.push_back({mTimelineRect, [this] {
                          mDragTimeline = true;
@@ -79,8 +79,8 @@ void GuiApp::perform(Command command, int offset) {
     switch (command) {
         case Command::None: case Command::FlyMove: case Command::LessonKey: case Command::Pointer: break;
         case Command::Quit: glfwSetWindowShouldClose(mWindow.handle(), GLFW_TRUE); break;
-        case Command::NextTechnique: selectTechnique(mCurrent + 1); break;
-        case Command::PrevTechnique: selectTechnique(mCurrent - 1); break;
+        case Command::NextTechnique: selectTechnique(currentIndex() + 1); break;
+        case Command::PrevTechnique: selectTechnique(currentIndex() - 1); break;
         case Command::PickTechnique:
             if (offset < int(mIds.size())) selectTechnique(offset);
             break;
@@ -98,11 +98,11 @@ void GuiApp::perform(Command command, int offset) {
         case Command::SplitBeside: splitFocused(SplitAxis::X); break;
         case Command::SplitBelow: splitFocused(SplitAxis::Y); break;
         case Command::CloseView: closeFocused(); break;
-        case Command::Maximise: mLayout.toggleMaximise(mFocused); break;
+        case Command::Maximise: mLayout.toggleMaximise(mState.focusedView); break;
         case Command::SwapNext: swapFocused(1); break;
         case Command::SwapPrev: swapFocused(-1); break;
-        case Command::FocusNext: mFocused = mLayout.next(mFocused, 1); break;
-        case Command::FocusPrev: mFocused = mLayout.next(mFocused, -1); break;
+        case Command::FocusNext: mState.focusedView = mLayout.next(mState.focusedView, 1); break;
+        case Command::FocusPrev: mState.focusedView = mLayout.next(mState.focusedView, -1); break;
         case Command::ToggleDifference: toggleDifference(); break;
         case Command::ToggleGizmo: mShowGizmo = !mShowGizmo; break;
         case Command::InspectPixel: inspectPixelUnderCursor(); break;
@@ -118,14 +118,14 @@ void GuiApp::perform(Command command, int offset) {
             mDirty = true;
             break;
         case Command::AutoExposure:
-            mExposureSet = false;  // auto exposure again on the next frame
+            mState.exposureSet = false;  // auto exposure again on the next frame
             if (!mOutput.final.empty()) {
-                mExposure = std::round(std::log2(autoExposure(mOutput.final)) / kExposureStep) * kExposureStep;
-                mExposureSet = true;
+                mState.exposure = std::round(std::log2(autoExposure(mOutput.final)) / kExposureStep) * kExposureStep;
+                mState.exposureSet = true;
             }
             break;
-        case Command::ExposureUp: mExposure += kExposureStep; break;
-        case Command::ExposureDown: mExposure -= kExposureStep; break;
+        case Command::ExposureUp: mState.exposure += kExposureStep; break;
+        case Command::ExposureDown: mState.exposure -= kExposureStep; break;
         case Command::UiScaleUp: setUiScale(mUiScale * 1.25f); break;
         case Command::UiScaleDown: setUiScale(mUiScale / 1.25f); break;
         case Command::ToggleFullscreen: toggleFullscreen(); break;
@@ -192,13 +192,13 @@ void GuiApp::onMouseButtonAt(int button, int action, glm::vec2 p) {
         if (button == GLFW_MOUSE_BUTTON_LEFT) {
             if (auto handle = gizmoHandleAt(p)) {
                 mGizmoDrag = handle;
-                mFocused = handle->view;
+                mState.focusedView = handle->view;
                 return;
             }
         }
         const int view = ViewLayout::hit(mCells, p);
         if (view >= 0 && mViews.count(view)) {
-            mFocused = view;  // any click in a view focuses it
+            mState.focusedView = view;  // any click in a view focuses it
             const ViewState& v = mViews.at(view);
             if (button == GLFW_MOUSE_BUTTON_LEFT && v.title.contains(p)) {
                 mDragTitle = view;  // dropped on another view: the two swap places
@@ -244,10 +244,10 @@ bool GuiApp::isOrbitView(const ViewState& v) const {
 }
 
 void GuiApp::turnOrbitView(glm::vec2 d) {
-    double yaw = mSettings.at(viz::kOrbitYaw) - 0.4 * double(d.x);
+    double yaw = mState.settings.at(viz::kOrbitYaw) - 0.4 * double(d.x);
     yaw = std::remainder(yaw, 360.0);
-    mSettings[viz::kOrbitYaw] = yaw;
-    mSettings[viz::kOrbitPitch] = std::clamp(mSettings.at(viz::kOrbitPitch) + 0.4 * double(d.y), -89.0, 89.0);
+    mState.settings[viz::kOrbitYaw] = yaw;
+    mState.settings[viz::kOrbitPitch] = std::clamp(mState.settings.at(viz::kOrbitPitch) + 0.4 * double(d.y), -89.0, 89.0);
     mDirty = true;
 }
 
@@ -307,8 +307,8 @@ void GuiApp::onScroll(double dy) {
     if (view >= 0 && mViews.count(view) && isOrbitView(mViews.at(view)) && mViews.at(view).image.contains(mHover)) {
         // An orbit view: the wheel moves its own camera in (mesh_zoom, 1.25x a notch), not the texture.
         const viz::ParamInfo zoom = viz::orbitParams("")[2];
-        mSettings[viz::kOrbitZoom] =
-            std::clamp(mSettings.at(viz::kOrbitZoom) * std::pow(1.25, dy), zoom.minValue, zoom.maxValue);
+        mState.settings[viz::kOrbitZoom] =
+            std::clamp(mState.settings.at(viz::kOrbitZoom) * std::pow(1.25, dy), zoom.minValue, zoom.maxValue);
         mDirty = true;
         return;
     }

@@ -8,31 +8,31 @@ void GuiApp::inspectPixelUnderCursor() {
     mInspector.clear();
     mPendingInspect.reset();
     // The cursor over any screen-space view (final, L_air, a frame-sized intermediate) picks the pixel.
-    if (mHoveredView < 0 || !mViews.count(mHoveredView) || mOptions.width < 1) return;
+    if (mHoveredView < 0 || !mViews.count(mHoveredView) || mState.size.x < 1) return;
     const ViewState& hovered = mViews.at(mHoveredView);
     if (!isScreenSpace(hovered) || !hovered.image.contains(mHover)) return;
     const glm::dvec2 uv = hovered.transform.paneToUv(glm::dvec2((mHover - hovered.image.min) / hovered.image.size()));
-    const int x = std::clamp(int(uv.x * double(mOptions.width)), 0, mOptions.width - 1);
-    const int y = std::clamp(int(uv.y * double(mOptions.height)), 0, mOptions.height - 1);
+    const int x = std::clamp(int(uv.x * double(mState.size.x)), 0, mState.size.x - 1);
+    const int y = std::clamp(int(uv.y * double(mState.size.y)), 0, mState.size.y - 1);
     inspectPixel(x, y);
 }
 
 void GuiApp::inspectPixel(int x, int y) {
     mScene.camera = mController.camera();
     try {
-        mInspector.inspect(mScene, {mOptions.width, mOptions.height}, {x, y}, technique().id(),
+        mInspector.inspect(mScene, mState.size, {x, y}, technique().id(),
                            mHaveOutput ? &mOutput.airlight : nullptr);
     } catch (const std::exception& e) {
         mError = e.what();
         return;
     }
     // The technique's per-ray intermediates (a walk, a voxel column, per-VPL terms) follow the pixel.
-    if (pickPixel(technique(), mSettings, {x, y})) mDirty = true;
+    if (pickPixel(technique(), mState.settings, {x, y})) mDirty = true;
 }
 
 const PixelInspection* GuiApp::inspectedReadings() {
     if (!mInspector.active() || !mHaveOutput || technique().id() != mInspector.technique()) return nullptr;
-    return &mInspector.readings(technique(), mOutput, {mOptions.width, mOptions.height});
+    return &mInspector.readings(technique(), mOutput, mState.size);
 }
 
 }  // namespace airlight

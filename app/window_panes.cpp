@@ -27,8 +27,8 @@ std::string GuiApp::lessonViewCaption(const std::string& id) const {
 }
 
 ViewState& GuiApp::focusedView() {
-    if (!mViews.count(mFocused)) mFocused = mLayout.views().front();
-    return mViews[mFocused];
+    if (!mViews.count(mState.focusedView)) mState.focusedView = mLayout.views().front();
+    return mViews[mState.focusedView];
 }
 
 bool GuiApp::isScreenSpace(const ViewState& v) const {
@@ -219,9 +219,9 @@ void GuiApp::refreshPanes() {
     mInspector.forgetRun();
     // Automatic exposure from the final image, or from L_air while a stopped run has none yet.
     const viz::Image& exposed = mOutput.final.empty() ? mOutput.airlight : mOutput.final;
-    if (mHaveOutput && !mExposureSet && !exposed.empty()) {
-        mExposure = std::round(std::log2(autoExposure(exposed)) / kExposureStep) * kExposureStep;
-        mExposureSet = true;
+    if (mHaveOutput && !mState.exposureSet && !exposed.empty()) {
+        mState.exposure = std::round(std::log2(autoExposure(exposed)) / kExposureStep) * kExposureStep;
+        mState.exposureSet = true;
     }
     for (auto& [id, v] : mViews) refreshView(v);
 }
@@ -253,30 +253,30 @@ void GuiApp::stepLayer(int delta) {
 void GuiApp::splitFocused(SplitAxis axis) {
     mLayout.restore();
     const int id = mNextView++;
-    if (!mLayout.split(mFocused, axis, id)) return;
+    if (!mLayout.split(mState.focusedView, axis, id)) return;
     ViewState& v = mViews[id];
-    const int shown = mViews.at(mFocused).shown;
+    const int shown = mViews.at(mState.focusedView).shown;
     if (mHaveOutput) {
         const int next = (shown < 0 ? 1 : shown + 1) % contentCount();
         v.content = contentId(next);
         v.index = next - 2;
     }
-    mFocused = id;
+    mState.focusedView = id;
     refreshView(v);
 }
 
 void GuiApp::closeFocused() {
-    if (!mLayout.close(mFocused)) {
+    if (!mLayout.close(mState.focusedView)) {
         mNotice = "the last view stays open";
         return;
     }
-    mViews.erase(mFocused);
-    mFocused = mLayout.views().front();
+    mViews.erase(mState.focusedView);
+    mState.focusedView = mLayout.views().front();
 }
 
 void GuiApp::swapFocused(int step) {
     mLayout.restore();
-    mLayout.swap(mFocused, mLayout.next(mFocused, step));
+    mLayout.swap(mState.focusedView, mLayout.next(mState.focusedView, step));
 }
 
 void GuiApp::toggleDifference() {

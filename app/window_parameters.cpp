@@ -22,7 +22,7 @@ void GuiApp::drawParameters(glm::ivec2 fb) {
                                 " (" + lightTypeName(mScene.lights[i].type) + ")");
             int picked = selectedLightIndex();
             if (mUi->combo("light", picked, names)) {
-                mLight = picked;
+                mState.selectedLight = picked;
                 mIntensitySlider.forget();
             }
         }
@@ -48,17 +48,17 @@ void GuiApp::scenePicker() {
         mStiffChoices = {"(none)"};
         for (const auto& c : viz::scene::stiffCases()) mStiffChoices.push_back("stiff/" + c.id);
     }
-    const bool stiff = mOptions.scene.rfind("stiff/", 0) == 0;
+    const bool stiff = mState.scene.rfind("stiff/", 0) == 0;
     std::vector<std::string> scenes = mSceneChoices;
-    if (!stiff && std::find(scenes.begin(), scenes.end(), mOptions.scene) == scenes.end())
-        scenes.push_back(mOptions.scene);
-    int sceneIndex = stiff ? -1 : int(std::find(scenes.begin(), scenes.end(), mOptions.scene) - scenes.begin());
+    if (!stiff && std::find(scenes.begin(), scenes.end(), mState.scene) == scenes.end())
+        scenes.push_back(mState.scene);
+    int sceneIndex = stiff ? -1 : int(std::find(scenes.begin(), scenes.end(), mState.scene) - scenes.begin());
     std::string picked;
     if (mUi->combo("scene", sceneIndex, scenes)) picked = scenes[std::size_t(sceneIndex)];
     mUi->tooltip("the built-in scenes (and a glTF file given with --scene)");
     int stiffIndex = 0;
     if (stiff) {
-        const auto at = std::find(mStiffChoices.begin(), mStiffChoices.end(), mOptions.scene);
+        const auto at = std::find(mStiffChoices.begin(), mStiffChoices.end(), mState.scene);
         stiffIndex = at == mStiffChoices.end() ? 0 : int(at - mStiffChoices.begin());
     }
     if (mUi->combo("stiff case", stiffIndex, mStiffChoices) && stiffIndex > 0)
@@ -67,7 +67,7 @@ void GuiApp::scenePicker() {
     openFileWidgets();
     // Loaded at the start of the next frame: this frame's views (and the comparison grid's tiles) are
     // queued for drawing with the textures the scene change would release.
-    if (!picked.empty() && picked != mOptions.scene) mPendingScene = picked;
+    if (!picked.empty() && picked != mState.scene) mPendingScene = picked;
 }
 
 void GuiApp::openFileWidgets() {
@@ -100,7 +100,7 @@ void GuiApp::openSceneFile(const std::string& path) {
 
 void GuiApp::reloadScene() {
     try {
-        viz::scene::Scene scene = viz::scene::loadScene(mOptions.scene, mOptions.load);
+        viz::scene::Scene scene = viz::scene::loadScene(mState.scene, mOptions.load);
         mScene = std::move(scene);
         mGeometryHash = viz::scene::geometryContentHash(mScene);
     } catch (const std::exception& e) {
@@ -116,8 +116,8 @@ void GuiApp::reloadScene() {
 }
 
 std::string GuiApp::sceneTitle() const {
-    if (!isSceneFile(mOptions.scene)) return mScene.name;
-    const std::filesystem::path file(mOptions.scene);
+    if (!isSceneFile(mState.scene)) return mScene.name;
+    const std::filesystem::path file(mState.scene);
     const std::string title = file.filename().string();
     return mScene.name.empty() || mScene.name == file.stem().string() ? title : title + " (glTF scene " + mScene.name + ")";
 }
@@ -135,22 +135,22 @@ void GuiApp::loadPendingScene() {
 }
 
 void GuiApp::parameterWidgets() {
-    const std::string id = mIds[std::size_t(mCurrent)];
+    const std::string id = mState.technique;
     // The user's change wins over the command line, and is kept across technique switches and saved.
     const auto set = [&](const std::string& name, double value) {
-        mSettings[name] = value;
+        mState.settings[name] = value;
         mSession.settings[id][name] = value;
         mOptions.settings.erase(name);
     };
-    std::string ignored;  // mSettings were validated when they were set
-    if (const auto preset = presetWidget(*mUi, technique(), settingsFor(technique(), mSettings, ignored))) {
+    std::string ignored;  // mState.settings were validated when they were set
+    if (const auto preset = presetWidget(*mUi, technique(), settingsFor(technique(), mState.settings, ignored))) {
         for (const auto& [name, value] : *preset) set(name, value);
         replan();
     }
     for (const viz::ParamInfo& p : technique().params()) {
         // Sub-steps are the stepping cursor's (S, D, the timeline), not settings.
         if (substepStageOf(technique(), p.name) >= 0) continue;
-        double value = mSettings.count(p.name) ? mSettings.at(p.name) : p.defaultValue;
+        double value = mState.settings.count(p.name) ? mState.settings.at(p.name) : p.defaultValue;
         if (parameterWidget(*mUi, p, value)) {
             set(p.name, value);
             replan();

@@ -6,25 +6,18 @@ namespace airlight {
 
 AppState GuiApp::appState() const {
     AppState a;
-    a.scene = mOptions.scene;
-    a.technique = mIds[std::size_t(mCurrent)];
-    a.size = {mOptions.width, mOptions.height};
-    a.settings = mSettings;
+    static_cast<HeldState&>(a) = mState;
+    a.selectedLight = selectedLightIndex();  // kept in range of the scene's lights
     a.defaults = viz::completeSettings(technique(), {});
-    a.cursor = mCursor;
     a.stageShown = stageShown();
-    a.steppedSettings = mSettings;
-    if (mCursor.substep > 0) (void)viz::setSubstep(technique(), a.stageShown, a.steppedSettings, mCursor.substep);
+    a.steppedSettings = mState.settings;
+    if (mState.cursor.substep > 0) (void)viz::setSubstep(technique(), a.stageShown, a.steppedSettings, mState.cursor.substep);
     a.camera = mController.camera();
     a.orbitTarget = mController.target();
     a.flyCamera = mController.mode() == CameraController::Mode::Fly;
     a.medium = mScene.medium;
     a.lights = mScene.lights;
-    a.selectedLight = selectedLightIndex();
-    a.exposure = mExposure;
-    a.exposureSet = mExposureSet;
     a.layout = mLayout.toText();
-    a.focusedView = mFocused;
     a.maximisedView = mLayout.maximised();
     for (int id : mLayout.views()) {
         const ViewState& v = mViews.at(id);
@@ -67,7 +60,7 @@ void GuiApp::loadSessionNow() {
         mNotice = "session loaded from " + mOptions.statePath;
         return;
     }
-    if (!loaded.scene.empty() && loaded.scene != mOptions.scene) {
+    if (!loaded.scene.empty() && loaded.scene != mState.scene) {
         mNotice = "the saved session is for scene '" + loaded.scene + "': restart with --state to switch scenes";
         return;
     }
@@ -82,17 +75,17 @@ void GuiApp::restoreSessionOverStep() {
     if (mSession.medium) mScene.medium = *mSession.medium;
     if (mSession.medium || lights) cpuWorker().setScene(mScene);  // the CPU worker keeps its own copy of the scene
     const auto it = std::find(mIds.begin(), mIds.end(), mSession.technique);
-    selectTechnique(it == mIds.end() ? mCurrent : int(it - mIds.begin()));
+    selectTechnique(it == mIds.end() ? currentIndex() : int(it - mIds.begin()));
     applySessionView();
 }
 
 void GuiApp::loadLessonScene(const std::string& name) {
     viz::scene::Scene scene = viz::scene::loadScene(name, mOptions.load);  // InputError: the window keeps its scene
     mScene = std::move(scene);
-    mOptions.scene = name;
+    mState.scene = name;
     mSceneWatch.watch(name);
     mGeometryHash = viz::scene::geometryContentHash(mScene);
-    mLight = 0;
+    mState.selectedLight = 0;
     mController = CameraController(mScene.camera, orbitDistance(mScene));
     mGizmoArm = kGizmoArm * mController.targetDistance();
     cpuWorker().setScene(mScene);
@@ -119,24 +112,23 @@ void GuiApp::applyLessonWindowState(const LessonWindowState& s) {
     mScene.lights = s.lights;
     if (lighting) cpuWorker().setScene(mScene);  // it keeps its own copy of the scene
     mController.place(s.camera, s.orbitTarget);
-    mOptions.width = s.size.x;
-    mOptions.height = s.size.y;
+    mState.size = s.size;
     const auto it = std::find(mIds.begin(), mIds.end(), s.technique);
     if (it == mIds.end()) throw viz::InputError("unknown technique '" + s.technique + "'");
     selectTechnique(int(it - mIds.begin()));  // also drops the last frame: the step's pixel waits for its own
-    mSettings = s.settings;
+    mState.settings = s.settings;
     mSettingsError.clear();
     const int last = int(technique().stages().size()) - 1;
-    mCursor = {s.stage >= 0 && s.stage < last ? s.stage : -1, 0};
+    mState.cursor = {s.stage >= 0 && s.stage < last ? s.stage : -1, 0};
     // The step's sub-step of the stage it stops in becomes the cursor; a sub-step parameter of an
     // earlier stage stays a setting of the step (the title says the frame is cut short).
-    if (auto c = takeSubsteps(technique(), mSettings, stageShown()); c && c->stage == stageShown())
-        mCursor.substep = c->substep;
+    if (auto c = takeSubsteps(technique(), mState.settings, stageShown()); c && c->stage == stageShown())
+        mState.cursor.substep = c->substep;
     replan();
     layOutLessonViews(s.views.empty() ? std::vector<std::string>{s.view} : s.views);
     mInspector.clear();
     mPendingInspect = s.inspect;
-    mExposureSet = false;
+    mState.exposureSet = false;
     mComparison.close();
 }
 
@@ -154,7 +146,7 @@ void GuiApp::layOutLessonViews(const std::vector<std::string>& views) {
     mViews.clear();
     mViews[0].content = "final";
     for (int i = 0; i < int(std::min<std::size_t>(views.size(), 3)); ++i) mViews[i + 1].content = views[std::size_t(i)];
-    mFocused = 1;
+    mState.focusedView = 1;
     mNextView = int(mViews.size());
     mLessonGrid = true;
     for (auto& [id, v] : mViews) refreshView(v);
@@ -164,7 +156,7 @@ void GuiApp::layOutLessonViews(const std::vector<std::string>& views) {
 void GuiApp::showLessonView(const std::string& id) {
     for (auto& [view, state] : mViews)
         if (state.content == id) {
-            mFocused = view;
+            mState.focusedView = view;
             return;
         }
     showInFocusedView(id);
@@ -181,19 +173,19 @@ void GuiApp::showInFocusedView(const std::string& id) {
 void GuiApp::setLessonSetting(const std::string& name, double value) {
     // A lesson's animation of the shown stage's sub-steps moves the cursor.
     if (substepStageOf(technique(), name) == stageShown()) {
-        viz::Settings probe = mSettings;
+        viz::Settings probe = mState.settings;
         probe[name] = value;
         const viz::SubstepPosition pos = viz::substepPosition(technique(), stageShown(), probe);
         moveCursor({stageShown(), pos.at < pos.count ? pos.at : 0});
         return;
     }
-    if (mSettings.count(name) && mSettings.at(name) == value) return;
-    mSettings[name] = value;
+    if (mState.settings.count(name) && mState.settings.at(name) == value) return;
+    mState.settings[name] = value;
     mDirty = true;
 }
 
 int GuiApp::lessonSubstepCount(int stage) const {
-    return substepCountOf(technique(), stage, mSettings, mOutput.substepCounts);
+    return substepCountOf(technique(), stage, mState.settings, mOutput.substepCounts);
 }
 
 void GuiApp::setLessonLight(const viz::scene::Light& light) {
@@ -207,8 +199,8 @@ void GuiApp::setLessonLight(const viz::scene::Light& light) {
 void GuiApp::applySessionView() {
     if (mSession.camera) mController.place(*mSession.camera, mSession.orbitTarget);
     applySessionGrid();
-    mExposure = mSession.exposure;
-    mExposureSet = mSession.exposureSet;
+    mState.exposure = mSession.exposure;
+    mState.exposureSet = mSession.exposureSet;
     mDirty = true;
 }
 
@@ -227,7 +219,7 @@ void GuiApp::resetLayout(const std::string& content) {
     mViews.clear();
     mViews[0].content = "final";
     mViews[1].content = content.empty() ? "airlight" : content;
-    mFocused = 1;
+    mState.focusedView = 1;
     mNextView = 2;
     mLessonGrid = false;
 }
@@ -264,7 +256,7 @@ void GuiApp::applySessionGrid() {
         }
         mLayout = std::move(layout);
         mViews = std::move(views);
-        mFocused = mLayout.contains(mSession.focusedView) ? mSession.focusedView : mLayout.views().front();
+        mState.focusedView = mLayout.contains(mSession.focusedView) ? mSession.focusedView : mLayout.views().front();
         if (mSession.maximisedView >= 0 && mLayout.contains(mSession.maximisedView))
             mLayout.toggleMaximise(mSession.maximisedView);
         mNextView = 0;

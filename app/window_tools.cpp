@@ -15,7 +15,7 @@ void GuiApp::openComparison(const std::vector<std::string>& ids) {
     viz::scene::Scene scene = mScene;
     scene.camera = mController.camera();
     try {
-        mComparison.open(scene, {mOptions.width, mOptions.height}, ids);
+        mComparison.open(scene, mState.size, ids);
     } catch (const std::exception& e) {
         mError = std::string("comparison: ") + e.what();
         mComparison.close();
@@ -44,7 +44,7 @@ void GuiApp::runComparisonTechniques() { mComparison.runTechniques(comparisonRun
 
 std::string GuiApp::exportStem(const std::string& what) {
     // A file's scene is named by the file (the glTF's own scene name may be another scene's).
-    const std::string scene = isSceneFile(mOptions.scene) ? std::filesystem::path(mOptions.scene).stem().string() : mScene.name;
+    const std::string scene = isSceneFile(mState.scene) ? std::filesystem::path(mState.scene).stem().string() : mScene.name;
     std::string name = scene + "-" + technique().id() + "-" + what;
     for (char& c : name)
         if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_' && c != '.') c = '_';
@@ -60,7 +60,7 @@ bool GuiApp::focusedViewImage(viz::Image& image, float& exposure) {
     if (v.values.empty()) readBackValues(v);
     if (v.values.empty()) return false;
     const viz::Image& values = v.values;
-    const DisplayMapping m = resolveMapping(v.pane, v.display, mExposure, v.measured);
+    const DisplayMapping m = resolveMapping(v.pane, v.display, mState.exposure, v.measured);
     const bool colour = m.mode == DisplayMode::HdrColour || m.mode == DisplayMode::RangeColour;
     image = colour ? values : viz::toDisplay(values, m.lo, m.hi);
     exposure = colour ? std::exp2(m.exposure) : 1.0f;

@@ -9,7 +9,7 @@
 namespace airlight {
 
 Rect GuiApp::fitImage(const Rect& area, glm::ivec2 imageSize) const {
-    if (imageSize.x <= 0 || imageSize.y <= 0) imageSize = {mOptions.width, mOptions.height};
+    if (imageSize.x <= 0 || imageSize.y <= 0) imageSize = mState.size;
     return fitImageRect(area, imageSize);
 }
 
@@ -65,14 +65,9 @@ void GuiApp::layoutCell(ViewState& v, const Rect& cell) {
     v.title = {cell.min, {cell.max.x, cell.min.y + 2.0f * line + 4.0f * s}};
     const float readout = line + 6.0f * s;
     float stripHeight = 0.0f;
-    if (v.display.stripOpen) {
-        const float rows = (v.display.range == RangeMode::Manual ? 8.0f : 6.0f) +
-                           (v.display.difference != DifferenceMode::Off ? 1.0f : 0.0f);
-        float wanted = rows * (mUi->rowHeight() + 4.0f * s) + 8.0f * s;
-        // A narrow view stacks the histogram under the widgets instead of beside them.
-        if (cell.size().x < kStripSideBySide * s) wanted += kHistogramHeight * s;
-        stripHeight = std::min(wanted, 0.6f * (cell.size().y - v.title.size().y - readout));
-    }
+    if (v.display.stripOpen)
+        stripHeight = std::min(displayStripHeight(v.display, cell.size().x, mUi->rowHeight(), s),
+                               0.6f * (cell.size().y - v.title.size().y - readout));
     // The colour bar goes under the image when the cell leaves the image most of its height.
     float barHeight = colourBarHeight(v);
     if (barHeight > 0.25f * (cell.size().y - v.title.size().y - readout - stripHeight)) barHeight = 0.0f;
@@ -143,7 +138,7 @@ ViewTitleFacts GuiApp::viewTitleFacts() const {
     f.haveOutput = mHaveOutput;
     f.gpuTechnique = technique().needsGl();
     f.contentCount = contentCount();
-    f.exposure = mExposure;
+    f.exposure = mState.exposure;
     f.stages = &technique().stages();
     f.temporalChange = mAnimation.temporal.describe();
     f.temporalErrorChange = mAnimation.temporal.describeError();
@@ -157,7 +152,7 @@ ViewTitleFacts GuiApp::viewTitleFacts() const {
 void GuiApp::drawView(int id, ViewState& v, const ViewTitleFacts& facts) {
     DrawList& dl = *mDrawList;
     const float line = mFont->lineHeight(), s = mScale;
-    const bool focused = id == mFocused;
+    const bool focused = id == mState.focusedView;
     const auto [title, note] = viewTitle(v, facts);
     // Title bar: highlighted when focused (keys and the views list act on it); drag it onto another
     // view to swap the two.
@@ -173,7 +168,7 @@ void GuiApp::drawView(int id, ViewState& v, const ViewTitleFacts& facts) {
     const SpecialCounts& n = v.counts;
     // Negative values are a warning where the view would mark them (radiance, or asked for): in data such
     // as a plane's signed distance they are values, as the legend under the image treats them.
-    const int negative = resolveMapping(v.pane, v.display, mExposure, v.measured).markNegative ? n.negative : 0;
+    const int negative = resolveMapping(v.pane, v.display, mState.exposure, v.measured).markNegative ? n.negative : 0;
     std::string counts;
     if (n.nan + n.inf + negative > 0) {
         counts = " ";
@@ -203,7 +198,7 @@ void GuiApp::drawView(int id, ViewState& v, const ViewTitleFacts& facts) {
     listItem(toggleRect, toggle, v.display.stripOpen, [this, id] {
         ViewState& w = mViews.at(id);
         w.display.stripOpen = !w.display.stripOpen;
-        mFocused = id;
+        mState.focusedView = id;
     });
     mCanvas.screen.place("strip:" + std::to_string(id), toggleRect);
     mCanvas.screen.place("title:" + std::to_string(id), v.title);
@@ -221,7 +216,7 @@ void GuiApp::drawView(int id, ViewState& v, const ViewTitleFacts& facts) {
         if (v.display.stripOpen && v.strip.size().y > 0.0f) drawStrip(id, v);
         return;
     }
-    mCanvas.panes.push_back({v.image, &v.pane, &v.transform, resolveMapping(v.pane, v.display, mExposure, v.measured)});
+    mCanvas.panes.push_back({v.image, &v.pane, &v.transform, resolveMapping(v.pane, v.display, mState.exposure, v.measured)});
     mCanvas.screen.placeView({mHaveOutput ? (v.pane.id.empty() ? v.content : v.pane.id) : std::string("none"),
                        title + early + counts, v.image, id});
     if (!v.pane.unavailable.empty())
@@ -241,7 +236,7 @@ void GuiApp::drawView(int id, ViewState& v, const ViewTitleFacts& facts) {
         drawCrosshair(dl, v.image.min + glm::vec2(v.transform.uvToPane(uv)) * v.image.size(), v.image, mScale);
     }
     if (mLinkedPixel && !isScreenSpace(v) && v.pane.texture != 0) drawViewMarkers(dl, *mFont, mScale, v, markersFor(v));
-    if (isScreenSpace(v)) mInspector.mark(dl, v.image, v.transform, {mOptions.width, mOptions.height}, mScale);
+    if (isScreenSpace(v)) mInspector.mark(dl, v.image, v.transform, mState.size, mScale);
     drawGizmo(dl, id, v);
 
     drawColourBar(id, v);
@@ -301,65 +296,15 @@ void GuiApp::drawStatusBands(DrawList& dl, const Rect& image) {
 }
 
 void GuiApp::drawStrip(int id, ViewState& v) {
-    const float s = mScale;
-    const Rect& strip = v.strip;
-    Rect widgets = strip, plot = strip;
-    if (strip.size().x >= kStripSideBySide * s) {
-        const float split = strip.min.x + std::max(0.5f * strip.size().x, std::min(0.62f * strip.size().x, 360.0f * s));
-        widgets.max.x = split - 2.0f * s;
-        plot.min.x = split + 2.0f * s;
-    } else {
-        const float h = std::min(kHistogramHeight * s, 0.45f * strip.size().y);
-        widgets.max.y = strip.max.y - h - 2.0f * s;
-        plot.min.y = strip.max.y - h;
-    }
-    mStripRects.push_back(widgets);
+    const StripAreas areas = splitDisplayStrip(v.strip, mScale);
+    mStripRects.push_back(areas.widgets);
     const std::string tag = "##v" + std::to_string(id);
-    DisplaySettings& d = v.display;
-    const DisplaySettings before = d;
-    mUi->beginPanel(tag, widgets);
-    int channel = int(d.channel), range = int(d.range), map = int(d.colourMap), difference = int(d.difference);
-    if (mUi->combo("channel" + tag, channel, channelChoices(v.pane))) d.channel = Channel(channel);
-    if (mUi->combo("range" + tag, range, rangeModeNames())) {
-        if (RangeMode(range) == RangeMode::Manual) {
-            // Manual starts from what is shown now.
-            const DisplayMapping m = resolveMapping(v.pane, d, mExposure, v.measured);
-            d.manualMin = m.lo;
-            d.manualMax = m.hi;
-        }
-        d.range = RangeMode(range);
-    }
-    if (d.range == RangeMode::Manual) {
-        const float span = v.finite.valid ? std::max(v.finite.hi - v.finite.lo, 1e-6f) : 1.0f;
-        mUi->dragFloat("min" + tag, d.manualMin, 0.004f * span, -1e30f, 1e30f);
-        mUi->dragFloat("max" + tag, d.manualMax, 0.004f * span, -1e30f, 1e30f);
-    }
-    mUi->checkbox("log scale" + tag, d.logScale);
-    if (mUi->combo("colour map" + tag, map, colourMapNames())) d.colourMap = ColourMap(map);
-    bool negative = resolveMapping(v.pane, d, mExposure, v.measured).markNegative;
-    if (mUi->checkbox("mark negative (green)" + tag, negative)) d.markNegative = negative ? 1 : 0;
-    mUi->tooltip("NaN shows magenta and Inf cyan always; negative values green unless the map is diverging");
-    const bool frameImage = v.content == "final" || v.content == "airlight";
-    if (frameImage && mUi->combo("difference" + tag, difference, differenceModeNames()))
-        d.difference = DifferenceMode(difference);
-    if (frameImage && d.difference != DifferenceMode::Off) {
-        int against = int(std::find(mIds.begin(), mIds.end(), d.against) - mIds.begin());
-        if (against >= int(mIds.size())) against = 0;
-        if (mUi->combo("against" + tag, against, mIds)) d.against = mIds[std::size_t(against)];
-    }
+    mUi->beginPanel(tag, areas.widgets);
+    const StripChange change = displayStripWidgets(*mUi, v, mState.exposure, mIds, tag);
     mUi->endPanel();
-    if (d.difference != before.difference || d.against != before.against) {
-        refreshView(v);
-    } else if (d.channel != before.channel || d.range != before.range || d.logScale != before.logScale) {
-        updateStatistics(v);
-    }
-    drawHistogram(v, plot);
-}
-
-void GuiApp::drawHistogram(const ViewState& v, const Rect& area) {
-    if (area.size().x < 80.0f * mScale || area.size().y < 4.0f * mFont->lineHeight()) return;
-    const DisplayMapping shown = resolveMapping(v.pane, v.display, mExposure, v.measured);
-    viz::plot::drawPlot(*mDrawList, area, histogramPlot(v.histogram, !v.values.empty(), shown));
+    if (change == StripChange::Difference) refreshView(v);
+    else if (change == StripChange::Statistics) updateStatistics(v);
+    drawStripHistogram(*mDrawList, v, mState.exposure, areas.histogram, mScale, mFont->lineHeight());
 }
 
 }  // namespace airlight
