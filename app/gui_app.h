@@ -345,14 +345,8 @@ private:
     // A clickable list entry: highlighted when selected, lighter under the cursor.
     void listItem(const Rect& r, const std::string& text, bool selected, std::function<void()> onClick);
 
-    // The texel of `pane` under a window point, through the view's pan and zoom; row 0 is the row shown
-    // at the top (the image convention: for a frame-sized view, the frame's pixel).
-    static glm::ivec2 texelAt(const PaneImage& pane, const Rect& image, const viz::ui::ImageViewTransform& view,
-                              glm::vec2 p);
-
-    // Zoomed in until a texel is large enough to hold its value: write the value in every visible texel
-    // (one read of the visible block per frame).
-    void texelValues(const PaneImage& pane, const Rect& image, const viz::ui::ImageViewTransform& view);
+    // Zoomed in until a texel holds its value: the value written in every visible texel (texel_labels.h).
+    void texelValues(const ViewState& v);
 
     // ---- the view grid: drawing ----
 

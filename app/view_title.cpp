@@ -5,6 +5,7 @@
 
 #include "core/text.h"
 #include "temporal_monitor.h"
+#include "text_fit.h"
 
 namespace airlight {
 
@@ -57,6 +58,35 @@ std::pair<std::string, std::string> viewTitle(const ViewState& v, const ViewTitl
     }
     if (v.transform.zoom > 1.0) note = viz::format("zoom %.0fx (wheel; drag to pan; 0 fits)   ", v.transform.zoom) + note;
     return {title, note};
+}
+
+TitleWarnings titleWarnings(const ViewState& v, const std::string& stoppedEarly, float exposure) {
+    TitleWarnings w;
+    if (!stoppedEarly.empty()) w.early = "   [" + stoppedEarly + "]";
+    if (!v.standIn.empty()) w.early += "   [" + v.standIn + "]";
+    const SpecialCounts& n = v.counts;
+    const int negative = resolveMapping(v.pane, v.display, exposure, v.measured).markNegative ? n.negative : 0;
+    if (n.nan + n.inf + negative > 0) {
+        w.counts = " ";
+        if (negative) w.counts += " " + std::to_string(negative) + " negative";
+        if (n.nan) w.counts += " " + std::to_string(n.nan) + " NaN";
+        if (n.inf) w.counts += " " + std::to_string(n.inf) + " Inf";
+        w.counts += " px";
+    }
+    return w;
+}
+
+FittedTitle fitTitleBar(const viz::ui::FontAtlas& font, const std::string& title, const TitleWarnings& warnings,
+                        const std::string& note, float width, float noteWidth) {
+    FittedTitle f;
+    const float warningWidth = font.measure(warnings.early + warnings.counts);
+    f.title = elideMiddle(font, title, std::max(0.35f * width, width - warningWidth));
+    const float rest = width - font.measure(f.title);
+    f.early = elideMiddle(font, warnings.early, std::max(0.0f, rest - font.measure(warnings.counts)));
+    f.note = elideMiddle(font, note, noteWidth);
+    f.titleElided = f.title != title || f.early != warnings.early;
+    f.noteElided = f.note != note;
+    return f;
 }
 
 }  // namespace airlight

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "debug/technique.h"
+#include "ui/font.h"
 #include "view_state.h"
 
 namespace airlight {
@@ -29,5 +30,24 @@ struct ViewTitleFacts {
 
 // {title, note}.
 std::pair<std::string, std::string> viewTitle(const ViewState& v, const ViewTitleFacts& facts);
+
+// What the title bar warns of after the title, in the warning colour. `early`: where the run stopped
+// short of the complete algorithm ("   [stopped after ...]", from `stoppedEarly`, empty for a complete
+// frame) and what the view shows in the chosen content's stead. `counts`: its negative pixels (only
+// where its mapping marks them: in a signed quantity they are values), NaN and Inf pixels.
+struct TitleWarnings {
+    std::string early, counts;
+};
+TitleWarnings titleWarnings(const ViewState& v, const std::string& stoppedEarly, float exposure);
+
+// The title bar's lines fitted to their widths (`width` for the first line up to the display toggle,
+// `noteWidth` for the note): the warnings keep their room first (the title keeps at least 35 % of the
+// line), then each part is shortened in the middle. The counts are always shown whole.
+struct FittedTitle {
+    std::string title, early, note;
+    bool titleElided = false, noteElided = false;
+};
+FittedTitle fitTitleBar(const viz::ui::FontAtlas& font, const std::string& title, const TitleWarnings& warnings,
+                        const std::string& note, float width, float noteWidth);
 
 }  // namespace airlight

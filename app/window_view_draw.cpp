@@ -2,6 +2,7 @@
 // histogram, and the dividers between views.
 #include "gui_app.h"
 #include "progress_band.h"
+#include "texel_labels.h"
 #include "view_histogram.h"
 #include "view_title.h"
 #include "view_markers.h"
@@ -21,42 +22,31 @@ void GuiApp::listItem(const Rect& r, const std::string& text, bool selected, std
     mCanvas.hits.push_back({r, std::move(onClick)});
 }
 
-glm::ivec2 GuiApp::texelAt(const PaneImage& pane, const Rect& image, const viz::ui::ImageViewTransform& view,
-                          glm::vec2 p) {
-    const glm::dvec2 uv = view.paneToUv(glm::dvec2((p - image.min) / image.size()));
-    return glm::clamp(glm::ivec2(glm::floor(uv * glm::dvec2(pane.size))), glm::ivec2(0), pane.size - 1);
-}
-
-void GuiApp::texelValues(const PaneImage& pane, const Rect& image, const viz::ui::ImageViewTransform& view) {
-    const float cell = float(view.texelPixels(image.size().x, std::max(1, pane.size.x)));
+void GuiApp::texelValues(const ViewState& v) {
+    const PaneImage& pane = v.pane;
+    const std::optional<TexelBlock> block = labelledTexels(pane.size, v.image, v.transform, mFont->lineHeight());
+    if (!block) return;
+    // From the view's CPU copy (what its readout and statistics use); while there is none (during an
+    // interaction), a read of the visible block. GL rows: flipped textures keep row 0 at the bottom.
+    const glm::ivec2 count = block->count();
+    std::vector<glm::vec4> read;
+    if (v.values.width != pane.size.x || v.values.height != pane.size.y) {
+        read.resize(std::size_t(count.x * count.y));
+        const int glRow0 = pane.flipY ? pane.size.y - 1 - block->hi.y : block->lo.y;
+        glGetTextureSubImage(pane.texture, 0, block->lo.x, glRow0, 0, count.x, count.y, 1, GL_RGBA, GL_FLOAT,
+                             GLsizei(read.size() * sizeof(glm::vec4)), read.data());
+    }
+    const auto value = [&](int x, int y) {
+        glm::vec4 out(0.0f);
+        if (read.empty()) (void)valueAt(v, {x, y}, out);
+        else out = read[std::size_t((pane.flipY ? block->hi.y - y : y - block->lo.y) * count.x + (x - block->lo.x))];
+        return out;
+    };
     const float line = mFont->lineHeight();
-    if (cell < 4.2f * line || pane.size.x < 1 || pane.size.y < 1) return;
-    const glm::ivec2 lo = texelAt(pane, image, view, image.min), hi = texelAt(pane, image, view, image.max - 1.0f);
-    const glm::ivec2 count = hi - lo + 1;
-    if (count.x * count.y > 4096) return;
-    std::vector<glm::vec4> values(std::size_t(count.x * count.y));
-    // GL rows: flipped textures keep row 0 at the bottom.
-    const int glRow0 = pane.flipY ? pane.size.y - 1 - hi.y : lo.y;
-    glGetTextureSubImage(pane.texture, 0, lo.x, glRow0, 0, count.x, count.y, 1, GL_RGBA, GL_FLOAT,
-                         GLsizei(values.size() * sizeof(glm::vec4)), values.data());
-    const int channels = std::clamp(pane.channels, 1, 3);
-    const bool allChannels = cell >= float(channels) * line + 4.0f * mScale;
-    for (int ty = lo.y; ty <= hi.y; ++ty)
-        for (int tx = lo.x; tx <= hi.x; ++tx) {
-            const int row = pane.flipY ? hi.y - ty : ty - lo.y;
-            const glm::vec4 v = values[std::size_t(row * count.x + (tx - lo.x))];
-            const glm::vec2 corner = image.min + glm::vec2(view.uvToPane(glm::dvec2(tx, ty) / glm::dvec2(pane.size))) * image.size();
-            // The part of the texel inside the view holds the text.
-            const glm::vec2 shownMin = glm::max(corner, image.min), shownMax = glm::min(corner + cell, image.max);
-            if (shownMax.x - shownMin.x < 3.0f * line || shownMax.y - shownMin.y < line + 4.0f * mScale) continue;
-            for (int c = 0; c < (allChannels ? channels : 1); ++c) {
-                const glm::vec2 at = shownMin + glm::vec2(3.0f * mScale, 2.0f * mScale + float(c) * line);
-                if (at.y + line > shownMax.y) break;
-                const std::string text = format("%.3g", v[c]);
-                mDrawList->rect({at - 1.0f, at + glm::vec2(mFont->measure(text) + 1.0f, line)}, {0.0f, 0.0f, 0.0f, 0.55f});
-                mDrawList->textClipped(at, text, kText, shownMax.x - 2.0f);
-            }
-        }
+    for (const TexelLabel& l : texelLabels(*block, pane.size, v.image, v.transform, pane.channels, value, *mFont, mScale)) {
+        mDrawList->rect({l.at - 1.0f, l.at + glm::vec2(mFont->measure(l.text) + 1.0f, line)}, {0.0f, 0.0f, 0.0f, 0.55f});
+        mDrawList->textClipped(l.at, l.text, kText, l.clipX);
+    }
 }
 
 void GuiApp::layoutCell(ViewState& v, const Rect& cell) {
@@ -115,7 +105,7 @@ void GuiApp::drawViewGrid(const Rect& area) {
     mLinkedPixel.reset();
     if (mHoveredView >= 0) {
         const ViewState& h = mViews.at(mHoveredView);
-        if (isScreenSpace(h) && h.image.contains(mHover)) mLinkedPixel = texelAt(h.pane, h.image, h.transform, mHover);
+        if (isScreenSpace(h) && h.image.contains(mHover)) mLinkedPixel = texelUnder(h.pane.size, h.image, h.transform, mHover);
     }
     // Camera drags are scaled by the tallest frame-shaped view (the last one when none is shown).
     float frameHeight = 0.0f;
@@ -161,36 +151,21 @@ void GuiApp::drawView(int id, ViewState& v, const ViewTitleFacts& facts) {
     const float toggleWidth = mFont->measure(toggle) + 16.0f * s;
     const Rect toggleRect{{v.title.max.x - toggleWidth, v.title.min.y + 1.0f * s},
                           {v.title.max.x - 2.0f * s, v.title.min.y + line + 2.0f * s}};
-    // Not the complete algorithm: every view says where the run stopped, in the warning colour.
-    const std::string why = mHaveOutput ? stoppedEarly() : std::string();
-    std::string early = why.empty() ? why : "   [" + why + "]";
-    if (!v.standIn.empty()) early += "   [" + v.standIn + "]";
-    const SpecialCounts& n = v.counts;
-    // Negative values are a warning where the view would mark them (radiance, or asked for): in data such
-    // as a plane's signed distance they are values, as the legend under the image treats them.
-    const int negative = resolveMapping(v.pane, v.display, mState.exposure, v.measured).markNegative ? n.negative : 0;
-    std::string counts;
-    if (n.nan + n.inf + negative > 0) {
-        counts = " ";
-        if (negative) counts += " " + std::to_string(negative) + " negative";
-        if (n.nan) counts += " " + std::to_string(n.nan) + " NaN";
-        if (n.inf) counts += " " + std::to_string(n.inf) + " Inf";
-        counts += " px";
-    }
-    // Too long for the bar (a small view, a large UI scale): each part shortened in the middle, the
-    // warnings first kept whole, and the full text shown while the title is hovered.
-    const float left = v.title.min.x + 4.0f * s, width = toggleRect.min.x - 4.0f * s - left;
-    const float warnings = mFont->measure(early + counts);
-    const std::string shownTitle = elideMiddle(*mFont, title, std::max(0.35f * width, width - warnings));
-    const float rest = width - mFont->measure(shownTitle);
-    const std::string shownEarly = elideMiddle(*mFont, early, std::max(0.0f, rest - mFont->measure(counts)));
-    const std::string shownNote = elideMiddle(*mFont, note, v.title.max.x - 4.0f * s - left);
-    float x = dl.textClipped({left, v.title.min.y + 2.0f * s}, shownTitle, kAccent, toggleRect.min.x - 4.0f * s);
-    if (!shownEarly.empty()) x = dl.textClipped({x, v.title.min.y + 2.0f * s}, shownEarly, kError, toggleRect.min.x - 4.0f * s);
+    // Not the complete algorithm: every view says where the run stopped, in the warning colour; then its
+    // negative, NaN and Inf pixels. Too long for the bar (a small view, a large UI scale): each part
+    // shortened in the middle, the warnings first kept whole, the full text shown while the title is hovered.
+    const TitleWarnings warn = titleWarnings(v, mHaveOutput ? stoppedEarly() : std::string(), mState.exposure);
+    const std::string& early = warn.early;
+    const std::string& counts = warn.counts;
+    const float left = v.title.min.x + 4.0f * s;
+    const FittedTitle fit = fitTitleBar(*mFont, title, warn, note, toggleRect.min.x - 4.0f * s - left,
+                                        v.title.max.x - 4.0f * s - left);
+    float x = dl.textClipped({left, v.title.min.y + 2.0f * s}, fit.title, kAccent, toggleRect.min.x - 4.0f * s);
+    if (!fit.early.empty()) x = dl.textClipped({x, v.title.min.y + 2.0f * s}, fit.early, kError, toggleRect.min.x - 4.0f * s);
     if (!counts.empty()) dl.textClipped({x, v.title.min.y + 2.0f * s}, counts, kError, toggleRect.min.x - 4.0f * s);
-    dl.textClipped({left, v.title.min.y + 2.0f * s + line}, shownNote, kDim, v.title.max.x - 4.0f * s);
-    v.titleElided = shownTitle != title || shownEarly != early;
-    v.noteElided = shownNote != note;
+    dl.textClipped({left, v.title.min.y + 2.0f * s + line}, fit.note, kDim, v.title.max.x - 4.0f * s);
+    v.titleElided = fit.titleElided;
+    v.noteElided = fit.noteElided;
     const bool elided = v.titleElided || v.noteElided;
     if (elided && v.title.contains(mHover) && !toggleRect.contains(mHover))
         mUi->tooltipNow({title + early + counts, note});
@@ -221,13 +196,13 @@ void GuiApp::drawView(int id, ViewState& v, const ViewTitleFacts& facts) {
                        title + early + counts, v.image, id});
     if (!v.pane.unavailable.empty())
         dl.textClipped({v.image.min.x + 8.0f * s, v.image.min.y + 8.0f * s}, v.pane.unavailable, kDim, v.image.max.x);
-    if (v.pane.texture != 0) texelValues(v.pane, v.image, v.transform);
+    if (v.pane.texture != 0) texelValues(v);
 
     // Linked cursors: the hovered frame pixel in every other screen-space view; what the technique
     // can map of it in algorithm-space views (the epipolar row in minmax's rectified map, ...).
     std::optional<glm::ivec2> readAt;
     if (v.pane.texture != 0 && id == mHoveredView && v.image.contains(mHover))
-        readAt = texelAt(v.pane, v.image, v.transform, mHover);
+        readAt = texelUnder(v.pane.size, v.image, v.transform, mHover);
     if (mLinkedPixel && isScreenSpace(v)) {
         // The hovered view marks its own pixel too (the cross leaves the pixel's centre free), so
         // that screenshots and a projector show which pixel the others follow.

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 
+#include "cpu/ui/synthetic_panel.h"
 #include "temporal_monitor.h"
 #include "view_title.h"
 
@@ -98,6 +99,64 @@ TEST_F(ViewTitleTest, TemporalViewsLeadWithTheirScoreAndThePathsReferenceFrames)
     facts.referenceReady = 6;
     EXPECT_EQ(viewTitle(v, facts).first, "Error change per frame: temporal RMS 0.012 over 5 pairs   [5/9]")
         << "every frame in: no count";
+}
+
+// The title bar's warnings: where the run stopped and what stands in, then negative pixels only where the
+// view's mapping marks them (radiance, not a signed quantity), NaN and Inf.
+TEST_F(ViewTitleTest, TheWarningsSayWhereTheRunStoppedAndCountOnlyWhatTheMappingMarks) {
+    ViewState v = view("airlight", "Airlight L_air", 1);
+    v.pane.mode = DisplayMode::HdrColour;
+    EXPECT_EQ(titleWarnings(v, "", 0.0f).early, "");
+    EXPECT_EQ(titleWarnings(v, "", 0.0f).counts, "") << "nothing to warn of";
+    v.standIn = "shows L_air: this run makes no plane view";
+    v.counts.negative = 5;
+    v.counts.nan = 2;
+    const TitleWarnings w = titleWarnings(v, "stopped after stage 2 of 5", 0.0f);
+    EXPECT_EQ(w.early, "   [stopped after stage 2 of 5]   [shows L_air: this run makes no plane view]");
+    EXPECT_EQ(w.counts, "  5 negative 2 NaN px");
+    v.counts.inf = 1;
+    v.counts.nan = 0;
+    v.display.markNegative = 0;  // the user turned the marking off: negatives are not warned of
+    EXPECT_EQ(titleWarnings(v, "", 0.0f).counts, "  1 Inf px");
+    ViewState d = view("polyvol.signed_total", "Signed total", 9);
+    d.pane.mode = DisplayMode::Signed;
+    d.counts.negative = 400;
+    EXPECT_EQ(titleWarnings(d, "", 0.0f).counts, "") << "negative values of a signed quantity are values";
+}
+
+// Fitted to its width: whole when it fits; when not, the warnings keep their room (the title at least
+// 35 % of the line) and the whole line stays inside the width.
+TEST_F(ViewTitleTest, ATitleTooLongForItsBarIsShortenedBeforeItsWarnings) {
+    const viz::ui::FontAtlas& font = viz::ui::testing::testFont();
+    const std::string title = "Rectified shadow map, picked slice   [6/19]  minmax.rectified (stage minmax.rectify)";
+    const std::string note = "depth along each epipolar slice, light space, scene units 0 .. 40";
+    const TitleWarnings warn{"   [stopped after stage 3 of 6]", "  12 NaN px"};
+    const float all = font.measure(title + warn.early + warn.counts);
+    const FittedTitle whole = fitTitleBar(font, title, warn, note, all + 1.0f, font.measure(note) + 1.0f);
+    EXPECT_EQ(whole.title, title);
+    EXPECT_EQ(whole.early, warn.early);
+    EXPECT_EQ(whole.note, note);
+    EXPECT_FALSE(whole.titleElided || whole.noteElided);
+
+    const float width = 0.6f * all;
+    const FittedTitle fit = fitTitleBar(font, title, warn, note, width, 0.5f * font.measure(note));
+    EXPECT_TRUE(fit.titleElided);
+    EXPECT_TRUE(fit.noteElided);
+    EXPECT_EQ(fit.early, warn.early) << "the warning is kept whole while the title can give way";
+    EXPECT_NE(fit.title, title);
+    EXPECT_NE(fit.title.find(" ... "), std::string::npos);
+    EXPECT_EQ(fit.title.substr(0, 10), title.substr(0, 10));  // shortened in the middle: both ends kept
+    EXPECT_EQ(fit.title.substr(fit.title.size() - 8), title.substr(title.size() - 8));
+    EXPECT_LE(font.measure(fit.title + fit.early + warn.counts), width);
+    EXPECT_LE(font.measure(fit.note), 0.5f * font.measure(note));
+
+    // So narrow that the warnings alone would not fit: the title keeps 35 % of the line, the warning gives way.
+    const float narrow = font.measure(warn.early + warn.counts);
+    const FittedTitle tight = fitTitleBar(font, title, warn, note, narrow, 100.0f);
+    EXPECT_GE(font.measure(tight.title), 0.2f * narrow);
+    EXPECT_LE(font.measure(tight.title), 0.35f * narrow);
+    EXPECT_NE(tight.early, warn.early);
+    EXPECT_LE(font.measure(tight.title + tight.early + warn.counts), narrow + 1.0f);
 }
 
 }  // namespace
