@@ -108,7 +108,7 @@ GuiApp::~GuiApp() {
     for (GLFWcursor* cursor : {mColumnCursor, mRowCursor})
         if (cursor) glfwDestroyCursor(cursor);
     // Panes may borrow the techniques' textures: drop them first.
-    mViews.clear();
+    mGrid.views.clear();
     mComparison.close();
     mOutput = {};
     mRuns.clear();

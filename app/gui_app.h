@@ -64,6 +64,7 @@
 #include "sidecar_json.h"
 #include "image_fit.h"
 #include "light_gizmo.h"
+#include "view_grid.h"
 #include "view_layout.h"
 #include "view_state.h"
 #include "view_title.h"
@@ -488,10 +489,7 @@ private:
     glm::ivec2 mOutputSize{0};
     int mPass = 0, mPassCount = 1;
     // ---- the view grid ----
-    ViewLayout mLayout{0};
-    std::map<int, ViewState> mViews;  // by the layout's view number
-    int mNextView = 2;
-    bool mLessonGrid = false;         // the grid is a lesson step's layout of several views
+    ViewGrid mGrid;  // the layout and its views (view_grid.h); the focus is mState.focusedView
     std::vector<ViewCellRect> mCells;        // where the last frame put each view
     std::optional<glm::ivec2> mLinkedPixel;  // frame pixel under the cursor (a screen-space view)
     int mHoveredView = -1;

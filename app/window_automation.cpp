@@ -74,7 +74,7 @@ void GuiApp::writeSidecar(const std::string& path) {
     for (const auto& v : mCanvas.screen.views()) {
         nlohmann::json entry = {{"name", v.name}, {"title", v.title},
                                 {"rect", {v.rect.min.x, v.rect.min.y, v.rect.max.x, v.rect.max.y}}};
-        if (v.cell >= 0 && mViews.count(v.cell)) entry.update(viewSidecar(mViews.at(v.cell), viewSidecarFacts(v.cell)));
+        if (v.cell >= 0 && mGrid.views.count(v.cell)) entry.update(viewSidecar(mGrid.views.at(v.cell), viewSidecarFacts(v.cell)));
         views.push_back(entry);
     }
     nlohmann::json sidecar = {{"window", {fb.x, fb.y}},
@@ -102,7 +102,7 @@ void GuiApp::writeSidecar(const std::string& path) {
     // The light gizmo in the first view that shows it: its handles in that view's frame pixels.
     sidecar["gizmo"] = nullptr;
     for (const ViewCellRect& c : mCells) {
-        const auto gizmo = gizmoFor(mViews.at(c.view));
+        const auto gizmo = gizmoFor(mGrid.views.at(c.view));
         if (!gizmo) continue;
         const GizmoHandles h = gizmo->handles(selectedLight());
         const auto point = [](const std::optional<glm::dvec2>& p) {
@@ -112,7 +112,7 @@ void GuiApp::writeSidecar(const std::string& path) {
         const auto grab = [&](const std::optional<glm::dvec2>& p) {
             bool inside = true;
             if (!p) return nlohmann::json(nullptr);
-            const glm::vec2 w = handlePoint(mViews.at(c.view), *p, inside);
+            const glm::vec2 w = handlePoint(mGrid.views.at(c.view), *p, inside);
             return nlohmann::json::array({w.x, w.y});
         };
         sidecar["gizmo"] = {{"cell", c.view},           {"position", point(h.position)}, {"tip", point(h.tip)},
@@ -145,8 +145,8 @@ void GuiApp::writeSidecar(const std::string& path) {
                                       ? nlohmann::json::array({mParamsRect.min.x, mParamsRect.min.y, mParamsRect.max.x,
                                                                mParamsRect.max.y})
                                       : nlohmann::json(nullptr);
-    sidecar["view_grid"] = {{"layout", mLayout.toText()}, {"focused", mState.focusedView},
-                            {"maximised", mLayout.maximised()},
+    sidecar["view_grid"] = {{"layout", mGrid.layout.toText()}, {"focused", mState.focusedView},
+                            {"maximised", mGrid.layout.maximised()},
                             {"cpu_ms_last_frame", mGridMilliseconds},
                             {"ui_cpu_ms_last_frame", mUiMilliseconds},
                             {"linked_pixel", mLinkedPixel ? nlohmann::json::array({mLinkedPixel->x, mLinkedPixel->y})
@@ -161,7 +161,7 @@ void GuiApp::writeSidecar(const std::string& path) {
 }
 
 ViewSidecarFacts GuiApp::viewSidecarFacts(int id) {
-    ViewState& v = mViews.at(id);
+    ViewState& v = mGrid.views.at(id);
     ViewSidecarFacts f;
     f.id = id;
     f.focused = id == mState.focusedView;

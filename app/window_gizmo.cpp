@@ -31,7 +31,7 @@ glm::vec2 GuiApp::handlePoint(const ViewState& v, glm::dvec2 px, bool& inside) c
 std::optional<GizmoDrag> GuiApp::gizmoHandleAt(glm::vec2 p) const {
     const float grab = 8.0f * mScale;
     for (const ViewCellRect& c : mCells) {
-        const ViewState& v = mViews.at(c.view);
+        const ViewState& v = mGrid.views.at(c.view);
         const auto gizmo = gizmoFor(v);
         if (!gizmo || !v.image.contains(p)) continue;
         const GizmoHandles h = gizmo->handles(selectedLight());
@@ -46,8 +46,8 @@ std::optional<GizmoDrag> GuiApp::gizmoHandleAt(glm::vec2 p) const {
 }
 
 void GuiApp::dragGizmo(glm::vec2 p) {
-    if (!mViews.count(mGizmoDrag->view) || mScene.lights.empty()) return;
-    const ViewState& v = mViews.at(mGizmoDrag->view);
+    if (!mGrid.views.count(mGizmoDrag->view) || mScene.lights.empty()) return;
+    const ViewState& v = mGrid.views.at(mGizmoDrag->view);
     const auto gizmo = gizmoFor(v);
     if (!gizmo) return;
     viz::scene::Light& light = selectedLight();

@@ -98,11 +98,11 @@ void GuiApp::perform(Command command, int offset) {
         case Command::SplitBeside: splitFocused(SplitAxis::X); break;
         case Command::SplitBelow: splitFocused(SplitAxis::Y); break;
         case Command::CloseView: closeFocused(); break;
-        case Command::Maximise: mLayout.toggleMaximise(mState.focusedView); break;
+        case Command::Maximise: mGrid.layout.toggleMaximise(mState.focusedView); break;
         case Command::SwapNext: swapFocused(1); break;
         case Command::SwapPrev: swapFocused(-1); break;
-        case Command::FocusNext: mState.focusedView = mLayout.next(mState.focusedView, 1); break;
-        case Command::FocusPrev: mState.focusedView = mLayout.next(mState.focusedView, -1); break;
+        case Command::FocusNext: mState.focusedView = mGrid.layout.next(mState.focusedView, 1); break;
+        case Command::FocusPrev: mState.focusedView = mGrid.layout.next(mState.focusedView, -1); break;
         case Command::ToggleDifference: toggleDifference(); break;
         case Command::ToggleGizmo: mShowGizmo = !mShowGizmo; break;
         case Command::InspectPixel: inspectPixelUnderCursor(); break;
@@ -197,9 +197,9 @@ void GuiApp::onMouseButtonAt(int button, int action, glm::vec2 p) {
             }
         }
         const int view = ViewLayout::hit(mCells, p);
-        if (view >= 0 && mViews.count(view)) {
+        if (view >= 0 && mGrid.views.count(view)) {
             mState.focusedView = view;  // any click in a view focuses it
-            const ViewState& v = mViews.at(view);
+            const ViewState& v = mGrid.views.at(view);
             if (button == GLFW_MOUSE_BUTTON_LEFT && v.title.contains(p)) {
                 mDragTitle = view;  // dropped on another view: the two swap places
                 return;
@@ -220,7 +220,7 @@ void GuiApp::onMouseButtonAt(int button, int action, glm::vec2 p) {
         mLastCursor = p;
     } else if (action == GLFW_RELEASE && mDragTitle >= 0) {
         const int target = ViewLayout::hit(mCells, p);
-        if (target >= 0 && target != mDragTitle) mLayout.swap(mDragTitle, target);
+        if (target >= 0 && target != mDragTitle) mGrid.layout.swap(mDragTitle, target);
         mDragTitle = -1;
     } else if (action == GLFW_RELEASE && mGizmoDrag) {
         mGizmoDrag.reset();
@@ -266,8 +266,8 @@ void GuiApp::onCursorPixels(glm::vec2 p) {
         mLastCursor = p;
         return;
     }
-    if (mDragView >= 0 && mViews.count(mDragView)) {
-        ViewState& v = mViews.at(mDragView);
+    if (mDragView >= 0 && mGrid.views.count(mDragView)) {
+        ViewState& v = mGrid.views.at(mDragView);
         v.transform.panBy(glm::dvec2((p - mLastCursor) / glm::max(v.image.size(), glm::vec2(1.0f))));
         mLastCursor = p;
         return;
@@ -304,7 +304,7 @@ void GuiApp::onScroll(double dy) {
         return;
     }
     const int view = ViewLayout::hit(mCells, mHover);
-    if (view >= 0 && mViews.count(view) && isOrbitView(mViews.at(view)) && mViews.at(view).image.contains(mHover)) {
+    if (view >= 0 && mGrid.views.count(view) && isOrbitView(mGrid.views.at(view)) && mGrid.views.at(view).image.contains(mHover)) {
         // An orbit view: the wheel moves its own camera in (mesh_zoom, 1.25x a notch), not the texture.
         const viz::ParamInfo zoom = viz::orbitParams("")[2];
         mState.settings[viz::kOrbitZoom] =
@@ -312,15 +312,15 @@ void GuiApp::onScroll(double dy) {
         mDirty = true;
         return;
     }
-    if (view >= 0 && mViews.count(view) && mViews.at(view).content != "final" && mViews.at(view).image.contains(mHover)) {
+    if (view >= 0 && mGrid.views.count(view) && mGrid.views.at(view).content != "final" && mGrid.views.at(view).image.contains(mHover)) {
         // The wheel over a view zooms it about the cursor (the camera stays); over the final frame
         // it moves the camera.
-        ViewState& v = mViews.at(view);
+        ViewState& v = mGrid.views.at(view);
         v.transform.zoomAt(glm::dvec2((mHover - v.image.min) / v.image.size()), std::pow(1.25, dy));
         return;
     }
     // Titles, readouts and histograms do not move the camera.
-    if (view >= 0 && mViews.count(view) && !mViews.at(view).image.contains(mHover)) return;
+    if (view >= 0 && mGrid.views.count(view) && !mGrid.views.at(view).image.contains(mHover)) return;
     if (!mViewArea.contains(mHover)) return;
     if (mController.mode() == CameraController::Mode::Orbit) {
         mController.zoom(dy);

@@ -8,8 +8,8 @@ void GuiApp::inspectPixelUnderCursor() {
     mInspector.clear();
     mPendingInspect.reset();
     // The cursor over any screen-space view (final, L_air, a frame-sized intermediate) picks the pixel.
-    if (mHoveredView < 0 || !mViews.count(mHoveredView) || mState.size.x < 1) return;
-    const ViewState& hovered = mViews.at(mHoveredView);
+    if (mHoveredView < 0 || !mGrid.views.count(mHoveredView) || mState.size.x < 1) return;
+    const ViewState& hovered = mGrid.views.at(mHoveredView);
     if (!isScreenSpace(hovered) || !hovered.image.contains(mHover)) return;
     const glm::dvec2 uv = hovered.transform.paneToUv(glm::dvec2((mHover - hovered.image.min) / hovered.image.size()));
     const int x = std::clamp(int(uv.x * double(mState.size.x)), 0, mState.size.x - 1);

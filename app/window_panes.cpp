@@ -9,8 +9,8 @@ int GuiApp::contentCount() const { return airlight::contentCount(mOutput); }
 
 std::vector<std::string> GuiApp::shownContents() const {
     std::vector<std::string> shown;
-    for (int id : mLayout.views())
-        if (const auto it = mViews.find(id); it != mViews.end()) shown.push_back(it->second.content);
+    for (int id : mGrid.layout.views())
+        if (const auto it = mGrid.views.find(id); it != mGrid.views.end()) shown.push_back(it->second.content);
     return shown;
 }
 
@@ -27,8 +27,8 @@ std::string GuiApp::lessonViewCaption(const std::string& id) const {
 }
 
 ViewState& GuiApp::focusedView() {
-    if (!mViews.count(mState.focusedView)) mState.focusedView = mLayout.views().front();
-    return mViews[mState.focusedView];
+    if (!mGrid.views.count(mState.focusedView)) mState.focusedView = mGrid.layout.views().front();
+    return mGrid.views[mState.focusedView];
 }
 
 bool GuiApp::isScreenSpace(const ViewState& v) const {
@@ -64,8 +64,8 @@ void GuiApp::buildPane(ViewState& v) {
     if (content == "airlight" && mOutput.airlight.empty() && mOutput.lastStageRun >= 0) {
         const auto& declared = technique().stages()[std::size_t(mOutput.lastStageRun)].intermediates;
         std::vector<std::string> others;
-        for (int id : mLayout.views())
-            if (const auto it = mViews.find(id); it != mViews.end() && &it->second != &v) {
+        for (int id : mGrid.layout.views())
+            if (const auto it = mGrid.views.find(id); it != mGrid.views.end() && &it->second != &v) {
                 others.push_back(it->second.content);
                 others.push_back(it->second.pane.id);  // what it shows in its stead (built before this one)
             }
@@ -199,7 +199,7 @@ void GuiApp::pollOtherWorker() {
 }
 
 void GuiApp::refreshDifferenceViews(const std::string& against) {
-    for (auto& [vid, v] : mViews)
+    for (auto& [vid, v] : mGrid.views)
         if (v.display.difference != DifferenceMode::Off && v.display.against == against) refreshView(v);
 }
 
@@ -223,7 +223,7 @@ void GuiApp::refreshPanes() {
         mState.exposure = std::round(std::log2(autoExposure(exposed)) / kExposureStep) * kExposureStep;
         mState.exposureSet = true;
     }
-    for (auto& [id, v] : mViews) refreshView(v);
+    for (auto& [id, v] : mGrid.views) refreshView(v);
 }
 
 void GuiApp::stepView(int delta) {
@@ -251,11 +251,10 @@ void GuiApp::stepLayer(int delta) {
 }
 
 void GuiApp::splitFocused(SplitAxis axis) {
-    mLayout.restore();
-    const int id = mNextView++;
-    if (!mLayout.split(mState.focusedView, axis, id)) return;
-    ViewState& v = mViews[id];
-    const int shown = mViews.at(mState.focusedView).shown;
+    const int id = mGrid.split(mState.focusedView, axis);
+    if (id < 0) return;
+    ViewState& v = mGrid.views.at(id);
+    const int shown = mGrid.views.at(mState.focusedView).shown;
     if (mHaveOutput) {
         const int next = (shown < 0 ? 1 : shown + 1) % contentCount();
         v.content = contentId(next);
@@ -266,18 +265,15 @@ void GuiApp::splitFocused(SplitAxis axis) {
 }
 
 void GuiApp::closeFocused() {
-    if (!mLayout.close(mState.focusedView)) {
+    const int next = mGrid.close(mState.focusedView);
+    if (next < 0) {
         mNotice = "the last view stays open";
         return;
     }
-    mViews.erase(mState.focusedView);
-    mState.focusedView = mLayout.views().front();
+    mState.focusedView = next;
 }
 
-void GuiApp::swapFocused(int step) {
-    mLayout.restore();
-    mLayout.swap(mState.focusedView, mLayout.next(mState.focusedView, step));
-}
+void GuiApp::swapFocused(int step) { mGrid.swap(mState.focusedView, step); }
 
 void GuiApp::toggleDifference() {
     ViewState& v = focusedView();

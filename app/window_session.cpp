@@ -17,10 +17,10 @@ AppState GuiApp::appState() const {
     a.flyCamera = mController.mode() == CameraController::Mode::Fly;
     a.medium = mScene.medium;
     a.lights = mScene.lights;
-    a.layout = mLayout.toText();
-    a.maximisedView = mLayout.maximised();
-    for (int id : mLayout.views()) {
-        const ViewState& v = mViews.at(id);
+    a.layout = mGrid.layout.toText();
+    a.maximisedView = mGrid.layout.maximised();
+    for (int id : mGrid.layout.views()) {
+        const ViewState& v = mGrid.views.at(id);
         a.views.push_back({id, v.content, v.layer, v.transform.zoom, v.transform.center, v.display});
     }
     a.inspected = mPendingInspect;
@@ -134,27 +134,18 @@ void GuiApp::applyLessonWindowState(const LessonWindowState& s) {
 
 void GuiApp::layOutLessonViews(const std::vector<std::string>& views) {
     if (views.size() < 2) {
-        if (mLessonGrid) resetLayout(views.empty() ? std::string() : views.front());
-        mLessonGrid = false;
+        if (mGrid.lessonGrid) resetLayout(views.empty() ? std::string() : views.front());
+        mGrid.lessonGrid = false;
         if (!views.empty()) showInFocusedView(views.front());
         return;
     }
-    // Two views: three columns (the final frame first), as tall as the frame-shaped cells of the usual
-    // two; three: a 2 x 2 grid.
-    const std::string text = views.size() == 2 ? "x(0.3333,0,x(0.5,1,2))" : "y(0.5,x(0.5,0,1),x(0.5,2,3))";
-    mLayout = ViewLayout::fromText(text);
-    mViews.clear();
-    mViews[0].content = "final";
-    for (int i = 0; i < int(std::min<std::size_t>(views.size(), 3)); ++i) mViews[i + 1].content = views[std::size_t(i)];
-    mState.focusedView = 1;
-    mNextView = int(mViews.size());
-    mLessonGrid = true;
-    for (auto& [id, v] : mViews) refreshView(v);
+    mState.focusedView = mGrid.lesson(views);
+    for (auto& [id, v] : mGrid.views) refreshView(v);
 }
 
 // A view of the step already in the grid takes the focus; otherwise the focused view shows it.
 void GuiApp::showLessonView(const std::string& id) {
-    for (auto& [view, state] : mViews)
+    for (auto& [view, state] : mGrid.views)
         if (state.content == id) {
             mState.focusedView = view;
             return;
@@ -206,62 +197,22 @@ void GuiApp::applySessionView() {
 
 void GuiApp::clearPanes() {
     mMarkerCache.clear();
-    for (auto& [id, v] : mViews) {
+    for (auto& [id, v] : mGrid.views) {
         v.pane = {};
         v.values = {};
         updateStatistics(v);
     }
 }
 
-void GuiApp::resetLayout(const std::string& content) {
-    mLayout = ViewLayout(0);
-    mLayout.split(0, SplitAxis::X, 1);
-    mViews.clear();
-    mViews[0].content = "final";
-    mViews[1].content = content.empty() ? "airlight" : content;
-    mState.focusedView = 1;
-    mNextView = 2;
-    mLessonGrid = false;
-}
+void GuiApp::resetLayout(const std::string& content) { mState.focusedView = mGrid.reset(content); }
 
 void GuiApp::applySessionGrid() {
-    resetLayout(mSession.view);
-    mViews[1].transform.zoom = mSession.viewZoom;
-    mViews[1].transform.center = mSession.viewCenter;
-    mViews[1].transform.clampCenter();
-    if (mSession.layout.empty()) return;
     try {
-        ViewLayout layout = ViewLayout::fromText(mSession.layout);
-        std::map<int, ViewState> views;
-        for (int id : layout.views()) views[id];
-        for (const SessionState::GridView& g : mSession.gridViews) {
-            if (!views.count(g.id)) continue;
-            ViewState& v = views[g.id];
-            v.content = g.content;
-            v.layer = std::max(0, g.layer);
-            v.transform.zoom = g.zoom;
-            v.transform.center = g.center;
-            v.transform.clampCenter();
-            DisplaySettings& d = v.display;
-            d.channel = Channel(g.channel);
-            d.range = RangeMode(g.range);
-            d.colourMap = ColourMap(g.colourMap);
-            d.difference = DifferenceMode(g.difference);
-            d.manualMin = g.manualMin;
-            d.manualMax = g.manualMax;
-            d.logScale = g.logScale;
-            d.markNegative = g.markNegative;
-            d.stripOpen = g.stripOpen;
-            d.against = g.against;
-        }
-        mLayout = std::move(layout);
-        mViews = std::move(views);
-        mState.focusedView = mLayout.contains(mSession.focusedView) ? mSession.focusedView : mLayout.views().front();
-        if (mSession.maximisedView >= 0 && mLayout.contains(mSession.maximisedView))
-            mLayout.toggleMaximise(mSession.maximisedView);
-        mNextView = 0;
-        for (int id : mLayout.views()) mNextView = std::max(mNextView, id + 1);
+        mState.focusedView = mGrid.restore(mSession);
     } catch (const std::exception& e) {
+        SessionState pair = mSession;  // the default pair around the session's view
+        pair.layout.clear();
+        mState.focusedView = mGrid.restore(pair);
         mNotice = std::string("session view grid: ") + e.what() + "; using the default grid";
     }
 }

@@ -68,13 +68,13 @@ void GuiApp::layoutCell(ViewState& v, const Rect& cell) {
 }
 
 void GuiApp::drawDividers(const Rect& area) {
-    const auto dividers = !mComparison.isOpen() ? mLayout.dividers(area, kPad * mScale) : std::vector<ViewDivider>{};
+    const auto dividers = !mComparison.isOpen() ? mGrid.layout.dividers(area, kPad * mScale) : std::vector<ViewDivider>{};
     std::optional<SplitAxis> over;
     mDividerRects.clear();
     for (const ViewDivider& d : dividers) {
         const std::string name = "divider:" + (d.path.empty() ? std::string("root") : d.path);
         float fraction = d.fraction;
-        if (mUi->splitter(name, d.track, d.axis == SplitAxis::X, fraction)) mLayout.setFraction(d.path, fraction);
+        if (mUi->splitter(name, d.track, d.axis == SplitAxis::X, fraction)) mGrid.layout.setFraction(d.path, fraction);
         if (const auto it = mUi->widgetRects().find(name); it != mUi->widgetRects().end()) {
             mDividerRects.push_back(it->second);
             if (it->second.contains(mHover)) over = d.axis;
@@ -96,22 +96,22 @@ void GuiApp::drawViewGrid(const Rect& area) {
     mStripRects.clear();
     // The comparison grid takes the right half; the first view keeps the left.
     const float half = 0.5f * (area.size().x - kPad * mScale);
-    if (!mComparison.isOpen()) mCells = mLayout.arrange(area, kPad * mScale);
-    else mCells = {{mLayout.views().front(), {area.min, {area.min.x + half, area.max.y}}}};
+    if (!mComparison.isOpen()) mCells = mGrid.layout.arrange(area, kPad * mScale);
+    else mCells = {{mGrid.layout.views().front(), {area.min, {area.min.x + half, area.max.y}}}};
     drawDividers(area);
-    for (const ViewCellRect& c : mCells) layoutCell(mViews[c.view], c.rect);
+    for (const ViewCellRect& c : mCells) layoutCell(mGrid.views[c.view], c.rect);
     // The frame pixel under the cursor, if the cursor is over a screen-space view.
     mHoveredView = ViewLayout::hit(mCells, mHover);
     mLinkedPixel.reset();
     if (mHoveredView >= 0) {
-        const ViewState& h = mViews.at(mHoveredView);
+        const ViewState& h = mGrid.views.at(mHoveredView);
         if (isScreenSpace(h) && h.image.contains(mHover)) mLinkedPixel = texelUnder(h.pane.size, h.image, h.transform, mHover);
     }
     // Camera drags are scaled by the tallest frame-shaped view (the last one when none is shown).
     float frameHeight = 0.0f;
     const ViewTitleFacts facts = viewTitleFacts();  // the same for every view of the frame
     for (const ViewCellRect& c : mCells) {
-        ViewState& v = mViews.at(c.view);
+        ViewState& v = mGrid.views.at(c.view);
         if (isScreenSpace(v)) frameHeight = std::max(frameHeight, v.image.size().y);
         drawView(c.view, v, facts);
     }
@@ -171,7 +171,7 @@ void GuiApp::drawView(int id, ViewState& v, const ViewTitleFacts& facts) {
         mUi->tooltipNow({title + early + counts, note});
     mElidedTitles += v.titleElided ? 1 : 0;
     listItem(toggleRect, toggle, v.display.stripOpen, [this, id] {
-        ViewState& w = mViews.at(id);
+        ViewState& w = mGrid.views.at(id);
         w.display.stripOpen = !w.display.stripOpen;
         mState.focusedView = id;
     });
