@@ -1,5 +1,7 @@
 #include "view_contents.h"
 
+#include <algorithm>
+
 namespace airlight {
 
 int contentCount(const viz::FrameOutput& out) { return 2 + int(out.intermediates.size()); }
@@ -28,6 +30,47 @@ std::string notMadeBecause(const viz::Technique& technique, const viz::FrameOutp
     if (k < int(out.plan.stages.size()) && !out.plan.stages[std::size_t(k)].runs)
         return "chosen: " + id + ", not made: " + stage.label + " skipped (" + out.plan.stages[std::size_t(k)].why + ")";
     return "chosen: " + id + ", not made with these settings";
+}
+
+ShownContent shownContent(const viz::Technique& technique, const viz::FrameOutput& out, const std::string& chosen,
+                          int index, const std::vector<std::string>& elsewhere) {
+    const auto& all = out.intermediates;
+    ShownContent shown{chosen, -1, ""};
+    if (chosen != "final" && chosen != "airlight") {
+        if (index >= 0 && index < int(all.size()) && all[std::size_t(index)].id == chosen) {
+            shown.index = index;
+        } else if (const int first = contentIndexOf(out, chosen); first >= 2) {
+            shown.index = first - 2;
+        }
+        if (shown.index < 0) {  // not in this run: L_air, saying so (the choice is kept for later runs)
+            shown.standIn = notMadeBecause(technique, out, chosen);
+            shown.content = "airlight";
+        }
+    }
+    if (shown.content == "final" && out.final.empty() && out.lastStageRun >= 0) shown.content = "airlight";
+    if (shown.content == "airlight" && out.airlight.empty() && out.lastStageRun >= 0 &&
+        out.lastStageRun < int(technique.stages().size())) {
+        const auto& declared = technique.stages()[std::size_t(out.lastStageRun)].intermediates;
+        const auto shownElsewhere = [&](const std::string& id) {
+            return std::find(elsewhere.begin(), elsewhere.end(), id) != elsewhere.end();
+        };
+        const bool leaveFirst = chosen == "final" && shownElsewhere("airlight");
+        int first = -1, unshown = -1;
+        for (int i = 0; i < int(all.size()); ++i) {
+            const std::string& id = all[std::size_t(i)].id;
+            if (std::find(declared.begin(), declared.end(), id) == declared.end()) continue;
+            const bool isFirst = first < 0;
+            if (isFirst) first = i;
+            if (isFirst && leaveFirst) continue;
+            if (unshown < 0 && !shownElsewhere(id)) unshown = i;
+        }
+        const int pick = unshown >= 0 ? unshown : first;
+        if (pick >= 0) {
+            shown.index = pick;
+            shown.content = all[std::size_t(pick)].id;
+        }
+    }
+    return shown;
 }
 
 }  // namespace airlight

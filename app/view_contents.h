@@ -5,6 +5,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "debug/technique.h"
 
@@ -21,5 +22,19 @@ int contentIndexOf(const viz::FrameOutput& out, const std::string& id);
 // technique, a stage after where the run stopped or one the plan skipped (with the plan's reason), or a
 // stage that ran without it (its settings leave it out).
 std::string notMadeBecause(const viz::Technique& technique, const viz::FrameOutput& out, const std::string& id);
+
+// What a view that chose `chosen` shows of the run `out`: the chosen content when the run has it (an
+// intermediate whose id repeats, one shadow map per light, at the view's `index` in out.intermediates
+// when that still holds it, else the first); L_air in its stead, with the stand-in note, when it does not;
+// and, for a run stepped to a stage before the final frame or L_air exists, what that stage published,
+// preferring what no other view shows (`elsewhere`: the other views' chosen contents and what they show).
+// A final-frame view standing in leaves the stage's first view to an L_air view elsewhere.
+struct ShownContent {
+    std::string content;  // "final", "airlight" or an intermediate id
+    int index = -1;       // its position in out.intermediates; -1 for the final frame and L_air
+    std::string standIn;  // why the chosen content is not shown ("" when it is)
+};
+ShownContent shownContent(const viz::Technique& technique, const viz::FrameOutput& out, const std::string& chosen,
+                          int index, const std::vector<std::string>& elsewhere);
 
 }  // namespace airlight

@@ -44,46 +44,16 @@ void GuiApp::buildPane(ViewState& v) {
     v.shown = -1;
     if (!mHaveOutput) return;
     const auto& all = mOutput.intermediates;
-    std::string content = v.content;
-    int index = -1;
-    if (content != "final" && content != "airlight") {
-        // Ids may repeat (one shadow map per light): prefer the same position, then the first match.
-        if (v.index >= 0 && v.index < int(all.size()) && all[std::size_t(v.index)].id == content) {
-            index = v.index;
-        } else if (const int first = contentIndexOf(content); first >= 2) {
-            index = first - 2;
+    std::vector<std::string> elsewhere;  // what the other views chose and show (those built before this one)
+    for (int id : mGrid.layout.views())
+        if (const auto it = mGrid.views.find(id); it != mGrid.views.end() && &it->second != &v) {
+            elsewhere.push_back(it->second.content);
+            elsewhere.push_back(it->second.pane.id);
         }
-        if (index < 0) {  // not in this run: L_air, saying so (the choice is kept for later runs)
-            v.standIn = notMadeBecause(technique(), mOutput, content);
-            content = "airlight";
-        }
-    }
-    // Stepped to a stage before the final frame or L_air exists: show what that stage published instead
-    // (preferring what no other view shows), rather than an empty "(not produced by this run)" pane.
-    if (content == "final" && mOutput.final.empty() && mOutput.lastStageRun >= 0) content = "airlight";
-    if (content == "airlight" && mOutput.airlight.empty() && mOutput.lastStageRun >= 0) {
-        const auto& declared = technique().stages()[std::size_t(mOutput.lastStageRun)].intermediates;
-        std::vector<std::string> others;
-        for (int id : mGrid.layout.views())
-            if (const auto it = mGrid.views.find(id); it != mGrid.views.end() && &it->second != &v) {
-                others.push_back(it->second.content);
-                others.push_back(it->second.pane.id);  // what it shows in its stead (built before this one)
-            }
-        // An L_air view elsewhere in the grid takes the stage's first intermediate (the one closest to
-        // L_air): a final-frame view standing in leaves it to that view.
-        const bool leaveFirst = v.content == "final" && std::find(others.begin(), others.end(), "airlight") != others.end();
-        int first = -1, unshown = -1;
-        for (int i = 0; i < int(all.size()); ++i) {
-            const std::string& id = all[std::size_t(i)].id;
-            if (std::find(declared.begin(), declared.end(), id) == declared.end()) continue;
-            const bool isFirst = first < 0;
-            if (isFirst) first = i;
-            if (isFirst && leaveFirst) continue;
-            if (unshown < 0 && std::find(others.begin(), others.end(), id) == others.end()) unshown = i;
-        }
-        index = unshown >= 0 ? unshown : first;
-        if (index >= 0) content = all[std::size_t(index)].id;
-    }
+    const ShownContent choice = shownContent(technique(), mOutput, v.content, v.index, elsewhere);
+    const std::string& content = choice.content;
+    const int index = choice.index;
+    v.standIn = choice.standIn;
     if (index >= 0) v.index = index;
     // The two radiance images every run has: contents 0 (final) and 1 (L_air).
     const auto radiancePane = [&](int shown, const char* id, const char* note, const viz::Image& image) {

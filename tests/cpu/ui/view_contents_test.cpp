@@ -59,5 +59,63 @@ TEST(ViewContents, AViewTheRunDidNotMakeSaysWhy) {
               "chosen: raymarch.shadow_map.3, made by Shadow maps, after where the run stops");
 }
 
+// What a view shows of a run, on raymarch's declared stages: the chosen content, the right one of a
+// repeated id, L_air with a note for a view the run did not make, and for a run stopped before L_air exists
+// what the stage published, an intermediate no other view shows first.
+TEST(ViewContents, AViewShowsItsChoiceOrSaysWhyAndAStoppedRunFillsTheGridWithItsStagesViews) {
+    const auto t = viz::makeTechnique("raymarch");
+    const auto& stages = t->stages();
+    // A complete run: final and L_air present.
+    viz::FrameOutput out = runWith({{"raymarch.shadow_map", "Spot shadow map"}, {"raymarch.shadow_map", "Spot shadow map 1"},
+                                    {"raymarch.distance", "Distance d"}});
+    out.final = viz::Image(2, 2, 3);
+    out.airlight = viz::Image(2, 2, 3);
+    out.lastStageRun = int(stages.size()) - 1;
+    ShownContent c = shownContent(*t, out, "raymarch.shadow_map", 1, {});
+    EXPECT_EQ(c.content, "raymarch.shadow_map");
+    EXPECT_EQ(c.index, 1) << "the second light's map stays the second";
+    EXPECT_EQ(c.standIn, "");
+    c = shownContent(*t, out, "raymarch.shadow_map", 2, {});
+    EXPECT_EQ(c.index, 0) << "position 2 holds another id now: the first map";
+    c = shownContent(*t, out, "final", 5, {});
+    EXPECT_EQ(c.content, "final");
+    EXPECT_EQ(c.index, -1);
+    c = shownContent(*t, out, "minmax.tree", -1, {});
+    EXPECT_EQ(c.content, "airlight");
+    EXPECT_EQ(c.index, -1);
+    EXPECT_EQ(c.standIn, "chosen: minmax.tree, not a view of raymarch");
+
+    // Stopped after the first stage: no final frame, no L_air; the stage's two declared views.
+    ASSERT_GE(stages[0].intermediates.size(), 1u);
+    const std::string first = stages[0].intermediates[0];
+    viz::FrameOutput stopped;
+    for (const char* label : {"map 0", "map 1"}) {
+        viz::Intermediate i;
+        i.id = first;
+        i.label = label;
+        stopped.intermediates.push_back(i);
+    }
+    viz::Intermediate unrelated;
+    unrelated.id = "raymarch.not_declared_by_stage_0";
+    stopped.intermediates.insert(stopped.intermediates.begin(), unrelated);
+    stopped.lastStageRun = 0;
+    // An L_air view shows the stage's first view; with that shown elsewhere, the next one.
+    c = shownContent(*t, stopped, "airlight", -1, {});
+    EXPECT_EQ(c.content, first);
+    EXPECT_EQ(c.index, 1) << "the first intermediate stage 0 declares, not the one before it";
+    c = shownContent(*t, stopped, "airlight", -1, {"final", first});
+    EXPECT_EQ(c.index, 1) << "every declared view is shown elsewhere under this id: the first again";
+    // A final-frame view beside an L_air view leaves the first to it and shows another of the stage's.
+    c = shownContent(*t, stopped, "final", -1, {"airlight"});
+    EXPECT_EQ(c.content, first);
+    EXPECT_EQ(c.index, 2);
+    c = shownContent(*t, stopped, "final", -1, {});
+    EXPECT_EQ(c.index, 1) << "no L_air view elsewhere: the final-frame view takes the first";
+    // A chosen view after the stop stands in with the stage's view and says why.
+    c = shownContent(*t, stopped, "raymarch.lit_fraction", -1, {});
+    EXPECT_EQ(c.content, first);
+    EXPECT_NE(c.standIn.find("after where the run stops"), std::string::npos) << c.standIn;
+}
+
 }  // namespace
 }  // namespace airlight
