@@ -1,6 +1,7 @@
 // The view grid's contents: each view's pane built from the last run, difference views and the runs of
 // other techniques they need, and the grid edits (split, close, swap, step).
 #include "gui_app.h"
+#include "difference_pane.h"
 #include "view_contents.h"
 
 namespace airlight {
@@ -108,23 +109,7 @@ void GuiApp::makeDifference(ViewState& v, const std::string& content) {
     }
     v.error = viz::report::compareImages(mine, theirs);
     const viz::Image diff = differenceImage(mine, theirs, d.difference);
-    PaneImage pane;
-    pane.id = v.pane.id;
-    pane.label = v.pane.label + ": " + differenceModeNames()[std::size_t(d.difference)] + ", b = " + d.against +
-                 (other->held ? " (held while playing)" : "");
-    pane.note = d.difference == DifferenceMode::Signed
-        ? "sum over RGB of (a - b): blue where a is darker, red where brighter"
-        : d.difference == DifferenceMode::Relative
-            ? "sum_c |a - b| / max(sum_c |b|, 1% of its mean): the report's per-pixel relative error"
-            : "sum over RGB of |a - b|, a = " + technique().id();
-    pane.units = d.difference == DifferenceMode::Relative ? "" : "radiance";
-    pane.kind = d.difference == DifferenceMode::Signed ? viz::ViewKind::Signed : viz::ViewKind::Scalar;
-    pane.mode = d.difference == DifferenceMode::Signed ? DisplayMode::Signed : DisplayMode::Heat;
-    // Suggested range: up to the 99.9th percentile, so a few outliers do not wash out the map.
-    const ValueRange r = percentileRange(diff.pixels, 0.001, 0.999);
-    const float top = r.valid ? std::max({std::abs(r.lo), std::abs(r.hi), 1e-12f}) : 1.0f;
-    pane.rangeMin = d.difference == DifferenceMode::Signed ? -top : 0.0f;
-    pane.rangeMax = top;
+    PaneImage pane = differencePane(v.pane, diff, d.difference, d.against, other->held, technique().id());
     uploadImage(pane, diff);
     v.pane = std::move(pane);
 }
