@@ -4,42 +4,14 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cpu/ui/session_fixture.h"
 #include "session_state.h"
 
 namespace airlight {
 namespace {
 
-SessionState withGrid() {
-    SessionState s;
-    s.scene = "grate";
-    s.technique = "minmax";
-    s.layout = "x(0.4,0,y(0.5,3,1))";
-    s.focusedView = 3;
-    s.maximisedView = 1;
-    SessionState::GridView a;
-    a.id = 0;
-    a.content = "final";
-    SessionState::GridView b;
-    b.id = 3;
-    b.content = "minmax.rectified";
-    b.layer = 2;
-    b.zoom = 8.0;
-    b.center = {0.25, 0.625};
-    b.channel = 5, b.range = 3, b.colourMap = 2, b.difference = 0;
-    b.manualMin = -0.5f, b.manualMax = 2.25f;
-    b.markNegative = 1, b.logScale = true, b.stripOpen = true;
-    SessionState::GridView c;
-    c.id = 1;
-    c.content = "airlight";
-    c.difference = 3;
-    c.against = "raymarch";
-    c.markNegative = 0;
-    s.gridViews = {a, b, c};
-    return s;
-}
-
 TEST(SessionGrid, RoundTripKeepsTheLayoutAndEveryViewsSettings) {
-    const SessionState s = withGrid();
+    const SessionState s = sessionWithGrid();
     std::string problem;
     const SessionState back = sessionFromJson(sessionToJson(s), problem);
     ASSERT_EQ(problem, "");
@@ -67,7 +39,7 @@ TEST(SessionGrid, RoundTripKeepsTheLayoutAndEveryViewsSettings) {
 }
 
 TEST(SessionGrid, AFileWithoutTheGridLoadsWithTheDefaultGrid) {
-    SessionState s = withGrid();
+    SessionState s = sessionWithGrid();
     s.layout.clear();  // not written at all
     std::string problem;
     const SessionState back = sessionFromJson(sessionToJson(s), problem);
@@ -78,7 +50,7 @@ TEST(SessionGrid, AFileWithoutTheGridLoadsWithTheDefaultGrid) {
 }
 
 TEST(SessionGrid, ABrokenGridGivesTheDefaultsAndAReason) {
-    const std::string good = sessionToJson(withGrid());
+    const std::string good = sessionToJson(sessionWithGrid());
     const auto broken = [&](const std::string& key, const nlohmann::json& value) {
         nlohmann::json j = nlohmann::json::parse(good);
         j["view_grid"][key] = value;

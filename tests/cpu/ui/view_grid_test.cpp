@@ -5,6 +5,7 @@
 
 #include <stdexcept>
 
+#include "cpu/ui/session_fixture.h"
 #include "view_grid.h"
 
 namespace airlight {
@@ -53,30 +54,19 @@ TEST(ViewGrid, ALessonStepPutsTwoViewsInThreeColumnsAndThreeInTwoByTwo) {
 }
 
 TEST(ViewGrid, ASessionsGridComesBackWithItsDisplaySettingsAndABrokenOneChangesNothing) {
-    SessionState s;
-    s.layout = "x(0.4,0,y(0.5,3,1))";
-    s.focusedView = 3;
-    s.maximisedView = 1;
-    SessionState::GridView a;
-    a.id = 0;
-    a.content = "final";
-    SessionState::GridView b;
-    b.id = 3;
-    b.content = "minmax.rectified";
-    b.layer = 2;
-    b.zoom = 8.0;
-    b.center = {0.25, 0.625};
-    b.range = int(RangeMode::Manual), b.manualMin = -0.5f, b.manualMax = 2.25f;
-    b.logScale = true, b.stripOpen = true, b.difference = int(DifferenceMode::Signed), b.against = "reference";
+    SessionState s = sessionWithGrid();
     SessionState::GridView stray;  // a view the layout does not have: ignored
     stray.id = 9;
     stray.content = "vsv.voxels";
-    s.gridViews = {a, b, stray};
+    s.gridViews.push_back(stray);
     ViewGrid g;
     EXPECT_EQ(g.restore(s), 3);
     EXPECT_EQ(g.layout.toText(), "x(0.4,0,y(0.5,3,1))");
     EXPECT_EQ(g.layout.maximised(), 1);
     EXPECT_EQ(contents(g), (std::vector<std::string>{"final", "minmax.rectified", "airlight"}));
+    EXPECT_EQ(g.views.at(1).display.difference, DifferenceMode::Relative);
+    EXPECT_EQ(g.views.at(1).display.against, "raymarch");
+    EXPECT_EQ(g.views.at(1).display.markNegative, 0);
     const ViewState& v = g.views.at(3);
     EXPECT_EQ(v.layer, 2);
     EXPECT_EQ(v.transform.zoom, 8.0);
@@ -85,8 +75,8 @@ TEST(ViewGrid, ASessionsGridComesBackWithItsDisplaySettingsAndABrokenOneChangesN
     EXPECT_EQ(v.display.manualMin, -0.5f);
     EXPECT_EQ(v.display.manualMax, 2.25f);
     EXPECT_TRUE(v.display.logScale && v.display.stripOpen);
-    EXPECT_EQ(v.display.difference, DifferenceMode::Signed);
-    EXPECT_EQ(v.display.against, "reference");
+    EXPECT_EQ(v.display.colourMap, ColourMap(2));
+    EXPECT_EQ(v.display.difference, DifferenceMode::Off);
     EXPECT_EQ(g.nextView, 4);
     expectConsistent(g);
 
