@@ -38,7 +38,10 @@ void paperSliceGrid(EpipolarFrame<double>& f, const SetupInput& in, double lo, d
     // from a camera in the same plane) keeps its shadow on the correct side of that line.
     const bool automatic = in.slices <= 0;
     int slices = in.slices;
-    if (automatic) slices = int(std::ceil(span * std::max(1, in.oversampling) / minGradient)) + (f.wrap ? 0 : 1);
+    // The count wanted, in double: a tiny gradient asks for more than an int holds; the cap applies anyway.
+    if (automatic)
+        slices = int(std::min(std::ceil(span * std::max(1, in.oversampling) / minGradient), double(kMaxSlices))) +
+                 (f.wrap ? 0 : 1);
     f.slices = std::clamp(slices, 2, kMaxSlices);
     if (f.wrap) {
         // An even count has slices at -pi + k 2 pi / n, among them 0 (k = n / 2).
@@ -70,8 +73,8 @@ void fixedSliceGrid(EpipolarFrame<double>& f, const EpipolarFrame<double>& world
     double wanted;
     if (in.slices <= 0) wanted = minGradient / double(std::max(1, in.oversampling));
     else wanted = f.wrap ? 2.0 * pi / double(std::max(in.slices, 2)) : span / double(std::max(in.slices - 1, 1));
-    int divisions = int(std::min<unsigned>(std::bit_ceil(unsigned(std::ceil(2.0 * pi / std::max(wanted, 1e-9)))),
-                                           unsigned(kMaxSlices)));
+    const double asked = std::min(std::ceil(2.0 * pi / std::max(wanted, 1e-9)), double(kMaxSlices));
+    int divisions = int(std::min<unsigned>(std::bit_ceil(unsigned(asked)), unsigned(kMaxSlices)));
     divisions = std::max(divisions, 2);
     // f (the centred frame) is the world frame turned by the centre's alpha a0; turning f back by
     // delta = a0 - k spacing gives a frame whose multiples of spacing are the world frame's.
@@ -166,6 +169,16 @@ Setup setupLight(const SetupInput& in) {
             previousRow[std::size_t(x)] = a;
         }
     }
+    // An image one pixel wide or tall has no neighbour across it: the rays one pixel beyond the image (to
+    // the left, above) stand in, so that its slices are as far apart as in a wider image's first column.
+    if (in.width == 1 || in.height == 1)
+        for (int y = 0; y < in.height; ++y)
+            for (int x = 0; x < in.width; ++x) {
+                const double a = alphaOf(f, scene::pixelRay(cam, in.width, in.height, x, y));
+                const double gx = alphaStep(alphaOf(f, scene::pixelRay(cam, in.width, in.height, x - 1.0, y)), a);
+                const double gy = alphaStep(alphaOf(f, scene::pixelRay(cam, in.width, in.height, x, y - 1.0)), a);
+                minGradient = std::min(minGradient, std::sqrt(gx * gx + gy * gy));
+            }
     if (!(minGradient > 1e-9) || minGradient == std::numeric_limits<double>::max()) minGradient = 1e-9;
     s.minAlphaGradient = minGradient;
     s.betaLo = betaLo;

@@ -1,6 +1,8 @@
 // minmax's GL passes: light setup, rectification, prefix sums, min-max trees and the traversal.
 #include "techniques/minmax/minmax_technique.h"
 
+#include "core/text.h"
+
 namespace viz::minmax_detail {
 
 void MinmaxTechnique::prepareLights(const scene::Scene& scene, const FrameInput& input, std::vector<std::string>& notes) {
@@ -60,9 +62,8 @@ void MinmaxTechnique::sliceGapNote(const scene::Scene& scene, int light, const F
                                                                               : "light";
     const std::string why = fixed > 0 ? "slices=" + std::to_string(fixed) + " is too few for this image"
                                       : "the cap of " + std::to_string(minmax::kMaxSlices) +
-                                            " slices is reached (slice_oversampling " + std::to_string(k) +
-                                            " asks for " + std::to_string(int(std::ceil(setup.maxSliceGap / promised *
-                                                                                         setup.frame.slices))) + ")";
+                                            " slices is reached (slice_oversampling " + std::to_string(k) + " asks for " +
+                                            viz::format("%.0f", std::ceil(setup.maxSliceGap / promised * setup.frame.slices)) + ")";
     char figure[160];
     std::snprintf(figure, sizeof figure, "%.2f px apart, so a ray may take a slice %.2f px away (promised %.2f)",
                   setup.maxSliceGap, 0.5 * setup.maxSliceGap, 0.5 * promised);
