@@ -13,6 +13,7 @@
 #include "command_options.h"
 #include "core/error.h"
 #include "core/image_io.h"
+#include "core/text.h"
 #include "gl/work_counters.h"
 #include "gui.h"
 #include "lesson.h"
@@ -261,8 +262,9 @@ int runList(Args& args) {
                                 names.c_str(), p.help.c_str());
                     continue;
                 }
-                std::printf("%-20s default %-8g range [%g, %g]%s  %s\n", p.name.c_str(), p.defaultValue,
-                            p.minValue, p.maxValue, p.integer ? " integer" : "", p.help.c_str());
+                std::printf("%-20s default %-8s range [%s, %s]%s  %s\n", p.name.c_str(),
+                            viz::exactNumber(p.defaultValue).c_str(), viz::exactNumber(p.minValue).c_str(),
+                            viz::exactNumber(p.maxValue).c_str(), p.integer ? " integer" : "", p.help.c_str());
             }
         }
         if (!args.empty()) throw InputError("unexpected argument '" + args.peek() + "'");

@@ -110,6 +110,15 @@ TEST_F(CliTest, ListsScenesTechniquesStagesAndParams) {
     r = run("list stages raymarch");
     ASSERT_EQ(r.exitCode, 0);
     EXPECT_NE(r.out.find("raymarch.march"), std::string::npos);
+    // Ranges as typed back: the largest point cloud is 8388608, not 8.38861e+06 (which it rejects).
+    r = run("list params ivsv");
+    ASSERT_EQ(r.exitCode, 0);
+    EXPECT_NE(r.out.find("default 1048576  range [1024, 8388608] integer"), std::string::npos) << r.out;
+    expectUserError(run("plan --scene grate --technique ivsv --set points=8388609"),
+                    "parameter 'points' = 8388609 is out of range [1024, 8388608]");
+    expectUserError(run("plan --scene grate --technique raymarch --set samples=2.5"),
+                    "parameter 'samples' must be a whole number, got 2.5");
+    EXPECT_EQ(run("plan --scene grate --technique ivsv --set points=8388608").exitCode, 0);
 }
 
 TEST_F(CliTest, RenderWritesFiniteExrOfTheRightSize) {

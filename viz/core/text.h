@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cctype>
+#include <charconv>
 #include <cstdio>
 #include <string>
 
@@ -12,6 +13,14 @@ inline std::string format(const char* fmt, double value) {
     char buffer[64];
     std::snprintf(buffer, sizeof buffer, fmt, value);
     return buffer;
+}
+
+// The shortest text that reads back as exactly `value` ("8388608", "0.1", "1e+30"): for figures a user
+// types back, such as a parameter's range, where "%g" would print 8388608 as 8.38861e+06.
+inline std::string exactNumber(double value) {
+    char buffer[32];
+    const auto [end, error] = std::to_chars(buffer, buffer + sizeof buffer, value);
+    return error == std::errc() ? std::string(buffer, end) : format("%.17g", value);
 }
 
 // `text` without leading and trailing white space.

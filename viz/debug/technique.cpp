@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "core/text.h"
 
 namespace viz {
 
@@ -86,12 +87,10 @@ Settings completeSettings(const Technique& technique, const Settings& given) {
         if (!std::isfinite(value))
             throw InputError("parameter '" + name + "' must be a finite number");
         if (info->integer && value != std::floor(value))
-            throw InputError("parameter '" + name + "' must be a whole number, got " + std::to_string(value));
+            throw InputError("parameter '" + name + "' must be a whole number, got " + exactNumber(value));
         if (value < info->minValue || value > info->maxValue) {
-            std::ostringstream msg;
-            msg << "parameter '" << name << "' = " << value << " is out of range [" << info->minValue << ", "
-                << info->maxValue << "]";
-            throw InputError(msg.str());
+            throw InputError("parameter '" + name + "' = " + exactNumber(value) + " is out of range [" +
+                             exactNumber(info->minValue) + ", " + exactNumber(info->maxValue) + "]");
         }
         result[name] = value;
     }
