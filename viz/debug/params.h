@@ -24,7 +24,8 @@ struct ParamInfo {
 using Settings = std::map<std::string, double>;
 
 // "name=value" as a user writes it in --set and lessons: a named value by its name (integrand=svd,
-// accum=rgba8), any other value as a number (%g). Unknown names and out-of-range indices stay numbers.
+// accum=rgba8), any other value as the shortest number that reads back as it (exactNumber: 8388608, not
+// %g's 8.38861e+06). Unknown names and out-of-range indices stay numbers.
 std::string settingText(const std::vector<ParamInfo>& params, const std::string& name, double value);
 
 // The controls the window drives in a technique that has them (Technique::controls()), each a set of

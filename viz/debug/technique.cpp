@@ -40,9 +40,7 @@ std::string settingText(const std::vector<ParamInfo>& params, const std::string&
             return name + "=" + p.choices[std::size_t(value)];
         }
     }
-    char number[32];
-    std::snprintf(number, sizeof(number), "%g", value);
-    return name + "=" + number;
+    return name + "=" + exactNumber(value);
 }
 
 std::vector<std::string> onDemandAmong(const Technique& technique, const std::vector<std::string>& shown,
