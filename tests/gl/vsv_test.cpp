@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <random>
 #include <string>
 #include <vector>
@@ -465,6 +466,31 @@ TEST_F(VsvTest, PlanAndInputErrors) {
     viz::Settings odd = settings;
     odd["voxels_phi"] = 100;
     EXPECT_THROW(technique->plan(viz::scene::makeBuiltinScene("grate"), odd), viz::InputError);
+    // `voxels` alone: phi is rounded up to whole 32-bit words and the plan says so (48 once threw, and the
+    // window's slider lands on such values 31 times in 32).
+    viz::Settings between = settings;
+    between["voxels"] = 48;
+    const viz::Plan rounded = technique->plan(viz::scene::makeBuiltinScene("grate"), between);
+    EXPECT_EQ(rounded.stages[2].stage, "vsv.voxelize");
+    EXPECT_EQ(rounded.stages[2].why, "phi 48 rounded up to 64 bits (whole 32-bit words)");
+    EXPECT_EQ(technique->plan(viz::scene::makeBuiltinScene("grate"), settings).stages[2].why, "");
+}
+
+// Every `voxels` in vsv's range runs, and refines with the count: 48 lies between 32 and 64 in error
+// against the reference (its phi rounded up to 64).
+TEST_F(VsvTest, AVoxelCountBetweenWholeWordsRunsBetweenItsNeighbours) {
+    const viz::scene::Scene grate = viz::scene::makeBuiltinScene("grate");
+    const viz::Image ref = render(grate, "reference", {}, 64, 48).airlight;
+    std::map<int, double> error;
+    for (int voxels : {32, 48, 64}) {
+        viz::FrameOutput out;
+        ASSERT_NO_THROW(out = render(grate, "vsv", {{"voxels", voxels}}, 64, 48)) << voxels;
+        ASSERT_TRUE(viz::testing::allFinite(out.airlight));
+        error[voxels] = viz::testing::relativeL2(out.airlight, ref);
+    }
+    std::printf("vsv grate 64x48: relative L2 %.4f (32), %.4f (48), %.4f (64)\n", error[32], error[48], error[64]);
+    EXPECT_LT(error[48], error[32]);
+    EXPECT_GT(error[48], error[64]);
 }
 
 

@@ -9,8 +9,8 @@ const ParamTable<VsvSettings>& vsvParams() {
     using S = VsvSettings;
     static const ParamTable<S> table =
         ParamTable<S>()
-            .add(&S::voxels, {"voxels", "epipolar grid cells per axis (alpha, theta, phi), or AxBxC per axis; phi a "
-                              "multiple of 32", 128, 32, 1024, true, {}, {"voxels_alpha", "voxels_theta", "voxels_phi"}})
+            .add(&S::voxels, {"voxels", "epipolar grid cells per axis (alpha, theta, phi; phi rounded up to a multiple "
+                              "of 32), or AxBxC per axis (then phi a multiple of 32)", 128, 32, 1024, true, {}, {"voxels_alpha", "voxels_theta", "voxels_phi"}})
             .add(&S::voxelsAlpha, {"voxels_alpha", "alpha cells (0: `voxels`)", 0, 0, 1024, true})
             .add(&S::voxelsTheta, {"voxels_theta", "theta cells (0: `voxels`)", 0, 0, 1024, true})
             .add(&S::voxelsPhi, {"voxels_phi", "phi bits (0: `voxels`; a multiple of 32)", 0, 0, 1024, true})
@@ -242,9 +242,13 @@ Plan VsvTechnique::planFor(const scene::Scene& scene, const Settings& settings, 
         p.stages[kGatherIndex].why = "sigma_s = 0: the medium scatters nothing, L_air = 0";
     }
     const GridSize size = gridSize(s);
-    if (!lights.empty())
+    if (!lights.empty()) {
         p.stages[kScanIndex].why = std::to_string(scanPassCount(size.alpha)) + " passes for " +
                                    std::to_string(size.alpha) + " alpha cells";
+        if (s.voxelsPhi == 0 && size.phi != s.voxels)
+            p.stages[kVoxelizeIndex].why = "phi " + std::to_string(s.voxels) + " rounded up to " +
+                                           std::to_string(size.phi) + " bits (whole 32-bit words)";
+    }
     const bool exact = s.exactCombine;
     const bool interp = s.interp;
     bool epipoleInView = false;

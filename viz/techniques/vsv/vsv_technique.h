@@ -68,9 +68,13 @@ struct VsvSettings {
 };
 const ParamTable<VsvSettings>& vsvParams();
 
+// The grid `voxels` (and the per-axis parameters) ask for. phi bits are packed in 32-bit words: from
+// `voxels` phi is rounded up to whole words (48 -> 64; the plan says so), so every size the range allows
+// runs; an explicit `voxels_phi` that is not a multiple of 32 is an error.
+inline int phiFromVoxels(int voxels) { return (voxels + 31) / 32 * 32; }
 inline GridSize gridSize(const VsvSettings& s) {
     const int n = s.voxels;
-    GridSize g{n, n, n};
+    GridSize g{n, n, phiFromVoxels(n)};
     if (s.voxelsAlpha > 0) g.alpha = s.voxelsAlpha;
     if (s.voxelsTheta > 0) g.theta = s.voxelsTheta;
     if (s.voxelsPhi > 0) g.phi = s.voxelsPhi;
