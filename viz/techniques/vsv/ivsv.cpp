@@ -11,7 +11,7 @@ namespace {
 ParamInfo tileParam() {
     for (ParamInfo p : render::SceneViewPasses::params())
         if (p.name == "shadow_map") {
-            p.help = "imperfect shadow-map tile / naive cube-face size in texels (power of two <= 512)";
+            p.help = "imperfect shadow-map tile / naive cube-face size in texels (rounded up to a power of two)";
             p.defaultValue = 128;
             p.maxValue = 512;
             return p;
@@ -147,7 +147,6 @@ Plan IvsvTechnique::plan(const scene::Scene& scene, const Settings& settings) co
     const IvsvSettings s = ivsvParams().read(settings);
     const bool hasArea = areaLightOf(scene) != nullptr;
     const bool hasOthers = int(scene.lights.size()) > (hasArea ? 1 : 0);
-    checkTileSize(s.tile);
     Plan p = planEveryStage(mStages);
     if (!hasArea) {
         for (int i : {kVplsIndex, kShadowsIndex, kVoxelizeIndex, kScanIndex}) {
@@ -164,6 +163,9 @@ Plan IvsvTechnique::plan(const scene::Scene& scene, const Settings& settings) co
     if (hasArea) {
         p.stages[kShadowsIndex].why = naive ? std::to_string(vpls) + " cube shadow maps, one per VPL"
                                             : "one ISM atlas of " + std::to_string(vpls) + " tiles";
+        if (tileSize(s) != s.tile)
+            p.stages[kShadowsIndex].why += "; shadow_map " + std::to_string(s.tile) + " rounded up to " +
+                                           std::to_string(tileSize(s)) + " (a power of two)";
         p.stages[kScanIndex].why = std::to_string(scanPassCount(s.voxels)) + " passes" +
                                    (naive ? " per VPL" : " over all tiles at once");
     }
@@ -221,7 +223,7 @@ FrameOutput IvsvTechnique::run(const FrameInput& input) {
     const bool naive = s.naive;
     const int count = area ? s.vpls : 0;
     const int cells = s.voxels;
-    const int tile = s.tile;
+    const int tile = tileSize(s);
     const int shown = std::max(0, std::min(s.pickVpl, count - 1));
     gl::StageClock clock;
     StageRunner stages(mStages, input, out, mReuse, clock);

@@ -4,11 +4,6 @@
 
 namespace viz::ivsv_detail {
 
-void IvsvTechnique::checkTileSize(int t) {
-    if (t > 512 || (t & (t - 1)) != 0)
-        throw InputError("ivsv: shadow_map (" + std::to_string(t) + ") must be a power of two <= 512");
-}
-
 void IvsvTechnique::layOut(int count, int cells, int tile) {
     mTilesX = int(std::ceil(std::sqrt(double(count))));
     mTilesY = (count + mTilesX - 1) / mTilesX;

@@ -138,7 +138,7 @@ void IvsvTechnique::gather(const scene::Scene& scene, const FrameInput& input, i
     mVplBuffer.bindBase(GL_SHADER_STORAGE_BUFFER, 4);
     mPick.bindBase(GL_SHADER_STORAGE_BUFFER, 6);
     mView.surface().distance().bindUnit(render::hd::kFirstFreeTextureUnit);
-    program.set("uTileSize", s.tile);
+    program.set("uTileSize", tileSize(s));
     if (epipole && naive) mNaiveView.shadows().bind();
     if (epipole && !naive) mIsm.bindUnit(render::hd::kFirstFreeTextureUnit + 1);
     mResult->bindImage(0, GL_READ_ONLY);

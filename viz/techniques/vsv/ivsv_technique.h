@@ -5,6 +5,7 @@
 // Only those files include it; the rest of the program knows ivsv through ivsv.h.
 #pragma once
 
+#include <bit>
 #include <cstdio>
 #include <numbers>
 #include <optional>
@@ -174,7 +175,10 @@ private:
     // frame, texel = tile origin + (uv / 2 + 1 / 2) tile size; data uv = texel / atlas size, GL rows).
     std::vector<ViewMarker> ismMarkers(const MarkState& m, const vsv::Vpl& vpl, const glm::dvec3& w, double d) const;
 
-    static void checkTileSize(int tile);
+    // The ISM tile (and naive cube face) in texels: `shadow_map` rounded up to a power of two (the
+    // push-pull halves tiles level by level; 201 -> 256, the plan says so), so every value the range
+    // (16 to 512) allows runs.
+    static int tileSize(const IvsvSettings& s) { return int(std::bit_ceil(unsigned(std::max(s.tile, 1)))); }
 
     glm::ivec2 tileOrigin(int i, int size) const { return {(i % mTilesX) * size, (i / mTilesX) * size}; }
 

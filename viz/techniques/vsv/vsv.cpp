@@ -10,10 +10,10 @@ const ParamTable<VsvSettings>& vsvParams() {
     static const ParamTable<S> table =
         ParamTable<S>()
             .add(&S::voxels, {"voxels", "epipolar grid cells per axis (alpha, theta, phi; phi rounded up to a multiple "
-                              "of 32), or AxBxC per axis (then phi a multiple of 32)", 128, 32, 1024, true, {}, {"voxels_alpha", "voxels_theta", "voxels_phi"}})
+                              "of 32), or AxBxC per axis", 128, 32, 1024, true, {}, {"voxels_alpha", "voxels_theta", "voxels_phi"}})
             .add(&S::voxelsAlpha, {"voxels_alpha", "alpha cells (0: `voxels`)", 0, 0, 1024, true})
             .add(&S::voxelsTheta, {"voxels_theta", "theta cells (0: `voxels`)", 0, 0, 1024, true})
-            .add(&S::voxelsPhi, {"voxels_phi", "phi bits (0: `voxels`; a multiple of 32)", 0, 0, 1024, true})
+            .add(&S::voxelsPhi, {"voxels_phi", "phi bits (0: `voxels`; rounded up to a multiple of 32)", 0, 0, 1024, true})
             .add(&S::exactCombine, {"combine", "fraction: lit fraction x unshadowed airlight; exact: sum of airlight "
                                     "over lit runs", 1, 0, 1, true, {"fraction", "exact"}})
             .add(&S::alphaBias, {"alpha_bias", "occluder alpha offset in cells (negative: shadow starts further from "
@@ -245,8 +245,8 @@ Plan VsvTechnique::planFor(const scene::Scene& scene, const Settings& settings, 
     if (!lights.empty()) {
         p.stages[kScanIndex].why = std::to_string(scanPassCount(size.alpha)) + " passes for " +
                                    std::to_string(size.alpha) + " alpha cells";
-        if (s.voxelsPhi == 0 && size.phi != s.voxels)
-            p.stages[kVoxelizeIndex].why = "phi " + std::to_string(s.voxels) + " rounded up to " +
+        if (size.phi != phiAsked(s))
+            p.stages[kVoxelizeIndex].why = "phi " + std::to_string(phiAsked(s)) + " rounded up to " +
                                            std::to_string(size.phi) + " bits (whole 32-bit words)";
     }
     const bool exact = s.exactCombine;

@@ -4,6 +4,7 @@
 // rest of the program knows vsv through vsv.h.
 #pragma once
 
+#include <algorithm>
 #include <optional>
 
 #include "render/camera_ray.h"
@@ -68,19 +69,16 @@ struct VsvSettings {
 };
 const ParamTable<VsvSettings>& vsvParams();
 
-// The grid `voxels` (and the per-axis parameters) ask for. phi bits are packed in 32-bit words: from
-// `voxels` phi is rounded up to whole words (48 -> 64; the plan says so), so every size the range allows
-// runs; an explicit `voxels_phi` that is not a multiple of 32 is an error.
-inline int phiFromVoxels(int voxels) { return (voxels + 31) / 32 * 32; }
+// The grid `voxels` (and the per-axis parameters) ask for. phi bits are packed in 32-bit words, so phi,
+// from `voxels` or `voxels_phi`, is rounded up to whole words (48 -> 64; the plan says so): every value
+// the ranges allow runs, and the window's sliders never land on one that fails.
+inline int wholeWords(int bits) { return std::max(32, (bits + 31) / 32 * 32); }
+inline int phiAsked(const VsvSettings& s) { return s.voxelsPhi > 0 ? s.voxelsPhi : s.voxels; }
 inline GridSize gridSize(const VsvSettings& s) {
     const int n = s.voxels;
-    GridSize g{n, n, phiFromVoxels(n)};
+    GridSize g{n, n, wholeWords(phiAsked(s))};
     if (s.voxelsAlpha > 0) g.alpha = s.voxelsAlpha;
     if (s.voxelsTheta > 0) g.theta = s.voxelsTheta;
-    if (s.voxelsPhi > 0) g.phi = s.voxelsPhi;
-    if (g.phi % 32 != 0)
-        throw InputError("vsv: the phi resolution (" + std::to_string(g.phi) +
-                         ") must be a multiple of 32 (phi bits are packed in 32-bit words)");
     return g;
 }
 
