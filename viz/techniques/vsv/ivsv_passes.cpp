@@ -177,13 +177,10 @@ void IvsvTechnique::addOtherLights(const FrameInput& input) {
     in.scene = &mOtherLightsScene;
     in.width = input.width;
     in.height = input.height;
-    // The same grid as the VPLs': `voxels` alpha and theta cells, and phi rounded up to whole 32-bit words.
-    // vsv's own `voxels` (one size for all three axes, 32 to 1024, a multiple of 32 for phi) cannot say
-    // every size ivsv accepts (16 to 512): 48 once failed with vsv's error.
-    const int v = mSettings.voxels;
-    const double phi = double(std::max(32, (v + 31) / 32 * 32));
-    setRunSettings(in, completeSettings(*mVsv, {{"voxels", phi}, {"voxels_alpha", double(v)},
-                                                {"voxels_theta", double(v)}, {"voxels_phi", phi}}));
+    // The same grid as the VPLs' on every axis (vsv rounds phi up to whole 32-bit words itself); vsv's
+    // one-size `voxels` (32 to 1024) cannot say every size ivsv accepts (16 to 512): 16 once failed.
+    const double v = double(mSettings.voxels);
+    setRunSettings(in, completeSettings(*mVsv, {{"voxels_alpha", v}, {"voxels_theta", v}, {"voxels_phi", v}}));
     in.stopAfterStage = 4;  // vsv.gather: L_air exists, no compose needed
     in.readBack = false;    // the add reads the inner L_air's texture
     in.timer = input.timer;  // the caller's clock, if it gave one, times the inner stages too
