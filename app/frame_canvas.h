@@ -6,6 +6,7 @@
 #pragma once
 
 #include <functional>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -52,5 +53,10 @@ struct FrameCanvas {
     }
     float line() const { return font->lineHeight(); }
 };
+
+// A clickable list entry (the sidebar's techniques and views, a view's display toggle): highlighted when
+// selected, lighter under the mouse at `hover`; a click on it calls `onClick`.
+void listEntry(FrameCanvas& canvas, glm::vec2 hover, const viz::ui::Rect& r, const std::string& text, bool selected,
+               std::function<void()> onClick);
 
 }  // namespace airlight

@@ -68,6 +68,7 @@
 #include "view_layout.h"
 #include "view_state.h"
 #include "view_title.h"
+#include "view_cell.h"
 #include "view_stats.h"
 #include "techniques/registry.h"
 #include "plot/plot.h"
@@ -339,20 +340,10 @@ private:
 
     // ---- drawing ----
 
-    // Largest rectangle of the image's aspect ratio (the render's when the pane is empty) inside
-    // `area`, centred at the top.
-    Rect fitImage(const Rect& area, glm::ivec2 imageSize) const;
-
     // A clickable list entry: highlighted when selected, lighter under the cursor.
-    void listItem(const Rect& r, const std::string& text, bool selected, std::function<void()> onClick);
-
-    // Zoomed in until a texel holds its value: the value written in every visible texel (texel_labels.h).
-    void texelValues(const ViewState& v);
-
-    // ---- the view grid: drawing ----
-
-    // Title (two lines), image, value readout and, when open, the display strip inside one cell.
-    void layoutCell(ViewState& v, const Rect& cell);
+    void listItem(const Rect& r, const std::string& text, bool selected, std::function<void()> onClick) {
+        listEntry(mCanvas, mHover, r, text, selected, std::move(onClick));
+    }
 
     // ---- the light gizmo (light_gizmo.h): the first light's handles over the frame views ----
 
@@ -389,24 +380,19 @@ private:
     void setResizeCursor(std::optional<SplitAxis> axis);
     void drawViewGrid(const Rect& area);
 
-    // What a view's title lines (view_title.h: name, list position, id, stage, layer; the note with the
-    // range or the error figures) need from the window.
-    ViewTitleFacts viewTitleFacts() const;
-    void drawView(int id, ViewState& v, const ViewTitleFacts& facts);
-    void drawPlots(const ViewState& v);
+    // What every view cell (view_cell.h) needs from the window this frame: the canvas, the mouse, the
+    // focus, where the run stopped, the titles' facts, the progress bands.
+    ViewCellFrame cellFrame();
+    // One cell (view_cell.h) with the window's parts: the linked pixel's marks, the ray inspector's mark,
+    // the light gizmo, the display strip's toggle, and the strip's widgets after it.
+    void drawView(const ViewCellFrame& frame, int id, ViewState& v);
 
     // The technique's marks for the linked pixel, asked once per pixel and run (a GPU technique may
     // read a texel back for them).
     std::vector<viz::ViewMarker> markersFor(const ViewState& v);
 
-    // "rendering..." while a slow GPU run blocks, the CPU worker's progress while it computes.
-    void drawStatusBands(DrawList& dl, const Rect& image);
-
     // The view's display strip (display_strip.h) in its rectangle; re-does what its widgets changed.
     void drawStrip(int id, ViewState& v);
-    // The colour bar under an image view (window_colour_bar.cpp).
-    void drawColourBar(int id, ViewState& v);
-    float colourBarHeight(const ViewState& v) const;
 
     // What the sidecar says of a view (tests assert on it).
     ViewSidecarFacts viewSidecarFacts(int id);

@@ -61,6 +61,26 @@ nlohmann::json colourBarJson(const ColourBar& b, const viz::ui::Rect& rect, cons
     return bar;
 }
 
+nlohmann::json animationJson(const WindowAnimation& a) {
+    nlohmann::json j = {{"playing", a.playing},
+                        {"seconds", a.clock},
+                        {"light_turn", a.turn},
+                        {"frame", a.frame},
+                        {"temporal_pairs", a.temporal.pairs()}};
+    // The temporal view's score, once there is one (two frames played).
+    if (std::isfinite(a.temporal.score())) j["temporal_change_rms"] = a.temporal.score();
+    // Against the reference (--path with a temporal view shown): its frames and the error's score.
+    j["temporal_error_pairs"] = a.temporal.errorPairs();
+    if (std::isfinite(a.temporal.errorScore())) j["temporal_error_rms"] = a.temporal.errorScore();
+    j["reference_frames"] = {{"ready", a.reference.ready()},
+                             {"total", a.reference.total()},
+                             {"seconds_per_frame", a.reference.secondsPerFrame()},
+                             {"error", a.reference.error()}};
+    // --path: the motion and the loop's frame shown.
+    if (a.path) j["path"] = {{"text", a.path->text}, {"frames", a.pathFrames}, {"frame", a.pathFrame}};
+    return j;
+}
+
 nlohmann::json viewSidecar(const ViewState& v, const ViewSidecarFacts& facts) {
     const DisplaySettings& d = v.display;
     const DisplayMapping m = resolveMapping(v.pane, d, facts.exposure, v.measured);

@@ -1,6 +1,6 @@
 // Parts of the screenshot sidecar (the JSON beside a window screenshot that tests and handouts read) that
 // are plain conversions of one value: the plan, the lights, the last run's stage times, a colour bar as
-// drawn, one view of the grid. The window assembles the sidecar from them (window_automation.cpp).
+// drawn, the animation, one view of the grid. The window assembles the sidecar from them (window_automation.cpp).
 #pragma once
 
 #include <optional>
@@ -13,6 +13,7 @@
 #include "scene/scene.h"
 #include "ui/text_renderer.h"
 #include "view_state.h"
+#include "window_animation.h"
 
 namespace airlight {
 
@@ -25,6 +26,11 @@ nlohmann::json timingJson(const viz::Timing& timing);
 // What the bar under a view says: kind, range, units, caption, ticks (non-finite numbers as null), the
 // classes of a class bar, the legend's swatches (NaN and Inf named), and where it and its ramp were drawn.
 nlohmann::json colourBarJson(const ColourBar& bar, const viz::ui::Rect& rect, const viz::ui::Rect& ramp);
+
+// The animation (P) and what it measured: playing, seconds, the light's turn, frames; the temporal view's
+// pairs and change RMS (once two frames were played) and, along a --path, its error RMS against the
+// reference's frames, those frames' progress and the path itself with the loop's frame shown.
+nlohmann::json animationJson(const WindowAnimation& a);
 
 // What the window knows about a view beyond the view itself.
 struct ViewSidecarFacts {

@@ -120,26 +120,7 @@ void GuiApp::writeSidecar(const std::string& path) {
                             {"position_grab", grab(h.position)}, {"tip_grab", grab(h.tip)}};
         break;
     }
-    sidecar["animation"] = {{"playing", mAnimation.playing},
-                            {"seconds", mAnimation.clock},
-                            {"light_turn", mAnimation.turn},
-                            {"frame", mAnimation.frame},
-                            {"temporal_pairs", mAnimation.temporal.pairs()}};
-    // The temporal view's score, once there is one (two frames played).
-    if (std::isfinite(mAnimation.temporal.score())) sidecar["animation"]["temporal_change_rms"] = mAnimation.temporal.score();
-    // Against the reference (--path with a temporal view shown): its frames and the error's score.
-    sidecar["animation"]["temporal_error_pairs"] = mAnimation.temporal.errorPairs();
-    if (std::isfinite(mAnimation.temporal.errorScore()))
-        sidecar["animation"]["temporal_error_rms"] = mAnimation.temporal.errorScore();
-    sidecar["animation"]["reference_frames"] = {{"ready", mAnimation.reference.ready()},
-                                                {"total", mAnimation.reference.total()},
-                                                {"seconds_per_frame", mAnimation.reference.secondsPerFrame()},
-                                                {"error", mAnimation.reference.error()}};
-    // --path: the motion and the loop's frame shown.
-    if (mAnimation.path)
-        sidecar["animation"]["path"] = {{"text", mAnimation.path->text},
-                                        {"frames", mAnimation.pathFrames},
-                                        {"frame", mAnimation.pathFrame}};
+    sidecar["animation"] = animationJson(mAnimation);
     // The scene and parameter panel under the grid (null when there is no room for it).
     sidecar["parameters_panel"] = mParamsRect.size().y > 0.0f
                                       ? nlohmann::json::array({mParamsRect.min.x, mParamsRect.min.y, mParamsRect.max.x,

@@ -128,3 +128,49 @@ TEST(SidecarJson, ADifferenceGivesOnlyTheFiguresThatAreDefined) {
 
 }  // namespace
 }  // namespace airlight
+
+namespace airlight {
+namespace {
+
+// A 2x1 RGB L_air with every channel of pixel i equal to values[i].
+viz::Image sidecarFrame(float a, float b) {
+    viz::Image image(2, 1, 3);
+    for (int c = 0; c < 3; ++c) {
+        image.at(0, 0, c) = a;
+        image.at(1, 0, c) = b;
+    }
+    return image;
+}
+
+TEST(SidecarJson, TheAnimationGivesItsScoresOnlyOnceTheyExistAndThePathOnlyAlongOne) {
+    WindowAnimation a;
+    nlohmann::json j = animationJson(a);
+    EXPECT_EQ(j.at("playing"), false);
+    EXPECT_EQ(j.at("temporal_pairs"), 0);
+    EXPECT_FALSE(j.contains("temporal_change_rms"));  // NaN before two frames: absent, never null or NaN
+    EXPECT_FALSE(j.contains("temporal_error_rms"));
+    EXPECT_FALSE(j.contains("path"));
+    EXPECT_EQ(j.at("reference_frames").at("total"), 0);
+
+    a.playing = true;
+    a.frame = 2;
+    a.temporal.add(sidecarFrame(1.0f, 1.0f));
+    a.temporal.add(sidecarFrame(1.0f, 3.0f));  // one pixel changed: a positive score
+    a.path = viz::scene::parseMotionPath("camera-orbit:30deg");
+    a.pathFrames = 24;
+    a.pathFrame = 5;
+    j = animationJson(a);
+    EXPECT_EQ(j.at("playing"), true);
+    EXPECT_EQ(j.at("frame"), 2);
+    EXPECT_EQ(j.at("temporal_pairs"), 1);
+    ASSERT_TRUE(j.contains("temporal_change_rms"));
+    EXPECT_DOUBLE_EQ(j.at("temporal_change_rms").get<double>(), a.temporal.score());
+    EXPECT_GT(j.at("temporal_change_rms").get<double>(), 0.0);
+    EXPECT_FALSE(j.contains("temporal_error_rms"));  // no reference frames were given
+    EXPECT_EQ(j.at("path").at("text"), "camera-orbit:30deg");
+    EXPECT_EQ(j.at("path").at("frames"), 24);
+    EXPECT_EQ(j.at("path").at("frame"), 5);
+}
+
+}  // namespace
+}  // namespace airlight
