@@ -1,9 +1,8 @@
 // One sample of the midpoint rule along an eye ray: the single-scattering integrand
-// sigma_s p_HG(cos theta) E V exp(-sigma_t t) dt with the medium's block (medium.glsl). raymarch's march
-// and minmax's brute-force lights both sum it, from this one copy, so they agree to the bit where they
-// sample the same points. (slices' planes, minmax's march in gamma and ivsv's quadrature fold their own
-// factors, the noise, a Jacobian or a lobe, into the product in another order; giving them this function
-// would change their images in the last bit.)
+// sigma_s p_HG(cos theta) E V exp(-sigma_t t) dt with the medium's block (medium.glsl). Every technique
+// that sums it along a ray calls this one copy: raymarch's march, minmax's brute-force lights and its
+// march in gamma (dt: the Jacobian times the step), slices' planes (V: visibility times the noise that
+// scales the density), ivsv's gather (in phi: E times the Jacobian r^2 / h of t).
 #ifndef COMMON_AIRLIGHT_SAMPLE_GLSL
 #define COMMON_AIRLIGHT_SAMPLE_GLSL
 

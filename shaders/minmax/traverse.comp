@@ -77,8 +77,7 @@ vec3 marchGamma(GpuLight L, vec3 w, float beta, float d) {
             jacobian = uLightDistance * sinBeta / (s * s);
         }
         float cosTheta = dot(directionToLight(L, x), w);
-        sum += uSigmaS * phaseHG(cosTheta, uG) * unshadowedIrradiance(L, x, uSigmaT) * exp(-uSigmaT * t) *
-               jacobian * step;
+        sum += airlightSample(1.0, cosTheta, unshadowedIrradiance(L, x, uSigmaT), t, jacobian * step);
     }
     return sum;
 }

@@ -30,6 +30,7 @@ uniform float uTanHalf;       // tan(yfov / 2)
 uniform float uAspect;
 #include "slices/slab.glsl"    // uSpacing, slabLength
 #include "common/medium.glsl"  // uSigmaS, uSigmaT, uG
+#include "common/airlight_sample.glsl"
 uniform float uStoreScale;    // value -> stored value
 uniform float uArtisticUnits; // paper units per scene unit (the paper's constants assume its world)
 uniform float uFractionOfMaxShells;  // N / 100 (the paper's maximum of 100 planes)
@@ -137,7 +138,8 @@ vec3 shade(GpuLight L, vec3 p, vec3 w, float t) {
         E = L.radiant.rgb * angular * cookie * (exp(-uSigmaT * sqrt(r2)) / max(r2, 1.0e-20));
     }
     float dt = slabLength(vPlane) / dot(w, uForward);
-    return (uSigmaS * noise * phaseHG(cosTheta, uG) * V * exp(-uSigmaT * t) * dt) * E;
+    // The noise scales the density where the sample is, as visibility scales what reaches it.
+    return airlightSample(V * noise, cosTheta, E, t, dt);
 #else
     // The paper's constants: compositeNoise 0.015 (0.05 n1 n2 with noise), atten = ambient + 20000 / r^2
     // in the paper's units, scale = 9 / fFractionOfMaxShells; the cookie enters by its luminance. Colour:

@@ -45,6 +45,7 @@ uniform int uVplCount;    // VPLs [uFirstVpl, uFirstVpl + uVplCount)
 uniform int uVplStride;   // 1 or 9
 uniform int uPhaseShift;  // added to the 3x3 subset index, mod 9 (subsets=per-frame: the frame index)
 #include "common/medium.glsl"  // uSigmaS, uSigmaT, uG
+#include "common/airlight_sample.glsl"
 #include "common/work_counters.glsl"
 uniform int uChunkBits;
 uniform float uDiscScale;  // 1: VPLs as discs of their area near the emitter (vpl_disc), 0: points  // phi bits per quadrature node
@@ -146,8 +147,9 @@ void main() {
             // Near the emitter a VPL stands for a disc of area dA, radius^2 eps2 = dA / pi: on its axis the disc
             // gives the point's 1/r^2 times r^2 / (r^2 + eps2), which bounds the spike of rays grazing a VPL.
             float disc = r * r / (r * r + uDiscScale * v.weight.w);
-            float f = uSigmaS * phaseHG(cos(alpha + phiM), uG) * exp(-uSigmaT * (t + r)) * lobe * disc / h *
-                      (phiB - phiA);
+            // The sample in phi: dt = r^2 / h dphi cancels the VPL's 1/r^2, so its irradiance times that
+            // Jacobian is lobe disc exp(-sigma_t r) / h (the VPL's intensity is applied per VPL, after the sum).
+            float f = airlightSample(1.0, cos(alpha + phiM), vec3(lobe * disc * exp(-uSigmaT * r) / h), t, phiB - phiA).x;
             float vis = mix(litBits(c0, first, last), litBits(c1, first, last), wTheta);
             sum += vis * f;
             unshadowed += f;
