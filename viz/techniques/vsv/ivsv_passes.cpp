@@ -27,7 +27,7 @@ void IvsvTechnique::rectify(const IvsvSettings& s, int count, int cells, int til
             mRectifyCube.set("uFirstVpl", i);
             glDispatchCompute(GLuint(groups.x), GLuint(groups.y), 1);
             glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-            pack(tileOrigin(i, cells), {cells, cells, 1});
+            vsv::packGrid(mPack, mWords, mGrid, tileOrigin(i, cells), {cells, cells, 1});
             mRectifyCube.use();
             mWords.bindImage(0, GL_READ_WRITE);
         }
@@ -37,45 +37,17 @@ void IvsvTechnique::rectify(const IvsvSettings& s, int count, int cells, int til
         mRectifyIsm.set("uFirstVpl", 0);
         glDispatchCompute(GLuint(groups.x), GLuint(groups.y), GLuint(count));
         glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-        pack({0, 0}, {mTilesX * cells, mTilesY * cells, 1});
+        vsv::packGrid(mPack, mWords, mGrid, {0, 0}, {mTilesX * cells, mTilesY * cells, 1});
     }
-}
-
-void IvsvTechnique::pack(glm::ivec2 origin, glm::ivec3 size) {
-    mPack.use();
-    mPack.set("uSize", size);
-    mPack.set("uOrigin", origin);
-    mWords.bindImage(0, GL_READ_ONLY);
-    mGrid.bindImage(1, GL_WRITE_ONLY);
-    const glm::ivec3 groups = gl::groupCount(size, mPack.workGroupSize());
-    glDispatchCompute(GLuint(groups.x), GLuint(groups.y), GLuint(groups.z));
-    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
 }
 
 void IvsvTechnique::scan(int count, int cells, int passLimit, bool naive) {
     const int passes = std::min(passLimit, scanPassCount(cells));
-    mScan.use();
-    mScan.set("uSegment", cells);
-    auto run = [&](glm::ivec2 origin, glm::ivec3 size, gl::Texture* a, gl::Texture* b) {
-        mScan.set("uOrigin", origin);
-        mScan.set("uSize", size);
-        const glm::ivec3 groups = gl::groupCount(size, mScan.workGroupSize());
-        gl::Texture* src = a;
-        gl::Texture* dst = b;
-        for (int p = 0; p < passes; ++p) {
-            mScan.set("uOffset", 1 << p);
-            src->bindImage(0, GL_READ_ONLY);
-            dst->bindImage(1, GL_WRITE_ONLY);
-            glDispatchCompute(GLuint(groups.x), GLuint(groups.y), GLuint(groups.z));
-            glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
-            std::swap(src, dst);
-        }
-        return src;
-    };
     if (naive) {
-        for (int i = 0; i < count; ++i) mResult = run(tileOrigin(i, cells), {cells, cells, 1}, &mGrid, &mPong);
+        for (int i = 0; i < count; ++i)
+            mResult = vsv::scanGrid(mScan, &mGrid, &mPong, tileOrigin(i, cells), {cells, cells, 1}, cells, passes);
     } else {
-        mResult = run({0, 0}, {mTilesX * cells, mTilesY * cells, 1}, &mGrid, &mPong);
+        mResult = vsv::scanGrid(mScan, &mGrid, &mPong, {0, 0}, {mTilesX * cells, mTilesY * cells, 1}, cells, passes);
     }
 }
 

@@ -18,6 +18,7 @@
 #include "techniques/vsv/add_airlight.h"
 #include "techniques/vsv/bits128.h"
 #include "techniques/vsv/epipolar_setup.h"
+#include "techniques/vsv/grid_passes.h"
 #include "techniques/vsv/grid_readback.h"
 #include "techniques/vsv/stiff_bounds.h"
 #include "techniques/vsv/vpl_sampling.h"
@@ -194,8 +195,6 @@ private:
     void setRectifyCommon(const gl::Program& p, const IvsvSettings& s, int cells, int tile) const;
 
     void rectify(const IvsvSettings& s, int count, int cells, int tile, bool naive);
-
-    void pack(glm::ivec2 origin, glm::ivec3 size);
 
     // Segmented Hillis-Steele scan: segments of `cells` texels (one tile each) along x. Imperfect: all
     // tiles per pass; naive: each tile on its own, pass after pass.

@@ -93,35 +93,14 @@ void VsvTechnique::voxelize(const scene::Scene& scene, const VsvSettings& s, int
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
 
     const gl::Texture& grid = mGrid[std::size_t(slot)];
-    mPack.use();
-    mPack.set("uSize", grid.size());
-    mPack.set("uOrigin", glm::ivec2(0));
-    mWords.bindImage(0, GL_READ_ONLY);
-    grid.bindImage(1, GL_WRITE_ONLY);
-    groups = gl::groupCount(grid.size(), mPack.workGroupSize());
-    glDispatchCompute(GLuint(groups.x), GLuint(groups.y), GLuint(groups.z));
-    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+    vsv::packGrid(mPack, mWords, grid, glm::ivec2(0), grid.size());
     mResult[std::size_t(slot)] = &grid;
 }
 
 void VsvTechnique::scan(int slot, const GridSize& size, int passLimit) {
-    const gl::Texture* src = &mGrid[std::size_t(slot)];
-    const gl::Texture* dst = &mPong[std::size_t(slot)];
+    const gl::Texture& grid = mGrid[std::size_t(slot)];
     const int passes = std::min(passLimit, scanPassCount(size.alpha));
-    mScan.use();
-    mScan.set("uSize", src->size());
-    mScan.set("uSegment", 0);
-    mScan.set("uOrigin", glm::ivec2(0));
-    const glm::ivec3 groups = gl::groupCount(src->size(), mScan.workGroupSize());
-    for (int p = 0; p < passes; ++p) {
-        mScan.set("uOffset", 1 << p);
-        src->bindImage(0, GL_READ_ONLY);
-        dst->bindImage(1, GL_WRITE_ONLY);
-        glDispatchCompute(GLuint(groups.x), GLuint(groups.y), GLuint(groups.z));
-        glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
-        std::swap(src, dst);
-    }
-    mResult[std::size_t(slot)] = src;
+    mResult[std::size_t(slot)] = vsv::scanGrid(mScan, &grid, &mPong[std::size_t(slot)], glm::ivec2(0), grid.size(), 0, passes);
 }
 
 const gl::Program& VsvTechnique::gatherProgram(const Plan& plan) {

@@ -14,6 +14,7 @@
 #include "techniques/vsv/add_airlight.h"
 #include "techniques/vsv/bits128.h"
 #include "techniques/vsv/epipolar_setup.h"
+#include "techniques/vsv/grid_passes.h"
 #include "techniques/vsv/grid_readback.h"
 #include "techniques/vsv/ivsv.h"
 #include "techniques/vsv/stiff_bounds.h"
