@@ -34,6 +34,7 @@
 #include "display_strip.h"
 #include "lesson_player.h"
 #include "on_off_slider.h"
+#include "parameter_panel.h"
 #include "pane_image.h"
 #include "process_stats.h"
 #include "ray_inspection.h"
@@ -405,12 +406,8 @@ private:
     void beginWidgets(glm::ivec2 fb);
     void drawParameters(glm::ivec2 fb);
 
-    // The scene pickers: the built-in scenes (and the file given on the command line, if any) in one
-    // list, the stiff cases of `airlight report --suite stiff` in another (one long list would not fit
-    // the window). Picking one loads it with its own camera, medium and lights; a scene that fails to
-    // load leaves the current one and shows the error.
-    void scenePicker();
-    // A scene picked in the panel, loaded before the next frame is laid out (scenePicker).
+    // A scene picked in the panel, loaded before the next frame is laid out (a scene that fails to load
+    // leaves the current one and shows the error).
     void loadPendingScene();
     void setUiScale(float scale);
     void toggleFullscreen();
@@ -419,7 +416,6 @@ private:
     void openSceneFile(const std::string& path);
     // The scene file changed on disk: loaded again keeping the camera, the view grid and the settings.
     void reloadScene();
-    void openFileWidgets();
     // The scene as the window names it: a file's name (and its glTF scene's, when that differs).
     std::string sceneTitle() const;
     // The light the panel and the gizmo edit (the scene's first unless another is picked in the panel).
@@ -427,15 +423,12 @@ private:
     viz::scene::Light& selectedLight() { return mScene.lights[std::size_t(selectedLightIndex())]; }
     const viz::scene::Light& selectedLight() const { return mScene.lights[std::size_t(selectedLightIndex())]; }
 
-    // The preset picker and the technique's parameters (parameter_widgets.h), except the sub-steps.
-    void parameterWidgets();
     void replan();
 
     GuiOptions mOptions;
     long mGlErrors = 0;  // GL errors seen by the script's stats actions
     ScriptPlayer mScript;  // gui --script
     WindowAnimation mAnimation;  // P
-    std::vector<std::string> mSceneChoices, mStiffChoices;  // the scene pickers' lists (built lazily)
     SessionState mSession;  // as loaded (or defaults); settings of techniques not yet visited come from it
     std::string mNotice;    // last session message, shown in the status line
     viz::scene::Scene mScene;  // the camera follows the controller
@@ -512,11 +505,8 @@ private:
     // the difference views' keys read it instead of hashing every mesh and texture per refresh.
     std::uint64_t mGeometryHash = 0;
     SceneFileWatch mSceneWatch;                // the scene file, when the scene is one
-    std::string mOpenPath;                     // File > Open's text field
     bool mTextTab = false, mTextEnter = false;  // Tab / Enter pressed in a text field this frame
-    // The panel's light intensity (candela or lux) and medium coefficients (per scene unit): declared log
-    // ranges covering every built-in scene and stiff case (millimetre models, scales 1e-3 to 1e4).
-    OnOffSlider mIntensitySlider{1e-6f, 1e12f, 1.0}, mSigmaSSlider{1e-7f, 1e3f, 0.1}, mSigmaASlider{1e-7f, 1e3f, 0.01};
+    ParameterPanel mPanel;  // the scene and parameter panel's own state: its sliders, lists and path field
     int mDragView = -1;                      // the view a drag pans
     int mDragOrbit = -1;                     // the orbit view a drag turns
     bool mShowGizmo = true;                   // L: the light gizmo over the frame views

@@ -89,9 +89,7 @@ void GuiApp::loadLessonScene(const std::string& name) {
     mController = CameraController(mScene.camera, orbitDistance(mScene));
     mGizmoArm = kGizmoArm * mController.targetDistance();
     cpuWorker().setScene(mScene);
-    mIntensitySlider.forget();
-    mSigmaSSlider.forget();
-    mSigmaASlider.forget();
+    mPanel.forgetValues();
     mNotice = sceneNotesLine(mScene);
     mComparison.close();
     mInspector.clear();

@@ -14,12 +14,12 @@ namespace {
 using viz::ui::ImageViewTransform;
 using viz::ui::Rect;
 
-const viz::ui::FontAtlas& font() { return viz::ui::testing::testFont(); }
+using viz::ui::testing::testFont;
 
 TEST(TexelLabels, OnlyAZoomThatGivesATexelRoomForItsValueLabelsTheTexelsInView) {
     const Rect image{{100.0f, 50.0f}, {500.0f, 350.0f}};  // 400 x 300 pixels
     const glm::ivec2 pane{8, 6};                           // 50 pixels a texel at zoom 1
-    const float line = font().lineHeight();
+    const float line = testFont().lineHeight();
     ASSERT_GT(4.2f * line, 50.0f) << "the test assumes a 50-pixel texel is too small for a label";
     ASSERT_LT(4.2f * line, 100.0f);
     ImageViewTransform view;
@@ -44,12 +44,12 @@ TEST(TexelLabels, EachLabelSitsInItsTexelAndSaysItsValueChannelByChannel) {
     const glm::ivec2 pane{8, 6};
     ImageViewTransform view;
     view.zoom = 2.0;
-    const auto block = labelledTexels(pane, image, view, font().lineHeight());
+    const auto block = labelledTexels(pane, image, view, testFont().lineHeight());
     ASSERT_TRUE(block);
     const auto value = [](int x, int y) { return glm::vec4(float(x + 10 * y), -0.5f * float(x), 1e-4f * float(y), 7.0f); };
     for (int channels : {1, 3}) {
         SCOPED_TRACE(channels);
-        const std::vector<TexelLabel> labels = texelLabels(*block, pane, image, view, channels, value, font(), 1.0f);
+        const std::vector<TexelLabel> labels = texelLabels(*block, pane, image, view, channels, value, testFont(), 1.0f);
         // 4 x 4 texels in view, each whole (100 pixels, 50 of the first and last shown): every one labelled.
         std::map<std::pair<int, int>, std::vector<std::string>> byTexel;
         for (const TexelLabel& l : labels) {
@@ -75,15 +75,15 @@ TEST(TexelLabels, EachLabelSitsInItsTexelAndSaysItsValueChannelByChannel) {
     // Panned right by a sixth of a texel (16.7 pixels): column 6 comes into view by that much, too little
     // for a label; the others keep theirs.
     view.center.x += (1.0 / 6.0) / 8.0;
-    const auto cut = labelledTexels(pane, image, view, font().lineHeight());
+    const auto cut = labelledTexels(pane, image, view, testFont().lineHeight());
     ASSERT_TRUE(cut);
     EXPECT_EQ(cut->hi.x, 6);
-    const std::vector<TexelLabel> labels = texelLabels(*cut, pane, image, view, 1, value, font(), 1.0f);
+    const std::vector<TexelLabel> labels = texelLabels(*cut, pane, image, view, 1, value, testFont(), 1.0f);
     for (const TexelLabel& l : labels) {
         const glm::ivec2 t = texelUnder(pane, image, view, l.at);
         const double left = (view.uvToPane(glm::dvec2(double(t.x) / 8.0, 0.0)).x) * 400.0;
         const double right = (view.uvToPane(glm::dvec2(double(t.x + 1) / 8.0, 0.0)).x) * 400.0;
-        EXPECT_GE(std::min(right, 400.0) - std::max(left, 0.0), 3.0 * font().lineHeight()) << t.x;
+        EXPECT_GE(std::min(right, 400.0) - std::max(left, 0.0), 3.0 * testFont().lineHeight()) << t.x;
         EXPECT_NE(t.x, 6);
     }
     EXPECT_EQ(labels.size(), 16u);  // columns 2 to 5, rows 1 to 4

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "ui/font.h"
+#include "cpu/ui/synthetic_panel.h"
 #include "view_markers.h"
 
 namespace airlight {
@@ -11,10 +12,7 @@ namespace {
 
 using viz::ui::Rect;
 
-const viz::ui::FontAtlas& font() {
-    static const viz::ui::FontAtlas atlas = viz::ui::FontAtlas::bake(viz::ui::FontAtlas::kDefaultFontPath, 14.0f);
-    return atlas;
-}
+using viz::ui::testing::testFont;
 
 ViewState viewAt(const Rect& image) {
     ViewState v;
@@ -35,8 +33,8 @@ TEST(ViewMarkers, LabelsOfMarksCloseTogetherStayInsideTheImageAndOffEachOther) {
     // Five segments from nearly one point to the image's right edge: their labels would pile up there.
     for (int i = 0; i < 5; ++i)
         marks.push_back({{0.6f, 0.3f + 0.01f * float(i)}, {0.99f, 0.32f + 0.01f * float(i)}, "crossing " + std::to_string(i), -1});
-    viz::ui::DrawList dl(font());
-    const std::vector<Rect> placed = drawViewMarkers(dl, font(), 1.0f, v, marks);
+    viz::ui::DrawList dl(testFont());
+    const std::vector<Rect> placed = drawViewMarkers(dl, testFont(), 1.0f, v, marks);
     ASSERT_EQ(placed.size(), 5u);
     for (std::size_t i = 0; i < placed.size(); ++i) {
         EXPECT_TRUE(inside(placed[i], image)) << i;
@@ -65,8 +63,8 @@ TEST(ViewMarkers, ARaysLabelAndItsCrossingsNumbersDoNotOverlap) {
         const float x = 0.74f + 0.04f * float(i);
         marks.push_back({{x, 0.36f}, {x, 0.36f}, "crossing " + std::to_string(i), -1});
     }
-    viz::ui::DrawList dl(font());
-    const std::vector<Rect> placed = drawViewMarkers(dl, font(), 1.0f, v, marks);
+    viz::ui::DrawList dl(testFont());
+    const std::vector<Rect> placed = drawViewMarkers(dl, testFont(), 1.0f, v, marks);
     ASSERT_EQ(placed.size(), 4u) << "a number per crossing, the ray's label in the key";
     for (std::size_t i = 0; i < placed.size(); ++i)
         for (std::size_t k = 0; k < i; ++k) {
@@ -80,19 +78,19 @@ TEST(ViewMarkers, ManyLabelledPointsGetNumbersAndAKeyAndOtherLayersAreLeftOut) {
     const ViewState v = viewAt({{0, 0}, {320, 240}});
     std::vector<viz::ViewMarker> points;
     for (int i = 0; i < 4; ++i) points.push_back({{0.2f + 0.1f * float(i), 0.5f}, {0.2f + 0.1f * float(i), 0.5f}, "node " + std::to_string(i), -1});
-    viz::ui::DrawList dl(font());
-    EXPECT_EQ(drawViewMarkers(dl, font(), 1.0f, v, points).size(), 4u) << "numbers only: the labels go into the key";
+    viz::ui::DrawList dl(testFont());
+    EXPECT_EQ(drawViewMarkers(dl, testFont(), 1.0f, v, points).size(), 4u) << "numbers only: the labels go into the key";
     const std::size_t drawn = dl.vertices().size();
     EXPECT_GT(drawn, 0u);
     // The same with a mark on another layer (a cube map's other face): nothing more is drawn.
     std::vector<viz::ViewMarker> more = points;
     more.push_back({{0.1f, 0.1f}, {0.9f, 0.9f}, "on face 3", 3});
-    viz::ui::DrawList other(font());
-    (void)drawViewMarkers(other, font(), 1.0f, v, more);
+    viz::ui::DrawList other(testFont());
+    (void)drawViewMarkers(other, testFont(), 1.0f, v, more);
     EXPECT_EQ(other.vertices().size(), drawn);
     // Two labelled points: labels beside them, no key.
-    viz::ui::DrawList two(font());
-    EXPECT_EQ(drawViewMarkers(two, font(), 1.0f, v, {points[0], points[1]}).size(), 2u);
+    viz::ui::DrawList two(testFont());
+    EXPECT_EQ(drawViewMarkers(two, testFont(), 1.0f, v, {points[0], points[1]}).size(), 2u);
 }
 
 }  // namespace
