@@ -37,17 +37,8 @@ struct ParameterPanelTest : ::testing::Test {
         ui.endFrame();
         return edits;
     }
-    static Input at(glm::vec2 p, bool down = false) {
-        Input in;
-        in.mouse = p;
-        in.mouseDown = down;
-        return in;
-    }
-    glm::vec2 centreOf(const std::string& name) const {
-        const auto it = ui.widgetRects().find(name);
-        EXPECT_NE(it, ui.widgetRects().end()) << name;
-        return it == ui.widgetRects().end() ? glm::vec2(-1.0f) : (it->second.min + it->second.max) * 0.5f;
-    }
+    static Input at(glm::vec2 p, bool down = false) { return viz::ui::testing::SyntheticPanel::at(p, down); }
+    glm::vec2 centreOf(const std::string& name) const { return viz::ui::testing::SyntheticPanel::widgetCentre(ui, name); }
 };
 
 TEST_F(ParameterPanelTest, EveryParameterHasItsWidgetButTheSubStepsTheStagesDeclare) {

@@ -102,11 +102,13 @@ TEST(ParameterWidgets, ThePresetPickerSetsThePapersValuesAndTheDefaultsBack) {
         }
         ++withPaper;
         ASSERT_NE(it, panel.ctx.widgetRects().end()) << id;
-        const glm::vec2 c = (it->second.min + it->second.max) * 0.5f;
+        // A copy: the next frame rebuilds the widgets' rectangles (and frees the one `it` points at).
+        const viz::ui::Rect box = it->second;
+        const glm::vec2 c = (box.min + box.max) * 0.5f;
         // Open the list and pick its second item ("paper"), a row below the first.
-        const float row = it->second.size().y;
+        const float row = box.size().y;
         for (auto [p, down] : std::vector<std::pair<glm::vec2, bool>>{
-                 {c, true}, {c, false}, {{c.x, it->second.max.y + 1.5f * row}, true}, {{c.x, it->second.max.y + 1.5f * row}, false}})
+                 {c, true}, {c, false}, {{c.x, box.max.y + 1.5f * row}, true}, {{c.x, box.max.y + 1.5f * row}, false}})
             panel.frame(Panel::at(p, down), ui);
         ASSERT_TRUE(picked) << id;
         EXPECT_EQ(*picked, paper) << id;
@@ -115,7 +117,7 @@ TEST(ParameterWidgets, ThePresetPickerSetsThePapersValuesAndTheDefaultsBack) {
         // From the paper's values, the first item ("ours") brings the defaults back.
         panel.frame({}, ui);
         for (auto [p, down] : std::vector<std::pair<glm::vec2, bool>>{
-                 {c, true}, {c, false}, {{c.x, it->second.max.y + 0.5f * row}, true}, {{c.x, it->second.max.y + 0.5f * row}, false}})
+                 {c, true}, {c, false}, {{c.x, box.max.y + 0.5f * row}, true}, {{c.x, box.max.y + 0.5f * row}, false}})
             panel.frame(Panel::at(p, down), ui);
         ASSERT_TRUE(picked) << id;
         for (const auto& [name, value] : *picked) EXPECT_EQ(value, defaults.at(name)) << id << "." << name;

@@ -40,10 +40,11 @@ struct SyntheticPanel {
         return in;
     }
     // The centre of the widget drawn last frame under this name (a failure when there is none).
-    glm::vec2 centreOf(const std::string& name) const {
-        const auto it = ctx.widgetRects().find(name);
-        EXPECT_NE(it, ctx.widgetRects().end()) << name;
-        return it == ctx.widgetRects().end() ? glm::vec2(-1.0f) : (it->second.min + it->second.max) * 0.5f;
+    glm::vec2 centreOf(const std::string& name) const { return widgetCentre(ctx, name); }
+    static glm::vec2 widgetCentre(const Context& ui, const std::string& name) {
+        const auto it = ui.widgetRects().find(name);
+        EXPECT_NE(it, ui.widgetRects().end()) << name;
+        return it == ui.widgetRects().end() ? glm::vec2(-1.0f) : (it->second.min + it->second.max) * 0.5f;
     }
     Context ctx{testFont()};
 };
