@@ -35,8 +35,10 @@ class CliTest : public ::testing::Test {
 protected:
     void SetUp() override {
         const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        mDir = fs::temp_directory_path() / ("airlight_cli_" + std::string(info->name()) + "_" +
-                                            std::to_string(::getpid()));
+        std::string name = "airlight_cli_" + std::string(info->name()) + "_" + std::to_string(::getpid());
+        for (char& c : name)
+            if (c == '/') c = '_';  // a parameterised test's name: one folder, not a folder in a folder
+        mDir = fs::temp_directory_path() / name;
         fs::remove_all(mDir);
         fs::create_directories(mDir);
     }
