@@ -2,6 +2,7 @@
 
 #include <sys/stat.h>
 
+#include <climits>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -118,9 +119,29 @@ bool refuseWrite(std::string* err, const std::string&, const std::vector<unsigne
     return false;
 }
 
-// Decodes an image only when its header states a size within the limits.
+// Decodes an image only when its bytes lie inside what was loaded and its header states a size within the
+// limits. `user` is the model being parsed: tinygltf hands over an image in a bufferView as the buffer's
+// bytes from the view's offset, `byteLength` long, without checking that the view fits in the buffer.
 bool boundedImageLoader(tinygltf::Image* image, const int index, std::string* err, std::string* warn, int reqWidth,
-                        int reqHeight, const unsigned char* bytes, int size, void*) {
+                        int reqHeight, const unsigned char* bytes, int size, void* user) {
+    if (image->bufferView >= 0) {
+        const tinygltf::Model& model = *static_cast<const tinygltf::Model*>(user);
+        const std::size_t view = std::size_t(image->bufferView);
+        const tinygltf::BufferView* v = view < model.bufferViews.size() ? &model.bufferViews[view] : nullptr;
+        const std::size_t have = v && std::size_t(v->buffer) < model.buffers.size()
+                                     ? model.buffers[std::size_t(v->buffer)].data.size()
+                                     : 0;
+        if (!v || v->byteOffset > have || v->byteLength > have - v->byteOffset || v->byteLength > std::size_t(INT_MAX)) {
+            if (err)
+                *err += "image " + std::to_string(index) + ": bufferView " + std::to_string(image->bufferView) +
+                        (v ? " (offset " + std::to_string(v->byteOffset) + ", " + std::to_string(v->byteLength) +
+                                 " bytes) runs past the end of buffer " + std::to_string(v->buffer) + " (" +
+                                 std::to_string(have) + " bytes)"
+                           : std::string(" does not exist")) +
+                        "\n";
+            return false;
+        }
+    }
     int w = 0, h = 0, c = 0;
     if (size <= 0 || !stbi_info_from_memory(bytes, size, &w, &h, &c)) {
         if (err) {
@@ -280,7 +301,7 @@ void parseModel(const std::vector<unsigned char>& bytes, const std::string& file
     callbacks.WriteWholeFile = refuseWrite;
     callbacks.user_data = &folder;
     loader.SetFsCallbacks(callbacks);
-    loader.SetImageLoader(boundedImageLoader, nullptr);
+    loader.SetImageLoader(boundedImageLoader, &model);  // the model: an image's bufferView is checked against it
 
     // tinygltf wants a folder it can join paths to; a name that cannot exist keeps it from the
     // current folder when external files are refused.

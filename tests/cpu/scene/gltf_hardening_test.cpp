@@ -249,6 +249,24 @@ TEST_F(GltfHardening, MissingImageIsNamed) {
     expectInputError([&] { loadGltf(write("img.gltf", json)); }, "image 0: file 'albedo.png' does not exist");
 }
 
+// tinygltf hands an image in a bufferView to the decoder as `byteLength` bytes from the view's offset
+// without checking the buffer holds them (a fuzzed GLB read 1178 bytes past a 762-byte buffer in
+// stb_image). The view is checked against the buffer first.
+TEST_F(GltfHardening, ImageBufferViewPastItsBufferIsRefusedBeforeDecoding) {
+    for (const char* view : {R"({"buffer": 0, "byteLength": 4096})", R"({"buffer": 0, "byteOffset": 30, "byteLength": 7})",
+                             R"({"buffer": 0, "byteOffset": 18446744073709551600, "byteLength": 20})"}) {
+        SCOPED_TRACE(view);
+        Tiny d;
+        d.extraViews = std::string(", ") + view;
+        d.materials = R"([{"pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}}])";
+        d.primitive = R"({"attributes": {"POSITION": 0}, "material": 0})";
+        std::string json = d.json();
+        json.insert(json.rfind('}'), R"(, "textures": [{"source": 0}], "images": [{"bufferView": 1, "mimeType": "image/png"}])");
+        const std::string message = expectInputError([&] { loadGltf(write("img.gltf", json)); }, "image 0: bufferView 1");
+        EXPECT_NE(message.find("runs past the end of buffer 0 (36 bytes)"), std::string::npos) << message;
+    }
+}
+
 TEST_F(GltfHardening, ExternalFilesRefusedFromMemoryWithoutAFolder) {
     Tiny d;
     d.buffer = R"({"byteLength": 36, "uri": "tri.bin"})";
