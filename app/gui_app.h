@@ -33,7 +33,6 @@
 #include "difference_runs.h"
 #include "display_strip.h"
 #include "lesson_player.h"
-#include "on_off_slider.h"
 #include "parameter_panel.h"
 #include "pane_image.h"
 #include "process_stats.h"
@@ -340,11 +339,6 @@ private:
     void fly(double dt);
 
     // ---- drawing ----
-
-    // A clickable list entry: highlighted when selected, lighter under the cursor.
-    void listItem(const Rect& r, const std::string& text, bool selected, std::function<void()> onClick) {
-        listEntry(mCanvas, mHover, r, text, selected, std::move(onClick));
-    }
 
     // ---- the light gizmo (light_gizmo.h): the first light's handles over the frame views ----
 

@@ -125,19 +125,22 @@ std::string drawCellTitle(const ViewCellFrame& f, int id, ViewState& v, const Vi
     v.noteElided = fit.noteElided;
     if ((v.titleElided || v.noteElided) && v.title.contains(f.hover) && !toggleRect.contains(f.hover))
         f.ui->tooltipNow({title + warn.early + warn.counts, note});
-    listEntry(canvas, f.hover, toggleRect, toggle, v.display.stripOpen, parts.toggleStrip);
+    listEntry(canvas, f.hover, toggleRect, toggle, v.display.stripOpen,
+              parts.toggleStrip ? parts.toggleStrip : std::function<void()>([] {}));  // a click never calls an empty function
     canvas.screen.place("strip:" + std::to_string(id), toggleRect);
     canvas.screen.place("title:" + std::to_string(id), v.title);
     canvas.screen.place("cell:" + std::to_string(id), v.image);
     return title + warn.early + warn.counts;
 }
 
-}  // namespace
-
+// The colour bar's height for this view: none for plots, an empty pane or before any run.
 float viewColourBarHeight(const ViewCellFrame& f, const ViewState& v) {
     if (!v.pane.plots.empty() || v.pane.texture == 0 || !f.haveOutput) return 0.0f;
     return colourBarHeight(*f.canvas->font, f.canvas->scale);
 }
+
+}  // namespace
+
 
 void layOutViewCell(const ViewCellFrame& f, ViewState& v, const Rect& cell) {
     const float line = f.canvas->line(), s = f.canvas->scale;

@@ -58,9 +58,6 @@ struct ViewCellDrawn {
 // the room), the readout line and, when open, the display strip at the bottom (at most 60 % of the room).
 void layOutViewCell(const ViewCellFrame& f, ViewState& v, const viz::ui::Rect& cell);
 
-// The colour bar's height for this view: none for plots, an empty pane or before any run.
-float viewColourBarHeight(const ViewCellFrame& f, const ViewState& v);
-
 // Draws cell `id` (laid out by layOutViewCell) into the frame's canvas and names its rectangles in the
 // canvas's screen map: "title:ID", "strip:ID" (the toggle), "cell:ID" (the image), "colour_bar:ID", and
 // the view itself (by its pane's id, "none" before any run) for scripts and the sidecar.

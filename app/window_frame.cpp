@@ -60,8 +60,8 @@ void GuiApp::draw() {
     for (const SidebarEntry& e : side.entries) {
         const int i = e.index;
         // Clicking a view's entry shows it in the focused view.
-        if (e.list == SidebarEntry::List::Techniques) listItem(e.rect, e.text, e.selected, [this, i] { selectTechnique(i); });
-        else listItem(e.rect, e.text, e.selected, [this, i] { selectView(i); });
+        if (e.list == SidebarEntry::List::Techniques) listEntry(mCanvas, mHover, e.rect, e.text, e.selected, [this, i] { selectTechnique(i); });
+        else listEntry(mCanvas, mHover, e.rect, e.text, e.selected, [this, i] { selectView(i); });
         mCanvas.screen.place(e.screenName, e.rect);
     }
 

@@ -4,7 +4,6 @@
 #include "progress_band.h"
 #include "texel_labels.h"
 #include "view_cell.h"
-#include "view_histogram.h"
 
 namespace airlight {
 
