@@ -10,7 +10,7 @@ set(viz_test_costs
     "StabilisingOptions.EachLowersItsTechniquesTemporalError" 68
     "CliTest.EveryBuiltinSceneRendersWithEveryTechnique" 57
     "CliTest.EveryLessonExportsAPageWithAllItsImages" 41
-    "ReadBackTest.ARunWithoutReadBackReturnsNoImagesAndPublishesTheSameDeclaredViews" 37
+    "ReadBackTest.ARunWithoutReadBackReturnsNoImagesAndPublishesTheSameDeclaredViews" 20
     "IvsvTest.EpipoleRuleAgainstTheReferenceOnAndOff" 32
     "GuiTemporalReference.TheComparisonGridPlaysTheCameraPathAndScoresEachTilesFlicker" 25
     "PolyvolNearLight.PixelPassingTheApexMatchesTheReferenceAndAQuadrature" 24
