@@ -22,7 +22,7 @@ void main() {
     WORK_PIXEL(gl_FragCoord.xy);
     WORK_COUNT(kWorkFragments, 1);
     float dist = length(vPosition);
-    if (dist > uZfar) discard;
+    if (dist > uZfar) WORK_DISCARD;
     vec3 toEye = -vPosition / dist;
     GpuMaterial m = gMaterials[vMaterial];
 

@@ -182,7 +182,7 @@ void main() {
     }
     if (uCountPass == 1) { oColour = vec4(0.0); return; }
     if (uCountPass == 2) {
-        if (!outside) discard;
+        if (!outside) WORK_DISCARD;
         oColour = vec4(0.0);
         return;
     }
@@ -198,7 +198,7 @@ void main() {
     if (picked && t > d) gPick[record].test = vec4(kPickBeyondSurface, -1.0, -1.0, d);  // V: not tested
 #endif
     // Beyond the first surface (or zfar) the ray has ended: the plane adds nothing there.
-    if (t > d) discard;
+    if (t > d) WORK_DISCARD;
 
     vec3 value = vec3(0.0);
     if (uLight >= 0) {
