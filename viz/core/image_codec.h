@@ -1,8 +1,9 @@
-// The image file formats behind image_io and animation_io, in one of two builds: OpenImageIO (the app's
-// default, image_codec_oiio.cpp) or stb_image(_write) and OpenEXR alone (image_codec_portable.cpp), for
-// the self-contained bundle of scripts/bundle.sh, since Debian's OpenImageIO pulls in some 330 MiB of
-// format libraries (video, GIS, DICOM, VDB). An executable picks the portable one with the target
-// property VIZ_PORTABLE_IMAGE_IO (viz/core/CMakeLists.txt).
+// The image file formats behind image_io and animation_io (image_codec_portable.cpp): PNG and EXR
+// through stb_image(_write) and OpenEXR; other formats, animated GIFs and animation info through the
+// OpenImageIO module (oiio_module.h), loaded when first needed. The self-contained bundle of
+// scripts/bundle.sh has no module, since Debian's OpenImageIO pulls in some 330 MiB of format libraries
+// (video, GIS, DICOM, VDB): an executable leaves it out with the target property VIZ_PORTABLE_IMAGE_IO
+// (viz/core/CMakeLists.txt).
 #pragma once
 
 #include <cstdint>
@@ -14,7 +15,7 @@
 
 namespace viz::codec {
 
-// "OpenImageIO" or "stb_image + OpenEXR".
+// Which of the two builds this is, in words.
 std::string backendName();
 
 // Each writer writes the whole file at `path` and returns an empty string, or a one-line reason.
@@ -23,7 +24,8 @@ std::string writeExr(const std::string& path, const Image& image);
 // PNG: 8-bit, `channels` 1 (grey) or 3 (RGB), rows top to bottom, interleaved.
 std::string writePng(const std::string& path, int width, int height, int channels, const std::uint8_t* bytes);
 
-// Reads an EXR or PNG (OpenImageIO: any format it knows) as float: PNG bytes / 255, EXR values as stored.
+// Reads an EXR or PNG (with the module: any format OpenImageIO knows) as float: PNG values / 255 (65535
+// for 16-bit), EXR values as stored.
 // Throws InputError naming the path.
 Image readImageFile(const std::string& path);
 

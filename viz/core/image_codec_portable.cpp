@@ -1,13 +1,17 @@
-// The image formats without OpenImageIO (see image_codec.h): PNG through stb_image and stb_image_write,
-// EXR through OpenEXR. The stb implementations are compiled here with internal linkage (STB_*_STATIC),
-// apart from the copy tinygltf compiles for the scene loader.
+// The image formats (see image_codec.h): PNG through stb_image and stb_image_write, EXR through OpenEXR.
+// The stb implementations are compiled here with internal linkage (STB_*_STATIC), apart from the copy
+// tinygltf compiles for the scene loader. Built with VIZ_OIIO_MODULE (the app's default), everything
+// else (other image formats, animated GIFs, animation info) goes to the OpenImageIO module
+// (oiio_module.h), loaded the first time it is needed; without it (the bundle) those are errors.
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfInputFile.h>
 #include <OpenEXR/ImfOutputFile.h>
 
+#include <cerrno>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <exception>
 #include <vector>
@@ -23,11 +27,62 @@
 #include "core/error.h"
 #include "core/image_codec.h"
 
+#ifdef VIZ_OIIO_MODULE
+#include <dlfcn.h>
+
+#include <filesystem>
+#include <mutex>
+
+#include "core/oiio_module.h"
+#endif
+
 namespace viz::codec {
 
+#ifdef VIZ_OIIO_MODULE
+std::string backendName() { return "stb_image + OpenEXR; OpenImageIO (loaded when needed) for other formats"; }
+#else
 std::string backendName() { return "stb_image + OpenEXR"; }
+#endif
 
 namespace {
+
+#ifdef VIZ_OIIO_MODULE
+// The module, loaded once: AIRLIGHT_OIIO_MODULE, else beside the executable, else where the build put it.
+// Never unloaded (a GIF writer it made may outlive any scope). Null, with the reason, when none loads.
+const OiioModule* oiioModule(std::string& why) {
+    static std::once_flag once;
+    static const OiioModule* module = nullptr;
+    static std::string reason;
+    std::call_once(once, [] {
+        std::vector<std::string> candidates;
+        if (const char* env = std::getenv("AIRLIGHT_OIIO_MODULE"); env != nullptr && env[0] != '\0') {
+            candidates.push_back(env);
+        } else {
+            std::error_code ec;
+            const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+            if (!ec) candidates.push_back((exe.parent_path() / VIZ_OIIO_MODULE_NAME).string());
+            candidates.push_back(VIZ_OIIO_MODULE_PATH);
+        }
+        for (const std::string& path : candidates) {
+            void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+            if (!handle) {
+                if (reason.empty()) reason = dlerror();
+                continue;
+            }
+            using Entry = const OiioModule* (*)();
+            const auto entry = reinterpret_cast<Entry>(dlsym(handle, "airlightOiioModule"));
+            const OiioModule* m = entry ? entry() : nullptr;
+            if (m && m->abi == kOiioModuleAbi) {
+                module = m;
+                return;
+            }
+            reason = path + " is not this build's OpenImageIO module";
+        }
+    });
+    why = reason;
+    return module;
+}
+#endif
 
 const char* channelName(int channels, int c) {
     static const char* const kRgba[] = {"R", "G", "B", "A"};
@@ -107,17 +162,60 @@ Image readImageFile(const std::string& path) {
             throw InputError("cannot read image '" + path + "': " + e.what());
         }
     }
+    if (std::FILE* f = std::fopen(path.c_str(), "rb")) {
+        std::fclose(f);
+    } else {
+        throw InputError("cannot read image '" + path + "': " + std::strerror(errno));
+    }
     int width = 0, height = 0, channels = 0;
-    stbi_uc* data = stbi_load(path.c_str(), &width, &height, &channels, 0);
-    if (!data)
-        throw InputError("cannot read image '" + path + "': " + (stbi_failure_reason() ? stbi_failure_reason() : "unknown format") +
-                         " (this build reads PNG and EXR)");
-    Image image(width, height, channels);
-    for (std::size_t i = 0; i < image.pixels.size(); ++i) image.pixels[i] = float(data[i]) / 255.0f;
-    stbi_image_free(data);
-    return image;
+    // A 16-bit PNG keeps its 16 bits.
+    const bool wide = stbi_is_16_bit(path.c_str()) != 0;
+    void* data = wide ? static_cast<void*>(stbi_load_16(path.c_str(), &width, &height, &channels, 0))
+                      : static_cast<void*>(stbi_load(path.c_str(), &width, &height, &channels, 0));
+    if (data) {
+        Image image(width, height, channels);
+        for (std::size_t i = 0; i < image.pixels.size(); ++i)
+            image.pixels[i] = wide ? float(static_cast<const stbi_us*>(data)[i]) / 65535.0f
+                                   : float(static_cast<const stbi_uc*>(data)[i]) / 255.0f;
+        stbi_image_free(data);
+        return image;
+    }
+    const std::string stbReason = stbi_failure_reason() ? stbi_failure_reason() : "unknown format";
+#ifdef VIZ_OIIO_MODULE
+    std::string why;
+    if (const OiioModule* module = oiioModule(why)) {
+        Image image;
+        const std::string error = module->readImage(path, image);
+        if (!error.empty()) throw InputError("cannot read image '" + path + "': " + error);
+        return image;
+    }
+    throw InputError("cannot read image '" + path + "': " + stbReason + " (PNG and EXR only: " + why + ")");
+#else
+    throw InputError("cannot read image '" + path + "': " + stbReason + " (this build reads PNG and EXR)");
+#endif
 }
 
+#ifdef VIZ_OIIO_MODULE
+std::unique_ptr<GifWriter> openGif(const std::string& path, int width, int height, int frames, int fps) {
+    std::string why;
+    const OiioModule* module = oiioModule(why);
+    if (!module) throw InputError("cannot write '" + path + "': no animated GIF without OpenImageIO (" + why + ")");
+    std::unique_ptr<GifWriter> writer;
+    const std::string error = module->openGif(path, width, height, frames, fps, writer);
+    if (!error.empty()) throw InputError("cannot write '" + path + "': " + error);
+    return writer;
+}
+
+AnimationInfo readAnimationFileInfo(const std::string& path) {
+    std::string why;
+    const OiioModule* module = oiioModule(why);
+    if (!module) throw InputError("cannot read '" + path + "': no animations without OpenImageIO (" + why + ")");
+    AnimationInfo info;
+    const std::string error = module->readAnimationInfo(path, info);
+    if (!error.empty()) throw InputError("cannot read '" + path + "': " + error);
+    return info;
+}
+#else
 std::unique_ptr<GifWriter> openGif(const std::string& path, int, int, int, int) {
     throw InputError("cannot write '" + path + "': this build (the portable bundle, without OpenImageIO) writes no "
                      "animated GIF; write .mp4 or a folder of frames");
@@ -127,5 +225,6 @@ AnimationInfo readAnimationFileInfo(const std::string& path) {
     throw InputError("cannot read '" + path + "': this build (the portable bundle, without OpenImageIO) reads no "
                      "animations");
 }
+#endif
 
 }  // namespace viz::codec

@@ -1,33 +1,20 @@
-// The image formats through OpenImageIO (see image_codec.h).
+// The OpenImageIO module (oiio_module.h): any image format OpenImageIO reads, animated GIFs, animation
+// info. Nothing here throws to the program.
+#include "core/oiio_module.h"
+
 #include <OpenImageIO/imageio.h>
 
+#include <exception>
 #include <vector>
 
-#include "core/error.h"
-#include "core/image_codec.h"
-
 namespace viz::codec {
-
-std::string backendName() { return "OpenImageIO"; }
-
 namespace {
-
-std::string writeWith(const std::string& path, const OIIO::ImageSpec& spec, OIIO::TypeDesc type, const void* data) {
-    auto out = OIIO::ImageOutput::create(path);
-    if (!out) return OIIO::geterror();
-    bool ok = out->open(path, spec) && out->write_image(type, data);
-    const std::string err = out->geterror();
-    ok = out->close() && ok;
-    return ok ? std::string() : (err.empty() ? std::string("write failed") : err);
-}
 
 class OiioGif : public GifWriter {
 public:
     OiioGif(const std::string& path, int width, int height, int frames, int fps)
         : mPath(path), mSpec(width, height, 3, OIIO::TypeDesc::UINT8), mFrames(frames) {
         mOutput = OIIO::ImageOutput::create(path);
-        if (!mOutput || !mOutput->supports("multiimage") || !mOutput->supports("appendsubimage"))
-            throw InputError("cannot write '" + path + "': this OpenImageIO writes no animated GIF");
         const int rate[2] = {fps, 1};
         mSpec.attribute("FramesPerSecond", OIIO::TypeRational, rate);
         mSpec.attribute("oiio:LoopCount", 0);  // loop for ever
@@ -35,6 +22,7 @@ public:
     ~OiioGif() override {
         if (mOutput) mOutput->close();
     }
+    bool usable() const { return mOutput && mOutput->supports("multiimage") && mOutput->supports("appendsubimage"); }
     std::string addFrame(const std::uint8_t* rgb, int index) override {
         bool ok = true;
         if (index == 0) {
@@ -60,36 +48,24 @@ private:
     std::unique_ptr<OIIO::ImageOutput> mOutput;
 };
 
-}  // namespace
+std::string reason(const std::string& error) { return error.empty() ? std::string("unknown error") : error; }
 
-std::string writeExr(const std::string& path, const Image& image) {
-    OIIO::ImageSpec spec(image.width, image.height, image.channels, OIIO::TypeDesc::FLOAT);
-    spec.attribute("compression", "zip");
-    return writeWith(path, spec, OIIO::TypeDesc::FLOAT, image.pixels.data());
-}
-
-std::string writePng(const std::string& path, int width, int height, int channels, const std::uint8_t* bytes) {
-    return writeWith(path, OIIO::ImageSpec(width, height, channels, OIIO::TypeDesc::UINT8), OIIO::TypeDesc::UINT8, bytes);
-}
-
-Image readImageFile(const std::string& path) {
+std::string moduleReadImage(const std::string& path, Image& image) try {
     auto in = OIIO::ImageInput::open(path);
-    if (!in) throw InputError("cannot read image '" + path + "': " + OIIO::geterror());
+    if (!in) return reason(OIIO::geterror());
     const OIIO::ImageSpec& spec = in->spec();
-    Image image(spec.width, spec.height, spec.nchannels);
+    image = Image(spec.width, spec.height, spec.nchannels);
     if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, image.pixels.data()))
-        throw InputError("cannot read image '" + path + "': " + in->geterror());
-    return image;
+        return reason(in->geterror());
+    return {};
+} catch (const std::exception& e) {
+    return e.what();
 }
 
-std::unique_ptr<GifWriter> openGif(const std::string& path, int width, int height, int frames, int fps) {
-    return std::make_unique<OiioGif>(path, width, height, frames, fps);
-}
-
-AnimationInfo readAnimationFileInfo(const std::string& path) {
+std::string moduleAnimationInfo(const std::string& path, AnimationInfo& info) try {
     auto in = OIIO::ImageInput::open(path);
-    if (!in) throw InputError("cannot read '" + path + "': " + OIIO::geterror());
-    AnimationInfo info;
+    if (!in) return reason(OIIO::geterror());
+    info = AnimationInfo{};
     info.width = in->spec().width;
     info.height = in->spec().height;
     const OIIO::ParamValue* rate = in->spec().find_attribute("FramesPerSecond", OIIO::TypeRational);
@@ -100,7 +76,25 @@ AnimationInfo readAnimationFileInfo(const std::string& path) {
     int frames = 1;
     while (in->seek_subimage(frames, 0)) ++frames;
     info.frames = frames;
-    return info;
+    return {};
+} catch (const std::exception& e) {
+    return e.what();
 }
 
+std::string moduleOpenGif(const std::string& path, int width, int height, int frames, int fps, std::unique_ptr<GifWriter>& writer) try {
+    auto gif = std::make_unique<OiioGif>(path, width, height, frames, fps);
+    if (!gif->usable()) return "this OpenImageIO writes no animated GIF";
+    writer = std::move(gif);
+    return {};
+} catch (const std::exception& e) {
+    return e.what();
+}
+
+}  // namespace
 }  // namespace viz::codec
+
+extern "C" __attribute__((visibility("default"))) const viz::codec::OiioModule* airlightOiioModule() {
+    static const viz::codec::OiioModule module{viz::codec::kOiioModuleAbi, viz::codec::moduleReadImage,
+                                               viz::codec::moduleAnimationInfo, viz::codec::moduleOpenGif};
+    return &module;
+}
