@@ -23,11 +23,10 @@ void workCount(int counter, uint n) {
     if (gWorkCounted) gWorkOwn[counter] += n;
 }
 void workPixel(ivec2 texel) { gWorkCounted = gWorkPixel.x < 0 || texel == gWorkPixel.xy; }
+// Called once per invocation: at the end of main() or just before a discard, after which nothing runs.
 void workFlush() {
-    for (int i = 0; i < kWorkCounterCount; ++i) {
+    for (int i = 0; i < kWorkCounterCount; ++i)
         if (gWorkOwn[i] != 0u) atomicAdd(gWork[i], gWorkOwn[i]);
-        gWorkOwn[i] = 0u;
-    }
 }
 void workCountedMain();
 void main() {

@@ -196,23 +196,28 @@ Image readImageFile(const std::string& path) {
 }
 
 #ifdef VIZ_OIIO_MODULE
-std::unique_ptr<GifWriter> openGif(const std::string& path, int width, int height, int frames, int fps) {
+namespace {
+// The loaded module, or the error "PREFIX no WHAT without OpenImageIO (why it did not load)".
+const OiioModule& requireOiioModule(const std::string& prefix, const char* what) {
     std::string why;
-    const OiioModule* module = oiioModule(why);
-    if (!module) throw InputError("cannot write '" + path + "': no animated GIF without OpenImageIO (" + why + ")");
+    if (const OiioModule* module = oiioModule(why)) return *module;
+    throw InputError(prefix + "no " + what + " without OpenImageIO (" + why + ")");
+}
+}  // namespace
+
+std::unique_ptr<GifWriter> openGif(const std::string& path, int width, int height, int frames, int fps) {
+    const std::string prefix = "cannot write '" + path + "': ";
     std::unique_ptr<GifWriter> writer;
-    const std::string error = module->openGif(path, width, height, frames, fps, writer);
-    if (!error.empty()) throw InputError("cannot write '" + path + "': " + error);
+    const std::string error = requireOiioModule(prefix, "animated GIF").openGif(path, width, height, frames, fps, writer);
+    if (!error.empty()) throw InputError(prefix + error);
     return writer;
 }
 
 AnimationInfo readAnimationFileInfo(const std::string& path) {
-    std::string why;
-    const OiioModule* module = oiioModule(why);
-    if (!module) throw InputError("cannot read '" + path + "': no animations without OpenImageIO (" + why + ")");
+    const std::string prefix = "cannot read '" + path + "': ";
     AnimationInfo info;
-    const std::string error = module->readAnimationInfo(path, info);
-    if (!error.empty()) throw InputError("cannot read '" + path + "': " + error);
+    const std::string error = requireOiioModule(prefix, "animations").readAnimationInfo(path, info);
+    if (!error.empty()) throw InputError(prefix + error);
     return info;
 }
 #else
