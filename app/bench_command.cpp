@@ -103,7 +103,8 @@ Options parseBenchOptions(Args& args) {
         o.height = o.quick ? 120 : 480;
     }
     if (!o.runs) o.runs = o.quick ? 3 : 5;
-    for (const auto& [name, value] : o.settings) {
+    for (const auto& setting : o.settings) {
+        const std::string& name = setting.first;  // not a structured binding: clang before 16 cannot capture one
         const bool taken = std::any_of(o.techniques.begin(), o.techniques.end(), [&](const std::string& id) {
             return viz::findParam(*viz::makeTechnique(id), name) != nullptr;
         });

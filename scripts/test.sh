@@ -11,16 +11,19 @@ export VIZ_REQUIRE_DISPLAY="${VIZ_REQUIRE_DISPLAY:-1}"
 export VIZ_REQUIRE_BROWSER="${VIZ_REQUIRE_BROWSER:-1}"
 export LP_NUM_THREADS="${LP_NUM_THREADS:-2}"
 export AIRLIGHT_CACHE_DIR="${AIRLIGHT_CACHE_DIR:-$PWD/build/ci/cache}"
-# The scene code and the CPU maths built with clang, ASan and UBSan (preset fuzz): the scene tests (the
-# loader's hardening and fuzz regressions among them), the airlight kernel's and minmax's and vsv's CPU
-# tests with leak checks, then the fuzz target: the regressions and seeds replayed, and 60 s of fuzzing.
-# AIRLIGHT_SKIP_FUZZ=1 leaves it out (a quick local run).
+# Every CPU test binary built with clang, ASan and UBSan (preset fuzz), run with leak checks: the scene
+# tests (the loader's hardening and fuzz regressions among them), the maths, the reference, minmax's and
+# vsv's CPU code, the plans, the window's plain parts and the report; then the fuzz target: the regressions
+# and seeds replayed, and 60 s of fuzzing. AIRLIGHT_SKIP_FUZZ=1 leaves it out (a quick local run).
+cpu_test_binaries=(viz_scene_tests viz_math_tests viz_minmax_tests viz_vsv_tests viz_reference_tests viz_plan_tests
+                   viz_ui_tests viz_report_tests)
 fuzz() {
     cmake --preset fuzz >/dev/null &&
         cmake --build --preset fuzz -j "$1" &&
-        for t in viz_scene_tests viz_math_tests viz_minmax_tests viz_vsv_tests; do
-            ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-                "build/fuzz/tests/$t" --gtest_brief=1 || return 1
+        for t in "${cpu_test_binaries[@]}"; do
+            # A reference cache of its own: frames computed by this build never stand in for the suite's.
+            AIRLIGHT_CACHE_DIR="$PWD/build/fuzz/cache" ASAN_OPTIONS=detect_leaks=1 \
+                UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 "build/fuzz/tests/$t" --gtest_brief=1 || return 1
         done &&
         ctest --preset fuzz
 }
@@ -53,7 +56,7 @@ else
     suite -E '^Soak\.' || status=1
     fuzz_status=0
     wait "$fuzz_pid" || fuzz_status=$?
-    echo "---- preset fuzz (scene, kernel, minmax and vsv CPU tests under ASan and UBSan, gltf_fuzz), beside the suite ----"
+    echo "---- preset fuzz (every CPU test binary under ASan and UBSan, gltf_fuzz), beside the suite ----"
     cat build/fuzz-run.log
     if [ "$fuzz_status" != 0 ]; then
         echo "preset fuzz failed (exit $fuzz_status)"

@@ -4,6 +4,8 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <optional>
+#include <string>
 
 #include <unistd.h>
 
@@ -30,10 +32,13 @@ FrameOutput runReference(const scene::Scene& s, int w, int h, Settings given, in
     return viz::testing::runTechnique(*tech, s, given, w, h, stopAfter);
 }
 
-// A cache folder of its own, removed afterwards; AIRLIGHT_CACHE_DIR points at it meanwhile.
+// A cache folder of its own, removed afterwards; AIRLIGHT_CACHE_DIR points at it meanwhile and is then
+// restored, so that later tests of the same process (the whole binary in one run, as under ASan in CI)
+// use the cache they were given.
 class TempCacheDir {
 public:
     TempCacheDir() {
+        if (const char* given = std::getenv("AIRLIGHT_CACHE_DIR")) mGiven = given;
         mPath = std::filesystem::temp_directory_path() /
                 ("airlight-reference-test-" + std::to_string(::getpid()));
         std::filesystem::remove_all(mPath);
@@ -41,7 +46,8 @@ public:
         ::setenv("AIRLIGHT_CACHE_DIR", mPath.c_str(), 1);
     }
     ~TempCacheDir() {
-        ::unsetenv("AIRLIGHT_CACHE_DIR");
+        if (mGiven) ::setenv("AIRLIGHT_CACHE_DIR", mGiven->c_str(), 1);
+        else ::unsetenv("AIRLIGHT_CACHE_DIR");
         std::filesystem::remove_all(mPath);
     }
     std::vector<std::filesystem::path> files() const {
@@ -52,6 +58,7 @@ public:
 
 private:
     std::filesystem::path mPath;
+    std::optional<std::string> mGiven;
 };
 
 TEST(ReferenceTechnique, DeclaresStagesAndParams) {

@@ -8,13 +8,17 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 #include "core/image.h"
 #include "core/image_io.h"
 
 namespace {
 
 std::string tempPath(const std::string& name) {
-    return (std::filesystem::temp_directory_path() / ("airlight_image_io_" + name)).string();
+    // The process id in the name: the same binary may run twice at once (the suite, and under ASan beside it).
+    return (std::filesystem::temp_directory_path() / ("airlight_image_io_" + std::to_string(::getpid()) + "_" + name))
+        .string();
 }
 
 // A 16-bit grey PNG of one row, `samples` wide, written here byte by byte (PNG specification: IHDR,

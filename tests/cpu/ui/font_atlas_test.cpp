@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include "core/error.h"
 #include "ui/font.h"
 #include "ui/text_renderer.h"
@@ -43,7 +45,7 @@ TEST(FontAtlas, MissingFileIsAnInputErrorNamingThePath) {
 }
 
 TEST(FontAtlas, NonFontFileIsAnInputError) {
-    const auto path = std::filesystem::temp_directory_path() / "viz_ui_not_a_font.ttf";
+    const auto path = std::filesystem::temp_directory_path() / ("viz_ui_not_a_font_" + std::to_string(::getpid()) + ".ttf");
     {
         std::ofstream f(path, std::ios::binary);
         f << "this is plain text, not a TrueType font at all";
