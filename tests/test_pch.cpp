@@ -1,1 +1,0 @@
-// Empty: the target viz_test_pch exists to precompile the test binaries' common headers (tests/CMakeLists.txt).
