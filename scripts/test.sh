@@ -47,7 +47,7 @@ else
     # core, it would leave the other idle), its output printed after the suite's. At the suite's own
     # priority: at nice 10 the two busy tests left it so little that it ran 3.5 minutes past the suite's
     # end with the other core idle (its 60 s of fuzzing are wall-clock seconds either way). Its build runs
-    # two compilers: with one, since it builds every CPU test binary, it ran 5.7 minutes past the suite's
+    # two compilers: with one, since it builds every CPU test binary, it ran about 5.4 minutes past the suite's
     # end, the other core idle.
     mkdir -p build
     status=0

@@ -4,7 +4,6 @@
 
 #include <gtest/gtest.h>
 #include <sys/wait.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cstdlib>
@@ -13,6 +12,8 @@
 #include <memory>
 #include <sstream>
 #include <string>
+
+#include "temp_dir.h"
 
 namespace viz::testing {
 
@@ -33,16 +34,6 @@ inline std::string readFile(const fs::path& p) {
 
 class CliTest : public ::testing::Test {
 protected:
-    void SetUp() override {
-        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        std::string name = "airlight_cli_" + std::string(info->name()) + "_" + std::to_string(::getpid());
-        for (char& c : name)
-            if (c == '/') c = '_';  // a parameterised test's name: one folder, not a folder in a folder
-        mDir = fs::temp_directory_path() / name;
-        fs::remove_all(mDir);
-        fs::create_directories(mDir);
-    }
-    void TearDown() override { fs::remove_all(mDir); }
 
     RunResult run(const std::string& args) {
         const fs::path out = mDir / "stdout.txt", err = mDir / "stderr.txt";
@@ -73,7 +64,8 @@ protected:
         EXPECT_NE(r.err.find(mentions), std::string::npos) << "expected '" << mentions << "' in: " << r.err;
     }
 
-    fs::path mDir;
+    TempDir mTemp{"cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name())};
+    fs::path mDir = mTemp.path();
 };
 
 // Loads `page` in headless Chromium through a copy that counts the images that failed to load; returns

@@ -12,8 +12,6 @@
 #include <string>
 #include <vector>
 
-#include <unistd.h>
-
 #include <glm/glm.hpp>
 
 #include "cpu/math/airlight_reference.h"
@@ -22,6 +20,7 @@
 #include "gl/program.h"
 #include "gl/texture.h"
 #include "techniques/polyvol/airlight_lut.h"
+#include "temp_dir.h"
 
 namespace {
 
@@ -52,13 +51,11 @@ struct Segment {
 
 // The probe shader lives in a temporary file (shader includes resolve against the shader directory).
 viz::gl::Program probeProgram() {
-    const std::filesystem::path path =
-        std::filesystem::temp_directory_path() / ("polyvol_lut_probe_" + std::to_string(::getpid()) + ".comp");
+    const viz::testing::TempDir temp("polyvol_lut_probe");
+    const std::filesystem::path path = temp / "probe.comp";
     std::ofstream(path) << kProbeShader;
-    viz::gl::Program p = viz::gl::Program::compile(
+    return viz::gl::Program::compile(
         {.stages = {path.string()}, .defines = {{"AIRLIGHT_LUT", "1"}}, .label = "test.polyvol_lut_probe"});
-    std::filesystem::remove(path);
-    return p;
 }
 
 std::vector<float> runProbe(const std::vector<Segment>& cases, double g) {

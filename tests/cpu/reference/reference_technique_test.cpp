@@ -7,8 +7,6 @@
 #include <optional>
 #include <string>
 
-#include <unistd.h>
-
 #include "core/error.h"
 #include "reference_test_util.h"
 #include "scene/builtin_scenes.h"
@@ -17,6 +15,7 @@
 #include "techniques/reference/ray_tracer.h"
 #include "techniques/reference/reference.h"
 #include "technique_run.h"
+#include "temp_dir.h"
 
 namespace viz {
 namespace {
@@ -39,25 +38,20 @@ class TempCacheDir {
 public:
     TempCacheDir() {
         if (const char* given = std::getenv("AIRLIGHT_CACHE_DIR")) mGiven = given;
-        mPath = std::filesystem::temp_directory_path() /
-                ("airlight-reference-test-" + std::to_string(::getpid()));
-        std::filesystem::remove_all(mPath);
-        std::filesystem::create_directories(mPath);
-        ::setenv("AIRLIGHT_CACHE_DIR", mPath.c_str(), 1);
+        ::setenv("AIRLIGHT_CACHE_DIR", mPath.path().c_str(), 1);
     }
     ~TempCacheDir() {
         if (mGiven) ::setenv("AIRLIGHT_CACHE_DIR", mGiven->c_str(), 1);
         else ::unsetenv("AIRLIGHT_CACHE_DIR");
-        std::filesystem::remove_all(mPath);
     }
     std::vector<std::filesystem::path> files() const {
         std::vector<std::filesystem::path> out;
-        for (const auto& e : std::filesystem::directory_iterator(mPath)) out.push_back(e.path());
+        for (const auto& e : std::filesystem::directory_iterator(mPath.path())) out.push_back(e.path());
         return out;
     }
 
 private:
-    std::filesystem::path mPath;
+    viz::testing::TempDir mPath{"reference_cache"};
     std::optional<std::string> mGiven;
 };
 

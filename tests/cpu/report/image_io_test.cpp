@@ -8,17 +8,15 @@
 #include <string>
 #include <vector>
 
-#include <unistd.h>
-
 #include "core/image.h"
 #include "core/image_io.h"
+#include "temp_dir.h"
 
 namespace {
 
 std::string tempPath(const std::string& name) {
-    // The process id in the name: the same binary may run twice at once (the suite, and under ASan beside it).
-    return (std::filesystem::temp_directory_path() / ("airlight_image_io_" + std::to_string(::getpid()) + "_" + name))
-        .string();
+    static const viz::testing::TempDir dir("image_io");
+    return (dir / name).string();
 }
 
 // A 16-bit grey PNG of one row, `samples` wide, written here byte by byte (PNG specification: IHDR,

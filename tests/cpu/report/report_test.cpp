@@ -1,7 +1,6 @@
 // The report's figures and files: error metrics, the Pareto front and speed-up at equal error, and the
 // CSV / JSON / HTML writers, all on constructed inputs whose answers are known independently.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
@@ -16,6 +15,7 @@
 #include "report/report_table.h"
 #include "report/text_output.h"
 #include "report/tradeoff.h"
+#include "temp_dir.h"
 
 namespace viz::report {
 namespace {
@@ -180,8 +180,6 @@ TEST(Tradeoff, APlanSavingIsSignificantOnlyWhenTheRunsDoNotOverlap) {
 class ReportFiles : public ::testing::Test {
 protected:
     void SetUp() override {
-        mDir = fs::temp_directory_path() / ("airlight_report_" + std::to_string(::getpid()));
-        fs::create_directories(mDir);
         for (int i = 0; i < 3; ++i) {
             ReportRow r;
             r.scene = "grate";
@@ -199,8 +197,8 @@ protected:
         }
         annotateTradeoffs(mRows);
     }
-    void TearDown() override { fs::remove_all(mDir); }
-    fs::path mDir;
+    viz::testing::TempDir mTemp{"report"};
+    fs::path mDir = mTemp.path();
     std::vector<ReportRow> mRows;
 };
 

@@ -1,7 +1,6 @@
 // The report's temporal part on constructed rows: the ranking by error, time and stability, and the
 // temporal figures in results.csv, results.json and index.html.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
@@ -13,6 +12,7 @@
 
 #include "report/report_table.h"
 #include "report/temporal_report.h"
+#include "temp_dir.h"
 
 namespace viz::report {
 namespace {
@@ -46,22 +46,20 @@ ReportRow row(const std::string& technique, const std::string& setting, double m
 class TemporalReport : public ::testing::Test {
 protected:
     void SetUp() override {
-        mDir = fs::temp_directory_path() / ("airlight_temporal_report_" + std::to_string(::getpid()));
-        fs::create_directories(mDir);
         // raymarch: accurate and slow, and the steadiest; slices: fast, wrong and jumping; vsv: wrong but
         // stable; minmax: never measured along the path.
         mRows = {row("raymarch", "N=16", 40.0, 0.2, 0.02), row("raymarch", "N=64", 90.0, 0.05, 0.004),
                  row("slices", "planes=32", 5.0, 0.3, 0.2), row("vsv", "voxels=64", 8.0, 0.4, 0.01),
                  row("minmax", "map=512", 12.0, kNaNFigure, std::nullopt)};
     }
-    void TearDown() override { fs::remove_all(mDir); }
     std::string read(const std::string& name) const {
         std::ifstream in(mDir / name);
         std::stringstream ss;
         ss << in.rdbuf();
         return ss.str();
     }
-    fs::path mDir;
+    viz::testing::TempDir mTemp{"temporal_report"};
+    fs::path mDir = mTemp.path();
     std::vector<ReportRow> mRows;
 };
 

@@ -3,43 +3,26 @@
 
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <string>
-#include <system_error>
 #include <vector>
-
-#include <unistd.h>
 
 #include <gtest/gtest.h>
 
 #include "core/error.h"
 #include "scene/scene.h"
+#include "temp_dir.h"
 
 namespace viz::scene::test {
 
-// The folders freshTempDir made, removed when the test program exits (ctest runs each test in a process
-// of its own, so a folder lives as long as its test).
-struct TempDirs {
-    std::vector<std::filesystem::path> dirs;
-    ~TempDirs() {
-        for (const auto& d : dirs) {
-            std::error_code ec;
-            std::filesystem::remove_all(d, ec);
-        }
-    }
-};
-
+// A fresh folder for the running test, removed when the test program exits (ctest runs each test in a
+// process of its own, so a folder lives as long as its test).
 inline std::filesystem::path freshTempDir(const std::string& tag) {
-    static TempDirs made;
+    static std::vector<std::unique_ptr<viz::testing::TempDir>> made;
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    std::string name = "airlight_scene_" + tag + "_" + info->test_suite_name() + "_" + info->name() + "_" +
-                       std::to_string(::getpid());
-    for (char& c : name)
-        if (c == '/') c = '_';  // parameterised tests' names
-    std::filesystem::path dir = std::filesystem::temp_directory_path() / name;
-    std::filesystem::remove_all(dir);
-    std::filesystem::create_directories(dir);
-    made.dirs.push_back(dir);
-    return dir;
+    made.push_back(std::make_unique<viz::testing::TempDir>("scene_" + tag + "_" + info->test_suite_name() + "_" +
+                                                           info->name()));
+    return made.back()->path();
 }
 
 inline void writeText(const std::filesystem::path& path, const std::string& text) {

@@ -6,11 +6,10 @@
 
 #include <gtest/gtest.h>
 
-#include <unistd.h>
-
 #include "core/error.h"
 #include "ui/font.h"
 #include "ui/text_renderer.h"
+#include "temp_dir.h"
 
 namespace {
 
@@ -45,13 +44,13 @@ TEST(FontAtlas, MissingFileIsAnInputErrorNamingThePath) {
 }
 
 TEST(FontAtlas, NonFontFileIsAnInputError) {
-    const auto path = std::filesystem::temp_directory_path() / ("viz_ui_not_a_font_" + std::to_string(::getpid()) + ".ttf");
+    const viz::testing::TempDir temp("not_a_font");
+    const auto path = temp / "not_a_font.ttf";
     {
         std::ofstream f(path, std::ios::binary);
         f << "this is plain text, not a TrueType font at all";
     }
     EXPECT_THROW(FontAtlas::bake(path.string(), 16.0f), viz::InputError);
-    std::filesystem::remove(path);
 }
 
 TEST(FontAtlas, BakesPrintableAsciiAndGreek) {

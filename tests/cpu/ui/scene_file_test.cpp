@@ -4,9 +4,9 @@
 #include <filesystem>
 #include <fstream>
 #include <thread>
-#include <unistd.h>
 
 #include "scene_file.h"
+#include "temp_dir.h"
 
 namespace airlight {
 namespace {
@@ -17,15 +17,13 @@ using std::chrono::milliseconds;
 class SceneFileTest : public ::testing::Test {
 protected:
     void SetUp() override {
-        mDir = fs::temp_directory_path() / ("airlight_scene_file_" + std::to_string(::getpid()));
-        fs::remove_all(mDir);
         fs::create_directories(mDir / "halls");
         for (const char* f : {"hall_a.gltf", "hall_b.GLB", "hall_notes.txt", ".hidden.gltf", "other.gltf"})
             std::ofstream(mDir / f) << "x";
     }
-    void TearDown() override { fs::remove_all(mDir); }
     std::string at(const std::string& name) const { return (mDir / name).string(); }
-    fs::path mDir;
+    viz::testing::TempDir mTemp{"scene_file"};
+    fs::path mDir = mTemp.path();
 };
 
 TEST_F(SceneFileTest, CompletionListsSceneFilesAndFoldersStartingWithTheTypedName) {

@@ -8,10 +8,10 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <unistd.h>
 
 #include "core/error.h"
 #include "script_player.h"
+#include "temp_dir.h"
 
 namespace airlight {
 namespace {
@@ -60,11 +60,10 @@ public:
 class ScriptPlayerTest : public ::testing::Test {
 protected:
     ScriptPlayer play(const std::string& text) {
-        const fs::path p = fs::temp_directory_path() / ("airlight_script_player_" + std::to_string(::getpid()) + ".txt");
+        const viz::testing::TempDir temp("script_player");
+        const fs::path p = temp / "script.txt";
         std::ofstream(p) << text;
-        ScriptPlayer player(parseScript(p.string()), "script.txt");
-        fs::remove(p);
-        return player;
+        return ScriptPlayer(parseScript(p.string()), "script.txt");
     }
     using Calls = std::vector<std::string>;
     RecordingHost host;

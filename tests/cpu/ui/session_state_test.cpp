@@ -4,13 +4,13 @@
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
-#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
 
 #include "core/error.h"
 #include "session_state.h"
+#include "temp_dir.h"
 
 namespace airlight {
 namespace {
@@ -150,8 +150,8 @@ TEST(SessionState, LightPlacementsRoundTripAndApplyOnlyToAsManyLights) {
 }
 
 TEST(SessionState, BrokenFilesGiveTheDefaultsAndAReasonNamingTheFile) {
-    const fs::path dir = fs::temp_directory_path() / ("airlight_state_" + std::to_string(::getpid()));
-    fs::create_directories(dir);
+    const viz::testing::TempDir temp("state");
+    const fs::path dir = temp.path();
     const std::string good = sessionToJson(sample());
     const std::vector<std::pair<std::string, std::string>> broken = {
         {"truncated", good.substr(0, good.size() / 2)},
@@ -186,9 +186,8 @@ TEST(SessionState, BrokenFilesGiveTheDefaultsAndAReasonNamingTheFile) {
 // A broken file is moved aside whole (the window then saves a fresh one over the name, and the
 // user's hand edit survives as .broken); hostile nesting and magnitudes are reasons, not crashes.
 TEST(SessionState, BrokenFilesAreMovedAsideAndHostileOnesRefused) {
-    const fs::path dir = fs::temp_directory_path() / ("airlight_state_aside_" + std::to_string(::getpid()));
-    fs::remove_all(dir);
-    fs::create_directories(dir);
+    const viz::testing::TempDir temp("state_aside");
+    const fs::path dir = temp.path();
     const std::string good = sessionToJson(sample());
     std::string deepLayout = std::string(good);
     {
