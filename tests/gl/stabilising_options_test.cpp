@@ -61,14 +61,15 @@ TEST_F(StabilisingOptions, EachLowersItsTechniquesTemporalError) {
         const scene::MotionPath path = scene::parseMotionPath(c.path);
         std::vector<scene::Pose> poses;
         for (int i = 0; i < kFrames; ++i) poses.push_back(scene::poseAt(path, base, i, kFrames));
-        // The reference frames, once per scene and path.
+        // The reference frames, once per scene and path. tv-room's area light with 2 x 2 cells: against 4 x 4
+        // its temporal RMS moved from 0.1026 -> 0.0773 to 0.1027 -> 0.0776, and the test from 57 s to 39 s.
         std::vector<Image>& reference = references[c.scene + " " + c.path];
         if (reference.empty()) {
             auto t = makeTechnique("reference");
             scene::Scene moving = base;
             for (const scene::Pose& pose : poses) {
                 scene::applyPose(pose, moving);
-                reference.push_back(runTechnique(*t, moving, {{"area_samples", 4}}, kW, kH).airlight);
+                reference.push_back(runTechnique(*t, moving, {{"area_samples", 2}}, kW, kH).airlight);
             }
         }
         const auto options = makeTechnique(c.technique)->stabilisingOptions(base);

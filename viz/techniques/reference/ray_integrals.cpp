@@ -31,7 +31,10 @@ VisibilitySearch findLitIntervals(const std::function<bool(double)>& visible, do
             ts.push_back(std::clamp(tP + h * std::tan(th), 0.0, d));
         }
     }
-    std::sort(ts.begin(), ts.end());
+    // Both runs are sorted already (tan and the clamp are monotonic): merge them, and sort only should
+    // rounding ever have broken the order.
+    std::inplace_merge(ts.begin(), ts.begin() + uniform, ts.end());
+    if (!std::is_sorted(ts.begin(), ts.end())) std::sort(ts.begin(), ts.end());
     ts.erase(std::unique(ts.begin(), ts.end()), ts.end());
 
     std::vector<char> lit(ts.size());
@@ -166,7 +169,7 @@ glm::dvec3 pointEmitterSegment(const PointEmitter& e, const glm::dvec3& o, const
 
     auto integrand = [&](double th) {
         const double s = std::sin(th), c = std::cos(th);
-        const double t = g.tP + h * std::tan(th);
+        const double t = g.tP + h * (s / c);  // tan(th) from the sine and cosine already at hand
         const double r = h / c;
         const glm::dvec3 dir = s * w - c * g.nHat;
         const double phase = airlight::phaseHG(-s, m.g);
