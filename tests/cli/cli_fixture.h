@@ -34,7 +34,6 @@ inline std::string readFile(const fs::path& p) {
 
 class CliTest : public ::testing::Test {
 protected:
-
     RunResult run(const std::string& args) {
         const fs::path out = mDir / "stdout.txt", err = mDir / "stderr.txt";
         // AIRLIGHT_TEST_EXE runs another binary (a long fuzz campaign on a copy while the tree rebuilds).
