@@ -38,7 +38,7 @@ class TempCacheDir {
 public:
     TempCacheDir() {
         if (const char* given = std::getenv("AIRLIGHT_CACHE_DIR")) mGiven = given;
-        ::setenv("AIRLIGHT_CACHE_DIR", mPath.path().c_str(), 1);
+        ::setenv("AIRLIGHT_CACHE_DIR", mDir.path().c_str(), 1);
     }
     ~TempCacheDir() {
         if (mGiven) ::setenv("AIRLIGHT_CACHE_DIR", mGiven->c_str(), 1);
@@ -46,12 +46,12 @@ public:
     }
     std::vector<std::filesystem::path> files() const {
         std::vector<std::filesystem::path> out;
-        for (const auto& e : std::filesystem::directory_iterator(mPath.path())) out.push_back(e.path());
+        for (const auto& e : std::filesystem::directory_iterator(mDir.path())) out.push_back(e.path());
         return out;
     }
 
 private:
-    viz::testing::TempDir mPath{"reference_cache"};
+    viz::testing::TempDir mDir{"reference_cache"};
     std::optional<std::string> mGiven;
 };
 

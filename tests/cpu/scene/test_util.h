@@ -1,9 +1,9 @@
 // Helpers shared by the scene tests: a fresh temporary folder per test, and file writing.
 #pragma once
 
+#include <deque>
 #include <filesystem>
 #include <fstream>
-#include <memory>
 #include <string>
 #include <vector>
 
@@ -18,11 +18,9 @@ namespace viz::scene::test {
 // A fresh folder for the running test, removed when the test program exits (ctest runs each test in a
 // process of its own, so a folder lives as long as its test).
 inline std::filesystem::path freshTempDir(const std::string& tag) {
-    static std::vector<std::unique_ptr<viz::testing::TempDir>> made;
+    static std::deque<viz::testing::TempDir> made;  // a deque: its elements never move
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    made.push_back(std::make_unique<viz::testing::TempDir>("scene_" + tag + "_" + info->test_suite_name() + "_" +
-                                                           info->name()));
-    return made.back()->path();
+    return made.emplace_back("scene_" + tag + "_" + info->test_suite_name() + "_" + info->name()).path();
 }
 
 inline void writeText(const std::filesystem::path& path, const std::string& text) {

@@ -31,10 +31,7 @@ VisibilitySearch findLitIntervals(const std::function<bool(double)>& visible, do
             ts.push_back(std::clamp(tP + h * std::tan(th), 0.0, d));
         }
     }
-    // Both runs are sorted already (tan and the clamp are monotonic): merge them, and sort only should
-    // rounding ever have broken the order.
-    std::inplace_merge(ts.begin(), ts.begin() + uniform, ts.end());
-    if (!std::is_sorted(ts.begin(), ts.end())) std::sort(ts.begin(), ts.end());
+    std::sort(ts.begin(), ts.end());
     ts.erase(std::unique(ts.begin(), ts.end()), ts.end());
 
     std::vector<char> lit(ts.size());
