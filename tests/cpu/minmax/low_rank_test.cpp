@@ -6,7 +6,8 @@
 #include <cstdio>
 #include <numbers>
 
-#include <Eigen/Dense>
+#include <Eigen/Core>
+#include <Eigen/Eigenvalues>
 
 #include "shared/airlight.h"
 #include "techniques/minmax/low_rank.h"
@@ -52,7 +53,9 @@ TEST(MinmaxLowRank, IntegrandIntegratesToTheClosedForm) {
 // The tables the shader reads (float B_i and Gamma_i) reach the best possible rank-N error: the test
 // samples the integrand on the grid itself (scaledIntegrand, checked above against the closed form),
 // reconstructs from the tables, and compares with the Eckart-Young optimum sqrt(sum_{i>=N} s_i^2 / sum s_i^2)
-// of an independent SVD (Eigen's divide-and-conquer BDCSVD; the code uses JacobiSVD). Wrong, swapped or
+// of independent singular values (the code uses Eigen's JacobiSVD; these are the positive eigenvalues of
+// the symmetric [[0, M], [M^T, 0]], from Eigen's tridiagonal QR solver, accurate to rounding in ||M||
+// (a third of the compile time of a second SVD, BDCSVD: 17 s against 52 s at -O2)). Wrong, swapped or
 // unscaled vectors, or a truncation at the wrong rank, leave the reconstruction above the optimum. The
 // reported error and singular values must equal the test's own.
 TEST(MinmaxLowRank, TablesReachTheOptimalRankNError) {
@@ -67,7 +70,11 @@ TEST(MinmaxLowRank, TablesReachTheOptimalRankNError) {
             for (int j = 0; j < n; ++j)
                 m(k, j) = viz::minmax::scaledIntegrand(f, betaLo + k * (betaHi - betaLo) / (n - 1),
                                                        f.gammaLo + j * (f.gammaHi - f.gammaLo) / (n - 1), sigmaS, sigmaT, g);
-        const Eigen::VectorXd sv = Eigen::BDCSVD<Eigen::MatrixXd>(m).singularValues();
+        Eigen::MatrixXd h = Eigen::MatrixXd::Zero(2 * n, 2 * n);
+        h.topRightCorner(n, n) = m;
+        h.bottomLeftCorner(n, n) = m.transpose();
+        const Eigen::VectorXd ascending = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(h, Eigen::EigenvaluesOnly).eigenvalues();
+        const Eigen::VectorXd sv = ascending.tail(n).reverse();
         const double all = sv.squaredNorm();
         double last = 2.0;
         for (int rank = 1; rank <= viz::minmax::kMaxRank; ++rank) {
