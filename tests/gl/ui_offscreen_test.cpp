@@ -1,7 +1,8 @@
 // Plots and handouts drawn off-screen (ui::renderOffscreen) after other GL work. The UI renderer restores
-// the program and vertex array it found bound; when the code before it deleted them while they were still
-// bound (an RAII object going out of scope after its last draw), GL deletes them for good the moment the UI
-// renderer binds its own, and binding the old names back is GL_INVALID_VALUE / GL_INVALID_OPERATION.
+// the program and vertex array it found bound. A program deleted while current (an RAII object going out
+// of scope after its last draw) stays alive only until another program is used: the UI renderer's own use
+// ends it, and binding its name back is GL_INVALID_VALUE. (A vertex array deleted while bound is unbound by
+// GL at once.)
 #include <gtest/gtest.h>
 
 #include "gl/program.h"
