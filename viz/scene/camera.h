@@ -17,14 +17,28 @@ inline double aspectOf(const Camera& cam, int width, int height) {
 
 inline glm::dvec3 cameraRight(const Camera& cam) { return glm::normalize(glm::cross(cam.forward, cam.up)); }
 
+// The rays of one width x height image: the per-image constants (the field of view's tangent, the aspect,
+// the right vector) computed once, for loops over every pixel. rays(x, y) is pixelRay's ray.
+class PixelRays {
+public:
+    PixelRays(const Camera& cam, int width, int height)
+        : mForward(cam.forward), mUp(cam.up), mRight(cameraRight(cam)), mTanHalf(std::tan(cam.yfov * 0.5)),
+          mAspect(aspectOf(cam, width, height)), mWidth(double(width)), mHeight(double(height)) {}
+    // Unit direction of the ray through the centre of pixel (x, y).
+    glm::dvec3 operator()(double x, double y) const {
+        const double ndcX = 2.0 * (x + 0.5) / mWidth - 1.0;
+        const double ndcY = 1.0 - 2.0 * (y + 0.5) / mHeight;
+        return glm::normalize(mForward + (ndcX * mTanHalf * mAspect) * mRight + (ndcY * mTanHalf) * mUp);
+    }
+
+private:
+    glm::dvec3 mForward, mUp, mRight;
+    double mTanHalf, mAspect, mWidth, mHeight;
+};
+
 // Unit direction of the ray through the centre of pixel (x, y) of a width x height image.
 inline glm::dvec3 pixelRay(const Camera& cam, int width, int height, double x, double y) {
-    const double tanHalf = std::tan(cam.yfov * 0.5);
-    const double ndcX = 2.0 * (x + 0.5) / double(width) - 1.0;
-    const double ndcY = 1.0 - 2.0 * (y + 0.5) / double(height);
-    const glm::dvec3 d = cam.forward + (ndcX * tanHalf * aspectOf(cam, width, height)) * cameraRight(cam) +
-                         (ndcY * tanHalf) * cam.up;
-    return glm::normalize(d);
+    return PixelRays(cam, width, height)(x, y);
 }
 
 // Right-handed view matrix (camera looks down -Z) and an OpenGL projection whose far plane is pushed out

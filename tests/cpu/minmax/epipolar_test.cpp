@@ -1,6 +1,7 @@
 // Epipolar coordinates (minmax/epipolar.h) and the per-light setup (epipolar_setup.h) on the CPU.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -183,6 +184,46 @@ GapMeasurement measureSliceGap(const viz::scene::Camera& cam, int w, int h, glm:
         }
     }
     return m;
+}
+
+// The setup sweeps every pixel's ray in blocks of rows on several threads. Its beta range and its smallest
+// alpha change per pixel equal, to the bit, those of one plain loop over every pixel (each pixel against
+// its left and upper neighbours), for a spot, a sun and a point light, the epipole on and off screen.
+TEST(MinmaxEpipolar, TheParallelSweepOverEveryPixelEqualsOnePlainLoop) {
+    const int w = 640, h = 360;
+    const double pi = std::numbers::pi;
+    for (int kind : {viz::render::hd::kLightSpot, viz::render::hd::kLightDirectional, viz::render::hd::kLightPoint}) {
+        for (glm::vec3 light : {glm::vec3(0.5f, 0.3f, -6.0f), glm::vec3(9.0f, 2.0f, -3.0f)}) {
+            viz::scene::Camera cam = testCamera();
+            cam.forward = glm::normalize(glm::dvec3(0.1, -0.2, -1.0));
+            cam.up = glm::normalize(glm::cross(glm::cross(cam.forward, glm::dvec3(0.0, 1.0, 0.0)), cam.forward));
+            viz::render::GpuLightCpu L{};
+            L.info = glm::ivec4(kind, -1, 0, 0);
+            L.position = glm::vec4(light, 1.0f);
+            L.direction = glm::vec4(glm::normalize(-light), 0.0f);
+            L.spot = glm::vec4(1.0f, 0.0f, 1.0f, 0.5f);
+            L.shadowMatrix = glm::mat4(0.1f);
+            L.shadowMatrix[3][3] = 1.0f;
+            const auto s = viz::minmax::setupLight({.light = &L, .camera = &cam, .width = w, .height = h});
+            double betaLo = pi, betaHi = 0.0, minGradient = std::numeric_limits<double>::max();
+            for (int y = 0; y < h; ++y) {
+                for (int x = 0; x < w; ++x) {
+                    const glm::dvec3 ray = viz::scene::pixelRay(cam, w, h, x, y);
+                    const double b = viz::minmax::betaOf(s.frame, ray);
+                    betaLo = std::min(betaLo, b);
+                    betaHi = std::max(betaHi, b);
+                    if (x == 0 || y == 0) continue;
+                    const double a = viz::minmax::alphaOf(s.frame, ray);
+                    const double gx = viz::minmax::alphaStep(viz::minmax::alphaOf(s.frame, viz::scene::pixelRay(cam, w, h, x - 1, y)), a);
+                    const double gy = viz::minmax::alphaStep(viz::minmax::alphaOf(s.frame, viz::scene::pixelRay(cam, w, h, x, y - 1)), a);
+                    minGradient = std::min(minGradient, std::sqrt(gx * gx + gy * gy));
+                }
+            }
+            EXPECT_EQ(s.betaLo, betaLo) << "light kind " << kind << " at " << light.x;
+            EXPECT_EQ(s.betaHi, betaHi) << "light kind " << kind << " at " << light.x;
+            EXPECT_EQ(s.minAlphaGradient, minGradient) << "light kind " << kind << " at " << light.x;
+        }
+    }
 }
 
 TEST(MinmaxEpipolar, SlicesKeepThePromisedGapAt1280x960ByBruteForce) {
