@@ -1,8 +1,8 @@
-// Plots and handouts drawn off-screen (ui::renderOffscreen) after other GL work. The UI renderer restores
-// the program and vertex array it found bound. A program deleted while current (an RAII object going out
-// of scope after its last draw) stays alive only until another program is used: the UI renderer's own use
-// ends it, and binding its name back is GL_INVALID_VALUE. (A vertex array deleted while bound is unbound by
-// GL at once.)
+// Plots and handouts drawn off-screen (ui::renderOffscreen) after other GL work. The UI renderer saves the
+// program and vertex array it finds bound and binds them back. A program deleted while current stays
+// current, under a name that is no longer a program, until another is used, and binding that name back is
+// GL_INVALID_VALUE: gl::Program's deleter unbinds it first (gl/handle.h). (A vertex array deleted while
+// bound is unbound by GL itself.)
 #include <gtest/gtest.h>
 
 #include "gl/program.h"
@@ -34,19 +34,21 @@ TEST_F(UiOffscreen, DrawsWhatTheListHolds) {
     EXPECT_FLOAT_EQ(middleOfASquare(), 0.0f);
 }
 
-TEST_F(UiOffscreen, AProgramAndVertexArrayDeletedWhileBoundLeaveNoErrorAndNothingBound) {
+TEST_F(UiOffscreen, AProgramAndVertexArrayDeletedWhileBoundLeaveNothingBoundAndNoErrorAfterAPlot) {
     {
         const Program program = Program::compile({.stages = {"ui/text.vert", "ui/text.frag"}, .label = "test.deleted"});
         const VertexArray vertexArray = VertexArray::create("test.deleted_vao");
         program.use();
         vertexArray.bind();
-    }  // both deleted here while still bound: GL keeps them alive until they are unbound
-    EXPECT_FLOAT_EQ(middleOfASquare(), 0.0f);
+    }  // both deleted here while still bound
     GLint program = -1, vertexArray = -1;
     glGetIntegerv(GL_CURRENT_PROGRAM, &program);
     glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &vertexArray);
-    EXPECT_EQ(program, 0) << "a name GL no longer knows is not bound back";
+    EXPECT_EQ(program, 0) << "no dead program is left current";
     EXPECT_EQ(vertexArray, 0);
+    EXPECT_FLOAT_EQ(middleOfASquare(), 0.0f);
+    glGetIntegerv(GL_CURRENT_PROGRAM, &program);
+    EXPECT_EQ(program, 0) << "the plot binds back what it found";
     EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
     // The fixture's TearDown counts the debug output's errors: none.
 }

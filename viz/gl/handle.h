@@ -71,8 +71,17 @@ struct FramebufferTraits {
 struct VertexArrayTraits {
     static void destroy(GLuint id) { glDeleteVertexArrays(1, &id); }
 };
+// A program deleted while current stays current, under a name that is no longer a program, until another
+// is used; code that saves and restores the current program (the UI renderer) would then bind that name
+// back (GL_INVALID_VALUE). Unbinding it first leaves no such name behind. (A vertex array deleted while
+// bound is unbound by GL itself.)
 struct ProgramTraits {
-    static void destroy(GLuint id) { glDeleteProgram(id); }
+    static void destroy(GLuint id) {
+        GLint current = 0;
+        glGetIntegerv(GL_CURRENT_PROGRAM, &current);
+        if (GLuint(current) == id) glUseProgram(0);
+        glDeleteProgram(id);
+    }
 };
 struct ShaderTraits {
     static void destroy(GLuint id) { glDeleteShader(id); }

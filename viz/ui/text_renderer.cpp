@@ -163,10 +163,7 @@ void TextRenderer::draw(const DrawList& list, glm::ivec2 framebufferSize) {
     glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(vertices.size()));
 
     glBindVertexArray(static_cast<GLuint>(vertexArray));
-    // A program deleted while it was current (an RAII object gone after its last draw) stays current only
-    // until another is used: ours ended it, and its name is no longer a program (binding it back is
-    // GL_INVALID_VALUE), so nothing is bound back. A vertex array deleted while bound is unbound at once.
-    glUseProgram(glIsProgram(static_cast<GLuint>(program)) ? static_cast<GLuint>(program) : 0);
+    glUseProgram(static_cast<GLuint>(program));
     glBlendFuncSeparate(static_cast<GLenum>(blendSrc), static_cast<GLenum>(blendDst), static_cast<GLenum>(blendSrcA),
                         static_cast<GLenum>(blendDstA));
     if (!blend) glDisable(GL_BLEND);

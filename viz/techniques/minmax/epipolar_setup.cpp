@@ -199,7 +199,8 @@ Setup setupLight(const SetupInput& in) {
 
     // alpha over every pixel: its range, and its smallest change per pixel (where slices are sparsest).
     const double pi = std::numbers::pi;
-    const PixelSweep sweep = sweepPixels(f, scene::PixelRays(cam, in.width, in.height), in.width, in.height);
+    const scene::PixelRays rays(cam, in.width, in.height);
+    const PixelSweep sweep = sweepPixels(f, rays, in.width, in.height);
     const double lo = sweep.alphaLo, hi = sweep.alphaHi, betaLo = sweep.betaLo, betaHi = sweep.betaHi;
     double minGradient = sweep.minGradient;
     // An image one pixel wide or tall has no neighbour across it: the rays one pixel beyond the image (to
@@ -207,9 +208,9 @@ Setup setupLight(const SetupInput& in) {
     if (in.width == 1 || in.height == 1)
         for (int y = 0; y < in.height; ++y)
             for (int x = 0; x < in.width; ++x) {
-                const double a = alphaOf(f, scene::pixelRay(cam, in.width, in.height, x, y));
-                const double gx = alphaStep(alphaOf(f, scene::pixelRay(cam, in.width, in.height, x - 1.0, y)), a);
-                const double gy = alphaStep(alphaOf(f, scene::pixelRay(cam, in.width, in.height, x, y - 1.0)), a);
+                const double a = alphaOf(f, rays(x, y));
+                const double gx = alphaStep(alphaOf(f, rays(x - 1.0, y)), a);
+                const double gy = alphaStep(alphaOf(f, rays(x, y - 1.0)), a);
                 minGradient = std::min(minGradient, std::sqrt(gx * gx + gy * gy));
             }
     if (!(minGradient > 1e-9) || minGradient == std::numeric_limits<double>::max()) minGradient = 1e-9;
