@@ -253,13 +253,13 @@ int runBenchCommand(Args& args, const std::string& commandLine) {
             if (job.axis == "triangles") work = triangleCount(*scene);
             const std::string& clock = timed.last.timing.clock;
             if (std::find(clocks.begin(), clocks.end(), clock) == clocks.end()) clocks.push_back(clock);
-            auto add = [&](const std::string& stage, double ms, double wallMs) {
+            auto add = [&](const std::string& stage, double ms, double wallMs, const viz::report::RunSpread& spread) {
                 rows.push_back({sceneNames[job.scene], job.technique, job.axis, point.value, work, stage, ms, clock,
-                                renderer, o.runs, wallMs});
+                                renderer, o.runs, wallMs, spread});
             };
-            for (const TimedRuns::Stage& s : timed.stages) add(s.id, s.milliseconds, s.wallMilliseconds);
-            add("total", timed.totalMilliseconds, timed.wallMilliseconds);
-            add("wall", timed.wallMilliseconds, timed.wallMilliseconds);
+            for (const TimedRuns::Stage& s : timed.stages) add(s.id, s.milliseconds, s.wallMilliseconds, s.spread);
+            add("total", timed.totalMilliseconds, timed.wallMilliseconds, timed.totalSpread);
+            add("wall", timed.wallMilliseconds, timed.wallMilliseconds, timed.wallSpread);
         }
     }
     progress.show(done, "writing bench.csv, bench.html and the plots");
@@ -275,7 +275,7 @@ int runBenchCommand(Args& args, const std::string& commandLine) {
         spec.title = sceneName + ": " + (techniqueFilter.empty() ? "total per technique" : techniqueFilter + " by stage") +
                      " against " + job.axis;
         spec.xLabel = axis.workUnit;
-        spec.yLabel = "ms (median)";
+        spec.yLabel = "ms: median, bars min to max";
         spec.logX = spec.logY = true;
         std::vector<std::string> names;  // techniques (totals) or stages
         for (const auto& r : rows) {
@@ -296,7 +296,10 @@ int runBenchCommand(Args& args, const std::string& commandLine) {
                 if (inSeries(f))
                     series.name += "  k=" + (std::isfinite(f.fit.exponent) ? shortExponent(f.fit.exponent) : "?");
             for (const auto& r : rows)
-                if (inSeries(r)) series.points.push_back({r.work, r.milliseconds});
+                if (inSeries(r)) {
+                    series.points.push_back({r.work, r.milliseconds});
+                    series.yRanges.push_back({r.spread.minMilliseconds, r.spread.maxMilliseconds});
+                }
             spec.series.push_back(std::move(series));
         }
         const std::string file = fileStem(sceneName) + "-" + job.axis + (techniqueFilter.empty() ? "" : "-" + fileStem(techniqueFilter)) + ".png";
@@ -349,6 +352,12 @@ int runBenchCommand(Args& args, const std::string& commandLine) {
                         f.technique.c_str(), std::isfinite(f.fit.exponent) ? shortExponent(f.fit.exponent).c_str() : "?",
                         f.fit.r2, f.fit.points);
     std::printf("wrote %s/bench.html (%s)\n", o.out.c_str(), meta.clock.c_str());
+    std::vector<viz::report::TimedPoint> totals;
+    for (const viz::report::BenchRow& r : rows)
+        if (r.stage == "total")
+            totals.push_back({r.scene + " " + r.technique + " " + r.axis + " " + r.value, r.milliseconds, r.spread});
+    if (const std::string note = viz::report::noisyRunsNote(totals, "points' totals"); !note.empty())
+        std::fprintf(stderr, "%s\n", note.c_str());
     return 0;
 }
 

@@ -388,6 +388,7 @@ int runReportCommand(Args& args, const std::string& commandLine) {
             for (const TimedRuns::Stage& s : timed.stages) row.stages.push_back({s.id, s.milliseconds});
             row.totalMilliseconds = timed.totalMilliseconds;
             row.wallMilliseconds = timed.wallMilliseconds;
+            row.totalSpread = timed.totalSpread;
             if (output.airlight.empty()) throw std::runtime_error(point.technique + " produced no L_air image");
             row.error = viz::report::compareImages(output.airlight, reference);
             // The page shows each technique's most accurate image (a finite error beats an undefined one).
@@ -527,6 +528,11 @@ int runReportCommand(Args& args, const std::string& commandLine) {
         std::printf("--temporal took %.0f s of the report's %.0f s (the stabilising options' settings and every frame "
                     "along the paths, reference frames included)\n",
                     temporalSeconds, secondsSince(reportStart));
+    std::vector<viz::report::TimedPoint> times;
+    for (const viz::report::ReportRow& r : rows)
+        times.push_back({r.scene + " " + r.technique + " " + r.setting, r.totalMilliseconds, r.totalSpread});
+    if (const std::string note = viz::report::noisyRunsNote(times, "settings"); !note.empty())
+        std::fprintf(stderr, "%s\n", note.c_str());
     std::printf("wrote %s\n", (dir / "index.html").string().c_str());
     return 0;
 }

@@ -84,9 +84,12 @@ TimedRuns timeRuns(viz::Technique& technique, const viz::FrameInput& input, int 
             it->second.second.push_back(s.wallMilliseconds >= 0.0 ? s.wallMilliseconds : s.milliseconds);
         }
     }
-    for (const std::string& id : order) timed.stages.push_back({id, median(stages[id].first), median(stages[id].second)});
+    for (const std::string& id : order)
+        timed.stages.push_back({id, median(stages[id].first), median(stages[id].second), viz::report::spreadOf(stages[id].first)});
     timed.totalMilliseconds = median(totals);
     timed.wallMilliseconds = median(walls);
+    timed.totalSpread = viz::report::spreadOf(totals);
+    timed.wallSpread = viz::report::spreadOf(walls);
     return timed;
 }
 

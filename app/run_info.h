@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "debug/technique.h"
+#include "report/run_spread.h"
 
 namespace airlight {
 
@@ -20,17 +21,20 @@ std::string rendererDescription();
 std::string fileStem(const std::string& text);
 
 // A technique timed as the measuring commands time it: one warm-up run (shader compiles, uploads,
-// caches), then `runs` timed runs; medians per stage (in the order the stages first ran) and of the totals.
+// caches), then `runs` timed runs; medians per stage (in the order the stages first ran) and of the totals,
+// each with the fastest and slowest run beside it.
 struct TimedRuns {
     viz::FrameOutput last;  // the last run's output
     struct Stage {
         std::string id;
         double milliseconds = 0.0;      // median by the record's clock
         double wallMilliseconds = 0.0;  // median CPU wall time (viz::StageTiming::wallMilliseconds)
+        viz::report::RunSpread spread;  // of the record's clock
     };
     std::vector<Stage> stages;
     double totalMilliseconds = 0.0;  // median of the per-run sums of stage times
     double wallMilliseconds = 0.0;   // median steady-clock time of the whole run()
+    viz::report::RunSpread totalSpread, wallSpread;
 };
 TimedRuns timeRuns(viz::Technique& technique, const viz::FrameInput& input, int runs);
 

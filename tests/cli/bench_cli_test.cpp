@@ -42,13 +42,16 @@ TEST_F(CliTest, BenchWritesPerStageTimesFitsAndPlotsForEachAxis) {
     std::istringstream csv(readFile(out / "bench.csv"));
     std::string header, line;
     std::getline(csv, header);
-    EXPECT_EQ(header, "scene,technique,axis,value,stage,ms,clock,renderer,work,runs,wall_ms");
+    EXPECT_EQ(header, "scene,technique,axis,value,stage,ms,clock,renderer,work,runs,wall_ms,ms_min,ms_max");
     // (technique, axis, value) -> stage -> ms
     std::map<std::tuple<std::string, std::string, std::string>, std::map<std::string, double>> points;
     std::map<std::tuple<std::string, std::string, std::string>, double> work;
     while (std::getline(csv, line)) {
         const auto f = splitCsvLine(line);
-        ASSERT_EQ(f.size(), 11u) << line;
+        ASSERT_EQ(f.size(), 13u) << line;
+        // One timed run: it is the median, the fastest and the slowest.
+        EXPECT_EQ(f[11], f[5]) << line;
+        EXPECT_EQ(f[12], f[5]) << line;
         // A stage's wall time covers its GPU time (glFinish+steady_clock here: the same interval).
         EXPECT_GE(std::stod(f[10]), 0.99 * std::stod(f[5]) - 1e-3) << line;
         EXPECT_EQ(f[0], "grate");

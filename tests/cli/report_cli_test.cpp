@@ -24,7 +24,7 @@ namespace fs = std::filesystem;
 
 TEST_F(CliTest, ReportWritesResultsPlotsImagesAndAPageThatLoads) {
     const fs::path out = path("report");
-    const RunResult r = run("report --scenes grate --techniques raymarch --size 32x24 --quick --runs 1 --out " +
+    const RunResult r = run("report --scenes grate --techniques raymarch --size 32x24 --quick --runs 2 --out " +
                             out.string());
     ASSERT_EQ(r.exitCode, 0) << r.err;
 
@@ -43,6 +43,10 @@ TEST_F(CliTest, ReportWritesResultsPlotsImagesAndAPageThatLoads) {
         EXPECT_EQ(row.at("scene"), "grate");
         EXPECT_EQ(row.at("width"), 32);
         EXPECT_GT(row.at("total_ms").get<double>(), 0.0);
+        // Two timed runs: their median is the middle of the fastest and the slowest.
+        const double lo = row.at("total_ms_min").get<double>(), hi = row.at("total_ms_max").get<double>();
+        EXPECT_LE(lo, hi);
+        EXPECT_NEAR(row.at("total_ms").get<double>(), 0.5 * (lo + hi), 1e-9 * hi);
         EXPECT_EQ(row.at("error").at("nan_pixels"), 0);
         EXPECT_TRUE(row.at("error").at("relative_l2").is_number());
         EXPECT_FALSE(row.at("stage_ms").empty());

@@ -137,7 +137,11 @@ void drawPlot(ui::DrawList& list, const ui::Rect& area, const PlotSpec& spec) {
         xlo = std::min(xlo, p.x), xhi = std::max(xhi, p.x), ylo = std::min(ylo, p.y), yhi = std::max(yhi, p.y);
     };
     for (const Series& s : spec.series)
-        for (glm::dvec2 p : s.points) include(p);
+        for (std::size_t i = 0; i < s.points.size(); ++i) {
+            include(s.points[i]);
+            if (i < s.yRanges.size() && usable(s.points[i].y, spec.logY))
+                include({s.points[i].x, s.yRanges[i].x}), include({s.points[i].x, s.yRanges[i].y});
+        }
     for (glm::dvec2 p : spec.highlighted) include(p);
     for (const Band& b : spec.bands)
         for (glm::dvec2 span : b.spans)
@@ -228,12 +232,19 @@ void drawPlot(ui::DrawList& list, const ui::Rect& area, const PlotSpec& spec) {
     for (const Series& s : spec.series) {
         bool havePrevious = false;
         glm::vec2 previous{0.0f};
-        for (glm::dvec2 p : s.points) {
+        for (std::size_t i = 0; i < s.points.size(); ++i) {
+            const glm::dvec2 p = s.points[i];
             if (!usable(p.x, spec.logX) || !usable(p.y, spec.logY)) {
                 havePrevious = false;
                 continue;
             }
             const glm::vec2 q{mx(p.x), my(p.y)};
+            if (i < s.yRanges.size() && usable(s.yRanges[i].x, spec.logY) && usable(s.yRanges[i].y, spec.logY)) {
+                const float lo = my(s.yRanges[i].x), hi = my(s.yRanges[i].y);
+                list.line({q.x, lo}, {q.x, hi}, 1.0f, s.colour);
+                list.line({q.x - marker, lo}, {q.x + marker, lo}, 1.0f, s.colour);
+                list.line({q.x - marker, hi}, {q.x + marker, hi}, 1.0f, s.colour);
+            }
             if (s.lines && havePrevious) list.line(previous, q, 1.6f, s.colour);
             if (s.markers) list.rect({q - marker, q + marker}, s.colour);
             previous = q;

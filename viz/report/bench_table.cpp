@@ -74,12 +74,14 @@ std::vector<BenchFit> fitSeries(const std::vector<BenchRow>& rows) {
 
 void writeBenchCsv(const std::string& path, const std::vector<BenchRow>& rows) {
     std::ostringstream out;
-    out << "scene,technique,axis,value,stage,ms,clock,renderer,work,runs,wall_ms\n";
+    out << "scene,technique,axis,value,stage,ms,clock,renderer,work,runs,wall_ms,ms_min,ms_max\n";
     for (const BenchRow& r : rows) {
         const std::vector<std::string> fields = {r.scene, r.technique, r.axis, r.value, r.stage,
                                                  formatFigure(r.milliseconds, "%.6g"), r.clock, r.renderer,
                                                  formatFigure(r.work, "%.10g"), std::to_string(r.runs),
-                                                 formatFigure(r.wallMilliseconds, "%.6g")};
+                                                 formatFigure(r.wallMilliseconds, "%.6g"),
+                                                 formatFigure(r.spread.minMilliseconds, "%.6g"),
+                                                 formatFigure(r.spread.maxMilliseconds, "%.6g")};
         for (std::size_t i = 0; i < fields.size(); ++i) out << (i ? "," : "") << csvField(fields[i]);
         out << "\n";
     }
@@ -89,6 +91,15 @@ void writeBenchCsv(const std::string& path, const std::vector<BenchRow>& rows) {
 namespace {
 
 constexpr const char* kBenchStyle = "tr.total td{font-weight:bold}";
+
+// A table cell's time, marked (and explained in its tooltip) when its runs spread too far to trust it.
+std::string timeCell(const BenchRow& r, bool& noisy) {
+    const std::string text = formatFigure(r.milliseconds, "%.3g");
+    if (text.empty()) return "<td>&ndash;</td>";
+    if (!isNoisy(r.milliseconds, r.spread)) return "<td>" + text + "</td>";
+    noisy = true;
+    return "<td class=\"noisy\" title=\"" + escapeHtml(spreadText(r.milliseconds, r.spread)) + "\">" + text + "&dagger;</td>";
+}
 
 std::string cell(double v, const char* format) {
     const std::string text = formatFigure(v, format);
@@ -100,6 +111,7 @@ std::string cell(double v, const char* format) {
 void writeBenchHtml(const std::string& path, const BenchMeta& meta, const std::vector<BenchRow>& rows,
                     const std::vector<BenchFit>& fits, const std::vector<BenchPlot>& plots) {
     std::ostringstream h;
+    bool noisy = false;  // some time's runs spread too far (its cell is marked)
     h << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>Airlight bench</title><style>" << kPageStyle << kBenchStyle
       << "</style></head><body>\n<h1>Airlight bench: how each technique's cost grows</h1>\n<p class=\"note\">"
       << escapeHtml(meta.date) << " &middot; <code>" << escapeHtml(meta.command) << "</code><br>machine: "
@@ -136,18 +148,23 @@ void writeBenchHtml(const std::string& path, const BenchMeta& meta, const std::v
             h << "<tr" << (f.stage == "total" ? " class=\"total\"" : "") << "><td class=\"l\">" << escapeHtml(f.technique)
               << "</td><td class=\"l\">" << escapeHtml(f.stage) << "</td>";
             for (const std::string& v : values) {
-                std::string text = "&ndash;";
+                std::string td = "<td>&ndash;</td>";
                 for (const BenchRow& r : rows)
                     if (r.scene == scene && r.axis == axisId && r.technique == f.technique && r.stage == f.stage && r.value == v)
-                        text = cell(r.milliseconds, "%.3g");
-                h << "<td>" << text << "</td>";
+                        td = timeCell(r, noisy);
+                h << td;
             }
             h << "<td>" << cell(f.fit.exponent, "%.2f") << "</td><td>" << cell(f.fit.r2, "%.2f") << "</td></tr>\n";
         }
         h << "</table>\n";
     }
+    if (noisy)
+        h << "<p class=\"note\">&dagger; The timed runs behind this time spread by more than " << int(100.0 * kNoisySpread + 0.5)
+          << " % of their median (the tooltip gives the fastest and slowest): something else was running, or the "
+             "clock changed, during the measurement. Measure such points again before reading an exponent from them.</p>\n";
     h << "<p class=\"note\">Data: <a href=\"bench.csv\">bench.csv</a> (scene, technique, axis, value, stage, ms, clock, "
-         "renderer, work, runs, wall_ms: the stage's CPU wall time from its start until its GPU time was known; far above ms where a stage works on the CPU).</p>\n</body></html>\n";
+         "renderer, work, runs, wall_ms: the stage's CPU wall time from its start until its GPU time was known, far above "
+         "ms where a stage works on the CPU; ms_min, ms_max: the fastest and slowest run).</p>\n</body></html>\n";
     writeTextFile(path, h.str());
 }
 

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "report/run_spread.h"
+
 namespace viz::report {
 
 // One axis of growth: what is varied and the unit of the work it measures.
@@ -29,6 +31,8 @@ struct BenchRow {
     // Median CPU wall time of the stage, from its start until its GPU time was known: far above `milliseconds`
     // where the stage does CPU work the GPU clock does not see (StageTiming::wallMilliseconds).
     double wallMilliseconds = 0.0;
+    // The fastest and slowest of the runs behind `milliseconds` (for "wall", behind the wall time).
+    RunSpread spread{};
 };
 
 // Least-squares fit of log(ms) = log(c) + k log(work) over the points with positive work and time.
@@ -61,7 +65,8 @@ struct BenchPlot {
     std::string file;
 };
 
-// Columns: scene,technique,axis,value,stage,ms,clock,renderer,work,runs,wall_ms.
+// Columns: scene,technique,axis,value,stage,ms,clock,renderer,work,runs,wall_ms,ms_min,ms_max.
+// The page marks a time whose runs spread by more than kNoisySpread of it (report/run_spread.h).
 void writeBenchCsv(const std::string& path, const std::vector<BenchRow>& rows);
 void writeBenchHtml(const std::string& path, const BenchMeta& meta, const std::vector<BenchRow>& rows,
                     const std::vector<BenchFit>& fits, const std::vector<BenchPlot>& plots);

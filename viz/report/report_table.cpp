@@ -137,7 +137,9 @@ const std::vector<std::string>& csvColumns() {
         // one counting run (gl/work_counters.h): the sum of the counters, and each as name=count
         "work_ops", "work",
         // --temporal: a stabilising option's pair (Technique::stabilisingOptions): "OPTION off" or "OPTION on"
-        "stabiliser"};
+        "stabiliser",
+        // the fastest and slowest timed run's sum of stage times (total_ms is their median)
+        "total_ms_min", "total_ms_max"};
     return kColumns;
 }
 
@@ -160,7 +162,8 @@ void writeCsv(const std::string& path, const std::vector<ReportRow>& rows) {
             t ? t->path : "", t ? std::to_string(t->frames) : "", t ? number(t->meanFrameError) : "",
             t ? number(t->temporalRms) : "", t ? number(t->worstFlicker) : "", t ? number(t->msPerFrame) : "",
             t ? t->flickerImage : "", r.work.empty() ? "" : formatFigure(r.workTotal(), "%.0f"), workText(r),
-            r.stabiliser.empty() ? "" : r.stabiliser + (r.stabiliserOn ? " on" : " off")};
+            r.stabiliser.empty() ? "" : r.stabiliser + (r.stabiliserOn ? " on" : " off"),
+            number(r.totalSpread.minMilliseconds), number(r.totalSpread.maxMilliseconds)};
         for (std::size_t i = 0; i < fields.size(); ++i) out << (i ? "," : "") << csvField(fields[i]);
         out << "\n";
     }
@@ -198,6 +201,8 @@ void writeJson(const std::string& path, const ReportMeta& meta, const std::vecto
                         {"clock", r.clock},
                         {"total_ms", jsonNumber(r.totalMilliseconds)},
                         {"wall_ms", jsonNumber(r.wallMilliseconds)},
+                        {"total_ms_min", jsonNumber(r.totalSpread.minMilliseconds)},
+                        {"total_ms_max", jsonNumber(r.totalSpread.maxMilliseconds)},
                         {"stage_ms", stages},
                         {"error",
                          {{"relative_l2", jsonNumber(r.error.relativeL2)},

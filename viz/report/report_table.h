@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "report/error_metrics.h"
+#include "report/run_spread.h"
 #include "report/tradeoff.h"
 
 namespace viz::report {
@@ -42,6 +43,7 @@ struct ReportRow {
     std::vector<StageTime> stages;  // medians over the runs
     double totalMilliseconds = 0.0; // median over runs of the sum of stage times
     double wallMilliseconds = 0.0;  // median over runs of the whole run() call, readbacks included
+    RunSpread totalSpread{};        // the fastest and slowest run's sum of stage times
     ErrorMetrics error;             // L_air against the reference's L_air
     std::optional<double> speedup;  // over the baseline at equal error (annotateTradeoffs)
     bool pareto = false;            // on its scene's Pareto front, all techniques together

@@ -28,12 +28,7 @@ Image constant(int w, int h, float v) {
     return image;
 }
 
-std::string readAll(const fs::path& p) {
-    std::ifstream in(p);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
+using viz::testing::readText;
 
 TEST(ErrorMetrics, IdenticalImagesHaveZeroErrorAndInfinitePsnr) {
     const Image a = constant(8, 4, 0.5f);
@@ -215,7 +210,7 @@ TEST_F(ReportFiles, SpeedupAndFrontAreAnnotatedPerScene) {
 TEST_F(ReportFiles, CsvHasTheDocumentedColumnsAndOneLinePerRow) {
     const fs::path csv = mDir / "results.csv";
     writeCsv(csv.string(), mRows);
-    std::istringstream in(readAll(csv));
+    std::istringstream in(readText(csv));
     std::string header;
     std::getline(in, header);
     std::string expected;
@@ -234,7 +229,7 @@ TEST_F(ReportFiles, CsvHasTheDocumentedColumnsAndOneLinePerRow) {
         EXPECT_EQ(fields, int(csvColumns().size())) << line;
     }
     EXPECT_EQ(lines, 3);
-    EXPECT_NE(readAll(csv).find("\"planes=64, \"\"odd\"\"\""), std::string::npos);
+    EXPECT_NE(readText(csv).find("\"planes=64, \"\"odd\"\"\""), std::string::npos);
 }
 
 TEST_F(ReportFiles, JsonParsesAndPrintsUndefinedFiguresAsNull) {
@@ -242,7 +237,7 @@ TEST_F(ReportFiles, JsonParsesAndPrintsUndefinedFiguresAsNull) {
     ReportMeta meta;
     meta.width = 32, meta.height = 24, meta.runs = 5;
     writeJson(json.string(), meta, mRows);
-    const nlohmann::json j = nlohmann::json::parse(readAll(json));
+    const nlohmann::json j = nlohmann::json::parse(readText(json));
     ASSERT_EQ(j.at("rows").size(), 3u);
     const auto& row = j.at("rows")[2];
     for (const char* key : {"scene", "technique", "setting", "total_ms", "wall_ms", "stage_ms", "error", "clock",
@@ -256,7 +251,7 @@ TEST_F(ReportFiles, JsonParsesAndPrintsUndefinedFiguresAsNull) {
 TEST_F(ReportFiles, HtmlIsStaticAndReferencesItsImages) {
     const fs::path html = mDir / "index.html";
     writeHtml(html.string(), {}, mRows, {{"grate", "grate-plot.png", "grate-reference.png"}});
-    const std::string page = readAll(html);
+    const std::string page = readText(html);
     EXPECT_EQ(page.find("<script"), std::string::npos);
     for (const char* image : {"grate-plot.png", "grate-reference.png", "grate-slices.png"})
         EXPECT_NE(page.find(std::string("src=\"") + image + "\""), std::string::npos) << image;

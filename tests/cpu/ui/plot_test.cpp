@@ -76,6 +76,33 @@ TEST(DrawPlot, EverythingLandsInsideTheArea) {
     }
 }
 
+TEST(DrawPlot, AYRangeIsABarThroughItsPointAndTheAxesMakeRoomForIt) {
+    const ui::FontAtlas font = ui::FontAtlas::bake(ui::FontAtlas::kDefaultFontPath, 14.0f);
+    const glm::vec4 colour = categoricalColour(2);
+    const ui::Rect area{{0, 0}, {400, 300}};
+    // The vertical extent of what is drawn in the series' colour (its marker, and its bar when it has one).
+    auto extent = [&](const std::vector<glm::dvec2>& ranges) {
+        ui::DrawList list(font);
+        PlotSpec spec;
+        spec.logY = true;
+        spec.series.push_back({"", colour, {{1.0, 10.0}, {2.0, 10.0}}, false, true, ranges});
+        drawPlot(list, area, spec);
+        float lo = INFINITY, hi = -INFINITY;
+        for (const ui::UiVertex& v : list.vertices()) {
+            EXPECT_GE(v.position.y, area.min.y - 1e-3f);
+            EXPECT_LE(v.position.y, area.max.y + 1e-3f);
+            if (v.colour == ui::packColour(colour))
+                lo = std::min(lo, v.position.y), hi = std::max(hi, v.position.y);
+        }
+        return hi - lo;
+    };
+    const float markers = extent({});
+    // From 1 to 1000 around 10: the y axis spans the three decades and the bar runs across them.
+    const float bars = extent({{1.0, 1000.0}, {5.0, 20.0}});
+    EXPECT_LT(markers, 20.0f);
+    EXPECT_GT(bars, 0.5f * (area.max.y - area.min.y));
+}
+
 TEST(DrawPlot, ALegendTooLongForTheAreaIsCutShortAndStaysInside) {
     const ui::FontAtlas font = ui::FontAtlas::bake(ui::FontAtlas::kDefaultFontPath, 14.0f);
     PlotSpec spec;
