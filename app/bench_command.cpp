@@ -356,8 +356,10 @@ int runBenchCommand(Args& args, const std::string& commandLine) {
     for (const viz::report::BenchRow& r : rows)
         if (r.stage == "total")
             totals.push_back({r.scene + " " + r.technique + " " + r.axis + " " + r.value, r.milliseconds, r.spread});
-    if (const std::string note = viz::report::noisyRunsNote(totals, "points' totals"); !note.empty())
+    if (const std::string note = viz::report::noisyRunsNote(totals, "points' totals"); !note.empty()) {
+        std::fflush(stdout);  // after what the command printed so far
         std::fprintf(stderr, "%s\n", note.c_str());
+    }
     return 0;
 }
 

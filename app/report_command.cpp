@@ -531,8 +531,10 @@ int runReportCommand(Args& args, const std::string& commandLine) {
     std::vector<viz::report::TimedPoint> times;
     for (const viz::report::ReportRow& r : rows)
         times.push_back({r.scene + " " + r.technique + " " + r.setting, r.totalMilliseconds, r.totalSpread});
-    if (const std::string note = viz::report::noisyRunsNote(times, "settings"); !note.empty())
+    if (const std::string note = viz::report::noisyRunsNote(times, "settings"); !note.empty()) {
+        std::fflush(stdout);  // after what the command printed so far
         std::fprintf(stderr, "%s\n", note.c_str());
+    }
     std::printf("wrote %s\n", (dir / "index.html").string().c_str());
     return 0;
 }

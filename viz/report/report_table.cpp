@@ -81,15 +81,26 @@ const std::vector<double>& errorTargets() {
 
 TargetSpeedup targetSpeedup(const std::vector<ReportRow>& rows, const std::string& scene, const std::string& technique,
                             double target, const std::string& baseline, Measure measure) {
-    std::vector<TradeoffPoint> base, own;
+    // TradeoffPoint's "milliseconds" is the cost axis: time, or counted operations; for the time, also each
+    // row's fastest and slowest run.
+    std::vector<TradeoffPoint> base, own, baseFast, baseSlow, ownFast, ownSlow;
+    bool spread = measure == Measure::Time;
     for (const ReportRow& r : rows) {
-        if (r.scene != scene) continue;
-        // TradeoffPoint's "milliseconds" is the cost axis: time, or counted operations.
-        const TradeoffPoint p{measure == Measure::Time ? r.totalMilliseconds : r.workTotal(), r.error.relativeL2};
-        if (r.technique == baseline) base.push_back(p);
-        if (r.technique == technique) own.push_back(p);
+        if (r.scene != scene || (r.technique != baseline && r.technique != technique)) continue;
+        const bool isBase = r.technique == baseline;
+        const double e = r.error.relativeL2;
+        (isBase ? base : own).push_back({measure == Measure::Time ? r.totalMilliseconds : r.workTotal(), e});
+        spread = spread && std::isfinite(spreadFraction(r.totalMilliseconds, r.totalSpread));
+        (isBase ? baseFast : ownFast).push_back({r.totalSpread.minMilliseconds, e});
+        (isBase ? baseSlow : ownSlow).push_back({r.totalSpread.maxMilliseconds, e});
     }
-    return speedupAtTarget(base, own, target);
+    TargetSpeedup s = speedupAtTarget(base, own, target);
+    if (spread && s.bound != TargetSpeedup::Bound::Unknown) {
+        const TargetSpeedup low = speedupAtTarget(baseFast, ownSlow, target), high = speedupAtTarget(baseSlow, ownFast, target);
+        if (low.bound == s.bound && high.bound == s.bound)
+            s.ratioLow = std::min(low.ratio, high.ratio), s.ratioHigh = std::max(low.ratio, high.ratio);
+    }
+    return s;
 }
 
 std::string targetSpeedupPhrase(const TargetSpeedup& s, const std::string& baseline, Measure measure) {
@@ -110,10 +121,14 @@ std::string targetSpeedupPhrase(const TargetSpeedup& s, const std::string& basel
                               amount(s.baseline.milliseconds) + unit +
                               (s.baseline.kind == Kind::AtMost ? " or less)" : ")");
     const std::string ratio = time ? speedupPhrase(s.ratio) : workRatioPhrase(s.ratio);
+    // How far the runs' spread could move it, when it was measured.
+    const std::string range = time && std::isfinite(s.ratioLow) && std::isfinite(s.ratioHigh)
+                                  ? "; " + speedupRangePhrase(s.ratioLow, s.ratioHigh) + " over the runs' spread"
+                                  : "";
     switch (s.bound) {
-        case TargetSpeedup::Bound::Exact: return ratio + times;
-        case TargetSpeedup::Bound::AtLeast: return (s.ratio >= 1.0 ? "at least " : "at most ") + ratio + times;
-        case TargetSpeedup::Bound::AtMost: return (s.ratio >= 1.0 ? "at most " : "at least ") + ratio + times;
+        case TargetSpeedup::Bound::Exact: return ratio + times + range;
+        case TargetSpeedup::Bound::AtLeast: return (s.ratio >= 1.0 ? "at least " : "at most ") + ratio + times + range;
+        case TargetSpeedup::Bound::AtMost: return (s.ratio >= 1.0 ? "at most " : "at least ") + ratio + times + range;
         case TargetSpeedup::Bound::Unknown: break;
     }
     return "both reach " + percent + " at their cheapest setting" + times;

@@ -1,5 +1,6 @@
 #include "report/text_output.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -44,6 +45,16 @@ std::string ratioPhrase(double ratio, const char* better, const char* worse, con
 }  // namespace
 
 std::string speedupPhrase(double ratio) { return ratioPhrase(ratio, "faster", "slower", "as fast"); }
+
+std::string speedupRangePhrase(double a, double b) {
+    const double low = std::min(a, b), high = std::max(a, b);
+    const std::string slow = speedupPhrase(low), fast = speedupPhrase(high);
+    auto number = [](const std::string& phrase) { return phrase.substr(0, phrase.find(' ')); };
+    if (slow.ends_with(" faster") && fast.ends_with(" faster")) return "between " + number(slow) + " and " + fast;
+    // Both slower: the one nearer to 1 first.
+    if (slow.ends_with(" slower") && fast.ends_with(" slower")) return "between " + number(fast) + " and " + slow;
+    return "between " + slow + " and " + fast;
+}
 
 std::string workRatioPhrase(double ratio) { return ratioPhrase(ratio, "less work", "more work", "as much work"); }
 

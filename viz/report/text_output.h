@@ -15,6 +15,9 @@ std::string formatFigure(double value, const char* format = "%.6g");
 // A time ratio (baseline time / technique time) in words: "5.9x faster", "5.9x slower" (never
 // "0.17x faster"), "as fast" within 1 %; "-" when the ratio is not a positive finite number.
 std::string speedupPhrase(double ratio);
+// A range of speed-ups in words: "between 4.90x and 6.51x faster", "between 1.25x and 2.00x slower",
+// "between 1.20x slower and 1.30x faster"; the ends in either order.
+std::string speedupRangePhrase(double a, double b);
 // A work ratio (baseline work / technique work) in words: "12x less work", "1.50x more work", "as much
 // work" within 1 %; "-" when the ratio is not a positive finite number.
 std::string workRatioPhrase(double ratio);

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <optional>
+#include <limits>
 #include <vector>
 
 namespace viz::report {
@@ -47,6 +48,10 @@ struct TargetSpeedup {
     TimeToTarget technique, baseline;
     Bound bound = Bound::Unknown;
     double ratio = 0.0;  // when bound != Unknown
+    // The same comparison made with the technique's slowest runs against the baseline's fastest, and the
+    // reverse (ReportRow::totalSpread): how far the runs' spread could move the ratio. NaN when the runs'
+    // spread was not measured or either comparison comes out of another kind.
+    double ratioLow = std::numeric_limits<double>::quiet_NaN(), ratioHigh = std::numeric_limits<double>::quiet_NaN();
 };
 TargetSpeedup speedupAtTarget(const std::vector<TradeoffPoint>& baseline, const std::vector<TradeoffPoint>& technique,
                               double target);

@@ -98,6 +98,29 @@ TEST(RunSpread, TheReportsFilesCarryItAndItsPageMarksTheNoisyTimeAlone) {
     EXPECT_EQ(readText(temp / "quiet.html").find("&dagger;"), std::string::npos);
 }
 
+TEST(RunSpread, TheHeadlineSpeedupSaysHowFarTheRunsSpreadCouldMoveIt) {
+    // raymarch reaches 10 % at 100 ms (runs 80 to 120), minmax at 20 ms (runs 18 to 30): 5x faster; with
+    // raymarch's fastest against minmax's slowest 80 / 30, the reverse 120 / 18.
+    std::vector<ReportRow> rows(2);
+    for (int i = 0; i < 2; ++i) {
+        rows[std::size_t(i)].scene = "grate";
+        rows[std::size_t(i)].technique = i == 0 ? "raymarch" : "minmax";
+        rows[std::size_t(i)].error.relativeL2 = 0.1;
+    }
+    rows[0].totalMilliseconds = 100.0, rows[0].totalSpread = {80.0, 120.0};
+    rows[1].totalMilliseconds = 20.0, rows[1].totalSpread = {18.0, 30.0};
+    const TargetSpeedup s = targetSpeedup(rows, "grate", "minmax", 0.1);
+    EXPECT_DOUBLE_EQ(s.ratio, 5.0);
+    EXPECT_DOUBLE_EQ(s.ratioLow, 80.0 / 30.0);
+    EXPECT_DOUBLE_EQ(s.ratioHigh, 120.0 / 18.0);
+    EXPECT_EQ(targetSpeedupPhrase(s), "5.00x faster (20 ms against 100 ms); between 2.67x and 6.67x faster over the "
+                                      "runs' spread");
+    // Counted work has no spread; a row without one leaves the range out.
+    EXPECT_TRUE(std::isnan(targetSpeedup(rows, "grate", "minmax", 0.1, "raymarch", Measure::Work).ratioLow));
+    rows[1].totalSpread = {};
+    EXPECT_EQ(targetSpeedupPhrase(targetSpeedup(rows, "grate", "minmax", 0.1)), "5.00x faster (20 ms against 100 ms)");
+}
+
 TEST(RunSpread, TheBenchsFilesCarryItAndItsPageMarksTheNoisyTimeAlone) {
     viz::testing::TempDir temp("run_spread_bench");
     std::vector<BenchRow> rows;

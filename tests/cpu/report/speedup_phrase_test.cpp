@@ -24,5 +24,12 @@ TEST(SpeedupPhrase, SaysFasterOrSlowerByTheRatioOrItsInverse) {
     EXPECT_EQ(speedupPhrase(std::numeric_limits<double>::infinity()), "-");
 }
 
+TEST(SpeedupPhrase, ARangeNamesItsEndsOnceAndInOrder) {
+    EXPECT_EQ(speedupRangePhrase(6.51, 4.9), "between 4.90x and 6.51x faster");
+    EXPECT_EQ(speedupRangePhrase(0.5, 0.8), "between 1.25x and 2.00x slower");
+    EXPECT_EQ(speedupRangePhrase(1.3, 1.0 / 1.2), "between 1.20x slower and 1.30x faster");
+    EXPECT_EQ(speedupRangePhrase(1.0, 2.0), "between as fast and 2.00x faster");
+}
+
 }  // namespace
 }  // namespace viz::report
