@@ -457,7 +457,7 @@ int runReportCommand(Args& args, const std::string& commandLine) {
     for (const viz::report::ScenePage& page : pages) {
         viz::plot::PlotSpec spec;
         spec.title = page.scene + ": error against time (" + std::to_string(o.width) + "x" + std::to_string(o.height) + ")";
-        spec.xLabel = "time per frame, ms (sum of stages)";
+        spec.xLabel = "time per frame, ms (sum of stages; bars: fastest to slowest run)";
         spec.yLabel = "relative L2 error of L_air";
         spec.logX = spec.logY = true;
         spec.highlightName = "Pareto front";
@@ -468,6 +468,7 @@ int runReportCommand(Args& args, const std::string& commandLine) {
             for (const auto& r : rows)
                 if (r.scene == page.scene && r.technique == technique) {
                     all.points.push_back({r.totalMilliseconds, r.error.relativeL2});
+                    all.xRanges.push_back({r.totalSpread.minMilliseconds, r.totalSpread.maxMilliseconds});
                     points.push_back({r.totalMilliseconds, r.error.relativeL2});
                 }
             viz::plot::Series front{"", all.colour, {}, true, false};

@@ -141,6 +141,8 @@ void drawPlot(ui::DrawList& list, const ui::Rect& area, const PlotSpec& spec) {
             include(s.points[i]);
             if (i < s.yRanges.size() && usable(s.points[i].y, spec.logY))
                 include({s.points[i].x, s.yRanges[i].x}), include({s.points[i].x, s.yRanges[i].y});
+            if (i < s.xRanges.size() && usable(s.points[i].x, spec.logX))
+                include({s.xRanges[i].x, s.points[i].y}), include({s.xRanges[i].y, s.points[i].y});
         }
     for (glm::dvec2 p : spec.highlighted) include(p);
     for (const Band& b : spec.bands)
@@ -239,12 +241,18 @@ void drawPlot(ui::DrawList& list, const ui::Rect& area, const PlotSpec& spec) {
                 continue;
             }
             const glm::vec2 q{mx(p.x), my(p.y)};
-            if (i < s.yRanges.size() && usable(s.yRanges[i].x, spec.logY) && usable(s.yRanges[i].y, spec.logY)) {
-                const float lo = my(s.yRanges[i].x), hi = my(s.yRanges[i].y);
-                list.line({q.x, lo}, {q.x, hi}, 1.0f, s.colour);
-                list.line({q.x - marker, lo}, {q.x + marker, lo}, 1.0f, s.colour);
-                list.line({q.x - marker, hi}, {q.x + marker, hi}, 1.0f, s.colour);
-            }
+            // A range bar: along the axis from `lo` to `hi` (screen), with a cap across each end; `along`
+            // is the unit vector of the bar's axis, the caps run along the other.
+            const auto bar = [&](float lo, float hi, glm::vec2 along) {
+                const glm::vec2 across{along.y, along.x};
+                const glm::vec2 a = q + (lo - glm::dot(q, along)) * along, b = q + (hi - glm::dot(q, along)) * along;
+                list.line(a, b, 1.0f, s.colour);
+                for (glm::vec2 end : {a, b}) list.line(end - marker * across, end + marker * across, 1.0f, s.colour);
+            };
+            if (i < s.yRanges.size() && usable(s.yRanges[i].x, spec.logY) && usable(s.yRanges[i].y, spec.logY))
+                bar(my(s.yRanges[i].x), my(s.yRanges[i].y), {0.0f, 1.0f});
+            if (i < s.xRanges.size() && usable(s.xRanges[i].x, spec.logX) && usable(s.xRanges[i].y, spec.logX))
+                bar(mx(s.xRanges[i].x), mx(s.xRanges[i].y), {1.0f, 0.0f});
             if (s.lines && havePrevious) list.line(previous, q, 1.6f, s.colour);
             if (s.markers) list.rect({q - marker, q + marker}, s.colour);
             previous = q;

@@ -18,9 +18,9 @@ struct Series {
     std::vector<glm::dvec2> points;   // drawn in the given order
     bool lines = true;                // join consecutive points
     bool markers = true;              // a square at each point
-    // Optional, one per point: [low, high] on the y axis drawn as a bar through the point (the spread of
-    // the measurements behind it); empty: no bars.
-    std::vector<glm::dvec2> yRanges{};
+    // Optional, one per point: [low, high] on the y (or x) axis drawn as a bar through the point (the
+    // spread of the measurements behind it); empty: no bars.
+    std::vector<glm::dvec2> yRanges{}, xRanges{};
 };
 
 // Spans along the x axis (e.g. the lit intervals of a light along a ray), drawn as a strip along the

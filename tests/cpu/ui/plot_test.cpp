@@ -76,31 +76,34 @@ TEST(DrawPlot, EverythingLandsInsideTheArea) {
     }
 }
 
-TEST(DrawPlot, AYRangeIsABarThroughItsPointAndTheAxesMakeRoomForIt) {
+TEST(DrawPlot, ARangeIsABarThroughItsPointAndTheAxesMakeRoomForIt) {
     const ui::FontAtlas font = ui::FontAtlas::bake(ui::FontAtlas::kDefaultFontPath, 14.0f);
     const glm::vec4 colour = categoricalColour(2);
     const ui::Rect area{{0, 0}, {400, 300}};
-    // The vertical extent of what is drawn in the series' colour (its marker, and its bar when it has one).
-    auto extent = [&](const std::vector<glm::dvec2>& ranges) {
+    // The extent (x, y) of what is drawn in the series' colour: its markers, and its bars when it has some.
+    auto extent = [&](const std::vector<glm::dvec2>& yRanges, const std::vector<glm::dvec2>& xRanges) {
         ui::DrawList list(font);
         PlotSpec spec;
-        spec.logY = true;
-        spec.series.push_back({"", colour, {{1.0, 10.0}, {2.0, 10.0}}, false, true, ranges});
+        spec.logX = spec.logY = true;
+        spec.series.push_back({"", colour, {{10.0, 10.0}, {10.0, 12.0}}, false, true, yRanges, xRanges});
         drawPlot(list, area, spec);
-        float lo = INFINITY, hi = -INFINITY;
+        glm::vec2 lo{INFINITY}, hi{-INFINITY};
         for (const ui::UiVertex& v : list.vertices()) {
-            EXPECT_GE(v.position.y, area.min.y - 1e-3f);
-            EXPECT_LE(v.position.y, area.max.y + 1e-3f);
-            if (v.colour == ui::packColour(colour))
-                lo = std::min(lo, v.position.y), hi = std::max(hi, v.position.y);
+            EXPECT_TRUE(v.position.x >= area.min.x - 1e-3f && v.position.x <= area.max.x + 1e-3f);
+            EXPECT_TRUE(v.position.y >= area.min.y - 1e-3f && v.position.y <= area.max.y + 1e-3f);
+            if (v.colour == ui::packColour(colour)) lo = glm::min(lo, v.position), hi = glm::max(hi, v.position);
         }
         return hi - lo;
     };
-    const float markers = extent({});
-    // From 1 to 1000 around 10: the y axis spans the three decades and the bar runs across them.
-    const float bars = extent({{1.0, 1000.0}, {5.0, 20.0}});
-    EXPECT_LT(markers, 20.0f);
-    EXPECT_GT(bars, 0.5f * (area.max.y - area.min.y));
+    const glm::vec2 markers = extent({}, {});
+    EXPECT_LT(std::max(markers.x, markers.y), 40.0f);
+    // From 1 to 1000 around 10: the axis spans the three decades and the bar runs across them.
+    const glm::vec2 vertical = extent({{1.0, 1000.0}, {11.0, 13.0}}, {});
+    EXPECT_GT(vertical.y, 0.5f * (area.max.y - area.min.y));
+    EXPECT_LT(vertical.x, 40.0f);
+    const glm::vec2 horizontal = extent({}, {{1.0, 1000.0}, {9.0, 11.0}});
+    EXPECT_GT(horizontal.x, 0.5f * (area.max.x - area.min.x));
+    EXPECT_LT(horizontal.y, 40.0f);
 }
 
 TEST(DrawPlot, ALegendTooLongForTheAreaIsCutShortAndStaysInside) {
