@@ -1,10 +1,10 @@
 // The airlight lookup table (viz/techniques/polyvol/airlight_lut.h for the channels, the axes and the
-// algebra): unit-intensity point-light airlight of [x0, x1] from two premultiplied channels.
+// algebra): unit-intensity point-light airlight of [x0, x1] from three premultiplied channels.
 #ifndef POLYVOL_AIRLIGHT_LUT_GLSL
 #define POLYVOL_AIRLIGHT_LUT_GLSL
 #ifdef AIRLIGHT_LUT
 
-layout(binding = kFirstFreeTextureUnit + 1) uniform sampler2D uAirlightLut;  // RG32F, read with texelFetch
+layout(binding = kFirstFreeTextureUnit + 1) uniform sampler2D uAirlightLut;  // RGB32F, read with texelFetch
 
 // AirlightLut::kTauMin, kTauMax, log of both, and columnSpan() = asinh(kTauMax / s(kTauMin)).
 const float LUT_TAU_MIN = 1.0e-9;
@@ -27,15 +27,15 @@ float lutRow(float tauH) {
 // Bilinear sample between the four nearest texels, weights in float (hardware filtering keeps only 8
 // fractional bits on many GPUs: docs/numerics.md#lookup-tables), with the first and last texels on the
 // axis ends.
-vec2 lutSample(float u, float tauH) {
+vec3 lutSample(float u, float tauH) {
     ivec2 size = textureSize(uAirlightLut, 0);
     vec2 f = vec2(lutColumn(u, tauH), lutRow(tauH)) * vec2(size - 1);
     ivec2 i0 = min(ivec2(f), size - 2);
     vec2 t = f - vec2(i0);
-    vec2 a = texelFetch(uAirlightLut, i0, 0).rg;
-    vec2 b = texelFetch(uAirlightLut, i0 + ivec2(1, 0), 0).rg;
-    vec2 c = texelFetch(uAirlightLut, i0 + ivec2(0, 1), 0).rg;
-    vec2 d = texelFetch(uAirlightLut, i0 + ivec2(1, 1), 0).rg;
+    vec3 a = texelFetch(uAirlightLut, i0, 0).rgb;
+    vec3 b = texelFetch(uAirlightLut, i0 + ivec2(1, 0), 0).rgb;
+    vec3 c = texelFetch(uAirlightLut, i0 + ivec2(0, 1), 0).rgb;
+    vec3 d = texelFetch(uAirlightLut, i0 + ivec2(1, 1), 0).rgb;
     return mix(mix(a, b, t.x), mix(c, d, t.x), t.y);
 }
 
@@ -50,10 +50,18 @@ float lutPointSegment(float tP, float h, float x0, float x1, float sigma_s, floa
     float s1 = x1 - tP;
     float sum = 0.0;
     if (s0 < 0.0) {
-        // Before the foot point (tP > x0 >= 0 here): A(|u|) grows toward P.
-        float a1 = lutSample(sigma_t * max(-s1, 0.0), tauH).r;
-        float a0 = lutSample(-sigma_t * s0, tauH).r;
-        sum += (a1 - a0) * exp(-sigma_t * tP);
+        // Before the foot point (tP > x0 >= 0 here): A(|u|) grows toward P, C(|u|) e^{-(rho - |u|)} away
+        // from it. The same integral as A(near) - A(far) or C(far) - C(near): the form whose larger term
+        // is smaller (rho - |u| = tau_h^2 / (rho + |u|), without the cancellation).
+        float uNear = sigma_t * max(-s1, 0.0), uFar = -sigma_t * s0;
+        vec3 nearP = lutSample(uNear, tauH);
+        vec3 farP = lutSample(uFar, tauH);
+        float decayNear = tauH * tauH / (sqrt(uNear * uNear + tauH * tauH) + uNear);
+        float decayFar = tauH * tauH / (sqrt(uFar * uFar + tauH * tauH) + uFar);
+        if (nearP.r <= exp(-decayFar) * farP.b)
+            sum += (nearP.r - farP.r) * exp(-sigma_t * tP);
+        else
+            sum += exp(-sigma_t * tP - decayFar) * farP.b - exp(-sigma_t * tP - decayNear) * nearP.b;
     }
     if (s1 > 0.0) {
         float sb = max(s0, 0.0);

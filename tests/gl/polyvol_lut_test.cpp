@@ -61,10 +61,10 @@ viz::gl::Program probeProgram() {
 std::vector<float> runProbe(const std::vector<Segment>& cases, double g) {
     const viz::polyvol::AirlightLut table =
         viz::polyvol::buildAirlightLut(g, viz::polyvol::AirlightLut::kWidth, viz::polyvol::AirlightLut::kHeight);
-    viz::gl::Texture lut = viz::gl::Texture::create({.target = GL_TEXTURE_2D, .format = GL_RG32F,
+    viz::gl::Texture lut = viz::gl::Texture::create({.target = GL_TEXTURE_2D, .format = GL_RGB32F,
                                                      .size = {table.width, table.height, 1}, .levels = 1,
                                                      .label = "test.polyvol_lut"});
-    lut.upload(GL_RG, GL_FLOAT, table.rg.data());
+    lut.upload(GL_RGB, GL_FLOAT, table.texels.data());
     std::vector<glm::vec4> inputs;
     for (const Segment& c : cases) {
         inputs.emplace_back(c.tP, c.h, c.x0, c.x1);
@@ -108,6 +108,33 @@ std::vector<Segment> segmentsNearTheLight() {
 double relativeError(double value, double reference) { return std::abs(value - reference) / std::abs(reference); }
 
 }  // namespace
+
+// The table's running sums against each channel evaluated on its own (the shared double segment integral,
+// a different quadrature from the table's panels): every channel, from the foot point to kTauMax, thin rows
+// to thick.
+TEST(PolyvolLutTable, EveryChannelMatchesItsDirectEvaluation) {
+    using viz::polyvol::AirlightLut;
+    for (double g : {0.0, 0.9}) {
+        const AirlightLut table = viz::polyvol::buildAirlightLut(g, AirlightLut::kWidth, AirlightLut::kHeight);
+        double worst[3] = {0.0, 0.0, 0.0};
+        for (int j = 0; j < table.height; j += 37)
+            for (int i = 0; i < table.width; i += 53) {
+                const double tauH = AirlightLut::tauAt(j, table.height), u = AirlightLut::uAt(i, table.width, tauH);
+                const double direct[3] = {viz::polyvol::lutChannelA(u, tauH, g), viz::polyvol::lutChannelB(u, tauH, g),
+                                          viz::polyvol::lutChannelC(u, tauH, g)};
+                for (int c = 0; c < 3; ++c) {
+                    const double stored = table.texels[(std::size_t(j) * std::size_t(table.width) + std::size_t(i)) * 3 + std::size_t(c)];
+                    if (direct[c] == 0.0 && stored == 0.0) continue;  // A at kTauMax, C at the foot point
+                    ASSERT_GT(direct[c], 1e-30) << "channel " << c << " tau_h " << tauH << " u " << u;
+                    const double e = std::abs(stored - direct[c]) / direct[c];
+                    worst[c] = std::max(worst[c], e);
+                    EXPECT_LT(e, 1e-6) << "channel " << c << " g " << g << " tau_h " << tauH << " u " << u << ": table "
+                                       << stored << " direct " << direct[c];
+                }
+            }
+        std::printf("lut table, g = %.1f: worst relative A %.1e, B %.1e, C %.1e\n", g, worst[0], worst[1], worst[2]);
+    }
+}
 
 // The table covers the foot point (its first column) and every tau_h down to 1e-9 (below that the
 // shader takes the closed form): relative error below 1e-3 wherever the reference is a normal float,
@@ -153,13 +180,16 @@ TEST_F(PolyvolLut, MatchesAnIndependentQuadratureOnRaysPassingTheLight) {
     }
 }
 
-// The full airlight of rays through the foot point at tau_h from 1e-10 to 1 (one per decade; tP = 1,
-// d = 3; h = 1e-3 with sigma_t = tau_h / h up to tau_h = 1e-3, then sigma_t = 1 and h = tau_h). Below 1e-9
-// the shader's closed form answers, from 1e-9 up the table. (Thicker: README, "Known limitations".)
+// The full airlight of rays through the foot point at tau_h from 1e-10 to 30 (one per decade, then 3, 10
+// and 30; tP = 1, d = 3; h = 1e-3 with sigma_t = tau_h / h up to tau_h = 1e-3, then sigma_t = 1 and h =
+// tau_h). Below 1e-9 the shader's closed form answers, from 1e-9 up the table. In the thick rows the part
+// before P comes from channel C (with A alone: 2.1e-3 at tau_h = 3, 1.2e-2 at 10, 0.67 at 30).
 TEST_F(PolyvolLut, CoversTauHFromBelowTheTableToOne) {
     std::vector<Segment> cases;
-    for (int k = -10; k <= 0; ++k) {
-        const double tau = std::pow(10.0, k);
+    std::vector<double> taus;
+    for (int k = -10; k <= 0; ++k) taus.push_back(std::pow(10.0, k));
+    for (double tau : {3.0, 10.0, 30.0}) taus.push_back(tau);
+    for (double tau : taus) {
         const double h = tau <= 1e-3 ? 1e-3 : tau;
         cases.push_back({1.0f, float(h), 0.0f, 3.0f, float(tau / h), "[0, 3] through P"});
     }

@@ -43,6 +43,21 @@ double lutChannelA(double u, double tauH, double g) {
                    airlight::pointSegment<double>(0.0, tauH, split, end, 1.0, 1.0, g, 1.0));
 }
 
+double AirlightLut::nearSideDecay(double u, double tauH) {
+    u = std::abs(u);
+    return tauH * tauH / (std::hypot(u, tauH) + u);  // rho - |u| without the cancellation
+}
+
+// C(u) = tau_h e^{rho - |u|} int_{-|u|}^0 f, split at -tau_h as A is (pointSegment's guard for a foot point
+// at an end).
+double lutChannelC(double u, double tauH, double g) {
+    const double end = -std::min(std::abs(u), AirlightLut::kTauMax);
+    const double split = std::min(0.0, std::max(end, -tauH));
+    return tauH * std::exp(AirlightLut::nearSideDecay(end, tauH)) *
+           (airlight::pointSegment<double>(0.0, tauH, end, split, 1.0, 1.0, g, 1.0) +
+            airlight::pointSegment<double>(0.0, tauH, split, 0.0, 1.0, 1.0, g, 1.0));
+}
+
 // B(u) = tau_h e^{u + rho} int_u^inf f: tP = -u puts the segment start at x = 0, so pointSegment returns
 // e^{-rho(u)} e^{u} int_u^inf f (its own exponent stays small).
 double lutChannelB(double u, double tauH, double g) {
@@ -86,13 +101,15 @@ double piece(double ua, double ub, double tauH, int side, double g) {
 // Row by row, from the last column (|u| = kTauMax, where A = 0 and B comes from the closed form) towards
 // the foot point, adding one Gauss-Legendre panel per column interval to both running integrals: A is the
 // integral before P from -kTauMax to -|u|, T the integral after P from |u| to infinity, B = e^{u + rho} T.
+// Then from the foot point outwards for C, the integral before P from -|u| to 0, with the same panels.
 // All terms are positive, so the running sums keep their relative accuracy (double, ~1e-13).
 AirlightLut buildAirlightLut(double g, int width, int height) {
     AirlightLut lut;
     lut.width = width;
     lut.height = height;
     lut.g = g;
-    lut.rg.resize(std::size_t(width) * std::size_t(height) * 2);
+    constexpr int n = AirlightLut::kChannels;
+    lut.texels.resize(std::size_t(width) * std::size_t(height) * n);
     for (int j = 0; j < height; ++j) {
         const double tauH = AirlightLut::tauAt(j, height);
         double before = 0.0;
@@ -105,9 +122,16 @@ AirlightLut buildAirlightLut(double g, int width, int height) {
             before += piece(u, uPrevious, tauH, -1, g);
             after += piece(u, uPrevious, tauH, +1, g);
             uPrevious = u;
-            const std::size_t k = (std::size_t(j) * std::size_t(width) + std::size_t(i)) * 2;
-            lut.rg[k] = float(before);
-            lut.rg[k + 1] = float(std::exp(u + std::hypot(u, tauH)) * after);
+            const std::size_t k = (std::size_t(j) * std::size_t(width) + std::size_t(i)) * n;
+            lut.texels[k] = float(before);
+            lut.texels[k + 1] = float(std::exp(u + std::hypot(u, tauH)) * after);
+        }
+        double fromP = 0.0;
+        for (int i = 1; i < width; ++i) {
+            const double u = AirlightLut::uAt(i, width, tauH);
+            fromP += piece(AirlightLut::uAt(i - 1, width, tauH), u, tauH, -1, g);
+            lut.texels[(std::size_t(j) * std::size_t(width) + std::size_t(i)) * n + 2] =
+                float(std::exp(AirlightLut::nearSideDecay(u, tauH)) * fromP);
         }
     }
     return lut;

@@ -255,12 +255,14 @@ FrameOutput PolyvolTechnique::run(const FrameInput& input) {
 void PolyvolTechnique::publishLut(FrameOutput& out, const FrameInput& input, double g) {
     out.intermediates.push_back(render::textureIntermediate(
         kLut, "Airlight lookup table",
-        "R: A = tau_h int_{-200}^{-|u|} f, G: B = tau_h e^{|u|+rho} int_{|u|}^inf f; x: asinh(|u| / s), "
+        "R: A = tau_h int_{-200}^{-|u|} f, G: B = tau_h e^{|u|+rho} int_{|u|}^inf f, B: C = tau_h int_{-|u|}^0 f; "
+        "x: asinh(|u| / s), "
         "s = tau_h / (1 + tau_h) (left edge: the foot point), y: log tau_h (1e-9 .. 200; below: closed "
         "form), g = " + std::to_string(g) + ", built in " + std::to_string(mLutMs) + " ms",
         "", ViewKind::Colour, 0.0f, 2.0f, mLut));
     out.intermediates.back().channels = {{"A (near side)", "", ViewKind::Scalar, 0.0f, 2.0f},
-                                         {"B (far side)", "", ViewKind::Scalar, 0.0f, 2.0f}};
+                                         {"B (far side)", "", ViewKind::Scalar, 0.0f, 2.0f},
+                                         {"C (near side, from P)", "", ViewKind::Scalar, 0.0f, 2.0f}};
     const float worst = lutError(input);
     out.intermediates.push_back(render::textureIntermediate(
         kLutError, "Lookup table error",

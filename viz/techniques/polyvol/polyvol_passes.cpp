@@ -29,7 +29,7 @@ void PolyvolTechnique::ensureLut(double g) {
     if (mLut && mLutG == g) return;
     // Built once per process and g (the table depends on nothing else), then uploaded per technique. The
     // last kLutCacheSize tables stay, most recently used first: a user dragging g does not grow it without
-    // bound (each table is kLutWidth x kLutHeight x 2 floats).
+    // bound (each table is kLutWidth x kLutHeight x 3 floats).
     struct Cached {
         double g;
         polyvol::AirlightLut table;
@@ -50,9 +50,9 @@ void PolyvolTechnique::ensureLut(double g) {
     it = cache.begin();
     const polyvol::AirlightLut& table = it->table;
     mLutMs = it->ms;
-    mLut = gl::Texture::create({.target = GL_TEXTURE_2D, .format = GL_RG32F, .size = {kLutWidth, kLutHeight, 1},
+    mLut = gl::Texture::create({.target = GL_TEXTURE_2D, .format = GL_RGB32F, .size = {kLutWidth, kLutHeight, 1},
                                 .levels = 1, .label = kLut});
-    mLut.upload(GL_RG, GL_FLOAT, table.rg.data());
+    mLut.upload(GL_RGB, GL_FLOAT, table.texels.data());
     mLut.setFilter(GL_NEAREST, GL_NEAREST);  // read with texelFetch, interpolated in the shader
     mLut.setWrap(GL_CLAMP_TO_EDGE);
     mLutG = g;
