@@ -398,26 +398,18 @@ std::string liveComparison(const LessonStep& s, glm::ivec2 size) {
         const double ms = times[1];
         if (id == s.compare.front()) baseline = ms;
         // A time whose runs lie far apart is marked, as the report marks it (report/run_spread.h).
-        const viz::report::RunSpread spread = viz::report::spreadOf(times);
-        const bool marked = viz::report::isNoisy(ms, spread);
-        noisy = noisy || marked;
         char cells[160];
-        std::snprintf(cells, sizeof cells, "%.1f%s</td><td>%s</td><td>%.2f</td>", ms, marked ? "&dagger;" : "",
+        std::snprintf(cells, sizeof cells, "<td>%s</td><td>%.2f</td>",
                       tileErrorText(viz::report::compareImages(airlight, reference)).c_str(), ms / std::max(baseline, 1e-9));
-        rows += "<tr><td>" + viz::report::escapeHtml(id) + "</td><td" +
-                (marked ? " title=\"" + viz::report::escapeHtml(viz::report::spreadText(ms, spread)) + "\"" : std::string()) +
-                ">" + cells + "</tr>\n";
+        rows += "<tr><td>" + viz::report::escapeHtml(id) + "</td>" +
+                viz::report::timeCellHtml(viz::format("%.1f", ms), ms, viz::report::spreadOf(times), noisy) + cells + "</tr>\n";
     }
     return "<table class=\"compare\"><tr><th>technique</th><th>time (ms, median of 3)</th><th>L_air against the "
            "reference</th><th>time / " + viz::report::escapeHtml(s.compare.front()) + "</th></tr>\n" + rows +
            "</table>\n<p class=\"state\">Measured when this page was written, at " + std::to_string(size.x) + "x" +
            std::to_string(size.y) + " on " + viz::report::escapeHtml(renderer) + " (" + viz::report::escapeHtml(clock) +
-           "). Another machine gives other figures: in the window this step times them live (the comparison grid)." +
-           (noisy ? " &dagger; Its three runs lay more than " + viz::format("%.0f", 100.0 * viz::report::kNoisySpread) +
-                        " % of the median apart (the tooltip gives them): something else was running, so that time is "
-                        "in doubt."
-                  : std::string()) +
-           "</p>\n";
+           "). Another machine gives other figures: in the window this step times them live (the comparison grid).</p>\n" +
+           (noisy ? viz::report::noisyFootnoteHtml("Compare such a time live in the window.") : std::string());
 }
 
 }  // namespace

@@ -92,15 +92,6 @@ namespace {
 
 constexpr const char* kBenchStyle = "tr.total td{font-weight:bold}";
 
-// A table cell's time, marked (and explained in its tooltip) when its runs spread too far to trust it.
-std::string timeCell(const BenchRow& r, bool& noisy) {
-    const std::string text = formatFigure(r.milliseconds, "%.3g");
-    if (text.empty()) return "<td>&ndash;</td>";
-    if (!isNoisy(r.milliseconds, r.spread)) return "<td>" + text + "</td>";
-    noisy = true;
-    return "<td class=\"noisy\" title=\"" + escapeHtml(spreadText(r.milliseconds, r.spread)) + "\">" + text + "&dagger;</td>";
-}
-
 std::string cell(double v, const char* format) {
     const std::string text = formatFigure(v, format);
     return text.empty() ? "&ndash;" : text;
@@ -151,17 +142,14 @@ void writeBenchHtml(const std::string& path, const BenchMeta& meta, const std::v
                 std::string td = "<td>&ndash;</td>";
                 for (const BenchRow& r : rows)
                     if (r.scene == scene && r.axis == axisId && r.technique == f.technique && r.stage == f.stage && r.value == v)
-                        td = timeCell(r, noisy);
+                        td = timeCellHtml(cell(r.milliseconds, "%.3g"), r.milliseconds, r.spread, noisy);
                 h << td;
             }
             h << "<td>" << cell(f.fit.exponent, "%.2f") << "</td><td>" << cell(f.fit.r2, "%.2f") << "</td></tr>\n";
         }
         h << "</table>\n";
     }
-    if (noisy)
-        h << "<p class=\"note\">&dagger; The timed runs behind this time spread by more than " << int(100.0 * kNoisySpread + 0.5)
-          << " % of their median (the tooltip gives the fastest and slowest): something else was running, or the "
-             "clock changed, during the measurement. Measure such points again before reading an exponent from them.</p>\n";
+    if (noisy) h << noisyFootnoteHtml("Measure such points again before reading an exponent from them.");
     h << "<p class=\"note\">Data: <a href=\"bench.csv\">bench.csv</a> (scene, technique, axis, value, stage, ms, clock, "
          "renderer, work, runs, wall_ms: the stage's CPU wall time from its start until its GPU time was known, far above "
          "ms where a stage works on the CPU; ms_min, ms_max: the fastest and slowest run).</p>\n</body></html>\n";

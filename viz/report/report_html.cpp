@@ -37,13 +37,6 @@ std::string figure(double v, const char* format = "%.3g") {
     return text.empty() ? "&ndash;" : text;
 }
 
-// A row's time cell, marked (and explained in its tooltip) when its runs spread too far to trust it.
-std::string timeCell(const ReportRow& r, bool& noisy) {
-    if (!isNoisy(r.totalMilliseconds, r.totalSpread)) return "<td>" + figure(r.totalMilliseconds, "%.1f") + "</td>";
-    noisy = true;
-    return "<td class=\"noisy\" title=\"" + escapeHtml(spreadText(r.totalMilliseconds, r.totalSpread)) + "\">" +
-           figure(r.totalMilliseconds, "%.1f") + "&dagger;</td>";
-}
 
 // One row per scene and error target, one column per technique but the baseline: its time (or work)
 // against raymarch's at the target, in words.
@@ -154,7 +147,7 @@ void writeHtml(const std::string& path, const ReportMeta& meta, const std::vecto
             if (r.scene != s.scene) continue;
             const std::size_t bad = r.error.nanPixels + r.error.infPixels + r.error.negativePixels;
             h << "<tr" << (r.pareto ? " class=\"front\"" : "") << "><td class=\"l\">" << escapeHtml(r.technique)
-              << "</td><td class=\"l\">" << escapeHtml(r.setting) << "</td>" << timeCell(r, noisy)
+              << "</td><td class=\"l\">" << escapeHtml(r.setting) << "</td>" << timeCellHtml(figure(r.totalMilliseconds, "%.1f"), r.totalMilliseconds, r.totalSpread, noisy)
               << "<td>" << figure(r.wallMilliseconds, "%.1f") << "</td><td>" << figure(r.error.relativeL2)
               << "</td><td>" << figure(r.error.rmse) << "</td><td>" << figure(r.error.maxAbsolute) << "</td><td>"
               << figure(r.error.relativeP999) << "</td><td>" << figure(r.error.psnr, "%.1f") << "</td><td"
@@ -163,11 +156,7 @@ void writeHtml(const std::string& path, const ReportMeta& meta, const std::vecto
               << "</td><td>" << figure(r.workTotal(), "%.3g") << "</td></tr>\n";
         }
         h << "</table>\n";
-        if (noisy)
-            h << "<p class=\"note\">&dagger; The timed runs behind this time spread by more than "
-              << int(100.0 * kNoisySpread + 0.5) << " % of their median (the tooltip gives the fastest and slowest): "
-                 "something else was running, or the clock changed, while they were timed. Speed-ups that rest on such a "
-                 "time are in doubt: measure again.</p>\n";
+        if (noisy) h << noisyFootnoteHtml("Speed-ups that rest on such a time are in doubt: measure again.");
         appendTemporalHtml(h, rows, s);
         if (!s.referenceImage.empty())
             h << "<figure><img src=\"" << escapeHtml(s.referenceImage) << "\" alt=\"reference\"><figcaption>reference"

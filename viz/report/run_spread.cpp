@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/text.h"
+#include "report/text_output.h"
 
 namespace viz::report {
 
@@ -26,6 +27,18 @@ std::string spreadText(double median, const RunSpread& spread) {
     if (!std::isfinite(fraction)) return "";
     return "runs " + format("%.4g", spread.minMilliseconds) + " to " + format("%.4g", spread.maxMilliseconds) +
            " ms, " + format("%.3g", 100.0 * fraction) + " % of the median";
+}
+
+std::string timeCellHtml(const std::string& text, double median, const RunSpread& spread, bool& noisy) {
+    if (!isNoisy(median, spread)) return "<td>" + text + "</td>";
+    noisy = true;
+    return "<td class=\"noisy\" title=\"" + escapeHtml(spreadText(median, spread)) + "\">" + text + "&dagger;</td>";
+}
+
+std::string noisyFootnoteHtml(const std::string& advice) {
+    return "<p class=\"note\">&dagger; The timed runs behind this time lay more than " + format("%.0f", 100.0 * kNoisySpread) +
+           " % of their median apart (its tooltip gives the fastest and slowest): something else was running, or the "
+           "clock changed, while they were timed. " + advice + "</p>\n";
 }
 
 std::string noisyRunsNote(const std::vector<TimedPoint>& points, const std::string& plural) {

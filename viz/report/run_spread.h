@@ -31,6 +31,12 @@ bool isNoisy(double median, const RunSpread& spread);
 // "runs 2351 to 4620 ms, 92 % of the median" (for a tooltip or a terminal note); "" when not measured.
 std::string spreadText(double median, const RunSpread& spread);
 
+// How the pages show it. A table cell (<td>) holding `text`, a time of `median` ms: when its runs spread too
+// far, marked with a dagger, the runs in its title and class "noisy", and `noisy` set.
+std::string timeCellHtml(const std::string& text, double median, const RunSpread& spread, bool& noisy);
+// The paragraph under a table whose times are marked; `advice` ends it ("Measure them again.").
+std::string noisyFootnoteHtml(const std::string& advice);
+
 // One measured time and what it is ("grate raymarch N=64").
 struct TimedPoint {
     std::string name;

@@ -91,7 +91,7 @@ TEST(RunSpread, TheReportsFilesCarryItAndItsPageMarksTheNoisyTimeAlone) {
     const std::string page = readText(temp / "index.html");
     EXPECT_NE(page.find("title=\"runs 38 to 82 ms, 110 % of the median\">40.0&dagger;"), std::string::npos);
     EXPECT_NE(page.find("<td>10.0</td>"), std::string::npos);  // the quiet row: unmarked
-    EXPECT_NE(page.find("spread by more than 20 % of their median"), std::string::npos);
+    EXPECT_NE(page.find("lay more than 20 % of their median apart"), std::string::npos);
 
     rows[1].totalSpread = {39.0, 41.0};
     writeHtml((temp / "quiet.html").string(), {}, rows, {{"grate", "", ""}});
@@ -142,7 +142,7 @@ TEST(RunSpread, TheBenchsFilesCarryItAndItsPageMarksTheNoisyTimeAlone) {
     const std::string page = readText(temp / "bench.html");
     EXPECT_NE(page.find("title=\"runs 70 to 150 ms, 100 % of the median\">80&dagger;"), std::string::npos);
     EXPECT_NE(page.find("<td>20</td>"), std::string::npos);
-    EXPECT_NE(page.find("spread by more than 20 % of their median"), std::string::npos);
+    EXPECT_NE(page.find("lay more than 20 % of their median apart"), std::string::npos);
 }
 
 }  // namespace
