@@ -462,7 +462,11 @@ int runReportCommand(Args& args, const std::string& commandLine) {
         spec.logX = spec.logY = true;
         spec.highlightName = "Pareto front";
         int colour = 0;
-        for (const std::string& technique : o.techniques) {
+        std::vector<std::string> plotted;  // every series of the scene: the techniques and their paper presets
+        for (const auto& r : rows)
+            if (r.scene == page.scene && std::find(plotted.begin(), plotted.end(), r.technique) == plotted.end())
+                plotted.push_back(r.technique);
+        for (const std::string& technique : plotted) {
             viz::plot::Series all{technique, viz::plot::categoricalColour(colour), {}, false, true};
             std::vector<viz::report::TradeoffPoint> points;
             for (const auto& r : rows)

@@ -121,10 +121,12 @@ std::string targetSpeedupPhrase(const TargetSpeedup& s, const std::string& basel
                               amount(s.baseline.milliseconds) + unit +
                               (s.baseline.kind == Kind::AtMost ? " or less)" : ")");
     const std::string ratio = time ? speedupPhrase(s.ratio) : workRatioPhrase(s.ratio);
-    // How far the runs' spread could move it, when it was measured.
-    const std::string range = time && std::isfinite(s.ratioLow) && std::isfinite(s.ratioHigh)
-                                  ? "; " + speedupRangePhrase(s.ratioLow, s.ratioHigh) + " over the runs' spread"
-                                  : "";
+    // How far the runs' spread could move it (or the bound, when it is one), when it was measured.
+    const std::string range =
+        time && std::isfinite(s.ratioLow) && std::isfinite(s.ratioHigh)
+            ? std::string(s.bound == TargetSpeedup::Bound::Exact ? "; " : "; the bound lies ") +
+                  speedupRangePhrase(s.ratioLow, s.ratioHigh) + " over the runs' spread"
+            : "";
     switch (s.bound) {
         case TargetSpeedup::Bound::Exact: return ratio + times + range;
         case TargetSpeedup::Bound::AtLeast: return (s.ratio >= 1.0 ? "at least " : "at most ") + ratio + times + range;

@@ -119,6 +119,13 @@ TEST(RunSpread, TheHeadlineSpeedupSaysHowFarTheRunsSpreadCouldMoveIt) {
     EXPECT_TRUE(std::isnan(targetSpeedup(rows, "grate", "minmax", 0.1, "raymarch", Measure::Work).ratioLow));
     rows[1].totalSpread = {};
     EXPECT_EQ(targetSpeedupPhrase(targetSpeedup(rows, "grate", "minmax", 0.1)), "5.00x faster (20 ms against 100 ms)");
+    // minmax below the target at its only setting: its time, and so the speed-up, is a bound, and so is the range.
+    rows[1].totalSpread = {18.0, 30.0};
+    rows[1].error.relativeL2 = 0.05;
+    const TargetSpeedup bound = targetSpeedup(rows, "grate", "minmax", 0.1);
+    ASSERT_EQ(bound.bound, TargetSpeedup::Bound::AtLeast);
+    EXPECT_EQ(targetSpeedupPhrase(bound), "at least 5.00x faster (20 ms or less against 100 ms); the bound lies between "
+                                          "2.67x and 6.67x faster over the runs' spread");
 }
 
 TEST(RunSpread, TheBenchsFilesCarryItAndItsPageMarksTheNoisyTimeAlone) {
