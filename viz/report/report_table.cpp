@@ -122,8 +122,10 @@ std::string targetSpeedupPhrase(const TargetSpeedup& s, const std::string& basel
                               (s.baseline.kind == Kind::AtMost ? " or less)" : ")");
     const std::string ratio = time ? speedupPhrase(s.ratio) : workRatioPhrase(s.ratio);
     // How far the runs' spread could move it (or the bound, when it is one), when it was measured.
+    // Left out when both ends read the same (one timed run, or runs that agree to the printed digits).
     const std::string range =
-        time && std::isfinite(s.ratioLow) && std::isfinite(s.ratioHigh)
+        time && std::isfinite(s.ratioLow) && std::isfinite(s.ratioHigh) &&
+                speedupPhrase(s.ratioLow) != speedupPhrase(s.ratioHigh)
             ? std::string(s.bound == TargetSpeedup::Bound::Exact ? "; " : "; the bound lies ") +
                   speedupRangePhrase(s.ratioLow, s.ratioHigh) + " over the runs' spread"
             : "";

@@ -119,6 +119,11 @@ TEST(RunSpread, TheHeadlineSpeedupSaysHowFarTheRunsSpreadCouldMoveIt) {
     EXPECT_TRUE(std::isnan(targetSpeedup(rows, "grate", "minmax", 0.1, "raymarch", Measure::Work).ratioLow));
     rows[1].totalSpread = {};
     EXPECT_EQ(targetSpeedupPhrase(targetSpeedup(rows, "grate", "minmax", 0.1)), "5.00x faster (20 ms against 100 ms)");
+    // One timed run on each side: the range would read "between 5.00x and 5.00x".
+    rows[0].totalSpread = {100.0, 100.0};
+    rows[1].totalSpread = {20.0, 20.0};
+    EXPECT_EQ(targetSpeedupPhrase(targetSpeedup(rows, "grate", "minmax", 0.1)), "5.00x faster (20 ms against 100 ms)");
+    rows[0].totalSpread = {80.0, 120.0};
     // minmax below the target at its only setting: its time, and so the speed-up, is a bound, and so is the range.
     rows[1].totalSpread = {18.0, 30.0};
     rows[1].error.relativeL2 = 0.05;
