@@ -39,6 +39,10 @@ vec3 lutSample(float u, float tauH) {
     return mix(mix(a, b, t.x), mix(c, d, t.x), t.y);
 }
 
+// rho - |u| = tau_h^2 / (rho + |u|), without the cancellation: the decay factored out of channel C
+// (AirlightLut::nearSideDecay).
+float lutNearSideDecay(float u, float tauH) { return tauH * tauH / (sqrt(u * u + tauH * tauH) + u); }
+
 float lutPointSegment(float tP, float h, float x0, float x1, float sigma_s, float sigma_t, float g) {
     if (!(x1 > x0) || !(sigma_s > 0.0)) return 0.0;
     float tauH = sigma_t * h;
@@ -52,16 +56,16 @@ float lutPointSegment(float tP, float h, float x0, float x1, float sigma_s, floa
     if (s0 < 0.0) {
         // Before the foot point (tP > x0 >= 0 here): A(|u|) grows toward P, C(|u|) e^{-(rho - |u|)} away
         // from it. The same integral as A(near) - A(far) or C(far) - C(near): the form whose larger term
-        // is smaller (rho - |u| = tau_h^2 / (rho + |u|), without the cancellation).
+        // is smaller.
         float uNear = sigma_t * max(-s1, 0.0), uFar = -sigma_t * s0;
         vec3 nearP = lutSample(uNear, tauH);
         vec3 farP = lutSample(uFar, tauH);
-        float decayNear = tauH * tauH / (sqrt(uNear * uNear + tauH * tauH) + uNear);
-        float decayFar = tauH * tauH / (sqrt(uFar * uFar + tauH * tauH) + uFar);
+        float decayFar = lutNearSideDecay(uFar, tauH);
         if (nearP.r <= exp(-decayFar) * farP.b)
             sum += (nearP.r - farP.r) * exp(-sigma_t * tP);
         else
-            sum += exp(-sigma_t * tP - decayFar) * farP.b - exp(-sigma_t * tP - decayNear) * nearP.b;
+            sum += exp(-sigma_t * tP - decayFar) * farP.b -
+                   exp(-sigma_t * tP - lutNearSideDecay(uNear, tauH)) * nearP.b;
     }
     if (s1 > 0.0) {
         float sb = max(s0, 0.0);

@@ -37,7 +37,6 @@ std::string figure(double v, const char* format = "%.3g") {
     return text.empty() ? "&ndash;" : text;
 }
 
-
 // One row per scene and error target, one column per technique but the baseline: its time (or work)
 // against raymarch's at the target, in words.
 void appendTargetTable(std::ostringstream& h, const std::string& title, const std::vector<ReportRow>& rows,
@@ -147,8 +146,8 @@ void writeHtml(const std::string& path, const ReportMeta& meta, const std::vecto
             if (r.scene != s.scene) continue;
             const std::size_t bad = r.error.nanPixels + r.error.infPixels + r.error.negativePixels;
             h << "<tr" << (r.pareto ? " class=\"front\"" : "") << "><td class=\"l\">" << escapeHtml(r.technique)
-              << "</td><td class=\"l\">" << escapeHtml(r.setting) << "</td>" << timeCellHtml(figure(r.totalMilliseconds, "%.1f"), r.totalMilliseconds, r.totalSpread, noisy)
-              << "<td>" << figure(r.wallMilliseconds, "%.1f") << "</td><td>" << figure(r.error.relativeL2)
+              << "</td><td class=\"l\">" << escapeHtml(r.setting) << "</td>"
+              << timeCellHtml(figure(r.totalMilliseconds, "%.1f"), r.totalMilliseconds, r.totalSpread, noisy) << "<td>" << figure(r.wallMilliseconds, "%.1f") << "</td><td>" << figure(r.error.relativeL2)
               << "</td><td>" << figure(r.error.rmse) << "</td><td>" << figure(r.error.maxAbsolute) << "</td><td>"
               << figure(r.error.relativeP999) << "</td><td>" << figure(r.error.psnr, "%.1f") << "</td><td"
               << (bad ? " class=\"bad\"" : "") << ">" << r.error.nanPixels << "/" << r.error.infPixels << "/"

@@ -130,19 +130,18 @@ std::string targetSpeedupPhrase(const TargetSpeedup& s, const std::string& basel
                   speedupRangePhrase(s.ratioLow, s.ratioHigh) + " over the runs' spread"
             : "";
     switch (s.bound) {
-        case TargetSpeedup::Bound::Exact: return ratio + times + range;
+        case TargetSpeedup::Bound::Exact: break;
         case TargetSpeedup::Bound::AtLeast: return (s.ratio >= 1.0 ? "at least " : "at most ") + ratio + times + range;
         case TargetSpeedup::Bound::AtMost: return (s.ratio >= 1.0 ? "at most " : "at least ") + ratio + times + range;
-        case TargetSpeedup::Bound::Unknown: break;
+        case TargetSpeedup::Bound::Unknown: return "both reach " + percent + " at their cheapest setting" + times;
     }
-    return "both reach " + percent + " at their cheapest setting" + times;
+    return ratio + times + range;
 }
 
 bool savingIsSignificant(const PlanSaving& p) {
-    if (p.plannedRuns.empty() || p.forcedRuns.empty()) return false;
-    const auto [plannedMin, plannedMax] = std::minmax_element(p.plannedRuns.begin(), p.plannedRuns.end());
-    const auto [forcedMin, forcedMax] = std::minmax_element(p.forcedRuns.begin(), p.forcedRuns.end());
-    return *plannedMax < *forcedMin || *forcedMax < *plannedMin;
+    // NaN (no runs on a side) compares false: not significant.
+    const RunSpread planned = spreadOf(p.plannedRuns), forced = spreadOf(p.forcedRuns);
+    return planned.maxMilliseconds < forced.minMilliseconds || forced.maxMilliseconds < planned.minMilliseconds;
 }
 
 const std::vector<std::string>& csvColumns() {

@@ -127,9 +127,11 @@ AirlightLut buildAirlightLut(double g, int width, int height) {
             lut.texels[k + 1] = float(std::exp(u + std::hypot(u, tauH)) * after);
         }
         double fromP = 0.0;
+        uPrevious = 0.0;  // column 0 is the foot point, where C = 0
         for (int i = 1; i < width; ++i) {
             const double u = AirlightLut::uAt(i, width, tauH);
-            fromP += piece(AirlightLut::uAt(i - 1, width, tauH), u, tauH, -1, g);
+            fromP += piece(uPrevious, u, tauH, -1, g);
+            uPrevious = u;
             lut.texels[(std::size_t(j) * std::size_t(width) + std::size_t(i)) * n + 2] =
                 float(std::exp(AirlightLut::nearSideDecay(u, tauH)) * fromP);
         }

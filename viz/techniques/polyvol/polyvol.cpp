@@ -255,7 +255,7 @@ FrameOutput PolyvolTechnique::run(const FrameInput& input) {
 void PolyvolTechnique::publishLut(FrameOutput& out, const FrameInput& input, double g) {
     out.intermediates.push_back(render::textureIntermediate(
         kLut, "Airlight lookup table",
-        "R: A = tau_h int_{-200}^{-|u|} f, G: B = tau_h e^{|u|+rho} int_{|u|}^inf f, B: C = tau_h int_{-|u|}^0 f; "
+        "R: A = tau_h int_{-200}^{-|u|} f, G: B = tau_h e^{|u|+rho} int_{|u|}^inf f, B: C = tau_h e^{rho-|u|} int_{-|u|}^0 f; "
         "x: asinh(|u| / s), "
         "s = tau_h / (1 + tau_h) (left edge: the foot point), y: log tau_h (1e-9 .. 200; below: closed "
         "form), g = " + std::to_string(g) + ", built in " + std::to_string(mLutMs) + " ms",
