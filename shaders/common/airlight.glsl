@@ -113,20 +113,27 @@ RayLightGeometry rayLightGeometry(vec3 D, vec3 w) {
 // ---- Point light: anchored log-tangent Gauss-Legendre ----------------------------------------------
 // (docs/numerics.md#anchored-point-light-segment and docs/numerics.md#quadrature)
 
-// p(cos) * exp(-nu expm1(eta)) / cosh(y), y = y0 + eta; 1 -+ cos = 1 +- tanh(y) from e = exp(-|y|).
-float pointIntegrand(float eta, float y0, float nu, float g) {
+// An angular factor that follows the ray (AngularFactor in airlight.h): A(y) = c + a sech(y) + b tanh(y),
+// clamped at 0, stored as vec3(c, a, b). vec3(1, 0, 0) is a point light (A = 1 exactly); an area light's
+// VPL is vec3(0, n . m, n . w) (cosineLobeSegment).
+const vec3 AIRLIGHT_NO_LOBE = vec3(1.0, 0.0, 0.0);
+
+// p(cos) * exp(-nu expm1(eta)) / cosh(y) * A(y), y = y0 + eta; 1 -+ cos = 1 +- tanh(y) from e = exp(-|y|).
+float pointIntegrand(float eta, float y0, float nu, float g, vec3 lobe) {
     float y = y0 + eta;
     float e = exp(-abs(y));
     float e2 = e * e;
     float sech = 2.0 * e / (1.0 + e2);
     float oneMinusCos = y >= 0.0 ? 2.0 / (1.0 + e2) : 2.0 * e2 / (1.0 + e2);
     float onePlusCos = y >= 0.0 ? 2.0 * e2 / (1.0 + e2) : 2.0 / (1.0 + e2);
+    float tanhY = (y >= 0.0 ? 1.0 : -1.0) * ((1.0 - e2) / (1.0 + e2));
+    float angular = max(0.0, lobe.x + lobe.y * sech + lobe.z * tanhY);
     float attenuation = exp(-nu * stableExpm1(eta));
-    return phaseHGFromCosTerms(oneMinusCos, onePlusCos, g) * attenuation * sech;
+    return phaseHGFromCosTerms(oneMinusCos, onePlusCos, g) * attenuation * sech * angular;
 }
 
 // 8-point Gauss-Legendre over eta in [a, b]; 0 for an empty panel.
-float pointPanel(float a, float b, float y0, float nu, float g) {
+float pointPanel(float a, float b, float y0, float nu, float g, vec3 lobe) {
     if (!(b > a)) return 0.0;
     WORK_COUNT(kWorkQuadratureNodes, AIRLIGHT_NODES);
     float half_ = 0.5 * (b - a);
@@ -135,15 +142,17 @@ float pointPanel(float a, float b, float y0, float nu, float g) {
     for (int k = 0; k < AIRLIGHT_NODES / 2; ++k) {
         float dx = half_ * AIRLIGHT_GL_X[k];
         sum += AIRLIGHT_GL_W[k] *
-               (pointIntegrand(mid - dx, y0, nu, g) + pointIntegrand(mid + dx, y0, nu, g));
+               (pointIntegrand(mid - dx, y0, nu, g, lobe) + pointIntegrand(mid + dx, y0, nu, g, lobe));
     }
     return sum * half_;
 }
 
 // L(x0, x1) = int_x0^x1 sigma_s p(cos) I0 exp(-sigma_t (x + r(x))) / r(x)^2 dx, x1 may be +inf.
 // Anchored at x0 (docs/numerics.md#anchored-point-light-segment); see viz/shared/airlight.h for the
-// derivation, the h floor for rays through the light, and the quadrature windows.
-float pointSegment(float tP, float h, float x0, float x1, float sigma_s, float sigma_t, float g, float I0) {
+// derivation, the h floor for rays through the light, and the quadrature windows. pointSegmentWithLobe
+// multiplies the integrand by the angular factor A(y).
+float pointSegmentWithLobe(float tP, float h, float x0, float x1, float sigma_s, float sigma_t, float g, float I0,
+                           vec3 lobe) {
     if (!(x1 > x0) || !(sigma_s > 0.0) || !(I0 > 0.0)) return 0.0;
     WORK_COUNT(kWorkClosedFormSegments, 1);
 
@@ -196,9 +205,9 @@ float pointSegment(float tP, float h, float x0, float x1, float sigma_s, float s
         breaks[i] = clamp(breaks[i], lo, hi);
     }
     SORT_ASCENDING(breaks, 12);
-    float sum = pointPanel(lo, breaks[0], y0, nu, g) + pointPanel(breaks[11], hi, y0, nu, g);
+    float sum = pointPanel(lo, breaks[0], y0, nu, g, lobe) + pointPanel(breaks[11], hi, y0, nu, g, lobe);
     for (int i = 0; i < 11; ++i) {
-        sum += pointPanel(breaks[i], breaks[i + 1], y0, nu, g);
+        sum += pointPanel(breaks[i], breaks[i + 1], y0, nu, g, lobe);
     }
     if (!(sum > 0.0)) return 0.0;
 
@@ -206,6 +215,44 @@ float pointSegment(float tP, float h, float x0, float x1, float sigma_s, float s
     // (docs/numerics.md#combined-exponents).
     float logL = log(sigma_s) + log(I0) - log(h) - sigma_t * (x0 + r0) + log(sum);
     return exp(logL);
+}
+
+float pointSegment(float tP, float h, float x0, float x1, float sigma_s, float sigma_t, float g, float I0) {
+    return pointSegmentWithLobe(tP, h, x0, x1, sigma_s, sigma_t, g, I0, AIRLIGHT_NO_LOBE);
+}
+
+// ---- Cosine-lobe emitter (an area light's VPL; docs/numerics.md#cosine-lobe-emitter) -----------------
+
+// L(x0, x1) for a light at D (camera-relative) emitting I0 max(0, n . u) toward u, n its unit normal: the
+// segment cut at the emitter's plane, the lobe (n . m) sech(y) + (n . w) tanh(y) integrated exactly
+// (see airlight.h).
+// The part of [x0, x1] in front of the emitter's plane through D with normal n (where x (w . n) > D . n);
+// empty (y <= x) when none is.
+vec2 frontOfEmitter(vec3 D, vec3 w, vec3 n, float x0, float x1) {
+    float wn = dot(w, n);
+    float dn = dot(D, n);
+    if (wn != 0.0) {
+        float tPlane = dn / wn;
+        if (wn > 0.0) {
+            x0 = max(x0, tPlane);
+        } else {
+            x1 = min(x1, tPlane);
+        }
+    } else if (dn >= 0.0) {
+        return vec2(0.0);
+    }
+    return vec2(x0, x1);
+}
+
+float cosineLobeSegment(vec3 D, vec3 w, vec3 n, float x0, float x1, float sigma_s, float sigma_t, float g, float I0) {
+    vec2 front = frontOfEmitter(D, w, n, x0, x1);
+    if (!(front.y > front.x)) return 0.0;
+    vec3 m = cross(cross(D, w), w);
+    float mLength = length(m);
+    float mn = mLength > 0.0 ? dot(m, n) / mLength : 0.0;
+    RayLightGeometry geometry = rayLightGeometry(D, w);
+    return pointSegmentWithLobe(geometry.tP, geometry.h, front.x, front.y, sigma_s, sigma_t, g, I0,
+                                vec3(0.0, mn, dot(w, n)));
 }
 
 #ifdef AIRLIGHT_NAIVE_CLOSED_FORM

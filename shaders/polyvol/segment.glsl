@@ -164,19 +164,17 @@ vec3 segmentAirlight(GpuLight L, vec3 w, float x0, float x1) {
     if (L.info.x == kLightSpot) return angularSegment(L, w, g, x0, x1);
 #endif
     if (L.info.x == kLightVpl) {
+#ifdef AIRLIGHT_LUT
         // Cosine lobe around the emitter normal: zero behind the emitter's plane, which cuts the segment;
-        // equal-angle pieces on the front part.
+        // the table has no lobe, so equal-angle pieces on the front part.
         float h = max(g.h, 1.0e-7 * max(abs(g.tP), 1.0e-20));
-        vec3 n = L.direction.xyz;
-        float wn = dot(w, n), on = dot(-L.position.xyz, n);  // side of the eye: sign of on
-        float a = x0, b = x1;
-        if (wn != 0.0) {
-            float tPlane = -on / wn;
-            if (wn > 0.0) a = max(a, tPlane); else b = min(b, tPlane);
-        } else if (on <= 0.0) {
-            return vec3(0.0);
-        }
-        return b > a ? angularPieces(L, w, g, h, a, b) : vec3(0.0);
+        vec2 front = frontOfEmitter(L.position.xyz, w, L.direction.xyz, x0, x1);
+        return front.y > front.x ? angularPieces(L, w, g, h, front.x, front.y) : vec3(0.0);
+#else
+        // Cosine lobe around the emitter normal, integrated exactly (one segment, not uSpotPieces pieces).
+        return cosineLobeSegment(L.position.xyz, w, L.direction.xyz, x0, x1, uSigmaS, uSigmaT, uG, 1.0) *
+               L.radiant.rgb;
+#endif
     }
     return unitPointSegment(g, x0, x1) * L.radiant.rgb;
 }

@@ -94,13 +94,19 @@ void main() {
             sum += V * directionalSegment(cosTheta, x0, x1, uSigmaS, uSigmaT, uG, 1.0) * L.radiant.rgb;
         } else {
             // t_P and h of the ray relative to the light (docs/numerics.md#notation); the unit-intensity
-            // isotropic segment times the light's angular factor at the sample.
+            // isotropic segment times the light's angular factor at the sample (a spot's falloff and cookie).
 #ifdef NAIVE_CLOSED_FORM
             // Teaching mode (closed_form=naive): the textbook evaluation that fails in the stiff cases.
             sum += V * pointSegmentNaive(L.position.xyz, w, x0, x1, uSigmaS, uSigmaT, 1.0) * lightIntensity(L, x);
 #else
-            RayLightGeometry g = rayLightGeometry(L.position.xyz, w);
-            sum += V * pointSegment(g.tP, g.h, x0, x1, uSigmaS, uSigmaT, uG, 1.0) * lightIntensity(L, x);
+            if (L.info.x == kLightVpl) {
+                // An area light's VPL: its cosine lobe integrated exactly over the interval too.
+                sum += V * cosineLobeSegment(L.position.xyz, w, L.direction.xyz, x0, x1, uSigmaS, uSigmaT, uG, 1.0) *
+                       L.radiant.rgb;
+            } else {
+                RayLightGeometry g = rayLightGeometry(L.position.xyz, w);
+                sum += V * pointSegment(g.tP, g.h, x0, x1, uSigmaS, uSigmaT, uG, 1.0) * lightIntensity(L, x);
+            }
 #endif
         }
 #else

@@ -13,6 +13,7 @@
 #include <glm/glm.hpp>
 
 #include "cpu/math/airlight_cases.h"
+#include "cpu/math/cosine_lobe_cases.h"
 #include "gl/buffer.h"
 #include "gl/gl_test_fixture.h"
 #include "gl/program.h"
@@ -111,6 +112,57 @@ TEST_F(AirlightGlsl, MatchesDoubleKernelOnStiffGrid) {
     }
     std::printf("  GLSL directionalSegment %.2e, phaseHG %.2e, transmittance %.2e\n", worstDirectional,
                 worstPhase, worstTransmittance);
+}
+
+// cosineLobeSegment (an area light's VPL) against the double kernel on the same float inputs, which
+// tests/cpu/math/cosine_lobe_test.cpp holds to an independent quadrature.
+TEST_F(AirlightGlsl, CosineLobeMatchesDoubleKernel) {
+    const std::vector<LobeCase> cases = cosineLobeCases();
+    const int count = int(cases.size());
+    std::vector<glm::vec4> inputs;
+    for (const LobeCase& c : cases) {
+        inputs.emplace_back(glm::vec3(c.D), float(c.x0));
+        inputs.emplace_back(glm::vec3(c.w), float(c.x1));
+        inputs.emplace_back(glm::vec3(c.n), 0.0f);
+        inputs.emplace_back(float(c.sigma_s), float(c.sigma_t), float(c.g), float(c.I0));
+    }
+    gl::Buffer inBuffer = gl::Buffer::create(
+        {.bytes = inputs.size() * sizeof(glm::vec4), .data = inputs.data(), .label = "test.lobe_inputs"});
+    gl::Buffer outBuffer = gl::Buffer::create({.bytes = size_t(count) * sizeof(float), .label = "test.lobe_outputs"});
+    const std::string shader = std::string(VIZ_TEST_DATA_DIR) + "/math/cosine_lobe_glsl_test.comp";
+    gl::Program program = gl::Program::compile({.stages = {shader}, .label = "test.cosine_lobe_glsl"});
+    program.use();
+    program.set("uCount", count);
+    inBuffer.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
+    outBuffer.bindBase(GL_SHADER_STORAGE_BUFFER, 1);
+    glDispatchCompute(GLuint((count + 63) / 64), 1, 1);
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    const std::vector<float> outputs = outBuffer.download<float>();
+    ASSERT_EQ(int(outputs.size()), count);
+    double worst = 0;
+    std::string worstName;
+    int compared = 0;
+    for (int i = 0; i < count; ++i) {
+        const LobeCase& c = cases[size_t(i)];
+        SCOPED_TRACE(c.name);
+        const float value = outputs[size_t(i)];
+        ASSERT_TRUE(std::isfinite(value)) << value;
+        EXPECT_GE(value, 0.0f);
+        const glm::dvec3 D(glm::vec3(c.D)), w(glm::vec3(c.w)), n(glm::vec3(c.n));
+        const double reference =
+            cosineLobeSegment<double>(D, w, n, double(float(c.x0)), double(float(c.x1)), double(float(c.sigma_s)),
+                                      double(float(c.sigma_t)), double(float(c.g)), double(float(c.I0)));
+        if (!isNormalFloat(reference)) {
+            EXPECT_LE(std::abs(double(value) - reference), 2.0 * double(std::numeric_limits<float>::min()));
+            continue;
+        }
+        const double error = relativeError(value, reference);
+        EXPECT_LT(error, 1e-4) << "glsl " << value << " double " << reference;
+        if (error >= worst) worst = error, worstName = c.name;
+        ++compared;
+    }
+    EXPECT_GT(compared, 120);  // the rest are below float's normal range (thick media far from the light)
+    std::printf("  GLSL cosineLobeSegment vs double: %d cases, worst %.2e (%s)\n", compared, worst, worstName.c_str());
 }
 
 }  // namespace

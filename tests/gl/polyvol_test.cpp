@@ -279,6 +279,23 @@ TEST_F(PolyvolTest, AgreesWithRaymarchOnTheSameMeshReconstruction) {
     EXPECT_LT(e, 0.01);
 }
 
+// The same on an area light's VPLs (cube light volumes, the cosine lobe integrated in each crossing's
+// segment by cosineLobeSegment): against raymarch's midpoint rule, which takes the lobe at each sample and
+// shares no lobe code with it. Measured 0.19 % (0.20 % with the lobe in 8 equal-angle pieces, as before).
+TEST_F(PolyvolTest, AreaLightAgreesWithRaymarchOnTheSameMeshReconstruction) {
+    const viz::scene::Scene scene = viz::scene::makeBuiltinScene("tv-room");
+    const viz::Settings shared{{"area_samples", 2}, {"shadow_map", 64}};
+    viz::Settings marchSettings = shared;
+    marchSettings["samples"] = 1024;
+    marchSettings["shadow_lookup"] = 1;
+    const viz::FrameOutput march = render(scene, "raymarch", marchSettings, 64, 48);
+    const viz::FrameOutput out = render(scene, "polyvol", shared, 64, 48);
+    EXPECT_TRUE(allFinite(out.airlight));
+    const double e = relativeL2(out.airlight, march.airlight);
+    std::printf("polyvol vs raymarch on tv-room's VPLs (1024 samples, 64^2 maps, mesh lookup) relative L2 %.4f\n", e);
+    EXPECT_LT(e, 0.01);
+}
+
 // The lookup table against the closed form it was built from, on the same mesh: the maximum relative
 // error over pixels carrying at least 1e-3 of the image's peak airlight (below that, relative errors of
 // a few ulps of a near-zero signed sum say nothing about the table).

@@ -67,6 +67,28 @@ TEST_F(RaymarchTest, ExactIntegrationBeatsTheMidpointRuleAtEqualSamples) {
     }
 }
 
+// An area light's VPLs: exact integration takes each VPL's cosine lobe inside the segment integral
+// (cosineLobeSegment), where the lobe at the sample times the whole interval's integral counted the part
+// of an interval behind the emitter and missed the lobe's turn within the 1/r^2 peak next to the VPL.
+// Against the midpoint rule at 4096 samples on the same VPLs and shadow maps (which never calls
+// cosineLobeSegment): 16 exact samples were 16.5 % off at 80 x 60 with the lobe at the sample, 0.13 % with
+// it integrated.
+TEST_F(RaymarchTest, ExactIntegrationFollowsAnAreaLightsCosineLobe) {
+    const viz::scene::Scene scene = viz::scene::makeBuiltinScene("tv-room");
+    const viz::Settings base{{"area_samples", 2}, {"shadow_map", 64}};
+    viz::Settings converged = base, exact = base, midpoint = base;
+    converged["samples"] = 4096;
+    exact["samples"] = midpoint["samples"] = 16;
+    exact["exact"] = 1;
+    const viz::FrameOutput reference = render(scene, "raymarch", converged, 64, 48);
+    const double eExact = relativeL2(render(scene, "raymarch", exact, 64, 48).airlight, reference.airlight);
+    const double eMidpoint = relativeL2(render(scene, "raymarch", midpoint, 64, 48).airlight, reference.airlight);
+    std::printf("tv-room, 4 VPLs, 16 samples against 4096 midpoint samples: exact %.4f, midpoint %.4f\n", eExact,
+                eMidpoint);
+    EXPECT_LT(eExact, 0.01);
+    EXPECT_LT(eExact, eMidpoint);
+}
+
 TEST_F(RaymarchTest, PlanLeavesOutWhatTheSceneDoesNotNeed) {
     auto technique = viz::makeTechnique("raymarch");
     const viz::Settings settings = viz::completeSettings(*technique, {});

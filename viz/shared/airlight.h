@@ -205,26 +205,41 @@ RayLightGeometry<Real> rayLightGeometry(glm::vec<3, Real> D, glm::vec<3, Real> w
 // ---- Point light: anchored log-tangent Gauss-Legendre ----------------------------------------------
 // (docs/numerics.md#anchored-point-light-segment and docs/numerics.md#quadrature)
 
-// The integrand in eta = y - y0 without the constant factors: p(cos) * exp(-nu expm1(eta)) / cosh(y).
+// An angular factor that follows the ray: the direction from the light to the ray's point at y is
+// u(y) = m sech(y) + w tanh(y), m the unit vector from the light to the foot point P (m . w = 0). A light
+// whose intensity toward u(y) is I0 A(y), A(y) = c + a sech(y) + b tanh(y) (clamped at 0), enters the
+// integrand exactly. A point light is {1, 0, 0} (A = 1); an area light's VPL,
+// I0 max(0, n . u) around its emitter normal n, is {0, n . m, n . w} (cosineLobeSegment).
+template <typename Real>
+struct AngularFactor {
+    Real constant = Real(1);  // c
+    Real foot = Real(0);      // a, the coefficient of sech(y) = |P - light| / r
+    Real ray = Real(0);       // b, the coefficient of tanh(y) = (x - tP) / r
+};
+
+// The integrand in eta = y - y0 without the constant factors: p(cos) * exp(-nu expm1(eta)) / cosh(y) * A(y).
 // cos(theta_s) = -tanh(y), so 1 - cos = 1 + tanh(y) = 2/(1 + e^2) for y >= 0 and 2 e^2/(1 + e^2) for
 // y < 0, with e = exp(-|y|), and 1 + cos the mirror image (no cancellation on either side);
-// 1/cosh(y) = 2 e/(1 + e^2).
+// 1/cosh(y) = 2 e/(1 + e^2), tanh(y) = sign(y) (1 - e^2)/(1 + e^2).
 // exp(-nu expm1(eta)) = exp(-sigma_t ((x + r) - (x0 + r0))): extinction relative to the segment start.
+// A(y) = 1 exactly for a point light ({1, 0, 0}), so its integrand is unchanged to the last bit.
 template <typename Real>
-Real pointIntegrand(Real eta, Real y0, Real nu, Real g) {
+Real pointIntegrand(Real eta, Real y0, Real nu, Real g, AngularFactor<Real> lobe) {
     const Real y = y0 + eta;
     const Real e = std::exp(-std::abs(y));
     const Real e2 = e * e;
     const Real sech = Real(2) * e / (Real(1) + e2);
     const Real oneMinusCos = y >= Real(0) ? Real(2) / (Real(1) + e2) : Real(2) * e2 / (Real(1) + e2);
     const Real onePlusCos = y >= Real(0) ? Real(2) * e2 / (Real(1) + e2) : Real(2) / (Real(1) + e2);
+    const Real tanhY = (y >= Real(0) ? Real(1) : Real(-1)) * ((Real(1) - e2) / (Real(1) + e2));
+    const Real angular = std::max(Real(0), lobe.constant + lobe.foot * sech + lobe.ray * tanhY);
     const Real attenuation = std::exp(-nu * stableExpm1(eta));
-    return phaseHGFromCosTerms(oneMinusCos, onePlusCos, g) * attenuation * sech;
+    return phaseHGFromCosTerms(oneMinusCos, onePlusCos, g) * attenuation * sech * angular;
 }
 
 // N-point Gauss-Legendre over eta in [a, b]; 0 for an empty panel.
 template <typename Real, int N>
-Real pointPanel(Real a, Real b, Real y0, Real nu, Real g) {
+Real pointPanel(Real a, Real b, Real y0, Real nu, Real g, AngularFactor<Real> lobe) {
     if (!(b > a)) return Real(0);
     const Real half = Real(0.5) * (b - a);
     const Real mid = Real(0.5) * (a + b);
@@ -232,7 +247,7 @@ Real pointPanel(Real a, Real b, Real y0, Real nu, Real g) {
     for (int k = 0; k < N / 2; ++k) {
         const Real dx = half * Real(GaussLegendre<N>::kX[k]);
         sum += Real(GaussLegendre<N>::kW[k]) *
-               (pointIntegrand(mid - dx, y0, nu, g) + pointIntegrand(mid + dx, y0, nu, g));
+               (pointIntegrand(mid - dx, y0, nu, g, lobe) + pointIntegrand(mid + dx, y0, nu, g, lobe));
     }
     return sum * half;
 }
@@ -260,8 +275,12 @@ Real pointPanel(Real a, Real b, Real y0, Real nu, Real g) {
 // for the HG lobe) around the closest approach y = 0 (clamped into the segment); N-node Gauss-Legendre
 // panels between break points graded around the closest approach and the HG peak
 // y_g = sign(g) ln((1 - |g|)/2), plus optical depths 2 and 6 from x0.
+//
+// pointSegmentWithLobe multiplies the integrand by the angular factor A(y) (AngularFactor); A varies on
+// the same scale in y as 1/cosh(y), with poles at the same places, so the same panels resolve it.
 template <typename Real, int N = Precision<Real>::kNodes>
-Real pointSegment(Real tP, Real h, Real x0, Real x1, Real sigma_s, Real sigma_t, Real g, Real I0) {
+Real pointSegmentWithLobe(Real tP, Real h, Real x0, Real x1, Real sigma_s, Real sigma_t, Real g, Real I0,
+                          AngularFactor<Real> lobe) {
     if (!(x1 > x0) || !(sigma_s > Real(0)) || !(I0 > Real(0))) return Real(0);
 
     // Positions relative to the foot point P; s1 = +inf for the sky.
@@ -327,9 +346,9 @@ Real pointSegment(Real tP, Real h, Real x0, Real x1, Real sigma_s, Real sigma_t,
         }
         breaks[j + 1] = v;
     }
-    Real sum = pointPanel<Real, N>(lo, breaks[0], y0, nu, g) + pointPanel<Real, N>(breaks[11], hi, y0, nu, g);
+    Real sum = pointPanel<Real, N>(lo, breaks[0], y0, nu, g, lobe) + pointPanel<Real, N>(breaks[11], hi, y0, nu, g, lobe);
     for (int i = 0; i < 11; ++i) {
-        sum += pointPanel<Real, N>(breaks[i], breaks[i + 1], y0, nu, g);
+        sum += pointPanel<Real, N>(breaks[i], breaks[i + 1], y0, nu, g, lobe);
     }
     if (!(sum > Real(0))) return Real(0);
 
@@ -338,6 +357,51 @@ Real pointSegment(Real tP, Real h, Real x0, Real x1, Real sigma_s, Real sigma_t,
     // (docs/numerics.md#combined-exponents). x0 + r0 >= |D|, so this is at most e^{-sigma_t |D|}-scaled.
     const Real logL = std::log(sigma_s) + std::log(I0) - std::log(h) - sigma_t * (x0 + r0) + std::log(sum);
     return std::exp(logL);
+}
+
+template <typename Real, int N = Precision<Real>::kNodes>
+Real pointSegment(Real tP, Real h, Real x0, Real x1, Real sigma_s, Real sigma_t, Real g, Real I0) {
+    return pointSegmentWithLobe<Real, N>(tP, h, x0, x1, sigma_s, sigma_t, g, I0, AngularFactor<Real>{});
+}
+
+// ---- Cosine-lobe emitter (an area light's VPL; docs/numerics.md#cosine-lobe-emitter) -----------------
+
+// L(x0, x1) for a light at D (camera-relative) whose intensity toward a unit direction u is
+// I0 max(0, n . u), n the emitter's unit normal: the segment is cut at the emitter's plane (behind it
+// nothing is emitted) and the lobe n . u(y) = (n . m) sech(y) + (n . w) tanh(y) integrated exactly, with
+// m = (P - light) / |P - light| formed from cross products ((D x w) x w = P - light, no difference of
+// |D|-sized vectors). Piecewise-constant pieces of the lobe instead (its value at each piece's middle angle)
+// are off by the lobe's curvature over a piece and cost one segment each.
+// The part of [x0, x1] in front of the emitter's plane through D with normal n (where x (w . n) > D . n);
+// empty (y <= x) when none is.
+template <typename Real>
+glm::vec<2, Real> frontOfEmitter(glm::vec<3, Real> D, glm::vec<3, Real> w, glm::vec<3, Real> n, Real x0, Real x1) {
+    const Real wn = glm::dot(w, n);
+    const Real dn = glm::dot(D, n);
+    if (wn != Real(0)) {
+        const Real tPlane = dn / wn;
+        if (wn > Real(0)) {
+            x0 = std::max(x0, tPlane);
+        } else {
+            x1 = std::min(x1, tPlane);
+        }
+    } else if (dn >= Real(0)) {
+        return glm::vec<2, Real>(Real(0));
+    }
+    return glm::vec<2, Real>(x0, x1);
+}
+
+template <typename Real, int N = Precision<Real>::kNodes>
+Real cosineLobeSegment(glm::vec<3, Real> D, glm::vec<3, Real> w, glm::vec<3, Real> n, Real x0, Real x1,
+                       Real sigma_s, Real sigma_t, Real g, Real I0) {
+    const glm::vec<2, Real> front = frontOfEmitter(D, w, n, x0, x1);
+    if (!(front.y > front.x)) return Real(0);
+    const glm::vec<3, Real> m = glm::cross(glm::cross(D, w), w);
+    const Real mLength = glm::length(m);
+    const Real mn = mLength > Real(0) ? glm::dot(m, n) / mLength : Real(0);
+    const RayLightGeometry<Real> geometry = rayLightGeometry(D, w);
+    return pointSegmentWithLobe<Real, N>(geometry.tP, geometry.h, front.x, front.y, sigma_s, sigma_t, g, I0,
+                                         AngularFactor<Real>{Real(0), mn, glm::dot(w, n)});
 }
 
 // ---- Directional light ----------------------------------------------------------------------------

@@ -20,8 +20,8 @@ const ParamTable<PolyvolSettings>& polyvolParams() {
                            0, 0, 1, true, {"analytic", "lut"}})
             .add(&S::threshold, {"threshold", "adaptive: edge measure of the vertex distances, relative to the map's "
                                  "depth range, above which a vertex needs the finest level", 1e-4, 0, 1e3, false})
-            .add(&S::spotPieces, {"spot_pieces", "spot and VPL lights: equal-angle pieces per penumbra (or lobe) part "
-                                  "of a segment", 8, 1, 256, true})
+            .add(&S::spotPieces, {"spot_pieces", "spot lights: equal-angle pieces per penumbra part of a segment (VPLs "
+                                  "too with airlight=lut; otherwise their lobe is integrated exactly)", 8, 1, 256, true})
             .add(&S::crackCheck, {"crack_check", "1: constant integrand; the signed crossing count per pixel reveals "
                                   "holes", 0, 0, 1, true})
             .add(&S::drawTriangles, {"draw_triangles", "stepping: draw only the first N triangles of each light "
@@ -174,8 +174,10 @@ Plan PolyvolTechnique::plan(const scene::Scene& scene, const Settings& settings)
     const int areaSamples = s.areaSamples;
     p.features.push_back({"AREA_VPLS", hasArea,
                           hasArea ? "each area light -> " + std::to_string(areaSamples * areaSamples) +
-                                        " virtual point lights, each a cube light volume (cosine lobe over "
-                                        "equal-angle pieces)"
+                                        " virtual point lights, each a cube light volume (" +
+                                        (lut ? std::to_string(s.spotPieces) + " equal-angle pieces of the cosine lobe "
+                                               "per crossing: the table has no lobe)"
+                                             : std::string("cosine lobe integrated exactly in each crossing's segment)"))
                                   : "no area light in the scene"});
     // Adaptive tessellation is left out below the shadow-map size where it stops paying off
     // (measured, README "Benchmark: static vs adaptive": from 256^2 on colonnade but only from 512^2
