@@ -1,15 +1,19 @@
 #version 450 core
 // polyvol/volume.vert: one vertex of a light's polygonal light volume (Billeter et al. 2010, section 4).
-// No vertex buffer. Vertex v < uGridVertices belongs to the procedural static grid: triangle v / 3 of
-// uGridFaces grids of N x N texel centres, two per quad split along (i, j) -> (i + 1, j + 1), CCW seen
-// from the light; later vertices read their key from gExtraKeys (the closure of a 2D grid, the seams of
-// a cube, or the adaptive tessellation's triangles; viz/techniques/polyvol/light_volume_mesh.h).
+// No vertex buffer. The procedural static grid (uGridRows = 1) is drawn one row of quads per instance:
+// row r = gl_InstanceID + uRowOffset is row j = r % (N - 1) of face r / (N - 1), and the element buffer's
+// vertex v is texel (v % N, j + v / N), two triangles per quad split along (i, j) -> (i + 1, j + 1), CCW
+// seen from the light (PolyvolTechnique::drawMesh). Indexed, a texel's position is computed about once
+// per row instead of once per triangle corner (six times). Otherwise (uGridRows = 0) vertex v reads its
+// key from gExtraKeys (the closure of a 2D grid, the seams of a cube, or the adaptive tessellation's
+// triangles; viz/techniques/polyvol/light_volume_mesh.h).
 // Output: the eye-relative world position.
 
 #include "polyvol/volume_grid.glsl"
 
 uniform mat4 uViewProj;      // eye-relative world -> camera clip space
-uniform int uGridVertices;   // 3 x the procedural grid triangles (0: keys only)
+uniform int uGridRows;       // 1: instanced rows of the procedural grid; 0: keys from gExtraKeys
+uniform int uRowOffset;      // the first row of this draw (a draw that stops inside the grid)
 
 layout(std430, binding = kFirstFreeSsboBinding) readonly buffer ExtraKeys { uint gExtraKeys[]; };
 
@@ -33,22 +37,13 @@ void main() {
     GpuLight L = gLights[uLightIndex];
     int v = gl_VertexID;
     vec3 p;
-    if (v < uGridVertices) {
-        int quadsPerFace = (uMapSize - 1) * (uMapSize - 1);
-        int triangle = v / 3;
-        int corner = v % 3;
-        int quad = triangle >> 1;
-        int face = quad / quadsPerFace;
-        int q = quad % quadsPerFace;
-        int i = q % (uMapSize - 1);
-        int j = q / (uMapSize - 1);
-        // (00, 10, 11) and (00, 11, 01): counter-clockwise in the map's ndc, i.e. seen from the light.
-        const ivec2 kLower[3] = ivec2[3](ivec2(0, 0), ivec2(1, 0), ivec2(1, 1));
-        const ivec2 kUpper[3] = ivec2[3](ivec2(0, 0), ivec2(1, 1), ivec2(0, 1));
-        ivec2 offset = (triangle & 1) == 0 ? kLower[corner] : kUpper[corner];
-        p = gridPosition(L, face, i + offset.x, j + offset.y);
+    if (uGridRows != 0) {
+        int row = gl_InstanceID + uRowOffset;
+        int face = row / (uMapSize - 1);
+        int j = row % (uMapSize - 1);
+        p = gridPosition(L, face, v % uMapSize, j + v / uMapSize);
     } else {
-        p = keyPosition(L, gExtraKeys[v - uGridVertices]);
+        p = keyPosition(L, gExtraKeys[v]);
     }
     vPosition = p;
     gl_Position = uViewProj * vec4(p, 1.0);

@@ -227,7 +227,7 @@ std::int64_t PolyvolTechnique::drawVolumes(const scene::Scene& scene, const Fram
             mVao.bind();
             program.use();
             setGridUniforms(program, grid);
-            program.set("uGridVertices", 0);
+            program.set("uGridRows", 0);
             mTess.keys().bindBase(GL_SHADER_STORAGE_BUFFER, render::hd::kFirstFreeSsboBinding);
             mTess.counters().bind(GL_DRAW_INDIRECT_BUFFER);
             glDrawArraysIndirect(GL_TRIANGLES, reinterpret_cast<const void*>(polyvol::AdaptiveTessellation::drawOffset()));
@@ -236,21 +236,19 @@ std::int64_t PolyvolTechnique::drawVolumes(const scene::Scene& scene, const Fram
             closure.bindBase(GL_SHADER_STORAGE_BUFFER, render::hd::kFirstFreeSsboBinding);
             glDrawArrays(GL_TRIANGLES, 0, GLsizei(3 * extraTriangles));
             drawn += extraTriangles;
-            if (wire) drawWire(input, L, grid, 0, extraTriangles, true);
+            if (wire) drawWire(input, L, grid, closure, 0, extraTriangles, extraTriangles, true);
             if (s.originAtSurface || radius > 0.0f) resolve(input, i, radius);
             continue;
         }
         const std::int64_t gridTriangles = polyvol::gridTriangleCount(grid.mapSize, grid.faces);
         const gl::Buffer& keys = extraKeys(grid.mode == kModeCube ? ExtraKind::Seams : ExtraKind::Closure,
                                            grid.mapSize, extraTriangles);
-        keys.bindBase(GL_SHADER_STORAGE_BUFFER, render::hd::kFirstFreeSsboBinding);
         setGridUniforms(program, grid);
-        program.set("uGridVertices", int(3 * gridTriangles));
         std::int64_t count = gridTriangles + extraTriangles;
         if (limit > 0) count = std::min(count, limit);
-        glDrawArrays(GL_TRIANGLES, 0, GLsizei(3 * count));
+        drawMesh(program, grid, keys, gridTriangles, extraTriangles, count);
         drawn += count;
-        if (wire) drawWire(input, L, grid, gridTriangles, std::min(count, gridTriangles + extraTriangles) - gridTriangles, false);
+        if (wire) drawWire(input, L, grid, keys, gridTriangles, extraTriangles, count, false);
         if (s.originAtSurface || radius > 0.0f) resolve(input, i, radius);
     }
     glDisable(GL_DEPTH_CLAMP);
@@ -260,8 +258,47 @@ std::int64_t PolyvolTechnique::drawVolumes(const scene::Scene& scene, const Fram
     return drawn;
 }
 
+void PolyvolTechnique::drawMesh(const gl::Program& program, const polyvol::VolumeGrid& grid, const gl::Buffer& keys,
+                                std::int64_t gridTriangles, std::int64_t extraTriangles, std::int64_t count) {
+    const int n = grid.mapSize;
+    if (mRowIndicesSize != n) {
+        // Quad i of a row: (00, 10, 11) and (00, 11, 01) with texel (i + di, j + dj) as vertex i + di + n dj,
+        // counter-clockwise in the map's ndc, i.e. seen from the light.
+        std::vector<std::uint32_t> indices;
+        indices.reserve(6 * std::size_t(n - 1));
+        for (std::uint32_t i = 0; i + 1 < std::uint32_t(n); ++i) {
+            const std::uint32_t v00 = i, v10 = i + 1, v01 = i + std::uint32_t(n), v11 = i + 1 + std::uint32_t(n);
+            indices.insert(indices.end(), {v00, v10, v11, v00, v11, v01});
+        }
+        mRowIndices = gl::Buffer::create({.bytes = indices.size() * sizeof(std::uint32_t),
+                                          .data = indices.data(),
+                                          .flags = 0,
+                                          .label = "polyvol.grid_row_indices"});
+        mRowIndicesSize = n;
+        mVao.elementBuffer(mRowIndices);
+    }
+    mVao.bind();
+    const std::int64_t perRow = 2 * std::int64_t(n - 1);
+    const std::int64_t fromGrid = std::min(gridTriangles, count);
+    const std::int64_t rows = fromGrid / perRow, rest = fromGrid % perRow;
+    program.set("uGridRows", 1);
+    program.set("uRowOffset", 0);
+    if (rows > 0) glDrawElementsInstanced(GL_TRIANGLES, GLsizei(3 * perRow), GL_UNSIGNED_INT, nullptr, GLsizei(rows));
+    if (rest > 0) {
+        program.set("uRowOffset", int(rows));
+        glDrawElementsInstanced(GL_TRIANGLES, GLsizei(3 * rest), GL_UNSIGNED_INT, nullptr, 1);
+    }
+    const std::int64_t extra = std::min(extraTriangles, count - fromGrid);
+    if (extra > 0) {
+        keys.bindBase(GL_SHADER_STORAGE_BUFFER, render::hd::kFirstFreeSsboBinding);
+        program.set("uGridRows", 0);
+        glDrawArrays(GL_TRIANGLES, 0, GLsizei(3 * extra));
+    }
+}
+
 void PolyvolTechnique::drawWire(const FrameInput& input, const render::GpuLightCpu& L, const polyvol::VolumeGrid& grid,
-              std::int64_t gridTriangles, std::int64_t extraTriangles, bool adaptive) {
+                                const gl::Buffer& keys, std::int64_t gridTriangles, std::int64_t extraTriangles,
+                                std::int64_t count, bool adaptive) {
     const int wire = mWireMode;
     glm::mat4 viewProj = render::eyeRelativeViewProjection(input.scene->camera, input.width, input.height);
     if (wire == 2) {
@@ -281,17 +318,14 @@ void PolyvolTechnique::drawWire(const FrameInput& input, const render::GpuLightC
     glDisable(GL_BLEND);
     glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
     if (adaptive) {
-        mWireProgram.set("uGridVertices", 0);
+        mWireProgram.set("uGridRows", 0);
         mTess.keys().bindBase(GL_SHADER_STORAGE_BUFFER, render::hd::kFirstFreeSsboBinding);
         mTess.counters().bind(GL_DRAW_INDIRECT_BUFFER);
         glDrawArraysIndirect(GL_TRIANGLES, reinterpret_cast<const void*>(polyvol::AdaptiveTessellation::drawOffset()));
-        std::int64_t closure = 0;
-        extraKeys(ExtraKind::Closure, grid.keyStride, closure).bindBase(GL_SHADER_STORAGE_BUFFER,
-                                                                          render::hd::kFirstFreeSsboBinding);
-        glDrawArrays(GL_TRIANGLES, 0, GLsizei(3 * closure));
+        keys.bindBase(GL_SHADER_STORAGE_BUFFER, render::hd::kFirstFreeSsboBinding);
+        glDrawArrays(GL_TRIANGLES, 0, GLsizei(3 * extraTriangles));
     } else {
-        mWireProgram.set("uGridVertices", int(3 * gridTriangles));
-        glDrawArrays(GL_TRIANGLES, 0, GLsizei(3 * (gridTriangles + extraTriangles)));
+        drawMesh(mWireProgram, grid, keys, gridTriangles, extraTriangles, count);
     }
     glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
     for (int k = 0; k < 6 && clip; ++k) glDisable(GLenum(GL_CLIP_DISTANCE0 + k));

@@ -149,6 +149,13 @@ private:
     enum class ExtraKind { Closure, Seams };
     const gl::Buffer& extraKeys(ExtraKind kind, int stride, std::int64_t& triangles);
 
+    // The static mesh of one light: the first `count` of its grid's triangles (one instance per row of
+    // quads, indexed through the element buffer of rowIndices, so a texel's position is shared by the
+    // triangles around it) and then of its extra keys' triangles, in the one order the volume, the wire
+    // and `draw_triangles` use. Binds mVao and `keys`; sets uGridRows and uRowOffset on `program`.
+    void drawMesh(const gl::Program& program, const polyvol::VolumeGrid& grid, const gl::Buffer& keys,
+                  std::int64_t gridTriangles, std::int64_t extraTriangles, std::int64_t count);
+
     // Per light: the draw's geometry. Spot: the unit-depth view plane of the shadow matrix; directional:
     // its near plane, the far depth of empty texels and the cap behind the scene; all from the inverse
     // shadow matrix in double, so the mesh samples exactly the directions the map was rendered with.
@@ -162,7 +169,8 @@ private:
     // program; false (no clip) for a scene without triangles.
     bool setOrbitClipBox(const scene::Scene& scene);
     void drawWire(const FrameInput& input, const render::GpuLightCpu& L, const polyvol::VolumeGrid& grid,
-                  std::int64_t gridTriangles, std::int64_t extraTriangles, bool adaptive);
+                  const gl::Buffer& keys, std::int64_t gridTriangles, std::int64_t extraTriangles, std::int64_t count,
+                  bool adaptive);
 
     // The radius of the ball around a light whose part of each ray is integrated once per pixel by the
     // resolve instead of between rasterised crossings (README, "Rays next to the light"): at most half the
@@ -199,6 +207,8 @@ private:
     gl::Texture mTotal, mPositive, mNegative, mCrossings;
     gl::Framebuffer mFramebuffer;
     gl::VertexArray mVao;
+    gl::Buffer mRowIndices;  // one row of N - 1 quads (drawMesh), for grids of mRowIndicesSize texels
+    int mRowIndicesSize = 0;
     std::map<std::pair<int, int>, Extra> mExtras;
     polyvol::AdaptiveTessellation mTess;
     bool mAdaptiveUsed = false, mAdaptiveOverflow = false, mWireDrawn = false;
