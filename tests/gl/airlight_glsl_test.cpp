@@ -29,6 +29,24 @@ double relativeError(double value, double reference) {
     return std::abs(value - reference) / std::abs(reference);
 }
 
+// Runs the compute shader tests/data/math/FILE over `count` cases (its inputs, uCount, 64 per work group)
+// and returns one Output per case.
+template <typename Output>
+std::vector<Output> runCaseShader(const char* file, const std::vector<glm::vec4>& inputs, int count) {
+    gl::Buffer inBuffer = gl::Buffer::create(
+        {.bytes = inputs.size() * sizeof(glm::vec4), .data = inputs.data(), .label = "test.case_inputs"});
+    gl::Buffer outBuffer = gl::Buffer::create({.bytes = size_t(count) * sizeof(Output), .label = "test.case_outputs"});
+    const std::string shader = std::string(VIZ_TEST_DATA_DIR) + "/math/" + file;
+    gl::Program program = gl::Program::compile({.stages = {shader}, .label = file});
+    program.use();
+    program.set("uCount", count);
+    inBuffer.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
+    outBuffer.bindBase(GL_SHADER_STORAGE_BUFFER, 1);
+    glDispatchCompute(GLuint((count + 63) / 64), 1, 1);
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    return outBuffer.download<Output>();
+}
+
 TEST_F(AirlightGlsl, MatchesDoubleKernelOnStiffGrid) {
     std::vector<SegmentCase> cases;
     for (const SegmentCase& c : airlightCaseGrid()) cases.push_back(roundedToFloat(c));
@@ -40,20 +58,7 @@ TEST_F(AirlightGlsl, MatchesDoubleKernelOnStiffGrid) {
         inputs.emplace_back(float(c.sigma_s), float(c.sigma_t), float(c.g), float(c.I0));
         inputs.emplace_back(float(c.cosTheta), 0.0f, 0.0f, 0.0f);
     }
-    gl::Buffer inBuffer = gl::Buffer::create(
-        {.bytes = inputs.size() * sizeof(glm::vec4), .data = inputs.data(), .label = "test.airlight_inputs"});
-    gl::Buffer outBuffer =
-        gl::Buffer::create({.bytes = size_t(count) * sizeof(glm::vec4), .label = "test.airlight_outputs"});
-
-    const std::string shader = std::string(VIZ_TEST_DATA_DIR) + "/math/airlight_glsl_test.comp";
-    gl::Program program = gl::Program::compile({.stages = {shader}, .label = "test.airlight_glsl"});
-    program.use();
-    program.set("uCount", count);
-    inBuffer.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
-    outBuffer.bindBase(GL_SHADER_STORAGE_BUFFER, 1);
-    glDispatchCompute(GLuint((count + 63) / 64), 1, 1);
-    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-    const std::vector<glm::vec4> outputs = outBuffer.download<glm::vec4>();
+    const std::vector<glm::vec4> outputs = runCaseShader<glm::vec4>("airlight_glsl_test.comp", inputs, count);
     ASSERT_EQ(int(outputs.size()), count);
 
     const double floatMin = double(std::numeric_limits<float>::min());
@@ -126,18 +131,7 @@ TEST_F(AirlightGlsl, CosineLobeMatchesDoubleKernel) {
         inputs.emplace_back(glm::vec3(c.n), 0.0f);
         inputs.emplace_back(float(c.sigma_s), float(c.sigma_t), float(c.g), float(c.I0));
     }
-    gl::Buffer inBuffer = gl::Buffer::create(
-        {.bytes = inputs.size() * sizeof(glm::vec4), .data = inputs.data(), .label = "test.lobe_inputs"});
-    gl::Buffer outBuffer = gl::Buffer::create({.bytes = size_t(count) * sizeof(float), .label = "test.lobe_outputs"});
-    const std::string shader = std::string(VIZ_TEST_DATA_DIR) + "/math/cosine_lobe_glsl_test.comp";
-    gl::Program program = gl::Program::compile({.stages = {shader}, .label = "test.cosine_lobe_glsl"});
-    program.use();
-    program.set("uCount", count);
-    inBuffer.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
-    outBuffer.bindBase(GL_SHADER_STORAGE_BUFFER, 1);
-    glDispatchCompute(GLuint((count + 63) / 64), 1, 1);
-    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-    const std::vector<float> outputs = outBuffer.download<float>();
+    const std::vector<float> outputs = runCaseShader<float>("cosine_lobe_glsl_test.comp", inputs, count);
     ASSERT_EQ(int(outputs.size()), count);
     double worst = 0;
     std::string worstName;
