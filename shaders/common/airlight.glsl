@@ -247,11 +247,12 @@ vec2 frontOfEmitter(vec3 D, vec3 w, vec3 n, float x0, float x1) {
 float cosineLobeSegment(vec3 D, vec3 w, vec3 n, float x0, float x1, float sigma_s, float sigma_t, float g, float I0) {
     vec2 front = frontOfEmitter(D, w, n, x0, x1);
     if (!(front.y > front.x)) return 0.0;
-    vec3 m = cross(cross(D, w), w);
+    // rayLightGeometry's D x w, once: h = |D x w| and m = (D x w) x w.
+    vec3 dw = cross(D, w);
+    vec3 m = cross(dw, w);
     float mLength = length(m);
     float mn = mLength > 0.0 ? dot(m, n) / mLength : 0.0;
-    RayLightGeometry geometry = rayLightGeometry(D, w);
-    return pointSegmentWithLobe(geometry.tP, geometry.h, front.x, front.y, sigma_s, sigma_t, g, I0,
+    return pointSegmentWithLobe(dot(D, w), length(dw), front.x, front.y, sigma_s, sigma_t, g, I0,
                                 vec3(0.0, mn, dot(w, n)));
 }
 

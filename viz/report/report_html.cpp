@@ -147,7 +147,8 @@ void writeHtml(const std::string& path, const ReportMeta& meta, const std::vecto
             const std::size_t bad = r.error.nanPixels + r.error.infPixels + r.error.negativePixels;
             h << "<tr" << (r.pareto ? " class=\"front\"" : "") << "><td class=\"l\">" << escapeHtml(r.technique)
               << "</td><td class=\"l\">" << escapeHtml(r.setting) << "</td>"
-              << timeCellHtml(figure(r.totalMilliseconds, "%.1f"), r.totalMilliseconds, r.totalSpread, noisy) << "<td>" << figure(r.wallMilliseconds, "%.1f") << "</td><td>" << figure(r.error.relativeL2)
+              << timeCellHtml(figure(r.totalMilliseconds, "%.1f"), r.totalMilliseconds, r.totalSpread, noisy)
+              << "<td>" << figure(r.wallMilliseconds, "%.1f") << "</td><td>" << figure(r.error.relativeL2)
               << "</td><td>" << figure(r.error.rmse) << "</td><td>" << figure(r.error.maxAbsolute) << "</td><td>"
               << figure(r.error.relativeP999) << "</td><td>" << figure(r.error.psnr, "%.1f") << "</td><td"
               << (bad ? " class=\"bad\"" : "") << ">" << r.error.nanPixels << "/" << r.error.infPixels << "/"

@@ -346,7 +346,8 @@ Real pointSegmentWithLobe(Real tP, Real h, Real x0, Real x1, Real sigma_s, Real 
         }
         breaks[j + 1] = v;
     }
-    Real sum = pointPanel<Real, N>(lo, breaks[0], y0, nu, g, lobe) + pointPanel<Real, N>(breaks[11], hi, y0, nu, g, lobe);
+    Real sum = pointPanel<Real, N>(lo, breaks[0], y0, nu, g, lobe) +
+               pointPanel<Real, N>(breaks[11], hi, y0, nu, g, lobe);
     for (int i = 0; i < 11; ++i) {
         sum += pointPanel<Real, N>(breaks[i], breaks[i + 1], y0, nu, g, lobe);
     }
@@ -396,11 +397,12 @@ Real cosineLobeSegment(glm::vec<3, Real> D, glm::vec<3, Real> w, glm::vec<3, Rea
                        Real sigma_s, Real sigma_t, Real g, Real I0) {
     const glm::vec<2, Real> front = frontOfEmitter(D, w, n, x0, x1);
     if (!(front.y > front.x)) return Real(0);
-    const glm::vec<3, Real> m = glm::cross(glm::cross(D, w), w);
+    // rayLightGeometry's D x w, once: h = |D x w| and m = (D x w) x w.
+    const glm::vec<3, Real> dw = glm::cross(D, w);
+    const glm::vec<3, Real> m = glm::cross(dw, w);
     const Real mLength = glm::length(m);
     const Real mn = mLength > Real(0) ? glm::dot(m, n) / mLength : Real(0);
-    const RayLightGeometry<Real> geometry = rayLightGeometry(D, w);
-    return pointSegmentWithLobe<Real, N>(geometry.tP, geometry.h, front.x, front.y, sigma_s, sigma_t, g, I0,
+    return pointSegmentWithLobe<Real, N>(glm::dot(D, w), glm::length(dw), front.x, front.y, sigma_s, sigma_t, g, I0,
                                          AngularFactor<Real>{Real(0), mn, glm::dot(w, n)});
 }
 

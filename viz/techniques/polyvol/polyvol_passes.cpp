@@ -261,7 +261,10 @@ std::int64_t PolyvolTechnique::drawVolumes(const scene::Scene& scene, const Fram
 void PolyvolTechnique::drawMesh(const gl::Program& program, const polyvol::VolumeGrid& grid, const gl::Buffer& keys,
                                 std::int64_t gridTriangles, std::int64_t extraTriangles, std::int64_t count) {
     const int n = grid.mapSize;
-    if (mRowIndicesSize != n) {
+    // Uploaded once per grid size (a scene's 2D maps and VPL cubes differ): lights of both kinds in one
+    // frame only switch the binding.
+    gl::Buffer& rowIndices = mRowIndices[n];
+    if (!rowIndices) {
         // Quad i of a row: (00, 10, 11) and (00, 11, 01) with texel (i + di, j + dj) as vertex i + di + n dj,
         // counter-clockwise in the map's ndc, i.e. seen from the light.
         std::vector<std::uint32_t> indices;
@@ -270,13 +273,12 @@ void PolyvolTechnique::drawMesh(const gl::Program& program, const polyvol::Volum
             const std::uint32_t v00 = i, v10 = i + 1, v01 = i + std::uint32_t(n), v11 = i + 1 + std::uint32_t(n);
             indices.insert(indices.end(), {v00, v10, v11, v00, v11, v01});
         }
-        mRowIndices = gl::Buffer::create({.bytes = indices.size() * sizeof(std::uint32_t),
-                                          .data = indices.data(),
-                                          .flags = 0,
-                                          .label = "polyvol.grid_row_indices"});
-        mRowIndicesSize = n;
-        mVao.elementBuffer(mRowIndices);
+        rowIndices = gl::Buffer::create({.bytes = indices.size() * sizeof(std::uint32_t),
+                                         .data = indices.data(),
+                                         .flags = 0,
+                                         .label = "polyvol.grid_row_indices"});
     }
+    mVao.elementBuffer(rowIndices);
     mVao.bind();
     const std::int64_t perRow = 2 * std::int64_t(n - 1);
     const std::int64_t fromGrid = std::min(gridTriangles, count);

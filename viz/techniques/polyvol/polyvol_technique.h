@@ -207,8 +207,7 @@ private:
     gl::Texture mTotal, mPositive, mNegative, mCrossings;
     gl::Framebuffer mFramebuffer;
     gl::VertexArray mVao;
-    gl::Buffer mRowIndices;  // one row of N - 1 quads (drawMesh), for grids of mRowIndicesSize texels
-    int mRowIndicesSize = 0;
+    std::map<int, gl::Buffer> mRowIndices;  // per grid size N: one row of N - 1 quads (drawMesh)
     std::map<std::pair<int, int>, Extra> mExtras;
     polyvol::AdaptiveTessellation mTess;
     bool mAdaptiveUsed = false, mAdaptiveOverflow = false, mWireDrawn = false;
