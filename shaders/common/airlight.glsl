@@ -154,7 +154,6 @@ float pointPanel(float a, float b, float y0, float nu, float g, vec3 lobe) {
 float pointSegmentWithLobe(float tP, float h, float x0, float x1, float sigma_s, float sigma_t, float g, float I0,
                            vec3 lobe) {
     if (!(x1 > x0) || !(sigma_s > 0.0) || !(I0 > 0.0)) return 0.0;
-    WORK_COUNT(kWorkClosedFormSegments, 1);
 
     // Positions relative to the foot point P; s1 = +inf for the sky.
     float s0 = x0 - tP;
@@ -164,6 +163,28 @@ float pointSegmentWithLobe(float tP, float h, float x0, float x1, float sigma_s,
                              : min(abs(s0), abs(s1));
     if (scale == 0.0) scale = abs(tP);
     h = max(h, max(AIRLIGHT_MIN_RELATIVE_H * scale, AIRLIGHT_MIN_ABSOLUTE_H));
+
+    // A lobe without a constant term changes sign at s = -h a / b: the segment ends at that zero of the
+    // integrand's own A, so every panel is smooth (see airlight.h).
+    float length_ = x1 - x0;
+    if (lobe.x == 0.0) {
+        if (lobe.z == 0.0) {
+            if (!(lobe.y > 0.0)) return 0.0;
+        } else {
+            float sZero = -h * (lobe.y / lobe.z);
+            if (lobe.z > 0.0 ? !(sZero < s1) : !(sZero > s0)) return 0.0;
+            if (lobe.z > 0.0 && sZero > s0) {
+                s0 = sZero;
+                x0 = tP + sZero;
+                length_ = s1 - s0;
+            } else if (lobe.z < 0.0 && sZero < s1) {
+                s1 = sZero;
+                x1 = tP + sZero;
+                length_ = s1 - s0;
+            }
+        }
+    }
+    WORK_COUNT(kWorkClosedFormSegments, 1);
 
     // Segment start: r0 = |light - point|, q0 = s0 + r0 written without cancellation for s0 < 0.
     float r0 = scaledHypot(s0, h);
@@ -175,7 +196,7 @@ float pointSegmentWithLobe(float tP, float h, float x0, float x1, float sigma_s,
     if (!isinf(x1)) {
         float r1 = scaledHypot(s1, h);
         float q1 = s1 >= 0.0 ? s1 + r1 : h * (h / (r1 - s1));
-        E = stableLog1p((x1 - x0) * ((q1 + q0) / (r1 + r0)) / q0);
+        E = stableLog1p(length_ * ((q1 + q0) / (r1 + r0)) / q0);
     }
 
     // Extinction cut: nu expm1(eta) reaches K at eta = log1p(K / nu).
@@ -223,11 +244,9 @@ float pointSegment(float tP, float h, float x0, float x1, float sigma_s, float s
 
 // ---- Cosine-lobe emitter (an area light's VPL; docs/numerics.md#cosine-lobe-emitter) -----------------
 
-// L(x0, x1) for a light at D (camera-relative) emitting I0 max(0, n . u) toward u, n its unit normal: the
-// segment cut at the emitter's plane, the lobe (n . m) sech(y) + (n . w) tanh(y) integrated exactly
-// (see airlight.h).
 // The part of [x0, x1] in front of the emitter's plane through D with normal n (where x (w . n) > D . n);
-// empty (y <= x) when none is.
+// empty (y <= x) when none is. For the lobe's pieces under AIRLIGHT_LUT (polyvol's segment.glsl), whose
+// table holds only the isotropic integral.
 vec2 frontOfEmitter(vec3 D, vec3 w, vec3 n, float x0, float x1) {
     float wn = dot(w, n);
     float dn = dot(D, n);
@@ -244,15 +263,16 @@ vec2 frontOfEmitter(vec3 D, vec3 w, vec3 n, float x0, float x1) {
     return vec2(x0, x1);
 }
 
+// L(x0, x1) for a light at D (camera-relative) emitting I0 max(0, n . u) toward u, n its unit normal: the
+// lobe (n . m) sech(y) + (n . w) tanh(y) integrated exactly, the segment ended at the lobe's zero (the
+// emitter's plane) by pointSegmentWithLobe (see airlight.h).
 float cosineLobeSegment(vec3 D, vec3 w, vec3 n, float x0, float x1, float sigma_s, float sigma_t, float g, float I0) {
-    vec2 front = frontOfEmitter(D, w, n, x0, x1);
-    if (!(front.y > front.x)) return 0.0;
     // rayLightGeometry's D x w, once: h = |D x w| and m = (D x w) x w.
     vec3 dw = cross(D, w);
     vec3 m = cross(dw, w);
     float mLength = length(m);
     float mn = mLength > 0.0 ? dot(m, n) / mLength : 0.0;
-    return pointSegmentWithLobe(dot(D, w), length(dw), front.x, front.y, sigma_s, sigma_t, g, I0,
+    return pointSegmentWithLobe(dot(D, w), length(dw), x0, x1, sigma_s, sigma_t, g, I0,
                                 vec3(0.0, mn, dot(w, n)));
 }
 

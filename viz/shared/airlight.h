@@ -277,20 +277,45 @@ Real pointPanel(Real a, Real b, Real y0, Real nu, Real g, AngularFactor<Real> lo
 // y_g = sign(g) ln((1 - |g|)/2), plus optical depths 2 and 6 from x0.
 //
 // pointSegmentWithLobe multiplies the integrand by the angular factor A(y) (AngularFactor); A varies on
-// the same scale in y as 1/cosh(y), with poles at the same places, so the same panels resolve it.
+// the same scale in y as 1/cosh(y), with poles at the same places, so the same panels resolve it. A lobe
+// without a constant term is cut where it changes sign (below).
 template <typename Real, int N = Precision<Real>::kNodes>
 Real pointSegmentWithLobe(Real tP, Real h, Real x0, Real x1, Real sigma_s, Real sigma_t, Real g, Real I0,
                           AngularFactor<Real> lobe) {
     if (!(x1 > x0) || !(sigma_s > Real(0)) || !(I0 > Real(0))) return Real(0);
 
     // Positions relative to the foot point P; s1 = +inf for the sky.
-    const Real s0 = x0 - tP;
-    const Real s1 = x1 - tP;
+    Real s0 = x0 - tP;
+    Real s1 = x1 - tP;
     const bool footInside = s0 <= Real(0) && s1 >= Real(0);
     Real scale = footInside ? std::max(std::abs(s0), std::isinf(s1) ? Real(0) : s1)
                             : std::min(std::abs(s0), std::abs(s1));
     if (scale == Real(0)) scale = std::abs(tP);
     h = std::max(h, std::max(Precision<Real>::kMinRelativeH * scale, Real(kMinAbsoluteH)));
+
+    // A lobe without a constant term, a sech(y) + b tanh(y) = (a + b sinh(y)) / cosh(y), changes sign at
+    // s = h sinh(y) = -h a / b and is negative on one side: the segment ends there, at the zero of the
+    // integrand's own A, so the integrand is smooth on every panel. (A cut at the emitter's plane in x,
+    // D . n / w . n, carries the rounding of |D|-sized values, a large fraction of h next to the light,
+    // and the kink it left inside a panel cost the float kernel 6.5e-5 on a ray passing 1e-5 from a VPL.)
+    Real length = x1 - x0;
+    if (lobe.constant == Real(0)) {
+        if (lobe.ray == Real(0)) {
+            if (!(lobe.foot > Real(0))) return Real(0);
+        } else {
+            const Real sZero = -h * (lobe.foot / lobe.ray);
+            if (lobe.ray > Real(0) ? !(sZero < s1) : !(sZero > s0)) return Real(0);
+            if (lobe.ray > Real(0) && sZero > s0) {
+                s0 = sZero;
+                x0 = tP + sZero;
+                length = s1 - s0;
+            } else if (lobe.ray < Real(0) && sZero < s1) {
+                s1 = sZero;
+                x1 = tP + sZero;
+                length = s1 - s0;
+            }
+        }
+    }
 
     // Segment start: r0 = |light - point|, q0 = s0 + r0 written without cancellation for s0 < 0.
     const Real r0 = scaledHypot(s0, h);
@@ -303,7 +328,7 @@ Real pointSegmentWithLobe(Real tP, Real h, Real x0, Real x1, Real sigma_s, Real 
     if (!std::isinf(x1)) {
         const Real r1 = scaledHypot(s1, h);
         const Real q1 = s1 >= Real(0) ? s1 + r1 : h * (h / (r1 - s1));
-        E = stableLog1p((x1 - x0) * ((q1 + q0) / (r1 + r0)) / q0);
+        E = stableLog1p(length * ((q1 + q0) / (r1 + r0)) / q0);
     }
 
     // Extinction cut: sigma_t ((x + r) - (x0 + r0)) = nu expm1(eta) reaches K at eta = log1p(K / nu).
@@ -368,41 +393,21 @@ Real pointSegment(Real tP, Real h, Real x0, Real x1, Real sigma_s, Real sigma_t,
 // ---- Cosine-lobe emitter (an area light's VPL; docs/numerics.md#cosine-lobe-emitter) -----------------
 
 // L(x0, x1) for a light at D (camera-relative) whose intensity toward a unit direction u is
-// I0 max(0, n . u), n the emitter's unit normal: the segment is cut at the emitter's plane (behind it
-// nothing is emitted) and the lobe n . u(y) = (n . m) sech(y) + (n . w) tanh(y) integrated exactly, with
-// m = (P - light) / |P - light| formed from cross products ((D x w) x w = P - light, no difference of
-// |D|-sized vectors). Piecewise-constant pieces of the lobe instead (its value at each piece's middle angle)
-// are off by the lobe's curvature over a piece and cost one segment each.
-// The part of [x0, x1] in front of the emitter's plane through D with normal n (where x (w . n) > D . n);
-// empty (y <= x) when none is.
-template <typename Real>
-glm::vec<2, Real> frontOfEmitter(glm::vec<3, Real> D, glm::vec<3, Real> w, glm::vec<3, Real> n, Real x0, Real x1) {
-    const Real wn = glm::dot(w, n);
-    const Real dn = glm::dot(D, n);
-    if (wn != Real(0)) {
-        const Real tPlane = dn / wn;
-        if (wn > Real(0)) {
-            x0 = std::max(x0, tPlane);
-        } else {
-            x1 = std::min(x1, tPlane);
-        }
-    } else if (dn >= Real(0)) {
-        return glm::vec<2, Real>(Real(0));
-    }
-    return glm::vec<2, Real>(x0, x1);
-}
-
+// I0 max(0, n . u), n the emitter's unit normal: the lobe n . u(y) = (n . m) sech(y) + (n . w) tanh(y)
+// integrated exactly, with m = (P - light) / |P - light| formed from cross products ((D x w) x w =
+// P - light, no difference of |D|-sized vectors). Behind the emitter's plane nothing is emitted: the lobe
+// is negative there, and pointSegmentWithLobe ends the segment at the lobe's zero. Piecewise-constant
+// pieces of the lobe instead (its value at each piece's middle angle) are off by the lobe's curvature over
+// a piece and cost one segment each.
 template <typename Real, int N = Precision<Real>::kNodes>
 Real cosineLobeSegment(glm::vec<3, Real> D, glm::vec<3, Real> w, glm::vec<3, Real> n, Real x0, Real x1,
                        Real sigma_s, Real sigma_t, Real g, Real I0) {
-    const glm::vec<2, Real> front = frontOfEmitter(D, w, n, x0, x1);
-    if (!(front.y > front.x)) return Real(0);
     // rayLightGeometry's D x w, once: h = |D x w| and m = (D x w) x w.
     const glm::vec<3, Real> dw = glm::cross(D, w);
     const glm::vec<3, Real> m = glm::cross(dw, w);
     const Real mLength = glm::length(m);
     const Real mn = mLength > Real(0) ? glm::dot(m, n) / mLength : Real(0);
-    return pointSegmentWithLobe<Real, N>(glm::dot(D, w), glm::length(dw), front.x, front.y, sigma_s, sigma_t, g, I0,
+    return pointSegmentWithLobe<Real, N>(glm::dot(D, w), glm::length(dw), x0, x1, sigma_s, sigma_t, g, I0,
                                          AngularFactor<Real>{Real(0), mn, glm::dot(w, n)});
 }
 

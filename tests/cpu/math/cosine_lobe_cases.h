@@ -34,6 +34,7 @@ inline std::vector<LobeCase> cosineLobeCases() {
         {"beside", {5.0, 1.0, 0.0}, 0.0, 10.0},
         {"next to the ray", {5.0, 1e-3, 0.0}, 0.0, 10.0},
         {"grazing the light", {5.0, 1e-5, 0.0}, 0.0, 10.0},
+        {"1e-6 from the light", {5.0, 1e-6, 0.0}, 0.0, 10.0},
         {"behind the camera", {-3.0, 0.5, 0.2}, 0.0, 20.0},
         {"ahead of the segment", {50.0, 2.0, 1.0}, 0.0, 10.0},
         {"sliver at the foot point", {5.0, 0.3, 0.0}, 4.9, 5.1},
