@@ -31,11 +31,28 @@ fuzz() {
         ctest --preset fuzz
 }
 suite() {
+    local rc=0
     if [ -z "${DISPLAY:-}" ] && [ -z "${WAYLAND_DISPLAY:-}" ]; then
-        xvfb-run -a -s "-screen 0 1280x720x24 -noreset" ctest --preset ci "$@"
+        xvfb-run -a -s "-screen 0 1280x720x24 -noreset" ctest --preset ci "$@" || rc=$?
     else
-        ctest --preset ci "$@"
+        ctest --preset ci "$@" || rc=$?
     fi
+    [ "$rc" = 0 ] || record_failures
+    return "$rc"
+}
+# A failed test's name and the end of its output, kept for the summary printed last: a CI log is often
+# read from its end, and the fuzz preset's output would otherwise bury the suite's failures.
+record_failures() {
+    local dir=build/ci/Testing/Temporary
+    [ -f "$dir/LastTestsFailed.log" ] || return 0
+    mkdir -p build
+    while IFS=: read -r _ name; do
+        echo "==== FAILED: $name"
+        awk -v t="$name" '$0 ~ "^[0-9]+/[0-9]+ Testing: " t "$" {on=1; n=0; next}
+                          on && /^Test time = / {exit}
+                          on {line[n++ % 40] = $0}
+                          END {for (i = (n > 40 ? n - 40 : 0); i < n; ++i) print "  " line[i % 40]}' "$dir/LastTest.log"
+    done < "$dir/LastTestsFailed.log" >> build/failures.log
 }
 if [ "${AIRLIGHT_SKIP_FUZZ:-0}" = 1 ]; then
     suite "$@"
@@ -53,6 +70,7 @@ else
     # two compilers: with one, since it builds every CPU test binary, it ran about 5.4 minutes past the suite's
     # end, the other core idle.
     mkdir -p build
+    rm -f build/failures.log
     status=0
     suite -R '^Soak\.' || status=1
     fuzz 2 > build/fuzz-run.log 2>&1 &
@@ -66,6 +84,11 @@ else
     if [ "$fuzz_status" != 0 ]; then
         echo "preset fuzz failed (exit $fuzz_status)"
         status=1
+    fi
+    if [ -s build/failures.log ]; then
+        echo "---- the suite's failed tests, each with the last 40 lines of its output ----"
+        cat build/failures.log
+        echo "---- failed: $(grep '^==== FAILED: ' build/failures.log | cut -c14- | tr '\n' ' ')"
     fi
     exit "$status"
 fi
