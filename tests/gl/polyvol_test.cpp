@@ -1,6 +1,6 @@
 // polyvol: the light volume mesh is closed (CPU), its image against the reference and against raymarch
 // on the same shadow map, the camera inside the volume and at the near plane, the crack detector, and
-// what plan() leaves out.
+// what plan() leaves out. Adaptive tessellation: polyvol_tessellation_test.cpp.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -15,17 +15,17 @@
 #include "scene/builtin_scenes.h"
 #include "scene/scene_source.h"
 #include "scene/stiff_scenes.h"
-#include "technique_test_util.h"
-#include "techniques/polyvol/crack_check.h"
+#include "polyvol_test_util.h"
 #include "techniques/polyvol/light_volume_mesh.h"
 #include "techniques/registry.h"
 
 namespace {
 
-class PolyvolTest : public viz::testing::TechniqueTest {};
-
 using viz::testing::allFinite;
+using viz::testing::crackPixels;
+using viz::testing::PolyvolTest;
 using viz::testing::relativeL2;
+using viz::testing::trianglesDrawn;
 
 // Every directed edge of a closed, consistently oriented, T-junction-free triangle mesh appears exactly
 // once, and so does its reverse. Returns the number of edges breaking that rule.
@@ -70,13 +70,6 @@ viz::scene::Camera lookAtCamera(const viz::scene::Camera& base, glm::dvec3 eye, 
     const glm::dvec3 right = glm::normalize(glm::cross(c.forward, glm::dvec3(0, 1, 0)));
     c.up = glm::cross(right, c.forward);
     return c;
-}
-
-int crackPixels(const viz::FrameOutput& out) {
-    for (const auto& i : out.intermediates)
-        if (i.id == "polyvol.crossings" && i.image) return viz::polyvol::countCrackPixels(*i.image, 1).badPixels;
-    ADD_FAILURE() << "no polyvol.crossings image";
-    return -1;
 }
 
 }  // namespace
@@ -332,127 +325,6 @@ TEST_F(PolyvolTest, LookupTableAgreesWithTheClosedForm) {
     }
 }
 
-namespace {
-
-std::int64_t trianglesDrawn(const viz::FrameOutput& out) {
-    const viz::Intermediate* mesh = nullptr;
-    for (const auto& i : out.intermediates)
-        if (i.id == "polyvol.mesh") mesh = &i;
-    EXPECT_NE(mesh, nullptr);
-    return mesh ? std::stoll(mesh->note) : -1;
-}
-
-}  // namespace
-
-// The issue's figure: on colonnade with a 2048^2 map, adaptive tessellation gives the static image within
-// 1e-3 relative L2 with fewer triangles; the adaptive mesh is watertight (no T-junction cracks).
-TEST_F(PolyvolTest, AdaptiveTessellationMatchesStaticWithFewerTriangles) {
-    const viz::scene::Scene scene = viz::scene::makeBuiltinScene("colonnade");
-    const viz::FrameOutput fixed = render(scene, "polyvol", {{"shadow_map", 2048}}, 160, 120);
-    const viz::FrameOutput adaptive =
-        render(scene, "polyvol", {{"shadow_map", 2048}, {"tessellation", 1}}, 160, 120, -1, {"polyvol.crossings"});
-    EXPECT_TRUE(allFinite(adaptive.airlight));
-    const double e = relativeL2(adaptive.airlight, fixed.airlight);
-    const std::int64_t nStatic = trianglesDrawn(fixed), nAdaptive = trianglesDrawn(adaptive);
-    std::printf("colonnade 2048^2: static %lld triangles, adaptive %lld; relative L2 adaptive vs static %.2e\n",
-                (long long)nStatic, (long long)nAdaptive, e);
-    EXPECT_LT(e, 1e-3);
-    EXPECT_LT(nAdaptive, nStatic);
-    const viz::FrameOutput cracks = render(
-        scene, "polyvol", {{"shadow_map", 2048}, {"tessellation", 1}, {"crack_check", 1}}, 160, 120, 2,
-        {"polyvol.crossings"});
-    EXPECT_EQ(crackPixels(cracks), 0);
-}
-
-namespace {
-
-// terrain with its heightfield replaced by the saddle y = 0.012 x z (+-10.8 at the corners): the vertex
-// depths of the sun's orthographic map are a bilinear function of the texel, whose Laplacian is zero.
-viz::scene::Scene saddle() {
-    viz::scene::Scene s = viz::scene::makeBuiltinScene("terrain");
-    s.name = "saddle";
-    const double k = 0.012;
-    viz::scene::Mesh& m = s.meshes.front();
-    for (std::size_t i = 0; i < m.positions.size(); ++i) {
-        const double x = m.positions[i].x, z = m.positions[i].z;
-        m.positions[i].y = float(k * x * z);
-        m.normals[i] = glm::vec3(glm::normalize(glm::dvec3(-k * z, 1.0, -k * x)));
-    }
-    return s;
-}
-
-}  // namespace
-
-// Curved receivers (issue 18, item 6): the paper's Laplacian coarsens a saddle (zero there) and gentle
-// curves (small there) into quads of up to N/16 texels that cut across the surface; the second-difference
-// measure keeps them at the finest level, so adaptive matches the static mesh (one vertex per texel).
-TEST_F(PolyvolTest, AdaptiveTessellationFollowsCurvedReceivers) {
-    for (const viz::scene::Scene& scene : {saddle(), viz::scene::makeBuiltinScene("terrain")}) {
-        const viz::Settings base = {{"shadow_map", 1024}};
-        const viz::FrameOutput fixed = render(scene, "polyvol", base, 160, 120);
-        double e[2];
-        std::int64_t n[2];
-        for (int measure : {0, 1}) {
-            viz::Settings s = base;
-            s["tessellation"] = 1;
-            s["edge_measure"] = measure;
-            const viz::FrameOutput adaptive = render(scene, "polyvol", s, 160, 120);
-            EXPECT_TRUE(allFinite(adaptive.airlight));
-            e[measure] = relativeL2(adaptive.airlight, fixed.airlight);
-            n[measure] = trianglesDrawn(adaptive);
-        }
-        const std::int64_t nStatic = trianglesDrawn(fixed);
-        std::printf("%s 1024^2: static %lld triangles; adaptive laplacian %lld, relative L2 vs static %.2e; "
-                    "curvature %lld, %.2e\n", scene.name.c_str(), (long long)nStatic, (long long)n[0], e[0],
-                    (long long)n[1], e[1]);
-        // Measured: saddle laplacian 1.1e-4, curvature 1.0e-6; terrain 4.1e-8 and 7.0e-9; colonnade (planes,
-        // the test above) 3.3e-7. Adaptive still draws a fraction of the static mesh.
-        EXPECT_LT(e[1], 1e-5) << scene.name;
-        EXPECT_LE(e[1], e[0]) << scene.name;
-        EXPECT_LT(n[1], nStatic / 4) << scene.name;
-        if (scene.name == "saddle") {
-            EXPECT_GT(e[0], 10.0 * e[1]);  // the Laplacian is blind to the saddle
-        }
-    }
-}
-
-// The plan leaves adaptive tessellation out below 512^2 (where it stops paying off); force_features=1
-// keeps it on, so these tests check the adaptive mesh on cheap 256^2 maps.
-TEST_F(PolyvolTest, CrackDetectorFindsNoHoleWithAdaptiveTessellation) {
-    for (const char* name : {"grate", "stained-glass", "colonnade"}) {
-        const viz::scene::Scene scene = viz::scene::makeBuiltinScene(name);
-        for (double threshold : {1e-4, 1e-2}) {
-            const viz::FrameOutput out =
-                render(scene, "polyvol",
-                       {{"shadow_map", 256}, {"tessellation", 1}, {"force_features", 1}, {"threshold", threshold}, {"crack_check", 1}},
-                       160, 120, 2, {"polyvol.crossings"});
-            EXPECT_EQ(crackPixels(out), 0) << name << " threshold " << threshold;
-        }
-    }
-}
-
-// Benchmark (not run by CTest: DISABLED_; run with --gtest_also_run_disabled_tests in a Release build):
-// static vs adaptive tessellation on colonnade and forest, shadow maps 256^2 .. 4096^2, 160x120: volume
-// stage time, triangles drawn, relative L2 of L_air against the reference.
-TEST_F(PolyvolTest, DISABLED_BenchmarkStaticVsAdaptive) {
-    for (const char* name : {"colonnade", "forest"}) {
-        const viz::scene::Scene scene = viz::scene::makeBuiltinScene(name);
-        const viz::FrameOutput reference = render(scene, "reference", {}, 160, 120);
-        for (int n : {256, 512, 1024, 2048, 4096}) {
-            for (int adaptive : {0, 1}) {
-                const viz::FrameOutput out =
-                    render(scene, "polyvol", {{"shadow_map", n}, {"tessellation", adaptive}}, 160, 120);
-                double volumeMs = 0.0;
-                for (const auto& st : out.timing.stages)
-                    if (st.stage == "polyvol.volume") volumeMs = st.milliseconds;
-                std::printf("%-9s %4d^2 %-8s volume %9.1f ms  triangles %9lld  rel L2 vs reference %.4f\n", name, n,
-                            adaptive ? "adaptive" : "static", volumeMs, (long long)trianglesDrawn(out),
-                            relativeL2(out.airlight, reference.airlight));
-            }
-        }
-    }
-}
-
 // Precision study (DISABLED_: a measurement, run on demand): the float32 signed sum against the reference
 // in stiff cases, with the terms taken from the eye (origin=eye) or from the surface (origin=surface).
 // Cancellation ratio = (positive + negative) / |total| per pixel (its maximum over pixels with at least
@@ -552,34 +424,6 @@ TEST_F(PolyvolTest, TheOrbitViewOfTheMeshStaysInsideTheScenesBox) {
     }
 }
 
-// Stepping the refinement: stopping at a coarser level leaves fewer, larger quads (and the level map
-// holds no level below the stop).
-TEST_F(PolyvolTest, StoppingTheRefinementAtALevelGivesACoarserMesh) {
-    const viz::scene::Scene scene = viz::scene::makeBuiltinScene("colonnade");
-    std::vector<std::int64_t> counts;
-    for (int stop : {-1, 2, 4}) {
-        const viz::FrameOutput out =
-            render(scene, "polyvol", {{"shadow_map", 256}, {"tessellation", 1}, {"force_features", 1}, {"stop_level", stop}},
-                   64, 48, 2,
-                   {"polyvol.tess_levels"});
-        counts.push_back(trianglesDrawn(out));
-        const viz::Intermediate* levels = find(out, "polyvol.tess_levels");
-        ASSERT_TRUE(levels && levels->image);
-        // The quads touching the grid border are refined to level 0 whatever the stop (the closure meets
-        // every border texel), so a margin of one stop-level quad is left out.
-        const int margin = stop > 0 ? 1 << stop : 1;
-        float lowest = 1.0f;
-        for (int y = margin; y + margin < levels->image->height; ++y)
-            for (int x = margin; x + margin < levels->image->width; ++x)
-                lowest = std::min(lowest, levels->image->at(x, y, 0));
-        if (stop > 0) {
-            EXPECT_GE(lowest * 16.0f, float(stop) - 0.5f) << "stop_level " << stop;
-        }
-    }
-    EXPECT_GT(counts[0], counts[1]);
-    EXPECT_GT(counts[1], counts[2]);
-}
-
 // The crossings view says where the depth clamp kept a face (b: crossings in front of the near plane):
 // none on grate; with the camera inside the lit volume and a near plane 1 unit out, the bars' shadow
 // faces within that unit are kept, and L_air is the same as with the usual 0.05 (what the clamp is for).
@@ -606,19 +450,6 @@ TEST_F(PolyvolTest, CrossingsCountTheFacesTheDepthClampKeeps) {
     const double e = relativeL2(inside.airlight, usual.airlight);
     std::printf("camera in the lit volume: znear 1 vs 0.05, relative L2 %.2e\n", e);
     EXPECT_LT(e, 1e-3);
-}
-
-// Stopped refinement is a coarser mesh, still closed: no crack at any stop level (the border ring stays
-// at the finest level to meet the closure, and stopped quads add no midpoints for their neighbours).
-TEST_F(PolyvolTest, SteppingTheRefinementLeavesNoCrack) {
-    const viz::scene::Scene scene = viz::scene::makeBuiltinScene("grate");
-    for (int stop : {1, 2, 3}) {
-        const viz::FrameOutput out =
-            render(scene, "polyvol",
-                   {{"shadow_map", 256}, {"tessellation", 1}, {"force_features", 1}, {"stop_level", stop}, {"crack_check", 1}},
-                   80, 60, 2, {"polyvol.crossings"});
-        EXPECT_EQ(crackPixels(out), 0) << "stop_level " << stop;
-    }
 }
 
 // A coloured cookie (stained-glass): the volume follows the cookie's dark texels and the colour is taken
