@@ -1,6 +1,6 @@
 // Tests of the shared GPU passes on tiny scenes: the surface pass (distance against CPU ray-plane
 // intersections along scene::pixelRay, sky = zfar, Lambert under a point light against the CPU formula),
-// shadow visibility of spot, point (all six cube faces) and directional maps, and the final composite.
+// textured albedo and emitters, and the final composite. Shadow visibility: shadow_maps_test.cpp.
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -13,78 +13,18 @@
 #include <vector>
 
 #include "gl/gl.h"
-#include "gl/gl_test_fixture.h"
 #include "render/compose.h"
 #include "render/gpu_lights.h"
 #include "render/gpu_scene.h"
 #include "render/shadow_maps.h"
 #include "render/surface_pass.h"
+#include "render_pipeline_util.h"
 #include "scene/area_light.h"
 #include "scene/camera.h"
 #include "scene/texture_sampling.h"
 
-namespace viz::render {
+namespace viz::render::test {
 namespace {
-
-// One headless GL 4.5 context per suite (skips without GL unless VIZ_REQUIRE_GL=1).
-class RenderPipeline : public gl::GlTest {};
-
-// Axis-aligned quad: centre c, half extents along two axes, normal along the third (+1 or -1).
-scene::Mesh quad(glm::dvec3 c, int normalAxis, glm::dvec2 half, bool withNormals = true, int material = -1) {
-    const int a = (normalAxis + 1) % 3, b = (normalAxis + 2) % 3;
-    scene::Mesh m;
-    m.name = "quad";
-    for (auto [sa, sb] : {std::pair{-1.0, -1.0}, {1.0, -1.0}, {1.0, 1.0}, {-1.0, 1.0}}) {
-        glm::dvec3 p = c;
-        p[a] += sa * half.x;
-        p[b] += sb * half.y;
-        m.positions.push_back(glm::vec3(p));
-        m.uvs.push_back(glm::vec2(0.5 * (sa + 1.0), 0.5 * (sb + 1.0)));
-    }
-    if (withNormals) {
-        glm::vec3 n(0.0f);
-        n[normalAxis] = 1.0f;
-        m.normals.assign(4, n);
-    }
-    m.indices = {0, 1, 2, 0, 2, 3};
-    m.material = material;
-    return m;
-}
-
-scene::Camera lookCamera(glm::dvec3 position, glm::dvec3 target, double zfar) {
-    scene::Camera cam;
-    cam.position = position;
-    cam.forward = glm::normalize(target - position);
-    const glm::dvec3 right = glm::normalize(glm::cross(cam.forward, glm::dvec3(0, 1, 0)));
-    cam.up = glm::cross(right, cam.forward);
-    cam.yfov = 0.8;
-    cam.znear = 0.05;
-    cam.zfar = zfar;
-    return cam;
-}
-
-// Distance along the ray to the floor quad y = y0, |x - cx| <= s, |z - cz| <= s, or nothing.
-std::optional<double> hitFloor(const glm::dvec3& o, const glm::dvec3& d, double y0, double cx, double cz, double s) {
-    if (d.y >= 0.0) return std::nullopt;
-    const double t = (y0 - o.y) / d.y;
-    const glm::dvec3 p = o + t * d;
-    if (std::abs(p.x - cx) > s || std::abs(p.z - cz) > s) return std::nullopt;
-    return t;
-}
-
-struct Frame {
-    Image distance, radiance;
-};
-
-Frame renderSurface(const scene::Scene& s, int width, int height, int shadowSize = 256) {
-    GpuScene gpuScene(s);
-    GpuLights lights(s, s.camera.position, 2);
-    ShadowMaps shadows;
-    shadows.build(gpuScene, lights, shadowSize, 64);
-    SurfacePass pass;
-    pass.run(gpuScene, lights, shadows, s, width, height);
-    return {gl::readTexture(pass.distance()), gl::readTexture(pass.surfaceRadiance())};
-}
 
 // Checks the distance image against the CPU intersection, skipping pixels whose neighbours disagree on
 // hit/miss (the quad's silhouette, where coverage depends on rasterisation rules). Returns #checked.
@@ -231,222 +171,6 @@ TEST_F(RenderPipeline, LambertSumsSpotAndDirectionalLights) {
     EXPECT_GT(inCone, 20);
 }
 
-// Evaluates shadowVisibility for light `index` at world points with shaders/render/probe_lights.comp.
-std::vector<float> visibility(const scene::Scene& s, const glm::dvec3& eye, int index,
-                              const std::vector<glm::dvec3>& world, int size = 256) {
-    GpuScene gpuScene(s);
-    GpuLights lights(s, eye, 1);
-    ShadowMaps shadows;
-    shadows.build(gpuScene, lights, size, size);
-    auto program = gl::Program::compile({.stages = {"render/probe_lights.comp"}, .label = "test.probe"});
-    std::vector<glm::vec4> points;
-    for (const auto& p : world) points.push_back(glm::vec4(glm::vec3(p - eye), 1.0f));
-    auto in = gl::Buffer::create({.bytes = points.size() * sizeof(glm::vec4), .data = points.data()});
-    auto out = gl::Buffer::create({.bytes = 4 * points.size() * sizeof(glm::vec4)});
-    in.bindBase(GL_SHADER_STORAGE_BUFFER, hd::kFirstFreeSsboBinding);
-    out.bindBase(GL_SHADER_STORAGE_BUFFER, hd::kFirstFreeSsboBinding + 1);
-    lights.bind();
-    shadows.bind();
-    gpuScene.bindMaterials();
-    program.use();
-    program.set("uMode", 1);
-    program.set("uLight", index);
-    program.set("uCount", int(points.size()));
-    glDispatchCompute(1, 1, 1);
-    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-    const auto o = out.download<glm::vec4>();
-    std::vector<float> v;
-    for (std::size_t i = 0; i < world.size(); ++i) v.push_back(o[4 * i + 2].x);
-    return v;
-}
-
-// Floor y = 0 and an occluder at y = 2, off-centre toward +x +z, so a flipped map shadows the wrong side.
-scene::Scene occluderScene() {
-    scene::Scene s;
-    s.meshes.push_back(quad({0.0, 0.0, 0.0}, 1, {5.0, 5.0}));
-    s.meshes.push_back(quad({0.25, 2.0, 0.25}, 1, {0.15, 0.15}));
-    s.camera = lookCamera({0.0, 3.0, 6.0}, {0.0, 0.0, 0.0}, 50.0);
-    return s;
-}
-
-// A spot 3 above the floor pointing straight down over the occluder (cone half-angle 1 rad).
-scene::Light spotAboveOccluder() {
-    scene::Light spot{.type = scene::LightType::Spot,
-                      .position = {0.0, 3.0, 0.0},
-                      .direction = {0.0, -1.0, 0.0},
-                      .outerConeAngle = 1.0};
-    return spot;
-}
-
-TEST_F(RenderPipeline, SpotShadowMapOccludesBelowTheOccluderOnly) {
-    scene::Scene s = occluderScene();
-    const scene::Light spot = spotAboveOccluder();
-    s.lights = {spot};
-    // The occluder's shadow on the floor: scaled by 3 from the light: centre (0.75, 0, 0.75), half 0.45.
-    const std::vector<glm::dvec3> pts = {{0.75, 0.0, 0.75}, {0.6, 0.0, 0.9}, {0.5, 1.0, 0.5},  // shadowed
-                                         {-0.75, 0.0, 0.75}, {0.75, 0.0, -0.75}, {2.0, 0.0, 1.0},
-                                         {0.0, 2.5, 0.0}, {0.9, 1.0, 0.9}};  // lit (the last: beside the cone of the occluder)
-    const auto v = visibility(s, s.camera.position, 0, pts);
-    const std::vector<float> expected = {0, 0, 0, 1, 1, 1, 1, 1};
-    for (std::size_t i = 0; i < pts.size(); ++i) EXPECT_EQ(v[i], expected[i]) << "point " << i;
-}
-
-TEST_F(RenderPipeline, PublishedShadowMapsHoldDistancesToTheLight) {
-    scene::Scene s = occluderScene();
-    const scene::Light spot = spotAboveOccluder();
-    scene::Light point = spot;
-    point.type = scene::LightType::Point;
-    s.lights = {spot, point};
-    GpuScene gpuScene(s);
-    GpuLights lights(s, s.camera.position, 1);
-    ShadowMaps shadows;
-    const int size = 128;
-    shadows.build(gpuScene, lights, size, 32);
-    std::vector<Intermediate> out;
-    shadows.publish(out, "test");
-    ASSERT_EQ(out.size(), 2u);
-    EXPECT_EQ(out[0].id, "test.shadow_map");
-    EXPECT_EQ(out[1].id, "test.shadow_map.1");
-    EXPECT_EQ(out[0].kind, ViewKind::Depth);
-    EXPECT_EQ(out[0].glTarget, unsigned(GL_TEXTURE_2D));
-    EXPECT_EQ(out[1].glTarget, unsigned(GL_TEXTURE_CUBE_MAP));
-    // Spot: the nearest occluder point is its corner (0.1, 2, 0.1), at sqrt(1.02) from the light; the
-    // centre of the map looks straight down at the floor, 3 away.
-    const Image spotMap = gl::readTexture(out[0].glTexture);
-    ASSERT_EQ(spotMap.width, size);
-    float nearest = 1e30f;
-    for (float v : spotMap.pixels) nearest = std::min(nearest, v);
-    const double corner = std::sqrt(1.02);
-    EXPECT_GE(nearest, corner * (1.0 - 1e-5));
-    EXPECT_LE(nearest, corner + 2.0 * 3.0 * std::tan(1.0) / size);  // within a texel's footprint
-    EXPECT_NEAR(spotMap.at(size / 2, size / 2), 3.0, 3.0 * 1e-3);  // texel centre 1/2 texel off-axis
-    // Point cube, -Y face (layer 3): the same geometry seen from the same place.
-    const Image down = gl::readTexture(out[1].glTexture, 0, 3);
-    float nearestCube = 1e30f;
-    for (float v : down.pixels) nearestCube = std::min(nearestCube, v);
-    EXPECT_GE(nearestCube, corner * (1.0 - 1e-5));
-    EXPECT_LE(nearestCube, corner + 2.0 * 3.0 / size);
-}
-
-// ShadowMaps::nearest (a GPU reduction) against an exhaustive loop over the read-back texels of every
-// face, and against the geometry: the occluder's nearest corner sqrt(1.02) from the light. A second
-// light and the cube's six faces make the layer arithmetic matter; an upper bound below the value wins.
-TEST_F(RenderPipeline, NearestStoredDistanceIsTheMinimumOverTheMapsTexels) {
-    scene::Scene s = occluderScene();
-    const scene::Light spot = spotAboveOccluder();
-    scene::Light far = spot;
-    far.position = {0.0, 6.0, 0.0};
-    scene::Light point = spot;
-    point.type = scene::LightType::Point;
-    point.position = {0.25, 2.6, 0.25};  // 0.6 above the occluder's centre
-    s.lights = {spot, far, point};
-    GpuScene gpuScene(s);
-    GpuLights lights(s, s.camera.position, 1);
-    ShadowMaps shadows;
-    const int size = 128;
-    shadows.build(gpuScene, lights, size, 32);
-    const double geometric[] = {std::sqrt(1.02), std::sqrt(4.0 * 4.0 + 0.02), 0.6};
-    for (int i = 0; i < 3; ++i) {
-        const GpuLightCpu& L = lights.lights()[std::size_t(i)];
-        ASSERT_GE(L.info.z, 0) << i;
-        float exhaustive = 1e30f;
-        const int faces = L.info.x == hd::kLightPoint ? 6 : 1;
-        for (int f = 0; f < faces; ++f)
-            for (float v : shadows.texels(L, f)) exhaustive = std::min(exhaustive, std::max(v, 0.0f));
-        EXPECT_EQ(shadows.nearest(L, 1e30f), exhaustive) << "light " << i;
-        EXPECT_GE(exhaustive, geometric[i] * (1.0 - 1e-5)) << "light " << i;
-        EXPECT_LE(exhaustive, geometric[i] + 0.1) << "light " << i;
-        EXPECT_EQ(shadows.nearest(L, 0.25f), 0.25f) << "light " << i;
-    }
-}
-
-TEST_F(RenderPipeline, DirectionalShadowMapOccludesAlongTheTravelDirection) {
-    scene::Scene s = occluderScene();
-    scene::Light sun{.type = scene::LightType::Directional, .direction = glm::normalize(glm::dvec3(0.3, -1.0, 0.2))};
-    s.lights = {sun};
-    // Shadow of the occluder centre on the floor: c + dir * (2 / |dir.y|) = (0.85, 0, 0.65); half 0.15.
-    const glm::dvec3 c = glm::dvec3(0.25, 2.0, 0.25) + sun.direction * (2.0 / -sun.direction.y);
-    const std::vector<glm::dvec3> pts = {c, c + glm::dvec3(0.08, 0.0, -0.08), 0.5 * (c + glm::dvec3(0.25, 2.0, 0.25)),
-                                         c + glm::dvec3(-0.5, 0.0, 0.0), c + glm::dvec3(0.0, 0.0, -0.5),
-                                         c + glm::dvec3(0.5, 0.0, 0.5), {-3.0, 0.0, -3.0}, {0.25, 2.5, 0.25}};
-    const auto v = visibility(s, s.camera.position, 0, pts);
-    const std::vector<float> expected = {0, 0, 0, 1, 1, 1, 1, 1};
-    for (std::size_t i = 0; i < pts.size(); ++i) EXPECT_EQ(v[i], expected[i]) << "point " << i;
-}
-
-TEST_F(RenderPipeline, PointShadowCubeOccludesOnEveryFace) {
-    // Light at the origin; on each axis (both signs) an occluder at distance 1, off-centre by +0.25 in
-    // both tangent directions, covering [0.1, 0.4]^2. A point at distance 2 seen through (0.25, 0.25) is
-    // shadowed; the mirror images in either tangent are lit: catches flipped or swapped face axes.
-    scene::Scene s;
-    for (int axis = 0; axis < 3; ++axis) {
-        for (double sign : {1.0, -1.0}) {
-            glm::dvec3 c(0.0);
-            c[axis] = sign;
-            c[(axis + 1) % 3] = 0.25;
-            c[(axis + 2) % 3] = 0.25;
-            s.meshes.push_back(quad(c, axis, {0.15, 0.15}));
-        }
-    }
-    s.camera = lookCamera({0.1, 0.2, 0.3}, {0.0, 0.0, -1.0}, 50.0);
-    scene::Light point{.type = scene::LightType::Point, .position = {0.0, 0.0, 0.0}};
-    s.lights = {point};
-    std::vector<glm::dvec3> pts;
-    std::vector<float> expected;
-    for (int axis = 0; axis < 3; ++axis) {
-        for (double sign : {1.0, -1.0}) {
-            for (auto [ta, tb] : {std::pair{0.5, 0.5}, {-0.5, 0.5}, {0.5, -0.5}, {-0.5, -0.5}}) {
-                glm::dvec3 p(0.0);
-                p[axis] = 2.0 * sign;
-                p[(axis + 1) % 3] = ta;
-                p[(axis + 2) % 3] = tb;
-                pts.push_back(p);
-                expected.push_back(ta > 0 && tb > 0 ? 0.0f : 1.0f);
-            }
-        }
-    }
-    const auto v = visibility(s, s.camera.position, 0, pts);
-    for (std::size_t i = 0; i < pts.size(); ++i) {
-        EXPECT_EQ(v[i], expected[i]) << "point " << pts[i].x << "," << pts[i].y << "," << pts[i].z;
-    }
-}
-
-TEST_F(RenderPipeline, VplShadowCubeOccludesBelowTheOccluderOnly) {
-    scene::Scene s = occluderScene();
-    scene::Light area{.type = scene::LightType::Area,
-                      .position = {0.0, 3.0, 0.0},
-                      .direction = {0.0, -1.0, 0.0},
-                      .halfU = {0.05, 0.0, 0.0},
-                      .halfV = {0.0, 0.0, 0.05},
-                      .radiance = {1.0, 1.0, 1.0}};
-    s.lights = {area};
-    // One VPL at the centre (visibility() uses area_samples = 1): the same shadow as the spot test.
-    const std::vector<glm::dvec3> pts = {{0.75, 0.0, 0.75}, {0.6, 0.0, 0.9}, {0.5, 1.0, 0.5},
-                                         {-0.75, 0.0, 0.75}, {0.75, 0.0, -0.75}, {2.0, 0.0, 1.0}};
-    const auto v = visibility(s, s.camera.position, 0, pts, 64);
-    const std::vector<float> expected = {0, 0, 0, 1, 1, 1};
-    for (std::size_t i = 0; i < pts.size(); ++i) EXPECT_EQ(v[i], expected[i]) << "point " << i;
-}
-
-TEST_F(RenderPipeline, ShadowedFloorIsDarkInTheSurfacePass) {
-    scene::Scene s = occluderScene();
-    scene::Light point{.type = scene::LightType::Point, .position = {0.0, 3.0, 0.0}, .intensity = 10.0};
-    s.lights = {point};
-    // Looking down at the shadow centre (0.75, 0, 0.75); the view ray passes the occluder's height at
-    // z = 1.17, beside it, so the centre pixel sees shadowed floor.
-    s.camera = lookCamera({0.75, 6.0, 2.0}, {0.75, 0.0, 0.75}, 50.0);
-    const Frame f = renderSurface(s, 32, 24);
-    const glm::dvec3 d = scene::pixelRay(s.camera, 32, 24, 16, 12);
-    const double t = (0.0 - s.camera.position.y) / d.y;
-    const glm::dvec3 p = s.camera.position + t * d;
-    // The pixel centre's floor point is inside the shadow (centre (0.75, 0.75), half 0.45).
-    ASSERT_TRUE(std::abs(p.x - 0.75) < 0.2 && std::abs(p.z - 0.75) < 0.2);
-    EXPECT_NEAR(f.distance.at(16, 12), t, 1e-4 * t);
-    EXPECT_EQ(f.radiance.at(16, 12, 0), 0.0f);
-    // A floor pixel far from the shadow is lit.
-    EXPECT_GT(f.radiance.at(2, 2, 0), 0.0f);
-}
-
 scene::Texture randomTexture(const std::string& name, int w, int h, unsigned seed) {
     scene::Texture t;
     t.name = name;
@@ -575,12 +299,6 @@ TEST_F(RenderPipeline, ComposeFinalAttenuatesTheSurfaceAndAddsAirlight) {
     }
 }
 
-}  // namespace
-}  // namespace viz::render
-
-namespace viz::render {
-namespace {
-
 // Not a pass/fail test: prints how long the shared passes take here (run with
 // --gtest_also_run_disabled_tests --gtest_filter='*RenderBenchmark*').
 TEST_F(RenderPipeline, DISABLED_RenderBenchmark) {
@@ -639,4 +357,4 @@ TEST_F(RenderPipeline, DISABLED_RenderBenchmark) {
 }
 
 }  // namespace
-}  // namespace viz::render
+}  // namespace viz::render::test
