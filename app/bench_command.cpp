@@ -60,7 +60,10 @@ struct Options {
     int runs = 0;
     bool quick = false;
     std::string out;
-    viz::Settings settings;  // --set, for the techniques that have each parameter
+    std::vector<std::string> sets;  // --set as given ("name=value")
+    // --set per technique: the parameters it has, a named value as it declares it (epipole=paper is 2 in
+    // vsv, 1 in ivsv).
+    std::map<std::string, viz::Settings> settings;
 };
 
 Options parseBenchOptions(Args& args) {
@@ -83,7 +86,7 @@ Options parseBenchOptions(Args& args) {
             o.runs = int(runs);
         } else if (flag == "--quick") o.quick = true;
         else if (flag == "--out") o.out = args.next(flag);
-        else if (flag == "--set") parseSetting(args.next(flag), o.settings);
+        else if (flag == "--set") o.sets.push_back(args.next(flag));
         else throw InputError("unknown option '" + flag + "' for 'bench' (run 'airlight bench --help')");
     }
     if (o.out.empty()) throw InputError("bench needs --out DIR (the folder to write bench.csv and bench.html into)");
@@ -103,13 +106,7 @@ Options parseBenchOptions(Args& args) {
         o.height = o.quick ? 120 : 480;
     }
     if (!o.runs) o.runs = o.quick ? 3 : 5;
-    for (const auto& setting : o.settings) {
-        const std::string& name = setting.first;  // not a structured binding: clang before 16 cannot capture one
-        const bool taken = std::any_of(o.techniques.begin(), o.techniques.end(), [&](const std::string& id) {
-            return viz::findParam(*viz::makeTechnique(id), name) != nullptr;
-        });
-        if (!taken) throw InputError("--set " + name + ": none of the techniques measured has that parameter");
-    }
+    o.settings = settingsByTechnique(o.sets, o.techniques, "none of the techniques measured has that parameter");
     return o;
 }
 
@@ -214,8 +211,7 @@ int runBenchCommand(Args& args, const std::string& commandLine) {
                 const viz::ParamInfo* param = viz::findParam(*technique, axis);  // shadow_map, vpls
                 Job job{si, id, axis, axisPoints(axis, o, param ? param->maxValue : 0.0)};
                 for (AxisPoint& p : job.points) {
-                    for (const auto& [name, value] : o.settings)
-                        if (viz::findParam(*technique, name)) p.settings.try_emplace(name, value);
+                    for (const auto& [name, value] : o.settings.at(id)) p.settings.try_emplace(name, value);
                     viz::completeSettings(*technique, p.settings);
                 }
                 steps += int(job.points.size());
@@ -326,16 +322,7 @@ int runBenchCommand(Args& args, const std::string& commandLine) {
     meta.runs = o.runs;
     meta.quick = o.quick;
     std::string set;
-    for (const auto& [name, value] : o.settings) {
-        char text[32];
-        std::snprintf(text, sizeof text, "%g", value);
-        std::string shown = text;
-        for (const std::string& id : o.techniques)  // a named value by its name (integrand=svd)
-            if (const viz::ParamInfo* p = viz::findParam(*viz::makeTechnique(id), name);
-                p && value >= 0.0 && value < double(p->choices.size()) && value == std::floor(value))
-                shown = p->choices[std::size_t(value)];
-        set += " " + name + "=" + shown;
-    }
+    for (const std::string& text : o.sets) set += " " + text;  // as given: a named value by its name (integrand=svd)
     meta.fixed = "Fixed: each technique's default settings" + (set.empty() ? "" : " with" + set) + "; the axes other than size at " + std::to_string(o.width) +
                  "x" + std::to_string(o.height) + "; the scene at detail 1 except on the triangles axis.";
     if (!skipped.empty()) {

@@ -1,5 +1,6 @@
 #include "cli_args.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <cmath>
@@ -45,12 +46,18 @@ glm::ivec2 parseSize(const std::string& text) {
     return {w, h};
 }
 
-void parseSetting(const std::string& text, viz::Settings& into) {
+void parseSetting(const std::string& text, viz::Settings& into, const std::string& technique) {
     const auto eq = text.find('=');
     if (eq == std::string::npos || eq == 0)
         throw InputError("--set expects name=value, got '" + text + "'");
     const std::string name = text.substr(0, eq);
     const std::string value = text.substr(eq + 1);
+    // The technique whose parameter gives a word or an AxBxC value its meaning; when it has no parameter of
+    // that name, the first technique that has one (the setting does not apply, and what uses it says so).
+    std::vector<std::string> consulted = viz::techniqueIds();
+    if (std::find(consulted.begin(), consulted.end(), technique) != consulted.end() &&
+        viz::findParam(*viz::makeTechnique(technique), name))
+        consulted = {technique};
     // AxBxC: one number per axis, for a parameter that declares its per-axis components.
     if (value.find('x') != std::string::npos && !value.empty() && std::isdigit(static_cast<unsigned char>(value[0]))) {
         std::vector<std::string> parts;
@@ -60,9 +67,8 @@ void parseSetting(const std::string& text, viz::Settings& into) {
             if (x == std::string::npos) break;
             start = x + 1;
         }
-        for (const std::string& id : viz::techniqueIds()) {
-            const auto technique = viz::makeTechnique(id);
-            for (const viz::ParamInfo& p : technique->params()) {
+        for (const std::string& id : consulted) {
+            for (const viz::ParamInfo& p : viz::makeTechnique(id)->params()) {
                 if (p.name != name || p.components.empty()) continue;
                 if (p.components.size() != parts.size())
                     throw InputError("--set " + name + ": '" + value + "' needs " + std::to_string(p.components.size()) +
@@ -72,29 +78,52 @@ void parseSetting(const std::string& text, viz::Settings& into) {
                 return;
             }
         }
+        if (consulted.size() == 1)
+            throw InputError("--set " + name + ": " + technique + " takes one number, not '" + value + "'");
         throw InputError("--set " + name + ": '" + value + "' is not a number (no technique takes " + name +
                          " per axis)");
     }
-    // A word is a named value of a parameter of that name (ParamInfo::choices) in any technique.
+    // A word is one of the parameter's named values (ParamInfo::choices).
     if (!value.empty() && std::isalpha(static_cast<unsigned char>(value[0]))) {
-        std::string known;
-        for (const std::string& id : viz::techniqueIds()) {
-            const auto technique = viz::makeTechnique(id);
-            for (const viz::ParamInfo& p : technique->params()) {
-                if (p.name != name) continue;
-                for (std::size_t i = 0; i < p.choices.size(); ++i) {
-                    if (p.choices[i] == value) {
-                        into[name] = double(i);
-                        return;
-                    }
-                    known += (known.empty() ? "" : ", ") + p.choices[i];
+        std::vector<std::string> known;
+        for (const std::string& id : consulted) {
+            const viz::ParamInfo* p = viz::findParam(*viz::makeTechnique(id), name);
+            if (!p) continue;
+            for (std::size_t i = 0; i < p->choices.size(); ++i) {
+                if (p->choices[i] == value) {
+                    into[name] = double(i);
+                    return;
                 }
+                if (std::find(known.begin(), known.end(), p->choices[i]) == known.end()) known.push_back(p->choices[i]);
             }
         }
-        if (!known.empty())
-            throw InputError("--set " + name + ": '" + value + "' is not one of " + known);
+        if (!known.empty()) {
+            std::string list;
+            for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
+            throw InputError("--set " + name + ": '" + value + "' is not one of " + list);
+        }
     }
     into[name] = parseNumber(value, "--set " + name);
+}
+
+std::map<std::string, viz::Settings> settingsByTechnique(const std::vector<std::string>& texts,
+                                                         const std::vector<std::string>& techniques,
+                                                         const std::string& noneHasIt) {
+    std::map<std::string, viz::Settings> out;
+    std::vector<bool> taken(texts.size(), false);
+    for (const std::string& id : techniques) {
+        const auto technique = viz::makeTechnique(id);
+        viz::Settings& own = out[id];
+        for (std::size_t i = 0; i < texts.size(); ++i) {
+            viz::Settings one;
+            parseSetting(texts[i], one, id);  // a malformed value is an error for every technique
+            for (const auto& [name, value] : one)
+                if (viz::findParam(*technique, name)) own[name] = value, taken[i] = true;
+        }
+    }
+    for (std::size_t i = 0; i < texts.size(); ++i)
+        if (!taken[i]) throw InputError("--set " + texts[i].substr(0, texts[i].find('=')) + ": " + noneHasIt);
+    return out;
 }
 
 }  // namespace airlight

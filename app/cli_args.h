@@ -1,6 +1,7 @@
 // Small command-line parsing helpers: every malformed value is an InputError naming the flag.
 #pragma once
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -27,7 +28,16 @@ private:
 // do not fit the GL framebuffers and the reference's buffers on a 24 GiB machine; 8192^2 renders.
 constexpr int kMaxImageSide = 8192;
 glm::ivec2 parseSize(const std::string& text);                 // "WxH", 1..kMaxImageSide each
-void parseSetting(const std::string& text, viz::Settings& into);  // "name=value"
+// "name=value" into `into`. A word is one of the named values of the parameter `name` (ParamInfo::choices)
+// and AxBxC one number per component, both as `technique` declares them: the same word can stand for
+// different numbers in different techniques (epipole=paper is 2 in vsv, 1 in ivsv). Where `technique` has
+// no such parameter, the first technique that has one gives the meaning.
+void parseSetting(const std::string& text, viz::Settings& into, const std::string& technique);
+// Several --set texts for each of `techniques`: the ones naming a parameter it has, read as it declares
+// them. A name none of `techniques` has is an InputError "--set NAME: " + noneHasIt.
+std::map<std::string, viz::Settings> settingsByTechnique(const std::vector<std::string>& texts,
+                                                         const std::vector<std::string>& techniques,
+                                                         const std::string& noneHasIt);
 double parseNumber(const std::string& text, const std::string& what);
 bool isHelpFlag(const std::string& word);
 

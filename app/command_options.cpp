@@ -39,7 +39,7 @@ CommonOptions parseOptions(Args& args, const std::string& command, const std::st
         } else if (flag == "--out") o.out = args.next(flag);
         else if (flag == "--layer") o.layer = args.next(flag);
         else if (flag == "--layer-index") o.layerIndex = int(parseNumber(args.next(flag), flag));
-        else if (flag == "--set") parseSetting(args.next(flag), o.request.settings);
+        else if (flag == "--set") o.sets.push_back(args.next(flag));
         else if (flag == "--stop-after") o.request.stopAfter = args.next(flag);
         else if (flag == "--preset") {
             o.preset = args.next(flag);
@@ -82,6 +82,8 @@ CommonOptions parseOptions(Args& args, const std::string& command, const std::st
             o.fps = int(fps);
         }
     }
+    // Read once the technique is known: a named value's number is that technique's.
+    for (const std::string& text : o.sets) parseSetting(text, o.request.settings, o.request.technique);
     // The paper's settings under the ones given with --set (those win).
     if (o.preset == "paper") {
         for (const auto& [name, value] : viz::makeTechnique(o.request.technique)->paperSettings())

@@ -15,7 +15,8 @@ namespace airlight {
 constexpr const char* kDefaultTechnique = "raymarch";
 
 struct CommonOptions {
-    RenderRequest request;
+    RenderRequest request;       // request.settings: --set as the chosen technique declares its parameters
+    std::vector<std::string> sets;  // --set as given ("name=value"), for a command that runs several techniques
     std::string out;
     std::string layer = "final";
     int layerIndex = -1;

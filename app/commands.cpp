@@ -336,7 +336,7 @@ int runGuiCommand(Args& args) {
     g.technique = o.request.technique;
     g.width = o.request.width;
     g.height = o.request.height;
-    g.settings = o.request.settings;
+    g.settings = settingsByTechnique(o.sets, viz::techniqueIds(), "no technique has that parameter");
     g.load = o.request.load;
     g.screenshot = o.screenshot;
     g.frames = o.frames;

@@ -337,24 +337,11 @@ int runGui(const GuiOptions& options) {
     if (effective.scene == session.scene) applyLightPlacements(session.lights, scene);
     // A path that cannot move this scene (a light motion without a movable light) fails here.
     if (!options.path.empty()) (void)viz::scene::poseAt(viz::scene::parseMotionPath(options.path), scene, 1, options.pathFrames);
-    // Each --set must name a parameter of some technique (the window switches between them), and the
-    // values must suit the technique the window opens with.
-    std::vector<std::unique_ptr<viz::Technique>> all;
-    for (const std::string& id : viz::techniqueIds()) all.push_back(viz::makeTechnique(id));
-    for (const auto& [name, value] : options.settings) {
-        bool known = false;
-        for (const auto& t : all)
-            for (const viz::ParamInfo& p : t->params()) known = known || p.name == name;
-        if (!known) throw viz::InputError("no technique has a parameter '" + name + "'");
-    }
-    const std::unique_ptr<viz::Technique> first =
-        viz::makeTechnique(options.technique.empty() ? viz::techniqueIds().front() : options.technique);
-    viz::Settings mine;
-    for (const auto& [name, value] : options.settings)
-        for (const viz::ParamInfo& p : first->params())
-            if (p.name == name) mine[name] = value;
-    (void)viz::completeSettings(*first, mine);
-    all.clear();
+    // Every --set names a parameter of some technique (checked when read); its values must suit the
+    // technique the window opens with.
+    const std::string firstId = options.technique.empty() ? viz::techniqueIds().front() : options.technique;
+    const auto given = options.settings.find(firstId);
+    (void)viz::completeSettings(*viz::makeTechnique(firstId), given == options.settings.end() ? viz::Settings{} : given->second);
 #ifdef NDEBUG
     constexpr bool kDebugContext = false;
 #else

@@ -5,6 +5,7 @@
 // sidecar of view rectangles, scripted actions).
 #pragma once
 
+#include <map>
 #include <string>
 
 #include "debug/technique.h"
@@ -18,7 +19,9 @@ struct GuiOptions {
     std::string technique;  // initial technique id; empty = the first registered one
     int width = 320;        // internal render resolution; the panes upscale it (nearest)
     int height = 240;
-    viz::Settings settings;  // applied to every technique that has a parameter of that name
+    // --set, per technique id: the given parameters that technique has, a named value as it declares it
+    // (epipole=paper is 2 in vsv, 1 in ivsv); every name given is some technique's (settingsByTechnique).
+    std::map<std::string, viz::Settings> settings;
     viz::scene::LoadOptions load;  // for .gltf/.glb scenes (--no-default-light)
     // Automation (tests, handouts): after `frames` frames (and once a CPU technique's result is in),
     // write the window to `screenshot` (PNG) and its view rectangles to the same path with .json, then

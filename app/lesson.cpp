@@ -114,6 +114,7 @@ Lesson parseLesson(const std::string& path) {
     std::vector<std::string> stepTexts;
     std::string* prose = &introText;
     std::set<std::string> blockSettings;  // names set in the current block: a second one is a mistake
+    std::vector<std::pair<std::string, int>> blockSets;  // the block's `set` items and their lines
     while (std::getline(in, line)) {
         ++number;
         if (number == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);  // a UTF-8 byte-order mark
@@ -121,6 +122,18 @@ Lesson parseLesson(const std::string& path) {
         if (inBlock) {
             if (t == "```") {
                 inBlock = false;
+                for (const auto& [item, at] : blockSets) {
+                    viz::Settings one;
+                    try {
+                        parseSetting(item, one, step->technique);
+                    } catch (const InputError& e) {
+                        fail(at, e.what());
+                    }
+                    for (const auto& [name, v] : one) {
+                        if (!blockSettings.insert(name).second) fail(at, "'" + name + "' is set twice in this step");
+                        step->settings[name] = v;
+                    }
+                }
                 continue;
             }
             if (t.empty() || t[0] == '#') continue;
@@ -135,14 +148,9 @@ Lesson parseLesson(const std::string& path) {
                     const glm::ivec2 size = parseSize(value);
                     step->width = size.x, step->height = size.y;
                 } else if (key == "set") {
-                    for (const std::string& item : splitList(value)) {
-                        viz::Settings one;
-                        parseSetting(item, one);
-                        for (const auto& [name, v] : one) {
-                            if (!blockSettings.insert(name).second) fail(number, "'" + name + "' is set twice in this step");
-                            step->settings[name] = v;
-                        }
-                    }
+                    // Read when the block closes, once the step's technique is known: a named value's
+                    // number is that technique's (epipole=paper is 2 in vsv, 1 in ivsv).
+                    for (const std::string& item : splitList(value)) blockSets.emplace_back(item, number);
                 } else if (key == "animate") step->animation = parseAnimation(value, number);
                 else if (key == "stage") step->stage = value;
                 else if (key == "views") step->views = splitList(value);
@@ -184,6 +192,7 @@ Lesson parseLesson(const std::string& path) {
             if (stepHasBlock) fail(number, "a step has one airlight block");
             step->settings.clear();  // a step's settings replace the previous step's
             blockSettings.clear();
+            blockSets.clear();
             inBlock = stepHasBlock = true;
             blockLine = number;
         } else {

@@ -135,7 +135,8 @@ DifferenceRequest GuiApp::differenceRequest(const std::string& id) {
 
 viz::Settings GuiApp::givenSettings(const std::string& id) const {
     viz::Settings given = mSession.settings.count(id) ? mSession.settings.at(id) : viz::Settings{};
-    for (const auto& [name, value] : mOptions.settings) given[name] = value;
+    if (const auto options = mOptions.settings.find(id); options != mOptions.settings.end())
+        for (const auto& [name, value] : options->second) given[name] = value;
     return given;
 }
 

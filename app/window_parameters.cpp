@@ -20,7 +20,7 @@ void GuiApp::drawParameters(glm::ivec2 fb) {
         for (const auto& [name, value] : edits.settings) {
             mState.settings[name] = value;
             mSession.settings[mState.technique][name] = value;
-            mOptions.settings.erase(name);
+            for (auto& [id, given] : mOptions.settings) given.erase(name);
         }
         if (!edits.settings.empty()) replan();
         if (edits.sceneEdited) sceneEdited();

@@ -158,6 +158,41 @@ TEST_F(CliTest, PerAxisSettingSetsEachComponent) {
     EXPECT_NE(a.pixels, c.pixels);
 }
 
+// A named value means what the technique it is set for declares: epipole=paper is vsv's third choice (off,
+// march, paper) and ivsv's second (off, paper). The plan's EPIPOLE line says which rule runs, in words
+// independent of the numbers; the same word reaches each technique of a bench and a lesson step's
+// technique, wherever `technique:` stands in its block.
+TEST_F(CliTest, ANamedValueMeansWhatItsTechniqueDeclares) {
+    const auto epipoleLine = [&](const std::string& args) {
+        const RunResult r = run("plan " + args);
+        EXPECT_EQ(r.exitCode, 0) << args << ": " << r.err;
+        const std::size_t at = r.out.find("feature EPIPOLE");
+        return at == std::string::npos ? std::string() : r.out.substr(at, r.out.find('\n', at) - at);
+    };
+    EXPECT_NE(epipoleLine("--scene tv-room --technique ivsv --set epipole=paper").find("compare the fragment with the VPL"),
+              std::string::npos);
+    EXPECT_NE(epipoleLine("--scene tv-room --technique ivsv --set epipole=off").find("every ray reads the grids"),
+              std::string::npos);
+    const std::string epipoleInView = "--scene stiff/epipole-at-pixel-centre --technique vsv --set epipole=";
+    EXPECT_NE(epipoleLine(epipoleInView + "paper").find("the paper's rule"), std::string::npos);
+    EXPECT_NE(epipoleLine(epipoleInView + "march").find("test the shadow map directly"), std::string::npos);
+    // --set before --technique: the word waits for the technique.
+    EXPECT_NE(epipoleLine("--set epipole=paper --scene tv-room --technique ivsv").find("compare the fragment with the VPL"),
+              std::string::npos);
+    expectUserError(run("plan --scene tv-room --technique ivsv --set epipole=march"), "'march' is not one of off, paper");
+
+    const fs::path bench = path("bench");
+    RunResult r = run("bench --scenes grate --techniques vsv,ivsv --axes size --sizes 24x18 --runs 1 --set epipole=paper "
+                      "--out " + bench.string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(readFile(bench / "bench.html").find("default settings with epipole=paper"), std::string::npos);
+
+    const std::string lesson = "# T\n\n## one\n```airlight\nscene: grate\nset: epipole=paper\ntechnique: ivsv\n```\ntext\n"
+                               "## two\n```airlight\nset: epipole=paper\ntechnique: vsv\n```\ntext\n";
+    r = run("lesson " + writeText("named.md", lesson).string() + " --export " + path("named").string() + " --size 16x12");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+}
+
 // `compare` prints the report's figures: zero for an image against itself, the figures of
 // viz::report::compareImages for two renders; a size mismatch is a one-line error with no heat map.
 TEST_F(CliTest, CompareQuotesTheErrorOfOneImageAgainstAnother) {
@@ -377,7 +412,8 @@ TEST_F(CliTest, BadInputIsAOneLineErrorWithExitCode2AndNoOutput) {
     cases.push_back({"per-axis value for a one-number parameter",
                      "render --scene grate --technique raymarch --set samples=4x4x4 --size 8x8 --out " + out, "samples"});
     cases.push_back({"per-axis value for a technique without those axes",
-                     "render --scene grate --technique ivsv --set voxels=64x32x96 --size 8x8 --out " + out, "voxels_alpha"});
+                     "render --scene grate --technique ivsv --set voxels=64x32x96 --size 8x8 --out " + out,
+                     "--set voxels: ivsv takes one number, not '64x32x96'"});
     cases.push_back({"unknown scene", "render --scene nowhere --technique raymarch --size 8x8 --out " + out, "nowhere"});
     cases.push_back({"bad output type", "render --scene grate --technique raymarch --size 8x8 --out " +
                                             path("x.jpg").string(), "x.jpg"});
