@@ -25,7 +25,10 @@ double parseNumber(const std::string& text, const std::string& what) {
     errno = 0;
     char* end = nullptr;
     const double v = std::strtod(text.c_str(), &end);
-    if (text.empty() || end != text.c_str() + text.size() || errno == ERANGE || !std::isfinite(v))
+    // strtod skips leading blanks: a value with blanks on either side is refused alike. An overflow is
+    // refused; an underflow (1e-320) is the tiny finite number strtod returns.
+    if (text.empty() || std::isspace(static_cast<unsigned char>(text[0])) || end != text.c_str() + text.size() ||
+        !std::isfinite(v) || (errno == ERANGE && std::abs(v) > 1.0))
         throw InputError(what + ": '" + text + "' is not a finite number");
     return v;
 }

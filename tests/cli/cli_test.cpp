@@ -407,6 +407,12 @@ TEST_F(CliTest, BadInputIsAOneLineErrorWithExitCode2AndNoOutput) {
                                               out, "bogus"});
     cases.push_back({"parameter out of range", "render --scene grate --technique raymarch --set samples=0 --size 8x8 --out " +
                                                    out, "samples"});
+    // A number strtod reads only after skipping a blank is refused like one with a blank after it; a number
+    // below the smallest normal double is a number (out of this range), not a "non-finite" one.
+    cases.push_back({"blank before a number", "render --scene grate --technique raymarch --set \"samples= 8\" --size 8x8 --out " +
+                                                  out, "' 8' is not a finite number"});
+    cases.push_back({"underflowing number", "render --scene grate --technique slices --set accum_range=1e-320 --size 8x8 --out " +
+                                                out, "'accum_range' = 1e-320 is out of range"});
     cases.push_back({"per-axis value with two axes",
                      "render --scene grate --technique vsv --set voxels=64x32 --size 8x8 --out " + out, "3 numbers"});
     cases.push_back({"per-axis value for a one-number parameter",
