@@ -106,7 +106,9 @@ Options parseBenchOptions(Args& args) {
         o.height = o.quick ? 120 : 480;
     }
     if (!o.runs) o.runs = o.quick ? 3 : 5;
-    o.settings = settingsByTechnique(o.sets, o.techniques, "none of the techniques measured has that parameter");
+    SettingsByTechnique given = settingsByTechnique(o.sets, o.techniques, "none of the techniques measured has that parameter");
+    if (!given.errors.empty()) throw InputError(given.errors.begin()->second);  // never measured without it
+    o.settings = std::move(given.settings);
     return o;
 }
 

@@ -109,23 +109,32 @@ void parseSetting(const std::string& text, viz::Settings& into, const std::strin
     into[name] = parseNumber(value, "--set " + name);
 }
 
-std::map<std::string, viz::Settings> settingsByTechnique(const std::vector<std::string>& texts,
-                                                         const std::vector<std::string>& techniques,
-                                                         const std::string& noneHasIt) {
-    std::map<std::string, viz::Settings> out;
+SettingsByTechnique settingsByTechnique(const std::vector<std::string>& texts, const std::vector<std::string>& techniques,
+                                        const std::string& noneHasIt) {
+    SettingsByTechnique out;
     std::vector<bool> taken(texts.size(), false);
     for (const std::string& id : techniques) {
         const auto technique = viz::makeTechnique(id);
-        viz::Settings& own = out[id];
+        viz::Settings& own = out.settings[id];
         for (std::size_t i = 0; i < texts.size(); ++i) {
+            if (!viz::findParam(*technique, texts[i].substr(0, texts[i].find('=')))) continue;
+            taken[i] = true;
             viz::Settings one;
-            parseSetting(texts[i], one, id);  // a malformed value is an error for every technique
-            for (const auto& [name, value] : one)
-                if (viz::findParam(*technique, name)) own[name] = value, taken[i] = true;
+            try {
+                parseSetting(texts[i], one, id);
+            } catch (const InputError& e) {
+                out.errors.try_emplace(id, id + ": " + e.what());
+                continue;
+            }
+            own.insert(one.begin(), one.end());
         }
     }
-    for (std::size_t i = 0; i < texts.size(); ++i)
-        if (!taken[i]) throw InputError("--set " + texts[i].substr(0, texts[i].find('=')) + ": " + noneHasIt);
+    for (std::size_t i = 0; i < texts.size(); ++i) {
+        if (taken[i]) continue;
+        viz::Settings one;
+        parseSetting(texts[i], one, "");  // a malformed text says so first
+        throw InputError("--set " + texts[i].substr(0, texts[i].find('=')) + ": " + noneHasIt);
+    }
     return out;
 }
 

@@ -34,10 +34,15 @@ glm::ivec2 parseSize(const std::string& text);                 // "WxH", 1..kMax
 // no such parameter, the first technique that has one gives the meaning.
 void parseSetting(const std::string& text, viz::Settings& into, const std::string& technique);
 // Several --set texts for each of `techniques`: the ones naming a parameter it has, read as it declares
-// them. A name none of `techniques` has is an InputError "--set NAME: " + noneHasIt.
-std::map<std::string, viz::Settings> settingsByTechnique(const std::vector<std::string>& texts,
-                                                         const std::vector<std::string>& techniques,
-                                                         const std::string& noneHasIt);
+// them (`settings`); a text that technique refuses (a word not among its choices) is left out of its
+// settings and its first such refusal kept in `errors`, "ID: --set ...". A name none of `techniques` has
+// is an InputError "--set NAME: " + noneHasIt.
+struct SettingsByTechnique {
+    std::map<std::string, viz::Settings> settings;
+    std::map<std::string, std::string> errors;
+};
+SettingsByTechnique settingsByTechnique(const std::vector<std::string>& texts, const std::vector<std::string>& techniques,
+                                        const std::string& noneHasIt);
 double parseNumber(const std::string& text, const std::string& what);
 bool isHelpFlag(const std::string& word);
 

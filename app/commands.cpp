@@ -336,7 +336,9 @@ int runGuiCommand(Args& args) {
     g.technique = o.request.technique;
     g.width = o.request.width;
     g.height = o.request.height;
-    g.settings = settingsByTechnique(o.sets, viz::techniqueIds(), "no technique has that parameter");
+    SettingsByTechnique given = settingsByTechnique(o.sets, viz::techniqueIds(), "no technique has that parameter");
+    g.settings = std::move(given.settings);
+    g.settingErrors = std::move(given.errors);
     g.load = o.request.load;
     g.screenshot = o.screenshot;
     g.frames = o.frames;

@@ -22,6 +22,7 @@ struct GuiOptions {
     // --set, per technique id: the given parameters that technique has, a named value as it declares it
     // (epipole=paper is 2 in vsv, 1 in ivsv); every name given is some technique's (settingsByTechnique).
     std::map<std::string, viz::Settings> settings;
+    std::map<std::string, std::string> settingErrors;  // per technique id: a --set it refuses (shown on switching to it)
     viz::scene::LoadOptions load;  // for .gltf/.glb scenes (--no-default-light)
     // Automation (tests, handouts): after `frames` frames (and once a CPU technique's result is in),
     // write the window to `screenshot` (PNG) and its view rectangles to the same path with .json, then

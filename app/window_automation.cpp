@@ -84,6 +84,7 @@ void GuiApp::writeSidecar(const std::string& path) {
                                     {"scene", mScene.name},
                                     {"scene_title", sceneTitle()},
                                     {"error", mError},
+                                    {"settings_error", mSettingsError},  // settings refused (the run used defaults)
                                     {"frames", mFramesDrawn},
                                     {"stage", technique().stages()[std::size_t(stageShown())].id},
                                     {"last_stage_run", mHaveOutput ? mOutput.lastStageRun : -1},

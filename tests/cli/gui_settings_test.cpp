@@ -39,6 +39,25 @@ TEST_F(GuiSettings, ANamedValueIsReadForEachTechniqueTheWindowSwitchesTo) {
     EXPECT_NE(featureWhy(vsv, "EPIPOLE").find("the paper's rule"), std::string::npos) << featureWhy(vsv, "EPIPOLE");
 }
 
+// A word another technique refuses leaves the window free to open: opened on vsv with epipole=march (vsv's
+// second choice; ivsv has no march), switching to ivsv runs ivsv's default and says which setting it refused.
+TEST_F(GuiSettings, AWordATechniqueRefusesIsSaidWhenSwitchingToIt) {
+    const fs::path script = writeText("refused.txt", "frames 1\nscreenshot " + path("vsv.png").string() +
+                                                         "\nclick technique:ivsv\nframes 2\n");
+    const RunResult r = run("gui --scene stiff/epipole-at-pixel-centre --technique vsv --size 32x24 --set epipole=march "
+                            "--script " + script.string() + " --screenshot " + path("ivsv.png").string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const nlohmann::json vsv = nlohmann::json::parse(readFile(path("vsv.json")));
+    EXPECT_EQ(vsv.at("settings").at("epipole").get<double>(), 1.0);
+    EXPECT_EQ(vsv.at("settings_error"), "");
+    EXPECT_NE(featureWhy(vsv, "EPIPOLE").find("test the shadow map directly"), std::string::npos) << featureWhy(vsv, "EPIPOLE");
+    const nlohmann::json ivsv = nlohmann::json::parse(readFile(path("ivsv.json")));
+    ASSERT_EQ(ivsv.at("technique"), "ivsv");
+    EXPECT_EQ(ivsv.at("settings").at("epipole").get<double>(), 1.0);  // its default, paper
+    EXPECT_NE(ivsv.at("settings_error").get<std::string>().find("ivsv: --set epipole: 'march' is not one of off, paper"),
+              std::string::npos) << ivsv.at("settings_error");
+}
+
 // A name no technique has is refused before the window opens; a value the first technique refuses too.
 TEST_F(GuiSettings, AnUnknownNameOrAWrongWordIsAOneLineError) {
     // With a screenshot, so that a window that wrongly opens closes again.
