@@ -7,14 +7,14 @@
 #include "scene/builtin_scenes.h"
 #include "technique_run.h"
 #include "techniques/reference/ray_probe.h"
-#include "techniques/registry.h"
+#include "techniques/reference/reference.h"
 
 namespace viz::reference {
 namespace {
 
 TEST(RayProbe, MatchesTheFullFrameReferenceAtThePixel) {
     const scene::Scene scene = scene::makeBuiltinScene("grate");
-    auto reference = makeTechnique("reference");
+    auto reference = makeReferenceTechnique();
     const FrameOutput frame = testing::runTechnique(*reference, scene, {{"cache", 0}}, 40, 30);
     for (const glm::ivec2 p : {glm::ivec2(20, 8), glm::ivec2(12, 20), glm::ivec2(33, 26), glm::ivec2(0, 0)}) {
         const RayProbe probe = probePixel(scene, 40, 30, p.x, p.y);
