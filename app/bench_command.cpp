@@ -107,7 +107,8 @@ Options parseBenchOptions(Args& args) {
     }
     if (!o.runs) o.runs = o.quick ? 3 : 5;
     SettingsByTechnique given = settingsByTechnique(o.sets, o.techniques, "none of the techniques measured has that parameter");
-    if (!given.errors.empty()) throw InputError(given.errors.begin()->second);  // never measured without it
+    for (const std::string& id : o.techniques)
+        if (const std::string* refused = firstRefusal(given.errors, id)) throw InputError(*refused);  // never measured without it
     o.settings = std::move(given.settings);
     return o;
 }

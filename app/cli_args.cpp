@@ -109,6 +109,11 @@ void parseSetting(const std::string& text, viz::Settings& into, const std::strin
     into[name] = parseNumber(value, "--set " + name);
 }
 
+const std::string* firstRefusal(const std::map<std::string, Refusals>& errors, const std::string& technique) {
+    const auto it = errors.find(technique);
+    return it == errors.end() || it->second.empty() ? nullptr : &it->second.begin()->second;
+}
+
 SettingsByTechnique settingsByTechnique(const std::vector<std::string>& texts, const std::vector<std::string>& techniques,
                                         const std::string& noneHasIt) {
     SettingsByTechnique out;
@@ -117,13 +122,14 @@ SettingsByTechnique settingsByTechnique(const std::vector<std::string>& texts, c
         const auto technique = viz::makeTechnique(id);
         viz::Settings& own = out.settings[id];
         for (std::size_t i = 0; i < texts.size(); ++i) {
-            if (!viz::findParam(*technique, texts[i].substr(0, texts[i].find('=')))) continue;
+            const std::string name = texts[i].substr(0, texts[i].find('='));
+            if (!viz::findParam(*technique, name)) continue;
             taken[i] = true;
             viz::Settings one;
             try {
                 parseSetting(texts[i], one, id);
             } catch (const InputError& e) {
-                out.errors.try_emplace(id, id + ": " + e.what());
+                out.errors[id].try_emplace(name, id + ": " + e.what());
                 continue;
             }
             own.insert(one.begin(), one.end());

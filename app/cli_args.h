@@ -35,12 +35,15 @@ glm::ivec2 parseSize(const std::string& text);                 // "WxH", 1..kMax
 void parseSetting(const std::string& text, viz::Settings& into, const std::string& technique);
 // Several --set texts for each of `techniques`: the ones naming a parameter it has, read as it declares
 // them (`settings`); a text that technique refuses (a word not among its choices) is left out of its
-// settings and its first such refusal kept in `errors`, "ID: --set ...". A name none of `techniques` has
-// is an InputError "--set NAME: " + noneHasIt.
+// settings and its refusal kept in `errors` under the technique and the parameter's name, "ID: --set ...".
+// A name none of `techniques` has is an InputError "--set NAME: " + noneHasIt.
+using Refusals = std::map<std::string, std::string>;  // parameter name -> the one-line refusal
 struct SettingsByTechnique {
     std::map<std::string, viz::Settings> settings;
-    std::map<std::string, std::string> errors;
+    std::map<std::string, Refusals> errors;  // only techniques that refused something
 };
+// The first refusal kept for `technique` (by parameter name), or null when it refused nothing.
+const std::string* firstRefusal(const std::map<std::string, Refusals>& errors, const std::string& technique);
 SettingsByTechnique settingsByTechnique(const std::vector<std::string>& texts, const std::vector<std::string>& techniques,
                                         const std::string& noneHasIt);
 double parseNumber(const std::string& text, const std::string& what);

@@ -206,8 +206,8 @@ void GuiApp::selectTechnique(int index) {
     mError.clear();
     mSettingsError.clear();
     mState.settings = settingsFor(technique(), givenSettings(id), mSettingsError);
-    if (const auto refused = mOptions.settingErrors.find(id); refused != mOptions.settingErrors.end() && mSettingsError.empty())
-        mSettingsError = refused->second;
+    if (const std::string* refused = firstRefusal(mOptions.settingErrors, id); refused && mSettingsError.empty())
+        mSettingsError = *refused;
     if (auto c = takeSubsteps(technique(), mState.settings)) mState.cursor = *c;
     try {
         mPlan = technique().plan(mScene, mState.settings);
@@ -342,8 +342,7 @@ int runGui(const GuiOptions& options) {
     // Every --set names a parameter of some technique (checked when read); its values must suit the
     // technique the window opens with.
     const std::string firstId = options.technique.empty() ? viz::techniqueIds().front() : options.technique;
-    if (const auto refused = options.settingErrors.find(firstId); refused != options.settingErrors.end())
-        throw viz::InputError(refused->second);
+    if (const std::string* refused = firstRefusal(options.settingErrors, firstId)) throw viz::InputError(*refused);
     const auto given = options.settings.find(firstId);
     (void)viz::completeSettings(*viz::makeTechnique(firstId), given == options.settings.end() ? viz::Settings{} : given->second);
 #ifdef NDEBUG

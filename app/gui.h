@@ -8,6 +8,7 @@
 #include <map>
 #include <string>
 
+#include "cli_args.h"
 #include "debug/technique.h"
 #include "scene/gltf_loader.h"
 #include "ui_script.h"
@@ -22,7 +23,7 @@ struct GuiOptions {
     // --set, per technique id: the given parameters that technique has, a named value as it declares it
     // (epipole=paper is 2 in vsv, 1 in ivsv); every name given is some technique's (settingsByTechnique).
     std::map<std::string, viz::Settings> settings;
-    std::map<std::string, std::string> settingErrors;  // per technique id: a --set it refuses (shown on switching to it)
+    std::map<std::string, Refusals> settingErrors;  // per technique id: the --set values it refuses (shown on switching to it)
     viz::scene::LoadOptions load;  // for .gltf/.glb scenes (--no-default-light)
     // Automation (tests, handouts): after `frames` frames (and once a CPU technique's result is in),
     // write the window to `screenshot` (PNG) and its view rectangles to the same path with .json, then

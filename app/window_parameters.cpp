@@ -21,8 +21,7 @@ void GuiApp::drawParameters(glm::ivec2 fb) {
             mState.settings[name] = value;
             mSession.settings[mState.technique][name] = value;
             for (auto& [id, given] : mOptions.settings) given.erase(name);
-            const std::string refusal = "--set " + name + ":";  // not captured as a binding: clang before 16 cannot
-            std::erase_if(mOptions.settingErrors, [&](const auto& e) { return e.second.find(refusal) != std::string::npos; });
+            for (auto& [id, refused] : mOptions.settingErrors) refused.erase(name);
         }
         if (!edits.settings.empty()) replan();
         if (edits.sceneEdited) sceneEdited();

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <utility>
 
 #include <nlohmann/json.hpp>
 
@@ -12,7 +13,21 @@
 namespace viz::testing {
 namespace {
 
-class GuiSettings : public WindowCliTest {};
+class GuiSettings : public WindowCliTest {
+protected:
+    // Opens the window on `from` (with `sets`, on a scene with the light's epipole in view) and switches to
+    // `to`: the sidecars of a screenshot taken on each, `from`'s first. Empty when the window failed.
+    std::pair<nlohmann::json, nlohmann::json> openThenSwitch(const std::string& from, const std::string& to,
+                                                             const std::string& sets) {
+        const fs::path script = writeText("switch.txt", "frames 1\nscreenshot " + path(from + ".png").string() +
+                                                            "\nclick technique:" + to + "\nframes 2\n");
+        const RunResult r = run("gui --scene stiff/epipole-at-pixel-centre --technique " + from + " --size 32x24 " +
+                                sets + " --script " + script.string() + " --screenshot " + path(to + ".png").string());
+        EXPECT_EQ(r.exitCode, 0) << r.err;
+        if (r.exitCode != 0) return {};
+        return {nlohmann::json::parse(readFile(path(from + ".json"))), nlohmann::json::parse(readFile(path(to + ".json")))};
+    }
+};
 
 // The feature's reason in the sidecar's plan (what the parameter panel's plan section lists).
 std::string featureWhy(const nlohmann::json& sidecar, const std::string& feature) {
@@ -24,15 +39,10 @@ std::string featureWhy(const nlohmann::json& sidecar, const std::string& feature
 // Opened on ivsv with epipole=paper, then switched to vsv on a scene with the light's epipole in view: vsv
 // runs the paper's rule (its own default is march), said in words by the plan independently of the number.
 TEST_F(GuiSettings, ANamedValueIsReadForEachTechniqueTheWindowSwitchesTo) {
-    const fs::path script = writeText("switch.txt", "frames 1\nscreenshot " + path("ivsv.png").string() +
-                                                        "\nclick technique:vsv\nframes 2\n");
-    const RunResult r = run("gui --scene stiff/epipole-at-pixel-centre --technique ivsv --size 32x24 --set epipole=paper "
-                            "--script " + script.string() + " --screenshot " + path("vsv.png").string());
-    ASSERT_EQ(r.exitCode, 0) << r.err;
-    const nlohmann::json ivsv = nlohmann::json::parse(readFile(path("ivsv.json")));
+    const auto [ivsv, vsv] = openThenSwitch("ivsv", "vsv", "--set epipole=paper");
+    ASSERT_FALSE(HasFailure());
     EXPECT_EQ(ivsv.at("technique"), "ivsv");
     EXPECT_EQ(ivsv.at("settings").at("epipole").get<double>(), 1.0);
-    const nlohmann::json vsv = nlohmann::json::parse(readFile(path("vsv.json")));
     ASSERT_EQ(vsv.at("technique"), "vsv");
     EXPECT_EQ(vsv.at("error"), "");
     EXPECT_EQ(vsv.at("settings").at("epipole").get<double>(), 2.0);
@@ -42,16 +52,11 @@ TEST_F(GuiSettings, ANamedValueIsReadForEachTechniqueTheWindowSwitchesTo) {
 // A word another technique refuses leaves the window free to open: opened on vsv with epipole=march (vsv's
 // second choice; ivsv has no march), switching to ivsv runs ivsv's default and says which setting it refused.
 TEST_F(GuiSettings, AWordATechniqueRefusesIsSaidWhenSwitchingToIt) {
-    const fs::path script = writeText("refused.txt", "frames 1\nscreenshot " + path("vsv.png").string() +
-                                                         "\nclick technique:ivsv\nframes 2\n");
-    const RunResult r = run("gui --scene stiff/epipole-at-pixel-centre --technique vsv --size 32x24 --set epipole=march "
-                            "--script " + script.string() + " --screenshot " + path("ivsv.png").string());
-    ASSERT_EQ(r.exitCode, 0) << r.err;
-    const nlohmann::json vsv = nlohmann::json::parse(readFile(path("vsv.json")));
+    const auto [vsv, ivsv] = openThenSwitch("vsv", "ivsv", "--set epipole=march");
+    ASSERT_FALSE(HasFailure());
     EXPECT_EQ(vsv.at("settings").at("epipole").get<double>(), 1.0);
     EXPECT_EQ(vsv.at("settings_error"), "");
     EXPECT_NE(featureWhy(vsv, "EPIPOLE").find("test the shadow map directly"), std::string::npos) << featureWhy(vsv, "EPIPOLE");
-    const nlohmann::json ivsv = nlohmann::json::parse(readFile(path("ivsv.json")));
     ASSERT_EQ(ivsv.at("technique"), "ivsv");
     EXPECT_EQ(ivsv.at("settings").at("epipole").get<double>(), 1.0);  // its default, paper
     EXPECT_NE(ivsv.at("settings_error").get<std::string>().find("ivsv: --set epipole: 'march' is not one of off, paper"),
