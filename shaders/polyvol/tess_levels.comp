@@ -13,7 +13,8 @@ layout(local_size_x = 8, local_size_y = 8) in;
 uniform int uLevel;
 uniform int uMapSize;
 uniform float uThreshold;
-layout(binding = 10) uniform sampler2D uEdges;       // level 0 only (texture unit 10)
+uniform int uFace;                                   // the edge map's layer
+layout(binding = 10) uniform sampler2DArray uEdges;  // level 0 only (texture unit 10)
 layout(binding = 11) uniform usampler2D uFlags;      // level uLevel - 1 is read (unit 11)
 layout(r8ui, binding = 0) uniform writeonly uimage2D uOut;  // level uLevel
 
@@ -32,7 +33,7 @@ void main() {
         bool marked = q.x == 0 || q.y == 0 || q.x == last || q.y == last;
         for (int c = 0; c < 4 && !marked; ++c) {
             ivec2 v = min(q + ivec2(c & 1, c >> 1), ivec2(last));
-            marked = texelFetch(uEdges, v, 0).r > uThreshold;
+            marked = texelFetch(uEdges, ivec3(v, uFace), 0).r > uThreshold;
         }
         flags = marked ? 1u : 0u;
     } else {

@@ -6,7 +6,7 @@
 // with the 4 edges that is 16 patterns; the polygon of corners and midpoints (CCW in texel space, i.e.
 // seen from the light, like the static grid) is fanned from its first midpoint, 2 + m <= 6 triangles,
 // or split along the (0,0)-(1,1) diagonal as in the static grid when m = 0. Keys: light_volume_mesh.h
-// with a key stride of N + 1.
+// with a key stride of N + 1 (a cube's face f starts at f (N + 1)^2).
 layout(local_size_x = 64) in;
 
 uniform int uLevel;
@@ -16,8 +16,9 @@ uniform int uStopLevel;    // stepping: quads of this level are leaves even if f
 uniform uint uListCapacity;
 uniform uint uKeyCapacity;
 uniform int uWriteLevels;
+uniform uint uKeyBase;     // the face's first key: face (N + 1)^2
 layout(binding = 11) uniform usampler2D uFlags;  // texture unit 11 (units below 10 are the scene's)
-layout(r8, binding = 1) uniform writeonly image2D uLevels;  // leaf level per finest quad, / 16
+layout(r8, binding = 1) uniform writeonly image2D uLevels;  // leaf level per finest quad, / 16 (the face's layer)
 
 layout(std430, binding = 4) buffer Counters {
     uint inCount;
@@ -43,7 +44,7 @@ bool isSplit(ivec2 q, int level) {
     return (texelFetch(uFlags, q, level).r & 2u) != 0u;
 }
 
-uint vertexKey(ivec2 v) { return uint(v.y) * uint(uMapSize + 1) + uint(v.x); }
+uint vertexKey(ivec2 v) { return uKeyBase + uint(v.y) * uint(uMapSize + 1) + uint(v.x); }
 
 void main() {
     uint index = gl_GlobalInvocationID.x;

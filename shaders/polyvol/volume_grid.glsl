@@ -102,12 +102,19 @@ vec3 keyPosition(GpuLight L, uint key) {
 }
 
 
-// The distance (spot, point) or depth (directional) of the vertex at texel (i, j) along its texel's ray:
-// what the Laplacian edge map differentiates. Dark spot texels are at the light (0).
-float gridDistance(GpuLight L, int face, int i, int j) {
+// The depth of the vertex at texel (i, j) along its map's axis, what the adaptive tessellation's edge map
+// differentiates: a directional map's depth, affine in the texel on a plane receiver; or the depth along
+// a spot's axis or a cube face's forward, whose reciprocal is (a perspective projection, as the paper's
+// depth buffer). Vertices at the light (dark spot texels) are at 0.
+float gridAxisDepth(GpuLight L, int face, int i, int j) {
     vec3 p = gridPosition(L, face, i, j);
     if (uMode == kModeDirectional) return dot(p, L.direction.xyz);
-    return length(p - L.position.xyz);
+    vec3 axis = L.direction.xyz;
+    if (uMode == kModeCube) {
+        vec3 up;
+        cubeFaceBasis(face, axis, up);
+    }
+    return dot(p - L.position.xyz, axis);
 }
 
 #endif  // POLYVOL_VOLUME_GRID_GLSL

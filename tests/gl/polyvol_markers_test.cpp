@@ -153,7 +153,7 @@ TEST_F(PolyvolMarkersTest, EdgeMapAndLevelsShowTheSameRayAndCrossingsAsTheShadow
     // Static tessellation publishes no edge map: nothing to mark; other views and pixels outside the frame
     // have no marks either.
     auto flat = viz::makeTechnique("polyvol");
-    viz::testing::runTechnique(*flat, scene, {{"shadow_map", 64}}, 64, 48);
+    viz::testing::runTechnique(*flat, scene, {{"shadow_map", 64}, {"tessellation", 0}}, 64, 48);
     EXPECT_TRUE(flat->markersFor(px, "polyvol.edge_map").empty());
     EXPECT_TRUE(flat->markersFor(px, "polyvol.crossings").empty());
     EXPECT_TRUE(flat->markersFor({64, 0}, "polyvol.shadow_map").empty());

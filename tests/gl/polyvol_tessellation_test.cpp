@@ -17,6 +17,7 @@ using viz::testing::crackPixels;
 using viz::testing::PolyvolTest;
 using viz::testing::relativeL2;
 using viz::testing::trianglesDrawn;
+using viz::testing::volumeMs;
 
 }  // namespace
 
@@ -24,7 +25,7 @@ using viz::testing::trianglesDrawn;
 // 1e-3 relative L2 with fewer triangles; the adaptive mesh is watertight (no T-junction cracks).
 TEST_F(PolyvolTest, AdaptiveTessellationMatchesStaticWithFewerTriangles) {
     const viz::scene::Scene scene = viz::scene::makeBuiltinScene("colonnade");
-    const viz::FrameOutput fixed = render(scene, "polyvol", {{"shadow_map", 2048}}, 160, 120);
+    const viz::FrameOutput fixed = render(scene, "polyvol", {{"shadow_map", 2048}, {"tessellation", 0}}, 160, 120);
     const viz::FrameOutput adaptive =
         render(scene, "polyvol", {{"shadow_map", 2048}, {"tessellation", 1}}, 160, 120, -1, {"polyvol.crossings"});
     EXPECT_TRUE(allFinite(adaptive.airlight));
@@ -64,7 +65,7 @@ viz::scene::Scene saddle() {
 // measure keeps them at the finest level, so adaptive matches the static mesh (one vertex per texel).
 TEST_F(PolyvolTest, AdaptiveTessellationFollowsCurvedReceivers) {
     for (const viz::scene::Scene& scene : {saddle(), viz::scene::makeBuiltinScene("terrain")}) {
-        const viz::Settings base = {{"shadow_map", 1024}};
+        const viz::Settings base = {{"shadow_map", 1024}, {"tessellation", 0}};
         const viz::FrameOutput fixed = render(scene, "polyvol", base, 160, 120);
         double e[2];
         std::int64_t n[2];
@@ -118,11 +119,8 @@ TEST_F(PolyvolTest, DISABLED_BenchmarkStaticVsAdaptive) {
             for (int adaptive : {0, 1}) {
                 const viz::FrameOutput out =
                     render(scene, "polyvol", {{"shadow_map", n}, {"tessellation", adaptive}}, 160, 120);
-                double volumeMs = 0.0;
-                for (const auto& st : out.timing.stages)
-                    if (st.stage == "polyvol.volume") volumeMs = st.milliseconds;
                 std::printf("%-9s %4d^2 %-8s volume %9.1f ms  triangles %9lld  rel L2 vs reference %.4f\n", name, n,
-                            adaptive ? "adaptive" : "static", volumeMs, (long long)trianglesDrawn(out),
+                            adaptive ? "adaptive" : "static", volumeMs(out), (long long)trianglesDrawn(out),
                             relativeL2(out.airlight, reference.airlight));
             }
         }

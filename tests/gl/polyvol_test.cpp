@@ -23,6 +23,8 @@ namespace {
 
 using viz::testing::allFinite;
 using viz::testing::crackPixels;
+using viz::testing::lookAtCamera;
+using viz::testing::omniGrate;
 using viz::testing::PolyvolTest;
 using viz::testing::relativeL2;
 using viz::testing::trianglesDrawn;
@@ -41,35 +43,20 @@ int openEdges(const std::vector<std::uint32_t>& keys) {
     return bad;
 }
 
-// The procedural grid triangles of volume.vert, as keys.
-std::vector<std::uint32_t> gridKeys(int n, int faces) {
+// The procedural grid triangles of volume.vert, as keys (`stride` texels per key row: N static, N + 1 as
+// the adaptive tessellation keys them).
+std::vector<std::uint32_t> gridKeys(int n, int faces, int stride = 0) {
+    if (stride == 0) stride = n;
     std::vector<std::uint32_t> keys;
     for (int f = 0; f < faces; ++f)
         for (int j = 0; j + 1 < n; ++j)
             for (int i = 0; i + 1 < n; ++i) {
                 using viz::polyvol::gridKey;
-                const auto k00 = gridKey(n, f, i, j), k10 = gridKey(n, f, i + 1, j);
-                const auto k11 = gridKey(n, f, i + 1, j + 1), k01 = gridKey(n, f, i, j + 1);
+                const auto k00 = gridKey(stride, f, i, j), k10 = gridKey(stride, f, i + 1, j);
+                const auto k11 = gridKey(stride, f, i + 1, j + 1), k01 = gridKey(stride, f, i, j + 1);
                 keys.insert(keys.end(), {k00, k10, k11, k00, k11, k01});
             }
     return keys;
-}
-
-// grate with its spot replaced by a point light at the same place (an omni test scene).
-viz::scene::Scene omniGrate() {
-    viz::scene::Scene scene = viz::scene::makeBuiltinScene("grate");
-    for (auto& light : scene.lights)
-        if (light.type == viz::scene::LightType::Spot) light.type = viz::scene::LightType::Point;
-    return scene;
-}
-
-viz::scene::Camera lookAtCamera(const viz::scene::Camera& base, glm::dvec3 eye, glm::dvec3 target) {
-    viz::scene::Camera c = base;
-    c.position = eye;
-    c.forward = glm::normalize(target - eye);
-    const glm::dvec3 right = glm::normalize(glm::cross(c.forward, glm::dvec3(0, 1, 0)));
-    c.up = glm::cross(right, c.forward);
-    return c;
 }
 
 }  // namespace
@@ -93,6 +80,27 @@ TEST(PolyvolMesh, SixCubeGridsAndTheirSeamsAreClosedAndConsistentlyOriented) {
         EXPECT_EQ(seams.size(), std::size_t(3 * (12 * 2 * (n - 1) + 8)));
         keys.insert(keys.end(), seams.begin(), seams.end());
         EXPECT_EQ(openEdges(keys), 0) << "n = " << n;
+    }
+}
+
+// Keyed as the adaptive tessellation keys its faces (N + 1 per row, the virtual row and column N unused
+// here), the seams still join exactly the faces' border texels.
+TEST(PolyvolMesh, CubeSeamsKeyedForAdaptiveFacesCloseTheSixGrids) {
+    for (int n : {2, 3, 8}) {
+        std::vector<std::uint32_t> keys = gridKeys(n, 6, n + 1);
+        const std::vector<std::uint32_t> seams = viz::polyvol::cubeSeams(n, n + 1);
+        EXPECT_EQ(seams.size(), std::size_t(3 * (12 * 2 * (n - 1) + 8)));
+        keys.insert(keys.end(), seams.begin(), seams.end());
+        EXPECT_EQ(openEdges(keys), 0) << "n = " << n;
+        // Against the stride-N seams: the same texels, key for key.
+        const std::vector<std::uint32_t> narrow = viz::polyvol::cubeSeams(n);
+        for (std::size_t k = 0; k < narrow.size(); ++k) {
+            const std::uint32_t a = narrow[k], b = seams[k];
+            const auto n2 = std::uint32_t(n * n), m2 = std::uint32_t((n + 1) * (n + 1));
+            EXPECT_EQ(a / n2, b / m2);
+            EXPECT_EQ(a % n2 % std::uint32_t(n), b % m2 % std::uint32_t(n + 1));
+            EXPECT_EQ(a % n2 / std::uint32_t(n), b % m2 / std::uint32_t(n + 1));
+        }
     }
 }
 

@@ -9,11 +9,6 @@
 
 namespace viz::render {
 
-namespace {
-// VPL cube maps are many (area_samples^2 of them): cap their size to keep memory in check.
-constexpr int kMaxVplShadowSize = 256;
-}  // namespace
-
 std::vector<ParamInfo> SceneViewPasses::params() {
     return {
         {"shadow_map", "shadow-map size in texels per side (2D maps and point-light cube faces)", 1024, 16, 8192, true},

@@ -20,6 +20,9 @@
 
 namespace viz::render {
 
+// VPL cube maps are many (area_samples^2 of them): their faces are at most this many texels per side.
+inline constexpr int kMaxVplShadowSize = 256;
+
 class SceneViewPasses {
 public:
     // ---- declarations, so that a technique lists these stages and parameters exactly as they run ----

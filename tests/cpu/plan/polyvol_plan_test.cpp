@@ -55,7 +55,9 @@ TEST(PolyvolPlan, CompilesOnlyTheLightAndShadowCodeEachSceneUses) {
         EXPECT_EQ(requiredFeature(p, "SHADOW_MAPS_2D").enabled, row.maps2D) << name;
         EXPECT_EQ(requiredFeature(p, "AREA_VPLS").enabled, row.area) << name;
         EXPECT_FALSE(requiredFeature(p, "AIRLIGHT_LUT").enabled) << name << ": analytic by default, no table";
-        EXPECT_FALSE(requiredFeature(p, "ADAPTIVE").enabled) << name << ": static by default";
+        // Adaptive by default, at the default 1024^2 maps (2D) and 256^2 VPL faces, where it pays off.
+        EXPECT_EQ(requiredFeature(p, "ADAPTIVE").enabled, row.maps2D) << name;
+        EXPECT_EQ(requiredFeature(p, "ADAPTIVE_CUBES").enabled, row.cube) << name;
         // The define that leaves each unused path out is named.
         if (!row.spot) {
             EXPECT_TRUE(mentions(requiredFeature(p, "SPOT"), "LIGHTS_NO_SPOT")) << name;
@@ -75,7 +77,7 @@ TEST(PolyvolPlan, CompilesOnlyTheLightAndShadowCodeEachSceneUses) {
 
 // The volume stage announces the triangle count of the mesh it draws: the static grid plus the closure
 // of a 2D map (light_volume_mesh.h builds the actual key lists), or per VPL a cube's six grids plus its
-// seams (VPL cubes are at most 256^2 per face).
+// seams (VPL cubes are at most 256^2 per face); with adaptive tessellation that count is the most it draws.
 TEST(PolyvolPlan, VolumeStageAnnouncesItsTriangleCount) {
     const Plan grate = polyvolPlan("grate", {{"shadow_map", 256}});
     ASSERT_NE(grate.stages[2].why.find("triangles"), std::string::npos) << grate.stages[2].why;
@@ -84,17 +86,38 @@ TEST(PolyvolPlan, VolumeStageAnnouncesItsTriangleCount) {
     const Plan room = polyvolPlan("tv-room", {{"shadow_map", 1024}});
     const std::int64_t cube = polyvol::gridTriangleCount(256, 6) + std::int64_t(polyvol::cubeSeams(256).size() / 3);
     EXPECT_EQ(std::stoll(room.stages[2].why), 16 * cube);
+    EXPECT_TRUE(room.stages[2].why.find("at most") != std::string::npos) << room.stages[2].why;
 }
 
-// Choices made by settings: the table and adaptive tessellation (2D maps only), and a medium that
-// scatters nothing skips the volume stage.
+// Choices made by settings: the table and adaptive tessellation (2D maps: ADAPTIVE; cube faces:
+// ADAPTIVE_CUBES), and a medium that scatters nothing skips the volume stage.
 TEST(PolyvolPlan, SettingsChooseTheTableAndTheTessellation) {
     EXPECT_TRUE(requiredFeature(polyvolPlan("grate", {{"airlight", 1}}), "AIRLIGHT_LUT").enabled);
     EXPECT_TRUE(requiredFeature(polyvolPlan("colonnade", {{"tessellation", 1}}), "ADAPTIVE").enabled);
     EXPECT_TRUE(requiredFeature(polyvolPlan("colonnade", {{"tessellation", 1}, {"shadow_map", 512}}), "ADAPTIVE").enabled);
-    const FeaturePlan cubes = requiredFeature(polyvolPlan("tv-room", {{"tessellation", 1}}), "ADAPTIVE");
-    EXPECT_FALSE(cubes.enabled);
-    EXPECT_TRUE(mentions(cubes, "cubes stay static")) << cubes.why;
+    const Plan room = polyvolPlan("tv-room", {{"tessellation", 1}});
+    EXPECT_FALSE(requiredFeature(room, "ADAPTIVE").enabled);
+    EXPECT_TRUE(mentions(requiredFeature(room, "ADAPTIVE"), "no 2D map")) << requiredFeature(room, "ADAPTIVE").why;
+    EXPECT_TRUE(requiredFeature(room, "ADAPTIVE_CUBES").enabled) << requiredFeature(room, "ADAPTIVE_CUBES").why;
+    for (const std::string name : {"colonnade", "tv-room"}) {
+        const Plan fixed = polyvolPlan(name, {{"tessellation", 0}});
+        EXPECT_FALSE(requiredFeature(fixed, "ADAPTIVE").enabled) << name;
+        EXPECT_FALSE(requiredFeature(fixed, "ADAPTIVE_CUBES").enabled) << name;
+        // draw_triangles cuts the static mesh, and the refinement needs a power-of-two map: both leave
+        // adaptive tessellation out, saying so.
+        const Plan cut = polyvolPlan(name, {{"draw_triangles", 1000}});
+        const Plan odd = polyvolPlan(name, {{"shadow_map", 600}});
+        for (const char* f : {"ADAPTIVE", "ADAPTIVE_CUBES"}) EXPECT_FALSE(requiredFeature(cut, f).enabled) << name << " " << f;
+        const char* used = name == "tv-room" ? "ADAPTIVE_CUBES" : "ADAPTIVE";
+        EXPECT_TRUE(mentions(requiredFeature(cut, used), "draw_triangles")) << requiredFeature(cut, used).why;
+        if (name == "colonnade") {
+            EXPECT_FALSE(requiredFeature(odd, used).enabled);
+            EXPECT_TRUE(mentions(requiredFeature(odd, used), "power of two")) << requiredFeature(odd, used).why;
+        } else {
+            // tv-room's VPL faces stop at 256^2, a power of two, whatever shadow_map is above it.
+            EXPECT_TRUE(requiredFeature(odd, used).enabled) << requiredFeature(odd, used).why;
+        }
+    }
     scene::Scene clear = scene::makeBuiltinScene("grate");
     clear.medium.sigma_s = 0.0;
     const Plan p = polyvolPlan(clear);
@@ -116,8 +139,18 @@ TEST(PolyvolPlan, AdaptiveTessellationIsLeftOutBelowItsBreakEvenSize) {
         EXPECT_TRUE(forced.enabled) << name;
         EXPECT_TRUE(mentions(forced, "forced on")) << forced.why;
     }
+    // Cube faces below 128^2 (tv-room's VPL faces follow shadow_map up to 256^2).
+    const FeaturePlan cubes = requiredFeature(polyvolPlan("tv-room", {{"shadow_map", 64}}), "ADAPTIVE_CUBES");
+    EXPECT_FALSE(cubes.enabled);
+    EXPECT_TRUE(mentions(cubes, "did not pay off")) << cubes.why;
+    EXPECT_TRUE(requiredFeature(polyvolPlan("tv-room", {{"shadow_map", 64}, {"force_features", 1}}), "ADAPTIVE_CUBES").enabled);
+    EXPECT_TRUE(requiredFeature(polyvolPlan("tv-room", {{"shadow_map", 128}}), "ADAPTIVE_CUBES").enabled);
     // Static stays static whatever the size, forced or not.
-    EXPECT_FALSE(requiredFeature(polyvolPlan("forest", {{"shadow_map", 2048}, {"force_features", 1}}), "ADAPTIVE").enabled);
+    for (const char* f : {"ADAPTIVE", "ADAPTIVE_CUBES"}) {
+        EXPECT_FALSE(requiredFeature(polyvolPlan("forest", {{"shadow_map", 2048}, {"tessellation", 0}, {"force_features", 1}}), f)
+                         .enabled);
+        EXPECT_FALSE(requiredFeature(polyvolPlan("tv-room", {{"tessellation", 0}, {"force_features", 1}}), f).enabled);
+    }
 }
 
 // A light whose lit volume misses the view volume is culled (render::planCulledLights): it is listed,
@@ -147,7 +180,11 @@ TEST(PolyvolPlan, ForceFeaturesTurnsOnEverySceneChoiceOnly) {
             EXPECT_EQ(mentions(requiredFeature(p, f), "forced on"), !requiredFeature(polyvolPlan(name), f).enabled) << name << " " << f;
         }
         EXPECT_FALSE(requiredFeature(p, "AIRLIGHT_LUT").enabled) << name;
-        EXPECT_FALSE(requiredFeature(p, "ADAPTIVE").enabled) << name;
+        // Tessellation is a setting: as without force_features (the default maps are above its
+        // break-even sizes).
+        for (const char* f : {"ADAPTIVE", "ADAPTIVE_CUBES"}) {
+            EXPECT_EQ(requiredFeature(p, f).enabled, requiredFeature(polyvolPlan(name), f).enabled) << name << " " << f;
+        }
     }
     scene::Scene clear = scene::makeBuiltinScene("grate");
     clear.medium.sigma_s = 0.0;

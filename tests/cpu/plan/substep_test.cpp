@@ -78,7 +78,9 @@ TEST(Substeps, CountsFollowTheSettings) {
     // polyvol 1024^2: coarse quads of 64 texels are level 6; levels 6 .. 1, then fully refined.
     const std::vector<double> refine = values("polyvol", "polyvol.volume", {{"tessellation", 1}, {"shadow_map", 1024}});
     EXPECT_EQ(refine, (std::vector<double>{6, 5, 4, 3, 2, 1, -1}));
-    EXPECT_TRUE(values("polyvol", "polyvol.volume").empty()) << "static tessellation has no refinement steps";
+    EXPECT_EQ(values("polyvol", "polyvol.volume"), refine) << "adaptive at 1024^2 by default";
+    EXPECT_TRUE(values("polyvol", "polyvol.volume", {{"tessellation", 0}}).empty())
+        << "static tessellation has no refinement steps";
     EXPECT_TRUE(values("polyvol", "polyvol.volume", {{"tessellation", 1}, {"shadow_map", 256}}).empty())
         << "below 512^2 the plan leaves adaptive out";
     EXPECT_EQ(values("polyvol", "polyvol.volume", {{"tessellation", 1}, {"shadow_map", 256}, {"force_features", 1}}).size(),

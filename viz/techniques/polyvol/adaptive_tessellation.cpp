@@ -34,7 +34,6 @@ void AdaptiveTessellation::build(const VolumeGrid& grid, EdgeMeasure measure, do
     if (n < 16 || !std::has_single_bit(unsigned(n)))
         throw InputError("tessellation=adaptive needs a power-of-two shadow_map (got " + std::to_string(n) + ")");
     const int top = std::countr_zero(unsigned(n));  // log2 N
-    const int coarse = std::max(0, top - kCoarseSteps);
 
     if (!mLevelsProgram) {
         mLevelsProgram = gl::Program::compile({.stages = {"polyvol/tess_levels.comp"}, .label = "polyvol.tess_levels"});
@@ -46,32 +45,63 @@ void AdaptiveTessellation::build(const VolumeGrid& grid, EdgeMeasure measure, do
             {.stages = {"polyvol/tess_edges.comp"}, .defines = defines, .label = "polyvol.tess_edges"});
         mEdgesKey = definesKey;
     }
+    const int faces = grid.faces;
     const std::uint32_t listCapacity = std::uint32_t(std::min<std::int64_t>(std::int64_t(n) * n, kMaxListEntries));
-    const std::uint32_t keyCapacity = std::uint32_t(std::min<std::int64_t>(std::int64_t(n) * n * 6, kMaxKeys));
-    if (mSize != n) {
-        mEdges = gl::Texture::create({.target = GL_TEXTURE_2D, .format = GL_R16F, .size = {n, n, 1}, .levels = 1,
-                                      .label = "polyvol.edge_map"});
+    const std::uint32_t keyCapacity =
+        std::uint32_t(std::min<std::int64_t>(std::int64_t(n) * n * 6 * faces, kMaxKeys));
+    if (mSize != n || mFaces != faces) {
+        // The edge and level maps keep one layer per face (a cube's six are views' layers); the flag
+        // hierarchy and the quad lists are scratch, reused face after face.
+        mEdges = gl::Texture::create({.target = GL_TEXTURE_2D_ARRAY, .format = GL_R16F, .size = {n, n, faces},
+                                      .levels = 1, .label = "polyvol.edge_map"});
         mFlags = gl::Texture::create({.target = GL_TEXTURE_2D, .format = GL_R8UI, .size = {n, n, 1},
                                       .levels = top + 1, .label = "polyvol.tess_flags"});
         mFlags.setFilter(GL_NEAREST_MIPMAP_NEAREST, GL_NEAREST);
-        mLevels = gl::Texture::create({.target = GL_TEXTURE_2D, .format = GL_R8, .size = {n, n, 1}, .levels = 1,
-                                       .label = "polyvol.tess_levels"});
+        mLevels = gl::Texture::create({.target = GL_TEXTURE_2D_ARRAY, .format = GL_R8, .size = {n, n, faces},
+                                       .levels = 1, .label = "polyvol.tess_levels"});
         mCounters = gl::Buffer::create({.bytes = kCounterWords * 4, .label = "polyvol.tess_counters"});
         mListA = gl::Buffer::create({.bytes = std::size_t(listCapacity) * 4, .label = "polyvol.tess_list_a"});
         mListB = gl::Buffer::create({.bytes = std::size_t(listCapacity) * 4, .label = "polyvol.tess_list_b"});
         mKeys = gl::Buffer::create({.bytes = std::size_t(keyCapacity) * 4, .label = "polyvol.tess_keys"});
         mSize = n;
+        mFaces = faces;
     }
     mLevelCount = top + 1;
     mLevels.clear(glm::vec4(0.0f));
     mCounters.clearZero();
+    // Every face appends to the same key list (the counters carry over: each step's list is empty again
+    // when the face's refinement ends), so one indirect draw covers the whole light.
+    for (int face = 0; face < faces; ++face)
+        buildFace(grid, face, measure, threshold, stopLevel, listCapacity, keyCapacity);
+
+    const GLbitfield barrier = GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT;
+    mArgsProgram.use();
+    mArgsProgram.set("uListCapacity", listCapacity);
+    mArgsProgram.set("uKeyCapacity", keyCapacity);
+    mArgsProgram.set("uDraw", 1);
+    glDispatchCompute(1, 1, 1);
+    glMemoryBarrier(barrier | GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+
+    // The triangle count is small to read and is what the debugger reports.
+    std::uint32_t counters[kCounterWords] = {};
+    mCounters.download(0, sizeof(counters), counters);
+    mTriangles = std::int64_t(std::min<std::uint32_t>(counters[2], keyCapacity / 3));
+    mOverflow = counters[3] != 0;
+}
+
+void AdaptiveTessellation::buildFace(const VolumeGrid& grid, int face, EdgeMeasure measure, double threshold,
+                                     int stopLevel, std::uint32_t listCapacity, std::uint32_t keyCapacity) {
+    const int n = grid.mapSize;
+    const int top = std::countr_zero(unsigned(n));
+    const int coarse = std::max(0, top - kCoarseSteps);
 
     // 1. Edge map.
     mEdgesProgram.use();
     setGridUniforms(mEdgesProgram, grid);
+    mEdgesProgram.set("uFace", face);
     mEdgesProgram.set("uRange", std::max(grid.range, 1e-20f));
     mEdgesProgram.set("uMeasure", int(measure));
-    mEdges.bindImage(0, GL_WRITE_ONLY);
+    mEdges.bindImage(0, GL_WRITE_ONLY, 0, face);
     glDispatchCompute(GLuint((n + 7) / 8), GLuint((n + 7) / 8), 1);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
 
@@ -79,6 +109,7 @@ void AdaptiveTessellation::build(const VolumeGrid& grid, EdgeMeasure measure, do
     mLevelsProgram.use();
     mLevelsProgram.set("uMapSize", n);
     mLevelsProgram.set("uThreshold", float(threshold));
+    mLevelsProgram.set("uFace", face);
     mEdges.bindUnit(kUnitEdges);
     mFlags.bindUnit(kUnitFlags);
     for (int k = 0; k <= coarse; ++k) {
@@ -92,7 +123,7 @@ void AdaptiveTessellation::build(const VolumeGrid& grid, EdgeMeasure measure, do
     // 3. Refinement from the coarse grid down to level 0.
     mCounters.bindBase(GL_SHADER_STORAGE_BUFFER, kBindingCounters);
     mKeys.bindBase(GL_SHADER_STORAGE_BUFFER, kBindingKeys);
-    mLevels.bindImage(1, GL_WRITE_ONLY);
+    mLevels.bindImage(1, GL_WRITE_ONLY, 0, face);
     mArgsProgram.set("uListCapacity", listCapacity);
     mArgsProgram.set("uKeyCapacity", keyCapacity);
     mRefineProgram.set("uMapSize", n);
@@ -100,6 +131,7 @@ void AdaptiveTessellation::build(const VolumeGrid& grid, EdgeMeasure measure, do
     mRefineProgram.set("uListCapacity", listCapacity);
     mRefineProgram.set("uKeyCapacity", keyCapacity);
     mRefineProgram.set("uWriteLevels", 1);
+    mRefineProgram.set("uKeyBase", std::uint32_t(face) * std::uint32_t(n + 1) * std::uint32_t(n + 1));
     const gl::Buffer* in = &mListA;
     const gl::Buffer* out = &mListB;
     const GLbitfield barrier = GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT;
@@ -123,16 +155,6 @@ void AdaptiveTessellation::build(const VolumeGrid& grid, EdgeMeasure measure, do
         glMemoryBarrier(barrier);
         std::swap(in, out);
     }
-    mArgsProgram.use();
-    mArgsProgram.set("uDraw", 1);
-    glDispatchCompute(1, 1, 1);
-    glMemoryBarrier(barrier | GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-
-    // The triangle count is small to read and is what the debugger reports.
-    std::uint32_t counters[kCounterWords] = {};
-    mCounters.download(0, sizeof(counters), counters);
-    mTriangles = std::int64_t(std::min<std::uint32_t>(counters[2], keyCapacity / 3));
-    mOverflow = counters[3] != 0;
 }
 
 }  // namespace viz::polyvol

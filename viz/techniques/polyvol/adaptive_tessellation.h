@@ -1,4 +1,5 @@
-// Adaptive tessellation of a 2D light volume grid (Billeter et al. 2010, section 4.1) on the GPU:
+// Adaptive tessellation of a light volume's grids (Billeter et al. 2010, section 4.1) on the GPU, one 2D
+// map's grid or the six faces of a cube map's, face after face:
 //   1. edge map of the vertex distances: the paper's Laplacian or our sum of absolute second differences,
 //      which also refines curved receivers the Laplacian misses (saddles) (tess_edges.comp);
 //   2. mip-like hierarchy of "needs subdivision" flags with the one-level balance rule (tess_levels.comp);
@@ -7,7 +8,8 @@
 //   4. an indirect draw of the emitted vertex keys (light_volume_mesh.h, key stride N + 1).
 // N must be a power of two. The grid is the virtual (N + 1)^2 vertex grid whose last row and column are
 // clamped onto the map's last texel (zero-area slivers), so that quads of 2^k texels tile it; the border
-// ring stays at the finest level, so gridClosure(N + 1) closes it without T-junctions.
+// ring stays at the finest level, so gridClosure(N + 1) (2D) or cubeSeams(N, N + 1) (the cube's faces, whose
+// seams join border texels) closes it without T-junctions.
 #pragma once
 
 #include <cstdint>
@@ -29,7 +31,8 @@ public:
     // Coarse grid: quads of 2^(log2 N - kCoarseSteps) texels (16 x 16 quads).
     static constexpr int kCoarseSteps = 4;
 
-    // Builds the mesh of one light. The light buffer and shadow maps must be bound. threshold: the edge
+    // Builds the mesh of one light: each of grid.faces faces (1, or a cube's 6) refined on its own, their
+    // triangles in one key list. The light buffer and shadow maps must be bound. threshold: the edge
     // measure relative to the map's range above which a vertex needs the finest level; stopLevel: quads
     // of this level are leaves (stepping; -1 = refine fully).
     // defines: the light feature switches of the volume program (LIGHTS_NO_SPOT, ...), key: their id.
@@ -44,16 +47,20 @@ public:
     // Read back after build(): triangles emitted and whether a buffer overflowed (the mesh is then cut).
     std::int64_t triangles() const { return mTriangles; }
     bool overflowed() const { return mOverflow; }
+    // One layer per face of the last light built.
     const gl::Texture& edgeMap() const { return mEdges; }
     const gl::Texture& levelMap() const { return mLevels; }
     int levels() const { return mLevelCount; }
 
 private:
+    void buildFace(const VolumeGrid& grid, int face, EdgeMeasure measure, double threshold, int stopLevel,
+                   std::uint32_t listCapacity, std::uint32_t keyCapacity);
+
     gl::Program mEdgesProgram, mLevelsProgram, mRefineProgram, mArgsProgram;
     std::string mEdgesKey;
     gl::Texture mEdges, mFlags, mLevels;
     gl::Buffer mCounters, mListA, mListB, mKeys;
-    int mSize = 0, mLevelCount = 0;
+    int mSize = 0, mFaces = 0, mLevelCount = 0;
     std::int64_t mTriangles = 0;
     bool mOverflow = false;
 };

@@ -20,17 +20,19 @@ void faceBasis(int face, glm::dvec3& forward, glm::dvec3& right, glm::dvec3& tru
     trueUp = glm::cross(right, forward);
 }
 
-glm::dvec3 keyDirection(int size, std::uint32_t key) {
-    const std::uint32_t n2 = std::uint32_t(size) * std::uint32_t(size);
+glm::dvec3 keyDirection(int size, int stride, std::uint32_t key) {
+    const std::uint32_t n2 = std::uint32_t(stride) * std::uint32_t(stride);
     const int face = int(key / n2);
     const std::uint32_t rest = key % n2;
-    return cubeTexelDirection(size, face, double(rest % std::uint32_t(size)), double(rest / std::uint32_t(size)));
+    return cubeTexelDirection(size, face, double(rest % std::uint32_t(stride)), double(rest / std::uint32_t(stride)));
 }
 
 // Appends (a, b, c) counter-clockwise seen from the light at the origin: the normal of a CCW triangle
 // points toward the viewer, here the light, i.e. against the directions of its vertices.
-void addOriented(std::vector<std::uint32_t>& out, int size, std::uint32_t a, std::uint32_t b, std::uint32_t c) {
-    const glm::dvec3 da = keyDirection(size, a), db = keyDirection(size, b), dc = keyDirection(size, c);
+void addOriented(std::vector<std::uint32_t>& out, int size, int stride, std::uint32_t a, std::uint32_t b,
+                 std::uint32_t c) {
+    const glm::dvec3 da = keyDirection(size, stride, a), db = keyDirection(size, stride, b),
+                     dc = keyDirection(size, stride, c);
     const glm::dvec3 n = glm::cross(db - da, dc - da);
     if (glm::dot(n, da + db + dc) < 0.0) {
         out.insert(out.end(), {a, b, c});
@@ -78,8 +80,10 @@ CubeTexel cubeTexelOf(int size, const glm::dvec3& d) {
     return {face, texel(ndc.x), texel(ndc.y)};
 }
 
-std::vector<std::uint32_t> cubeSeams(int size) {
+std::vector<std::uint32_t> cubeSeams(int size, int keyStride) {
     VIZ_CHECK(size >= 2, "a light volume grid needs at least 2x2 texels");
+    const int stride = keyStride > 0 ? keyStride : size;
+    VIZ_CHECK(stride >= size, "cube seams: a key stride below the face size");
     std::vector<std::uint32_t> keys;
     const int last = size - 1;
     const double texelNdc = 2.0 / double(size);
@@ -103,13 +107,13 @@ std::vector<std::uint32_t> cubeSeams(int size) {
                 VIZ_CHECK(b.face != faceA, "cube seam: the step across a border stayed on its face");
                 VIZ_CHECK(faceB < 0 || faceB == b.face, "cube seam: one border touches two faces");
                 faceB = b.face;
-                rowA.push_back(gridKey(size, faceA, i, j));
-                rowB.push_back(gridKey(size, b.face, b.i, b.j));
+                rowA.push_back(gridKey(stride, faceA, i, j));
+                rowB.push_back(gridKey(stride, b.face, b.i, b.j));
             }
             if (faceB < faceA) continue;  // the same edge is walked from the other face too
             for (int k = 0; k + 1 < size; ++k) {
-                addOriented(keys, size, rowA[std::size_t(k)], rowA[std::size_t(k) + 1], rowB[std::size_t(k) + 1]);
-                addOriented(keys, size, rowA[std::size_t(k)], rowB[std::size_t(k) + 1], rowB[std::size_t(k)]);
+                addOriented(keys, size, stride, rowA[std::size_t(k)], rowA[std::size_t(k) + 1], rowB[std::size_t(k) + 1]);
+                addOriented(keys, size, stride, rowA[std::size_t(k)], rowB[std::size_t(k) + 1], rowB[std::size_t(k)]);
             }
         }
     }
@@ -121,9 +125,9 @@ std::vector<std::uint32_t> cubeSeams(int size) {
             glm::dvec3 d = s;
             d[axis] *= 1.001;  // just inside face (axis, sign)
             const CubeTexel t = cubeTexelOf(size, d);
-            tri[std::size_t(axis)] = gridKey(size, t.face, t.i, t.j);
+            tri[std::size_t(axis)] = gridKey(stride, t.face, t.i, t.j);
         }
-        addOriented(keys, size, tri[0], tri[1], tri[2]);
+        addOriented(keys, size, stride, tri[0], tri[1], tri[2]);
     }
     return keys;
 }

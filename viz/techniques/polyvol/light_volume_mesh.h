@@ -45,8 +45,10 @@ std::vector<std::uint32_t> gridClosure(int size);
 // The seams of a cube's six grids: for each of the 12 cube edges a strip of 2 (N - 1) triangles joining
 // the border texels of the two faces, and for each of the 8 corners one triangle joining the three corner
 // texels. Each triangle is oriented counter-clockwise seen from the light (checked with the texel
-// directions). Together with the grids this is a closed, T-junction-free surface around the light.
-std::vector<std::uint32_t> cubeSeams(int size);
+// directions). Together with the grids this is a closed, T-junction-free surface around the light; so it
+// is with adaptively refined faces, whose border texels all stay vertices. Keys with `keyStride` texels
+// per row (N static, N + 1 adaptive; 0 means N).
+std::vector<std::uint32_t> cubeSeams(int size, int keyStride = 0);
 
 // Unit direction from the light through texel (i, j) of cube face `face` (0..5 = +X, -X, +Y, -Y, +Z,
 // -Z; the basis of render::ShadowMaps::cubeFaceBasis and shaders/common/shadow_map.glsl).

@@ -9,8 +9,9 @@ const ParamTable<PolyvolSettings>& polyvolParams() {
     using S = PolyvolSettings;
     static const ParamTable<S> table =
         ParamTable<S>()
-            .add(&S::adaptive, {"tessellation", "static: one vertex per shadow-map texel; adaptive: refined where the "
-                                "edge measure is large", 0, 0, 1, true, {"static", "adaptive"}})
+            .add(&S::adaptive, {"tessellation", "static: one vertex per shadow-map texel; adaptive (default): refined "
+                                "where the edge measure is large, at the map sizes where that was measured to pay off "
+                                "(the plan says which)", 1, 0, 1, true, {"static", "adaptive"}})
             .add(&S::edgeMeasure,
                  {"edge_measure", "adaptive: laplacian (the paper: misses saddles, z = xy) or curvature (the absolute "
                   "second differences along x, y and both diagonals: zero only on a plane)",
@@ -18,14 +19,16 @@ const ParamTable<PolyvolSettings>& polyvolParams() {
             .add(&S::lut, {"airlight", "analytic: the stable segment integral (common/airlight.glsl: Gauss-Legendre "
                            "panels for point and spot lights, closed form for suns); lut: 2D lookup table (supplement)",
                            0, 0, 1, true, {"analytic", "lut"}})
-            .add(&S::threshold, {"threshold", "adaptive: edge measure of the vertex distances, relative to the map's "
-                                 "depth range, above which a vertex needs the finest level", 1e-4, 0, 1e3, false})
+            .add(&S::threshold, {"threshold", "adaptive: edge measure of the vertex depths (directional) or reciprocal "
+                                 "depths (spot, cube faces; scaled to a depth), relative to the map's depth range, above "
+                                 "which a vertex needs the finest level", 1e-4, 0, 1e3, false})
             .add(&S::spotPieces, {"spot_pieces", "spot lights: equal-angle pieces per penumbra part of a segment (VPLs "
                                   "too with airlight=lut; otherwise their lobe is integrated exactly)", 8, 1, 256, true})
             .add(&S::crackCheck, {"crack_check", "1: constant integrand; the signed crossing count per pixel reveals "
                                   "holes", 0, 0, 1, true})
             .add(&S::drawTriangles, {"draw_triangles", "stepping: draw only the first N triangles of each light "
-                                     "volume (0: all)", 0, 0, 1e12, true})
+                                     "volume's static mesh (0: all; N > 0 leaves adaptive tessellation out)", 0, 0, 1e12,
+                                     true})
             .add(&S::originAtSurface,
                  {"origin", "eye: each crossing adds +-L(0, x); surface: -+L(x, d), plus c L(0, d) once per pixel "
                   "(crossings clamped to d add exactly 0)", 0, 0, 1, true, {"eye", "surface"}})
@@ -86,7 +89,7 @@ std::vector<QualitySetting> PolyvolTechnique::qualitySweep(bool quick) const {
         return sweep;
     }
     for (int n : {256, 512, 1024, 2048})
-        sweep.push_back({"map=" + std::to_string(n) + " static", {{"shadow_map", double(n)}}});
+        sweep.push_back({"map=" + std::to_string(n) + " static", {{"shadow_map", double(n)}, {"tessellation", 0.0}}});
     for (int n : {512, 1024, 2048})
         sweep.push_back({"map=" + std::to_string(n) + " adaptive", {{"shadow_map", double(n)}, {"tessellation", 1.0}}});
     return sweep;
@@ -113,9 +116,45 @@ std::optional<StiffBound> PolyvolTechnique::stiffBound(const std::string& caseCl
     return boundOf(kBounds, caseClass);
 }
 
+namespace {
+
+// Adaptive tessellation of cube faces: each face refined on its own, its border ring at texel resolution so
+// that the seams (which join border texels) close the volume without T-junctions.
+FeaturePlan adaptiveCubesFeature(const PolyvolSettings& s, bool hasPoint, bool hasArea) {
+    if (!hasPoint && !hasArea) return {"ADAPTIVE_CUBES", false, "no point or area light: no cube grids"};
+    if (!s.adaptive) return {"ADAPTIVE_CUBES", false, "tessellation=static: one vertex per texel of every cube face"};
+    if (s.drawTriangles > 0)
+        return {"ADAPTIVE_CUBES", false, "draw_triangles counts the static mesh: one vertex per texel of every cube face"};
+    const int point = s.shadowMap, vpl = std::min(s.shadowMap, render::kMaxVplShadowSize);
+    const int smallest = hasPoint && hasArea ? std::min(point, vpl) : hasPoint ? point : vpl;
+    const std::string faces = hasPoint && hasArea ? std::to_string(point) + "^2 (point) and " + std::to_string(vpl) +
+                                                        "^2 (VPL) faces"
+                                                  : std::to_string(smallest) + "^2 faces";
+    if ((hasPoint && !PolyvolSettings::tessellable(point)) || (hasArea && !PolyvolSettings::tessellable(vpl)))
+        return {"ADAPTIVE_CUBES", false,
+                "tessellation=adaptive left out on cube grids: " + faces +
+                    ", not a power of two of at least 16 (the refinement halves quads down to texels)"};
+    if (smallest < kAdaptiveCubesPayFrom && !s.forceFeatures)
+        return {"ADAPTIVE_CUBES", false,
+                "tessellation=adaptive left out on cube grids: " + faces + "; below " +
+                    std::to_string(kAdaptiveCubesPayFrom) +
+                    "^2 it did not pay off (tv-room 64^2 faces: 1 518 ms adaptive vs 1 327 ms static); "
+                    "force_features=1 keeps it"};
+    return {"ADAPTIVE_CUBES", true,
+            "tessellation=adaptive on cube grids: each of the six faces refined on its own (" + faces +
+                "), border texels kept for the seams"};
+}
+
+}  // namespace
+
 Plan PolyvolTechnique::plan(const scene::Scene& scene, const Settings& settings) const {
     const PolyvolSettings s = polyvolParams().read(settings);
     Plan p = planEveryStage(mStages);
+    const bool hasPoint = render::hasLightOfType(scene, scene::LightType::Point);
+    const bool hasArea = render::hasLightOfType(scene, scene::LightType::Area);
+    const bool maps2D = render::hasLightOfType(scene, scene::LightType::Spot) ||
+                        render::hasLightOfType(scene, scene::LightType::Directional);
+    const FeaturePlan cubes = adaptiveCubesFeature(s, hasPoint, hasArea);
     const bool constant = s.crackCheck;
     if (scene.medium.sigma_s == 0.0 && !constant) {
         p.stages[kVolumeIndex].runs = false;
@@ -123,8 +162,7 @@ Plan PolyvolTechnique::plan(const scene::Scene& scene, const Settings& settings)
     } else {
         const int n = s.shadowMap;
         std::int64_t triangles = 0;
-        // VPL cubes are capped at 256^2 per face (render::SceneViewPasses).
-        const int vpl = std::min(n, 256);
+        const int vpl = std::min(n, render::kMaxVplShadowSize);
         const int areaSamples = s.areaSamples;
         auto cube = [](int m) { return gridTriangleCountFor(m, 6) + 12 * 2 * std::int64_t(m - 1) + 8; };
         for (const scene::Light& l : scene.lights) {
@@ -137,20 +175,19 @@ Plan PolyvolTechnique::plan(const scene::Scene& scene, const Settings& settings)
                 triangles += gridTriangleCountFor(n, 1) + 3 * 4 * std::int64_t(n - 1);
             }
         }
-        const bool adaptive = s.adaptive;
+        const bool adaptive = (maps2D && s.adaptiveKept()) || cubes.enabled;
+        const std::string texels = std::to_string(n) + "^2 texels per map" +
+                                   (hasArea && vpl != n ? ", " + std::to_string(vpl) + "^2 per VPL cube face" : "");
         p.stages[kVolumeIndex].why =
-            adaptive ? "adaptive tessellation: at most " + std::to_string(triangles) +
-                           " triangles (the static count; the run's count is in polyvol.mesh), " +
-                           std::to_string(n) + "^2 texels per map"
-                     : std::to_string(triangles) + " triangles (static tessellation, " + std::to_string(n) +
-                           "^2 texels per map)";
+            adaptive ? std::to_string(triangles) +
+                           " triangles at most (the static count; adaptive tessellation draws fewer, the run's count "
+                           "is in polyvol.mesh), " + texels
+                     : std::to_string(triangles) + " triangles (static tessellation, " + texels + ")";
     }
     const bool hasSpot = render::hasLightOfType(scene, scene::LightType::Spot);
     const bool hasCookie = std::any_of(scene.lights.begin(), scene.lights.end(), [](const scene::Light& l) {
         return l.type == scene::LightType::Spot && l.cookie >= 0;
     });
-    const bool hasPoint = render::hasLightOfType(scene, scene::LightType::Point);
-    const bool maps2D = hasSpot || render::hasLightOfType(scene, scene::LightType::Directional);
     const bool lut = s.lut;
     p.features.push_back({"SPOT", hasSpot,
                           hasSpot ? "spot cone: volume follows the cone; segments clipped to the cones, " +
@@ -161,7 +198,6 @@ Plan PolyvolTechnique::plan(const scene::Scene& scene, const Settings& settings)
                           hasCookie ? "cookie: dark texels close the volume; colour per angular piece, about one "
                                       "piece per cookie texel (at most 64)"
                                     : "no spot light has a cookie"});
-    const bool hasArea = render::hasLightOfType(scene, scene::LightType::Area);
     p.features.push_back({"SHADOW_MAPS_CUBE", hasPoint || hasArea,
                           hasPoint || hasArea
                               ? "point lights / area-light VPLs: six grids from the cube map, stitched at the seams"
@@ -193,7 +229,12 @@ Plan PolyvolTechnique::plan(const scene::Scene& scene, const Settings& settings)
         why = "tessellation=static: one vertex per texel" +
               std::string(maps2D && pays ? " (adaptive measured faster from 512^2)" : "");
     else if (!maps2D)
-        why = "tessellation=adaptive but no 2D map: cubes stay static";
+        why = "tessellation=adaptive but no 2D map (cube grids: ADAPTIVE_CUBES)";
+    else if (s.drawTriangles > 0)
+        why = "draw_triangles counts the static mesh: one vertex per texel";
+    else if (!PolyvolSettings::tessellable(mapSize))
+        why = "tessellation=adaptive left out: " + std::to_string(mapSize) +
+              "^2 is not a power of two of at least 16 (the refinement halves quads down to texels)";
     else if (!pays && !forced)
         why = "tessellation=adaptive left out: static tessellation at " + std::to_string(mapSize) + "^2 (below " +
               std::to_string(kAdaptivePaysFrom) +
@@ -201,9 +242,10 @@ Plan PolyvolTechnique::plan(const scene::Scene& scene, const Settings& settings)
               "force_features=1 keeps it";
     else
         why = "tessellation=adaptive: edge map, flag hierarchy, refinement from 16^2 coarse quads, 16 patterns, "
-              "indirect draw (2D maps; cubes stay static)" +
+              "indirect draw (2D maps; cube grids: ADAPTIVE_CUBES)" +
               std::string(pays ? "; measured to pay off at this size" : "; forced on below its break-even size");
     p.features.push_back({"ADAPTIVE", adaptive, why});
+    p.features.push_back(cubes);
     render::planCulledLights(scene, p);
     forcePlan(p, s.forceFeatures, {"SPOT", "COOKIE", "SHADOW_MAPS_CUBE", "SHADOW_MAPS_2D"});
     annotatePermutations(p, kDefines);

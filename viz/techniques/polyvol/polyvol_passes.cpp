@@ -76,11 +76,13 @@ const gl::Program& PolyvolTechnique::volumeProgram(const Plan& plan) {
     return mProgram;
 }
 
-const gl::Buffer& PolyvolTechnique::extraKeys(ExtraKind kind, int stride, std::int64_t& triangles) {
-    Extra& e = mExtras[{int(kind), stride}];
+const gl::Buffer& PolyvolTechnique::extraKeys(ExtraKind kind, int size, int stride, std::int64_t& triangles) {
+    Extra& e = mExtras[{int(kind), size, stride}];
     if (!e.buffer) {
         const bool cube = kind == ExtraKind::Seams;
-        const std::vector<std::uint32_t> keys = cube ? polyvol::cubeSeams(stride) : polyvol::gridClosure(stride);
+        // A 2D grid's closure walks the border of the key grid (the adaptive one's virtual row and
+        // column N included); a cube's seams join the faces' texels 0..N - 1.
+        const std::vector<std::uint32_t> keys = cube ? polyvol::cubeSeams(size, stride) : polyvol::gridClosure(stride);
         e.buffer = gl::Buffer::create({.bytes = keys.size() * sizeof(std::uint32_t),
                                        .data = keys.data(),
                                        .flags = 0,
@@ -184,6 +186,7 @@ std::int64_t PolyvolTechnique::drawVolumes(const scene::Scene& scene, const Fram
     glBlendFunc(GL_ONE, GL_ONE);
     const std::int64_t limit = s.drawTriangles;
     const bool adaptiveWanted = featureEnabled(plan, "ADAPTIVE");
+    const bool adaptiveCubes = featureEnabled(plan, "ADAPTIVE_CUBES");
     const int wire = mWireMode;
     mWireDrawn = false;
     if (wire) {
@@ -207,14 +210,15 @@ std::int64_t PolyvolTechnique::drawVolumes(const scene::Scene& scene, const Fram
         if (L.info.z < 0) continue;
         (void)type;
         polyvol::VolumeGrid grid = describe(L, i, n, cam.zfar, float(s.cookieMask));
-        const bool adaptive = adaptiveWanted && grid.mode != kModeCube;
+        const bool cube = grid.mode == kModeCube;
+        const bool adaptive = cube ? adaptiveCubes : adaptiveWanted;
         // The crack detector counts crossings of the whole mesh: no ball there.
         const float radius = mNearRadii[std::size_t(i)];
         program.set("uNearRadius", radius);
         std::int64_t extraTriangles = 0;
         if (adaptive) {
             // Compute passes in between: the draw state is set again afterwards.
-            grid.keyStride = n + 1;
+            grid.keyStride = grid.mapSize + 1;
             mTess.build(grid, s.edgeMeasure, s.threshold, int(substepLimit(input, kVolumeIndex)), mDefines,
                         mProgramKey);
             mAdaptiveUsed = true;
@@ -232,7 +236,8 @@ std::int64_t PolyvolTechnique::drawVolumes(const scene::Scene& scene, const Fram
             mTess.counters().bind(GL_DRAW_INDIRECT_BUFFER);
             glDrawArraysIndirect(GL_TRIANGLES, reinterpret_cast<const void*>(polyvol::AdaptiveTessellation::drawOffset()));
             drawn += mTess.triangles();
-            const gl::Buffer& closure = extraKeys(ExtraKind::Closure, n + 1, extraTriangles);
+            const gl::Buffer& closure = extraKeys(cube ? ExtraKind::Seams : ExtraKind::Closure, grid.mapSize,
+                                                  grid.keyStride, extraTriangles);
             closure.bindBase(GL_SHADER_STORAGE_BUFFER, render::hd::kFirstFreeSsboBinding);
             glDrawArrays(GL_TRIANGLES, 0, GLsizei(3 * extraTriangles));
             drawn += extraTriangles;
@@ -241,7 +246,7 @@ std::int64_t PolyvolTechnique::drawVolumes(const scene::Scene& scene, const Fram
             continue;
         }
         const std::int64_t gridTriangles = polyvol::gridTriangleCount(grid.mapSize, grid.faces);
-        const gl::Buffer& keys = extraKeys(grid.mode == kModeCube ? ExtraKind::Seams : ExtraKind::Closure,
+        const gl::Buffer& keys = extraKeys(cube ? ExtraKind::Seams : ExtraKind::Closure, grid.mapSize,
                                            grid.mapSize, extraTriangles);
         setGridUniforms(program, grid);
         std::int64_t count = gridTriangles + extraTriangles;

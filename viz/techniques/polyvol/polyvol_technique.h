@@ -5,6 +5,7 @@
 // through polyvol.h.
 #pragma once
 
+#include <array>
 #include <bit>
 #include <chrono>
 #include <cstdio>
@@ -65,6 +66,9 @@ inline const PermutationTable kDefines = {
 // The smallest shadow map at which adaptive tessellation paid off on every built-in scene measured
 // (README, benchmark: forest broke even between 256^2 and 512^2).
 constexpr int kAdaptivePaysFrom = 512;
+// The same for cube faces (point lights and area-light VPLs; README, benchmark: tv-room's VPL cubes broke
+// even between 64^2 and 128^2 faces at 160x120).
+constexpr int kAdaptiveCubesPayFrom = 128;
 
 // The settings a run reads, each declared once with its parameter (polyvolParams(), debug/param_table.h).
 struct PolyvolSettings {
@@ -84,7 +88,13 @@ struct PolyvolSettings {
 
     // Whether they ask for adaptive tessellation at a size where the plan keeps it (or force it); the plan
     // also needs a 2D map in the scene.
-    bool adaptiveKept() const { return adaptive && (shadowMap >= kAdaptivePaysFrom || forceFeatures); }
+    // draw_triangles cuts the static mesh, so it leaves adaptive tessellation out; so does a map size the
+    // refinement cannot halve down to texels (a power of two, at least 16).
+    bool adaptiveKept() const {
+        return adaptive && drawTriangles == 0 && tessellable(shadowMap) &&
+               (shadowMap >= kAdaptivePaysFrom || forceFeatures);
+    }
+    static bool tessellable(int n) { return n >= 16 && std::has_single_bit(unsigned(n)); }
 };
 const ParamTable<PolyvolSettings>& polyvolParams();
 
@@ -125,7 +135,7 @@ public:
     FrameOutput run(const FrameInput& input) override;
 
     // Linked cursors. In each light's shadow map, and in the edge map and tessellation levels (the last
-    // adaptive 2D light's): the pixel's eye ray projected into the map (cubes: per face) and every crossing
+    // adaptive light's, marked when it is a 2D light): the pixel's eye ray projected into the map (cubes: per face) and every crossing
     // of the ray with that light's volume mesh (volume_crossings.h), signed as the volume pass adds it
     // (+1 leaving the lit volume, -1 entering), also those beyond d, so that they add up to the pixel's
     // polyvol.crossings (r: count, g: signed sum) in a one-light scene. Cube marks carry their face.
@@ -144,10 +154,10 @@ private:
 
     const gl::Program& volumeProgram(const Plan& plan);
 
-    // Extra key lists, uploaded once per kind and size: the closure of a 2D grid of `stride` texels per row
-    // (N static, N + 1 adaptive) or the seams of a cube.
+    // Extra key lists, uploaded once per kind, size and key stride (N static, N + 1 adaptive): the closure
+    // of a 2D grid or the seams of a cube's six grids of `size` texels per side.
     enum class ExtraKind { Closure, Seams };
-    const gl::Buffer& extraKeys(ExtraKind kind, int stride, std::int64_t& triangles);
+    const gl::Buffer& extraKeys(ExtraKind kind, int size, int stride, std::int64_t& triangles);
 
     // The static mesh of one light: the first `count` of its grid's triangles (one instance per row of
     // quads, indexed through the element buffer of rowIndices, so a texel's position is shared by the
@@ -208,11 +218,11 @@ private:
     gl::Framebuffer mFramebuffer;
     gl::VertexArray mVao;
     std::map<int, gl::Buffer> mRowIndices;  // per grid size N: one row of N - 1 quads (drawMesh)
-    std::map<std::pair<int, int>, Extra> mExtras;
+    std::map<std::array<int, 3>, Extra> mExtras;  // kind, size, stride
     polyvol::AdaptiveTessellation mTess;
     bool mAdaptiveUsed = false, mAdaptiveOverflow = false, mWireDrawn = false;
     int mWireMode = 0;  // this run's wireframe: the setting, or orbit for a caller showing polyvol.mesh
-    // markersFor: the light whose edge map and levels are shown (the last adaptive 2D light), the camera's
+    // markersFor: the light whose edge map and levels are shown (the last adaptive light), the camera's
     // zfar and cookie_mask of the last run (they place the volume's vertices).
     int mEdgeLight = -1;
     std::vector<int> mAdaptiveLights;  // lights drawn with adaptive tessellation in the last run

@@ -17,12 +17,12 @@ std::vector<ViewMarker> PolyvolTechnique::markersFor(glm::ivec2 pixel, const std
     const int n = mView.shadows().size();
     polyvol::VolumeGrid grid = describe(L, index, n, mMarkZfar, mMarkCookieMask);
     // An adaptive volume: its triangles as emitted, read back; only the last adaptive light's are
-    // still in the buffer, the others are marked with their static mesh (the adaptive one agrees with
-    // it up to `threshold`).
+    // still in the buffer, the others, and cube volumes (volume_crossings.h walks static cubes only), are
+    // marked with their static mesh (the adaptive one agrees with it up to `threshold`).
     const bool adaptive = std::find(mAdaptiveLights.begin(), mAdaptiveLights.end(), index) != mAdaptiveLights.end();
     const std::vector<std::uint32_t>* keys = nullptr;
-    if (adaptive && index == mEdgeLight) {
-        grid.keyStride = n + 1;
+    if (adaptive && flat && index == mEdgeLight) {
+        grid.keyStride = grid.mapSize + 1;
         keys = &adaptiveKeys();
     }
     std::vector<polyvol::VolumeCrossing> crossings;
@@ -112,7 +112,8 @@ void PolyvolTechnique::publishVolume(FrameOutput& out, const FrameInput& input, 
         out.intermediates.push_back(render::textureIntermediate(
             kEdgeMap, "Edge map",
             std::string(s.edgeMeasure == polyvol::EdgeMeasure::Laplacian ? "|Laplacian|" : "sum of |second differences| (x, y, diagonals)") +
-                " of the vertex distances / the map's depth range (last 2D light)",
+                " of the vertex depths (spot, cube faces: of their reciprocals, scaled to a depth) / the map's depth "
+                "range (the last adaptive light; a cube's six faces are its layers)",
             "", ViewKind::Scalar, 0.0f, float(std::max(1e-6, 10.0 * s.threshold)), mTess.edgeMap()));
         out.intermediates.push_back(render::textureIntermediate(
             kTessLevels, "Tessellation level", "leaf level k of each texel's quad (2^k texels wide), stored k/16; " +
