@@ -9,6 +9,9 @@
 #include <cstdlib>
 #include <string>
 #include <utility>
+#include <vector>
+
+#include <glm/glm.hpp>
 
 #include "polyvol_test_util.h"
 #include "scene/builtin_scenes.h"
@@ -72,6 +75,38 @@ TEST_F(PolyvolTest, CrackDetectorFindsNoHoleWithAdaptiveCubeFaces) {
                                          {"force_features", 1}, {"threshold", 1e-2}, {"crack_check", 1}},
                                         160, 120, 2, {"polyvol.crossings"});
     EXPECT_EQ(crackPixels(out), 0) << "tv-room";
+}
+
+// A spot and a point light in one scene: each kind keeps its own buffers; both volumes adaptive, the
+// image as static, watertight, and the spot's markers follow its adaptive mesh (its keys survive the
+// cube built after it).
+TEST_F(PolyvolTest, ASpotAndAPointLightAreBothTessellatedAdaptively) {
+    viz::scene::Scene scene = viz::scene::makeBuiltinScene("grate");
+    viz::scene::Light point = omniGrate().lights.front();
+    point.name = "point";
+    point.position += glm::dvec3(1.5, 0.0, 0.5);
+    point.intensity *= 0.5;
+    scene.lights.push_back(point);
+    const viz::Settings adaptiveSettings = {{"shadow_map", 128}, {"tessellation", 1}, {"force_features", 1}};
+    viz::Settings staticSettings = adaptiveSettings;
+    staticSettings["tessellation"] = 0;
+    const viz::FrameOutput fixed = render(scene, "polyvol", staticSettings, 160, 120);
+    const viz::FrameOutput adaptive = render(scene, "polyvol", adaptiveSettings, 160, 120);
+    ASSERT_TRUE(allFinite(adaptive.airlight));
+    const double e = relativeL2(adaptive.airlight, fixed.airlight);
+    std::printf("grate + point light 128^2: static %lld triangles, adaptive %lld; relative L2 %.2e\n",
+                (long long)trianglesDrawn(fixed), (long long)trianglesDrawn(adaptive), e);
+    EXPECT_LT(e, 1e-3);
+    EXPECT_LT(trianglesDrawn(adaptive), trianglesDrawn(fixed) / 2);
+    viz::Settings cracks = adaptiveSettings;
+    cracks["crack_check"] = 1;
+    EXPECT_EQ(crackPixels(render(scene, "polyvol", cracks, 160, 120, 2, {"polyvol.crossings"})), 0);
+
+    auto t = viz::makeTechnique("polyvol");
+    viz::testing::runTechnique(*t, scene, adaptiveSettings, 64, 48);
+    const std::vector<viz::ViewMarker> marks = t->markersFor({32, 30}, "polyvol.shadow_map");
+    ASSERT_FALSE(marks.empty());
+    EXPECT_EQ(marks.front().label.find("(static mesh)"), std::string::npos) << marks.front().label;
 }
 
 // The edge and level maps of a cube light have one layer per face.

@@ -265,6 +265,8 @@ FrameOutput PolyvolTechnique::run(const FrameInput& input) {
     mMarkCookieMask = float(s.cookieMask);
     mAdaptiveUsed = false;
     mAdaptiveLights.clear();
+    mShownTess = nullptr;
+    mFlatAdaptiveLight = -1;
     mMarkKeysRead = false;
 
     gl::StageClock clock;

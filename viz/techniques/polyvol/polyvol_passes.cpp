@@ -219,12 +219,16 @@ std::int64_t PolyvolTechnique::drawVolumes(const scene::Scene& scene, const Fram
         if (adaptive) {
             // Compute passes in between: the draw state is set again afterwards.
             grid.keyStride = grid.mapSize + 1;
-            mTess.build(grid, s.edgeMeasure, s.threshold, int(substepLimit(input, kVolumeIndex)), mDefines,
-                        mProgramKey);
+            // 2D grids and cubes each keep their own buffers, so a scene with both kinds of light does not
+            // reallocate them light after light.
+            polyvol::AdaptiveTessellation& tess = cube ? mTessCube : mTess;
+            tess.build(grid, s.edgeMeasure, s.threshold, int(substepLimit(input, kVolumeIndex)), mDefines, mProgramKey);
+            mShownTess = &tess;
+            if (!cube) mFlatAdaptiveLight = i;
             mAdaptiveUsed = true;
             mEdgeLight = i;
             mAdaptiveLights.push_back(i);
-            mAdaptiveOverflow = mAdaptiveOverflow || mTess.overflowed();
+            mAdaptiveOverflow = mAdaptiveOverflow || tess.overflowed();
             mView.lights().bind();
             mView.shadows().bind();
             mFramebuffer.bind();
@@ -232,16 +236,16 @@ std::int64_t PolyvolTechnique::drawVolumes(const scene::Scene& scene, const Fram
             program.use();
             setGridUniforms(program, grid);
             program.set("uGridRows", 0);
-            mTess.keys().bindBase(GL_SHADER_STORAGE_BUFFER, render::hd::kFirstFreeSsboBinding);
-            mTess.counters().bind(GL_DRAW_INDIRECT_BUFFER);
+            tess.keys().bindBase(GL_SHADER_STORAGE_BUFFER, render::hd::kFirstFreeSsboBinding);
+            tess.counters().bind(GL_DRAW_INDIRECT_BUFFER);
             glDrawArraysIndirect(GL_TRIANGLES, reinterpret_cast<const void*>(polyvol::AdaptiveTessellation::drawOffset()));
-            drawn += mTess.triangles();
+            drawn += tess.triangles();
             const gl::Buffer& closure = extraKeys(cube ? ExtraKind::Seams : ExtraKind::Closure, grid.mapSize,
                                                   grid.keyStride, extraTriangles);
             closure.bindBase(GL_SHADER_STORAGE_BUFFER, render::hd::kFirstFreeSsboBinding);
             glDrawArrays(GL_TRIANGLES, 0, GLsizei(3 * extraTriangles));
             drawn += extraTriangles;
-            if (wire) drawWire(input, L, grid, closure, 0, extraTriangles, extraTriangles, true);
+            if (wire) drawWire(input, L, grid, closure, 0, extraTriangles, extraTriangles, &tess);
             if (s.originAtSurface || radius > 0.0f) resolve(input, i, radius);
             continue;
         }
@@ -253,7 +257,7 @@ std::int64_t PolyvolTechnique::drawVolumes(const scene::Scene& scene, const Fram
         if (limit > 0) count = std::min(count, limit);
         drawMesh(program, grid, keys, gridTriangles, extraTriangles, count);
         drawn += count;
-        if (wire) drawWire(input, L, grid, keys, gridTriangles, extraTriangles, count, false);
+        if (wire) drawWire(input, L, grid, keys, gridTriangles, extraTriangles, count, nullptr);
         if (s.originAtSurface || radius > 0.0f) resolve(input, i, radius);
     }
     glDisable(GL_DEPTH_CLAMP);
@@ -305,7 +309,7 @@ void PolyvolTechnique::drawMesh(const gl::Program& program, const polyvol::Volum
 
 void PolyvolTechnique::drawWire(const FrameInput& input, const render::GpuLightCpu& L, const polyvol::VolumeGrid& grid,
                                 const gl::Buffer& keys, std::int64_t gridTriangles, std::int64_t extraTriangles,
-                                std::int64_t count, bool adaptive) {
+                                std::int64_t count, const polyvol::AdaptiveTessellation* adaptive) {
     const int wire = mWireMode;
     glm::mat4 viewProj = render::eyeRelativeViewProjection(input.scene->camera, input.width, input.height);
     if (wire == 2) {
@@ -326,8 +330,8 @@ void PolyvolTechnique::drawWire(const FrameInput& input, const render::GpuLightC
     glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
     if (adaptive) {
         mWireProgram.set("uGridRows", 0);
-        mTess.keys().bindBase(GL_SHADER_STORAGE_BUFFER, render::hd::kFirstFreeSsboBinding);
-        mTess.counters().bind(GL_DRAW_INDIRECT_BUFFER);
+        adaptive->keys().bindBase(GL_SHADER_STORAGE_BUFFER, render::hd::kFirstFreeSsboBinding);
+        adaptive->counters().bind(GL_DRAW_INDIRECT_BUFFER);
         glDrawArraysIndirect(GL_TRIANGLES, reinterpret_cast<const void*>(polyvol::AdaptiveTessellation::drawOffset()));
         keys.bindBase(GL_SHADER_STORAGE_BUFFER, render::hd::kFirstFreeSsboBinding);
         glDrawArrays(GL_TRIANGLES, 0, GLsizei(3 * extraTriangles));

@@ -180,7 +180,7 @@ private:
     bool setOrbitClipBox(const scene::Scene& scene);
     void drawWire(const FrameInput& input, const render::GpuLightCpu& L, const polyvol::VolumeGrid& grid,
                   const gl::Buffer& keys, std::int64_t gridTriangles, std::int64_t extraTriangles, std::int64_t count,
-                  bool adaptive);
+                  const polyvol::AdaptiveTessellation* adaptive);
 
     // The radius of the ball around a light whose part of each ray is integrated once per pixel by the
     // resolve instead of between rasterised crossings (README, "Rays next to the light"): at most half the
@@ -219,12 +219,14 @@ private:
     gl::VertexArray mVao;
     std::map<int, gl::Buffer> mRowIndices;  // per grid size N: one row of N - 1 quads (drawMesh)
     std::map<std::array<int, 3>, Extra> mExtras;  // kind, size, stride
-    polyvol::AdaptiveTessellation mTess;
+    polyvol::AdaptiveTessellation mTess, mTessCube;  // 2D grids; cube faces
+    const polyvol::AdaptiveTessellation* mShownTess = nullptr;  // the last adaptive light's (edge, level maps)
     bool mAdaptiveUsed = false, mAdaptiveOverflow = false, mWireDrawn = false;
     int mWireMode = 0;  // this run's wireframe: the setting, or orbit for a caller showing polyvol.mesh
     // markersFor: the light whose edge map and levels are shown (the last adaptive light), the camera's
     // zfar and cookie_mask of the last run (they place the volume's vertices).
     int mEdgeLight = -1;
+    int mFlatAdaptiveLight = -1;  // the last adaptive 2D light: its keys are still in mTess
     std::vector<int> mAdaptiveLights;  // lights drawn with adaptive tessellation in the last run
     mutable std::vector<std::uint32_t> mMarkKeys;
     mutable bool mMarkKeysRead = false;

@@ -21,7 +21,7 @@ std::vector<ViewMarker> PolyvolTechnique::markersFor(glm::ivec2 pixel, const std
     // marked with their static mesh (the adaptive one agrees with it up to `threshold`).
     const bool adaptive = std::find(mAdaptiveLights.begin(), mAdaptiveLights.end(), index) != mAdaptiveLights.end();
     const std::vector<std::uint32_t>* keys = nullptr;
-    if (adaptive && flat && index == mEdgeLight) {
+    if (adaptive && flat && index == mFlatAdaptiveLight) {
         grid.keyStride = grid.mapSize + 1;
         keys = &adaptiveKeys();
     }
@@ -108,16 +108,16 @@ void PolyvolTechnique::publishVolume(FrameOutput& out, const FrameInput& input, 
     const std::string count = std::to_string(triangles) + " triangles drawn" +
                               (mAdaptiveOverflow ? " (adaptive buffers overflowed: mesh cut short)" : "");
     mTriangles = triangles;
-    if (mAdaptiveUsed) {
+    if (mAdaptiveUsed && mShownTess) {
         out.intermediates.push_back(render::textureIntermediate(
             kEdgeMap, "Edge map",
             std::string(s.edgeMeasure == polyvol::EdgeMeasure::Laplacian ? "|Laplacian|" : "sum of |second differences| (x, y, diagonals)") +
                 " of the vertex depths (spot, cube faces: of their reciprocals, scaled to a depth) / the map's depth "
                 "range (the last adaptive light; a cube's six faces are its layers)",
-            "", ViewKind::Scalar, 0.0f, float(std::max(1e-6, 10.0 * s.threshold)), mTess.edgeMap()));
+            "", ViewKind::Scalar, 0.0f, float(std::max(1e-6, 10.0 * s.threshold)), mShownTess->edgeMap()));
         out.intermediates.push_back(render::textureIntermediate(
             kTessLevels, "Tessellation level", "leaf level k of each texel's quad (2^k texels wide), stored k/16; " +
-            count, "", ViewKind::Scalar, 0.0f, float(mTess.levels()) / 16.0f, mTess.levelMap()));
+            count, "", ViewKind::Scalar, 0.0f, float(mShownTess->levels()) / 16.0f, mShownTess->levelMap()));
     }
     Intermediate mesh;
     if (mWireMode == 3) {
