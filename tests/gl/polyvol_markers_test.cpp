@@ -64,6 +64,8 @@ protected:
                 const std::vector<ViewMarker> marks = polyvol->markersFor({x, y}, "polyvol.shadow_map");
                 const Counted c = countCrossings(marks, &drawn);
                 for (const ViewMarker& m : marks) {
+                    // One light, the last adaptive one if any: its emitted mesh, never the static stand-in.
+                    EXPECT_EQ(m.label.find("(static mesh)"), std::string::npos) << m.label;
                     if (allDrawn && !spotOrSun) {
                         EXPECT_GE(m.layer, 0);  // a cube face
                         EXPECT_LT(m.layer, 6);
@@ -121,6 +123,19 @@ TEST_F(PolyvolMarkersTest, CubeCrossingsAddUpToTheGpusCrossingCounts) {
     std::printf("omni grate 64^2 cube: %d pixels, %d crossings marked, %d grazing pairs\n", pixels, crossings, grazing);
     EXPECT_GT(crossings, 2 * pixels);
     EXPECT_LE(grazing, 0);
+}
+
+// An adaptive cube: its six faces' emitted triangles (keys read back) and the seams between them.
+TEST_F(PolyvolMarkersTest, AdaptiveCubeCrossingsAddUpToTheGpusCrossingCounts) {
+    viz::scene::Scene scene = viz::scene::makeBuiltinScene("grate");
+    scene.lights[0].type = viz::scene::LightType::Point;
+    int pixels = 0, crossings = 0, grazing = 0;
+    expectCrossingsMatchTheGpu(scene, {{"shadow_map", 64}, {"tessellation", 1}, {"force_features", 1}}, 64, 48, 3, pixels,
+                               crossings, grazing);
+    std::printf("omni grate 64^2 adaptive cube: %d pixels, %d crossings marked, %d grazing pairs\n", pixels, crossings,
+                grazing);
+    EXPECT_GT(crossings, 2 * pixels);
+    EXPECT_LE(grazing, 1);
 }
 
 TEST_F(PolyvolMarkersTest, DirectionalCrossingsAddUpToTheGpusCrossingCounts) {

@@ -266,8 +266,8 @@ FrameOutput PolyvolTechnique::run(const FrameInput& input) {
     mAdaptiveUsed = false;
     mAdaptiveLights.clear();
     mShownTess = nullptr;
-    mFlatAdaptiveLight = -1;
-    mMarkKeysRead = false;
+    mFlatAdaptiveLight = mCubeAdaptiveLight = -1;
+    mMarkKeysRead = {false, false};
 
     gl::StageClock clock;
     StageRunner stages(mStages, input, out, mReuse, clock);

@@ -224,7 +224,7 @@ std::int64_t PolyvolTechnique::drawVolumes(const scene::Scene& scene, const Fram
             polyvol::AdaptiveTessellation& tess = cube ? mTessCube : mTess;
             tess.build(grid, s.edgeMeasure, s.threshold, int(substepLimit(input, kVolumeIndex)), mDefines, mProgramKey);
             mShownTess = &tess;
-            if (!cube) mFlatAdaptiveLight = i;
+            (cube ? mCubeAdaptiveLight : mFlatAdaptiveLight) = i;
             mAdaptiveUsed = true;
             mEdgeLight = i;
             mAdaptiveLights.push_back(i);

@@ -142,8 +142,9 @@ public:
     std::vector<ViewMarker> markersFor(glm::ivec2 pixel, const std::string& id) const override;
 
 private:
-    // The keys of the last adaptive light's triangles (3 per triangle), read back once per run.
-    const std::vector<std::uint32_t>& adaptiveKeys() const;
+    // The keys of the last adaptive 2D light's (cube: cube light's) triangles (3 per triangle), read back
+    // once per run.
+    const std::vector<std::uint32_t>& adaptiveKeys(bool cube) const;
 
     static std::int64_t gridTriangleCountFor(int n, int faces) { return polyvol::gridTriangleCount(n, faces); }
 
@@ -227,9 +228,10 @@ private:
     // zfar and cookie_mask of the last run (they place the volume's vertices).
     int mEdgeLight = -1;
     int mFlatAdaptiveLight = -1;  // the last adaptive 2D light: its keys are still in mTess
+    int mCubeAdaptiveLight = -1;  // the last adaptive cube light: its keys are still in mTessCube
     std::vector<int> mAdaptiveLights;  // lights drawn with adaptive tessellation in the last run
-    mutable std::vector<std::uint32_t> mMarkKeys;
-    mutable bool mMarkKeysRead = false;
+    mutable std::array<std::vector<std::uint32_t>, 2> mMarkKeys;  // 2D, cube
+    mutable std::array<bool, 2> mMarkKeysRead{};
     double mMarkZfar = 0.0;
     float mMarkCookieMask = 0.0f;
     std::int64_t mTriangles = 0;

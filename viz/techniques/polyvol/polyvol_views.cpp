@@ -16,14 +16,14 @@ std::vector<ViewMarker> PolyvolTechnique::markersFor(glm::ivec2 pixel, const std
     if (!mView.pixelRay(pixel, w, d)) return {};
     const int n = mView.shadows().size();
     polyvol::VolumeGrid grid = describe(L, index, n, mMarkZfar, mMarkCookieMask);
-    // An adaptive volume: its triangles as emitted, read back; only the last adaptive light's are
-    // still in the buffer, the others, and cube volumes (volume_crossings.h walks static cubes only), are
-    // marked with their static mesh (the adaptive one agrees with it up to `threshold`).
+    // An adaptive volume: its triangles as emitted, read back; only the last adaptive 2D light's and
+    // the last adaptive cube's are still in their buffers, the others are marked with their static mesh
+    // (the adaptive one agrees with it up to `threshold`).
     const bool adaptive = std::find(mAdaptiveLights.begin(), mAdaptiveLights.end(), index) != mAdaptiveLights.end();
     const std::vector<std::uint32_t>* keys = nullptr;
-    if (adaptive && flat && index == mFlatAdaptiveLight) {
+    if (adaptive && index == (flat ? mFlatAdaptiveLight : mCubeAdaptiveLight)) {
         grid.keyStride = grid.mapSize + 1;
-        keys = &adaptiveKeys();
+        keys = &adaptiveKeys(!flat);
     }
     std::vector<polyvol::VolumeCrossing> crossings;
     if (flat) {
@@ -31,7 +31,7 @@ std::vector<ViewMarker> PolyvolTechnique::markersFor(glm::ivec2 pixel, const std
     } else {
         std::array<const std::vector<float>*, 6> faces{};
         for (int f = 0; f < 6; ++f) faces[std::size_t(f)] = &mView.shadows().texels(L, f);
-        crossings = polyvol::cubeVolumeCrossings(grid, L, faces, w);
+        crossings = polyvol::cubeVolumeCrossings(grid, L, faces, w, keys);
     }
     int sum = 0;
     for (const polyvol::VolumeCrossing& c : crossings) sum += c.sign;
@@ -62,14 +62,16 @@ std::vector<ViewMarker> PolyvolTechnique::markersFor(glm::ivec2 pixel, const std
     return marks;
 }
 
-const std::vector<std::uint32_t>& PolyvolTechnique::adaptiveKeys() const {
-    if (!mMarkKeysRead) {
-        const std::size_t count = std::size_t(std::max<std::int64_t>(0, mTess.triangles())) * 3;
-        mMarkKeys.assign(std::min(count, mTess.keys().bytes() / sizeof(std::uint32_t)), 0u);
-        if (!mMarkKeys.empty()) mTess.keys().download(0, mMarkKeys.size() * sizeof(std::uint32_t), mMarkKeys.data());
-        mMarkKeysRead = true;
+const std::vector<std::uint32_t>& PolyvolTechnique::adaptiveKeys(bool cube) const {
+    const polyvol::AdaptiveTessellation& tess = cube ? mTessCube : mTess;
+    std::vector<std::uint32_t>& keys = mMarkKeys[cube ? 1 : 0];
+    if (!mMarkKeysRead[cube ? 1 : 0]) {
+        const std::size_t count = std::size_t(std::max<std::int64_t>(0, tess.triangles())) * 3;
+        keys.assign(std::min(count, tess.keys().bytes() / sizeof(std::uint32_t)), 0u);
+        if (!keys.empty()) tess.keys().download(0, keys.size() * sizeof(std::uint32_t), keys.data());
+        mMarkKeysRead[cube ? 1 : 0] = true;
     }
-    return mMarkKeys;
+    return keys;
 }
 
 float PolyvolTechnique::lutError(const FrameInput& input) {

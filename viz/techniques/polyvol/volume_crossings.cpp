@@ -165,6 +165,36 @@ void testTriangle(VolumeVertices& vertices, const glm::dvec3& w, std::uint32_t a
     out.push_back({t, glm::dot(normal, v0) < 0.0 ? +1 : -1});
 }
 
+// The adaptive triangles of face `face` (keys with `stride` = N + 1 texels per row, face f's from
+// f stride^2) that can meet the ray: those whose cell range (in texels, the virtual column and row N
+// clamped onto N - 1) meets a marked cell, found with a summed-area table of `cells`.
+void testAdaptiveFace(VolumeVertices& vertices, const glm::dvec3& w, const std::vector<char>& cells, int n, int face,
+                      std::uint32_t stride, const std::vector<std::uint32_t>& keys, std::vector<VolumeCrossing>& out) {
+    const std::size_t m = std::size_t(n);
+    std::vector<std::int32_t> sat((m + 1) * (m + 1), 0);
+    for (std::size_t j = 0; j < m; ++j)
+        for (std::size_t i = 0; i < m; ++i)
+            sat[(j + 1) * (m + 1) + i + 1] = std::int32_t(cells[j * m + i]) + sat[j * (m + 1) + i + 1] +
+                                             sat[(j + 1) * (m + 1) + i] - sat[j * (m + 1) + i];
+    const auto anyMarked = [&](int i0, int j0, int i1, int j1) {  // inclusive
+        const auto at = [&](int i, int j) { return sat[std::size_t(j) * (m + 1) + std::size_t(i)]; };
+        return at(i1 + 1, j1 + 1) - at(i0, j1 + 1) - at(i1 + 1, j0) + at(i0, j0) > 0;
+    };
+    const std::uint32_t n2 = stride * stride;
+    for (std::size_t k = 0; k + 2 < keys.size(); k += 3) {
+        if (int(keys[k] / n2) != face) continue;  // a triangle's three keys are on one face
+        int i0 = n, j0 = n, i1 = 0, j1 = 0;
+        for (std::size_t c = 0; c < 3; ++c) {
+            const std::uint32_t key = keys[k + c] % n2;
+            const int i = std::min(int(key % stride), n - 1), j = std::min(int(key / stride), n - 1);
+            i0 = std::min(i0, i), j0 = std::min(j0, j), i1 = std::max(i1, i), j1 = std::max(j1, j);
+        }
+        i1 = std::max(i0, i1 - 1), j1 = std::max(j0, j1 - 1);
+        i0 = std::min(i0, n - 2), j0 = std::min(j0, n - 2), i1 = std::min(i1, n - 2), j1 = std::min(j1, n - 2);
+        if (anyMarked(i0, j0, i1, j1)) testTriangle(vertices, w, keys[k], keys[k + 1], keys[k + 2], out);
+    }
+}
+
 void sortByT(std::vector<VolumeCrossing>& out) {
     std::sort(out.begin(), out.end(), [](const VolumeCrossing& a, const VolumeCrossing& b) { return a.t < b.t; });
 }
@@ -206,31 +236,8 @@ std::vector<VolumeCrossing> volumeCrossings(const VolumeGrid& grid, const render
             }
         }
     } else {
-        // Adaptive triangles span quads of 2^k texels: tested when their cell range (in texels, the
-        // virtual column and row N clamped onto N - 1) meets a marked cell, by a summed-area table.
-        const std::size_t m = std::size_t(n);
-        std::vector<std::int32_t> sat((m + 1) * (m + 1), 0);
-        for (std::size_t j = 0; j < m; ++j)
-            for (std::size_t i = 0; i < m; ++i)
-                sat[(j + 1) * (m + 1) + i + 1] = std::int32_t(cells[j * m + i]) + sat[j * (m + 1) + i + 1] +
-                                                 sat[(j + 1) * (m + 1) + i] - sat[j * (m + 1) + i];
-        const auto anyMarked = [&](int i0, int j0, int i1, int j1) {  // inclusive
-            const auto at = [&](int i, int j) { return sat[std::size_t(j) * (m + 1) + std::size_t(i)]; };
-            return at(i1 + 1, j1 + 1) - at(i0, j1 + 1) - at(i1 + 1, j0) + at(i0, j0) > 0;
-        };
-        const std::uint32_t stride = std::uint32_t(grid.keyStride);
-        const std::vector<std::uint32_t>& keys = *adaptiveKeys;
-        for (std::size_t k = 0; k + 2 < keys.size(); k += 3) {
-            int i0 = n, j0 = n, i1 = 0, j1 = 0;
-            for (std::size_t c = 0; c < 3; ++c) {
-                const std::uint32_t key = keys[k + c] % (stride * stride);
-                const int i = std::min(int(key % stride), n - 1), j = std::min(int(key / stride), n - 1);
-                i0 = std::min(i0, i), j0 = std::min(j0, j), i1 = std::max(i1, i), j1 = std::max(j1, j);
-            }
-            i1 = std::max(i0, i1 - 1), j1 = std::max(j0, j1 - 1);
-            i0 = std::min(i0, n - 2), j0 = std::min(j0, n - 2), i1 = std::min(i1, n - 2), j1 = std::min(j1, n - 2);
-            if (anyMarked(i0, j0, i1, j1)) test(keys[k], keys[k + 1], keys[k + 2]);
-        }
+        // Adaptive triangles span quads of 2^k texels.
+        testAdaptiveFace(vertices, w, cells, n, 0, std::uint32_t(grid.keyStride), *adaptiveKeys, out);
     }
     const std::vector<std::uint32_t> closure = gridClosure(grid.keyStride);
     for (std::size_t k = 0; k + 2 < closure.size(); k += 3) test(closure[k], closure[k + 1], closure[k + 2]);
@@ -240,8 +247,9 @@ std::vector<VolumeCrossing> volumeCrossings(const VolumeGrid& grid, const render
 
 std::vector<VolumeCrossing> cubeVolumeCrossings(const VolumeGrid& grid, const render::GpuLightCpu& light,
                                                 const std::array<const std::vector<float>*, 6>& faces,
-                                                const glm::dvec3& w) {
-    VIZ_CHECK(grid.mode == kModeCube && grid.keyStride == grid.mapSize, "cubeVolumeCrossings: a static cube only");
+                                                const glm::dvec3& w, const std::vector<std::uint32_t>* adaptiveKeys) {
+    VIZ_CHECK(grid.mode == kModeCube, "cubeVolumeCrossings: cube maps only");
+    VIZ_CHECK(grid.keyStride == grid.mapSize + (adaptiveKeys ? 1 : 0), "cubeVolumeCrossings: key stride mismatch");
     const int n = grid.mapSize;
     for (const std::vector<float>* f : faces)
         VIZ_CHECK(f && f->size() == std::size_t(n) * std::size_t(n), "cubeVolumeCrossings: face size mismatch");
@@ -253,6 +261,10 @@ std::vector<VolumeCrossing> cubeVolumeCrossings(const VolumeGrid& grid, const re
     for (int face = 0; face < 6; ++face) {
         std::fill(cells.begin(), cells.end(), char(0));
         cellsAlongRay(render::shadowMapMatrix(light, face), w, n, 4.0 * reach, cells);
+        if (adaptiveKeys) {
+            testAdaptiveFace(vertices, w, cells, n, face, std::uint32_t(grid.keyStride), *adaptiveKeys, out);
+            continue;
+        }
         for (int j = 0; j <= n - 2; ++j) {
             for (int i = 0; i <= n - 2; ++i) {
                 if (!cells[std::size_t(j) * std::size_t(n) + std::size_t(i)]) continue;
@@ -263,7 +275,7 @@ std::vector<VolumeCrossing> cubeVolumeCrossings(const VolumeGrid& grid, const re
             }
         }
     }
-    const std::vector<std::uint32_t> seams = cubeSeams(n);
+    const std::vector<std::uint32_t> seams = cubeSeams(n, grid.keyStride);
     for (std::size_t k = 0; k + 2 < seams.size(); k += 3) testTriangle(vertices, w, seams[k], seams[k + 1], seams[k + 2], out);
     sortByT(out);
     return out;

@@ -33,10 +33,12 @@ std::vector<VolumeCrossing> volumeCrossings(const VolumeGrid& grid, const render
                                             const std::vector<float>& texels, const glm::dvec3& w,
                                             const std::vector<std::uint32_t>* adaptiveKeys = nullptr);
 
-// The same for a cube (point light or VPL, mode kModeCube, static: six grids and the seams between them):
-// `faces` are the six faces' stored values (+X -X +Y -Y +Z -Z, mapSize^2 each, row 0 = GL row 0).
+// The same for a cube (point light or VPL, mode kModeCube: six grids, static or their adaptive triangles'
+// keys as for a 2D map, and the seams between them): `faces` are the six faces' stored values (+X -X +Y -Y
+// +Z -Z, mapSize^2 each, row 0 = GL row 0).
 std::vector<VolumeCrossing> cubeVolumeCrossings(const VolumeGrid& grid, const render::GpuLightCpu& light,
                                                 const std::array<const std::vector<float>*, 6>& faces,
-                                                const glm::dvec3& w);
+                                                const glm::dvec3& w,
+                                                const std::vector<std::uint32_t>* adaptiveKeys = nullptr);
 
 }  // namespace viz::polyvol
