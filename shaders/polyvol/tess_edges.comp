@@ -39,14 +39,14 @@ void main() {
     float z[9];
     int atLight = 0, empty = 0, count = 0;
     for (int k = 0; k < 9; ++k) {
+        z[k] = 1.0;  // unread (the Laplacian's corners): never used
+        if ((used & (1 << k)) == 0) continue;
         ivec2 o = ivec2(k % 3, k / 3);
         ivec2 q = ivec2(o.x == 0 ? lo.x : o.x == 1 ? t.x : hi.x, o.y == 0 ? lo.y : o.y == 1 ? t.y : hi.y);
         z[k] = gridAxisDepth(L, uFace, q.x, q.y);
-        if ((used & (1 << k)) != 0) {
-            ++count;
-            if (storedValue(uFace, q.x, q.y) >= 1.0e29) ++empty;
-            else if (!(z[k] > 0.0)) ++atLight;
-        }
+        ++count;
+        if (storedValue(uFace, q.x, q.y) >= 1.0e29) ++empty;
+        else if (!(z[k] > 0.0)) ++atLight;
     }
     float scale = 1.0;
     if (uMode != kModeDirectional) {

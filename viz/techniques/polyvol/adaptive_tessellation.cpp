@@ -75,9 +75,7 @@ void AdaptiveTessellation::build(const VolumeGrid& grid, EdgeMeasure measure, do
         buildFace(grid, face, measure, threshold, stopLevel, listCapacity, keyCapacity);
 
     const GLbitfield barrier = GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT;
-    mArgsProgram.use();
-    mArgsProgram.set("uListCapacity", listCapacity);
-    mArgsProgram.set("uKeyCapacity", keyCapacity);
+    mArgsProgram.use();  // its capacities were set by buildFace
     mArgsProgram.set("uDraw", 1);
     glDispatchCompute(1, 1, 1);
     glMemoryBarrier(barrier | GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);

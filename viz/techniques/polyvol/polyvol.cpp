@@ -155,6 +155,7 @@ Plan PolyvolTechnique::plan(const scene::Scene& scene, const Settings& settings)
     const bool maps2D = render::hasLightOfType(scene, scene::LightType::Spot) ||
                         render::hasLightOfType(scene, scene::LightType::Directional);
     const FeaturePlan cubes = adaptiveCubesFeature(s, hasPoint, hasArea);
+    const bool adaptive2D = maps2D && s.adaptiveKept();
     const bool constant = s.crackCheck;
     if (scene.medium.sigma_s == 0.0 && !constant) {
         p.stages[kVolumeIndex].runs = false;
@@ -175,7 +176,7 @@ Plan PolyvolTechnique::plan(const scene::Scene& scene, const Settings& settings)
                 triangles += gridTriangleCountFor(n, 1) + 3 * 4 * std::int64_t(n - 1);
             }
         }
-        const bool adaptive = (maps2D && s.adaptiveKept()) || cubes.enabled;
+        const bool adaptive = adaptive2D || cubes.enabled;
         const std::string texels = std::to_string(n) + "^2 texels per map" +
                                    (hasArea && vpl != n ? ", " + std::to_string(vpl) + "^2 per VPL cube face" : "");
         p.stages[kVolumeIndex].why =
@@ -223,7 +224,6 @@ Plan PolyvolTechnique::plan(const scene::Scene& scene, const Settings& settings)
     const bool forced = s.forceFeatures;
     const int mapSize = s.shadowMap;
     const bool pays = mapSize >= kAdaptivePaysFrom;
-    const bool adaptive = maps2D && s.adaptiveKept();
     std::string why;
     if (!adaptiveAsked)
         why = "tessellation=static: one vertex per texel" +
@@ -244,7 +244,7 @@ Plan PolyvolTechnique::plan(const scene::Scene& scene, const Settings& settings)
         why = "tessellation=adaptive: edge map, flag hierarchy, refinement from 16^2 coarse quads, 16 patterns, "
               "indirect draw (2D maps; cube grids: ADAPTIVE_CUBES)" +
               std::string(pays ? "; measured to pay off at this size" : "; forced on below its break-even size");
-    p.features.push_back({"ADAPTIVE", adaptive, why});
+    p.features.push_back({"ADAPTIVE", adaptive2D, why});
     p.features.push_back(cubes);
     render::planCulledLights(scene, p);
     forcePlan(p, s.forceFeatures, {"SPOT", "COOKIE", "SHADOW_MAPS_CUBE", "SHADOW_MAPS_2D"});
@@ -263,7 +263,6 @@ FrameOutput PolyvolTechnique::run(const FrameInput& input) {
 
     mMarkZfar = scene.camera.zfar;
     mMarkCookieMask = float(s.cookieMask);
-    mAdaptiveUsed = false;
     mAdaptiveLights.clear();
     mShownTess = nullptr;
     mFlatAdaptiveLight = mCubeAdaptiveLight = -1;

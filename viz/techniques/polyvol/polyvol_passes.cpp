@@ -201,7 +201,6 @@ std::int64_t PolyvolTechnique::drawVolumes(const scene::Scene& scene, const Fram
         mWire.clear(glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
     }
     std::int64_t drawn = 0;
-    mAdaptiveUsed = false;
     mAdaptiveOverflow = false;
     const auto& lights = mView.lights().lights();
     for (int i = 0; i < int(lights.size()); ++i) {
@@ -225,8 +224,6 @@ std::int64_t PolyvolTechnique::drawVolumes(const scene::Scene& scene, const Fram
             tess.build(grid, s.edgeMeasure, s.threshold, int(substepLimit(input, kVolumeIndex)), mDefines, mProgramKey);
             mShownTess = &tess;
             (cube ? mCubeAdaptiveLight : mFlatAdaptiveLight) = i;
-            mAdaptiveUsed = true;
-            mEdgeLight = i;
             mAdaptiveLights.push_back(i);
             mAdaptiveOverflow = mAdaptiveOverflow || tess.overflowed();
             mView.lights().bind();

@@ -221,12 +221,11 @@ private:
     std::map<int, gl::Buffer> mRowIndices;  // per grid size N: one row of N - 1 quads (drawMesh)
     std::map<std::array<int, 3>, Extra> mExtras;  // kind, size, stride
     polyvol::AdaptiveTessellation mTess, mTessCube;  // 2D grids; cube faces
-    const polyvol::AdaptiveTessellation* mShownTess = nullptr;  // the last adaptive light's (edge, level maps)
-    bool mAdaptiveUsed = false, mAdaptiveOverflow = false, mWireDrawn = false;
+    const polyvol::AdaptiveTessellation* mShownTess = nullptr;  // the last adaptive light's; null: none
+    bool mAdaptiveOverflow = false, mWireDrawn = false;
     int mWireMode = 0;  // this run's wireframe: the setting, or orbit for a caller showing polyvol.mesh
-    // markersFor: the light whose edge map and levels are shown (the last adaptive light), the camera's
-    // zfar and cookie_mask of the last run (they place the volume's vertices).
-    int mEdgeLight = -1;
+    // markersFor: the camera's zfar and cookie_mask of the last run (they place the volume's vertices);
+    // the edge and level maps shown are those of mAdaptiveLights.back() (mShownTess).
     int mFlatAdaptiveLight = -1;  // the last adaptive 2D light: its keys are still in mTess
     int mCubeAdaptiveLight = -1;  // the last adaptive cube light: its keys are still in mTessCube
     std::vector<int> mAdaptiveLights;  // lights drawn with adaptive tessellation in the last run

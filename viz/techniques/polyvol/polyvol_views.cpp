@@ -6,7 +6,8 @@ namespace viz::polyvol_detail {
 
 std::vector<ViewMarker> PolyvolTechnique::markersFor(glm::ivec2 pixel, const std::string& id) const {
     int index = render::shadowMapIndexOf(id, "polyvol");
-    if (index < 0 && (id == kEdgeMap || id == kTessLevels) && mAdaptiveUsed) index = mEdgeLight;
+    // The edge and level maps are the last adaptive light's.
+    if (index < 0 && (id == kEdgeMap || id == kTessLevels) && !mAdaptiveLights.empty()) index = mAdaptiveLights.back();
     if (index < 0 || index >= mView.lights().count()) return {};
     const render::GpuLightCpu& L = mView.lights().lights()[std::size_t(index)];
     const bool flat = L.info.x == render::hd::kLightSpot || L.info.x == render::hd::kLightDirectional;
@@ -110,7 +111,7 @@ void PolyvolTechnique::publishVolume(FrameOutput& out, const FrameInput& input, 
     const std::string count = std::to_string(triangles) + " triangles drawn" +
                               (mAdaptiveOverflow ? " (adaptive buffers overflowed: mesh cut short)" : "");
     mTriangles = triangles;
-    if (mAdaptiveUsed && mShownTess) {
+    if (mShownTess) {
         out.intermediates.push_back(render::textureIntermediate(
             kEdgeMap, "Edge map",
             std::string(s.edgeMeasure == polyvol::EdgeMeasure::Laplacian ? "|Laplacian|" : "sum of |second differences| (x, y, diagonals)") +
