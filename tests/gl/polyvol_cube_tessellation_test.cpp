@@ -78,8 +78,7 @@ TEST_F(PolyvolTest, CrackDetectorFindsNoHoleWithAdaptiveCubeFaces) {
 }
 
 // A spot and a point light in one scene: each kind keeps its own buffers; both volumes adaptive, the
-// image as static, watertight, and the spot's markers follow its adaptive mesh (its keys survive the
-// cube built after it).
+// image as static, and watertight. (Their marks: polyvol_markers_test.cpp.)
 TEST_F(PolyvolTest, ASpotAndAPointLightAreBothTessellatedAdaptively) {
     viz::scene::Scene scene = viz::scene::makeBuiltinScene("grate");
     viz::scene::Light point = omniGrate().lights.front();
@@ -101,12 +100,6 @@ TEST_F(PolyvolTest, ASpotAndAPointLightAreBothTessellatedAdaptively) {
     viz::Settings cracks = adaptiveSettings;
     cracks["crack_check"] = 1;
     EXPECT_EQ(crackPixels(render(scene, "polyvol", cracks, 160, 120, 2, {"polyvol.crossings"})), 0);
-
-    auto t = viz::makeTechnique("polyvol");
-    viz::testing::runTechnique(*t, scene, adaptiveSettings, 64, 48);
-    const std::vector<viz::ViewMarker> marks = t->markersFor({32, 30}, "polyvol.shadow_map");
-    ASSERT_FALSE(marks.empty());
-    EXPECT_EQ(marks.front().label.find("(static mesh)"), std::string::npos) << marks.front().label;
 }
 
 // The edge and level maps of a cube light have one layer per face.

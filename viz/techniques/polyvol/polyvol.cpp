@@ -267,6 +267,7 @@ FrameOutput PolyvolTechnique::run(const FrameInput& input) {
     mShownTess = nullptr;
     mFlatAdaptiveLight = mCubeAdaptiveLight = -1;
     mMarkKeysRead = {false, false};
+    mRebuiltKeys.clear();
 
     gl::StageClock clock;
     StageRunner stages(mStages, input, out, mReuse, clock);

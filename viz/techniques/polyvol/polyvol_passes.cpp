@@ -221,7 +221,10 @@ std::int64_t PolyvolTechnique::drawVolumes(const scene::Scene& scene, const Fram
             // 2D grids and cubes each keep their own buffers, so a scene with both kinds of light does not
             // reallocate them light after light.
             polyvol::AdaptiveTessellation& tess = cube ? mTessCube : mTess;
-            tess.build(grid, s.edgeMeasure, s.threshold, int(substepLimit(input, kVolumeIndex)), mDefines, mProgramKey);
+            mMarkMeasure = s.edgeMeasure;
+            mMarkThreshold = s.threshold;
+            mMarkStopLevel = int(substepLimit(input, kVolumeIndex));
+            tess.build(grid, mMarkMeasure, mMarkThreshold, mMarkStopLevel, mDefines, mProgramKey);
             mShownTess = &tess;
             (cube ? mCubeAdaptiveLight : mFlatAdaptiveLight) = i;
             mAdaptiveLights.push_back(i);

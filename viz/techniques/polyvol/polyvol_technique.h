@@ -9,6 +9,7 @@
 #include <bit>
 #include <chrono>
 #include <cstdio>
+#include <map>
 
 #include "gl/buffer.h"
 #include "gl/framebuffer.h"
@@ -138,13 +139,17 @@ public:
     // adaptive light's, marked when it is a 2D light): the pixel's eye ray projected into the map (cubes: per face) and every crossing
     // of the ray with that light's volume mesh (volume_crossings.h), signed as the volume pass adds it
     // (+1 leaving the lit volume, -1 entering), also those beyond d, so that they add up to the pixel's
-    // polyvol.crossings (r: count, g: signed sum) in a one-light scene. Cube marks carry their face.
+    // polyvol.crossings (r: count, g: signed sum), summed over the lights. Cube marks carry their face.
     std::vector<ViewMarker> markersFor(glm::ivec2 pixel, const std::string& id) const override;
 
 private:
     // The keys of the last adaptive 2D light's (cube: cube light's) triangles (3 per triangle), read back
     // once per run.
     const std::vector<std::uint32_t>& adaptiveKeys(bool cube) const;
+    // The keys a tessellation emitted in its last build (3 per triangle), read back.
+    static std::vector<std::uint32_t> downloadKeys(const polyvol::AdaptiveTessellation& tess);
+    // An earlier adaptive light's keys (its build overwritten by a later light's), built again.
+    const std::vector<std::uint32_t>& rebuiltKeys(int index, const polyvol::VolumeGrid& grid) const;
 
     static std::int64_t gridTriangleCountFor(int n, int faces) { return polyvol::gridTriangleCount(n, faces); }
 
@@ -230,6 +235,13 @@ private:
     int mCubeAdaptiveLight = -1;  // the last adaptive cube light: its keys are still in mTessCube
     std::vector<int> mAdaptiveLights;  // lights drawn with adaptive tessellation in the last run
     mutable std::array<std::vector<std::uint32_t>, 2> mMarkKeys;  // 2D, cube
+    // The other adaptive lights' keys, built again when they are marked (once per light and run) in a
+    // tessellation of their own: the run itself pays nothing for them. The run's settings for the build:
+    mutable polyvol::AdaptiveTessellation mMarkTess;
+    mutable std::map<int, std::vector<std::uint32_t>> mRebuiltKeys;
+    polyvol::EdgeMeasure mMarkMeasure = polyvol::EdgeMeasure::Laplacian;
+    double mMarkThreshold = 0.0;
+    int mMarkStopLevel = -1;
     mutable std::array<bool, 2> mMarkKeysRead{};
     double mMarkZfar = 0.0;
     float mMarkCookieMask = 0.0f;

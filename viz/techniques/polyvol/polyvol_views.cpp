@@ -17,14 +17,13 @@ std::vector<ViewMarker> PolyvolTechnique::markersFor(glm::ivec2 pixel, const std
     if (!mView.pixelRay(pixel, w, d)) return {};
     const int n = mView.shadows().size();
     polyvol::VolumeGrid grid = describe(L, index, n, mMarkZfar, mMarkCookieMask);
-    // An adaptive volume: its triangles as emitted, read back; only the last adaptive 2D light's and
-    // the last adaptive cube's are still in their buffers, the others are marked with their static mesh
-    // (the adaptive one agrees with it up to `threshold`).
+    // An adaptive volume: its triangles as emitted, read back. The last adaptive 2D light's and the last
+    // adaptive cube's are still in their buffers; the others are built again, as the run built them.
     const bool adaptive = std::find(mAdaptiveLights.begin(), mAdaptiveLights.end(), index) != mAdaptiveLights.end();
     const std::vector<std::uint32_t>* keys = nullptr;
-    if (adaptive && index == (flat ? mFlatAdaptiveLight : mCubeAdaptiveLight)) {
+    if (adaptive) {
         grid.keyStride = grid.mapSize + 1;
-        keys = &adaptiveKeys(!flat);
+        keys = index == (flat ? mFlatAdaptiveLight : mCubeAdaptiveLight) ? &adaptiveKeys(!flat) : &rebuiltKeys(index, grid);
     }
     std::vector<polyvol::VolumeCrossing> crossings;
     if (flat) {
@@ -46,8 +45,8 @@ std::vector<ViewMarker> PolyvolTechnique::markersFor(glm::ivec2 pixel, const std
         return 2 * axis + (v[axis] < 0.0 ? 1 : 0);
     };
     for (const render::MapStretch& s : render::walkShadowMap(mView.shadows(), L, w, d).stretches) {
-        std::snprintf(text, sizeof text, "eye ray t=%.2f..%.2f: %d crossings, signed %+d%s", s.t0, s.t1,
-                      int(crossings.size()), sum, adaptive && !keys ? " (static mesh)" : "");
+        std::snprintf(text, sizeof text, "eye ray t=%.2f..%.2f: %d crossings, signed %+d", s.t0, s.t1,
+                      int(crossings.size()), sum);
         marks.push_back({render::shadowMapUv(L, s.face, s.t0 * w), render::shadowMapUv(L, s.face, s.t1 * w), text,
                          flat ? -1 : s.face});
     }
@@ -63,16 +62,31 @@ std::vector<ViewMarker> PolyvolTechnique::markersFor(glm::ivec2 pixel, const std
     return marks;
 }
 
+std::vector<std::uint32_t> PolyvolTechnique::downloadKeys(const polyvol::AdaptiveTessellation& tess) {
+    const std::size_t count = std::size_t(std::max<std::int64_t>(0, tess.triangles())) * 3;
+    std::vector<std::uint32_t> keys(std::min(count, tess.keys().bytes() / sizeof(std::uint32_t)), 0u);
+    if (!keys.empty()) tess.keys().download(0, keys.size() * sizeof(std::uint32_t), keys.data());
+    return keys;
+}
+
 const std::vector<std::uint32_t>& PolyvolTechnique::adaptiveKeys(bool cube) const {
-    const polyvol::AdaptiveTessellation& tess = cube ? mTessCube : mTess;
     std::vector<std::uint32_t>& keys = mMarkKeys[cube ? 1 : 0];
     if (!mMarkKeysRead[cube ? 1 : 0]) {
-        const std::size_t count = std::size_t(std::max<std::int64_t>(0, tess.triangles())) * 3;
-        keys.assign(std::min(count, tess.keys().bytes() / sizeof(std::uint32_t)), 0u);
-        if (!keys.empty()) tess.keys().download(0, keys.size() * sizeof(std::uint32_t), keys.data());
+        keys = downloadKeys(cube ? mTessCube : mTess);
         mMarkKeysRead[cube ? 1 : 0] = true;
     }
     return keys;
+}
+
+const std::vector<std::uint32_t>& PolyvolTechnique::rebuiltKeys(int index, const polyvol::VolumeGrid& grid) const {
+    const auto found = mRebuiltKeys.find(index);
+    if (found != mRebuiltKeys.end()) return found->second;
+    // The same build as the run's (its grid, settings, shadow maps and light buffer): the same triangles,
+    // whatever order the atomics appended them in.
+    mView.lights().bind();
+    mView.shadows().bind();
+    mMarkTess.build(grid, mMarkMeasure, mMarkThreshold, mMarkStopLevel, mDefines, mProgramKey);
+    return mRebuiltKeys[index] = downloadKeys(mMarkTess);
 }
 
 float PolyvolTechnique::lutError(const FrameInput& input) {
