@@ -1,6 +1,7 @@
 #include "view_markers.h"
 
 #include <algorithm>
+#include <set>
 #include <string>
 
 namespace airlight {
@@ -18,6 +19,22 @@ bool clearOf(const Rect& r, const std::vector<Rect>& placed) {
 }
 
 }  // namespace
+
+std::string otherLayersNote(const std::vector<viz::ViewMarker>& marks, int layer, int layers) {
+    std::set<int> others;
+    for (const viz::ViewMarker& m : marks)
+        if (m.layer >= 0 && m.layer != layer) others.insert(m.layer);
+    if (others.empty()) return {};
+    std::string list;
+    std::size_t i = 0;
+    for (const int l : others) {
+        if (i > 0) list += i + 1 == others.size() ? " and " : ", ";
+        list += std::to_string(l + 1);
+        ++i;
+    }
+    return std::string("marks on layer") + (others.size() > 1 ? "s " : " ") + list + " of " +
+           std::to_string(std::max(layers, *others.rbegin() + 1)) + " (, / . to step)";
+}
 
 void drawCrosshair(DrawList& dl, glm::vec2 c, const Rect& clip, float scale) {
     if (!clip.contains(c)) return;
@@ -108,6 +125,8 @@ std::vector<Rect> drawViewMarkers(DrawList& dl, const viz::ui::FontAtlas& font, 
         dl.textClipped(labelAt, marks[i].label, colour, v.image.max.x);
     }
     key.insert(key.begin(), lineKey.begin(), lineKey.end());
+    const std::string elsewhere = otherLayersNote(marks, v.pane.layer, v.pane.layers);
+    if (!elsewhere.empty()) key.push_back({elsewhere, glm::vec4(0.2f, 1.0f, 1.0f, 0.9f)});
     if (!key.empty()) {
         float keyWidth = 0.0f;
         for (const auto& k : key) keyWidth = std::max(keyWidth, font.measure(k.first));

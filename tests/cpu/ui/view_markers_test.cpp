@@ -1,6 +1,6 @@
 // A technique's marks drawn over a view (app/view_markers.h): labels stay inside the image and off each
-// other, many labelled points go into a key instead, marks of another layer are left out, and nothing is
-// drawn outside the image. Checked on the draw list itself.
+// other, many labelled points go into a key instead, marks of another layer are left out (the key names
+// their layers), and nothing is drawn outside the image. Checked on the draw list itself.
 #include <gtest/gtest.h>
 
 #include "ui/font.h"
@@ -82,15 +82,33 @@ TEST(ViewMarkers, ManyLabelledPointsGetNumbersAndAKeyAndOtherLayersAreLeftOut) {
     EXPECT_EQ(drawViewMarkers(dl, testFont(), 1.0f, v, points).size(), 4u) << "numbers only: the labels go into the key";
     const std::size_t drawn = dl.vertices().size();
     EXPECT_GT(drawn, 0u);
-    // The same with a mark on another layer (a cube map's other face): nothing more is drawn.
+    // The same with a mark on another layer (a cube map's other face, top right): it is not drawn, and the
+    // key (bottom left) gains a line naming its layer.
     std::vector<viz::ViewMarker> more = points;
-    more.push_back({{0.1f, 0.1f}, {0.9f, 0.9f}, "on face 3", 3});
+    more.push_back({{0.8f, 0.1f}, {0.95f, 0.2f}, "on face 3", 3});
     viz::ui::DrawList other(testFont());
     (void)drawViewMarkers(other, testFont(), 1.0f, v, more);
-    EXPECT_EQ(other.vertices().size(), drawn);
+    EXPECT_GT(other.vertices().size(), drawn);
+    const Rect farMark{{0.8f * 320.0f - 6.0f, 0.1f * 240.0f - 6.0f}, {0.95f * 320.0f + 6.0f, 0.2f * 240.0f + 6.0f}};
+    for (const viz::ui::UiVertex& p : other.vertices()) {
+        // (v.pane.glRows is false: data rows are the image's rows.)
+        EXPECT_FALSE(farMark.contains(p.position)) << p.position.x << ", " << p.position.y;
+        EXPECT_TRUE(p.position.x <= 320.0f && p.position.y <= 240.0f && p.position.x >= 0.0f && p.position.y >= 0.0f);
+    }
     // Two labelled points: labels beside them, no key.
     viz::ui::DrawList two(testFont());
     EXPECT_EQ(drawViewMarkers(two, testFont(), 1.0f, v, {points[0], points[1]}).size(), 2u);
+}
+
+// The key's note on marks elsewhere counts layers from 1, as the view's title does ("layer 4/6").
+TEST(ViewMarkers, TheNoteNamesTheOtherLayersThatHoldMarks) {
+    const auto mark = [](int layer) { return viz::ViewMarker{{0.1f, 0.1f}, {0.2f, 0.2f}, "m", layer}; };
+    EXPECT_EQ(otherLayersNote({mark(-1), mark(2)}, 2, 6), "");
+    EXPECT_EQ(otherLayersNote({mark(4), mark(4), mark(2)}, 2, 6), "marks on layer 5 of 6 (, / . to step)");
+    EXPECT_EQ(otherLayersNote({mark(4), mark(1), mark(3), mark(-1)}, 3, 6),
+              "marks on layers 2 and 5 of 6 (, / . to step)");
+    EXPECT_EQ(otherLayersNote({mark(0), mark(1), mark(5)}, 3, 6), "marks on layers 1, 2 and 6 of 6 (, / . to step)");
+    EXPECT_EQ(otherLayersNote({}, 0, 1), "");
 }
 
 }  // namespace
