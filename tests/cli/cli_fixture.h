@@ -67,10 +67,6 @@ protected:
     fs::path mDir = mTemp.path();
 };
 
-// Loads `page` in headless Chromium through a copy that counts the images that failed to load; returns
-// "images=N missing=M", or empty when no browser is installed.
-// A CliTest that opens the window: skipped without a display (X11 or Wayland), a failure instead when
-// VIZ_REQUIRE_DISPLAY=1 (CI runs these under xvfb-run).
 // Sets (or, given null, unsets) an environment variable while it lives, for the commands a test runs;
 // the variable is put back as it was.
 class ScopedEnv {
@@ -102,6 +98,8 @@ private:
     ScopedEnv mEnv;
 };
 
+// A CliTest that opens the window: skipped without a display (X11 or Wayland), a failure instead when
+// VIZ_REQUIRE_DISPLAY=1 (CI runs these under xvfb-run).
 class WindowCliTest : public CliTest {
 protected:
     void SetUp() override {
@@ -116,7 +114,16 @@ protected:
     }
 };
 
-inline std::string imagesLoadedInBrowser(const fs::path& page, const fs::path& scratch) {
+// `page` as headless Chromium loads it, through a copy that counts the images that failed to load:
+// images "images=N missing=M" (empty when no browser is installed), and with a `png` path a screenshot
+// of width x height CSS pixels taken in the same run (one browser start for both).
+struct BrowserView {
+    std::string images;
+    bool screenshot = false;
+};
+
+inline BrowserView viewInBrowser(const fs::path& page, const fs::path& scratch, const fs::path& png = {}, int width = 0,
+                                 int height = 0) {
     const char* browser = "/usr/bin/chromium";
     if (!fs::exists(browser)) return {};
     std::string html = readFile(page);
@@ -128,18 +135,26 @@ inline std::string imagesLoadedInBrowser(const fs::path& page, const fs::path& s
     const fs::path copy = page.parent_path() / "probe.html";
     std::ofstream(copy) << html;
     const fs::path dom = scratch / "dom.txt";
-    const std::string cmd = std::string(browser) +
-                            " --headless --no-sandbox --disable-gpu --disable-quic --no-first-run "
-                            "--disable-background-networking --disable-component-update --disable-sync "
-                            "--user-data-dir=" + (scratch / "profile").string() +
-                            " --virtual-time-budget=5000 --dump-dom file://" + copy.string() + " >" + dom.string() +
-                            " 2>/dev/null";
-    if (std::system(cmd.c_str()) != 0) return "browser failed";
+    std::string cmd = std::string(browser) +
+                      " --headless --no-sandbox --disable-gpu --disable-quic --no-first-run "
+                      "--disable-background-networking --disable-component-update --disable-sync "
+                      "--hide-scrollbars --user-data-dir=" + (scratch / "profile").string() + " --virtual-time-budget=5000";
+    if (!png.empty())
+        cmd += " --window-size=" + std::to_string(width) + "," + std::to_string(height) + " --screenshot=" + png.string();
+    cmd += " --dump-dom file://" + copy.string() + " >" + dom.string() + " 2>/dev/null";
+    BrowserView view;
+    if (std::system(cmd.c_str()) != 0) return {"browser failed", false};
+    view.screenshot = !png.empty() && fs::exists(png);
     const std::string text = readFile(dom);
     const std::size_t at = text.find("data-probe=\"");
-    if (at == std::string::npos) return "no probe result";
-    const std::size_t start = at + 12;
-    return text.substr(start, text.find('"', start) - start);
+    if (at == std::string::npos) return {"no probe result", view.screenshot};
+    const std::size_t first = at + 12;
+    view.images = text.substr(first, text.find('"', first) - first);
+    return view;
+}
+
+inline std::string imagesLoadedInBrowser(const fs::path& page, const fs::path& scratch) {
+    return viewInBrowser(page, scratch).images;
 }
 
 // What an HTML validator (Debian's `tidy`, errors and warnings) says about `page`: empty when the page is
@@ -154,22 +169,6 @@ inline std::string htmlValidatorComplaints(const fs::path& page, const fs::path&
     const int status = std::system(cmd.c_str());
     const std::string text = readFile(report);
     return status == 0 && text.empty() ? std::string() : (text.empty() ? "tidy failed" : text);
-}
-
-// Headless Chromium's screenshot of `page` (width x height CSS pixels) into `png`; false when no
-// browser is installed or it wrote nothing.
-inline bool screenshotInBrowser(const fs::path& page, const fs::path& scratch, const fs::path& png, int width,
-                                int height) {
-    const char* browser = "/usr/bin/chromium";
-    if (!fs::exists(browser)) return false;
-    const std::string cmd = std::string(browser) +
-                            " --headless --no-sandbox --disable-gpu --disable-quic --no-first-run "
-                            "--disable-background-networking --disable-component-update --disable-sync "
-                            "--hide-scrollbars --user-data-dir=" + (scratch / "profile").string() +
-                            " --virtual-time-budget=5000 --window-size=" + std::to_string(width) + "," +
-                            std::to_string(height) + " --screenshot=" + png.string() + " file://" + page.string() +
-                            " >/dev/null 2>&1";
-    return std::system(cmd.c_str()) == 0 && fs::exists(png);
 }
 
 }  // namespace viz::testing

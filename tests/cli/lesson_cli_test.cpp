@@ -151,16 +151,16 @@ TEST_F(CliTest, EveryLessonExportsAPageWithAllItsImages) {
         EXPECT_GE(images, steps) << name;
         EXPECT_GT(steps, 0) << name;
         EXPECT_EQ(htmlValidatorComplaints(out / "index.html", mDir), "") << name;
-        const std::string loaded = imagesLoadedInBrowser(out / "index.html", mDir);
-        if (loaded.empty()) {
+        // The page as a reader sees it, in one browser run: every image loads, and the first screenful
+        // shows its figures (coloured pixels), not just text on white.
+        const fs::path shot = mDir / (name + "-page.png");
+        const BrowserView view = viewInBrowser(out / "index.html", mDir, shot, 1000, 1600);
+        if (view.images.empty()) {
             if (std::getenv("VIZ_REQUIRE_BROWSER")) FAIL() << "VIZ_REQUIRE_BROWSER is set but /usr/bin/chromium is missing";
             continue;
         }
-        EXPECT_EQ(loaded, "images=" + std::to_string(images) + " missing=0") << name;
-        // The page as a reader sees it: the first screenful shows its figures (coloured pixels), not
-        // just text on white.
-        const fs::path shot = mDir / (name + "-page.png");
-        ASSERT_TRUE(screenshotInBrowser(out / "index.html", mDir, shot, 1000, 1600)) << name;
+        EXPECT_EQ(view.images, "images=" + std::to_string(images) + " missing=0") << name;
+        ASSERT_TRUE(view.screenshot) << name;
         const Image seen = readImage(shot.string());
         std::size_t coloured = 0;
         for (int y = 0; y < seen.height; ++y)
