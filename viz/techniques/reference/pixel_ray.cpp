@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "scene/ray_reach.h"
 #include "shared/airlight.h"
 
 namespace viz::reference {
@@ -17,9 +18,14 @@ bool insideLit(const VisibilitySearch& s, double t) {
 }  // namespace
 
 std::vector<VisibilitySearch> rayVisibility(const RayTracer& tracer, const PreparedLights& lights,
-                                            const glm::dvec3& o, const glm::dvec3& w, double d, int samples) {
+                                            const glm::dvec3& o, const glm::dvec3& w, double d, int samples,
+                                            double sigmaT) {
     std::vector<VisibilitySearch> list(lights.points.size() + lights.directionals.size());
     const bool anyGeometry = !tracer.empty();
+    SearchSpan span;
+    if (sigmaT > 0.0) span.reach = scene::kReachMeanFreePaths / sigmaT;
+    span.scene = tracer.insideBounds(o, w, d);
+    span.farSpan = scene::kFarSpanRadii * 0.5 * tracer.boundsDiagonal();
     for (std::size_t k = 0; k < lights.points.size(); ++k) {
         const PointEmitter& e = lights.points[k];
         if (!anyGeometry) {
@@ -28,7 +34,7 @@ std::vector<VisibilitySearch> rayVisibility(const RayTracer& tracer, const Prepa
         }
         const auto g = rayEmitterGeometry(o, w, e.position);
         list[k] = findLitIntervals([&](double t) { return !tracer.occludedSegment(o + t * w, e.position); }, d,
-                                   samples, g.tP, g.h);
+                                   samples, g.tP, g.h, span);
     }
     for (std::size_t k = 0; k < lights.directionals.size(); ++k) {
         const DirectionalEmitter& e = lights.directionals[k];
@@ -38,7 +44,7 @@ std::vector<VisibilitySearch> rayVisibility(const RayTracer& tracer, const Prepa
             continue;
         }
         s = findLitIntervals([&](double t) { return !tracer.occludedRay(o + t * w, -e.direction); }, d, samples,
-                             0.0, -1.0);
+                             0.0, -1.0, span);
     }
     return list;
 }

@@ -13,9 +13,13 @@
 
 namespace viz::reference {
 
-// One VisibilitySearch per point emitter, then one per directional emitter (PreparedLights' order).
+// One VisibilitySearch per point emitter, then one per directional emitter (PreparedLights' order). The
+// search covers [0, min(d, 60 / sigma_t)] and, on a span longer than 8 radii of the occluders' bounds,
+// puts half its uniform samples inside those bounds (SearchSpan; the policy: scene/ray_reach.h).
 std::vector<VisibilitySearch> rayVisibility(const RayTracer& tracer, const PreparedLights& lights,
-                                            const glm::dvec3& o, const glm::dvec3& w, double d, int samples);
+                                            const glm::dvec3& o, const glm::dvec3& w, double d, int samples,
+                                            double sigmaT);
+
 
 // L_air = the sum over emitters of their exact in-scattered radiance over their lit intervals.
 glm::dvec3 rayAirlight(const PreparedLights& lights, const glm::dvec3& o, const glm::dvec3& w,

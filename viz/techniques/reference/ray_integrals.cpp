@@ -12,14 +12,21 @@ namespace viz::reference {
 // ---- visibility transitions ----
 
 VisibilitySearch findLitIntervals(const std::function<bool(double)>& visible, double d, int samples,
-                                  double tP, double h) {
+                                  double tP, double h, const SearchSpan& span) {
     VisibilitySearch out;
+    d = std::min(d, span.reach);  // beyond: unlit (less than exp(-60) of what the light gives)
     if (!(d > 0.0)) return out;
     samples = std::max(samples, 2);
     std::vector<double> ts;
     ts.reserve(std::size_t(samples) + 2);
-    // Uniform in t, end points included.
-    const int uniform = (h > 0.0) ? std::max(2, samples / 2) : samples;
+    // Uniform in t, end points included; on a span longer than farSpan, half of them inside the scene.
+    int uniform = (h > 0.0) ? std::max(2, samples / 2) : samples;
+    const double sceneIn = std::max(span.scene.x, 0.0), sceneOut = std::min(span.scene.y, d);
+    if (d > span.farSpan && sceneOut > sceneIn) {
+        const int inside = std::max(2, uniform / 2);
+        for (int i = 0; i < inside; ++i) ts.push_back(sceneIn + (sceneOut - sceneIn) * double(i) / double(inside - 1));
+        uniform = std::max(2, uniform - inside);
+    }
     for (int i = 0; i < uniform; ++i) ts.push_back(d * double(i) / double(uniform - 1));
     // Uniform in the angle seen from the light: t = tP + h tan(theta). The integrand (~ 1 / r^2) is
     // largest near the closest approach, and a shadow boundary there is where a missed sliver costs most.

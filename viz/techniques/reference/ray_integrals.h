@@ -5,6 +5,7 @@
 #pragma once
 
 #include <functional>
+#include <limits>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -33,12 +34,23 @@ struct VisibilitySearch {
     }
 };
 
+// Where a long ray is searched (sampling never depends on d alone: a camera's zfar of 1e6 in a scene 10
+// units across). The search covers [0, min(d, reach)]: beyond `reach` (60 mean free paths) the medium
+// passes on less than exp(-60) of any light, and the ray counts as unlit there. When that span is longer
+// than `farSpan` (8 radii of the scene's bounds), half the uniform samples go to `scene`, the ray's part
+// inside the bounds of the occluders, which uniform samples over the whole span would mostly miss.
+struct SearchSpan {
+    double reach = std::numeric_limits<double>::infinity();
+    glm::dvec2 scene{1.0, 0.0};  // empty (x >= y): the ray misses the bounds
+    double farSpan = std::numeric_limits<double>::infinity();
+};
+
 // Where along [0, d] V(t) = visible(t) is true. V is sampled at `samples` points: half uniform in t,
 // half uniform in the angle theta = atan((t - tP) / h) seen from a point light (spacing finest near
 // the closest approach, where the integrand peaks); pass h <= 0 for uniform samples only. Each change
-// of V between neighbours is bisected until its bracket is below 1e-9 d.
+// of V between neighbours is bisected until its bracket is below 1e-9 of the searched span.
 VisibilitySearch findLitIntervals(const std::function<bool(double)>& visible, double d, int samples,
-                                  double tP, double h);
+                                  double tP, double h, const SearchSpan& span = {});
 
 // Ray/emitter geometry: tP = dot(P - o, w) the closest approach, h the distance of the light to the
 // line, nHat the unit vector from the closest point of the ray towards... the light's offset

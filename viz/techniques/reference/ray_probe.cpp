@@ -36,7 +36,7 @@ RayProbe probePixel(const scene::Scene& scene, int width, int height, int x, int
     const Hit hit = tracer.intersect(eye, w, scene.camera.zfar);
     probe.d = hit.found ? std::min(hit.t, scene.camera.zfar) : scene.camera.zfar;
 
-    const std::vector<VisibilitySearch> lit = rayVisibility(tracer, lights, eye, w, probe.d, options.transitionSamples);
+    const std::vector<VisibilitySearch> lit = rayVisibility(tracer, lights, eye, w, probe.d, options.transitionSamples, medium.sigma_t);
     probe.airlight = medium.sigma_s != 0.0 ? rayAirlight(lights, eye, w, lit, medium) : glm::dvec3(0.0);
 
     // Per scene light: its emitters' intervals and share of L_air.

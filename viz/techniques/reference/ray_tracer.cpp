@@ -78,6 +78,8 @@ RayTracer::RayTracer(const scene::Scene& scene) {
         mTriangleCount += triangles;
     }
     rtcCommitScene(mScene);
+    mLo = lo;
+    mHi = hi;
     if (mTriangleCount > 0) {
         // Float positions carry ~1e-7 relative error; offset rays well above that.
         const double extent = glm::length(hi - lo) + glm::length(glm::max(glm::abs(hi), glm::abs(lo)));
@@ -87,11 +89,31 @@ RayTracer::RayTracer(const scene::Scene& scene) {
 
 RayTracer::~RayTracer() { release(); }
 
+glm::dvec2 RayTracer::insideBounds(const glm::dvec3& origin, const glm::dvec3& dir, double tMax) const {
+    if (mTriangleCount == 0) return {1.0, 0.0};
+    // Slabs, widened by the ray offset so that a triangle in a face of the box counts as inside.
+    glm::dvec2 r(0.0, tMax);
+    for (int a = 0; a < 3; ++a) {
+        const double lo = mLo[a] - mRayEpsilon, hi = mHi[a] + mRayEpsilon;
+        if (dir[a] == 0.0) {
+            if (origin[a] < lo || origin[a] > hi) return {1.0, 0.0};
+            continue;
+        }
+        double t0 = (lo - origin[a]) / dir[a], t1 = (hi - origin[a]) / dir[a];
+        if (t0 > t1) std::swap(t0, t1);
+        r.x = std::max(r.x, t0);
+        r.y = std::min(r.y, t1);
+    }
+    return r;
+}
+
 RayTracer::RayTracer(RayTracer&& other) noexcept
     : mDevice(std::exchange(other.mDevice, nullptr)),
       mScene(std::exchange(other.mScene, nullptr)),
       mTriangleCount(other.mTriangleCount),
-      mRayEpsilon(other.mRayEpsilon) {}
+      mRayEpsilon(other.mRayEpsilon),
+      mLo(other.mLo),
+      mHi(other.mHi) {}
 
 RayTracer& RayTracer::operator=(RayTracer&& other) noexcept {
     if (this != &other) {
@@ -100,6 +122,8 @@ RayTracer& RayTracer::operator=(RayTracer&& other) noexcept {
         mScene = std::exchange(other.mScene, nullptr);
         mTriangleCount = other.mTriangleCount;
         mRayEpsilon = other.mRayEpsilon;
+        mLo = other.mLo;
+        mHi = other.mHi;
     }
     return *this;
 }

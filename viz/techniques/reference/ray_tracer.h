@@ -47,6 +47,10 @@ public:
     static constexpr double kSegmentEpsilon = 1e-5;
     double rayEpsilon() const { return mRayEpsilon; }
     bool empty() const { return mTriangleCount == 0; }
+    // The part [x, y] of origin + t dir, t in [0, tMax], inside the box around every triangle (where every
+    // occluder lies); x >= y when the ray misses it. The box's diagonal (0 without triangles).
+    glm::dvec2 insideBounds(const glm::dvec3& origin, const glm::dvec3& dir, double tMax) const;
+    double boundsDiagonal() const { return mTriangleCount > 0 ? glm::length(mHi - mLo) : 0.0; }
 
 private:
     void release();
@@ -55,6 +59,7 @@ private:
     RTCScene mScene = nullptr;
     std::size_t mTriangleCount = 0;
     double mRayEpsilon = 1e-5;
+    glm::dvec3 mLo{0.0}, mHi{0.0};
 };
 
 }  // namespace viz::reference

@@ -166,7 +166,7 @@ FrameOutput ReferenceTechnique::compute(const FrameInput& input) const {
                 const std::size_t i = f.pixel(x, y);
                 const double d = f.distance[i];
                 auto& list = f.lit[i];
-                list = reference::rayVisibility(tracer, lights, eye, eyeRay(f, x, y), d, samples);
+                list = reference::rayVisibility(tracer, lights, eye, eyeRay(f, x, y), d, samples, f.medium.sigma_t);
                 int transitions = 0;
                 for (const VisibilitySearch& v : list) transitions += v.transitions;
                 f.transitions.at(x, y) = float(transitions);

@@ -1,0 +1,25 @@
+// How far along the camera's rays the techniques look. Sampling never depends on zfar alone: a public
+// file's camera with zfar 1e6 around a model 10 units across would spread a fixed budget of samples
+// (raymarch's N per ray, the reference's visibility search, slices' planes, vsv's phi cells) over a
+// million units and miss the model's shafts. Two rules, one policy:
+//   - every technique ignores the ray past kReachMeanFreePaths mean free paths (exp(-60) < 1e-26 of
+//     what nearer points add);
+//   - a ray longer than kFarSpanRadii radii of the scene's bounds is "far": raymarch and the reference
+//     sample it by the light (raymarch) or put half their search inside the bounds (reference); slices
+//     and vsv, whose depth samples are shared by every pixel, cover depthOfInterest() instead of zfar.
+#pragma once
+
+#include "scene/scene.h"
+
+namespace viz::scene {
+
+constexpr double kReachMeanFreePaths = 60.0;
+constexpr double kFarSpanRadii = 8.0;
+
+// The distance along the camera's rays that shared depth samples cover: zfar, unless zfar is longer than
+// kFarSpanRadii radii of the bounds of the meshes; then the farthest corner of those bounds (or point-like
+// light) from the eye, so the air beyond the scene (the haze seen through an opening) is left out. Never
+// more than zfar.
+double depthOfInterest(const Scene& scene);
+
+}  // namespace viz::scene
