@@ -2,14 +2,17 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstdio>
 #include <map>
 #include <memory>
 #include <string>
 
 #include "core/error.h"
+#include "render/gpu_scene.h"
 #include "gl/stage_clock.h"
 #include "render/intermediates.h"
 #include "render/light_culling.h"
+#include "scene/ray_reach.h"
 
 namespace viz::raymarch_detail {
 
@@ -109,6 +112,10 @@ std::optional<StiffBound> RaymarchTechnique::stiffBound(const std::string& caseC
     return boundOf(kBounds, caseClass);
 }
 
+double RaymarchTechnique::farSpan(const scene::Scene& scene) {
+    return scene::kFarSpanRadii * render::sceneBounds(scene).radius();
+}
+
 Plan RaymarchTechnique::plan(const scene::Scene& scene, const Settings& settings) const {
     Plan p = planEveryStage(mStages);
     if (scene.medium.sigma_s == 0.0) {
@@ -167,6 +174,22 @@ Plan RaymarchTechnique::plan(const scene::Scene& scene, const Settings& settings
                                   " dispatch(es) of at most " + std::to_string(chunk) +
                                   ": llvmpipe stops an invocation's loops after 65,535 iterations"});
     }
+    {
+        // How long a lit span can be (litInterval: d <= zfar, at most 60 mean free paths) against the scene.
+        const double longest = scene.medium.sigma_t() > 0.0
+                                   ? std::min(scene.camera.zfar, scene::kReachMeanFreePaths / scene.medium.sigma_t())
+                                   : scene.camera.zfar;
+        const double far = farSpan(scene);
+        const bool farRays = longest > far;
+        char why[200];
+        std::snprintf(why, sizeof why,
+                      farRays ? "spans up to %.3g against the scene's radius %.3g: spans over %.3g are sampled by the "
+                                "light (equiangular about point-like lights, by transmittance for directional ones)"
+                              : "every lit span (at most %.3g) fits in 8 of the scene's radii (%.3g; %.3g): "
+                                "uniform samples",
+                      longest, far / scene::kFarSpanRadii, far);
+        p.features.push_back({"FAR_RAYS", farRays, why});
+    }
     p.features.push_back({"SHADOW_LOOKUP_MESH", m.meshLookup,
                           m.meshLookup ? "shadow_lookup=mesh: 2D maps read as polyvol's light volume mesh"
                                      : "shadow_lookup=nearest: nearest texel with bias"});
@@ -190,7 +213,7 @@ FrameOutput RaymarchTechnique::run(const FrameInput& input) {
             allocateTargets(input.width, input.height);
             if (out.plan.stages[kMarchIndex].runs) {
                 const gl::Program& program = marchProgram(out.plan);
-                march(program, scene, input);
+                march(program, out.plan, scene, input);
             } else {
                 mAirlight.clear(glm::vec4(0.0f));
                 mLitFraction.clear(glm::vec4(0.0f));

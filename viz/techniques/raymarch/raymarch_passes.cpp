@@ -35,13 +35,15 @@ const gl::Program& RaymarchTechnique::marchProgram(const Plan& plan) {
     return it->second;
 }
 
-void RaymarchTechnique::march(const gl::Program& program, const scene::Scene& scene, const FrameInput& input) {
+void RaymarchTechnique::march(const gl::Program& program, const Plan& plan, const scene::Scene& scene,
+                              const FrameInput& input) {
     const scene::Camera& cam = scene.camera;
     const MarchSettings& s = mSettings;
     program.use();
     render::bindCameraRay(program, cam, input.width, input.height);
     program.set("uSamples", s.samples);
     program.set("uLightCount", mView.lights().count());
+    if (featureEnabled(plan, "FAR_RAYS")) program.set("uFarSpan", float(farSpan(scene)));
     mMedium.bind(scene.medium);
     // jitter_time=per-frame: frame f draws new offsets (white: the seed moves by a large odd step; blue:
     // each pixel's offset moves by f times the golden ratio, modulo 1, a low-discrepancy walk in time

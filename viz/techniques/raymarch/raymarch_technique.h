@@ -41,6 +41,7 @@ inline const PermutationTable kDefines = {
     {"SHADOW_MAPS_CUBE", {nullptr, "SHADOW_NO_CUBE"}},
     {"SHADOW_MAPS_2D", {nullptr, "SHADOW_NO_2D"}},
     {"SHADOW_LOOKUP_MESH", {"SHADOW_LOOKUP_MESH", nullptr}},
+    {"FAR_RAYS", {"FAR_RAYS", nullptr}},
 };
 
 enum class Jitter { Off = 0, White = 1, Blue = 2 };
@@ -84,7 +85,10 @@ private:
     // an enabled EXACT / JITTER adds its define, a disabled light or shadow feature adds the define that
     // leaves its code out (shaders/common/lights.glsl, shadow_map.glsl).
     const gl::Program& marchProgram(const Plan& plan);
-    void march(const gl::Program& program, const scene::Scene& scene, const FrameInput& input);
+    void march(const gl::Program& program, const Plan& plan, const scene::Scene& scene, const FrameInput& input);
+    // The lit span beyond which FAR_RAYS samples by importance (march.comp, placeSample): scene::kFarSpanRadii
+    // radii of the scene's bounds (scene/ray_reach.h).
+    static double farSpan(const scene::Scene& scene);
     // The 64x64 blue-noise tile (core/blue_noise.h), made on first use.
     const gl::Texture& blueNoiseTexture();
     static constexpr int kBlueNoiseSize = 64;  // shaders/raymarch/march.comp masks pixel coordinates with 63
