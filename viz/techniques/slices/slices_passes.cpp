@@ -1,6 +1,8 @@
 // slices' GL passes: shader permutations, targets, the sampling planes drawn back to front and the resolve.
 #include "techniques/slices/slices_technique.h"
 
+#include "scene/ray_reach.h"
+
 namespace viz::slices_detail {
 
 gl::ShaderDefines SlicesTechnique::planeDefines(const Terms& t, bool pick) {
@@ -169,14 +171,17 @@ void SlicesTechnique::drawPlanes(const scene::Scene& scene, const FrameInput& in
         pick->set("uPickPixel", glm::ivec2(mPickPixel.x, input.height - 1 - mPickPixel.y));
     }
 
+    // The planes end at zfar, or with a far camera (zfar 1e6 around a model 10 units across) at the
+    // scene's far side: N planes over a million units would all lie beyond every surface.
+    const double reach = scene::depthOfInterest(scene);
     for (const DrawSet& set : sets) {
         const bool boxed = set.light >= 0;
-        PlaneRange range = planeRange(set.volume, basis, cam.znear, cam.zfar, n);
+        PlaneRange range = planeRange(set.volume, basis, cam.znear, reach, n);
         if (range.empty) continue;
         // Fewer planes far from the light volume (eye at the origin; distance to the view-space box).
         const glm::dvec3 lo(range.minXY, range.near), hi(range.maxXY, range.far);
         const double distance = glm::length(glm::max(glm::max(lo, -hi), glm::dvec3(0.0)));
-        range = planeRange(set.volume, basis, cam.znear, cam.zfar,
+        range = planeRange(set.volume, basis, cam.znear, reach,
                            scaledPlaneCount(n, distance, s.distanceScale, kMinScaledPlanes));
         if (worldGrid) range = worldGridRange(range, glm::dot(cam.position, basis.forward));
         const int planes = range.planes;

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "scene/camera.h"
+#include "scene/ray_reach.h"
 #include "scene/scene.h"
 #include "techniques/vsv/epipolar.h"
 
@@ -37,7 +38,7 @@ inline SpotCone spotConeOf(const scene::Light& light) {
 
 inline EpipolarGrid gridForLight(const scene::Scene& scene, const scene::Light& light, int width, int height,
                                  int nAlpha, int nTheta, int nPhi, bool dynamic) {
-    return selectRanges(frameForLight(scene, light), cameraRays(scene.camera, width, height), scene.camera.zfar,
+    return selectRanges(frameForLight(scene, light), cameraRays(scene.camera, width, height), scene::depthOfInterest(scene),
                         spotConeOf(light), nAlpha, nTheta, nPhi, dynamic);
 }
 

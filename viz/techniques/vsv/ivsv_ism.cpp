@@ -2,6 +2,8 @@
 // cloud splatted into the tiles and the push-pull that fills their holes.
 #include "techniques/vsv/ivsv_technique.h"
 
+#include "scene/ray_reach.h"
+
 namespace viz::ivsv_detail {
 
 void IvsvTechnique::layOut(int count, int cells, int tile) {
@@ -54,7 +56,7 @@ void IvsvTechnique::uploadVpls(const scene::Scene& scene, int width, int height,
         cone.present = true;
         cone.axis = v.normal;
         cone.outer = 0.5 * std::numbers::pi;
-        const vsv::EpipolarGrid g = vsv::selectRanges(f, cam, scene.camera.zfar, cone, cells, cells, kPhiBits);
+        const vsv::EpipolarGrid g = vsv::selectRanges(f, cam, scene::depthOfInterest(scene), cone, cells, cells, kPhiBits);
         mGrids.push_back(g);
         glm::dvec3 tx, ty;
         vsv::hemisphereFrame(v.normal, tx, ty);
