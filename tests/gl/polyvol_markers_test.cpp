@@ -41,6 +41,19 @@ Counted countCrossings(const std::vector<ViewMarker>& marks, Counted* drawn = nu
     return c;
 }
 
+// grate's spot, a second spot beside it and two point lights.
+struct FourLights {
+    viz::scene::Light spot, spot2, point, point2;
+};
+FourLights fourLights(const viz::scene::Light& spot) {
+    FourLights l{spot, spot, spot, spot};
+    l.spot2.position += glm::dvec3(0.6, 0.0, -0.4);
+    l.point.type = l.point2.type = viz::scene::LightType::Point;
+    l.point.position += glm::dvec3(-0.5, 0.2, 0.3);
+    l.point2.position += glm::dvec3(0.5, -0.1, 0.3);
+    return l;
+}
+
 class PolyvolMarkersTest : public viz::testing::TechniqueTest {
 protected:
     // Every `step`-th pixel: the marks in polyvol.shadow_map count the faces and the signed sum that the
@@ -156,16 +169,8 @@ TEST_F(PolyvolMarkersTest, AdaptiveCubeCrossingsAddUpToTheGpusCrossingCounts) {
 // the others' marks are built from the same triangles.)
 TEST_F(PolyvolMarkersTest, EveryAdaptiveLightsCrossingsAddUpToTheGpusCrossingCounts) {
     viz::scene::Scene scene = viz::scene::makeBuiltinScene("grate");
-    viz::scene::Light spot = scene.lights[0];
-    spot.position += glm::dvec3(0.6, 0.0, -0.4);
-    viz::scene::Light point = scene.lights[0];
-    point.type = viz::scene::LightType::Point;
-    point.position += glm::dvec3(-0.5, 0.2, 0.3);
-    viz::scene::Light point2 = point;
-    point2.position += glm::dvec3(1.0, -0.3, 0.0);
-    scene.lights.push_back(spot);
-    scene.lights.push_back(point);
-    scene.lights.push_back(point2);
+    const FourLights l = fourLights(scene.lights[0]);
+    scene.lights = {l.spot, l.spot2, l.point, l.point2};
     int pixels = 0, crossings = 0, grazing = 0;
     expectCrossingsMatchTheGpu(scene, {{"shadow_map", 64}, {"tessellation", 1}, {"force_features", 1}}, 64, 48, 3, pixels,
                                crossings, grazing);
@@ -179,14 +184,8 @@ TEST_F(PolyvolMarkersTest, EveryAdaptiveLightsCrossingsAddUpToTheGpusCrossingCou
 // of its kind (its keys read back from the run's own buffers): the same lights in the other order.
 TEST_F(PolyvolMarkersTest, AnEarlierAdaptiveLightIsMarkedAsWhenItIsTheLast) {
     viz::scene::Scene first = viz::scene::makeBuiltinScene("grate");
-    viz::scene::Light spot = first.lights[0];
-    spot.position += glm::dvec3(0.6, 0.0, -0.4);
-    viz::scene::Light point = first.lights[0];
-    point.type = viz::scene::LightType::Point;
-    point.position += glm::dvec3(-0.5, 0.2, 0.3);
-    viz::scene::Light point2 = point;
-    point2.position += glm::dvec3(1.0, -0.3, 0.0);
-    first.lights = {first.lights[0], point, spot, point2};
+    const FourLights l = fourLights(first.lights[0]);
+    first.lights = {l.spot, l.point, l.spot2, l.point2};
     viz::scene::Scene last = first;
     last.lights = {first.lights[2], first.lights[3], first.lights[0], first.lights[1]};  // light i of first: (i + 2) % 4
     const viz::Settings settings{{"shadow_map", 64}, {"tessellation", 1}, {"force_features", 1}};
