@@ -35,20 +35,34 @@ uniform float uEpipoleRadius;
 #include "common/medium.glsl"  // uSigmaS, uSigmaT, uG
 #include "common/airlight_sample.glsl"
 
+#ifdef FAR_RAYS
+uniform float uFarSpan;    // a span longer than this is sampled by the light (common/march_samples.glsl)
+uniform float uAxisReach;  // scene::depthOfInterest: past it a ray on the epipolar axis keeps its visibility
+#else
+const float uFarSpan = 3.0e38;
+const float uAxisReach = 3.0e38;
+#endif
+#include "common/march_samples.glsl"
+
 // Brute force for lights without an epipolar path (raymarch's midpoint rule): uMarchSamples samples
-// uniform in t, each the integrand sigma_s p E V exp(-sigma_t t) dt at its interval's middle. No loops
-// inside the loop: llvmpipe ends all loops of an invocation together after 65535 iterations.
+// uniform in t over [0, d] (or, with a far camera, by the light: placeSample), each the integrand
+// sigma_s p E V exp(-sigma_t t) dt at its point. No loops inside the loop: llvmpipe ends all loops of an
+// invocation together after 65535 iterations.
 vec3 march(GpuLight L, vec3 w, float d) {
-    float dt = d / float(uMarchSamples);
+    vec2 span = vec2(0.0, d);
+#ifdef FAR_RAYS
+    span.y = min(d, 60.0 / max(uSigmaT, 1.0e-30));  // litInterval's reach (60 mean free paths)
+#endif
     vec3 sum = vec3(0.0);
     for (int i = 0; i < uMarchSamples; ++i) {
         WORK_COUNT(kWorkRaySamples, 1);
-        float t = (float(i) + 0.5) * dt;
+        MarchSample m = placeSample(L, w, span, i, uMarchSamples, 0.5, uFarSpan);
+        float t = m.t;
         vec3 x = t * w;
         float V = shadowVisibility(L, x);
         if (V == 0.0) continue;
         float cosTheta = dot(directionToLight(L, x), w);
-        sum += airlightSample(V, cosTheta, unshadowedIrradiance(L, x, uSigmaT), t, dt);
+        sum += airlightSample(V, cosTheta, unshadowedIrradiance(L, x, uSigmaT), t, m.dt);
     }
     return sum;
 }
@@ -60,9 +74,19 @@ vec3 march(GpuLight L, vec3 w, float d) {
 // the shadow map directly (no rectification).
 vec3 marchGamma(GpuLight L, vec3 w, float beta, float d) {
     float gammaEnd = gammaAlongRay(beta, d);
+    vec3 sum = vec3(0.0);
+#ifdef FAR_RAYS
+    // A sun's light rays beyond the map's reach (gammaHi) miss every occluder, as in the traversal: that
+    // part of the ray is lit and added in closed form; the samples stay where the map is.
+    if (uKind == kKindDirectional && gammaEnd > MINMAX_GAMMA_HI) {
+        float tHi = min(distanceAtGamma(beta, MINMAX_GAMMA_HI), d);
+        sum += directionalSegment(dot(directionToLight(L, tHi * w), w), tHi, d, uSigmaS, uSigmaT, uG, 1.0) *
+               L.radiant.rgb;
+        gammaEnd = MINMAX_GAMMA_HI;
+    }
+#endif
     float step = gammaEnd / float(uMarchSamples);
     float sinBeta = sin(beta);
-    vec3 sum = vec3(0.0);
     for (int i = 0; i < uMarchSamples; ++i) {
         WORK_COUNT(kWorkRaySamples, 1);
         float gamma = (float(i) + 0.5) * step;
@@ -92,12 +116,17 @@ const int kAxisSamples = 256;
 vec3 marchAxis(GpuLight L, vec3 w, float d) {
     RayLightGeometry g = rayLightGeometry(L.position.xyz, w);
     int n = min(uMarchSamples, kAxisSamples);
-    float dt = d / float(n);
+    // With a far camera the intervals end at the scene's far side: past it the ray runs along one light
+    // ray, so its visibility no longer changes and the rest is one closed-form segment with the last V.
+    float reach = min(d, uAxisReach);
+    float dt = reach / float(n);
     vec3 sum = vec3(0.0);
+    float lastV = 1.0;
     for (int i = 0; i < n; ++i) {
         float t = (float(i) + 0.5) * dt;
         vec3 x = t * w;
-        if (shadowVisibility(L, x) == 0.0) continue;
+        lastV = shadowVisibility(L, x);
+        if (lastV == 0.0) continue;
         float x0 = float(i) * dt;
         float x1 = float(i + 1) * dt;
         if (uKind == kKindDirectional) {
@@ -107,6 +136,16 @@ vec3 marchAxis(GpuLight L, vec3 w, float d) {
             // The angular factor needs a direction from the light: none at the light's own position.
             vec3 I = distance(x, L.position.xyz) > 0.0 ? lightIntensity(L, x) : vec3(0.0);
             sum += pointSegment(g.tP, g.h, x0, x1, uSigmaS, uSigmaT, uG, 1.0) * I;
+        }
+    }
+    if (d > reach && lastV > 0.0) {
+        vec3 x = d * w;
+        if (uKind == kKindDirectional) {
+            sum += directionalSegment(dot(directionToLight(L, x), w), reach, d, uSigmaS, uSigmaT, uG, 1.0) *
+                   L.radiant.rgb;
+        } else {
+            vec3 I = distance(x, L.position.xyz) > 0.0 ? lightIntensity(L, x) : vec3(0.0);
+            sum += pointSegment(g.tP, g.h, reach, d, uSigmaS, uSigmaT, uG, 1.0) * I;
         }
     }
     return sum;

@@ -39,54 +39,8 @@ uniform int uPairBegin;  // first (light, sample) pair of this dispatch
 uniform int uPairEnd;    // one past the last
 uniform bool uFirst;     // the first dispatch starts the sums at zero
 uniform bool uLast;      // the last dispatch turns the lit count into a fraction
-#ifdef FAR_RAYS
-uniform float uFarSpan;  // a lit span longer than this (8 radii of the scene's bounds) is sampled by importance
-#endif
-
-// Sample i of N on the lit span: its interval [x0, x1] (the intervals tile the span), its point t
-// (offset u in (0, 1) inside the interval's share of the sampling variable) and its weight dt, the length
-// of ray the sample stands for. Uniform in t (dt = the interval's length). With FAR_RAYS a span longer
-// than uFarSpan (a camera's zfar of 1e6 in a scene 10 units across) would leave the scene with few samples
-// or none, so it is sampled by the light instead: uniform in the angle the ray subtends at a point-like
-// light (equiangular: t = t_P + h tan(theta), dt = dtheta r^2 / h, so E dt is flat away from shadows), or
-// uniform in the transmittance 1 - exp(-sigma_t (t - t0)) for a directional light (dt = dq / (sigma_t
-// (1 - q)) per share dq).
-struct MarchSample {
-    float x0, x1, t, dt;
-};
-
-MarchSample placeSample(GpuLight L, vec3 w, vec2 span, int i, float u) {
-    float n = float(uSamples);
-    float len = span.y - span.x;
-    MarchSample m;
-    m.dt = len / n;
-    m.x0 = span.x + float(i) * m.dt;
-    m.x1 = span.x + float(i + 1) * m.dt;
-    m.t = span.x + (float(i) + u) * m.dt;
-#ifdef FAR_RAYS
-    if (len <= uFarSpan) return m;
-    if (L.info.x == kLightDirectional) {
-        float total = 1.0 - exp(-uSigmaT * len);  // the span's share of the transmittance
-        if (uSigmaT * len < 1.0e-3) return m;     // nearly clear: uniform is the same
-        float q0 = float(i) / n * total, q1 = float(i + 1) / n * total, q = (float(i) + u) / n * total;
-        m.x0 = span.x - log(1.0 - q0) / uSigmaT;
-        m.x1 = i + 1 == uSamples ? span.y : span.x - log(1.0 - q1) / uSigmaT;
-        m.t = clamp(span.x - log(1.0 - q) / uSigmaT, m.x0, m.x1);
-        m.dt = total / (n * uSigmaT * (1.0 - q));
-        return m;
-    }
-    RayLightGeometry g = rayLightGeometry(L.position.xyz, w);
-    if (g.h < 1.0e-6 * len) return m;  // a ray through the light: no angle to spread the samples over
-    float th0 = atan((span.x - g.tP) / g.h), th1 = atan((span.y - g.tP) / g.h);
-    float dth = (th1 - th0) / n;
-    m.x0 = i == 0 ? span.x : clamp(g.tP + g.h * tan(th0 + float(i) * dth), span.x, span.y);
-    m.x1 = i + 1 == uSamples ? span.y : clamp(g.tP + g.h * tan(th0 + float(i + 1) * dth), span.x, span.y);
-    m.t = clamp(g.tP + g.h * tan(th0 + (float(i) + u) * dth), m.x0, m.x1);
-    vec3 r = m.t * w - L.position.xyz;
-    m.dt = dth * dot(r, r) / g.h;
-#endif
-    return m;
-}
+uniform float uFarSpan;  // a lit span longer than this (8 radii of the scene's bounds) is sampled by the light
+#include "common/march_samples.glsl"
 
 // PCG-style integer hash -> [0, 1): jitter=white's offset, fixed per pixel, sample and seed (deterministic).
 float hashToUnit(uvec3 v) {
@@ -122,7 +76,7 @@ void main() {
 #else
         float u = 0.5;
 #endif
-        MarchSample m = placeSample(L, w, span, i, u);
+        MarchSample m = placeSample(L, w, span, i, uSamples, u, uFarSpan);
         float t = m.t;
         vec3 x = t * w;
         WORK_COUNT(kWorkRaySamples, 1);

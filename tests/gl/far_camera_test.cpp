@@ -2,7 +2,7 @@
 // scene/ray_reach.h). Against the reference at the same zfar: raymarch samples a long lit span by the
 // light (FAR_RAYS), slices' planes and vsv's phi cells cover the scene's depth instead of [0, zfar].
 // Before: on grate lit by a point light, raymarch was 71 % off and slices 100 % (every plane beyond every
-// surface); on colonnade, slices 100 % and vsv 210 %.
+// surface); on colonnade, slices 100 % and vsv 210 %; on forest, minmax 24 %.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -27,16 +27,16 @@ protected:
         return viz::testing::relativeL2(out.airlight, ref.airlight);
     }
     // Each technique at zfar 1e6 against its error at the scene's own zfar: no worse than a quarter more
-    // (or 0.005), or, where `limit` is given, below it.
+    // (or `slack`), or, where `limit` is given, below it.
     static void expectFarAsNear(const viz::scene::Scene& scene, const std::string& name,
-                                const std::vector<std::pair<std::string, double>>& limits) {
+                                const std::vector<std::pair<std::string, double>>& limits, double slack = 0.005) {
         for (const auto& [technique, limit] : limits) {
             const double nearE = errorAt(scene, scene.camera.zfar, technique, 80, 60);
             const double farE = errorAt(scene, 1e6, technique, 80, 60);
             std::printf("%s: %-8s relative L2 %.4f at zfar %g, %.4f at 1e6\n", name.c_str(), technique.c_str(), nearE,
                         scene.camera.zfar, farE);
             if (limit > 0.0) EXPECT_LT(farE, limit) << technique;
-            else EXPECT_LT(farE, std::max(1.25 * nearE, nearE + 0.005)) << technique;
+            else EXPECT_LT(farE, std::max(1.25 * nearE, nearE + slack)) << technique;
         }
     }
 };
@@ -55,6 +55,18 @@ TEST_F(FarCameraTest, APointLitSceneReadsAsWithItsOwnZfar) {
 TEST_F(FarCameraTest, ASunLitSceneReadsAsWithItsOwnZfarButForSlicesAndVsv) {
     const viz::scene::Scene colonnade = viz::scene::makeBuiltinScene("colonnade");
     expectFarAsNear(colonnade, "colonnade", {{"raymarch", 0}, {"slices", 0.3}, {"polyvol", 0}, {"minmax", 0}, {"vsv", 0.2}});
+}
+
+// A sun through a canopy: the pixels near the sun's direction are marched near the epipole, and with
+// zfar 1e6 minmax's march spread its samples over a million units (24 % off, those pixels dark); it now
+// stops where the shadow map ends and adds the lit rest in closed form. slices and vsv: 39 % and 14 %
+// at zfar 1e6 for the haze past the scene, as on colonnade. The slack: at pixel (44, 21) every shadow-map
+// technique reads 0.86 at zfar 1e6 (0.56 at 80) where the reference reads 0.29 at both, a disagreement
+// of the shadow maps with the traced rays that zfar only enlarges; it alone moves minmax from 0.022 to
+// 0.028.
+TEST_F(FarCameraTest, ASunThroughACanopyReadsAsWithItsOwnZfar) {
+    expectFarAsNear(viz::scene::makeBuiltinScene("forest"), "forest", {{"raymarch", 0}, {"polyvol", 0}, {"minmax", 0}},
+                    0.01);
 }
 
 }  // namespace

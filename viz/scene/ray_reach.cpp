@@ -6,6 +6,13 @@
 
 namespace viz::scene {
 
+double farSpan(const Scene& scene) { return kFarSpanRadii * 0.5 * sceneBounds(scene).diagonal(); }
+
+double longestLitSpan(const Scene& scene) {
+    const double sigmaT = scene.medium.sigma_t();
+    return sigmaT > 0.0 ? std::min(scene.camera.zfar, kReachMeanFreePaths / sigmaT) : scene.camera.zfar;
+}
+
 double depthOfInterest(const Scene& scene) {
     const double zfar = scene.camera.zfar;
     const Bounds b = sceneBounds(scene);

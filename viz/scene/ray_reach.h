@@ -16,6 +16,14 @@ namespace viz::scene {
 constexpr double kReachMeanFreePaths = 60.0;
 constexpr double kFarSpanRadii = 8.0;
 
+// The lit span beyond which a ray counts as far: kFarSpanRadii radii of the bounds of the meshes (0 without
+// meshes: every span is far).
+double farSpan(const Scene& scene);
+// The longest lit span a ray of the camera can have: zfar, at most kReachMeanFreePaths mean free paths.
+double longestLitSpan(const Scene& scene);
+// Whether the camera's rays can be far (longestLitSpan > farSpan): the marches' FAR_RAYS feature.
+inline bool farRaysPossible(const Scene& scene) { return longestLitSpan(scene) > farSpan(scene); }
+
 // The distance along the camera's rays that shared depth samples cover: zfar, unless zfar is longer than
 // kFarSpanRadii radii of the bounds of the meshes; then the farthest corner of those bounds (or point-like
 // light) from the eye, so the air beyond the scene (the haze seen through an opening) is left out. Never

@@ -1,6 +1,7 @@
 // minmax: parameters, stages, plan and the run (minmax_technique.h).
 #include "techniques/minmax/minmax.h"
 
+#include "scene/ray_reach.h"
 #include "techniques/minmax/minmax_technique.h"
 
 namespace viz::minmax_detail {
@@ -288,6 +289,12 @@ Plan MinmaxTechnique::plan(const scene::Scene& scene, const Settings& settings) 
                           cubes ? "point lights / VPLs need omnidirectional maps" : "no point or area light"});
     const bool maps2D = hasSpot || render::hasLightOfType(scene, scene::LightType::Directional);
     p.features.push_back({"SHADOW_MAPS_2D", maps2D, maps2D ? "spot / directional lights" : "no spot or directional light"});
+    // A far camera (scene/ray_reach.h): the brute-force marches sample a long span by the light.
+    const bool farRays = scene::farRaysPossible(scene);
+    p.features.push_back({"FAR_RAYS", farRays,
+                          farRays ? "spans longer than 8 radii of the scene's bounds: the marches (VPLs, near the "
+                                    "epipole) sample them by the light, and end where the shadow map ends"
+                                  : "every lit span fits in 8 radii of the scene's bounds: uniform march samples"});
     render::planCulledLights(scene, p);
     // force_features=1: every stage runs and every permutation pruned by the scene is compiled in (the
     // traverse shader then carries spot, cookie, cube-map and near-epipole code the scene does not use).

@@ -2,6 +2,7 @@
 #include "techniques/minmax/minmax_technique.h"
 
 #include "core/text.h"
+#include "scene/ray_reach.h"
 
 namespace viz::minmax_detail {
 
@@ -209,6 +210,7 @@ void MinmaxTechnique::allocateTargets(int width, int height) {
 const gl::Program& MinmaxTechnique::traverseProgram(const Plan& plan) {
     std::string key;
     const gl::ShaderDefines defines = permutationDefines(plan, kDefines, &key);
+    mFarRays = featureEnabled(plan, "FAR_RAYS");
     if (key != mProgramKey || !mTraverse) {
         mTraverse = gl::Program::compile(
             {.stages = {"minmax/traverse.comp"}, .defines = defines, .label = kStageTraverse});
@@ -227,6 +229,10 @@ void MinmaxTechnique::traverse(const gl::Program& program, const scene::Scene& s
     program.set("uLinear", s.linear);
     program.set("uPieces", s.spotPieces);
     program.set("uMarchSamples", s.marchSamples);
+    if (mFarRays) {
+        program.set("uFarSpan", float(scene::farSpan(scene)));
+        program.set("uAxisReach", float(scene::depthOfInterest(scene)));
+    }
     program.set("uEpipoleRadius", float(s.epipoleRadius));
     program.set("uWriteCoords", writeCoords);
     glm::vec4 epipoles(-1e9f);

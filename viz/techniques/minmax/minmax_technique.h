@@ -65,6 +65,7 @@ inline const PermutationTable kDefines = {
     {"COOKIE", {nullptr, "LIGHTS_NO_COOKIE"}},
     {"SHADOW_MAPS_CUBE", {nullptr, "SHADOW_NO_CUBE"}},
     {"SHADOW_MAPS_2D", {nullptr, "SHADOW_NO_2D"}},
+    {"FAR_RAYS", {"FAR_RAYS", nullptr}},
 };
 
 // Lights with an epipolar path: spot and directional (2D maps), point (cube maps, per-row gamma ranges).
@@ -231,6 +232,7 @@ private:
     std::vector<int> mBruteLights;  // GpuLights indices marched by brute force
     bool mLog2Prefix = false;       // the plan's PREFIX_LOG2_PASSES
     bool mSvd = false;              // the run's integrand (the plan's INTEGRAND_SVD: integrand=auto decides there)
+    bool mFarRays = false;          // the traverse program's FAR_RAYS (its far-camera uniforms are set)
     minmax::IntegrandChooser mIntegrandChooser;  // integrand=auto, for plan()
     gl::Program mRectify, mRectifyPoint, mGammaRange, mMipmap, mTraverse;
     std::map<int, gl::Program> mPrefix;  // by variant: 1 point light (EPIPOLAR_POINT), 2 LOG2_PASSES

@@ -8,7 +8,6 @@
 #include <string>
 
 #include "core/error.h"
-#include "render/gpu_scene.h"
 #include "gl/stage_clock.h"
 #include "render/intermediates.h"
 #include "render/light_culling.h"
@@ -112,9 +111,6 @@ std::optional<StiffBound> RaymarchTechnique::stiffBound(const std::string& caseC
     return boundOf(kBounds, caseClass);
 }
 
-double RaymarchTechnique::farSpan(const scene::Scene& scene) {
-    return scene::kFarSpanRadii * render::sceneBounds(scene).radius();
-}
 
 Plan RaymarchTechnique::plan(const scene::Scene& scene, const Settings& settings) const {
     Plan p = planEveryStage(mStages);
@@ -176,11 +172,9 @@ Plan RaymarchTechnique::plan(const scene::Scene& scene, const Settings& settings
     }
     {
         // How long a lit span can be (litInterval: d <= zfar, at most 60 mean free paths) against the scene.
-        const double longest = scene.medium.sigma_t() > 0.0
-                                   ? std::min(scene.camera.zfar, scene::kReachMeanFreePaths / scene.medium.sigma_t())
-                                   : scene.camera.zfar;
-        const double far = farSpan(scene);
-        const bool farRays = longest > far;
+        const double longest = scene::longestLitSpan(scene);
+        const double far = scene::farSpan(scene);
+        const bool farRays = scene::farRaysPossible(scene);
         char why[200];
         std::snprintf(why, sizeof why,
                       farRays ? "spans up to %.3g against the scene's radius %.3g: spans over %.3g are sampled by the "

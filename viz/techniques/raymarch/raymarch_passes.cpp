@@ -8,6 +8,7 @@
 #include "render/camera_ray.h"
 #include "render/host_device.h"
 #include "scene/camera.h"
+#include "scene/ray_reach.h"
 #include "techniques/raymarch/raymarch_technique.h"
 
 namespace viz::raymarch_detail {
@@ -43,7 +44,7 @@ void RaymarchTechnique::march(const gl::Program& program, const Plan& plan, cons
     render::bindCameraRay(program, cam, input.width, input.height);
     program.set("uSamples", s.samples);
     program.set("uLightCount", mView.lights().count());
-    if (featureEnabled(plan, "FAR_RAYS")) program.set("uFarSpan", float(farSpan(scene)));
+    if (featureEnabled(plan, "FAR_RAYS")) program.set("uFarSpan", float(scene::farSpan(scene)));
     mMedium.bind(scene.medium);
     // jitter_time=per-frame: frame f draws new offsets (white: the seed moves by a large odd step; blue:
     // each pixel's offset moves by f times the golden ratio, modulo 1, a low-discrepancy walk in time

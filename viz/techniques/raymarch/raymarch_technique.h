@@ -86,9 +86,7 @@ private:
     // leaves its code out (shaders/common/lights.glsl, shadow_map.glsl).
     const gl::Program& marchProgram(const Plan& plan);
     void march(const gl::Program& program, const Plan& plan, const scene::Scene& scene, const FrameInput& input);
-    // The lit span beyond which FAR_RAYS samples by importance (march.comp, placeSample): scene::kFarSpanRadii
-    // radii of the scene's bounds (scene/ray_reach.h).
-    static double farSpan(const scene::Scene& scene);
+
     // The 64x64 blue-noise tile (core/blue_noise.h), made on first use.
     const gl::Texture& blueNoiseTexture();
     static constexpr int kBlueNoiseSize = 64;  // shaders/raymarch/march.comp masks pixel coordinates with 63
