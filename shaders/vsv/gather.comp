@@ -49,6 +49,29 @@ uniform float uDirectBins;    // rays crossing fewer phi bins skip the grid (0: 
 uniform int uDirectSegments;  // shadow-map tests per direct ray
 uniform int uEpipoleRule;     // 1: march the shadow map (direct ray); 2: the paper's fragment-vs-light test
 uniform float uZfar;          // the sky's distance (a ray with d >= uZfar hit nothing)
+#ifdef FAR_TAIL
+// A far camera (scene/ray_reach.h): the grid's phi range ends at the scene's far side. Each ray that goes
+// on past it adds the rest, kTailSamples shadow-map tests placed by the light; a direct ray's segments are
+// placed by the light too (common/march_samples.glsl), over at most 60 mean free paths.
+#define FAR_RAYS
+#include "common/airlight_sample.glsl"
+#include "common/march_samples.glsl"
+uniform float uFarSpan;
+const int kTailSamples = 8;
+
+vec3 farTail(GpuLight L, vec3 w, float t0, float d) {
+    vec2 span = vec2(t0, min(d, 60.0 / max(uSigmaT, 1.0e-30)));
+    vec3 sum = vec3(0.0);
+    if (span.y <= span.x) return sum;
+    for (int i = 0; i < kTailSamples; ++i) {
+        MarchSample m = placeSample(L, w, span, i, kTailSamples, 0.5, 0.0);
+        vec3 x = m.t * w;
+        float V = shadowVisibilityMedium(L, x);
+        if (V > 0.0) sum += airlightSample(V, dot(directionToLight(L, x), w), unshadowedIrradiance(L, x, uSigmaT), m.t, m.dt);
+    }
+    return sum;
+}
+#endif
 
 // Airlight of the ray over [ta, tb] for the whole bin run: the isotropic-source segment integral times
 // the light's angular factor (spot falloff, cookie) averaged by Simpson's rule over the run.
@@ -118,10 +141,21 @@ void main() {
         for (int i = 1; i <= uDirectSegments; ++i) {
             float u = float(i) / float(uDirectSegments);
             float tb = i == uDirectSegments ? d : (byT ? u * d : min(epiTOnEyeRay(S, alpha, u * phiD), d));
+            float tm = 0.5 * (ta + tb);
+#ifdef FAR_TAIL
+            // A long ray: the segments placed by the light over its reach, the test at the sample's point.
+            vec2 span = vec2(0.0, min(d, 60.0 / max(uSigmaT, 1.0e-30)));
+            if (span.y - span.x > uFarSpan) {
+                MarchSample m = placeSample(L, w, span, i - 1, uDirectSegments, 0.5, uFarSpan);
+                ta = m.x0;
+                tb = m.x1;
+                tm = m.t;
+            }
+#endif
             if (tb > ta) {
                 vec3 a = runAirlight(L, geo, w, ta, tb);
                 unlit += a;
-                lit += shadowVisibilityMedium(L, 0.5 * (ta + tb) * w) * a;
+                lit += shadowVisibilityMedium(L, tm * w) * a;
                 ta = tb;
             }
         }
@@ -180,6 +214,11 @@ void main() {
     float fraction = totalPhi > 0.0 ? litPhi / totalPhi : 1.0;
 #ifndef COMBINE_EXACT
     sum = fraction * unshadowed;
+#endif
+#ifdef FAR_TAIL
+    // Past the grid's phi range (the scene's far side), the rest of the ray.
+    float tGridEnd = bins > 0 ? min(epiTOnEyeRay(S, alpha, min(uEpiPhi.x + float(bins) * uEpiPhi.y, phiD)), d) : 0.0;
+    if (phiD > uEpiPhi.x + float(uEpiCells.z) * uEpiPhi.y) sum += farTail(L, w, tGridEnd, d);
 #endif
 
     // Visibility of the fragment's own voxel, interpolated along theta and phi (listing 2 of the paper).

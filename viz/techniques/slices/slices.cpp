@@ -3,6 +3,9 @@
 
 #include "techniques/slices/slices_technique.h"
 
+#include "core/text.h"
+#include "scene/ray_reach.h"
+
 namespace viz::slices_detail {
 
 namespace {
@@ -188,6 +191,16 @@ Plan SlicesTechnique::plan(const scene::Scene& scene, const Settings& settings) 
                                       "the camera frustum to zfar (no light frustum bounds their light)"
                                     : "only spot (or boxed directional) lights: planes in each light's frustum"});
     const Terms t = terms(scene, s);
+    const double reach = scene::depthOfInterest(scene);
+    p.features.push_back({"FAR_TAIL", t.farTail,
+                          t.farTail ? "zfar " + format("%g", scene.camera.zfar) +
+                                          " reaches far past the scene: the unbounded planes end at its far side (" +
+                                          format("%.3g", reach) +
+                                          "), and each ray past it gets 8 shadow-tested samples per unbounded light, "
+                                          "placed by the light"
+                                    : reach < scene.camera.zfar
+                                          ? "weighting=artistic or no unbounded light: the planes end at the scene's far side"
+                                          : "the planes reach zfar (" + format("%g", scene.camera.zfar) + ")"});
     p.features.push_back({"PHYSICAL", t.physical,
                           t.physical ? "weight = integrand of L_air x plane spacing along the ray"
                                      : "weighting=0: the paper's artistic formula and constants"});
@@ -408,7 +421,7 @@ FrameOutput SlicesTechnique::run(const FrameInput& input) {
 
     // ---- resolve ----
     const bool toCompose = stages.run(
-        kResolveIndex, [&] { resolve(t); },
+        kResolveIndex, [&] { resolve(t, scene, input); },
         [&] {
             out.intermediates.push_back(render::textureIntermediate(
                 kAirlight, "L_air", "single-scattered light reaching the eye, decoded from the accumulation",
@@ -446,6 +459,10 @@ Terms SlicesTechnique::terms(const scene::Scene& scene, const SlicesSettings& s)
     t.pick = s.rayPlanes;
     t.cubes = render::hasLightOfType(scene, scene::LightType::Point) ||
               render::hasLightOfType(scene, scene::LightType::Area) || force;
+    // The unbounded lights' planes end at the scene's far side under a far camera; the rest of each ray is
+    // then added on resolve (physical weighting only: the artistic one is no integral to continue).
+    const bool unbounded = t.cubes || (render::hasLightOfType(scene, scene::LightType::Directional) && !s.directionalBox);
+    t.farTail = t.physical && unbounded && scene::depthOfInterest(scene) < scene.camera.zfar;
     return t;
 }
 

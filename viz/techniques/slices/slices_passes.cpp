@@ -1,6 +1,7 @@
 // slices' GL passes: shader permutations, targets, the sampling planes drawn back to front and the resolve.
 #include "techniques/slices/slices_technique.h"
 
+#include "render/camera_ray.h"
 #include "scene/ray_reach.h"
 
 namespace viz::slices_detail {
@@ -248,11 +249,18 @@ void SlicesTechnique::drawPlanes(const scene::Scene& scene, const FrameInput& in
     gl::Framebuffer::bindDefault();
 }
 
-void SlicesTechnique::resolve(const Terms& t) {
+void SlicesTechnique::resolve(const Terms& t, const scene::Scene& scene, const FrameInput& input) {
     gl::ShaderDefines defines;
     if (t.mask) defines.push_back({"CHANNEL_MASK", "1"});
     if (t.blur) defines.push_back({"BLUR", "1"});
-    std::string key = std::string(t.mask ? "m" : "") + (t.blur ? "b" : "");
+    if (t.farTail) {
+        // Spots are left out of the tail: their own code is not needed.
+        defines.push_back({"FAR_TAIL", "1"});
+        defines.push_back({"LIGHTS_NO_SPOT", "1"});
+        defines.push_back({"LIGHTS_NO_COOKIE", "1"});
+        if (!t.cubes) defines.push_back({"SHADOW_NO_CUBE", "1"});
+    }
+    std::string key = std::string(t.mask ? "m" : "") + (t.blur ? "b" : "") + (t.farTail ? (t.cubes ? "tc" : "t") : "");
     auto it = mResolvePrograms.find(key);
     if (it == mResolvePrograms.end()) {
         it = mResolvePrograms
@@ -265,6 +273,16 @@ void SlicesTechnique::resolve(const Terms& t) {
     program.use();
     program.set("uInvStoreScale", float(1.0 / mLastStoreScale));
     program.set("uMaskColour", mMaskColour);
+    if (t.farTail) {
+        render::bindCameraRay(program, scene.camera, input.width, input.height);
+        program.set("uPlanesEnd", float(scene::depthOfInterest(scene)));
+        program.set("uLightCount", mView.lights().count());
+        program.set("uBoxedDirectional", mSettings.directionalBox ? 1 : 0);
+        mMedium.bind(scene.medium);
+        mView.lights().bind();
+        mView.shadows().bind();
+        mView.surface().distance().bindUnit(render::hd::kFirstFreeTextureUnit);
+    }
     mFramebuffer.attachColour(0, mAirlight);
     mFramebuffer.checkComplete();
     mFramebuffer.bind();

@@ -70,6 +70,7 @@ struct Terms {
     bool mask = false, blur = false, clip = true, userClip = false, count = false, cubes = false;
     bool pick = false;  // record the picked pixel's planes (slices.ray_planes)
     bool lastPlane = false;  // draw the last plane alone too (slices.plane, on demand)
+    bool farTail = false;    // a far camera: the resolve adds each ray past the planes' end (resolve.frag)
 };
 
 // One draw set as the pick replay needs it again.
@@ -167,7 +168,7 @@ private:
     // shader finds outside the light frustum (it discards the rest). Adds to mQueryCounts.
     void countFragments(const gl::Program& program, int drawn);
 
-    void resolve(const Terms& t);
+    void resolve(const Terms& t, const scene::Scene& scene, const FrameInput& input);
 
     std::unique_ptr<render::FullscreenTriangle> mTriangle;
     std::map<std::string, gl::Program> mPlanePrograms, mResolvePrograms;

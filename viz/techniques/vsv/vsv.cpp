@@ -3,6 +3,8 @@
 
 #include "techniques/vsv/vsv_technique.h"
 
+#include "scene/ray_reach.h"
+
 namespace viz::vsv_detail {
 
 const ParamTable<VsvSettings>& vsvParams() {
@@ -282,6 +284,13 @@ Plan VsvTechnique::planFor(const scene::Scene& scene, const Settings& settings, 
                         : "an epipole is in view: rays within one alpha cell of it test the shadow map directly")
                  : (epipoleInView ? "epipole=off: the grid is read even at the epipole"
                                   : "no epipole in view (the light and its antipode are off screen)")});
+    // A far camera (scene/ray_reach.h): the grid's phi range ends at the scene's far side.
+    const bool farTail = scene::depthOfInterest(scene) < scene.camera.zfar;
+    p.features.push_back({"FAR_TAIL", farTail,
+                          farTail ? "zfar reaches far past the scene: the grid's phi range ends at its far side; a ray "
+                                    "going on past it adds the rest with 8 shadow-map tests placed by the light, and "
+                                    "direct rays place their segments by the light"
+                                  : "the grid's phi range reaches zfar"});
     p.features.push_back({"DYNAMIC_RANGE", s.dynamicRange,
                           s.dynamicRange
                               ? "alpha, theta, phi ranges cover only the visible part (a run-time choice)"

@@ -50,6 +50,7 @@ inline const PermutationTable kDefines = {
     {"COOKIE", {nullptr, "LIGHTS_NO_COOKIE"}},
     {"SHADOW_MAPS_CUBE", {nullptr, "SHADOW_NO_CUBE"}},
     {"SHADOW_MAPS_2D", {nullptr, "SHADOW_NO_2D"}},
+    {"FAR_TAIL", {"FAR_TAIL", nullptr}},
 };
 
 struct GridSize {
@@ -185,6 +186,7 @@ private:
 
     gl::Program mVoxelize, mPack, mScan, mGather;
     std::string mGatherKey;
+    bool mFarTail = false;  // the gather program's FAR_TAIL (its uFarSpan is set)
     glm::ivec3 mGridSize{0};
     std::vector<gl::Texture> mGrid, mPong, mOccluder;  // per light
     std::vector<const gl::Texture*> mResult;           // per light: where the scan left the grid
