@@ -40,6 +40,9 @@ VIZ_HD_CONST kUnitShadowCube = 3;           // sampler2DArray, R32F: point-light
 VIZ_HD_CONST kUnitShadowCubeVpl = 4;        // sampler2DArray, R32F: VPL cubes (smaller), 6 layers each
 VIZ_HD_CONST kFirstFreeTextureUnit = 8;
 
+// ---- how far along a ray any light counts (scene/ray_reach.h: kReachMeanFreePaths) ----
+VIZ_HD_CONST kReachMeanFreePaths = 60;  // past it the medium passes on less than exp(-60) of any light
+
 // ---- work counters (gl/work_counters.h): what a run costs in units no GPU changes ----
 VIZ_HD_CONST kWorkShadowLookups = 0;        // shadow-map visibility queries (one per point and light)
 VIZ_HD_CONST kWorkShadowTexels = 1;         // shadow-map texels fetched by those queries

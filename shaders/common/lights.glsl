@@ -100,8 +100,14 @@ vec3 lightIntensity(GpuLight L, vec3 p) {
 // cone, outside which A_spot is 0. The cone test solves |v|^2 cos^2 = (v . axis)^2 for v = t w - P on the
 // forward nappe; it is widened a little and falls back to the whole ray when degenerate, so it can only
 // include too much, never cut a lit stretch. Empty when t0 >= t1.
+// The part of [0, d] within kReachMeanFreePaths mean free paths of the eye: past it every light counts
+// as spent (exp(-60) < 1e-26 of what nearer points add).
+float reachAlongRay(float d, float sigma_t) {
+    return sigma_t > 0.0 ? min(d, float(kReachMeanFreePaths) / sigma_t) : d;
+}
+
 vec2 litInterval(GpuLight L, vec3 w, float d, float sigma_t) {
-    float far = sigma_t > 0.0 ? min(d, 60.0 / sigma_t) : d;
+    float far = reachAlongRay(d, sigma_t);
     vec2 r = vec2(0.0, far);
 #ifndef LIGHTS_NO_SPOT
     if (L.info.x != kLightSpot) return r;

@@ -51,7 +51,7 @@ const float uAxisReach = 3.0e38;
 vec3 march(GpuLight L, vec3 w, float d) {
     vec2 span = vec2(0.0, d);
 #ifdef FAR_RAYS
-    span.y = min(d, 60.0 / max(uSigmaT, 1.0e-30));  // litInterval's reach (60 mean free paths)
+    span.y = reachAlongRay(d, uSigmaT);  // litInterval's reach (60 mean free paths)
 #endif
     vec3 sum = vec3(0.0);
     for (int i = 0; i < uMarchSamples; ++i) {

@@ -30,7 +30,7 @@ const int kTailSamples = 8;
 vec3 farTail(ivec2 texel) {
     vec3 w = pixelRay(texel);
     float d = texelFetch(uDistance, texel, 0).r;
-    vec2 span = vec2(uPlanesEnd / dot(w, uForward), min(d, 60.0 / max(uSigmaT, 1.0e-30)));
+    vec2 span = vec2(uPlanesEnd / dot(w, uForward), reachAlongRay(d, uSigmaT));
     vec3 sum = vec3(0.0);
     if (span.y <= span.x) return sum;
     for (int li = 0; li < uLightCount; ++li) {

@@ -60,7 +60,7 @@ uniform float uFarSpan;
 const int kTailSamples = 8;
 
 vec3 farTail(GpuLight L, vec3 w, float t0, float d) {
-    vec2 span = vec2(t0, min(d, 60.0 / max(uSigmaT, 1.0e-30)));
+    vec2 span = vec2(t0, reachAlongRay(d, uSigmaT));
     vec3 sum = vec3(0.0);
     if (span.y <= span.x) return sum;
     for (int i = 0; i < kTailSamples; ++i) {
@@ -144,7 +144,7 @@ void main() {
             float tm = 0.5 * (ta + tb);
 #ifdef FAR_TAIL
             // A long ray: the segments placed by the light over its reach, the test at the sample's point.
-            vec2 span = vec2(0.0, min(d, 60.0 / max(uSigmaT, 1.0e-30)));
+            vec2 span = vec2(0.0, reachAlongRay(d, uSigmaT));
             if (span.y - span.x > uFarSpan) {
                 MarchSample m = placeSample(L, w, span, i - 1, uDirectSegments, 0.5, uFarSpan);
                 ta = m.x0;

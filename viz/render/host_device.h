@@ -6,6 +6,8 @@
 
 #include <glm/glm.hpp>
 
+#include "scene/ray_reach.h"
+
 // Relative to this header, so no extra include directory is needed by anyone who includes it.
 #include "../../shaders/common/host_device.glsl"
 
@@ -28,5 +30,8 @@ static_assert(offsetof(GpuLightCpu, frameY) == 80);
 static_assert(offsetof(GpuLightCpu, info) == 96);
 static_assert(offsetof(GpuLightCpu, shadow) == 112);
 static_assert(offsetof(GpuLightCpu, shadowMatrix) == 128);
+
+// The shaders' reach along a ray (reachAlongRay in common/lights.glsl) is the CPU's (scene/ray_reach.h).
+static_assert(double(hd::kReachMeanFreePaths) == scene::kReachMeanFreePaths);
 
 }  // namespace viz::render

@@ -3,10 +3,11 @@
 // (raymarch's N per ray, the reference's visibility search, slices' planes, vsv's phi cells) over a
 // million units and miss the model's shafts. Two rules, one policy:
 //   - every technique ignores the ray past kReachMeanFreePaths mean free paths (exp(-60) < 1e-26 of
-//     what nearer points add);
-//   - a ray longer than kFarSpanRadii radii of the scene's bounds is "far": raymarch and the reference
-//     sample it by the light (raymarch) or put half their search inside the bounds (reference); slices
-//     and vsv, whose depth samples are shared by every pixel, cover depthOfInterest() instead of zfar.
+//     what nearer points add; the shaders' reachAlongRay, common/lights.glsl);
+//   - a ray longer than kFarSpanRadii radii of the scene's bounds is "far": raymarch and minmax's
+//     marches sample it by the light (common/march_samples.glsl), the reference puts half its search
+//     inside the bounds; slices and vsv, whose depth samples are shared by every pixel, cover
+//     depthOfInterest() instead of zfar, and a ray going on past it adds the rest by the light (FAR_TAIL).
 #pragma once
 
 #include "scene/scene.h"
@@ -26,8 +27,7 @@ inline bool farRaysPossible(const Scene& scene) { return longestLitSpan(scene) >
 
 // The distance along the camera's rays that shared depth samples cover: zfar, unless zfar is longer than
 // kFarSpanRadii radii of the bounds of the meshes; then the farthest corner of those bounds (or point-like
-// light) from the eye, so the air beyond the scene (the haze seen through an opening) is left out. Never
-// more than zfar.
+// light) from the eye. Never more than zfar.
 double depthOfInterest(const Scene& scene);
 
 }  // namespace viz::scene
