@@ -6,9 +6,12 @@
 // is sampled by the light instead: uniform in the angle the ray subtends at a point-like light
 // (equiangular: t = t_P + h tan(theta), dt = dtheta r^2 / h, so E dt is flat away from shadows), or
 // uniform in the transmittance 1 - exp(-sigma_t (t - t0)) for a directional light (dt = dq / (sigma_t
-// (1 - q)) per share dq). Needs uSigmaT (common/medium.glsl), GpuLight and rayLightGeometry.
+// (1 - q)) per share dq). Needs GpuLight (common/lights.glsl) and, for tailByTheLight, the shadow maps
+// (common/shadow_map.glsl).
 #ifndef MARCH_SAMPLES_GLSL
 #define MARCH_SAMPLES_GLSL
+
+#include "common/airlight_sample.glsl"
 
 struct MarchSample {
     float x0, x1, t, dt;
@@ -46,5 +49,21 @@ MarchSample placeSample(GpuLight L, vec3 w, vec2 span, int i, int count, float u
 #endif
     return m;
 }
+
+#ifdef FAR_RAYS
+// L_air of light L over [span.x, span.y] from `count` samples placed by the light, each tested against
+// the shadow map: the rest of a ray past slices' planes and vsv's grid under a far camera (FAR_TAIL).
+vec3 tailByTheLight(GpuLight L, vec3 w, vec2 span, int count) {
+    vec3 sum = vec3(0.0);
+    if (span.y <= span.x) return sum;
+    for (int i = 0; i < count; ++i) {
+        MarchSample m = placeSample(L, w, span, i, count, 0.5, 0.0);
+        vec3 x = m.t * w;
+        float V = shadowVisibilityMedium(L, x);
+        if (V > 0.0) sum += airlightSample(V, dot(directionToLight(L, x), w), unshadowedIrradiance(L, x, uSigmaT), m.t, m.dt);
+    }
+    return sum;
+}
+#endif
 
 #endif  // MARCH_SAMPLES_GLSL

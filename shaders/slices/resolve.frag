@@ -32,17 +32,10 @@ vec3 farTail(ivec2 texel) {
     float d = texelFetch(uDistance, texel, 0).r;
     vec2 span = vec2(uPlanesEnd / dot(w, uForward), reachAlongRay(d, uSigmaT));
     vec3 sum = vec3(0.0);
-    if (span.y <= span.x) return sum;
     for (int li = 0; li < uLightCount; ++li) {
         GpuLight L = gLights[li];
         if (L.info.x == kLightSpot || (uBoxedDirectional != 0 && L.info.x == kLightDirectional)) continue;
-        for (int i = 0; i < kTailSamples; ++i) {
-            MarchSample m = placeSample(L, w, span, i, kTailSamples, 0.5, 0.0);
-            vec3 x = m.t * w;
-            float V = shadowVisibilityMedium(L, x);
-            if (V == 0.0) continue;
-            sum += airlightSample(V, dot(directionToLight(L, x), w), unshadowedIrradiance(L, x, uSigmaT), m.t, m.dt);
-        }
+        sum += tailByTheLight(L, w, span, kTailSamples);
     }
     return sum;
 }

@@ -58,19 +58,6 @@ uniform float uZfar;          // the sky's distance (a ray with d >= uZfar hit n
 #include "common/march_samples.glsl"
 uniform float uFarSpan;
 const int kTailSamples = 8;
-
-vec3 farTail(GpuLight L, vec3 w, float t0, float d) {
-    vec2 span = vec2(t0, reachAlongRay(d, uSigmaT));
-    vec3 sum = vec3(0.0);
-    if (span.y <= span.x) return sum;
-    for (int i = 0; i < kTailSamples; ++i) {
-        MarchSample m = placeSample(L, w, span, i, kTailSamples, 0.5, 0.0);
-        vec3 x = m.t * w;
-        float V = shadowVisibilityMedium(L, x);
-        if (V > 0.0) sum += airlightSample(V, dot(directionToLight(L, x), w), unshadowedIrradiance(L, x, uSigmaT), m.t, m.dt);
-    }
-    return sum;
-}
 #endif
 
 // Airlight of the ray over [ta, tb] for the whole bin run: the isotropic-source segment integral times
@@ -218,7 +205,8 @@ void main() {
 #ifdef FAR_TAIL
     // Past the grid's phi range (the scene's far side), the rest of the ray.
     float tGridEnd = bins > 0 ? min(epiTOnEyeRay(S, alpha, min(uEpiPhi.x + float(bins) * uEpiPhi.y, phiD)), d) : 0.0;
-    if (phiD > uEpiPhi.x + float(uEpiCells.z) * uEpiPhi.y) sum += farTail(L, w, tGridEnd, d);
+    if (phiD > uEpiPhi.x + float(uEpiCells.z) * uEpiPhi.y)
+        sum += tailByTheLight(L, w, vec2(tGridEnd, reachAlongRay(d, uSigmaT)), kTailSamples);
 #endif
 
     // Visibility of the fragment's own voxel, interpolated along theta and phi (listing 2 of the paper).
