@@ -19,25 +19,41 @@ namespace {
 
 class FarCameraTest : public viz::testing::TechniqueTest {
 protected:
-    // The technique's relative L2 against the reference, both at the camera's zfar.
+    // The technique's relative L2 against the reference, both at the camera's zfar, over the pixels whose
+    // first hit the rasteriser and Embree agree on. At a silhouette a pixel centre can lie within the
+    // rasteriser's sub-pixel snapping of an edge: a few pixels in ten thousand (9 of 76,800 on forest at
+    // 320x240) see a tree where the traced ray sees the sky, or the reverse. Such a pixel is wrong by the
+    // air behind it, a million units of haze at zfar 1e6, whatever the technique does.
     static double errorAt(viz::scene::Scene scene, double zfar, const std::string& technique, int w, int h) {
         scene.camera.zfar = zfar;
-        const viz::FrameOutput ref = render(scene, "reference", {}, w, h);
+        const viz::FrameOutput ref = render(scene, "reference", {}, w, h, -1, {"reference.distance"});
+        const viz::FrameOutput raster = render(scene, "raymarch", {}, w, h, 1, {"raymarch.distance"});
         const viz::FrameOutput out = render(scene, technique, {}, w, h);
         EXPECT_TRUE(viz::testing::allFinite(out.airlight)) << technique;
-        return viz::testing::relativeL2(out.airlight, ref.airlight);
+        const viz::Image& traced = *find(ref, "reference.distance")->image;
+        const viz::Image& drawn = *find(raster, "raymarch.distance")->image;
+        viz::Image a = out.airlight, b = ref.airlight;
+        int masked = 0;
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x) {
+                if (std::abs(traced.at(x, y) - drawn.at(x, y)) <= 1e-3f * traced.at(x, y)) continue;
+                ++masked;
+                for (int c = 0; c < 3; ++c) a.at(x, y, c) = b.at(x, y, c) = 0.0f;
+            }
+        EXPECT_LT(masked, w * h / 500) << "the rasteriser and Embree disagree on more than silhouettes";
+        return viz::testing::relativeL2(a, b);
     }
     // Each technique at zfar 1e6 against its error at the scene's own zfar: no worse than a quarter more
-    // (or `slack`), or, where `limit` is given, below it.
+    // (or 0.005), or, where `limit` is given, below it.
     static void expectFarAsNear(const viz::scene::Scene& scene, const std::string& name,
-                                const std::vector<std::pair<std::string, double>>& limits, double slack = 0.005) {
+                                const std::vector<std::pair<std::string, double>>& limits) {
         for (const auto& [technique, limit] : limits) {
             const double nearE = errorAt(scene, scene.camera.zfar, technique, 80, 60);
             const double farE = errorAt(scene, 1e6, technique, 80, 60);
             std::printf("%s: %-8s relative L2 %.4f at zfar %g, %.4f at 1e6\n", name.c_str(), technique.c_str(), nearE,
                         scene.camera.zfar, farE);
             if (limit > 0.0) EXPECT_LT(farE, limit) << technique;
-            else EXPECT_LT(farE, std::max(1.25 * nearE, nearE + slack)) << technique;
+            else EXPECT_LT(farE, std::max(1.25 * nearE, nearE + 0.005)) << technique;
         }
     }
 };
@@ -61,12 +77,12 @@ TEST_F(FarCameraTest, ASunLitSceneReadsAsWithItsOwnZfar) {
 // A sun through a canopy: the pixels near the sun's direction are marched near the epipole, and with
 // zfar 1e6 minmax's march spread its samples over a million units (24 % off, those pixels dark); it now
 // stops where the shadow map ends and adds the lit rest in closed form. slices and vsv were 39 % and 14 %
-// off before FAR_TAIL. The slack: at pixel (44, 21) every shadow-map technique reads 0.86 to 0.87 at zfar
-// 1e6 (0.53 to 0.57 at 80) where the reference reads 0.29 at both, a disagreement of the shadow maps with
-// the traced rays that zfar only enlarges; it alone moves minmax from 0.022 to 0.028.
+// off before FAR_TAIL. Pixel (44, 21) at 80x60 is one the rasteriser and Embree see differently (a trunk's
+// edge): every shadow-map technique reads 0.86 to 0.87 there at zfar 1e6 (0.53 to 0.57 at 80), through to
+// the sky, where the reference reads 0.29, stopped by the trunk at 36.9. errorAt leaves it out.
 TEST_F(FarCameraTest, ASunThroughACanopyReadsAsWithItsOwnZfar) {
     expectFarAsNear(viz::scene::makeBuiltinScene("forest"), "forest",
-                    {{"raymarch", 0}, {"slices", 0}, {"polyvol", 0}, {"minmax", 0}, {"vsv", 0}}, 0.01);
+                    {{"raymarch", 0}, {"slices", 0}, {"polyvol", 0}, {"minmax", 0}, {"vsv", 0}});
 }
 
 }  // namespace
