@@ -85,7 +85,8 @@ GuiApp::GuiApp(const GuiOptions& options, viz::scene::Scene scene, viz::Window& 
         mAnimation.pathFrames = options.pathFrames;
     }
     mSceneWatch.watch(mState.scene);
-    mGeometryHash = viz::scene::geometryContentHash(mScene);
+    viz::scene::stampGeometry(mScene);
+    mGeometryHash = mScene.geometryKey;
     selectTechnique(currentIndex());
     applySessionView();
     const std::string lesson = !options.lesson.empty() ? options.lesson : mSession.lesson;

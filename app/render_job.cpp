@@ -31,6 +31,7 @@ RenderJob::RenderJob(const RenderRequest& request) {
     viz::setRunSettings(mInput, viz::completeSettings(*mTechnique, request.settings));
     mInput.stopAfterStage = request.stopAfter.empty() ? -1 : stageIndex(*mTechnique, request.stopAfter);
     mScene = viz::scene::loadScene(request.scene, request.load);
+    viz::scene::stampGeometry(mScene);  // a motion path runs many frames of it
     mInput.scene = &mScene;
     mInput.width = request.width;
     mInput.height = request.height;

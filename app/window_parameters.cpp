@@ -42,7 +42,8 @@ void GuiApp::reloadScene() {
     try {
         viz::scene::Scene scene = viz::scene::loadScene(mState.scene, mOptions.load);
         mScene = std::move(scene);
-        mGeometryHash = viz::scene::geometryContentHash(mScene);
+        viz::scene::stampGeometry(mScene);
+        mGeometryHash = mScene.geometryKey;
     } catch (const std::exception& e) {
         mError = "reloading " + sceneTitle() + " failed, the scene is kept as it was: " + firstLine(e.what());
         return;

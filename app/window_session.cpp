@@ -84,7 +84,8 @@ void GuiApp::loadLessonScene(const std::string& name) {
     mScene = std::move(scene);
     mState.scene = name;
     mSceneWatch.watch(name);
-    mGeometryHash = viz::scene::geometryContentHash(mScene);
+    viz::scene::stampGeometry(mScene);
+    mGeometryHash = mScene.geometryKey;
     mState.selectedLight = 0;
     mController = CameraController(mScene.camera, orbitDistance(mScene));
     mGizmoArm = kGizmoArm * mController.targetDistance();

@@ -38,9 +38,9 @@ int pixelsNear(const viz::Image& image, glm::vec3 colour) {
 TEST(MeshView, OrbitCameraFramesTheSceneAndTheCameraFromEveryDirection) {
     for (const std::string name : {"grate", "colonnade", "tv-room"}) {
         const viz::scene::Scene scene = viz::scene::makeBuiltinScene(name);
-        const viz::render::Bounds bounds = viz::render::sceneBounds(scene);
+        const viz::scene::Bounds bounds = viz::scene::sceneBounds(scene);
         const glm::dvec3 eye = scene.camera.position;
-        const glm::dvec3 lo = glm::min(bounds.min, eye), hi = glm::max(bounds.max, eye);
+        const glm::dvec3 lo = glm::min(bounds.lo, eye), hi = glm::max(bounds.hi, eye);
         for (double yaw : {-170.0, 0.0, 35.0, 120.0})
             for (double pitch : {-60.0, 0.0, 25.0, 85.0}) {
                 const glm::mat4 vp = viz::render::orbitViewProjection(scene, bounds, OrbitView{yaw, pitch, 1.0}, 160, 120);

@@ -95,8 +95,8 @@ LightDescription describeLights(const scene::Scene& scene, glm::dvec3 eye, int a
         throw InputError("area_samples must be at least 1 (got " + std::to_string(areaSamples) + ")");
     }
     // Scene bounds, eye-relative: they size every shadow map.
-    const Bounds world = sceneBounds(scene);
-    const glm::dvec3 center = world.center() - eye;
+    const scene::Bounds world = scene::sceneBounds(scene);
+    const glm::dvec3 center = world.centre() - eye;
     const double radius = std::max(world.radius(), 1e-6);
     const double biasConstant = kBiasRelative * radius;
 

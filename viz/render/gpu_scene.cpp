@@ -153,23 +153,7 @@ Geometry buildGeometry(const scene::Scene& scene) {
 
 }  // namespace
 
-Bounds sceneBounds(const scene::Scene& scene) {
-    Bounds b;
-    b.min = glm::dvec3(std::numeric_limits<double>::max());
-    b.max = glm::dvec3(std::numeric_limits<double>::lowest());
-    bool any = false;
-    for (const auto& mesh : scene.meshes) {
-        for (const auto& p : mesh.positions) {
-            b.min = glm::min(b.min, glm::dvec3(p));
-            b.max = glm::max(b.max, glm::dvec3(p));
-            any = true;
-        }
-    }
-    if (!any) b = Bounds{};
-    return b;
-}
-
-GpuScene::GpuScene(const scene::Scene& scene) : mBounds(sceneBounds(scene)) {
+GpuScene::GpuScene(const scene::Scene& scene) : mBounds(scene::sceneBounds(scene)) {
     const TexturePacking packing = packTextures(scene);
     mTextures = uploadTextures(scene, packing);
 

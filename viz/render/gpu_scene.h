@@ -15,6 +15,7 @@
 #include "gl/texture.h"
 #include "gl/vertex_array.h"
 #include "render/host_device.h"
+#include "scene/bounds.h"
 #include "scene/scene.h"
 
 namespace viz::render {
@@ -33,16 +34,6 @@ struct GpuVertex {
 };
 static_assert(sizeof(GpuVertex) == 36);
 
-struct Bounds {
-    glm::dvec3 min{0.0};
-    glm::dvec3 max{0.0};
-    glm::dvec3 center() const { return 0.5 * (min + max); }
-    double radius() const { return 0.5 * glm::length(max - min); }  // of the bounding sphere
-};
-
-// World-space bounds of every mesh vertex of a scene.
-Bounds sceneBounds(const scene::Scene& scene);
-
 class GpuScene {
 public:
     explicit GpuScene(const scene::Scene& scene);
@@ -53,7 +44,7 @@ public:
     // Materials SSBO at kBindingMaterials, the texture array at kUnitMaterialTextures.
     void bindMaterials() const;
 
-    const Bounds& bounds() const { return mBounds; }  // world space
+    const scene::Bounds& bounds() const { return mBounds; }  // world space
     int triangleCount() const { return mIndexCount / 3; }
     int materialCount() const { return mMaterialCount; }
     const gl::Buffer& vertexBuffer() const { return mVertices; }
@@ -67,7 +58,7 @@ private:
     gl::Buffer mMaterials;
     gl::Texture mTextures;
     gl::VertexArray mVao;
-    Bounds mBounds;
+    scene::Bounds mBounds;
     int mIndexCount = 0;
     int mMaterialCount = 0;
 };

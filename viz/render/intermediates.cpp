@@ -3,7 +3,6 @@
 #include <algorithm>
 
 #include "gl/readback.h"
-#include "scene/scene_source.h"
 
 namespace viz::render {
 
@@ -32,10 +31,6 @@ Image readRgb(const gl::Texture& texture) {
 bool hasLightOfType(const scene::Scene& scene, scene::LightType type) {
     return std::any_of(scene.lights.begin(), scene.lights.end(),
                        [&](const scene::Light& l) { return l.type == type; });
-}
-
-std::size_t geometryFingerprint(const scene::Scene& scene) {
-    return std::size_t(scene::geometryContentHash(scene));
 }
 
 void readBackAirlight(const FrameInput& input, const gl::Texture& airlight, FrameOutput& out) {

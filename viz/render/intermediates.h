@@ -23,9 +23,5 @@ void readBackAirlight(const FrameInput& input, const gl::Texture& airlight, Fram
 
 bool hasLightOfType(const scene::Scene& scene, scene::LightType type);
 
-// A hash of a scene's meshes, materials and textures (scene::geometryContentHash), used with the scene's
-// address to decide whether a GpuScene can be reused when only the camera or lights moved. Counts alone
-// are not enough: an edited or rescaled scene at the same address kept its stale upload.
-std::size_t geometryFingerprint(const scene::Scene& scene);
 
 }  // namespace viz::render

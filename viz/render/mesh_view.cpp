@@ -17,8 +17,8 @@ namespace {
 constexpr double kOrbitFov = 0.8;  // radians, vertical
 
 // The box holding the scene's bounds and the main camera's eye (world space).
-Bounds withCamera(const Bounds& bounds, const glm::dvec3& eye) {
-    return {glm::min(bounds.min, eye), glm::max(bounds.max, eye)};
+scene::Bounds withCamera(const scene::Bounds& bounds, const glm::dvec3& eye) {
+    return {glm::min(bounds.lo, eye), glm::max(bounds.hi, eye), false};
 }
 
 void cross(std::vector<glm::vec3>& out, glm::dvec3 p, const glm::dvec3& eye, double size) {
@@ -32,10 +32,10 @@ void cross(std::vector<glm::vec3>& out, glm::dvec3 p, const glm::dvec3& eye, dou
 
 }  // namespace
 
-glm::mat4 orbitViewProjection(const scene::Scene& scene, const Bounds& bounds, const OrbitView& orbit, int width,
+glm::mat4 orbitViewProjection(const scene::Scene& scene, const scene::Bounds& bounds, const OrbitView& orbit, int width,
                               int height) {
-    const Bounds box = withCamera(bounds, scene.camera.position);
-    const glm::dvec3 target = box.center() - scene.camera.position;  // eye-relative
+    const scene::Bounds box = withCamera(bounds, scene.camera.position);
+    const glm::dvec3 target = box.centre() - scene.camera.position;  // eye-relative
     const double radius = std::max(box.radius(), 1e-6);
     const double distance = radius / std::sin(0.5 * kOrbitFov) / std::max(orbit.zoom, 1e-3);
     const double yaw = glm::radians(orbit.yawDegrees);
@@ -122,11 +122,11 @@ void MeshView::begin(const scene::Scene& scene, const GpuScene& gpuScene, const 
     mSurfaces.set("uShade", 1);
     gpuScene.draw();
     // Markers on top of the surfaces where they are hidden: drawn without depth test by lines().
-    const Bounds box = withCamera(gpuScene.bounds(), scene.camera.position);
+    const scene::Bounds box = withCamera(gpuScene.bounds(), scene.camera.position);
     const double size = 0.03 * std::max(box.radius(), 1e-6);
     lines(cameraFrustumLines(scene.camera, width, height, 0.25 * std::max(box.radius(), 1e-6)),
           glm::vec4(0.35f, 0.65f, 1.0f, 1.0f));
-    lines(lightMarkerLines(scene, box.center(), size), glm::vec4(1.0f, 0.85f, 0.3f, 1.0f));
+    lines(lightMarkerLines(scene, box.centre(), size), glm::vec4(1.0f, 0.85f, 0.3f, 1.0f));
 }
 
 void MeshView::bindTarget() const {

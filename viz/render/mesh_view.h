@@ -33,7 +33,7 @@ inline OrbitView orbitOf(const FrameControls& c) { return {c.orbitYaw, c.orbitPi
 // The orbit camera's view-projection for a width x height image, taking the main camera's eye-relative
 // space to clip space. The orbit target is the centre of the box holding the scene's bounds and the
 // main camera; the distance fits that box's bounding sphere in the vertical field of view.
-glm::mat4 orbitViewProjection(const scene::Scene& scene, const Bounds& bounds, const OrbitView& orbit, int width,
+glm::mat4 orbitViewProjection(const scene::Scene& scene, const scene::Bounds& bounds, const OrbitView& orbit, int width,
                               int height);
 
 // Line segments (pairs of points, eye-relative to scene.camera) for the main camera's frustum, from the

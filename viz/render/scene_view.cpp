@@ -6,6 +6,7 @@
 #include "render/intermediates.h"
 #include "render/shadow_map_markers.h"
 #include "scene/camera.h"
+#include "scene/scene_source.h"
 
 namespace viz::render {
 
@@ -51,8 +52,10 @@ void SceneViewPasses::createPasses() {
 void SceneViewPasses::buildShadows(const scene::Scene& scene, int shadowMapSize, int areaSamples,
                                    std::vector<Intermediate>& out, const std::string& prefix) {
     createPasses();
-    // Geometry is uploaded once per scene; a camera move (the window) reuses it.
-    const std::size_t fingerprint = geometryFingerprint(scene);
+    // Geometry is uploaded once per scene; a camera move (the window) reuses it. The key is the content
+    // hash of meshes, materials and textures, not the scene's address or counts: an edited or rescaled
+    // scene at the same address kept its stale upload. A stamped scene has it without hashing.
+    const std::uint64_t fingerprint = scene::geometryKeyOf(scene);
     if (mSceneSource != &scene || mSceneFingerprint != fingerprint || !mGpuScene) {
         mGpuScene = std::make_unique<GpuScene>(scene);
         mSceneSource = &scene;

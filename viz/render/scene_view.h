@@ -86,7 +86,7 @@ private:
     void createPasses();
 
     const scene::Scene* mSceneSource = nullptr;
-    std::size_t mSceneFingerprint = 0;
+    std::uint64_t mSceneFingerprint = 0;
     std::unique_ptr<GpuScene> mGpuScene;
     std::unique_ptr<GpuLights> mLights;
     // Created at first use: their programs need a current GL context, listing a technique does not.

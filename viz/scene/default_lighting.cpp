@@ -5,23 +5,6 @@
 
 namespace viz::scene {
 
-Bounds sceneBounds(const Scene& scene) {
-    Bounds b;
-    for (const Mesh& mesh : scene.meshes) {
-        for (const glm::vec3& p : mesh.positions) {
-            const glm::dvec3 q(p);
-            if (b.empty) {
-                b.lo = b.hi = q;
-                b.empty = false;
-            } else {
-                b.lo = glm::min(b.lo, q);
-                b.hi = glm::max(b.hi, q);
-            }
-        }
-    }
-    return b;
-}
-
 Light defaultSpotLight(const Scene& scene) {
     const Bounds b = sceneBounds(scene);
     const glm::dvec3 centre = b.centre();

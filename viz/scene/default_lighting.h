@@ -5,19 +5,10 @@
 
 #include <glm/glm.hpp>
 
+#include "scene/bounds.h"
 #include "scene/scene.h"
 
 namespace viz::scene {
-
-struct Bounds {
-    glm::dvec3 lo{0.0}, hi{0.0};
-    bool empty = true;
-    glm::dvec3 centre() const { return 0.5 * (lo + hi); }
-    double diagonal() const { return empty ? 0.0 : glm::length(hi - lo); }
-};
-
-// The box around every mesh vertex (empty when there are none).
-Bounds sceneBounds(const Scene& scene);
 
 // A spot light 2.5 bounding radii above the model's centre, shifted a radius towards the camera's
 // right so its shadow leans across the view, aimed at the centre with a cone that covers the bounding

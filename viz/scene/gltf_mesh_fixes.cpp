@@ -6,7 +6,7 @@
 
 #include <tiny_gltf.h>
 
-#include "scene/default_lighting.h"
+#include "scene/bounds.h"
 
 namespace viz::scene::gltf {
 

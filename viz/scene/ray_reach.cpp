@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "scene/default_lighting.h"
+#include "scene/bounds.h"
 
 namespace viz::scene {
 

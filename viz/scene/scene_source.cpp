@@ -124,9 +124,18 @@ std::uint64_t geometryContentHash(const Scene& scene) {
     return h.result();
 }
 
+void stampGeometry(Scene& scene) {
+    const std::uint64_t hash = geometryContentHash(scene);
+    scene.geometryKey = hash != 0 ? hash : 1;
+}
+
+std::uint64_t geometryKeyOf(const Scene& scene) {
+    return scene.geometryKey != 0 ? scene.geometryKey : geometryContentHash(scene);
+}
+
 std::string sceneContentHash(const Scene& scene) {
     Hasher h;
-    hashGeometry(h, scene);
+    h.value(geometryKeyOf(scene));  // a stamped scene's geometry is not hashed again
     h.value(std::uint64_t(scene.lights.size()));
     for (const Light& l : scene.lights) {
         h.value(int(l.type));

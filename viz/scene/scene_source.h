@@ -17,11 +17,20 @@ namespace viz::scene {
 Scene loadScene(const std::string& nameOrPath, const LoadOptions& options = {});
 
 // Stable 64-bit FNV-1a hash, as 16 hex digits, of everything that affects rendering: geometry,
-// materials, texture bytes, lights, camera and medium (not names or notes). Same value on every run.
+// materials, texture bytes (through geometryKeyOf), lights, camera and medium (not names or notes). Same
+// value on every run, stamped or not.
 std::string sceneContentHash(const Scene& scene);
 
 // The same hash over meshes, materials and textures only: what a GPU upload of the scene depends on.
 std::uint64_t geometryContentHash(const Scene& scene);
+
+// Sets scene.geometryKey to geometryContentHash (never 0): the caller's word that it will not change the
+// scene's meshes, materials or textures without stamping it again. Who runs many frames of one scene
+// stamps it once after loading: the window, bench, report, a render along a motion path.
+void stampGeometry(Scene& scene);
+
+// scene.geometryKey when stamped, else geometryContentHash(scene).
+std::uint64_t geometryKeyOf(const Scene& scene);
 
 // 64-bit FNV-1a of size bytes, continuing from 'hash' (the FNV offset basis to start).
 constexpr std::uint64_t kFnvOffsetBasis = 0xcbf29ce484222325ULL;

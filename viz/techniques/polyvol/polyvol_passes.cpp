@@ -348,13 +348,13 @@ void PolyvolTechnique::drawWire(const FrameInput& input, const render::GpuLightC
 bool PolyvolTechnique::setOrbitClipBox(const scene::Scene& scene) {
     const render::GpuScene& meshes = mView.gpuScene();  // its bounds are computed once per scene
     if (meshes.triangleCount() == 0) return false;
-    render::Bounds box = meshes.bounds();
+    scene::Bounds box = meshes.bounds();
     for (const scene::Light& l : scene.lights)
-        if (l.type != scene::LightType::Directional) box.min = glm::min(box.min, l.position), box.max = glm::max(box.max, l.position);
-    const glm::dvec3 margin(0.02 * glm::length(box.max - box.min));
+        if (l.type != scene::LightType::Directional) box.lo = glm::min(box.lo, l.position), box.hi = glm::max(box.hi, l.position);
+    const glm::dvec3 margin(0.02 * glm::length(box.hi - box.lo));
     const glm::dvec3& eye = scene.camera.position;
-    mWireProgram.set("uClipMin", render::toEyeRelative(box.min - margin, eye));
-    mWireProgram.set("uClipMax", render::toEyeRelative(box.max + margin, eye));
+    mWireProgram.set("uClipMin", render::toEyeRelative(box.lo - margin, eye));
+    mWireProgram.set("uClipMax", render::toEyeRelative(box.hi + margin, eye));
     return true;
 }
 

@@ -3,6 +3,7 @@
 #include "techniques/vsv/ivsv_technique.h"
 
 #include "scene/ray_reach.h"
+#include "scene/scene_source.h"
 
 namespace viz::ivsv_detail {
 
@@ -83,7 +84,7 @@ void IvsvTechnique::uploadVpls(const scene::Scene& scene, int width, int height,
 }
 
 void IvsvTechnique::buildIsm(const scene::Scene& scene, const scene::Light& light, int points, int count, int tile, int fillLevels) {
-    const std::size_t key = render::geometryFingerprint(scene) ^ (std::size_t(points) * 2654435761u);
+    const std::size_t key = std::size_t(scene::geometryKeyOf(scene)) ^ (std::size_t(points) * 2654435761u);
     if (key != mPointsKey || &scene != mPointsScene) {
         mCloudWorld = vsv::samplePointCloud(scene, points, light.mesh);
         mPointsKey = key;
