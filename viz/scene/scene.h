@@ -92,8 +92,8 @@ struct Scene {
     Medium medium;
     std::vector<std::string> notes;  // what the loader decided on its own, e.g. "no camera: framed the scene"
     // 0, or the owner's word that meshes, materials and textures are final: their content hash, set by
-    // stampGeometry (scene/bounds.h). A stamped scene's bounds are walked and its upload keyed once.
-    // Copies keep it; whoever changes a stamped scene's geometry stamps it again or zeroes this.
+    // stampGeometry (scene_source.h). A stamped scene's bounds (scene/bounds.h) are walked and its upload
+    // keyed once. Copies keep it; whoever changes a stamped scene's geometry stamps it again or zeroes it.
     std::uint64_t geometryKey = 0;
 };
 
