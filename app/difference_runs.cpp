@@ -6,12 +6,14 @@
 #include <epoxy/gl.h>
 
 #include "core/text.h"
+#include "scene/scene_source.h"
 
 namespace airlight {
 
-std::string sceneKey(const viz::scene::Scene& scene, std::uint64_t geometryHash) {
+std::string sceneKey(const viz::scene::Scene& scene) {
     char buf[128];
-    std::snprintf(buf, sizeof buf, "%016llx %.17g %.17g %.17g", static_cast<unsigned long long>(geometryHash),
+    std::snprintf(buf, sizeof buf, "%016llx %.17g %.17g %.17g",
+                  static_cast<unsigned long long>(viz::scene::geometryKeyOf(scene)),
                   scene.medium.sigma_s, scene.medium.sigma_a, scene.medium.g);
     std::string key = buf;
     for (const auto& l : scene.lights)
@@ -32,7 +34,7 @@ std::string runKey(const std::string& id, const DifferenceRequest& request) {
     std::snprintf(buf, sizeof buf, " %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g", c.position.x,
                   c.position.y, c.position.z, c.forward.x, c.forward.y, c.forward.z, c.up.x, c.up.y, c.up.z, c.yfov);
     key += buf;
-    key += " " + sceneKey(*request.scene, request.geometryHash);
+    key += " " + sceneKey(*request.scene);
     for (const auto& [name, value] : request.settings) key += " " + name + "=" + viz::format("%.17g", value);
     return key;
 }
@@ -63,7 +65,7 @@ const DifferenceRuns::Run* DifferenceRuns::get(const std::string& id, const Diff
     }
     // The worker keeps its own copy of the scene: handed the new one when the medium, lights or geometry
     // changed.
-    const std::string scene = sceneKey(*request.scene, request.geometryHash);
+    const std::string scene = sceneKey(*request.scene);
     if (!mWorker) mWorker = &mPool.worker(Worker::Differences, *request.scene);
     else if (mWorkerSceneKey != scene) mWorker->setScene(*request.scene);
     mWorkerSceneKey = scene;

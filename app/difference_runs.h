@@ -26,7 +26,6 @@ namespace airlight {
 // What a run of one technique depends on, as the window sees it now.
 struct DifferenceRequest {
     const viz::scene::Scene* scene = nullptr;  // medium, lights, geometry (the camera is `camera`)
-    std::uint64_t geometryHash = 0;            // of `scene`'s meshes: a reloaded file with moved geometry
     viz::scene::Camera camera;
     glm::ivec2 size{0};
     viz::Settings settings;  // complete: the technique's defaults under the session's and the command line's
@@ -35,8 +34,9 @@ struct DifferenceRequest {
     bool hold = false;
 };
 
-// The medium, lights and geometry: what a CPU worker's scene copy depends on besides the camera.
-std::string sceneKey(const viz::scene::Scene& scene, std::uint64_t geometryHash);
+// The medium, lights and geometry (geometryKeyOf: the window's scene is stamped, a reloaded file with
+// moved geometry has another key): what a CPU worker's scene copy depends on besides the camera.
+std::string sceneKey(const viz::scene::Scene& scene);
 
 // Everything a run depends on: technique, size, camera, scene and settings.
 std::string runKey(const std::string& id, const DifferenceRequest& request);

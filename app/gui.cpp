@@ -86,7 +86,6 @@ GuiApp::GuiApp(const GuiOptions& options, viz::scene::Scene scene, viz::Window& 
     }
     mSceneWatch.watch(mState.scene);
     viz::scene::stampGeometry(mScene);
-    mGeometryHash = mScene.geometryKey;
     selectTechnique(currentIndex());
     applySessionView();
     const std::string lesson = !options.lesson.empty() ? options.lesson : mSession.lesson;

@@ -425,7 +425,7 @@ private:
     WindowAnimation mAnimation;  // P
     SessionState mSession;  // as loaded (or defaults); settings of techniques not yet visited come from it
     std::string mNotice;    // last session message, shown in the status line
-    viz::scene::Scene mScene;  // the camera follows the controller
+    viz::scene::Scene mScene;  // the camera follows the controller; stamped on every load (geometryKey)
     viz::Window& mWindow;
     CameraController mController;
     double mGizmoArm = 1.0;  // scene units (kGizmoArm of the scene camera's orbit distance)
@@ -495,9 +495,6 @@ private:
     Rect mTimelineRect;
     bool mDragTimeline = false;
     std::optional<std::string> mPendingScene;  // picked in the panel, loaded by loadPendingScene
-    // geometryContentHash(mScene), computed when a scene is loaded (the window never edits geometry):
-    // the difference views' keys read it instead of hashing every mesh and texture per refresh.
-    std::uint64_t mGeometryHash = 0;
     SceneFileWatch mSceneWatch;                // the scene file, when the scene is one
     bool mTextTab = false, mTextEnter = false;  // Tab / Enter pressed in a text field this frame
     ParameterPanel mPanel;  // the scene and parameter panel's own state: its sliders, lists and path field

@@ -15,7 +15,7 @@
 
 namespace airlight {
 
-std::string pathLoopKey(std::uint64_t geometryHash, const viz::scene::Scene& scene, const viz::scene::MotionPath& path,
+std::string pathLoopKey(const viz::scene::Scene& scene, const viz::scene::MotionPath& path,
                         const viz::scene::Pose& start, int frames, int width, int height, const viz::Settings& settings) {
     // The start pose, the medium and every light's properties through the scene hash of a scene without
     // geometry (the geometry's own hash stands for it).
@@ -24,7 +24,7 @@ std::string pathLoopKey(std::uint64_t geometryHash, const viz::scene::Scene& sce
     viz::scene::applyPose(start, posed);
     std::ostringstream key;
     key.precision(17);
-    key << "geometry " << geometryHash << " pose " << viz::scene::sceneContentHash(posed) << " path "
+    key << "geometry " << viz::scene::geometryKeyOf(scene) << " pose " << viz::scene::sceneContentHash(posed) << " path "
         << viz::scene::describeMotionPath(path) << " frames " << frames << " size " << width << "x" << height;
     for (const auto& [name, value] : settings) key << " " << name << "=" << value;
     return key.str();

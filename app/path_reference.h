@@ -38,8 +38,9 @@ struct PathLoop {
 PathLoop makePathLoop(const viz::scene::Scene& scene, const viz::scene::MotionPath& path, const viz::scene::Pose& start,
                       int frames, int width, int height, const viz::Settings& settings);
 
-// What identifies a loop's frames: geometry hash, medium, path, frames, start pose, size and settings.
-std::string pathLoopKey(std::uint64_t geometryHash, const viz::scene::Scene& scene, const viz::scene::MotionPath& path,
+// What identifies a loop's frames: geometry (geometryKeyOf), medium, path, frames, start pose, size and
+// settings.
+std::string pathLoopKey(const viz::scene::Scene& scene, const viz::scene::MotionPath& path,
                         const viz::scene::Pose& start, int frames, int width, int height, const viz::Settings& settings);
 
 class PathReference {

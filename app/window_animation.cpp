@@ -21,7 +21,7 @@ void GuiApp::togglePlaying() {
         // Every frame is the path's function of where play starts: the camera and lights as they are now.
         // Playing again after a pause continues the loop, unless the camera or the lights were moved in
         // between: then the loop starts again from there.
-        if (!mAnimation.pathStart || !mAnimation.pathShown || mAnimation.pathScene != mGeometryHash ||
+        if (!mAnimation.pathStart || !mAnimation.pathShown || mAnimation.pathScene != mScene.geometryKey ||
             !samePose(*mAnimation.pathShown, mController.camera(), mScene.lights))
             startPathLoop();
         return;
@@ -45,7 +45,7 @@ void GuiApp::advanceAnimation(double dt) {
     // still frame, as with the light's orbit, unless the comparison grid plays.
     if (mAnimation.path && mAnimation.pathStart && (technique().needsGl() || mComparison.isOpen())) {
         // Another scene loaded while playing: the loop starts again from it.
-        if (mAnimation.pathScene != mGeometryHash) startPathLoop();
+        if (mAnimation.pathScene != mScene.geometryKey) startPathLoop();
         // 30 path frames per second of play (under automation, one per window frame).
         const int frame = int(std::llround((mAnimation.clock - mAnimation.pathClock) * 30.0) % mAnimation.pathFrames);
         if (frame != mAnimation.pathFrame) playPathFrame(frame);
@@ -64,7 +64,7 @@ void GuiApp::advanceAnimation(double dt) {
 void GuiApp::startPathLoop() {
     mAnimation.pathStart = viz::scene::Pose{mController.camera(), mScene.lights};
     mAnimation.pathShown.reset();
-    mAnimation.pathScene = mGeometryHash;
+    mAnimation.pathScene = mScene.geometryKey;
     mAnimation.centre = mController.target();
     mAnimation.pathClock = mAnimation.clock;
     mAnimation.pathFrame = 0;
@@ -112,7 +112,7 @@ std::shared_ptr<const viz::Image> GuiApp::pathReferenceFrame(bool forGrid) {
     const glm::ivec2 gridSize = mComparison.isOpen() ? mComparison.size() : size;
     const viz::Settings settings = givenSettings("reference");
     const auto keyOf = [&](const viz::scene::Pose& from, glm::ivec2 at) {
-        return pathLoopKey(mGeometryHash, mScene, *mAnimation.path, from, mAnimation.pathFrames, at.x, at.y, settings);
+        return pathLoopKey(mScene, *mAnimation.path, from, mAnimation.pathFrames, at.x, at.y, settings);
     };
     const bool gridDrives = mComparison.isOpen();
     const viz::scene::Pose& wantedStart = gridDrives ? gridStart : start;

@@ -124,7 +124,7 @@ const DifferenceRuns::Run* GuiApp::otherRun(const std::string& id) {
 }
 
 DifferenceRequest GuiApp::differenceRequest(const std::string& id) {
-    DifferenceRequest r{&mScene, mGeometryHash, mController.camera(), mOutputSize, givenSettings(id), mAnimation.playing};
+    DifferenceRequest r{&mScene, mController.camera(), mOutputSize, givenSettings(id), mAnimation.playing};
     try {
         r.settings = completedOtherSettings(id);
     } catch (const std::exception&) {

@@ -43,7 +43,6 @@ void GuiApp::reloadScene() {
         viz::scene::Scene scene = viz::scene::loadScene(mState.scene, mOptions.load);
         mScene = std::move(scene);
         viz::scene::stampGeometry(mScene);
-        mGeometryHash = mScene.geometryKey;
     } catch (const std::exception& e) {
         mError = "reloading " + sceneTitle() + " failed, the scene is kept as it was: " + firstLine(e.what());
         return;

@@ -85,7 +85,6 @@ void GuiApp::loadLessonScene(const std::string& name) {
     mState.scene = name;
     mSceneWatch.watch(name);
     viz::scene::stampGeometry(mScene);
-    mGeometryHash = mScene.geometryKey;
     mState.selectedLight = 0;
     mController = CameraController(mScene.camera, orbitDistance(mScene));
     mGizmoArm = kGizmoArm * mController.targetDistance();

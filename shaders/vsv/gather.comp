@@ -125,14 +125,17 @@ void main() {
         vec3 lit = vec3(0.0), unlit = vec3(0.0);
         bool byT = L.info.x == kLightDirectional || !(phiD > 0.0);
         float ta = 0.0;
+#ifdef FAR_TAIL
+        // A long ray: the segments placed by the light over its reach, the test at the sample's point.
+        vec2 span = vec2(0.0, reachAlongRay(d, uSigmaT));
+        bool byLight = span.y > uFarSpan;
+#endif
         for (int i = 1; i <= uDirectSegments; ++i) {
             float u = float(i) / float(uDirectSegments);
             float tb = i == uDirectSegments ? d : (byT ? u * d : min(epiTOnEyeRay(S, alpha, u * phiD), d));
             float tm = 0.5 * (ta + tb);
 #ifdef FAR_TAIL
-            // A long ray: the segments placed by the light over its reach, the test at the sample's point.
-            vec2 span = vec2(0.0, reachAlongRay(d, uSigmaT));
-            if (span.y - span.x > uFarSpan) {
+            if (byLight) {
                 MarchSample m = placeSample(L, w, span, i - 1, uDirectSegments, 0.5, uFarSpan);
                 ta = m.x0;
                 tb = m.x1;

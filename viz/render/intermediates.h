@@ -23,5 +23,4 @@ void readBackAirlight(const FrameInput& input, const gl::Texture& airlight, Fram
 
 bool hasLightOfType(const scene::Scene& scene, scene::LightType type);
 
-
 }  // namespace viz::render

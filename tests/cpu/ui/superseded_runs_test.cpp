@@ -56,7 +56,7 @@ TEST(SupersededRuns, ADifferenceViewNeverKeepsASupersededPassUnderTheNewRequest)
     RunPool pool(gatedMaker(gate));
     DifferenceRuns runs(pool);
     viz::scene::Scene scene;
-    DifferenceRequest request{&scene, 0, cameraAt(1.0), {4, 3}, {}};
+    DifferenceRequest request{&scene, cameraAt(1.0), {4, 3}, {}};
     EXPECT_EQ(runs.get("gated", request), nullptr);  // started
     ASSERT_TRUE(gate->waitEntered(1));
     request.camera = cameraAt(2.0);  // the camera moves while the first pass runs
@@ -80,7 +80,7 @@ TEST(SupersededRuns, WhilePlayingACpuTechniquesLastImageStandsInsteadOfARequestP
     RunPool pool(gatedMaker(gate));
     DifferenceRuns runs(pool);
     viz::scene::Scene scene;
-    DifferenceRequest request{&scene, 0, cameraAt(1.0), {4, 3}, {}, true};
+    DifferenceRequest request{&scene, cameraAt(1.0), {4, 3}, {}, true};
     EXPECT_EQ(runs.get("gated", request), nullptr);  // nothing yet: the first request starts
     ASSERT_TRUE(gate->waitEntered(1));
     for (int frame = 2; frame <= 5; ++frame) {  // the light moves every played frame

@@ -191,7 +191,7 @@ Plan SlicesTechnique::plan(const scene::Scene& scene, const Settings& settings) 
                                       "the camera frustum to zfar (no light frustum bounds their light)"
                                     : "only spot (or boxed directional) lights: planes in each light's frustum"});
     const Terms t = terms(scene, s);
-    const double reach = scene::depthOfInterest(scene);
+    const double reach = t.planesEnd;
     p.features.push_back({"FAR_TAIL", t.farTail,
                           t.farTail ? "zfar " + format("%g", scene.camera.zfar) +
                                           " reaches far past the scene: the unbounded planes end at its far side (" +
@@ -462,7 +462,8 @@ Terms SlicesTechnique::terms(const scene::Scene& scene, const SlicesSettings& s)
     // The unbounded lights' planes end at the scene's far side under a far camera; the rest of each ray is
     // then added on resolve (physical weighting only: the artistic one is no integral to continue).
     const bool unbounded = t.cubes || (render::hasLightOfType(scene, scene::LightType::Directional) && !s.directionalBox);
-    t.farTail = t.physical && unbounded && scene::depthOfInterest(scene) < scene.camera.zfar;
+    t.planesEnd = scene::depthOfInterest(scene);
+    t.farTail = t.physical && unbounded && t.planesEnd < scene.camera.zfar;
     return t;
 }
 

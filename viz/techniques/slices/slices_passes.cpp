@@ -2,7 +2,6 @@
 #include "techniques/slices/slices_technique.h"
 
 #include "render/camera_ray.h"
-#include "scene/ray_reach.h"
 
 namespace viz::slices_detail {
 
@@ -174,7 +173,7 @@ void SlicesTechnique::drawPlanes(const scene::Scene& scene, const FrameInput& in
 
     // The planes end at zfar, or with a far camera (zfar 1e6 around a model 10 units across) at the
     // scene's far side: N planes over a million units would all lie beyond every surface.
-    const double reach = scene::depthOfInterest(scene);
+    const double reach = t.planesEnd;
     for (const DrawSet& set : sets) {
         const bool boxed = set.light >= 0;
         PlaneRange range = planeRange(set.volume, basis, cam.znear, reach, n);
@@ -275,7 +274,7 @@ void SlicesTechnique::resolve(const Terms& t, const scene::Scene& scene, const F
     program.set("uMaskColour", mMaskColour);
     if (t.farTail) {
         render::bindCameraRay(program, scene.camera, input.width, input.height);
-        program.set("uPlanesEnd", float(scene::depthOfInterest(scene)));
+        program.set("uPlanesEnd", float(t.planesEnd));
         program.set("uLightCount", mView.lights().count());
         program.set("uBoxedDirectional", mSettings.directionalBox ? 1 : 0);
         mMedium.bind(scene.medium);

@@ -71,6 +71,8 @@ struct Terms {
     bool pick = false;  // record the picked pixel's planes (slices.ray_planes)
     bool lastPlane = false;  // draw the last plane alone too (slices.plane, on demand)
     bool farTail = false;    // a far camera: the resolve adds each ray past the planes' end (resolve.frag)
+    double planesEnd = 0.0;  // where the planes end along the view: zfar, or the scene's far side under a
+                             // far camera (scene::depthOfInterest)
 };
 
 // One draw set as the pick replay needs it again.

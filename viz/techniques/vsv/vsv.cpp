@@ -186,6 +186,7 @@ FrameOutput VsvTechnique::run(const FrameInput& input) {
             if (gatherRuns) {
                 if (!lights.empty()) {
                     const gl::Program& program = gatherProgram(out.plan);
+                    if (featureEnabled(out.plan, "FAR_TAIL")) program.set("uFarSpan", float(scene::farSpan(scene)));
                     for (std::size_t i = 0; i < lights.size(); ++i)
                         gather(program, scene, input, lights[i], grids[i], int(i));
                 }

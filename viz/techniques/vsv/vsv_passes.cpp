@@ -2,7 +2,6 @@
 // scene's area lights (left to ivsv).
 #include "techniques/vsv/vsv_technique.h"
 
-#include "scene/ray_reach.h"
 #include "techniques/vsv/ivsv_technique.h"  // ivsv_detail::kAirlight
 
 namespace viz::vsv_detail {
@@ -107,7 +106,6 @@ void VsvTechnique::scan(int slot, const GridSize& size, int passLimit) {
 const gl::Program& VsvTechnique::gatherProgram(const Plan& plan) {
     std::string key;
     const gl::ShaderDefines defines = permutationDefines(plan, kDefines, &key);
-    mFarTail = featureEnabled(plan, "FAR_TAIL");
     if (key != mGatherKey || !mGather) {
         mGather = gl::Program::compile({.stages = {"vsv/gather.comp"}, .defines = defines, .label = "vsv.gather"});
         mGatherKey = key;
@@ -132,7 +130,6 @@ void VsvTechnique::gather(const gl::Program& program, const scene::Scene& scene,
     program.set("uDirectSegments", mSettings.directSegments);
     program.set("uEpipoleRule", mSettings.epipole);
     program.set("uZfar", float(cam.zfar));
-    if (mFarTail) program.set("uFarSpan", float(scene::farSpan(scene)));
     mView.lights().bind();
     mView.shadows().bind();
     mView.surface().distance().bindUnit(render::hd::kFirstFreeTextureUnit);

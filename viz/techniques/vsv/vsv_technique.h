@@ -186,7 +186,6 @@ private:
 
     gl::Program mVoxelize, mPack, mScan, mGather;
     std::string mGatherKey;
-    bool mFarTail = false;  // the gather program's FAR_TAIL (its uFarSpan is set)
     glm::ivec3 mGridSize{0};
     std::vector<gl::Texture> mGrid, mPong, mOccluder;  // per light
     std::vector<const gl::Texture*> mResult;           // per light: where the scan left the grid
