@@ -19,11 +19,13 @@
 #include "core/image_io.h"
 #include "debug/technique.h"
 #include "gl/gl.h"
+#include "gl/readback.h"
 #include "gl/work_counters.h"
 #include "platform/context_egl.h"
 #include "plot/plot.h"
 #include "report/error_images.h"
 #include "report/error_metrics.h"
+#include "report/first_hits.h"
 #include "report/report_table.h"
 #include "scene/stiff_scenes.h"
 #include "report/stiff_suite.h"
@@ -241,6 +243,22 @@ viz::report::PlanSaving measurePlanSaving(const std::string& id, const viz::scen
 }
 
 // A counting run's work summed over its stages, named by counter.
+// The rasterised distance to each pixel's first surface (render::SurfacePass; every technique but the
+// reference draws the same): raymarch's run up to the stage that publishes it.
+viz::Image rasterisedDistance(const viz::scene::Scene& scene, int width, int height) {
+    constexpr const char* kDistance = "raymarch.distance";
+    auto t = viz::makeTechnique("raymarch");
+    viz::FrameInput in = viz::frameInput(&scene, width, height, viz::completeSettings(*t, {}));
+    const std::vector<viz::StageInfo> stages = t->stages();
+    for (int s = 0; s < int(stages.size()) && in.stopAfterStage < 0; ++s)
+        if (std::count(stages[std::size_t(s)].intermediates.begin(), stages[std::size_t(s)].intermediates.end(), kDistance))
+            in.stopAfterStage = s;
+    const viz::FrameOutput out = t->run(in);
+    for (const viz::Intermediate& i : out.intermediates)
+        if (i.id == kDistance) return i.image ? *i.image : viz::gl::readTexture(i.glTexture);
+    throw std::runtime_error(std::string("raymarch published no ") + kDistance);
+}
+
 std::vector<std::pair<std::string, std::uint64_t>> namedWork(const viz::FrameOutput& out) {
     const viz::WorkCounts total = out.timing.totalWork();
     std::vector<std::pair<std::string, std::uint64_t>> named;
@@ -348,12 +366,19 @@ int runReportCommand(Args& args, const std::string& commandLine) {
         const std::string stem = fileStem(scene.name.empty() ? sceneName : scene.name);
         progress.show(done, sceneName + " | reference");
         viz::Image reference;
+        viz::report::FirstHitMask firstHits;  // where the rasteriser and the traced rays see one surface
         {
             auto t = viz::makeTechnique("reference");
             const viz::Settings settings =
                 o.quick ? viz::Settings{{"area_samples", kQuickReferenceAreaSamples}} : viz::Settings{};
             viz::FrameInput in = viz::frameInput(&scene, o.width, o.height, viz::completeSettings(*t, settings));
-            reference = t->run(in).airlight;
+            viz::FrameOutput out = t->run(in);
+            const auto traced = std::find_if(out.intermediates.begin(), out.intermediates.end(),
+                                             [](const viz::Intermediate& i) { return i.id == "reference.distance"; });
+            if (traced == out.intermediates.end() || !traced->image)
+                throw std::runtime_error("the reference published no reference.distance");
+            firstHits = viz::report::firstHitAgreement(*traced->image, rasterisedDistance(scene, o.width, o.height));
+            reference = std::move(out.airlight);
         }
         ++done;
         const float exposure = viz::report::exposureFor(reference);
@@ -394,6 +419,8 @@ int runReportCommand(Args& args, const std::string& commandLine) {
             row.totalSpread = timed.totalSpread;
             if (output.airlight.empty()) throw std::runtime_error(point.technique + " produced no L_air image");
             row.error = viz::report::compareImages(output.airlight, reference);
+            row.firstHitDisagreements = firstHits.disagreeing;
+            row.relativeL2Agreeing = viz::report::relativeL2Over(output.airlight, reference, firstHits);
             // The page shows each technique's most accurate image (a finite error beats an undefined one).
             const auto it = bestImage.find(point.series);
             const double e = row.error.relativeL2;

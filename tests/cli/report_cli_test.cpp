@@ -49,6 +49,15 @@ TEST_F(CliTest, ReportWritesResultsPlotsImagesAndAPageThatLoads) {
         EXPECT_NEAR(row.at("total_ms").get<double>(), 0.5 * (lo + hi), 1e-9 * hi);
         EXPECT_EQ(row.at("error").at("nan_pixels"), 0);
         EXPECT_TRUE(row.at("error").at("relative_l2").is_number());
+        // Silhouette pixels (report/first_hits.h): one count per scene, a few at most; with none, the
+        // error over the agreeing pixels is the error over all of them.
+        const auto disagreeing = row.at("error").at("first_hit_disagreements").get<std::size_t>();
+        EXPECT_EQ(disagreeing, j.at("rows").front().at("error").at("first_hit_disagreements").get<std::size_t>());
+        EXPECT_LE(disagreeing, 32u * 24u / 100u);
+        const double all = row.at("error").at("relative_l2").get<double>();
+        const double agreeing = row.at("error").at("relative_l2_agreeing").get<double>();
+        if (disagreeing == 0) EXPECT_NEAR(agreeing, all, 1e-12 * all);
+        else EXPECT_TRUE(std::isfinite(agreeing));
         EXPECT_FALSE(row.at("stage_ms").empty());
         settings.insert(row.at("setting").get<std::string>());
     }
@@ -77,6 +86,7 @@ TEST_F(CliTest, ReportWritesResultsPlotsImagesAndAPageThatLoads) {
     const std::string page = readFile(out / "index.html");
     EXPECT_EQ(page.find("<script"), std::string::npos);
     EXPECT_EQ(page.find("http"), std::string::npos);  // nothing fetched from anywhere
+    EXPECT_NE(page.find("rel. L2, agreeing px"), std::string::npos);
     EXPECT_EQ(htmlValidatorComplaints(out / "index.html", mDir), "");
     const std::string loaded = imagesLoadedInBrowser(out / "index.html", mDir);
     if (loaded.empty()) {
@@ -166,6 +176,23 @@ TEST_F(CliTest, ReportAboveTheDefaultSizeComparesAtTheErrorTargetsFromItsOwnRows
         EXPECT_NE(readFile(out / "index.html").find(phrase), std::string::npos) << phrase;
         EXPECT_NE(r.out.find(phrase), std::string::npos) << phrase;
         EXPECT_FALSE(std::regex_search(phrase, std::regex("(^| )0\\.[0-9]+x"))) << "a ratio below 1 is worded as slower: " << phrase;
+    }
+    // The silhouette pixels it counts, counted here from the traced and the rasterised distances that
+    // `render` writes (the quick reference's settings, so the traced one comes from the same cache).
+    const fs::path traced = path("traced.exr"), drawn = path("drawn.exr");
+    ASSERT_EQ(run("render --scene grate --technique reference --set area_samples=4 --size 320x240 --layer "
+                  "reference.distance --quiet --out " + traced.string()).exitCode, 0);
+    ASSERT_EQ(run("render --scene grate --technique raymarch --size 320x240 --layer raymarch.distance --stop-after "
+                  "raymarch.surface --quiet --out " + drawn.string()).exitCode, 0);
+    const Image t = readImage(traced.string()), d = readImage(drawn.string());
+    std::size_t disagreeing = 0;
+    for (int y = 0; y < 240; ++y)
+        for (int x = 0; x < 320; ++x)
+            if (!(std::abs(t.at(x, y) - d.at(x, y)) <= 1e-3f * t.at(x, y))) ++disagreeing;
+    EXPECT_LT(disagreeing, 320u * 240u / 500u);  // silhouettes only
+    for (const auto& row : j.at("rows")) {
+        EXPECT_EQ(row.at("error").at("first_hit_disagreements").get<std::size_t>(), disagreeing);
+        EXPECT_TRUE(std::isfinite(row.at("error").at("relative_l2_agreeing").get<double>()));
     }
     for (const auto& saving : j.at("plan_savings")) {
         EXPECT_GE(saving.at("planned_runs_ms").size(), 7u);

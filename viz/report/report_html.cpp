@@ -60,6 +60,29 @@ void appendTargetTable(std::ostringstream& h, const std::string& title, const st
     h << "</table>\n";
 }
 
+// Under a scene's table: how many of its pixels the rasteriser and the reference's traced ray see a
+// different first surface in (report/first_hits.h), and what that means for the errors above.
+void appendFirstHitNote(std::ostringstream& h, const std::vector<ReportRow>& rows, const std::string& scene) {
+    const auto first = std::find_if(rows.begin(), rows.end(), [&](const ReportRow& r) { return r.scene == scene; });
+    if (first == rows.end()) return;
+    const double pixels = double(first->width) * double(first->height);
+    const std::size_t n = first->firstHitDisagreements;
+    h << "<p class=\"note\">";
+    if (n == 0) {
+        h << "The rasterised first hit agrees with the reference's traced ray on every pixel, so both error "
+             "columns are the same figure.";
+    } else {
+        h << n << (n == 1 ? " pixel" : " pixels") << " of " << std::size_t(pixels) << " ("
+          << figure(100.0 * double(n) / pixels, "%.2g") << " %) " << (n == 1 ? "sees" : "see")
+          << " a different first surface rasterised than along the reference's traced ray (more than 0.1 % "
+             "apart): silhouettes, where a pixel's centre lies within the rasteriser's snapping of an edge. Every "
+             "technique here finds its surfaces by rasterising, so each integrates the air over the wrong span "
+             "there whatever it does; <em>rel. L2, agreeing px</em> leaves those pixels out. Their share shrinks "
+             "as the image grows.";
+    }
+    h << "</p>\n";
+}
+
 constexpr const char* kReportStyle = "body{max-width:72em}tr.front td{font-weight:bold}figure img{image-rendering:pixelated}";
 
 }  // namespace
@@ -85,7 +108,9 @@ void writeHtml(const std::string& path, const ReportMeta& meta, const std::vecto
          "relative error (floor 1% of the mean); PSNR on the tone map v&middot;k/(1+v&middot;k), k = 0.18 / mean of "
          "the reference, peak 1. Time: sum of the technique's stage times (the clock each row names). Speed-up: "
          "brute-force <code>raymarch</code>'s time at the same relative L2 (log-log interpolation along its sweep, "
-         "no extrapolation) divided by the row's time. Bold rows lie on the scene's Pareto front.</p>\n";
+         "no extrapolation) divided by the row's time. Bold rows lie on the scene's Pareto front. Every figure but "
+         "<em>rel. L2, agreeing px</em> counts every pixel, silhouette pixels included (see under each scene's "
+         "table).</p>\n";
 
     // Headline: per scene and error target, each technique's speed-up over raymarch, both interpolated
     // along their own Pareto fronts.
@@ -95,7 +120,18 @@ void writeHtml(const std::string& path, const ReportMeta& meta, const std::vecto
          "against log(error) between the two points of its own Pareto front (its sweep settings that no faster "
          "setting beats) that bracket the target; no extrapolation. &ldquo;or less&rdquo;: even the cheapest setting "
          "is below the target, so its time only bounds the true one, and the speed-up is a bound (at least / at "
-         "most). The per-row speed-ups in the tables below compare at each row's own error instead.</p>\n";
+         "most). The per-row speed-ups in the tables below compare at each row's own error instead.";
+    std::string withSilhouettes;
+    for (const ScenePage& s : scenes) {
+        const auto r = std::find_if(rows.begin(), rows.end(), [&](const ReportRow& row) { return row.scene == s.scene; });
+        if (r != rows.end() && r->firstHitDisagreements > 0)
+            withSilhouettes += (withSilhouettes.empty() ? "" : ", ") + escapeHtml(s.scene);
+    }
+    if (!withSilhouettes.empty())
+        h << " The errors here count every pixel. On " << withSilhouettes << ", silhouette pixels (see under the "
+          << "scene's table) lift every technique's error, raymarch's too: a side that does not reach a target "
+             "here may reach it over the pixels whose first hit agrees (<em>rel. L2, agreeing px</em>).";
+    h << "</p>\n";
 
     // The same comparison in counted operations (one counting run per setting): what carries over to a GPU.
     if (std::any_of(rows.begin(), rows.end(), [](const ReportRow& r) { return !r.work.empty(); })) {
@@ -140,7 +176,7 @@ void writeHtml(const std::string& path, const ReportMeta& meta, const std::vecto
               << escapeHtml(s.scene) << "\"><figcaption>temporal RMS along " << escapeHtml(s.motionPath)
               << " against time per frame (log-log)</figcaption></figure>\n";
         h << "<table><tr><th class=\"l\">technique</th><th class=\"l\">setting</th><th>time ms</th><th>wall ms</th>"
-             "<th>rel. L2</th><th>RMSE</th><th>max abs</th><th>p99.9 rel.</th><th>PSNR dB</th><th>NaN/Inf/neg px</th>"
+             "<th>rel. L2</th><th>rel. L2, agreeing px</th><th>RMSE</th><th>max abs</th><th>p99.9 rel.</th><th>PSNR dB</th><th>NaN/Inf/neg px</th>"
              "<th>speed-up</th><th>work ops</th></tr>\n";
         for (const ReportRow& r : rows) {
             if (r.scene != s.scene) continue;
@@ -149,13 +185,14 @@ void writeHtml(const std::string& path, const ReportMeta& meta, const std::vecto
               << "</td><td class=\"l\">" << escapeHtml(r.setting) << "</td>"
               << timeCellHtml(figure(r.totalMilliseconds, "%.1f"), r.totalMilliseconds, r.totalSpread, noisy)
               << "<td>" << figure(r.wallMilliseconds, "%.1f") << "</td><td>" << figure(r.error.relativeL2)
-              << "</td><td>" << figure(r.error.rmse) << "</td><td>" << figure(r.error.maxAbsolute) << "</td><td>"
+              << "</td><td>" << figure(r.relativeL2Agreeing) << "</td><td>" << figure(r.error.rmse) << "</td><td>" << figure(r.error.maxAbsolute) << "</td><td>"
               << figure(r.error.relativeP999) << "</td><td>" << figure(r.error.psnr, "%.1f") << "</td><td"
               << (bad ? " class=\"bad\"" : "") << ">" << r.error.nanPixels << "/" << r.error.infPixels << "/"
               << r.error.negativePixels << "</td><td>" << (r.speedup ? escapeHtml(speedupPhrase(*r.speedup)) : "&ndash;")
               << "</td><td>" << figure(r.workTotal(), "%.3g") << "</td></tr>\n";
         }
         h << "</table>\n";
+        appendFirstHitNote(h, rows, s.scene);
         if (noisy) h << noisyFootnoteHtml("Speed-ups that rest on such a time are in doubt: measure again.");
         appendTemporalHtml(h, rows, s);
         if (!s.referenceImage.empty())

@@ -157,7 +157,10 @@ const std::vector<std::string>& csvColumns() {
         // --temporal: a stabilising option's pair (Technique::stabilisingOptions): "OPTION off" or "OPTION on"
         "stabiliser",
         // the fastest and slowest timed run's sum of stage times (total_ms is their median)
-        "total_ms_min", "total_ms_max"};
+        "total_ms_min", "total_ms_max",
+        // the scene's pixels whose rasterised and traced first hits disagree (report/first_hits.h), and
+        // relative_l2 over the other pixels
+        "first_hit_disagreements", "relative_l2_agreeing"};
     return kColumns;
 }
 
@@ -181,7 +184,8 @@ void writeCsv(const std::string& path, const std::vector<ReportRow>& rows) {
             t ? number(t->temporalRms) : "", t ? number(t->worstFlicker) : "", t ? number(t->msPerFrame) : "",
             t ? t->flickerImage : "", r.work.empty() ? "" : formatFigure(r.workTotal(), "%.0f"), workText(r),
             r.stabiliser.empty() ? "" : r.stabiliser + (r.stabiliserOn ? " on" : " off"),
-            number(r.totalSpread.minMilliseconds), number(r.totalSpread.maxMilliseconds)};
+            number(r.totalSpread.minMilliseconds), number(r.totalSpread.maxMilliseconds),
+            std::to_string(r.firstHitDisagreements), number(r.relativeL2Agreeing)};
         for (std::size_t i = 0; i < fields.size(); ++i) out << (i ? "," : "") << csvField(fields[i]);
         out << "\n";
     }
@@ -198,6 +202,9 @@ void writeJson(const std::string& path, const ReportMeta& meta, const std::vecto
                  {"error_of", "L_air (RGB radiance) against the reference technique's L_air"},
                  {"tone_map", "PSNR on v*k/(1+v*k), k = 0.18 / mean of the reference, peak 1"},
                  {"relative_p999", "99.9th percentile of sum_c|t-r| / max(sum_c|r|, 0.01 * mean sum_c|r|)"},
+                 {"relative_l2_agreeing",
+                  "relative_l2 over the pixels whose rasterised first hit lies within 0.1 % of the reference's "
+                  "traced one; first_hit_disagreements counts the others"},
                  {"temporal", meta.temporal}};
     if (meta.temporal)
         j["meta"]["temporal_of"] =
@@ -230,7 +237,9 @@ void writeJson(const std::string& path, const ReportMeta& meta, const std::vecto
                           {"psnr_db", jsonNumber(r.error.psnr)},
                           {"nan_pixels", r.error.nanPixels},
                           {"inf_pixels", r.error.infPixels},
-                          {"negative_pixels", r.error.negativePixels}}},
+                          {"negative_pixels", r.error.negativePixels},
+                          {"first_hit_disagreements", r.firstHitDisagreements},
+                          {"relative_l2_agreeing", jsonNumber(r.relativeL2Agreeing)}}},
                         {"speedup_vs_raymarch", r.speedup ? jsonNumber(*r.speedup) : nlohmann::json(nullptr)},
                         {"pareto", r.pareto},
                         {"image", r.image},

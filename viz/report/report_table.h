@@ -45,6 +45,10 @@ struct ReportRow {
     double wallMilliseconds = 0.0;  // median over runs of the whole run() call, readbacks included
     RunSpread totalSpread{};        // the fastest and slowest run's sum of stage times
     ErrorMetrics error;             // L_air against the reference's L_air
+    // The scene's pixels whose rasterised and traced first hits disagree (report/first_hits.h), and the
+    // relative L2 over the others: the error a technique can change.
+    std::size_t firstHitDisagreements = 0;
+    double relativeL2Agreeing = kUndefined;
     std::optional<double> speedup;  // over the baseline at equal error (annotateTradeoffs)
     bool pareto = false;            // on its scene's Pareto front, all techniques together
     std::string image;              // files next to index.html (PNG), empty when not written
