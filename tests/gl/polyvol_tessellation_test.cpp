@@ -9,6 +9,7 @@
 
 #include "polyvol_test_util.h"
 #include "scene/builtin_scenes.h"
+#include "techniques/registry.h"
 
 namespace {
 
@@ -127,12 +128,13 @@ TEST_F(PolyvolTest, DISABLED_BenchmarkStaticVsAdaptive) {
     }
 }
 
-// Stepping the refinement: stopping at a coarser level leaves fewer, larger quads (and the level map
-// holds no level below the stop).
+// Stepping the refinement: stopping fewer levels below the coarse grid leaves fewer, larger quads (and
+// the level map holds no level finer than the stop). At 256^2 the coarse quads are 16 texels, level 4.
 TEST_F(PolyvolTest, StoppingTheRefinementAtALevelGivesACoarserMesh) {
     const viz::scene::Scene scene = viz::scene::makeBuiltinScene("colonnade");
+    constexpr int kCoarseLevel = 4;
     std::vector<std::int64_t> counts;
-    for (int stop : {-1, 2, 4}) {
+    for (int stop : {-1, 2, 0}) {
         const viz::FrameOutput out =
             render(scene, "polyvol", {{"shadow_map", 256}, {"tessellation", 1}, {"force_features", 1}, {"stop_level", stop}},
                    64, 48, 2,
@@ -141,18 +143,45 @@ TEST_F(PolyvolTest, StoppingTheRefinementAtALevelGivesACoarserMesh) {
         const viz::Intermediate* levels = find(out, "polyvol.tess_levels");
         ASSERT_TRUE(levels && levels->image);
         // The quads touching the grid border are refined to level 0 whatever the stop (the closure meets
-        // every border texel), so a margin of one stop-level quad is left out.
-        const int margin = stop > 0 ? 1 << stop : 1;
+        // every border texel), so a margin of one stopped quad is left out.
+        const int leafLevel = stop < 0 ? 0 : kCoarseLevel - stop;
+        const int margin = 1 << leafLevel;
         float lowest = 1.0f;
         for (int y = margin; y + margin < levels->image->height; ++y)
             for (int x = margin; x + margin < levels->image->width; ++x)
                 lowest = std::min(lowest, levels->image->at(x, y, 0));
-        if (stop > 0) {
-            EXPECT_GE(lowest * 16.0f, float(stop) - 0.5f) << "stop_level " << stop;
+        if (leafLevel > 0) {
+            EXPECT_GE(lowest * 16.0f, float(leafLevel) - 0.5f) << "stop_level " << stop;
         }
     }
     EXPECT_GT(counts[0], counts[1]);
     EXPECT_GT(counts[1], counts[2]);
+}
+
+// The steps count from each grid's own coarse level: on a scene lit by an area light alone, whose VPL
+// cubes are 256^2 under a 1024^2 shadow_map, the run counts 4 levels (not the 2D map's 6), and every step
+// refines further (before, stop_level was a level of the 2D map: its first three steps all drew the
+// cubes' coarse grid).
+TEST_F(PolyvolTest, SteppingAVplOnlySceneRefinesAtEveryStep) {
+    const viz::scene::Scene scene = viz::scene::makeBuiltinScene("tv-room");
+    const viz::Settings base = {{"shadow_map", 1024}, {"area_samples", 1}, {"tessellation", 1}, {"force_features", 1}};
+    auto technique = viz::makeTechnique("polyvol");
+    const std::vector<double> listed = technique->substepValues(2, viz::completeSettings(*technique, base));
+    ASSERT_EQ(listed.size(), 7u);  // 1024^2: six levels below the coarse grid, and the whole stage
+    std::vector<std::int64_t> counts;
+    for (double stop : {0.0, 1.0, 2.0, 3.0, -1.0}) {
+        viz::Settings s = base;
+        s["stop_level"] = stop;
+        const viz::FrameOutput out = render(scene, "polyvol", s, 48, 36, 2);
+        ASSERT_EQ(out.substepCounts.count(2), 1u);
+        EXPECT_EQ(out.substepCounts.at(2), 5);  // 256^2 cube faces: four levels, and the whole stage
+        counts.push_back(trianglesDrawn(out));
+    }
+    for (std::size_t k = 1; k < counts.size(); ++k) EXPECT_GT(counts[k], counts[k - 1]) << "step " << k + 1;
+    // Stopping at the faces' last level is the full refinement.
+    viz::Settings last = base;
+    last["stop_level"] = 4.0;
+    EXPECT_EQ(trianglesDrawn(render(scene, "polyvol", last, 48, 36, 2)), counts.back());
 }
 
 // Stopped refinement is a coarser mesh, still closed: no crack at any stop level (the border ring stays

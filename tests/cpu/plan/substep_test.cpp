@@ -75,9 +75,10 @@ TEST(Substeps, EveryDeclaredStageStepsThroughValidDistinctValues) {
 // passes of the alpha cells, VPLs.
 TEST(Substeps, CountsFollowTheSettings) {
     EXPECT_EQ(values("slices", "slices.planes", {{"planes", 40}}).size(), 40u);
-    // polyvol 1024^2: coarse quads of 64 texels are level 6; levels 6 .. 1, then fully refined.
+    // polyvol 1024^2: the coarse quads are 64 texels, six levels above single texels; the coarse grid,
+    // then 1 .. 5 levels below it, then fully refined.
     const std::vector<double> refine = values("polyvol", "polyvol.volume", {{"tessellation", 1}, {"shadow_map", 1024}});
-    EXPECT_EQ(refine, (std::vector<double>{6, 5, 4, 3, 2, 1, -1}));
+    EXPECT_EQ(refine, (std::vector<double>{0, 1, 2, 3, 4, 5, -1}));
     EXPECT_EQ(values("polyvol", "polyvol.volume"), refine) << "adaptive at 1024^2 by default";
     EXPECT_TRUE(values("polyvol", "polyvol.volume", {{"tessellation", 0}}).empty())
         << "static tessellation has no refinement steps";

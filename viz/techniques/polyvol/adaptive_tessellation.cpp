@@ -28,6 +28,10 @@ constexpr GLuint kBindingCounters = 4, kBindingIn = 5, kBindingOut = 6, kBinding
 
 std::size_t AdaptiveTessellation::drawOffset() { return kDrawOffset; }
 
+int AdaptiveTessellation::refinementLevels(int mapSize) {
+    return std::max(0, std::countr_zero(unsigned(std::max(mapSize, 1))) - kCoarseSteps);
+}
+
 void AdaptiveTessellation::build(const VolumeGrid& grid, EdgeMeasure measure, double threshold, int stopLevel,
                                  const gl::ShaderDefines& defines, const std::string& definesKey) {
     const int n = grid.mapSize;
@@ -90,8 +94,9 @@ void AdaptiveTessellation::build(const VolumeGrid& grid, EdgeMeasure measure, do
 void AdaptiveTessellation::buildFace(const VolumeGrid& grid, int face, EdgeMeasure measure, double threshold,
                                      int stopLevel, std::uint32_t listCapacity, std::uint32_t keyCapacity) {
     const int n = grid.mapSize;
-    const int top = std::countr_zero(unsigned(n));
-    const int coarse = std::max(0, top - kCoarseSteps);
+    const int coarse = refinementLevels(n);
+    // The stop as the refine pass takes it: quads of this level and below are leaves (-1: none is).
+    const int stopAt = stopLevel < 0 ? -1 : std::max(-1, coarse - stopLevel);
 
     // 1. Edge map.
     mEdgesProgram.use();
@@ -125,7 +130,7 @@ void AdaptiveTessellation::buildFace(const VolumeGrid& grid, int face, EdgeMeasu
     mArgsProgram.set("uListCapacity", listCapacity);
     mArgsProgram.set("uKeyCapacity", keyCapacity);
     mRefineProgram.set("uMapSize", n);
-    mRefineProgram.set("uStopLevel", stopLevel);
+    mRefineProgram.set("uStopLevel", stopAt);
     mRefineProgram.set("uListCapacity", listCapacity);
     mRefineProgram.set("uKeyCapacity", keyCapacity);
     mRefineProgram.set("uWriteLevels", 1);

@@ -30,11 +30,16 @@ class AdaptiveTessellation {
 public:
     // Coarse grid: quads of 2^(log2 N - kCoarseSteps) texels (16 x 16 quads).
     static constexpr int kCoarseSteps = 4;
+    // The levels the refinement descends below the coarse grid of an N^2 map: log2 N - kCoarseSteps, at
+    // least 0 (N a power of two, at least 16).
+    static int refinementLevels(int mapSize);
 
     // Builds the mesh of one light: each of grid.faces faces (1, or a cube's 6) refined on its own, their
     // triangles in one key list. The light buffer and shadow maps must be bound. threshold: the edge
-    // measure relative to the map's range above which a vertex needs the finest level; stopLevel: quads
-    // of this level are leaves (stepping; -1 = refine fully).
+    // measure relative to the map's range above which a vertex needs the finest level; stopLevel: how many
+    // levels to refine below the coarse grid (stepping: 0 = the coarse grid's quads are leaves; -1, or
+    // refinementLevels(N) and above, = refine fully). Counted from each grid's own coarse level, so one
+    // step refines a light's 2D map and its VPLs' smaller cube maps alike.
     // defines: the light feature switches of the volume program (LIGHTS_NO_SPOT, ...), key: their id.
     void build(const VolumeGrid& grid, EdgeMeasure measure, double threshold, int stopLevel, const gl::ShaderDefines& defines,
                const std::string& definesKey);

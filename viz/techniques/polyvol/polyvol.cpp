@@ -38,8 +38,9 @@ const ParamTable<PolyvolSettings>& polyvolParams() {
                   "mesh_zoom; with the scene, the camera frustum and the lights)",
                   0, 0, 3, true, {"off", "camera", "light", "orbit"}})
             .declare(orbitParams("wireframe=orbit"))
-            .add(&S::stopLevel, {"stop_level", "adaptive stepping: quads of this level are not refined further (-1: "
-                                 "refine fully)", -1, -1, 13, true})
+            .add(&S::stopLevel, {"stop_level", "adaptive stepping: refine this many levels below each grid's coarse "
+                                 "16 x 16 quads, then stop (0: the coarse quads alone; -1: refine fully)", -1, -1, 13,
+                                 true})
             .add(&S::cookieMask, {"cookie_mask", "cookie texels darker than this (brightest channel, linear) close the "
                                   "volume", 1.0 / 512.0, 0, 1, false})
             .add(&S::shadowMap, render::SceneViewPasses::params(), "shadow_map")
@@ -62,7 +63,7 @@ PolyvolTechnique::PolyvolTechnique()
          {"tessellation", "airlight", "edge_measure", "threshold", "spot_pieces", "crack_check", "draw_triangles", "origin",
           "wireframe", "mesh_yaw", "mesh_pitch", "mesh_zoom", "stop_level", "cookie_mask", "force_features"},
          {kEdgeMap, kTessLevels, kMesh, kCrossings, kPositive, kNegative, kTotal, kCracks, kLut, kLutError},
-         1, "stop_level", "", {kMesh}},
+         1, "stop_level", "", {kMesh}, false, /*substepsPerRun=*/true},
         render::SceneViewPasses::composeStage("polyvol"),
     };
     checkStageOrder(mStages, kStageOrder);
@@ -73,9 +74,10 @@ std::vector<double> PolyvolTechnique::substepValues(int stage, const Settings& s
     const PolyvolSettings s = polyvolParams().read(settings);
     const int n = s.shadowMap;
     if (!s.adaptiveKept() || n < 16 || !std::has_single_bit(unsigned(n))) return {};
-    const int coarse = std::countr_zero(unsigned(n)) - polyvol::AdaptiveTessellation::kCoarseSteps;
+    // The 2D map's levels: the most any grid has (VPL cubes are at most as large). A run counts the
+    // levels of the grids it refines (FrameOutput::substepCounts): fewer on a scene lit by VPLs alone.
     std::vector<double> values;
-    for (int level = coarse; level >= 1; --level) values.push_back(double(level));
+    for (int k = 0; k < polyvol::AdaptiveTessellation::refinementLevels(n); ++k) values.push_back(double(k));
     values.push_back(-1.0);
     return values;
 }
@@ -285,7 +287,11 @@ FrameOutput PolyvolTechnique::run(const FrameInput& input) {
             mNegative.clear(zero);
             mCrossings.clear(zero);
             if (lut) ensureLut(scene.medium.g);
-            if (out.plan.stages[kVolumeIndex].runs) triangles = drawVolumes(scene, input, out.plan);
+            if (out.plan.stages[kVolumeIndex].runs) {
+                triangles = drawVolumes(scene, input, out.plan);
+                // Stepping: one sub-step per level the largest adaptive grid refines, and the whole stage.
+                out.substepCounts[kVolumeIndex] = 1 + mRefinementLevels;
+            }
             clampAirlight();
         },
         [&] {
