@@ -546,6 +546,11 @@ int runReportCommand(Args& args, const std::string& commandLine) {
                         // A target one side never reaches reads the same in time and in work: once.
                         std::printf("%-14s %-16s at %4.3g %% error: %s%s\n", page.scene.c_str(), t.c_str(), 100.0 * target,
                                     time.c_str(), work == time ? "" : ("; " + work).c_str());
+                        // With silhouette pixels (report/first_hits.h), the same without them where it differs.
+                        const std::string agreeing = viz::report::targetSpeedupPhrase(viz::report::targetSpeedup(
+                            rows, page.scene, t, target, "raymarch", viz::report::Measure::Time,
+                            viz::report::ErrorOver::AgreeingPixels));
+                        if (agreeing != time) std::printf("%33s over the pixels whose first hit agrees: %s\n", "", agreeing.c_str());
                     }
     if (o.temporal)
         for (const viz::report::ScenePage& page : pages) {

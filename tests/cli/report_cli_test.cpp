@@ -111,13 +111,14 @@ TEST_F(CliTest, ReportAboveTheDefaultSizeComparesAtTheErrorTargetsFromItsOwnRows
     EXPECT_EQ(j.at("meta").at("height"), 240);
     // Each series' time at a target, recomputed here: the cheapest row whose error is at or below the
     // target, and the fastest row above it; the time on the log-log line between them.
-    auto costAt = [&](const std::string& technique, double target, const char* cost) -> std::pair<std::string, double> {
+    auto costAt = [&](const std::string& technique, double target, const char* cost,
+                      const char* error = "relative_l2") -> std::pair<std::string, double> {
         struct P { double ms, e; };
         std::vector<P> front;  // Pareto front, by brute force over all pairs
         std::vector<P> all;
         for (const auto& row : j.at("rows"))
             if (row.at("technique") == technique)
-                all.push_back({row.at(cost).get<double>(), row.at("error").at("relative_l2").get<double>()});
+                all.push_back({row.at(cost).get<double>(), row.at("error").at(error).get<double>()});
         for (const P& p : all) {
             bool dominated = false;
             for (const P& q : all)
@@ -159,6 +160,15 @@ TEST_F(CliTest, ReportAboveTheDefaultSizeComparesAtTheErrorTargetsFromItsOwnRows
         if (!t.at("speedup").is_null()) {
             EXPECT_NEAR(t.at("speedup").get<double>(), t.at("raymarch_ms").get<double>() / t.at("technique_ms").get<double>(),
                         1e-9);
+        }
+        // Over the pixels whose first hits agree: the same interpolation on relative_l2_agreeing.
+        const auto [ownKind, ownMs] = costAt(technique, target, "total_ms", "relative_l2_agreeing");
+        const auto [baseKind, baseMs] = costAt("raymarch", target, "total_ms", "relative_l2_agreeing");
+        if (ownKind != "not_reached" && baseKind != "not_reached" && !(ownKind == "at_most" && baseKind == "at_most")) {
+            ASSERT_FALSE(t.at("speedup_agreeing").is_null()) << technique << " at " << target;
+            EXPECT_NEAR(t.at("speedup_agreeing").get<double>(), baseMs / ownMs, 1e-9 * baseMs / ownMs);
+        } else {
+            EXPECT_TRUE(t.at("speedup_agreeing").is_null()) << technique << " at " << target;
         }
         // The work ratio at the target, from the rows' counted operations the same way.
         const auto [techniqueKind, techniqueOps] = costAt(technique, target, "work_ops");

@@ -41,7 +41,7 @@ std::string figure(double v, const char* format = "%.3g") {
 // against raymarch's at the target, in words.
 void appendTargetTable(std::ostringstream& h, const std::string& title, const std::vector<ReportRow>& rows,
                        const std::vector<ScenePage>& scenes, const std::vector<std::string>& techniques,
-                       Measure measure) {
+                       Measure measure, ErrorOver errorOver = ErrorOver::AllPixels) {
     h << "<h2>" << escapeHtml(title) << "</h2>\n<table><tr><th class=\"l\">scene</th><th>error target</th>";
     for (const std::string& t : techniques)
         if (t != "raymarch") h << "<th>" << escapeHtml(t) << "</th>";
@@ -51,7 +51,7 @@ void appendTargetTable(std::ostringstream& h, const std::string& title, const st
             h << "<tr><td class=\"l\">" << escapeHtml(s.scene) << "</td><td>" << figure(100.0 * target) << " %</td>";
             for (const std::string& t : techniques) {
                 if (t == "raymarch") continue;
-                const TargetSpeedup ts = targetSpeedup(rows, s.scene, t, target, "raymarch", measure);
+                const TargetSpeedup ts = targetSpeedup(rows, s.scene, t, target, "raymarch", measure, errorOver);
                 h << "<td" << (ts.bound != TargetSpeedup::Bound::Unknown ? "" : " class=\"note\"") << ">"
                   << escapeHtml(targetSpeedupPhrase(ts, "raymarch", measure)) << "</td>";
             }
@@ -121,17 +121,26 @@ void writeHtml(const std::string& path, const ReportMeta& meta, const std::vecto
          "setting beats) that bracket the target; no extrapolation. &ldquo;or less&rdquo;: even the cheapest setting "
          "is below the target, so its time only bounds the true one, and the speed-up is a bound (at least / at "
          "most). The per-row speed-ups in the tables below compare at each row's own error instead.";
-    std::string withSilhouettes;
-    for (const ScenePage& s : scenes) {
-        const auto r = std::find_if(rows.begin(), rows.end(), [&](const ReportRow& row) { return row.scene == s.scene; });
-        if (r != rows.end() && r->firstHitDisagreements > 0)
-            withSilhouettes += (withSilhouettes.empty() ? "" : ", ") + escapeHtml(s.scene);
+    std::vector<ScenePage> withSilhouettes;  // scenes with pixels whose first hits disagree
+    std::string names;
+    for (const ScenePage& p : scenes) {
+        const auto r = std::find_if(rows.begin(), rows.end(), [&](const ReportRow& row) { return row.scene == p.scene; });
+        if (r != rows.end() && r->firstHitDisagreements > 0) {
+            withSilhouettes.push_back(p);
+            names += (names.empty() ? "" : ", ") + escapeHtml(p.scene);
+        }
     }
     if (!withSilhouettes.empty())
-        h << " The errors here count every pixel. On " << withSilhouettes << ", silhouette pixels (see under the "
-          << "scene's table) lift every technique's error, raymarch's too: a side that does not reach a target "
-             "here may reach it over the pixels whose first hit agrees (<em>rel. L2, agreeing px</em>).";
+        h << " The errors here count every pixel. On " << names << ", silhouette pixels (see under the "
+          << "scene's table) lift every technique's error alike, raymarch's too; the next table leaves them out.";
     h << "</p>\n";
+    if (!withSilhouettes.empty()) {
+        appendTargetTable(h, "The same over the pixels whose first hit agrees", rows, withSilhouettes, techniques,
+                          Measure::Time, ErrorOver::AgreeingPixels);
+        h << "<p class=\"note\">As above, each row's error taken over the pixels where the rasterised first "
+             "surface and the reference's traced one agree (<em>rel. L2, agreeing px</em>): the error a "
+             "technique's settings can lower.</p>\n";
+    }
 
     // The same comparison in counted operations (one counting run per setting): what carries over to a GPU.
     if (std::any_of(rows.begin(), rows.end(), [](const ReportRow& r) { return !r.work.empty(); })) {

@@ -80,7 +80,7 @@ const std::vector<double>& errorTargets() {
 }
 
 TargetSpeedup targetSpeedup(const std::vector<ReportRow>& rows, const std::string& scene, const std::string& technique,
-                            double target, const std::string& baseline, Measure measure) {
+                            double target, const std::string& baseline, Measure measure, ErrorOver errorOver) {
     // TradeoffPoint's "milliseconds" is the cost axis: time, or counted operations; for the time, also each
     // row's fastest and slowest run.
     std::vector<TradeoffPoint> base, own, baseFast, baseSlow, ownFast, ownSlow;
@@ -88,7 +88,7 @@ TargetSpeedup targetSpeedup(const std::vector<ReportRow>& rows, const std::strin
     for (const ReportRow& r : rows) {
         if (r.scene != scene || (r.technique != baseline && r.technique != technique)) continue;
         const bool isBase = r.technique == baseline;
-        const double e = r.error.relativeL2;
+        const double e = errorOver == ErrorOver::AllPixels ? r.error.relativeL2 : r.relativeL2Agreeing;
         (isBase ? base : own).push_back({measure == Measure::Time ? r.totalMilliseconds : r.workTotal(), e});
         spread = spread && std::isfinite(spreadFraction(r.totalMilliseconds, r.totalSpread));
         (isBase ? baseFast : ownFast).push_back({r.totalSpread.minMilliseconds, e});
@@ -287,6 +287,12 @@ void writeJson(const std::string& path, const ReportMeta& meta, const std::vecto
                         w.bound == TargetSpeedup::Bound::Unknown ? nlohmann::json(nullptr) : jsonNumber(w.ratio);
                     targets.back()["work_ratio_bound"] = kBounds[int(w.bound)];
                     targets.back()["work_phrase"] = targetSpeedupPhrase(w, "raymarch", Measure::Work);
+                    const TargetSpeedup a =
+                        targetSpeedup(rows, scene, technique, target, "raymarch", Measure::Time, ErrorOver::AgreeingPixels);
+                    targets.back()["speedup_agreeing"] =
+                        a.bound == TargetSpeedup::Bound::Unknown ? nlohmann::json(nullptr) : jsonNumber(a.ratio);
+                    targets.back()["speedup_agreeing_bound"] = kBounds[int(a.bound)];
+                    targets.back()["phrase_agreeing"] = targetSpeedupPhrase(a);
                 }
             }
     }
