@@ -1,17 +1,31 @@
 #include "ray_inspector.h"
 
 #include <algorithm>
+#include <optional>
 #include <utility>
 #include <vector>
 
 #include "core/text.h"
 #include "plot/plot.h"
+#include "report/first_hits.h"
 #include "ui/theme.h"
 
 namespace airlight {
 
 using viz::format;
 using viz::ui::Rect;
+
+namespace {
+
+// The technique's rasterised distance to the pixel's first surface (its `.distance` view), if it has one.
+std::optional<float> drawnDistance(const PixelInspection* seen) {
+    if (!seen) return std::nullopt;
+    for (const PixelReading& r : seen->readings)
+        if (r.channels >= 1 && r.id.ends_with(".distance") && r.id != "reference.distance") return r.value.x;
+    return std::nullopt;
+}
+
+}  // namespace
 
 void RayInspector::inspect(const viz::scene::Scene& scene, glm::ivec2 frame, glm::ivec2 pixel,
                            const std::string& technique, const viz::Image* airlight) {
@@ -54,6 +68,16 @@ void RayInspector::draw(viz::ui::DrawList& dl, const Rect& area, float line, flo
     }
     dl.textClipped(area.min, head, kText, area.max.x);
     dl.textClipped({area.min.x, area.min.y + line}, second, kDim, area.max.x);
+    // A silhouette pixel (report/first_hits.h): the rasteriser and the traced ray see different surfaces.
+    float lines = 2.0f;
+    const std::optional<float> drawn = drawnDistance(seen);
+    if (drawn && !viz::report::firstHitsAgree(float(p.d), *drawn)) {
+        dl.textClipped({area.min.x, area.min.y + 2.0f * line},
+                       "silhouette pixel: rasterised d = " + format("%.4g", *drawn) + ", traced " +
+                           format("%.4g", p.d) + ": no raster technique can match",
+                       kError, area.max.x);
+        lines = 3.0f;
+    }
     viz::plot::PlotSpec spec;
     spec.xLabel = "t along the ray";
     spec.yLabel = "integrand (sum of RGB), V included";
@@ -71,7 +95,7 @@ void RayInspector::draw(viz::ui::DrawList& dl, const Rect& area, float line, flo
         for (const auto& iv : p.lights[k].lit) band.spans.push_back({iv.a, iv.b});
         spec.bands.push_back(std::move(band));
     }
-    Rect plotArea{{area.min.x, area.min.y + 2.0f * line + 4.0f * scale}, area.max};
+    Rect plotArea{{area.min.x, area.min.y + lines * line + 4.0f * scale}, area.max};
     // The technique's own view of the ray beside the plot: its per-pixel intermediates at this pixel
     // and the per-ray views that follow the picked pixel.
     if (seen && plotArea.size().x > 500.0f * scale) {
@@ -140,6 +164,10 @@ nlohmann::json RayInspector::sidecar(const PixelInspection* seen) const {
             series[s.name] = points;
         }
         out["ray_series"] = series;
+        if (const std::optional<float> drawn = drawnDistance(seen))
+            out["first_hit"] = {{"drawn", *drawn},
+                                {"traced", mProbe->d},
+                                {"agree", viz::report::firstHitsAgree(float(mProbe->d), *drawn)}};
     }
     return out;
 }

@@ -336,6 +336,32 @@ TEST_F(GuiCli, TheRayInspectorShowsTheValuesAirlightRenderGivesAtThatPixel) {
     EXPECT_FALSE(in.at("lights")[0].at("lit").empty());
 }
 
+// A silhouette pixel: on forest at 80x60 the ray through pixel (44, 21) meets a trunk's edge at 36.9
+// while the rasteriser passes it and sees the sky (zfar 80). The inspector says so, with both
+// distances, which are those `render` writes as reference.distance and raymarch.distance.
+TEST_F(GuiCli, TheRayInspectorNamesASilhouettePixel) {
+    const fs::path script = writeText("inspect_edge.txt", "frames 2\nhover final 0.55625 0.358333\nkey I\nframes 2\n");
+    const RunResult r = run("gui --scene forest --technique raymarch --size 80x60 --set samples=16 --script " +
+                            script.string() + " --screenshot " + path("inspect_edge.png").string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const nlohmann::json sidecar = nlohmann::json::parse(readFile(path("inspect_edge.json")));
+    const auto& in = sidecar.at("inspector");
+    const int x = in.at("pixel")[0].get<int>(), y = in.at("pixel")[1].get<int>();
+    ASSERT_EQ(x, 44);
+    ASSERT_EQ(y, 21);
+    ASSERT_TRUE(in.contains("first_hit")) << in.dump();
+    ASSERT_EQ(run("render --scene forest --technique reference --size 80x60 --layer reference.distance --quiet --out " +
+                  path("traced.exr").string()).exitCode, 0);
+    ASSERT_EQ(run("render --scene forest --technique raymarch --size 80x60 --layer raymarch.distance --stop-after "
+                  "raymarch.surface --quiet --out " + path("drawn.exr").string()).exitCode, 0);
+    const float traced = readImage(path("traced.exr").string()).at(x, y);
+    const float drawn = readImage(path("drawn.exr").string()).at(x, y);
+    EXPECT_NEAR(in.at("first_hit").at("traced").get<double>(), traced, 1e-4 * traced);
+    EXPECT_NEAR(in.at("first_hit").at("drawn").get<double>(), drawn, 1e-4 * drawn);
+    EXPECT_GT(std::abs(traced - drawn), 0.01f * traced) << "not a silhouette pixel any more";
+    EXPECT_FALSE(in.at("first_hit").at("agree").get<bool>());
+}
+
 // The inspector shows the technique's own view of the ray: its per-pixel intermediates at the pixel
 // (vsv: visibility fraction, L_air) and its per-ray views, which follow the inspected pixel (pick_x/y).
 TEST_F(GuiCli, TheRayInspectorShowsTheTechniquesOwnViewOfThePixel) {
@@ -355,6 +381,9 @@ TEST_F(GuiCli, TheRayInspectorShowsTheTechniquesOwnViewOfThePixel) {
     for (int c = 0; c < 3; ++c)
         EXPECT_EQ(readings.at("vsv.airlight")[std::size_t(c)].get<double>(),
                   in.at("technique_value")[std::size_t(c)].get<double>());
+    // Inside the grate's plate, not at a silhouette: the rasterised and traced first hits agree.
+    ASSERT_TRUE(in.contains("first_hit")) << in.dump();
+    EXPECT_TRUE(in.at("first_hit").at("agree").get<bool>()) << in.at("first_hit").dump();
     const double visible = readings.at("vsv.visibility")[0].get<double>();
     EXPECT_GE(visible, 0.0);
     EXPECT_LE(visible, 1.0);

@@ -16,8 +16,7 @@ FirstHitMask firstHitAgreement(const Image& traced, const Image& drawn) {
     mask.height = traced.height;
     mask.agree.resize(traced.pixels.size());
     for (std::size_t i = 0; i < traced.pixels.size(); ++i) {
-        const float t = traced.pixels[i], d = drawn.pixels[i];
-        const bool agree = std::isfinite(t) && std::isfinite(d) && std::abs(t - d) <= kFirstHitTolerance * std::abs(t);
+        const bool agree = firstHitsAgree(traced.pixels[i], drawn.pixels[i]);
         mask.agree[i] = agree ? 1 : 0;
         mask.disagreeing += agree ? 0 : 1;
     }

@@ -9,6 +9,7 @@
 // `airlight report` counts them per scene and gives each error with them and without them.
 #pragma once
 
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -17,8 +18,12 @@
 
 namespace viz::report {
 
-// Two first hits agree when their distances along the ray differ by at most this share of the traced one.
+// Two first hits agree when their distances along the ray differ by at most this share of the traced one
+// (both finite). The window's ray inspector says so of its pixel with the same test.
 inline constexpr float kFirstHitTolerance = 1e-3f;
+inline bool firstHitsAgree(float traced, float drawn) {
+    return std::isfinite(traced) && std::isfinite(drawn) && std::abs(traced - drawn) <= kFirstHitTolerance * std::abs(traced);
+}
 
 struct FirstHitMask {
     int width = 0, height = 0;
