@@ -38,8 +38,9 @@ public:
 
     // The panel in `area`: two lines (the reference's and the technique's values, and their relative
     // error), a third on a silhouette pixel (the technique's rasterised first surface is not the traced
-    // ray's, report/first_hits.h; the sidecar's "first_hit"), the integrand plot with the lit intervals, and beside it, when there is room, `seen`: the
-    // technique's readings when the run shown is the inspected technique's (null otherwise).
+    // ray's, report/first_hits.h; the sidecar's "first_hit"), the integrand plot with the lit intervals,
+    // and beside it, when there is room, `seen`: the technique's readings when the run shown is the
+    // inspected technique's (null otherwise).
     void draw(viz::ui::DrawList& dl, const viz::ui::Rect& area, float lineHeight, float scale,
               const PixelInspection* seen) const;
 

@@ -242,23 +242,20 @@ viz::report::PlanSaving measurePlanSaving(const std::string& id, const viz::scen
     return saving;
 }
 
-// A counting run's work summed over its stages, named by counter.
 // The rasterised distance to each pixel's first surface (render::SurfacePass; every technique but the
 // reference draws the same): raymarch's run up to the stage that publishes it.
 viz::Image rasterisedDistance(const viz::scene::Scene& scene, int width, int height) {
     constexpr const char* kDistance = "raymarch.distance";
     auto t = viz::makeTechnique("raymarch");
     viz::FrameInput in = viz::frameInput(&scene, width, height, viz::completeSettings(*t, {}));
-    const std::vector<viz::StageInfo> stages = t->stages();
-    for (int s = 0; s < int(stages.size()) && in.stopAfterStage < 0; ++s)
-        if (std::count(stages[std::size_t(s)].intermediates.begin(), stages[std::size_t(s)].intermediates.end(), kDistance))
-            in.stopAfterStage = s;
+    in.stopAfterStage = viz::stageOfIntermediate(t->stages(), kDistance);
     const viz::FrameOutput out = t->run(in);
     for (const viz::Intermediate& i : out.intermediates)
         if (i.id == kDistance) return i.image ? *i.image : viz::gl::readTexture(i.glTexture);
     throw std::runtime_error(std::string("raymarch published no ") + kDistance);
 }
 
+// A counting run's work summed over its stages, named by counter.
 std::vector<std::pair<std::string, std::uint64_t>> namedWork(const viz::FrameOutput& out) {
     const viz::WorkCounts total = out.timing.totalWork();
     std::vector<std::pair<std::string, std::uint64_t>> named;

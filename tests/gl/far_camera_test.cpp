@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "report/first_hits.h"
 #include "scene/builtin_scenes.h"
 #include "technique_test_util.h"
 
@@ -20,43 +21,32 @@ namespace {
 class FarCameraTest : public viz::testing::TechniqueTest {
 protected:
     static constexpr int kW = 80, kH = 60;
-    // The reference at one zfar, and the pixels whose first hit the rasteriser and Embree agree on. At a
-    // silhouette a pixel centre can lie within the rasteriser's sub-pixel snapping of an edge: a few pixels
-    // in ten thousand (9 of 76,800 on forest at 320x240) see a tree where the traced ray sees the sky, or
-    // the reverse. Such a pixel is wrong by the air behind it, a million units of haze at zfar 1e6,
-    // whatever the technique does.
+    // The reference at one zfar, and the pixels whose first hit the rasteriser and Embree agree on
+    // (report/first_hits.h). At a silhouette a pixel centre can lie within the rasteriser's sub-pixel
+    // snapping of an edge: a few pixels in ten thousand (9 of 76,800 on forest at 320x240) see a tree where
+    // the traced ray sees the sky, or the reverse. Such a pixel is wrong by the air behind it, a million
+    // units of haze at zfar 1e6, whatever the technique does.
     struct Truth {
         viz::scene::Scene scene;
         viz::Image airlight;
-        std::vector<bool> agree;  // per pixel
+        viz::report::FirstHitMask agree;
     };
     static Truth truthAt(viz::scene::Scene scene, double zfar) {
         scene.camera.zfar = zfar;
         const viz::FrameOutput ref = render(scene, "reference", {}, kW, kH, -1, {"reference.distance"});
         const viz::FrameOutput raster = render(scene, "raymarch", {}, kW, kH, 1, {"raymarch.distance"});
-        const viz::Image& traced = *find(ref, "reference.distance")->image;
-        const viz::Image& drawn = *find(raster, "raymarch.distance")->image;
-        Truth t{scene, ref.airlight, std::vector<bool>(std::size_t(kW * kH))};
-        int masked = 0;
-        for (int y = 0; y < kH; ++y)
-            for (int x = 0; x < kW; ++x) {
-                const bool agree = std::abs(traced.at(x, y) - drawn.at(x, y)) <= 1e-3f * traced.at(x, y);
-                t.agree[std::size_t(y * kW + x)] = agree;
-                masked += agree ? 0 : 1;
-            }
-        EXPECT_LT(masked, kW * kH / 500) << "the rasteriser and Embree disagree on more than silhouettes";
+        Truth t{scene, ref.airlight,
+                viz::report::firstHitAgreement(*find(ref, "reference.distance")->image,
+                                               *find(raster, "raymarch.distance")->image)};
+        EXPECT_LT(t.agree.disagreeing, std::size_t(kW * kH / 500))
+            << "the rasteriser and Embree disagree on more than silhouettes";
         return t;
     }
     // The technique's relative L2 against the truth's reference over the pixels that agree.
     static double errorAgainst(const Truth& truth, const std::string& technique) {
         const viz::FrameOutput out = render(truth.scene, technique, {}, kW, kH);
         EXPECT_TRUE(viz::testing::allFinite(out.airlight)) << technique;
-        viz::Image a = out.airlight, b = truth.airlight;
-        for (int y = 0; y < kH; ++y)
-            for (int x = 0; x < kW; ++x)
-                if (!truth.agree[std::size_t(y * kW + x)])
-                    for (int c = 0; c < 3; ++c) a.at(x, y, c) = b.at(x, y, c) = 0.0f;
-        return viz::testing::relativeL2(a, b);
+        return viz::report::relativeL2Over(out.airlight, truth.airlight, truth.agree);
     }
     // Each technique at zfar 1e6 against its error at the scene's own zfar: no worse than a quarter more,
     // or 0.005.
@@ -93,7 +83,7 @@ TEST_F(FarCameraTest, ASunLitSceneReadsAsWithItsOwnZfar) {
 // stops where the shadow map ends and adds the lit rest in closed form. slices and vsv were 39 % and 14 %
 // off before FAR_TAIL. Pixel (44, 21) at 80x60 is one the rasteriser and Embree see differently (a trunk's
 // edge): every shadow-map technique reads 0.86 to 0.87 there at zfar 1e6 (0.53 to 0.57 at 80), through to
-// the sky, where the reference reads 0.29, stopped by the trunk at 36.9. errorAt leaves it out.
+// the sky, where the reference reads 0.29, stopped by the trunk at 36.9. truthAt leaves it out.
 TEST_F(FarCameraTest, ASunThroughACanopyReadsAsWithItsOwnZfar) {
     expectFarAsNear(viz::scene::makeBuiltinScene("forest"), "forest");
 }

@@ -60,11 +60,18 @@ void appendTargetTable(std::ostringstream& h, const std::string& title, const st
     h << "</table>\n";
 }
 
+// The first row of `scene`, which carries the scene's figures every row of it repeats (the image size, the
+// silhouette pixels' count); null when the scene has no row.
+const ReportRow* firstRowOf(const std::vector<ReportRow>& rows, const std::string& scene) {
+    const auto it = std::find_if(rows.begin(), rows.end(), [&](const ReportRow& r) { return r.scene == scene; });
+    return it == rows.end() ? nullptr : &*it;
+}
+
 // Under a scene's table: how many of its pixels the rasteriser and the reference's traced ray see a
 // different first surface in (report/first_hits.h), and what that means for the errors above.
 void appendFirstHitNote(std::ostringstream& h, const std::vector<ReportRow>& rows, const std::string& scene) {
-    const auto first = std::find_if(rows.begin(), rows.end(), [&](const ReportRow& r) { return r.scene == scene; });
-    if (first == rows.end()) return;
+    const ReportRow* first = firstRowOf(rows, scene);
+    if (!first) return;
     const double pixels = double(first->width) * double(first->height);
     const std::size_t n = first->firstHitDisagreements;
     h << "<p class=\"note\">";
@@ -124,8 +131,8 @@ void writeHtml(const std::string& path, const ReportMeta& meta, const std::vecto
     std::vector<ScenePage> withSilhouettes;  // scenes with pixels whose first hits disagree
     std::string names;
     for (const ScenePage& p : scenes) {
-        const auto r = std::find_if(rows.begin(), rows.end(), [&](const ReportRow& row) { return row.scene == p.scene; });
-        if (r != rows.end() && r->firstHitDisagreements > 0) {
+        const ReportRow* r = firstRowOf(rows, p.scene);
+        if (r && r->firstHitDisagreements > 0) {
             withSilhouettes.push_back(p);
             names += (names.empty() ? "" : ", ") + escapeHtml(p.scene);
         }
@@ -185,8 +192,8 @@ void writeHtml(const std::string& path, const ReportMeta& meta, const std::vecto
               << escapeHtml(s.scene) << "\"><figcaption>temporal RMS along " << escapeHtml(s.motionPath)
               << " against time per frame (log-log)</figcaption></figure>\n";
         h << "<table><tr><th class=\"l\">technique</th><th class=\"l\">setting</th><th>time ms</th><th>wall ms</th>"
-             "<th>rel. L2</th><th>rel. L2, agreeing px</th><th>RMSE</th><th>max abs</th><th>p99.9 rel.</th><th>PSNR dB</th><th>NaN/Inf/neg px</th>"
-             "<th>speed-up</th><th>work ops</th></tr>\n";
+             "<th>rel. L2</th><th>rel. L2, agreeing px</th><th>RMSE</th><th>max abs</th><th>p99.9 rel.</th>"
+             "<th>PSNR dB</th><th>NaN/Inf/neg px</th><th>speed-up</th><th>work ops</th></tr>\n";
         for (const ReportRow& r : rows) {
             if (r.scene != s.scene) continue;
             const std::size_t bad = r.error.nanPixels + r.error.infPixels + r.error.negativePixels;
@@ -194,7 +201,8 @@ void writeHtml(const std::string& path, const ReportMeta& meta, const std::vecto
               << "</td><td class=\"l\">" << escapeHtml(r.setting) << "</td>"
               << timeCellHtml(figure(r.totalMilliseconds, "%.1f"), r.totalMilliseconds, r.totalSpread, noisy)
               << "<td>" << figure(r.wallMilliseconds, "%.1f") << "</td><td>" << figure(r.error.relativeL2)
-              << "</td><td>" << figure(r.relativeL2Agreeing) << "</td><td>" << figure(r.error.rmse) << "</td><td>" << figure(r.error.maxAbsolute) << "</td><td>"
+              << "</td><td>" << figure(r.relativeL2Agreeing) << "</td><td>" << figure(r.error.rmse) << "</td><td>"
+              << figure(r.error.maxAbsolute) << "</td><td>"
               << figure(r.error.relativeP999) << "</td><td>" << figure(r.error.psnr, "%.1f") << "</td><td"
               << (bad ? " class=\"bad\"" : "") << ">" << r.error.nanPixels << "/" << r.error.infPixels << "/"
               << r.error.negativePixels << "</td><td>" << (r.speedup ? escapeHtml(speedupPhrase(*r.speedup)) : "&ndash;")

@@ -1,6 +1,8 @@
 // polyvol: parameters, stages, plan and the run (polyvol_technique.h).
 #include "techniques/polyvol/polyvol.h"
 
+#include <algorithm>
+
 #include "techniques/polyvol/polyvol_technique.h"
 
 namespace viz::polyvol_detail {
@@ -290,7 +292,11 @@ FrameOutput PolyvolTechnique::run(const FrameInput& input) {
             if (out.plan.stages[kVolumeIndex].runs) {
                 triangles = drawVolumes(scene, input, out.plan);
                 // Stepping: one sub-step per level the largest adaptive grid refines, and the whole stage.
-                out.substepCounts[kVolumeIndex] = 1 + mRefinementLevels;
+                int levels = 0;
+                for (int i : mAdaptiveLights)
+                    levels = std::max(levels, polyvol::AdaptiveTessellation::refinementLevels(
+                                                  mView.shadows().sizeOf(mView.lights().lights()[std::size_t(i)])));
+                out.substepCounts[kVolumeIndex] = 1 + levels;
             }
             clampAirlight();
         },

@@ -202,7 +202,6 @@ std::int64_t PolyvolTechnique::drawVolumes(const scene::Scene& scene, const Fram
     }
     std::int64_t drawn = 0;
     mAdaptiveOverflow = false;
-    mRefinementLevels = 0;
     const auto& lights = mView.lights().lights();
     for (int i = 0; i < int(lights.size()); ++i) {
         const render::GpuLightCpu& L = lights[std::size_t(i)];
@@ -227,7 +226,6 @@ std::int64_t PolyvolTechnique::drawVolumes(const scene::Scene& scene, const Fram
             mMarkStopLevel = int(substepLimit(input, kVolumeIndex));
             tess.build(grid, mMarkMeasure, mMarkThreshold, mMarkStopLevel, mDefines, mProgramKey);
             mShownTess = &tess;
-            mRefinementLevels = std::max(mRefinementLevels, polyvol::AdaptiveTessellation::refinementLevels(grid.mapSize));
             (cube ? mCubeAdaptiveLight : mFlatAdaptiveLight) = i;
             mAdaptiveLights.push_back(i);
             mAdaptiveOverflow = mAdaptiveOverflow || tess.overflowed();

@@ -234,7 +234,6 @@ private:
     int mFlatAdaptiveLight = -1;  // the last adaptive 2D light: its keys are still in mTess
     int mCubeAdaptiveLight = -1;  // the last adaptive cube light: its keys are still in mTessCube
     std::vector<int> mAdaptiveLights;  // lights drawn with adaptive tessellation in the last run
-    int mRefinementLevels = 0;         // the most levels any of them refined below its coarse grid
     mutable std::array<std::vector<std::uint32_t>, 2> mMarkKeys;  // 2D, cube
     // The other adaptive lights' keys, built again when they are marked (once per light and run) in a
     // tessellation of their own: the run itself pays nothing for them. The run's settings for the build:
