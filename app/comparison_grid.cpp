@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "render_job.h"
+#include "silhouette_pixels.h"
 #include "techniques/registry.h"
 
 namespace airlight {
@@ -26,6 +27,8 @@ void ComparisonGrid::close() {
     mWorker = nullptr;
     mWaiting = mDue = false;
     mReference = {};
+    mTracedDistance.reset();
+    mFirstHits = {};
 }
 
 void ComparisonGrid::poll() {
@@ -38,12 +41,21 @@ void ComparisonGrid::poll() {
         return;
     }
     mReference = std::move(result->output.airlight);
+    if (const viz::Image* traced = tracedDistance(result->output)) mTracedDistance = *traced;
     mDue = true;
 }
 
 void ComparisonGrid::runTechniques(const RunTechnique& run) {
     mDue = false;
     mPlayedFrames = 0;
+    mFirstHits = {};
+    if (mTracedDistance) {
+        try {
+            mFirstHits = silhouetteMask(*mTracedDistance, mScene);
+        } catch (const std::exception&) {
+            mFirstHits = {};  // the errors over all pixels stand alone
+        }
+    }
     for (ComparisonTile& tile : mTiles) {
         tile.temporal.reset();
         try {
@@ -57,6 +69,9 @@ void ComparisonGrid::runTechniques(const RunTechnique& run) {
             const viz::Image& airlight = reference ? mReference : out.airlight;
             tile.milliseconds = out.timing.totalMilliseconds();
             tile.error = viz::report::compareImages(airlight, mReference);
+            tile.relativeL2Agreeing = mFirstHits.disagreeing > 0
+                                          ? viz::report::relativeL2Over(airlight, mReference, mFirstHits)
+                                          : tile.error.relativeL2;
             tile.pane.id = tile.technique;
             tile.pane.mode = DisplayMode::HdrColour;
             uploadImage(tile.pane, airlight);
@@ -125,6 +140,8 @@ nlohmann::json ComparisonGrid::toJson() const {
                          {"milliseconds", t.milliseconds},
                          {"nan_inf_pixels", t.error.nanPixels + t.error.infPixels},
                          {"error", tileErrorText(t.error)},
+                         {"error_agreeing", silhouetteErrorText(t.relativeL2Agreeing, mFirstHits.disagreeing)},
+                         {"silhouette_pixels", mFirstHits.disagreeing},
                          {"failure", t.failure},
                          {"played_frames", mPlayedFrames},
                          {"change_pairs", t.temporal.pairs()},
@@ -132,6 +149,7 @@ nlohmann::json ComparisonGrid::toJson() const {
     // Figures only where they are defined (the caption says why one is not).
     for (std::size_t i = 0; i < mTiles.size(); ++i) {
         if (std::isfinite(mTiles[i].error.relativeL2)) tiles[i]["relative_l2"] = mTiles[i].error.relativeL2;
+        if (std::isfinite(mTiles[i].relativeL2Agreeing)) tiles[i]["relative_l2_agreeing"] = mTiles[i].relativeL2Agreeing;
         if (std::isfinite(mTiles[i].error.maxAbsolute)) tiles[i]["max_abs"] = mTiles[i].error.maxAbsolute;
         if (std::isfinite(mTiles[i].temporal.score())) tiles[i]["change_rms"] = mTiles[i].temporal.score();
         if (std::isfinite(mTiles[i].temporal.errorScore())) tiles[i]["error_change_rms"] = mTiles[i].temporal.errorScore();
@@ -147,6 +165,15 @@ std::string tileErrorText(const viz::report::ErrorMetrics& error) {
         std::snprintf(text, sizeof text, "reference black: max |a - b| %.2g", error.maxAbsolute);
     else std::snprintf(text, sizeof text, "error undefined");
     return text;
+}
+
+std::string silhouetteErrorText(double relativeL2Agreeing, std::size_t silhouettes) {
+    if (silhouettes == 0) return "";
+    const std::string without = " w/o " + std::to_string(silhouettes) + (silhouettes == 1 ? " silhouette" : " silhouettes");
+    if (!std::isfinite(relativeL2Agreeing)) return "undefined" + without;
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g", relativeL2Agreeing);
+    return text + without;
 }
 
 }  // namespace airlight

@@ -13,6 +13,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,7 @@
 #include "temporal_monitor.h"
 #include "plot/plot.h"
 #include "report/error_metrics.h"
+#include "report/first_hits.h"
 #include "scene/scene.h"
 
 namespace airlight {
@@ -34,6 +36,9 @@ struct ComparisonTile {
     PaneImage pane;  // empty until the technique has run
     double milliseconds = 0.0;
     viz::report::ErrorMetrics error;
+    // Its relative L2 over the pixels whose first hit agrees (ComparisonGrid::silhouettePixels); the same
+    // as error.relativeL2 where the view has no silhouette pixel.
+    double relativeL2Agreeing = viz::report::kUndefined;
     TemporalMonitor temporal{};  // while playing: the change of its L_air from frame to frame
     viz::Image lastAirlight{};   // what its pane shows (the first played frame is compared with it)
     double playMilliseconds = 0.0;  // the last played frame's run time
@@ -42,6 +47,9 @@ struct ComparisonTile {
 // A tile's error as its caption says it: the relative L2 error, or why there is none (a NaN or Inf
 // pixel; a reference that is black where the technique is not, then the largest absolute difference).
 std::string tileErrorText(const viz::report::ErrorMetrics& error);
+// Where the view has `silhouettes` pixels (report/first_hits.h), the error without them ("0.0235 w/o 4
+// silhouettes", short enough for a small tile); empty where it has none.
+std::string silhouetteErrorText(double relativeL2Agreeing, std::size_t silhouettes);
 
 class ComparisonGrid {
 public:
@@ -65,7 +73,8 @@ public:
     // Takes the reference's full-size pass when the worker has it.
     void poll();
     // Runs every technique but the reference twice and keeps the second run (the first compiles shaders
-    // and allocates), its time and its error against the reference.
+    // and allocates), its time and its error against the reference, over all pixels and over those whose
+    // first hit agrees (the silhouette pixels are found here, once per snapshot: it needs the GL context).
     void runTechniques(const RunTechnique& run);
     // Playing (the reference is in): every technique but the reference once on `moved` (the window's
     // moving lights; its camera with `followCamera`, else the snapshot's) as frame `frame`; its tile shows
@@ -83,7 +92,10 @@ public:
 
     std::vector<ComparisonTile>& tiles() { return mTiles; }
     const std::vector<ComparisonTile>& tiles() const { return mTiles; }
-    float exposure() const { return mExposure; }  // EV, from the reference's image, shared by every tile
+    float exposure() const { return mExposure; }
+    // The snapshot's silhouette pixels, where the rasterised and the traced first hit differ (0 until the
+    // techniques have run, or where the reference published no distance).
+    std::size_t silhouettePixels() const { return mFirstHits.disagreeing; }  // EV, from the reference's image, shared by every tile
     // What a tile without an image says ("computing the reference... pass 2/4").
     std::string waitingText() const;
     // Each technique as a point: run time against relative L2, both on log axes.
@@ -97,6 +109,8 @@ private:
     CpuWorker* mWorker = nullptr;  // the reference's, the pool's while the grid is open
     bool mWaiting = false, mDue = false;
     viz::Image mReference;
+    std::optional<viz::Image> mTracedDistance;  // the reference's reference.distance
+    viz::report::FirstHitMask mFirstHits;       // from runTechniques
     viz::scene::Scene mScene;
     glm::ivec2 mSize{0};
     float mExposure = 0.0f;

@@ -17,8 +17,12 @@ std::string comparisonHeading(const ComparisonGrid& grid) {
         return "comparison (G), playing (P): frame " + std::to_string(grid.playedFrames()) +
                ", run time and the change of L_air per frame (along a --path, its error's flicker against the "
                "reference's frames; the plot: the still frame; P stops)";
-    return "comparison (G): L_air at the reference's exposure, time of a warm run and relative L2 against the "
-           "reference";
+    std::string heading = "comparison (G): L_air at the reference's exposure, time of a warm run and relative L2 "
+                          "against the reference";
+    if (const std::size_t n = grid.silhouettePixels(); n > 0)
+        heading += ", and without the " + std::to_string(n) + " silhouette pixel" + (n == 1 ? "" : "s") +
+                   " whose rasterised and traced first hits differ";
+    return heading;
 }
 
 std::string comparisonTileFigures(const ComparisonGrid& grid, std::size_t i, PathFramesShown path) {
@@ -48,7 +52,13 @@ std::string comparisonTileFigures(const ComparisonGrid& grid, std::size_t i, Pat
     return figures;
 }
 
-ComparisonLayout layOutComparison(const Rect& area, int tiles, float line, float pad) {
+std::string comparisonTileSilhouetteLine(const ComparisonGrid& grid, std::size_t i) {
+    const ComparisonTile& tile = grid.tiles().at(i);
+    if (grid.playing() || !tile.failure.empty() || tile.pane.texture == 0 || tile.technique == "reference") return "";
+    return silhouetteErrorText(tile.relativeL2Agreeing, grid.silhouettePixels());
+}
+
+ComparisonLayout layOutComparison(const Rect& area, int tiles, float line, float pad, int captionLines) {
     ComparisonLayout layout;
     const int cells = std::max(tiles, 0) + 1;  // one more cell for the plot of error against time
     layout.columns = int(std::ceil(std::sqrt(double(cells))));
@@ -58,7 +68,7 @@ ComparisonLayout layOutComparison(const Rect& area, int tiles, float line, float
     for (int i = 0; i < tiles; ++i) {
         const glm::vec2 at = cellAt(i);
         layout.cells.push_back({at, at + layout.cell});
-        layout.boxes.push_back({at + pad, at + layout.cell - glm::vec2(pad, pad + 2.0f * line)});
+        layout.boxes.push_back({at + pad, at + layout.cell - glm::vec2(pad, pad + float(captionLines) * line)});
     }
     const glm::vec2 at = cellAt(std::max(tiles, 0));
     const int left = layout.columns - std::max(tiles, 0) % layout.columns;
@@ -71,7 +81,8 @@ void drawComparison(FrameCanvas& canvas, const Rect& area, const ComparisonGrid&
     viz::ui::DrawList& dl = *canvas.overlay;
     const float line = canvas.line(), pad = 4.0f * canvas.scale;
     const int n = int(grid.tiles().size());
-    const ComparisonLayout layout = layOutComparison(area, n, line, pad);
+    const bool silhouettes = grid.silhouettePixels() > 0 && !grid.playing();
+    const ComparisonLayout layout = layOutComparison(area, n, line, pad, silhouettes ? 3 : 2);
     dl.textClipped({area.min.x, area.min.y - line}, comparisonHeading(grid), theme::kAccent, area.max.x);
     viz::plot::drawPlot(dl, layout.plot, grid.errorAgainstTime());
     canvas.screen.placeView({"comparison.error_vs_time", "relative L2 against time", layout.plot, -1});
@@ -90,7 +101,11 @@ void drawComparison(FrameCanvas& canvas, const Rect& area, const ComparisonGrid&
                            theme::kDim, box.max.x);
         }
         const std::string figures = comparisonTileFigures(grid, std::size_t(i), path);
-        canvas.screen.placeView({"comparison:" + tile.technique, tile.technique + "  " + figures, image, -1});
+        const std::string withoutSilhouettes = comparisonTileSilhouetteLine(grid, std::size_t(i));
+        canvas.screen.placeView({"comparison:" + tile.technique,
+                                 tile.technique + "  " + figures +
+                                     (withoutSilhouettes.empty() ? "" : "; " + withoutSilhouettes),
+                                 image, -1});
         float captionX = box.min.x;
         if (tile.technique != "reference") {
             // The colour of its point in the error-against-time plot (whose legend a small cell leaves out).
@@ -101,6 +116,8 @@ void drawComparison(FrameCanvas& canvas, const Rect& area, const ComparisonGrid&
         }
         dl.textClipped({captionX, box.max.y + 2.0f}, tile.technique, theme::kText, right);
         dl.textClipped({box.min.x, box.max.y + 2.0f + line}, figures, theme::kDim, right);
+        if (!withoutSilhouettes.empty())
+            dl.textClipped({box.min.x, box.max.y + 2.0f + 2.0f * line}, withoutSilhouettes, theme::kDim, right);
     }
 }
 

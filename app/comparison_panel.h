@@ -29,8 +29,12 @@ std::string comparisonHeading(const ComparisonGrid& grid);
 // pixels appended. Empty while the tile has no image.
 std::string comparisonTileFigures(const ComparisonGrid& grid, std::size_t i, PathFramesShown path);
 
+// Tile i's third line, still and with silhouette pixels in the view: its error without them
+// (silhouetteErrorText). Empty otherwise, and for the reference, a failed tile or one not run yet.
+std::string comparisonTileSilhouetteLine(const ComparisonGrid& grid, std::size_t i);
+
 // Where things go inside `area`: tile i in the cell at (i % columns, i / columns) of a near-square grid
-// with one cell more than tiles; each tile's box leaves room for its two caption lines of height `line`;
+// with one cell more than tiles; each tile's box leaves room for its `captionLines` lines of height `line`;
 // the plot takes the rest of the last row. Cells are `pad` apart from their neighbours' contents.
 struct ComparisonLayout {
     int columns = 1;
@@ -39,7 +43,7 @@ struct ComparisonLayout {
     std::vector<viz::ui::Rect> boxes;  // per tile: where its image fits (the captions below)
     viz::ui::Rect plot;
 };
-ComparisonLayout layOutComparison(const viz::ui::Rect& area, int tiles, float line, float pad);
+ComparisonLayout layOutComparison(const viz::ui::Rect& area, int tiles, float line, float pad, int captionLines = 2);
 
 // Draws the grid: the heading on the line above `area`, the tiles' images (pane draws at the grid's
 // exposure), their captions, the plot. Names each tile's image "comparison:ID" (titled with its caption)

@@ -1,6 +1,7 @@
 #include "report_command.h"
 #include "report_temporal.h"
 #include "run_info.h"
+#include "silhouette_pixels.h"
 
 #include <unistd.h>
 
@@ -19,7 +20,6 @@
 #include "core/image_io.h"
 #include "debug/technique.h"
 #include "gl/gl.h"
-#include "gl/readback.h"
 #include "gl/work_counters.h"
 #include "platform/context_egl.h"
 #include "plot/plot.h"
@@ -242,19 +242,6 @@ viz::report::PlanSaving measurePlanSaving(const std::string& id, const viz::scen
     return saving;
 }
 
-// The rasterised distance to each pixel's first surface (render::SurfacePass; every technique but the
-// reference draws the same): raymarch's run up to the stage that publishes it.
-viz::Image rasterisedDistance(const viz::scene::Scene& scene, int width, int height) {
-    constexpr const char* kDistance = "raymarch.distance";
-    auto t = viz::makeTechnique("raymarch");
-    viz::FrameInput in = viz::frameInput(&scene, width, height, viz::completeSettings(*t, {}));
-    in.stopAfterStage = viz::stageOfIntermediate(t->stages(), kDistance);
-    const viz::FrameOutput out = t->run(in);
-    for (const viz::Intermediate& i : out.intermediates)
-        if (i.id == kDistance) return i.image ? *i.image : viz::gl::readTexture(i.glTexture);
-    throw std::runtime_error(std::string("raymarch published no ") + kDistance);
-}
-
 // A counting run's work summed over its stages, named by counter.
 std::vector<std::pair<std::string, std::uint64_t>> namedWork(const viz::FrameOutput& out) {
     const viz::WorkCounts total = out.timing.totalWork();
@@ -370,11 +357,9 @@ int runReportCommand(Args& args, const std::string& commandLine) {
                 o.quick ? viz::Settings{{"area_samples", kQuickReferenceAreaSamples}} : viz::Settings{};
             viz::FrameInput in = viz::frameInput(&scene, o.width, o.height, viz::completeSettings(*t, settings));
             viz::FrameOutput out = t->run(in);
-            const auto traced = std::find_if(out.intermediates.begin(), out.intermediates.end(),
-                                             [](const viz::Intermediate& i) { return i.id == "reference.distance"; });
-            if (traced == out.intermediates.end() || !traced->image)
-                throw std::runtime_error("the reference published no reference.distance");
-            firstHits = viz::report::firstHitAgreement(*traced->image, rasterisedDistance(scene, o.width, o.height));
+            const viz::Image* traced = tracedDistance(out);
+            if (!traced) throw std::runtime_error("the reference published no reference.distance");
+            firstHits = silhouetteMask(*traced, scene);
             reference = std::move(out.airlight);
         }
         ++done;

@@ -456,6 +456,54 @@ TEST_F(GuiCli, TheComparisonGridShowsEveryTechniqueWithItsErrorAndTime) {
     EXPECT_GT(p[2].get<double>() - p[0].get<double>(), 100.0);
 }
 
+// On a view with silhouette pixels (report/first_hits.h) each tile gives its error again without them:
+// the count and the error over the rest, both worked out here from what `render` writes (the traced and
+// rasterised distances, the reference's and raymarch's L_air) with a loop of the test's own.
+TEST_F(GuiCli, TheComparisonGridGivesEachErrorWithoutTheSilhouettePixels) {
+    const fs::path script = writeText("compare_forest.txt", "frames 2\nkey G\nframes 1\n");
+    const RunResult r = run("gui --scene forest --size 80x60 --script " + script.string() + " --screenshot " +
+                            path("forest.png").string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const nlohmann::json j = nlohmann::json::parse(readFile(path("forest.json")));
+    auto layer = [&](const std::string& technique, const std::string& id, const std::string& extra) {
+        const fs::path out = path(technique + "-" + id + ".exr");
+        EXPECT_EQ(run("render --scene forest --technique " + technique + " --size 80x60 --layer " + id + extra +
+                      " --quiet --out " + out.string()).exitCode, 0);
+        return readImage(out.string());
+    };
+    const Image traced = layer("reference", "reference.distance", "");
+    const Image drawn = layer("raymarch", "raymarch.distance", " --stop-after raymarch.surface");
+    const Image reference = layer("reference", "airlight", ""), raymarch = layer("raymarch", "airlight", "");
+    std::size_t silhouettes = 0;
+    double diff2 = 0.0, ref2 = 0.0;
+    for (int y = 0; y < 60; ++y)
+        for (int x = 0; x < 80; ++x) {
+            if (!(std::abs(traced.at(x, y) - drawn.at(x, y)) <= 1e-3f * traced.at(x, y))) {
+                ++silhouettes;
+                continue;
+            }
+            for (int c = 0; c < 3; ++c) {
+                const double a = raymarch.at(x, y, c), b = reference.at(x, y, c);
+                diff2 += (a - b) * (a - b);
+                ref2 += b * b;
+            }
+        }
+    ASSERT_GT(silhouettes, 0u) << "forest at 80x60 has no silhouette pixel any more";
+    ASSERT_LT(silhouettes, 80u * 60u / 100u);
+    for (const auto& tile : j.at("comparison")) {
+        const std::string technique = tile.at("technique");
+        EXPECT_EQ(tile.at("silhouette_pixels").get<std::size_t>(), silhouettes) << technique;
+        if (technique == "reference") continue;
+        // Leaving the silhouettes out lowers every technique's error on this view.
+        EXPECT_LT(tile.at("relative_l2_agreeing").get<double>(), tile.at("relative_l2").get<double>()) << technique;
+        EXPECT_NE(sidecarViewTitle(j, "comparison:" + technique).find("w/o " + std::to_string(silhouettes) + " silhouettes"),
+                  std::string::npos) << technique;
+        if (technique == "raymarch") {
+            EXPECT_NEAR(tile.at("relative_l2_agreeing").get<double>(), std::sqrt(diff2 / ref2), 1e-5 * std::sqrt(diff2 / ref2));
+        }
+    }
+}
+
 TEST_F(GuiCli, BadScriptsAreOneLineErrorsNamingTheLine) {
     const fs::path unknown = writeText("unknown.txt", "frames 1\njump somewhere\n");
     expectUserError(run("gui --script " + unknown.string()), "unknown.txt:2");

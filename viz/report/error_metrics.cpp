@@ -48,7 +48,7 @@ ErrorMetrics compareImages(const Image& test, const Image& reference) {
         tone2 += t * t;
     }
     const double values = double(test.pixels.size());
-    m.relativeL2 = ref2 > 0.0 ? std::sqrt(diff2 / ref2) : (diff2 == 0.0 ? 0.0 : kUndefined);
+    m.relativeL2 = relativeL2FromSums(diff2, ref2);
     m.rmse = std::sqrt(diff2 / values);
     m.maxAbsolute = maxAbs;
     m.psnr = tone2 > 0.0 ? -10.0 * std::log10(tone2 / values) : std::numeric_limits<double>::infinity();

@@ -4,6 +4,7 @@
 // as empty / null, never as a number.
 #pragma once
 
+#include <cmath>
 #include <cstddef>
 #include <limits>
 
@@ -36,6 +37,12 @@ double toneMapScale(const Image& reference);
 inline double toneMap(double v, double scale) {
     const double s = v * scale;
     return s / (1.0 + s);
+}
+
+// sqrt(diff2 / ref2) from the two sums of squares (over the differences, over the reference): 0 for two
+// black images, undefined for a black reference under a non-zero difference.
+inline double relativeL2FromSums(double diff2, double ref2) {
+    return ref2 > 0.0 ? std::sqrt(diff2 / ref2) : (diff2 == 0.0 ? 0.0 : kUndefined);
 }
 
 // test and reference must have the same size and channel count (VIZ_CHECK).

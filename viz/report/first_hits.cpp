@@ -38,7 +38,7 @@ double relativeL2Over(const Image& test, const Image& reference, const FirstHitM
             ref2 += b * b;
         }
     }
-    return ref2 > 0.0 ? std::sqrt(diff2 / ref2) : (diff2 == 0.0 ? 0.0 : kUndefined);
+    return relativeL2FromSums(diff2, ref2);
 }
 
 }  // namespace viz::report

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <limits>
+#include <string>
 
 #include "comparison_panel.h"
 
@@ -26,9 +27,10 @@ bool overlap(const Rect& a, const Rect& b) {
 TEST(ComparisonPanel, TilesAndThePlotFillTheAreaWithoutOverlapping) {
     const Rect area{{640.0f, 80.0f}, {1270.0f, 510.0f}};
     const float line = 15.0f, pad = 4.0f;
+    for (int lines = 2; lines <= 3; ++lines)
     for (int n = 1; n <= 16; ++n) {
-        SCOPED_TRACE(n);
-        const ComparisonLayout l = layOutComparison(area, n, line, pad);
+        SCOPED_TRACE(std::to_string(n) + " tiles, " + std::to_string(lines) + " caption lines");
+        const ComparisonLayout l = layOutComparison(area, n, line, pad, lines);
         ASSERT_EQ(int(l.boxes.size()), n);
         ASSERT_EQ(int(l.cells.size()), n);
         // Near square: the fewest columns whose square holds the tiles and the plot.
@@ -38,8 +40,8 @@ TEST(ComparisonPanel, TilesAndThePlotFillTheAreaWithoutOverlapping) {
         for (int i = 0; i < n; ++i) {
             EXPECT_TRUE(inside(l.cells[std::size_t(i)], area)) << i;
             EXPECT_TRUE(inside(l.boxes[std::size_t(i)], l.cells[std::size_t(i)])) << i;
-            // Room under the box for the name and the figures.
-            EXPECT_GE(l.cells[std::size_t(i)].max.y - l.boxes[std::size_t(i)].max.y, 2.0f * line) << i;
+            // Room under the box for the name, the figures and the error without silhouettes.
+            EXPECT_GE(l.cells[std::size_t(i)].max.y - l.boxes[std::size_t(i)].max.y, float(lines) * line) << i;
             EXPECT_FALSE(overlap(l.boxes[std::size_t(i)], l.plot)) << i;
             for (int k = 0; k < i; ++k) EXPECT_FALSE(overlap(l.cells[std::size_t(i)], l.cells[std::size_t(k)])) << i << " " << k;
         }
@@ -90,6 +92,18 @@ TEST(ComparisonPanel, StillTilesSayTheirTimeAndErrorAndTheReferenceIsTheGroundTr
     EXPECT_EQ(comparisonTileFigures(grid, 5, {}), "failed: shader did not compile");
     EXPECT_NE(comparisonHeading(grid).find("time of a warm run and relative L2"), std::string::npos)
         << comparisonHeading(grid);
+    // No silhouette pixel in this view (the grid has not run): no third line, nothing in the heading.
+    for (std::size_t i = 0; i < grid.tiles().size(); ++i) EXPECT_EQ(comparisonTileSilhouetteLine(grid, i), "") << i;
+    EXPECT_EQ(comparisonHeading(grid).find("silhouette"), std::string::npos);
+}
+
+TEST(ComparisonPanel, TheErrorWithoutSilhouettePixelsIsShortAndSaysHowManyWereLeftOut) {
+    EXPECT_EQ(silhouetteErrorText(0.0123, 0), "");
+    EXPECT_EQ(silhouetteErrorText(0.023514, 4), "0.0235 w/o 4 silhouettes");
+    EXPECT_EQ(silhouetteErrorText(0.5, 1), "0.5 w/o 1 silhouette");
+    EXPECT_EQ(silhouetteErrorText(std::numeric_limits<double>::quiet_NaN(), 21), "undefined w/o 21 silhouettes");
+    // It fits a small tile's line: no longer than the figures line "12.3 ms   error 0.0123" and a little.
+    EXPECT_LE(silhouetteErrorText(0.0123456, 99999).size(), 30u);
 }
 
 }  // namespace

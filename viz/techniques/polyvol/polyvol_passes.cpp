@@ -203,11 +203,13 @@ std::int64_t PolyvolTechnique::drawVolumes(const scene::Scene& scene, const Fram
     std::int64_t drawn = 0;
     mAdaptiveOverflow = false;
     const auto& lights = mView.lights().lights();
+    // The refinement every adaptive grid of this run takes (the marks view shows the same).
+    mMarkMeasure = s.edgeMeasure;
+    mMarkThreshold = s.threshold;
+    mMarkStopLevel = int(substepLimit(input, kVolumeIndex));
     for (int i = 0; i < int(lights.size()); ++i) {
         const render::GpuLightCpu& L = lights[std::size_t(i)];
-        const int type = L.info.x;
         if (L.info.z < 0) continue;
-        (void)type;
         polyvol::VolumeGrid grid = describe(L, i, n, cam.zfar, float(s.cookieMask));
         const bool cube = grid.mode == kModeCube;
         const bool adaptive = cube ? adaptiveCubes : adaptiveWanted;
@@ -221,9 +223,6 @@ std::int64_t PolyvolTechnique::drawVolumes(const scene::Scene& scene, const Fram
             // 2D grids and cubes each keep their own buffers, so a scene with both kinds of light does not
             // reallocate them light after light.
             polyvol::AdaptiveTessellation& tess = cube ? mTessCube : mTess;
-            mMarkMeasure = s.edgeMeasure;
-            mMarkThreshold = s.threshold;
-            mMarkStopLevel = int(substepLimit(input, kVolumeIndex));
             tess.build(grid, mMarkMeasure, mMarkThreshold, mMarkStopLevel, mDefines, mProgramKey);
             mShownTess = &tess;
             (cube ? mCubeAdaptiveLight : mFlatAdaptiveLight) = i;
