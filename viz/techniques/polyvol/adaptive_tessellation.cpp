@@ -22,7 +22,9 @@ constexpr std::uint32_t kMaxKeys = 24u << 20;
 // Texture units past the scene's and the volume pass's (hd::kFirstFreeTextureUnit + 0, + 1).
 constexpr GLuint kUnitEdges = 10, kUnitFlags = 11;
 static_assert(kUnitEdges >= render::hd::kFirstFreeTextureUnit + 2);
-constexpr GLuint kBindingCounters = 4, kBindingIn = 5, kBindingOut = 6, kBindingKeys = 7;
+constexpr GLuint kBindingCounters = 4, kBindingIn = 5, kBindingOut = 6, kBindingKeys = 7, kBindingGroups = 8;
+// tess_refine.comp's work group size: one (children, triangles) pair per group in mGroups.
+constexpr std::uint32_t kRefineGroup = 64;
 
 }  // namespace
 
@@ -43,6 +45,7 @@ void AdaptiveTessellation::build(const VolumeGrid& grid, EdgeMeasure measure, do
         mLevelsProgram = gl::Program::compile({.stages = {"polyvol/tess_levels.comp"}, .label = "polyvol.tess_levels"});
         mRefineProgram = gl::Program::compile({.stages = {"polyvol/tess_refine.comp"}, .label = "polyvol.tess_refine"});
         mArgsProgram = gl::Program::compile({.stages = {"polyvol/tess_args.comp"}, .label = "polyvol.tess_args"});
+        mScanProgram = gl::Program::compile({.stages = {"polyvol/tess_scan.comp"}, .label = "polyvol.tess_scan"});
     }
     if (!mEdgesProgram || mEdgesKey != definesKey) {
         mEdgesProgram = gl::Program::compile(
@@ -67,6 +70,8 @@ void AdaptiveTessellation::build(const VolumeGrid& grid, EdgeMeasure measure, do
         mListA = gl::Buffer::create({.bytes = std::size_t(listCapacity) * 4, .label = "polyvol.tess_list_a"});
         mListB = gl::Buffer::create({.bytes = std::size_t(listCapacity) * 4, .label = "polyvol.tess_list_b"});
         mKeys = gl::Buffer::create({.bytes = std::size_t(keyCapacity) * 4, .label = "polyvol.tess_keys"});
+        const std::size_t groups = (std::size_t(listCapacity) + kRefineGroup - 1) / kRefineGroup;
+        mGroups = gl::Buffer::create({.bytes = groups * 2 * 4, .label = "polyvol.tess_groups"});
         mSize = n;
         mFaces = faces;
     }
@@ -135,23 +140,31 @@ void AdaptiveTessellation::buildFace(const VolumeGrid& grid, int face, EdgeMeasu
     mRefineProgram.set("uKeyCapacity", keyCapacity);
     mRefineProgram.set("uWriteLevels", 1);
     mRefineProgram.set("uKeyBase", std::uint32_t(face) * std::uint32_t(n + 1) * std::uint32_t(n + 1));
+    mGroups.bindBase(GL_SHADER_STORAGE_BUFFER, kBindingGroups);
     const gl::Buffer* in = &mListA;
     const gl::Buffer* out = &mListB;
     const GLbitfield barrier = GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT;
     for (int k = coarse; k >= 0; --k) {
-        mRefineProgram.use();
+        const int quads = n >> k;
         mRefineProgram.set("uLevel", k);
         mRefineProgram.set("uFromGrid", k == coarse ? 1 : 0);
         in->bindBase(GL_SHADER_STORAGE_BUFFER, kBindingIn);
         out->bindBase(GL_SHADER_STORAGE_BUFFER, kBindingOut);
-        if (k == coarse) {
-            const int quads = n >> k;
-            glDispatchCompute(GLuint((quads * quads + 63) / 64), 1, 1);
-        } else {
-            mCounters.bind(GL_DISPATCH_INDIRECT_BUFFER);
-            glDispatchComputeIndirect(GLintptr(kDispatchOffset));
+        mCounters.bind(GL_DISPATCH_INDIRECT_BUFFER);
+        // The same quads twice: their groups' totals, then (offsets scanned in between) the lists.
+        for (int pass = 0; pass < 2; ++pass) {
+            mRefineProgram.use();
+            mRefineProgram.set("uPass", pass);
+            if (k == coarse) glDispatchCompute(GLuint((quads * quads + 63) / 64), 1, 1);
+            else glDispatchComputeIndirect(GLintptr(kDispatchOffset));
+            glMemoryBarrier(barrier);
+            if (pass == 1) break;
+            mScanProgram.use();
+            mScanProgram.set("uFromGrid", k == coarse ? 1 : 0);
+            mScanProgram.set("uGridQuads", std::uint32_t(quads) * std::uint32_t(quads));
+            glDispatchCompute(1, 1, 1);
+            glMemoryBarrier(barrier);
         }
-        glMemoryBarrier(barrier);
         mArgsProgram.use();
         mArgsProgram.set("uDraw", 0);
         glDispatchCompute(1, 1, 1);

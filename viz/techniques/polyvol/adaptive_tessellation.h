@@ -4,7 +4,9 @@
 //      which also refines curved receivers the Laplacian misses (saddles) (tess_edges.comp);
 //   2. mip-like hierarchy of "needs subdivision" flags with the one-level balance rule (tess_levels.comp);
 //   3. refinement from a coarse grid of 16 x 16 quads, one compute step per level with indirect dispatch,
-//      leaves emitting one of 16 T-junction-free patterns (<= 6 triangles) (tess_refine.comp);
+//      leaves emitting one of 16 T-junction-free patterns (<= 6 triangles) (tess_refine.comp), each step
+//      in two passes with a prefix sum between them (tess_scan.comp) so that the lists, and the order the
+//      volume pass adds the triangles up in, are the same on every run;
 //   4. an indirect draw of the emitted vertex keys (light_volume_mesh.h, key stride N + 1).
 // N must be a power of two. The grid is the virtual (N + 1)^2 vertex grid whose last row and column are
 // clamped onto the map's last texel (zero-area slivers), so that quads of 2^k texels tile it; the border
@@ -61,10 +63,10 @@ private:
     void buildFace(const VolumeGrid& grid, int face, EdgeMeasure measure, double threshold, int stopLevel,
                    std::uint32_t listCapacity, std::uint32_t keyCapacity);
 
-    gl::Program mEdgesProgram, mLevelsProgram, mRefineProgram, mArgsProgram;
+    gl::Program mEdgesProgram, mLevelsProgram, mRefineProgram, mArgsProgram, mScanProgram;
     std::string mEdgesKey;
     gl::Texture mEdges, mFlags, mLevels;
-    gl::Buffer mCounters, mListA, mListB, mKeys;
+    gl::Buffer mCounters, mListA, mListB, mKeys, mGroups;
     int mSize = 0, mFaces = 0, mLevelCount = 0;
     std::int64_t mTriangles = 0;
     bool mOverflow = false;
