@@ -73,7 +73,7 @@ DisplayMapping resolveMapping(const PaneImage& pane, const DisplaySettings& sett
     if (settings.range == RangeMode::Manual) {
         m.lo = settings.manualMin;
         m.hi = settings.manualMax;
-    } else if ((measured || pane.rangeFromData) && autoRange && autoRange->valid) {
+    } else if ((measured || pane.rangeFromData || pane.rangeGrowsToData) && autoRange && autoRange->valid) {
         m.lo = autoRange->lo;
         m.hi = autoRange->hi;
     }
@@ -151,6 +151,7 @@ void makePane(PaneImage& pane, const viz::Intermediate& in, int layer) {
     pane.channelInfo = in.channels;
     pane.picture = in.picture;
     pane.rangeFromData = in.rangeFromData;
+    pane.rangeGrowsToData = in.rangeGrowsToData;
     if (in.image) {
         uploadImage(pane, *in.image);
         return;

@@ -49,6 +49,7 @@ struct PaneImage {
     std::vector<viz::ChannelInfo> channelInfo;  // the quantities packed in r, g, b, a; empty: one quantity
     bool picture = false;                       // drawn by the technique: its note explains its colours
     bool rangeFromData = false;                 // Intermediate::rangeFromData
+    bool rangeGrowsToData = false;              // Intermediate::rangeGrowsToData
 };
 
 // The channel a view starts on for a pane: the first declared quantity of a multi-quantity pane, else all.

@@ -1,6 +1,7 @@
 #include "view_state.h"
 
 #include <algorithm>
+#include <cmath>
 #include <exception>
 
 #include "gl/readback.h"
@@ -34,6 +35,20 @@ void readBackValues(ViewState& view) {
     updateStatistics(view);
 }
 
+ValueRange grownRange(const PaneImage& pane, Channel channel, const ValueRange& data) {
+    const viz::ChannelInfo* declared = declaredChannel(pane, channel);
+    ValueRange r{declared ? declared->rangeMin : pane.rangeMin, declared ? declared->rangeMax : pane.rangeMax, true};
+    if (data.valid) {
+        r.lo = std::min(r.lo, data.lo);
+        r.hi = std::max(r.hi, data.hi);
+    }
+    if ((declared ? declared->kind : pane.kind) == viz::ViewKind::Signed) {
+        const float m = std::max(std::abs(r.lo), std::abs(r.hi));
+        r = {-m, m, true};
+    }
+    return r;
+}
+
 void updateStatistics(ViewState& view) {
     view.counts = {};
     view.finite = {};
@@ -52,6 +67,8 @@ void updateStatistics(ViewState& view) {
     if (view.display.range == RangeMode::Percentiles) view.measured = percentileRange(values, 0.001, 0.999);
     else if (view.display.range == RangeMode::Suggested && view.pane.rangeFromData)
         view.measured = percentileRange(values, 0.02, 0.98);
+    else if (view.display.range == RangeMode::Suggested && view.pane.rangeGrowsToData)
+        view.measured = grownRange(view.pane, view.display.channel, percentileRange(values, 0.01, 0.99));
     else view.measured = view.finite;
     ValueRange axis = view.finite;
     if (view.display.logScale) axis = logSafeRange(axis.lo, axis.hi);

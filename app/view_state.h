@@ -65,6 +65,11 @@ struct ViewState {
 // Reads the pane's texture back into `values` (rows flipped so row 0 is the top row shown) and
 // recomputes the statistics. A pane without a texture clears them.
 void readBackValues(ViewState& view);
+// The suggested range of a pane whose range grows to its data (PaneImage::rangeGrowsToData): the
+// declared range of `channel` widened to hold `data` (the window passes the data's 1st to 99th
+// percentile, so that a few outlying pixels do not squeeze the rest), symmetric about 0 for a diverging
+// channel.
+ValueRange grownRange(const PaneImage& pane, Channel channel, const ValueRange& data);
 // Recomputes the statistics from `values` for the current display settings (channel, range, log).
 void updateStatistics(ViewState& view);
 // The value of texel (x, y) (row 0 at the top) from the CPU copy; false when there is none.

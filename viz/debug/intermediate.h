@@ -79,6 +79,11 @@ struct Intermediate {
     // (a diverging map takes the larger magnitude of the two), so that a peak does not wash out the rest
     // (polyvol's signed total, whose values run from 1e-3 to its light's peak).
     bool rangeFromData = false;
+    // The suggested range is the declared one (of the channel shown), widened to hold the data's 1st to
+    // 99th percentile: counts that mostly fit the declared range but can exceed it (polyvol's
+    // crossings, where many light volumes overlap: tv-room's VPL cubes cross every eye ray). A diverging
+    // channel widens symmetrically about 0.
+    bool rangeGrowsToData = false;
     // Empty: the channels are one quantity (a colour, or a scalar in r). Else channel i (r, g, b, a) is
     // channels[i]; the window starts on the first.
     std::vector<ChannelInfo> channels{};

@@ -129,6 +129,44 @@ TEST(ColourBar, ARangeFromTheDataLeavesThePeakOut) {
     EXPECT_EQ(declared.hi, 1.0f);
 }
 
+// A count whose declared range the data can exceed (Intermediate::rangeGrowsToData: polyvol's crossings,
+// declared [0, 16]): the range stays as declared while the data fits it, a few outlying pixels included,
+// and widens to the data's 99th percentile when most of it lies beyond (tv-room's overlapping volumes);
+// a diverging channel widens symmetrically about 0.
+TEST(ColourBar, ARangeThatGrowsToTheDataKeepsTheDeclaredOneWhileTheDataFits) {
+    ViewState view;
+    view.pane = paneOf(viz::ViewKind::Scalar, 0.0f, 16.0f, "faces");
+    view.pane.rangeGrowsToData = true;
+    view.values = viz::Image(100, 100, 1);
+    view.meaningful = 1;
+    auto mapped = [&] {
+        updateStatistics(view);
+        return resolveMapping(view.pane, view.display, 0.0f, view.measured);
+    };
+    // 9,950 values in 0..15 and 50 at 52 (grate's jagged bars): the declared range stands.
+    for (int i = 0; i < 10000; ++i) view.values.pixels[std::size_t(i)] = i < 9950 ? float(i % 16) : 52.0f;
+    DisplayMapping m = mapped();
+    EXPECT_EQ(m.lo, 0.0f);
+    EXPECT_EQ(m.hi, 16.0f);
+    // Every value from 20 to 119, equally often: the top is the 99th percentile, 119 at nearest rank.
+    for (int i = 0; i < 10000; ++i) view.values.pixels[std::size_t(i)] = float(20 + i % 100);
+    m = mapped();
+    EXPECT_EQ(m.lo, 0.0f) << "a count keeps 0 at the bottom";
+    EXPECT_NEAR(m.hi, 119.0f, 1.0f);
+    // Diverging: values from -30 to 10 give [-30, 30] (the 1st percentile, -30 at nearest rank).
+    view.pane = paneOf(viz::ViewKind::Signed, -4.0f, 4.0f, "faces");
+    view.pane.rangeGrowsToData = true;
+    for (int i = 0; i < 10000; ++i) view.values.pixels[std::size_t(i)] = float(-30 + i % 41);
+    m = mapped();
+    EXPECT_NEAR(m.hi, 30.0f, 1.0f);
+    EXPECT_EQ(m.lo, -m.hi);
+    // Without the flag the declared range stands.
+    view.pane.rangeGrowsToData = false;
+    m = mapped();
+    EXPECT_EQ(m.lo, -4.0f);
+    EXPECT_EQ(m.hi, 4.0f);
+}
+
 TEST(ColourBar, AnHdrImagesBarEndsWhereTheExposureReachesWhite) {
     PaneImage pane = paneOf(viz::ViewKind::Colour, 0.0f, 1.0f, "radiance");
     pane.mode = DisplayMode::HdrColour;

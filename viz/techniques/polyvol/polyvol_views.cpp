@@ -167,6 +167,7 @@ void PolyvolTechnique::publishVolume(FrameOutput& out, const FrameInput& input, 
                                          {"signed count", "faces", ViewKind::Signed, -4.0f, 4.0f},
                                          {"crossings before the near plane", "faces", ViewKind::Scalar, 0.0f, 4.0f},
                                          {"crossings beyond the surface", "faces", ViewKind::Scalar, 0.0f, 4.0f}};
+    out.intermediates.back().rangeGrowsToData = true;  // tv-room's 17 overlapping volumes exceed 16 everywhere
     const std::string units = constant ? "scene units (lit length)" : "radiance";
     out.intermediates.push_back(render::textureIntermediate(
         kPositive, "Positive terms", "sum of +L(0, x) where rays leave the lit volume, plus the chord through the ball around the light", units, ViewKind::Colour,
