@@ -48,13 +48,13 @@ void ComparisonGrid::poll() {
 void ComparisonGrid::runTechniques(const RunTechnique& run) {
     mDue = false;
     mPlayedFrames = 0;
-    mFirstHits = {};
     if (mTracedDistance) {
         try {
             mFirstHits = silhouetteMask(*mTracedDistance, mScene);
         } catch (const std::exception&) {
-            mFirstHits = {};  // the errors over all pixels stand alone
+            // No mask: the errors over all pixels stand alone.
         }
+        mTracedDistance.reset();
     }
     for (ComparisonTile& tile : mTiles) {
         tile.temporal.reset();

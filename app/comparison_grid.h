@@ -74,7 +74,8 @@ public:
     void poll();
     // Runs every technique but the reference twice and keeps the second run (the first compiles shaders
     // and allocates), its time and its error against the reference, over all pixels and over those whose
-    // first hit agrees (the silhouette pixels are found here, once per snapshot: it needs the GL context).
+    // first hit agrees (the silhouette pixels are found by the first call after the reference is in: it
+    // needs the GL context; stopPlaying's call reuses them).
     void runTechniques(const RunTechnique& run);
     // Playing (the reference is in): every technique but the reference once on `moved` (the window's
     // moving lights; its camera with `followCamera`, else the snapshot's) as frame `frame`; its tile shows
@@ -92,10 +93,10 @@ public:
 
     std::vector<ComparisonTile>& tiles() { return mTiles; }
     const std::vector<ComparisonTile>& tiles() const { return mTiles; }
-    float exposure() const { return mExposure; }
+    float exposure() const { return mExposure; }  // EV, from the reference's image, shared by every tile
     // The snapshot's silhouette pixels, where the rasterised and the traced first hit differ (0 until the
     // techniques have run, or where the reference published no distance).
-    std::size_t silhouettePixels() const { return mFirstHits.disagreeing; }  // EV, from the reference's image, shared by every tile
+    std::size_t silhouettePixels() const { return mFirstHits.disagreeing; }
     // What a tile without an image says ("computing the reference... pass 2/4").
     std::string waitingText() const;
     // Each technique as a point: run time against relative L2, both on log axes.
@@ -109,8 +110,8 @@ private:
     CpuWorker* mWorker = nullptr;  // the reference's, the pool's while the grid is open
     bool mWaiting = false, mDue = false;
     viz::Image mReference;
-    std::optional<viz::Image> mTracedDistance;  // the reference's reference.distance
-    viz::report::FirstHitMask mFirstHits;       // from runTechniques
+    std::optional<viz::Image> mTracedDistance;  // the reference's reference.distance, until the mask is made
+    viz::report::FirstHitMask mFirstHits;       // once per snapshot, by the first runTechniques
     viz::scene::Scene mScene;
     glm::ivec2 mSize{0};
     float mExposure = 0.0f;

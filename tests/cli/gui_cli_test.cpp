@@ -30,7 +30,18 @@ void expectSameImage(const std::string& window, const std::string& cliPath) {
             for (int c = 0; c < 3; ++c) ASSERT_EQ(gui.at(x, y, c), cli.at(x, y, c)) << x << "," << y;
 }
 
-class GuiCli : public WindowCliTest {};
+class GuiCli : public WindowCliTest {
+protected:
+    // Opens the window with `options`, opens the comparison grid (G) once the first frames are in and
+    // returns the screenshot's sidecar; `name` names the files.
+    nlohmann::json comparisonGrid(const std::string& name, const std::string& options) {
+        const fs::path script = writeText(name + ".txt", "frames 2\nkey G\nframes 1\n");
+        const RunResult r = run("gui " + options + " --script " + script.string() + " --screenshot " +
+                                path(name + ".png").string());
+        EXPECT_EQ(r.exitCode, 0) << r.err;
+        return nlohmann::json::parse(readFile(path(name + ".json")));
+    }
+};
 
 // Mean and spread of the pixels inside a rectangle (window pixels).
 void regionStats(const Image& image, const nlohmann::json& rect, double& mean, double& spread) {
@@ -422,11 +433,7 @@ TEST_F(GuiCli, ExportingAViewWritesWhatRenderWrites) {
 }
 
 TEST_F(GuiCli, TheComparisonGridShowsEveryTechniqueWithItsErrorAndTime) {
-    const fs::path script = writeText("compare.txt", "key G\nframes 1\n");
-    const RunResult r = run("gui --scene grate --size 32x24 --script " + script.string() + " --screenshot " +
-                            path("compare.png").string());
-    ASSERT_EQ(r.exitCode, 0) << r.err;
-    const nlohmann::json j = nlohmann::json::parse(readFile(path("compare.json")));
+    const nlohmann::json j = comparisonGrid("compare", "--scene grate --size 32x24");
     const RunResult list = run("list techniques");
     int techniques = 0;
     for (char c : list.out) techniques += c == '\n';
@@ -460,11 +467,7 @@ TEST_F(GuiCli, TheComparisonGridShowsEveryTechniqueWithItsErrorAndTime) {
 // the count and the error over the rest, both worked out here from what `render` writes (the traced and
 // rasterised distances, the reference's and raymarch's L_air) with a loop of the test's own.
 TEST_F(GuiCli, TheComparisonGridGivesEachErrorWithoutTheSilhouettePixels) {
-    const fs::path script = writeText("compare_forest.txt", "frames 2\nkey G\nframes 1\n");
-    const RunResult r = run("gui --scene forest --size 80x60 --script " + script.string() + " --screenshot " +
-                            path("forest.png").string());
-    ASSERT_EQ(r.exitCode, 0) << r.err;
-    const nlohmann::json j = nlohmann::json::parse(readFile(path("forest.json")));
+    const nlohmann::json j = comparisonGrid("forest", "--scene forest --size 80x60");
     auto layer = [&](const std::string& technique, const std::string& id, const std::string& extra) {
         const fs::path out = path(technique + "-" + id + ".exr");
         EXPECT_EQ(run("render --scene forest --technique " + technique + " --size 80x60 --layer " + id + extra +
