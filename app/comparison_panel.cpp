@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "core/text.h"
 #include "image_fit.h"
@@ -12,18 +13,39 @@ namespace airlight {
 
 using viz::ui::Rect;
 
-std::string comparisonHeading(const ComparisonGrid& grid) {
-    if (grid.playing())
-        return "comparison (G), playing (P): frame " + std::to_string(grid.playedFrames()) +
-               ", run time and the change of L_air per frame (along a --path, its error's flicker against the "
-               "reference's frames; the plot: the still frame; P stops)";
-    std::string heading = "comparison (G): L_air at the reference's exposure, time of a warm run and relative L2 "
-                          "against the reference";
-    if (const std::size_t n = grid.silhouettePixels(); n > 0)
-        heading += ", and without the " + std::to_string(n) + " silhouette pixel" + (n == 1 ? "" : "s") +
-                   " whose rasterised and traced first hits differ";
-    return heading;
+std::vector<std::string> comparisonHeadings(const ComparisonGrid& grid) {
+    if (grid.playing()) {
+        const std::string frame = std::to_string(grid.playedFrames());
+        return {"comparison (G), playing (P): frame " + frame +
+                    ", run time and the change of L_air per frame (along a --path, its error's flicker against the "
+                    "reference's frames; the plot: the still frame; P stops)",
+                "comparison (G), playing: frame " + frame + ", run time and change (or flicker) per frame; P stops",
+                "playing: frame " + frame + "; P stops"};
+    }
+    const std::size_t n = grid.silhouettePixels();
+    std::string full = "comparison (G): L_air at the reference's exposure, time of a warm run and relative L2 "
+                       "against the reference";
+    if (n == 0) return {full, "comparison (G): time of a warm run, relative L2 against the reference",
+                        "comparison (G): time, relative L2"};
+    const std::string pixels = std::to_string(n) + " silhouette pixel" + (n == 1 ? "" : "s");
+    full += ", and without the " + pixels + " whose rasterised and traced first hits differ";
+    return {full, "comparison (G): warm-run time, relative L2 against the reference, and w/o " + pixels,
+            "comparison (G): time, relative L2, and w/o " + pixels, "time, relative L2, w/o " + pixels};
 }
+
+std::string comparisonHeading(const ComparisonGrid& grid) { return comparisonHeadings(grid).front(); }
+
+namespace {
+
+// The longest heading that fits `width` pixels.
+std::string fittingHeading(const ComparisonGrid& grid, const viz::ui::FontAtlas& font, float width) {
+    const std::vector<std::string> headings = comparisonHeadings(grid);
+    for (const std::string& h : headings)
+        if (font.measure(h) <= width) return h;
+    return headings.back();  // clipped where even the shortest does not fit
+}
+
+}  // namespace
 
 std::string comparisonTileFigures(const ComparisonGrid& grid, std::size_t i, PathFramesShown path) {
     const ComparisonTile& tile = grid.tiles().at(i);
@@ -76,14 +98,15 @@ ComparisonLayout layOutComparison(const Rect& area, int tiles, float line, float
     return layout;
 }
 
-void drawComparison(FrameCanvas& canvas, const Rect& area, const ComparisonGrid& grid, PathFramesShown path) {
+std::string drawComparison(FrameCanvas& canvas, const Rect& area, const ComparisonGrid& grid, PathFramesShown path) {
     namespace theme = viz::ui::theme;
     viz::ui::DrawList& dl = *canvas.overlay;
     const float line = canvas.line(), pad = 4.0f * canvas.scale;
     const int n = int(grid.tiles().size());
     const bool silhouettes = grid.silhouettePixels() > 0 && !grid.playing();
     const ComparisonLayout layout = layOutComparison(area, n, line, pad, silhouettes ? 3 : 2);
-    dl.textClipped({area.min.x, area.min.y - line}, comparisonHeading(grid), theme::kAccent, area.max.x);
+    const std::string heading = fittingHeading(grid, dl.font(), area.size().x);
+    dl.textClipped({area.min.x, area.min.y - line}, heading, theme::kAccent, area.max.x);
     viz::plot::drawPlot(dl, layout.plot, grid.errorAgainstTime());
     canvas.screen.placeView({"comparison.error_vs_time", "relative L2 against time", layout.plot, -1});
     for (int i = 0; i < n; ++i) {
@@ -119,6 +142,7 @@ void drawComparison(FrameCanvas& canvas, const Rect& area, const ComparisonGrid&
         if (!withoutSilhouettes.empty())
             dl.textClipped({box.min.x, box.max.y + 2.0f + 2.0f * line}, withoutSilhouettes, theme::kDim, right);
     }
+    return heading;
 }
 
 }  // namespace airlight

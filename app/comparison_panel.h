@@ -20,8 +20,10 @@ struct PathFramesShown {
     int ready = 0, total = 0;
 };
 
-// The line over the grid: what the tiles show, still or playing.
-std::string comparisonHeading(const ComparisonGrid& grid);
+// The line over the grid: what the tiles show, still or playing, in full and then in ever shorter forms
+// (the window draws the longest that fits its width; each says what the tiles' figures are).
+std::vector<std::string> comparisonHeadings(const ComparisonGrid& grid);
+std::string comparisonHeading(const ComparisonGrid& grid);  // the full form
 
 // Tile i's figures, the line under its name: still, its warm run's time and error; playing, the last
 // frame's time and its flicker against the reference's path frames once known, else the change of its
@@ -47,8 +49,8 @@ ComparisonLayout layOutComparison(const viz::ui::Rect& area, int tiles, float li
 
 // Draws the grid: the heading on the line above `area`, the tiles' images (pane draws at the grid's
 // exposure), their captions, the plot. Names each tile's image "comparison:ID" (titled with its caption)
-// and the plot "comparison.error_vs_time" in the canvas's screen map.
-void drawComparison(FrameCanvas& canvas, const viz::ui::Rect& area, const ComparisonGrid& grid,
+// and the plot "comparison.error_vs_time" in the canvas's screen map. Returns the heading it drew.
+std::string drawComparison(FrameCanvas& canvas, const viz::ui::Rect& area, const ComparisonGrid& grid,
                     PathFramesShown path);
 
 }  // namespace airlight

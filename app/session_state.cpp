@@ -272,6 +272,17 @@ std::string defaultSessionPath() {
 }
 
 SessionState loadSession(const std::string& path, std::string& problem) {
+    std::error_code missing;
+    if (!std::filesystem::exists(path, missing)) {
+        // A new session: not a problem with the file, but worth a word on where the state will go.
+        problem = "state file '" + path + "' does not exist yet; using defaults (F5 or closing the window saves it)";
+        return SessionState{};
+    }
+    if (!std::filesystem::is_regular_file(path, missing)) {
+        // A folder, a FIFO or a device: never read (a FIFO would block) and never moved aside.
+        problem = "state file '" + path + "' is not a regular file; using defaults";
+        return SessionState{};
+    }
     std::ifstream in(path, std::ios::binary);
     if (!in) {
         problem = "state file '" + path + "' cannot be read; using defaults";

@@ -1,6 +1,7 @@
 // One frame of the window: the status lines, the sidebar, the view grid or comparison, the panels under it
 // and the help lines; and the window's presentation (UI scale, full screen).
 #include "gui_app.h"
+#include "help_lines.h"
 
 namespace airlight {
 
@@ -43,9 +44,14 @@ void GuiApp::draw() {
                                                     (mAnimation.playing ? " (P pauses)   " : " (P plays)   ")
                                               : std::string()) +
                              helpLine(HelpLine::Frame, flying);
-    const float bottom = float(fb.y) - 2.0f * line - pad;
-    dl.textClipped({pad, bottom}, help, kDim, float(fb.x) - pad);
-    dl.textClipped({pad, bottom + line}, helpLine(HelpLine::Views, flying), kDim, float(fb.x) - pad);
+    // Packed into whole lines (help_lines.h): a narrow window gives up a line of the views for every key.
+    const auto measure = [this](std::string_view x) { return mFont->measure(x); };
+    std::vector<std::string> helpLines = packHelp(help, float(fb.x) - 2.0f * pad, measure, 2);
+    for (std::string& l : packHelp(helpLine(HelpLine::Views, flying), float(fb.x) - 2.0f * pad, measure, 2))
+        helpLines.push_back(std::move(l));
+    const float bottom = float(fb.y) - float(helpLines.size()) * line - pad;
+    for (std::size_t i = 0; i < helpLines.size(); ++i)
+        dl.textClipped({pad, bottom + float(i) * line}, helpLines[i], kDim, float(fb.x) - pad);
 
     // Sidebar: techniques, then views (sidebar.h).
     std::vector<std::string> views;

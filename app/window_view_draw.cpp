@@ -60,8 +60,9 @@ void GuiApp::drawViewGrid(const Rect& area) {
     if (frameHeight > 1.0f) mImageHeight = frameHeight;
     if (mComparison.isOpen()) {
         const Rect grid{{area.max.x - half, area.min.y + mFont->lineHeight()}, area.max};
-        drawComparison(mCanvas, grid, mComparison, {mAnimation.reference.ready(), mAnimation.reference.total()});
-        mCanvas.screen.placeView({"comparison", "comparison grid", grid, -1});
+        const std::string heading =
+            drawComparison(mCanvas, grid, mComparison, {mAnimation.reference.ready(), mAnimation.reference.total()});
+        mCanvas.screen.placeView({"comparison", heading, grid, -1});  // titled with the heading drawn over it
     }
 }
 

@@ -493,6 +493,9 @@ TEST_F(GuiCli, TheComparisonGridGivesEachErrorWithoutTheSilhouettePixels) {
         }
     ASSERT_GT(silhouettes, 0u) << "forest at 80x60 has no silhouette pixel any more";
     ASSERT_LT(silhouettes, 80u * 60u / 100u);
+    // The heading over the grid (in whichever form fits the window) says how many pixels were left out.
+    EXPECT_NE(sidecarViewTitle(j, "comparison").find(std::to_string(silhouettes) + " silhouette pixels"), std::string::npos)
+        << sidecarViewTitle(j, "comparison");
     for (const auto& tile : j.at("comparison")) {
         const std::string technique = tile.at("technique");
         EXPECT_EQ(tile.at("silhouette_pixels").get<std::size_t>(), silhouettes) << technique;

@@ -34,7 +34,7 @@ protected:
 
 TEST_F(GuiInspector, TheRayInspectorShowsTheValuesAirlightRenderGivesAtThatPixel) {
     const nlohmann::json j = inspect("inspect", "--scene grate --technique raymarch --size 40x30 --set samples=128",
-                                     0.5, 0.45);
+                                     20.5 / 40.0, 0.45);  // the centre of a pixel, not the edge at 0.5
     ASSERT_TRUE(j.contains("inspector"));
     const auto& in = j.at("inspector");
     const int x = in.at("pixel")[0].get<int>(), y = in.at("pixel")[1].get<int>();

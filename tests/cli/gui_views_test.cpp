@@ -208,9 +208,10 @@ TEST_F(GuiViews, ADifferenceViewAgainstTheReferenceIsHeldWhilePlayingAndFollowsW
 
 TEST_F(GuiViews, SentinelTexelsAreCountedApartAndMinmaxMarksThePixelsEpipolarRow) {
     // minmax's rectified map stores -1 for light rays outside the spot's cone: a sentinel the view
-    // counts apart; hovering the final frame marks the pixel's slice as a row there.
+    // counts apart; hovering the final frame marks the pixel's slice as a row there. (0.5104, 0.5139) is
+    // the centre of pixel (24, 18), not the edge between two pixels at 0.5.
     const fs::path script =
-        writeText("neg.txt", "click \"view:Rectified shadow map S\"\nframes 1\nhover final 0.5 0.5\nframes 1\n");
+        writeText("neg.txt", "click \"view:Rectified shadow map S\"\nframes 1\nhover final 0.5104 0.5139\nframes 1\n");
     const RunResult r = run("gui --scene grate --technique minmax --size 48x36 --script " + script.string() +
                             " --screenshot " + path("neg.png").string());
     ASSERT_EQ(r.exitCode, 0) << r.err;
@@ -246,8 +247,9 @@ TEST_F(GuiViews, SentinelTexelsAreCountedApartAndMinmaxMarksThePixelsEpipolarRow
 TEST_F(GuiViews, VsvMarksThePixelsThetaRowAndItsEyeRayInTheVoxelSlice) {
     // The voxel slice shown is the one of the picked pixel (default: the image centre): hovering that
     // pixel puts its eye ray in the slice as a column; the occluder map (y = theta cell) gets a row.
+    // (0.5104, 0.5139) is the centre of pixel (24, 18), not the edge between two pixels at 0.5.
     const fs::path script = writeText("vsv.txt", "click \"view:Occluder alpha\"\nframes 1\nkey H\nframes 1\n"
-                                                 "hover final 0.5 0.5\nframes 1\n");
+                                                 "hover final 0.5104 0.5139\nframes 1\n");
     const RunResult r = run("gui --scene grate --technique vsv --size 48x36 --script " + script.string() +
                             " --screenshot " + path("vsv.png").string());
     ASSERT_EQ(r.exitCode, 0) << r.err;

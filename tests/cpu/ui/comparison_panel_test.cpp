@@ -95,6 +95,15 @@ TEST(ComparisonPanel, StillTilesSayTheirTimeAndErrorAndTheReferenceIsTheGroundTr
     // No silhouette pixel in this view (the grid has not run): no third line, nothing in the heading.
     for (std::size_t i = 0; i < grid.tiles().size(); ++i) EXPECT_EQ(comparisonTileSilhouetteLine(grid, i), "") << i;
     EXPECT_EQ(comparisonHeading(grid).find("silhouette"), std::string::npos);
+    // Shorter forms for a narrow grid, each shorter than the one before and each still naming the error.
+    const std::vector<std::string> headings = comparisonHeadings(grid);
+    ASSERT_GE(headings.size(), 2u);
+    EXPECT_EQ(headings.front(), comparisonHeading(grid));
+    for (std::size_t i = 1; i < headings.size(); ++i) {
+        EXPECT_LT(headings[i].size(), headings[i - 1].size()) << headings[i];
+        EXPECT_NE(headings[i].find("relative L2"), std::string::npos) << headings[i];
+    }
+    EXPECT_LE(headings.back().size(), 40u) << headings.back();
 }
 
 TEST(ComparisonPanel, TheErrorWithoutSilhouettePixelsIsShortAndSaysHowManyWereLeftOut) {

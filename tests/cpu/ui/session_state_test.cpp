@@ -175,6 +175,13 @@ TEST(SessionState, BrokenFilesGiveTheDefaultsAndAReasonNamingTheFile) {
     std::string problem;
     loadSession((dir / "missing.json").string(), problem);
     EXPECT_NE(problem.find("missing.json"), std::string::npos);
+    EXPECT_NE(problem.find("does not exist yet"), std::string::npos) << problem;
+    // A folder under the name is neither read nor moved aside.
+    fs::create_directories(dir / "folder.json");
+    loadSession((dir / "folder.json").string(), problem);
+    EXPECT_NE(problem.find("is not a regular file"), std::string::npos) << problem;
+    EXPECT_TRUE(fs::is_directory(dir / "folder.json"));
+    EXPECT_FALSE(fs::exists(dir / "folder.json.broken"));
     // Saving creates the folder and replaces the file whole.
     saveSession((dir / "deeper" / "s.json").string(), sample());
     const SessionState back = loadSession((dir / "deeper" / "s.json").string(), problem);
