@@ -22,9 +22,11 @@ glm::vec4 colourOf(StatusTone tone) {
 
 std::string timingLine(const viz::Timing& timing) {
     if (timing.stages.empty()) return "timings: (none yet)";
-    std::string line = "timings:";
+    // The total and its clock first: a narrow window cuts the line at its end, and the stages are also in
+    // the stage-times chart under the views.
+    std::string line = "timings: total " + viz::format("%.1f ms", timing.totalMilliseconds()) + " (clock: " +
+                       timing.clock + ")   |";
     for (const auto& st : timing.stages) line += "  " + st.stage + " " + viz::format("%.1f ms", st.milliseconds);
-    line += "  | total " + viz::format("%.1f ms", timing.totalMilliseconds()) + "  (clock: " + timing.clock + ")";
     return line;
 }
 

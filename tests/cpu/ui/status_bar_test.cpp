@@ -66,8 +66,8 @@ TEST(StatusBar, ARunAddsItsSizeItsPassItsResumeAndItsStageTimes) {
               "160x120)   stage 5/6 minmax.traverse sub-step 3/28 (S, D, Home, End)   re-ran from stage 5 (earlier "
               "ones kept)   (minmax: 1D min-max mipmaps)");
     EXPECT_EQ(lines[1].text,
-              "timings:  minmax.traverse 12.2 ms  minmax.compose 0.5 ms  | total 12.8 ms  (clock: "
-              "glFinish+steady_clock)");
+              "timings: total 12.8 ms (clock: glFinish+steady_clock)   |  minmax.traverse 12.2 ms  "
+              "minmax.compose 0.5 ms");
 }
 
 TEST(StatusBar, AnErrorWinsTheThirdLineThenTheNoticeThenTheRunsNote) {
