@@ -99,8 +99,8 @@ void drawCellBands(const ViewCellFrame& f, const Rect& image) {
 
 // The title bar: highlighted when focused (keys and the views list act on it). Not the complete
 // algorithm: every view says where the run stopped, in the warning colour; then its negative, NaN and
-// Inf pixels. Too long for the bar (a small view, a large UI scale): each part shortened in the middle,
-// the warnings first kept whole, the full text shown while the title is hovered. Returns the whole title.
+// Inf pixels. Too long for the bar (a small view, a large UI scale): the warnings kept whole first, then
+// the title's first sections, the full text shown while the title is hovered. Returns the whole title.
 std::string drawCellTitle(const ViewCellFrame& f, int id, ViewState& v, const ViewCellParts& parts) {
     FrameCanvas& canvas = *f.canvas;
     DrawList& dl = *canvas.overlay;

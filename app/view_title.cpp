@@ -12,7 +12,7 @@ namespace airlight {
 std::pair<std::string, std::string> viewTitle(const ViewState& v, const ViewTitleFacts& f) {
     if (!f.haveOutput) return {f.gpuTechnique ? "(no view)" : "computing...", ""};
     std::string title = v.pane.label.empty() ? v.content : v.pane.label;
-    // The temporal view's running score, first: titles are shortened in the middle to fit.
+    // The temporal view's running score, in the first section: a narrow title keeps that one whole.
     const bool temporal = v.pane.id == kTemporalChangeId || v.pane.id == kTemporalErrorChangeId;
     if (v.pane.id == kTemporalChangeId) title += ": " + f.temporalChange;
     if (v.pane.id == kTemporalErrorChangeId) title += ": " + f.temporalErrorChange;
@@ -80,10 +80,10 @@ FittedTitle fitTitleBar(const viz::ui::FontAtlas& font, const std::string& title
                         const std::string& note, float width, float noteWidth) {
     FittedTitle f;
     const float warningWidth = font.measure(warnings.early + warnings.counts);
-    f.title = elideMiddle(font, title, std::max(0.35f * width, width - warningWidth));
+    f.title = elideSections(font, title, std::max(0.35f * width, width - warningWidth));
     const float rest = width - font.measure(f.title);
-    f.early = elideMiddle(font, warnings.early, std::max(0.0f, rest - font.measure(warnings.counts)));
-    f.note = elideMiddle(font, note, noteWidth);
+    f.early = elideBracketWords(font, warnings.early, std::max(0.0f, rest - font.measure(warnings.counts)));
+    f.note = elideSections(font, note, noteWidth);
     f.titleElided = f.title != title || f.early != warnings.early;
     f.noteElided = f.note != note;
     return f;

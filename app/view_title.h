@@ -42,7 +42,8 @@ TitleWarnings titleWarnings(const ViewState& v, const std::string& stoppedEarly,
 
 // The title bar's lines fitted to their widths (`width` for the first line up to the display toggle,
 // `noteWidth` for the note): the warnings keep their room first (the title keeps at least 35 % of the
-// line), then each part is shortened in the middle. The counts are always shown whole.
+// line); the title and the note then keep their first sections whole ("  ..." for the rest) and where
+// the run stopped loses whole words from its end (text_fit.h). The counts are always shown whole.
 struct FittedTitle {
     std::string title, early, note;
     bool titleElided = false, noteElided = false;

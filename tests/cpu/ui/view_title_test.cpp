@@ -4,11 +4,15 @@
 // the reference's frames along a path.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
+#include <vector>
 
 #include "cpu/ui/synthetic_panel.h"
 #include "temporal_monitor.h"
+#include "text_fit.h"
 #include "view_title.h"
 
 namespace airlight {
@@ -138,15 +142,16 @@ TEST_F(ViewTitleTest, ATitleTooLongForItsBarIsShortenedBeforeItsWarnings) {
     EXPECT_EQ(whole.note, note);
     EXPECT_FALSE(whole.titleElided || whole.noteElided);
 
-    const float width = 0.6f * all;
+    // Room for the name and its place in the list, not for the id and stage: the title's later sections
+    // give way first, "  ..." saying that more is shown on hover.
+    const std::string head = "Rectified shadow map, picked slice   [6/19]  ...";
+    const float width = font.measure(head + warn.early + warn.counts) + 1.0f;
+    ASSERT_LT(width, all);
     const FittedTitle fit = fitTitleBar(font, title, warn, note, width, 0.5f * font.measure(note));
     EXPECT_TRUE(fit.titleElided);
     EXPECT_TRUE(fit.noteElided);
     EXPECT_EQ(fit.early, warn.early) << "the warning is kept whole while the title can give way";
-    EXPECT_NE(fit.title, title);
-    EXPECT_NE(fit.title.find(" ... "), std::string::npos);
-    EXPECT_EQ(fit.title.substr(0, 10), title.substr(0, 10));  // shortened in the middle: both ends kept
-    EXPECT_EQ(fit.title.substr(fit.title.size() - 8), title.substr(title.size() - 8));
+    EXPECT_EQ(fit.title, head);
     EXPECT_LE(font.measure(fit.title + fit.early + warn.counts), width);
     EXPECT_LE(font.measure(fit.note), 0.5f * font.measure(note));
 
@@ -157,6 +162,61 @@ TEST_F(ViewTitleTest, ATitleTooLongForItsBarIsShortenedBeforeItsWarnings) {
     EXPECT_LE(font.measure(tight.title), 0.35f * narrow);
     EXPECT_NE(tight.early, warn.early);
     EXPECT_LE(font.measure(tight.title + tight.early + warn.counts), narrow + 1.0f);
+}
+
+// A title in sections ("name   [k/n]  id  (stage ...)"), narrowed step by step: whole while it fits, then
+// its first sections followed by "  ...", then its name alone shortened in the middle; never wider than
+// asked (each width checked against the font, an exhaustive loop over the widths).
+TEST_F(ViewTitleTest, ANarrowTitleKeepsItsFirstSectionsWhole) {
+    const viz::ui::FontAtlas& font = viz::ui::testing::testFont();
+    const std::string title = "Distance d   [3/8]  reference.distance  (stage reference.trace)";
+    const std::vector<std::string> heads = {"Distance d", "Distance d   [3/8]", "Distance d   [3/8]  reference.distance"};
+    const float whole = font.measure(title);
+    int sectionForms = 0;
+    for (float w = whole + 2.0f; w >= font.measure("..."); w -= 1.0f) {  // "..." is the least it gives
+        const std::string fit = elideSections(font, title, w);
+        if (w >= whole) {
+            EXPECT_EQ(fit, title);
+            continue;
+        }
+        EXPECT_LE(font.measure(fit), w) << fit;
+        const bool sectioned = std::any_of(heads.begin(), heads.end(), [&](const std::string& h) { return fit == h + "  ..."; });
+        if (sectioned) {
+            ++sectionForms;
+            // The longest whole-section form that fits.
+            for (const std::string& h : heads) {
+                if (font.measure(h + "  ...") <= w) { EXPECT_GE(fit.size(), h.size() + 5) << fit; }
+            }
+        } else {
+            EXPECT_GT(font.measure(heads[0] + "  ..."), w) << fit;  // only when even the name does not fit
+            EXPECT_EQ(fit.find("[3/8]"), std::string::npos) << fit;
+        }
+    }
+    EXPECT_GE(sectionForms, 3);
+}
+
+// Where the run stopped, narrowed: whole words cut from the end with "..." in their place, the opening
+// word and the brackets kept, never wider than asked.
+TEST_F(ViewTitleTest, ANarrowStoppedWarningLosesWholeWordsFromItsEnd) {
+    const viz::ui::FontAtlas& font = viz::ui::testing::testFont();
+    const std::string early = "   [stopped after stage 1/5 reference.trace]";
+    const std::string stem = "   [stopped after stage 1/5 reference.trace";
+    const float whole = font.measure(early), least = font.measure("   [stopped ...]");
+    for (float w = whole + 2.0f; w >= least; w -= 1.0f) {
+        const std::string fit = elideBracketWords(font, early, w);
+        EXPECT_LE(font.measure(fit), w) << fit;
+        if (w >= whole) {
+            EXPECT_EQ(fit, early);
+            continue;
+        }
+        ASSERT_GE(fit.size(), 5u);
+        EXPECT_EQ(fit.substr(fit.size() - 5), " ...]") << fit;
+        const std::string kept = fit.substr(0, fit.size() - 5);
+        EXPECT_EQ(stem.rfind(kept, 0), 0u) << fit;                 // a start of the original...
+        EXPECT_EQ(stem[kept.size()], ' ') << fit;                  // ...ending at a whole word
+        EXPECT_EQ(kept.rfind("   [stopped", 0), 0u) << fit;
+    }
+    EXPECT_LE(font.measure(elideBracketWords(font, early, 0.5f * least)), 0.5f * least);
 }
 
 }  // namespace
