@@ -33,8 +33,6 @@ std::vector<std::string> comparisonHeadings(const ComparisonGrid& grid) {
             "comparison (G): time, relative L2, and w/o " + pixels, "time, relative L2, w/o " + pixels};
 }
 
-std::string comparisonHeading(const ComparisonGrid& grid) { return comparisonHeadings(grid).front(); }
-
 namespace {
 
 // The longest heading that fits `width` pixels.

@@ -23,7 +23,6 @@ struct PathFramesShown {
 // The line over the grid: what the tiles show, still or playing, in full and then in ever shorter forms
 // (the window draws the longest that fits its width; each says what the tiles' figures are).
 std::vector<std::string> comparisonHeadings(const ComparisonGrid& grid);
-std::string comparisonHeading(const ComparisonGrid& grid);  // the full form
 
 // Tile i's figures, the line under its name: still, its warm run's time and error; playing, the last
 // frame's time and its flicker against the reference's path frames once known, else the change of its

@@ -10,10 +10,11 @@
 
 namespace airlight {
 
-// Splits `text` at its separators (three spaces, as helpLine joins briefs) and packs the pieces, in
-// order and never cut, into lines no wider than `width` by `measure`; a piece wider than `width` gets a
-// line of its own. At most `maxLines` lines: the last takes whatever is left (and is clipped when drawn).
-std::vector<std::string> packHelp(const std::string& text, float width,
+// Packs `briefs` (input_table.h's helpBriefs, and the window's own facts), in order and never cut, into
+// lines no wider than `width` by `measure`, three spaces between two briefs on a line; a brief wider
+// than `width` gets a line of its own. At most `maxLines` lines: the last takes whatever is left (and
+// is clipped when drawn).
+std::vector<std::string> packHelp(const std::vector<std::string>& briefs, float width,
                                   const std::function<float(std::string_view)>& measure, int maxLines);
 
 }  // namespace airlight

@@ -255,14 +255,12 @@ Command commandForChar(unsigned codepoint) {
     return Command::None;
 }
 
-std::string helpLine(HelpLine line, bool fly) {
-    std::string out;
+std::vector<std::string> helpBriefs(HelpLine line, bool fly) {
+    std::vector<std::string> out;
     const KeyState state{fly, false};
-    for (const KeyBinding& b : keyBindings()) {
-        if (b.line != line || b.brief.empty() || b.context == KeyContext::Lesson || !applies(b.context, state)) continue;
-        if (!out.empty()) out += "   ";
-        out += b.brief;
-    }
+    for (const KeyBinding& b : keyBindings())
+        if (b.line == line && !b.brief.empty() && b.context != KeyContext::Lesson && applies(b.context, state))
+            out.push_back(b.brief);
     return out;
 }
 

@@ -77,8 +77,8 @@ Command commandForChar(unsigned codepoint);
 // {NextStage, NextSubstep, FirstSubstep, LastSubstep} gives "S, D, Home, End" with the orbit camera and
 // "Home, End" in fly mode (S and D drive the camera there). A command without a key there is left out.
 std::string keyNames(const std::vector<Command>& commands, const KeyState& state);
-// The help line at the bottom of the window (fly or orbit camera).
-std::string helpLine(HelpLine line, bool fly);
+// The briefs of one help line at the bottom of the window (fly or orbit camera), in the table's order.
+std::vector<std::string> helpBriefs(HelpLine line, bool fly);
 // The README's key table (Markdown, one row per binding, with a context column).
 std::string markdownKeyTable();
 // The same as plain text, for `airlight gui --help`.

@@ -272,13 +272,14 @@ std::string defaultSessionPath() {
 }
 
 SessionState loadSession(const std::string& path, std::string& problem) {
-    std::error_code missing;
-    if (!std::filesystem::exists(path, missing)) {
+    std::error_code statusError;  // a path that cannot be looked at reads as one that does not exist
+    const std::filesystem::file_status status = std::filesystem::status(path, statusError);
+    if (!std::filesystem::exists(status)) {
         // A new session: not a problem with the file, but worth a word on where the state will go.
         problem = "state file '" + path + "' does not exist yet; using defaults (F5 or closing the window saves it)";
         return SessionState{};
     }
-    if (!std::filesystem::is_regular_file(path, missing)) {
+    if (!std::filesystem::is_regular_file(status)) {
         // A folder, a FIFO or a device: never read (a FIFO would block) and never moved aside.
         problem = "state file '" + path + "' is not a regular file; using defaults";
         return SessionState{};

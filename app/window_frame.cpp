@@ -36,18 +36,16 @@ void GuiApp::draw() {
 
     // Help lines at the bottom, from the key table.
     const bool flying = mode == CameraController::Mode::Fly;
-    const std::string help = (flying ? std::string("camera: FLY   ")
-                                     : "camera: ORBIT (target " + format("%.2f", mController.targetDistance()) + ")   ") +
-                             (mAnimation.path ? "path " + mAnimation.path->text + " frame " +
-                                                    std::to_string(mAnimation.pathFrame + 1) + "/" +
-                                                    std::to_string(mAnimation.pathFrames) +
-                                                    (mAnimation.playing ? " (P pauses)   " : " (P plays)   ")
-                                              : std::string()) +
-                             helpLine(HelpLine::Frame, flying);
+    std::vector<std::string> frameHelp = {
+        flying ? std::string("camera: FLY") : "camera: ORBIT (target " + format("%.2f", mController.targetDistance()) + ")"};
+    if (mAnimation.path)
+        frameHelp.push_back("path " + mAnimation.path->text + " frame " + std::to_string(mAnimation.pathFrame + 1) + "/" +
+                            std::to_string(mAnimation.pathFrames) + (mAnimation.playing ? " (P pauses)" : " (P plays)"));
+    for (std::string& b : helpBriefs(HelpLine::Frame, flying)) frameHelp.push_back(std::move(b));
     // Packed into whole lines (help_lines.h): a narrow window gives up a line of the views for every key.
     const auto measure = [this](std::string_view x) { return mFont->measure(x); };
-    std::vector<std::string> helpLines = packHelp(help, float(fb.x) - 2.0f * pad, measure, 2);
-    for (std::string& l : packHelp(helpLine(HelpLine::Views, flying), float(fb.x) - 2.0f * pad, measure, 2))
+    std::vector<std::string> helpLines = packHelp(frameHelp, float(fb.x) - 2.0f * pad, measure, 2);
+    for (std::string& l : packHelp(helpBriefs(HelpLine::Views, flying), float(fb.x) - 2.0f * pad, measure, 2))
         helpLines.push_back(std::move(l));
     const float bottom = float(fb.y) - float(helpLines.size()) * line - pad;
     for (std::size_t i = 0; i < helpLines.size(); ++i)
