@@ -158,6 +158,19 @@ def edge_cases():
     doc.image(checker(2, (255, 200, 100, 255), (255, 255, 255, 255)))
     doc.json["extensionsUsed"] = ["KHR_materials_emissive_strength"]
     out["emissive_quad_area_light.gltf"] = doc.scene().gltf()
+
+    # Maps the loader leaves out: a normal map, and a texture reached only through MSFT_texture_dds
+    # whose image no decoder reads; the base colour is texture 2, renumbered to 0 on load.
+    doc = quad_doc({"name": "mapped", "normalTexture": {"index": 0},
+                    "pbrMetallicRoughness": {"baseColorTexture": {"index": 2},
+                                             "metallicRoughnessTexture": {"index": 1}}}, uvs)
+    doc.image(checker(2, (128, 128, 255, 255), (128, 128, 255, 255)))
+    doc.add("images", {"uri": data_uri(b"DDS |\0\0\0" + bytes(24), "image/png")})
+    doc.add("textures", {"extensions": {"MSFT_texture_dds": {"source": len(doc.json["images"]) - 1}}})
+    doc.image(checker(2, (200, 60, 60, 255), (60, 200, 60, 255)))
+    doc.json["extensionsUsed"] = ["MSFT_texture_dds"]
+    doc.light(POINT, ABOVE)
+    out["unused_normal_map_and_dds_only_texture.gltf"] = doc.scene().gltf()
     out["emissive_quad_area_light.glb"] = doc.glb()
 
     doc = triangle_doc(material=0)

@@ -15,6 +15,7 @@
 #include "core/text.h"
 #include "core/json_check.h"
 #include "scene/gltf_loader.h"
+#include "scene/gltf_texture_use.h"
 
 namespace viz::scene::gltf {
 namespace {
@@ -119,13 +120,22 @@ bool refuseWrite(std::string* err, const std::string&, const std::vector<unsigne
     return false;
 }
 
-// Decodes an image only when its bytes lie inside what was loaded and its header states a size within the
-// limits. `user` is the model being parsed: tinygltf hands over an image in a bufferView as the buffer's
+// What the image callback needs: the model being parsed, and which images are drawn.
+struct ImageContext {
+    const tinygltf::Model* model = nullptr;
+    const std::vector<bool>* used = nullptr;
+};
+
+// Decodes an image only when something draws it, its bytes lie inside what was loaded and its header
+// states a size within the limits. An image nothing draws stays empty (it may be a DDS or KTX2 file
+// reached only through an extension). tinygltf hands over an image in a bufferView as the buffer's
 // bytes from the view's offset, `byteLength` long, without checking that the view fits in the buffer.
 bool boundedImageLoader(tinygltf::Image* image, const int index, std::string* err, std::string* warn, int reqWidth,
                         int reqHeight, const unsigned char* bytes, int size, void* user) {
+    const ImageContext& context = *static_cast<const ImageContext*>(user);
+    if (index < 0 || std::size_t(index) >= context.used->size() || !(*context.used)[std::size_t(index)]) return true;
     if (image->bufferView >= 0) {
-        const tinygltf::Model& model = *static_cast<const tinygltf::Model*>(user);
+        const tinygltf::Model& model = *context.model;
         const std::size_t view = std::size_t(image->bufferView);
         const tinygltf::BufferView* v = view < model.bufferViews.size() ? &model.bufferViews[view] : nullptr;
         const std::size_t have = v && std::size_t(v->buffer) < model.buffers.size()
@@ -173,9 +183,10 @@ bool checkItemUri(const nlohmann::json& item, const std::string& who, const Fold
     return true;
 }
 
-// Checks the document's buffers and images before tinygltf allocates or opens anything for them.
-void checkResources(const std::string& json, const Folder& folder, bool binary, std::uint64_t fileSize,
-                    const std::string& prefix) {
+// Checks the document's buffers and the images it draws before tinygltf allocates or opens anything
+// for them, and says which textures and images are drawn.
+TextureUse checkResources(const std::string& json, const Folder& folder, bool binary, std::uint64_t fileSize,
+                          const std::string& prefix) {
     const nlohmann::json doc = nlohmann::json::parse(json, nullptr, /*allow_exceptions=*/false);
     if (!doc.is_object()) throw InputError(prefix + "the JSON document is not an object");
     auto items = [&](const char* key) -> const nlohmann::json* {
@@ -202,14 +213,18 @@ void checkResources(const std::string& json, const Folder& folder, bool binary, 
             }
         }
     }
+    TextureUse use = textureUse(doc);
     if (const nlohmann::json* images = items("images")) {
         for (std::size_t i = 0; i < images->size(); ++i) {
             const nlohmann::json& im = (*images)[i];
             const std::string who = "image " + std::to_string(i);
             if (!im.is_object()) throw InputError(prefix + who + " is not an object");
-            checkItemUri(im, who, folder, prefix);
+            // An image nothing draws may be missing; tinygltf's reads still go through the guarded
+            // callbacks below, so it cannot reach outside the folder or block on a FIFO either.
+            if (use.images[i]) checkItemUri(im, who, folder, prefix);
         }
     }
+    return use;
 }
 
 std::uint32_t le32(const unsigned char* p) {
@@ -279,8 +294,8 @@ std::vector<unsigned char> readFile(const std::string& path, const std::string& 
     return bytes;
 }
 
-void parseModel(const std::vector<unsigned char>& bytes, const std::string& fileName, const std::string& baseDir,
-                bool binary, tinygltf::Model& model) {
+TextureUse parseModel(const std::vector<unsigned char>& bytes, const std::string& fileName, const std::string& baseDir,
+                      bool binary, tinygltf::Model& model) {
     const std::string prefix = "glTF " + quoteValue(fileName) + ": ";
     if (bytes.size() > Limits::kMaxFileBytes) throw InputError(prefix + "over the " + gib(Limits::kMaxFileBytes) + " limit");
     const std::string json = binary ? glbJson(bytes, prefix) : std::string(bytes.begin(), bytes.end());
@@ -291,7 +306,7 @@ void parseModel(const std::vector<unsigned char>& bytes, const std::string& file
 
     Folder folder;
     if (!baseDir.empty()) folder.base = fs::absolute(fs::path(baseDir)).lexically_normal();
-    checkResources(json, folder, binary, bytes.size(), prefix);
+    TextureUse use = checkResources(json, folder, binary, bytes.size(), prefix);
 
     tinygltf::TinyGLTF loader;
     tinygltf::FsCallbacks callbacks{};
@@ -301,7 +316,8 @@ void parseModel(const std::vector<unsigned char>& bytes, const std::string& file
     callbacks.WriteWholeFile = refuseWrite;
     callbacks.user_data = &folder;
     loader.SetFsCallbacks(callbacks);
-    loader.SetImageLoader(boundedImageLoader, &model);  // the model: an image's bufferView is checked against it
+    ImageContext images{&model, &use.images};
+    loader.SetImageLoader(boundedImageLoader, &images);
 
     // tinygltf wants a folder it can join paths to; a name that cannot exist keeps it from the
     // current folder when external files are refused.
@@ -328,6 +344,7 @@ void parseModel(const std::vector<unsigned char>& bytes, const std::string& file
         }
         throw InputError(prefix + why);
     }
+    return use;
 }
 
 }  // namespace viz::scene::gltf

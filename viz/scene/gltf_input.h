@@ -6,11 +6,14 @@
 //    parse before tinygltf's recursive one sees it;
 //  - buffers and images: declared sizes bounded before allocation; external URIs resolved against the
 //    file's folder and refused when they leave it or name anything but a regular file (a folder, a
-//    FIFO, a device); images at most 16384 pixels a side, checked from their header before decoding.
+//    FIFO, a device); images at most 16384 pixels a side, checked from their header before decoding;
+//    only the images Airlight draws are decoded or required to exist (gltf_texture_use.h).
 #pragma once
 
 #include <string>
 #include <vector>
+
+#include "scene/gltf_texture_use.h"
 
 namespace tinygltf {
 class Model;
@@ -24,9 +27,10 @@ std::string quoteValue(const std::string& value);
 // The whole file, or InputError ("glTF 'NAME': ...") when it is missing, not a regular file or too big.
 std::vector<unsigned char> readFile(const std::string& path, const std::string& fileName);
 
-// Parses bytes (binary: GLB) into model. baseDir: the folder external URIs are resolved in (empty:
-// external URIs are refused). Throws InputError naming fileName and the problem.
-void parseModel(const std::vector<unsigned char>& bytes, const std::string& fileName, const std::string& baseDir,
-                bool binary, tinygltf::Model& model);
+// Parses bytes (binary: GLB) into model and says which textures and images are drawn (the others'
+// images are left empty). baseDir: the folder external URIs are resolved in (empty: external URIs are
+// refused). Throws InputError naming fileName and the problem.
+TextureUse parseModel(const std::vector<unsigned char>& bytes, const std::string& fileName, const std::string& baseDir,
+                      bool binary, tinygltf::Model& model);
 
 }  // namespace viz::scene::gltf

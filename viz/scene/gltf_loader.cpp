@@ -73,8 +73,9 @@ glm::dvec3 unitOrSelf(const glm::dvec3& v) {
 
 class Loader {
 public:
-    Loader(const tinygltf::Model& model, const std::string& file, const LoadOptions& options)
-        : mModel(model), mFile(file), mOptions(options), mRead(model, "glTF " + quoteValue(file) + ": ") {}
+    Loader(const tinygltf::Model& model, gltf::TextureUse use, const std::string& file, const LoadOptions& options)
+        : mModel(model), mUse(std::move(use)), mFile(file), mOptions(options),
+          mRead(model, "glTF " + quoteValue(file) + ": ") {}
 
     Scene load() {
         checkExtensions();
@@ -200,8 +201,11 @@ private:
         for (int child : node.children) budget(child, depth + 1);
     }
 
+    // The textures something draws, in file order; the others are left out (with one note) and map to -1.
     void loadTextures() {
+        mTextureSlot.assign(mModel.textures.size(), -1);
         for (std::size_t t = 0; t < mModel.textures.size(); ++t) {
+            if (t >= mUse.textures.size() || !mUse.textures[t]) continue;
             const tinygltf::Texture& gt = mModel.textures[t];
             if (gt.source < 0 || std::size_t(gt.source) >= mModel.images.size()) {
                 mRead.fail("texture " + std::to_string(t) + " has no valid image source");
@@ -220,15 +224,22 @@ private:
             tex.width = image.width;
             tex.height = image.height;
             tex.rgba8 = toRgba8(image);
+            mTextureSlot[t] = int(mScene.textures.size());
             mScene.textures.push_back(std::move(tex));
         }
+        const std::string note = mUse.note();
+        if (!note.empty()) mScene.notes.push_back(note);
     }
 
     int textureIndex(int index, const std::string& who) const {
         if (index < -1 || index >= int(mModel.textures.size())) {
             mRead.fail(who + " refers to missing texture " + std::to_string(index));
         }
-        return index;
+        if (index < 0) return -1;
+        const int slot = mTextureSlot[std::size_t(index)];
+        // Only when the raw JSON value was not the integer tinygltf read (e.g. 2^32 taken as 0).
+        if (slot < 0) mRead.fail(who + ": texture index " + std::to_string(index) + " is not a plain integer in range");
+        return slot;
     }
 
     // A factor's components: finite and in [0, hi] (glTF allows [0, 1] for colours).
@@ -547,6 +558,8 @@ private:
     }
 
     const tinygltf::Model& mModel;
+    gltf::TextureUse mUse;
+    std::vector<int> mTextureSlot;  // glTF texture -> index in mScene.textures, -1 when not loaded
     std::string mFile;
     LoadOptions mOptions;
     gltf::AccessorReader mRead;
@@ -565,10 +578,10 @@ std::string fileName(const std::string& path) { return std::filesystem::path(pat
 Scene loadGltfFromMemory(const std::vector<unsigned char>& bytes, const std::string& file, const std::string& baseDir,
                          bool binary, const LoadOptions& options) {
     tinygltf::Model model;
-    gltf::parseModel(bytes, file, baseDir, binary, model);
+    gltf::TextureUse use = gltf::parseModel(bytes, file, baseDir, binary, model);
     Scene scene;
     try {
-        scene = Loader(model, file, options).load();
+        scene = Loader(model, std::move(use), file, options).load();
     } catch (const std::bad_alloc&) {
         throw InputError("glTF " + quoteValue(file) + ": too large to load (out of memory)");
     } catch (const std::length_error&) {
