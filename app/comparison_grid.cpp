@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 
 #include "render_job.h"
 #include "silhouette_pixels.h"
@@ -155,6 +156,14 @@ nlohmann::json ComparisonGrid::toJson() const {
         if (std::isfinite(mTiles[i].temporal.errorScore())) tiles[i]["error_change_rms"] = mTiles[i].temporal.errorScore();
     }
     return tiles;
+}
+
+std::string tileTimeText(double milliseconds, int decimals) {
+    char text[48];
+    std::snprintf(text, sizeof text, "%.*f", decimals, milliseconds);
+    if (std::atof(text) < 1000.0) return std::string(text) + " ms";  // as rounded: 999.96 is "1.00 s"
+    std::snprintf(text, sizeof text, "%.2f s", milliseconds / 1000.0);
+    return text;
 }
 
 std::string tileErrorText(const viz::report::ErrorMetrics& error) {

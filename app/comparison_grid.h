@@ -47,6 +47,9 @@ struct ComparisonTile {
 // A tile's error as its caption says it: the relative L2 error, or why there is none (a NaN or Inf
 // pixel; a reference that is black where the technique is not, then the largest absolute difference).
 std::string tileErrorText(const viz::report::ErrorMetrics& error);
+// A tile's run time as its caption says it: "281.7 ms" (with `decimals` digits) under a second, "2.41 s"
+// from a second on, so that a slow technique's caption is no longer than a fast one's.
+std::string tileTimeText(double milliseconds, int decimals = 1);
 // Where the view has `silhouettes` pixels (report/first_hits.h), the error without them ("0.0235 w/o 4
 // silhouettes", short enough for a small tile); empty where it has none.
 std::string silhouetteErrorText(double relativeL2Agreeing, std::size_t silhouettes);

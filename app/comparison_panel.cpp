@@ -62,10 +62,10 @@ std::string comparisonTileFigures(const ComparisonGrid& grid, std::size_t i, Pat
         // The flicker against the reference's path frames once known (the figure to rank by, where a tile
         // has room for one), else the change of L_air.
         figures = tile.temporal.errorPairs() > 0
-                      ? viz::format("%.0f ms", tile.playMilliseconds) + viz::format("  flicker %.3g", tile.temporal.errorScore())
-                      : viz::format("%.1f ms", tile.playMilliseconds) + viz::format("   change %.3g", tile.temporal.score());
+                      ? tileTimeText(tile.playMilliseconds, 0) + viz::format("  flicker %.3g", tile.temporal.errorScore())
+                      : tileTimeText(tile.playMilliseconds) + viz::format("   change %.3g", tile.temporal.score());
     } else {
-        figures = viz::format("%.1f ms", tile.milliseconds) + "   " + tileErrorText(tile.error);
+        figures = tileTimeText(tile.milliseconds) + "   " + tileErrorText(tile.error);
     }
     if (tile.error.nanPixels + tile.error.infPixels > 0)
         figures += "   " + std::to_string(tile.error.nanPixels + tile.error.infPixels) + " NaN/Inf px";

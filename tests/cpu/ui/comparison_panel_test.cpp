@@ -90,6 +90,13 @@ TEST(ComparisonPanel, StillTilesSayTheirTimeAndErrorAndTheReferenceIsTheGroundTr
     EXPECT_EQ(comparisonTileFigures(grid, 3, {}), "3.0 ms   reference black: max |a - b| 0.25");
     EXPECT_EQ(comparisonTileFigures(grid, 4, {}), "4.0 ms   error undefined   4 NaN/Inf px");
     EXPECT_EQ(comparisonTileFigures(grid, 5, {}), "failed: shader did not compile");
+    // A run of a second or more in seconds, so that its caption is no longer than a fast one's.
+    grid.tiles().push_back(tile("polyvol", 2412.94, 0.01234));
+    grid.tiles().push_back(tile("ivsv", 999.94, 0.01234));
+    grid.tiles().push_back(tile("vsv", 999.96, 0.01234));
+    EXPECT_EQ(comparisonTileFigures(grid, 6, {}), "2.41 s   error 0.0123");
+    EXPECT_EQ(comparisonTileFigures(grid, 7, {}), "999.9 ms   error 0.0123");
+    EXPECT_EQ(comparisonTileFigures(grid, 8, {}), "1.00 s   error 0.0123") << "not \"1000.0 ms\"";
     const std::vector<std::string> headings = comparisonHeadings(grid);
     ASSERT_GE(headings.size(), 2u);
     EXPECT_NE(headings.front().find("time of a warm run and relative L2"), std::string::npos) << headings.front();
