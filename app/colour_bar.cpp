@@ -123,6 +123,7 @@ ColourBar colourBarFor(const PaneImage& pane, const DisplayMapping& m, const Spe
                 ramp(bar, m.lo, top, m.logScale);
                 bar.caption = (declared ? declared->name + ", " : std::string("each colour channel, ")) +
                               (m.exposure != 0.0f ? "exposure " + figure(m.exposure) + " EV" : std::string("as a colour"));
+                if (m.exposure != 0.0f) bar.shortCaption = (m.exposure > 0.0f ? "+" : "") + figure(m.exposure) + " EV";
             }
             break;
         }

@@ -45,6 +45,7 @@ struct ColourBar {
     std::vector<float> tickAt;
     std::string units;    // of the quantity shown (a declared channel's own)
     std::string caption;  // e.g. "exposure +1.3 EV: white at 0.41", "each value its own colour, 0 black"
+    std::string shortCaption;  // where `caption` does not fit: a shorter form (empty: `caption` elided)
     std::vector<LegendSwatch> legend;
 };
 

@@ -49,9 +49,14 @@ ColourBarLayout drawColourBarText(const ColourBar& bar, const Rect& area, const 
         }
     }
     const float right = picture ? area.min.x + 4.0f * s : ramp.max.x + 10.0f * s;
-    std::string heading = bar.units.empty() ? bar.caption : (bar.caption.empty() ? bar.units : bar.units + "   " + bar.caption);
-    if (bar.logarithmic) heading += "   (log)";
-    out.heading = elideMiddle(font, heading, area.max.x - right - 2.0f * s);
+    const auto headingWith = [&](const std::string& caption) {
+        std::string h = bar.units.empty() ? caption : (caption.empty() ? bar.units : bar.units + "   " + caption);
+        return bar.logarithmic ? h + "   (log)" : h;
+    };
+    const float headingRoom = area.max.x - right - 2.0f * s;
+    std::string heading = headingWith(bar.caption);
+    if (font.measure(heading) > headingRoom && !bar.shortCaption.empty()) heading = headingWith(bar.shortCaption);
+    out.heading = elideMiddle(font, heading, headingRoom);
     text.textClipped({right, area.min.y + 1.0f * s}, out.heading, colours.dim, area.max.x);
     float x = right;
     const float box = line - 4.0f * s;

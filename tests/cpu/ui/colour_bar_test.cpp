@@ -293,4 +293,34 @@ TEST(ColourBar, ANarrowBarShortensASentinelInsteadOfDroppingIt) {
     }
 }
 
+// A colour image's bar says which exposure maps to white. Where "radiance   each colour channel, exposure
+// 2.5 EV" does not fit, the bar gives the exposure alone ("radiance   +2.5 EV") instead of cutting the
+// sentence in the middle ("radiance   each co ..., exposure 2.5 EV"); a wide bar keeps the sentence.
+TEST(ColourBar, ANarrowColourBarKeepsItsExposureWhole) {
+    static const viz::ui::FontAtlas font = viz::ui::FontAtlas::bake(viz::ui::FontAtlas::kDefaultFontPath, 14.0f);
+    ColourBar bar;
+    bar.kind = ColourBar::Kind::Ramp;
+    bar.values = {0.0f, 1.0f};
+    bar.units = "radiance";
+    bar.caption = "each colour channel, exposure 2.5 EV";
+    bar.shortCaption = "+2.5 EV";
+    const std::string full = "radiance   each colour channel, exposure 2.5 EV", brief = "radiance   +2.5 EV";
+    bool sawFull = false, sawBrief = false;
+    for (float width = 100.0f; width <= 1400.0f; width += 1.0f) {
+        viz::ui::DrawList text(font), frames(font);
+        const ColourBarLayout layout = drawColourBarText(bar, {{0.0f, 0.0f}, {width, 36.0f}}, font, 1.0f, text, frames, {});
+        sawFull |= layout.heading == full;
+        sawBrief |= layout.heading == brief;
+        // Narrower than the brief form, that is shortened; the sentence never is.
+        if (layout.heading != full) {
+            EXPECT_EQ(layout.heading.find("colour"), std::string::npos) << width << ": " << layout.heading;
+        }
+        if (layout.heading == brief) {
+            EXPECT_FALSE(sawFull) << "the sentence at a narrower width than the brief form";
+        }
+    }
+    EXPECT_TRUE(sawFull);
+    EXPECT_TRUE(sawBrief);
+}
+
 }  // namespace airlight
