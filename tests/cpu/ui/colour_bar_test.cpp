@@ -264,16 +264,27 @@ TEST(ColourBar, ADeclaredChannelBringsItsOwnRangeUnitsAndMap) {
     EXPECT_EQ(bar.caption, "signed count");
 }
 
+// The window's font, and a grey ramp bar in `units` with nothing else set: what the drawing tests lay out.
+const viz::ui::FontAtlas& barFont() {
+    static const viz::ui::FontAtlas font = viz::ui::FontAtlas::bake(viz::ui::FontAtlas::kDefaultFontPath, 14.0f);
+    return font;
+}
+
+ColourBar rampBar(const std::string& units) {
+    ColourBar bar;
+    bar.kind = ColourBar::Kind::Ramp;
+    bar.values = {0.0f, 1.0f};
+    bar.units = units;
+    return bar;
+}
+
 }  // namespace
 // A narrow bar keeps every legend entry: the overlays (NaN, Inf) whole, a sentinel's long meaning cut to
 // what they leave instead of dropped (a shadow map's "no occluder" sentinel vanished from half-width
 // views); each swatch lies inside the bar, after the one before it.
 TEST(ColourBar, ANarrowBarShortensASentinelInsteadOfDroppingIt) {
-    static const viz::ui::FontAtlas font = viz::ui::FontAtlas::bake(viz::ui::FontAtlas::kDefaultFontPath, 14.0f);
-    ColourBar bar;
-    bar.kind = ColourBar::Kind::Ramp;
-    bar.values = {0.0f, 1.0f};
-    bar.units = "scene units";
+    const viz::ui::FontAtlas& font = barFont();
+    ColourBar bar = rampBar("scene units");
     bar.legend = {{"1e+30: no occluder (cleared far away)", 1e30f, 938034, true},
                   {"NaN", std::nanf(""), 0, false},
                   {"Inf", std::numeric_limits<float>::infinity(), 0, false}};
@@ -297,11 +308,8 @@ TEST(ColourBar, ANarrowBarShortensASentinelInsteadOfDroppingIt) {
 // 2.5 EV" does not fit, the bar gives the exposure alone ("radiance   +2.5 EV") instead of cutting the
 // sentence in the middle ("radiance   each co ..., exposure 2.5 EV"); a wide bar keeps the sentence.
 TEST(ColourBar, ANarrowColourBarKeepsItsExposureWhole) {
-    static const viz::ui::FontAtlas font = viz::ui::FontAtlas::bake(viz::ui::FontAtlas::kDefaultFontPath, 14.0f);
-    ColourBar bar;
-    bar.kind = ColourBar::Kind::Ramp;
-    bar.values = {0.0f, 1.0f};
-    bar.units = "radiance";
+    const viz::ui::FontAtlas& font = barFont();
+    ColourBar bar = rampBar("radiance");
     bar.caption = "each colour channel, exposure 2.5 EV";
     bar.shortCaption = "+2.5 EV";
     const std::string full = "radiance   each colour channel, exposure 2.5 EV", brief = "radiance   +2.5 EV";
