@@ -2,6 +2,7 @@
 
 #include <sys/stat.h>
 
+#include <algorithm>
 #include <climits>
 #include <cstring>
 #include <filesystem>
@@ -183,8 +184,9 @@ bool checkItemUri(const nlohmann::json& item, const std::string& who, const Fold
     return true;
 }
 
-// Checks the document's buffers and the images it draws before tinygltf allocates or opens anything
-// for them, and says which textures and images are drawn.
+// Checks the document's required extensions, its buffers and the images it draws before tinygltf
+// allocates or opens anything for them, and says which textures and images are drawn. Extensions come
+// first: a Draco-compressed mesh's accessors have no bufferView, which tinygltf would report instead.
 TextureUse checkResources(const std::string& json, const Folder& folder, bool binary, std::uint64_t fileSize,
                           const std::string& prefix) {
     const nlohmann::json doc = nlohmann::json::parse(json, nullptr, /*allow_exceptions=*/false);
@@ -193,6 +195,17 @@ TextureUse checkResources(const std::string& json, const Folder& folder, bool bi
         const auto it = doc.find(key);
         return it != doc.end() && it->is_array() ? &*it : nullptr;
     };
+    if (const nlohmann::json* required = items("extensionsRequired")) {
+        static const char* const kSupported[] = {"KHR_lights_punctual", "KHR_materials_emissive_strength"};
+        for (const nlohmann::json& ext : *required) {
+            if (!ext.is_string()) throw InputError(prefix + "extensionsRequired holds a " + ext.type_name() + ", not a name");
+            const std::string name = ext.get<std::string>();
+            if (std::find(std::begin(kSupported), std::end(kSupported), name) == std::end(kSupported)) {
+                throw InputError(prefix + "requires unsupported extension " + quoteValue(name) +
+                                 " (Airlight reads KHR_lights_punctual and KHR_materials_emissive_strength)");
+            }
+        }
+    }
     if (const nlohmann::json* buffers = items("buffers")) {
         for (std::size_t i = 0; i < buffers->size(); ++i) {
             const nlohmann::json& b = (*buffers)[i];

@@ -78,7 +78,6 @@ public:
           mRead(model, "glTF " + quoteValue(file) + ": ") {}
 
     Scene load() {
-        checkExtensions();
         checkNodeForest();
         loadTextures();
         loadMaterials();
@@ -113,13 +112,6 @@ public:
     }
 
 private:
-    void checkExtensions() const {
-        static const std::set<std::string> kSupported = {"KHR_lights_punctual", "KHR_materials_emissive_strength"};
-        for (const std::string& ext : mModel.extensionsRequired) {
-            if (!kSupported.count(ext)) mRead.fail("requires unsupported extension " + quoteValue(ext));
-        }
-    }
-
     void checkNode(int index, const std::string& who) const {
         if (index < 0 || std::size_t(index) >= mModel.nodes.size()) {
             mRead.fail(who + " refers to node " + std::to_string(index) + ", which does not exist");

@@ -113,6 +113,23 @@ TEST_F(GltfBadInput, UnsupportedRequiredExtension) {
     expectInputError([&] { loadGltf(path); }, "requires unsupported extension 'KHR_draco_mesh_compression'");
 }
 
+// A real Draco file's accessors have no bufferView (the data is in the extension's compressed view), which
+// tinygltf reported first ("accessor[0] invalid bufferView", seen on a public Draco Box.glb): the required
+// extension is named before tinygltf parses anything.
+TEST_F(GltfBadInput, ARequiredExtensionIsNamedBeforeAnythingItChanges) {
+    Doc d;
+    d.extensionsRequired = "\"KHR_draco_mesh_compression\"";
+    std::string json = d.json();
+    const std::string view = "{\"bufferView\": 0, ";
+    ASSERT_NE(json.find(view), std::string::npos);
+    json.replace(json.find(view), view.size(), "{");
+    const std::string msg = expectInputError([&] { loadGltf(write("draco.gltf", json)); },
+                                             "requires unsupported extension 'KHR_draco_mesh_compression'");
+    EXPECT_NE(msg.find("Airlight reads KHR_lights_punctual"), std::string::npos) << msg;
+    d.extensionsRequired = "7";
+    expectInputError([&] { loadGltf(write("seven.gltf", d.json())); }, "extensionsRequired holds a number, not a name");
+}
+
 TEST_F(GltfBadInput, MissingBufferFile) {
     Doc d;
     d.bufferUri = "missing.bin";
