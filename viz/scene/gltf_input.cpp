@@ -196,13 +196,13 @@ TextureUse checkResources(const std::string& json, const Folder& folder, bool bi
         return it != doc.end() && it->is_array() ? &*it : nullptr;
     };
     if (const nlohmann::json* required = items("extensionsRequired")) {
-        static const char* const kSupported[] = {"KHR_lights_punctual", "KHR_materials_emissive_strength"};
+        static const std::vector<std::string> kSupported = {"KHR_lights_punctual", "KHR_materials_emissive_strength"};
         for (const nlohmann::json& ext : *required) {
             if (!ext.is_string()) throw InputError(prefix + "extensionsRequired holds a " + ext.type_name() + ", not a name");
             const std::string name = ext.get<std::string>();
-            if (std::find(std::begin(kSupported), std::end(kSupported), name) == std::end(kSupported)) {
-                throw InputError(prefix + "requires unsupported extension " + quoteValue(name) +
-                                 " (Airlight reads KHR_lights_punctual and KHR_materials_emissive_strength)");
+            if (std::find(kSupported.begin(), kSupported.end(), name) == kSupported.end()) {
+                throw InputError(prefix + "requires unsupported extension " + quoteValue(name) + " (Airlight reads " +
+                                 kSupported[0] + " and " + kSupported[1] + ")");
             }
         }
     }

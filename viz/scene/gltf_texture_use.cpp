@@ -35,11 +35,8 @@ std::string count(std::size_t n, const char* what) { return std::to_string(n) + 
 
 }  // namespace
 
-std::size_t TextureUse::texturesSkipped() const { return unused(textures); }
-std::size_t TextureUse::imagesSkipped() const { return unused(images); }
-
 std::string TextureUse::note() const {
-    const std::size_t t = texturesSkipped(), i = imagesSkipped();
+    const std::size_t t = unused(textures), i = unused(images);
     if (t == 0 && i == 0) return {};
     std::string what;
     if (t > 0) what = count(t, "texture") + " of " + std::to_string(textures.size());

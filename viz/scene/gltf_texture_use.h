@@ -6,7 +6,6 @@
 // use, gltf_loader to keep only the textures in use).
 #pragma once
 
-#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -17,8 +16,6 @@ namespace viz::scene::gltf {
 struct TextureUse {
     std::vector<bool> textures;  // per glTF texture: drawn by some material or light
     std::vector<bool> images;    // per glTF image: the core `source` of a drawn texture
-    std::size_t texturesSkipped() const;
-    std::size_t imagesSkipped() const;
     // One note saying what is not loaded and why; empty when everything is used.
     std::string note() const;
 };
