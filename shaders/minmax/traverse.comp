@@ -330,34 +330,45 @@ void main() {
                     runBegin = -1.0;
                 }
             }
-        } else if (end > 0.0) {
+        } else {
             // Node k at level l = findMSB(k) covers columns [lo, lo + width), width = columns >> l.
+            // The inner loop walks until a lit run closes (or the walk ends) and the run is integrated
+            // outside it: an invocation group then executes the integral once per run, not on every node
+            // visit (llvmpipe runs the body of an `if` for the whole group whenever one lane takes it).
             int node = 1;
             int width = uColumns;
             int lo = 0;
-            do {
-                visited += 1.0;
-                WORK_COUNT(kWorkTreeNodes, 1);
-                vec2 mm = treeNode(node, row);
-                if (mm.x <= beta && beta < mm.y) {
-                    node = node * 2;  // mixed: descend to the left child
-                } else {
-                    if (beta < mm.x) {  // lit: open or extend the run (its integral is added later)
-                        if (runBegin < 0.0) runBegin = float(lo);
-                        runEnd = min(end, float(lo + width));
-                    } else if (runBegin >= 0.0) {  // shadowed: close the open run
-                        sum += integrateRun(L, w, g, beta, runBegin, runEnd, cEnd, d);
-                        runBegin = -1.0;
+            bool more = end > 0.0;
+            while (more) {
+                bool closed = false;
+                do {
+                    visited += 1.0;
+                    WORK_COUNT(kWorkTreeNodes, 1);
+                    vec2 mm = treeNode(node, row);
+                    if (mm.x <= beta && beta < mm.y) {
+                        node = node * 2;  // mixed: descend to the left child
+                    } else {
+                        if (beta < mm.x) {  // lit: open or extend the run (its integral is added later)
+                            if (runBegin < 0.0) runBegin = float(lo);
+                            runEnd = min(end, float(lo + width));
+                        } else if (runBegin >= 0.0) {  // shadowed: the open run closes
+                            closed = true;
+                        }
+                        node = node + 1;                      // the next node at this level ...
+                        if ((node & 1) == 0) node = node / 2;  // ... or its parent: at most one level up
+                        // A power of two here is the first node of a level: the walk went past the row's end.
+                        if (bitCount(node) == 1) more = false;
                     }
-                    node = node + 1;                      // the next node at this level ...
-                    if ((node & 1) == 0) node = node / 2;  // ... or its parent: at most one level up
-                    // A power of two here is the first node of a level: the walk went past the row's end.
-                    if (bitCount(node) == 1) break;
+                    int level = findMSB(node);
+                    width = uColumns >> level;
+                    lo = (node - (1 << level)) * width;
+                } while (more && !closed && end > float(lo));
+                if (closed) {
+                    sum += integrateRun(L, w, g, beta, runBegin, runEnd, cEnd, d);
+                    runBegin = -1.0;
                 }
-                int level = findMSB(node);
-                width = uColumns >> level;
-                lo = (node - (1 << level)) * width;
-            } while (end > float(lo));
+                more = more && closed && end > float(lo);
+            }
         }
         if (runBegin >= 0.0) sum += integrateRun(L, w, g, beta, runBegin, runEnd, cEnd, d);
 #ifdef INTEGRAND_SVD
