@@ -200,17 +200,18 @@ void main() {
     // Beyond the first surface (or zfar) the ray has ended: the plane adds nothing there.
     if (t > d) WORK_DISCARD;
 
+    // One light (uLight >= 0: a spot, or a boxed directional light, drawn clipped to its own volume), or
+    // every unbounded light sharing one set of planes over the camera frustum: every light except spots
+    // and, with directional_box, directional lights. One loop with one call of shade() for both: a second
+    // call in an else branch would be run, masked, by every fragment on llvmpipe.
     vec3 value = vec3(0.0);
-    if (uLight >= 0) {
-        value = shade(gLights[uLight], p, w, t);
-    } else {
-        // Unbounded lights share one set of planes over the camera frustum: every light except spots
-        // (drawn clipped to their own frustum) and, with directional_box, directional lights.
-        for (int i = 0; i < uLightCount; ++i) {
-            GpuLight L = gLights[i];
-            if (L.info.x == kLightSpot || (uBoxedDirectional != 0 && L.info.x == kLightDirectional)) continue;
-            value += shade(L, p, w, t);
-        }
+    int first = max(uLight, 0);
+    int last = uLight >= 0 ? uLight + 1 : uLightCount;
+    for (int i = first; i < last; ++i) {
+        GpuLight L = gLights[i];
+        if (uLight < 0 && (L.info.x == kLightSpot || (uBoxedDirectional != 0 && L.info.x == kLightDirectional)))
+            continue;
+        value += shade(L, p, w, t);
     }
     value *= uPlaneWeight * uStoreScale;
 
