@@ -165,33 +165,47 @@ void main() {
     float runV = -1.0;
     float runTa = 0.0;
     int runLength = 0;
-    for (int k = 0; k < bins; ++k) {
-        if ((k & 127) == 0) {
-            c0 = imageLoad(uGrid, ivec3(ia, j0, k >> 7));
-            c1 = imageLoad(uGrid, ivec3(ia, j1, k >> 7));
-            WORK_COUNT(kWorkVoxelsRead, 2);
-        }
-        int bit = k & 127;
-        float v = (1.0 - wTheta) * (testBitFast(c0, bit) ? 0.0 : 1.0) + wTheta * (testBitFast(c1, bit) ? 0.0 : 1.0);
-        float phiA = uEpiPhi.x + float(k) * uEpiPhi.y;
-        float phiB = min(phiA + uEpiPhi.y, phiD);
-        litPhi += v * (phiB - phiA);
-        totalPhi += phiB - phiA;
-        float ta = k == 0 && phiA <= 0.0 ? 0.0 : min(epiTOnEyeRay(S, alpha, phiA), d);
-        if (runLength == 0) {
-            runV = v;
-            runTa = ta;
-        } else if (v != runV || runLength >= uRunBins) {
+    // The inner loop reads bins until a run closes (its visibility changes, or it reaches uRunBins) and
+    // the run is integrated outside it: an invocation group then runs runAirlight once per run, not on
+    // every bin (llvmpipe runs the body of an `if` for the whole group whenever one lane takes it).
+    int k = 0;
+    while (k < bins) {
+        bool closed = false;
+        float closeTa = 0.0, nextV = 0.0;
+        do {
+            if ((k & 127) == 0) {
+                c0 = imageLoad(uGrid, ivec3(ia, j0, k >> 7));
+                c1 = imageLoad(uGrid, ivec3(ia, j1, k >> 7));
+                WORK_COUNT(kWorkVoxelsRead, 2);
+            }
+            int bit = k & 127;
+            float v = (1.0 - wTheta) * (testBitFast(c0, bit) ? 0.0 : 1.0) + wTheta * (testBitFast(c1, bit) ? 0.0 : 1.0);
+            float phiA = uEpiPhi.x + float(k) * uEpiPhi.y;
+            float phiB = min(phiA + uEpiPhi.y, phiD);
+            litPhi += v * (phiB - phiA);
+            totalPhi += phiB - phiA;
+            float ta = k == 0 && phiA <= 0.0 ? 0.0 : min(epiTOnEyeRay(S, alpha, phiA), d);
+            if (runLength == 0) {
+                runV = v;
+                runTa = ta;
+            } else if (v != runV || runLength >= uRunBins) {
+                closed = true;  // bins [runStart, k) end here; bin k starts the next run
+                closeTa = ta;
+                nextV = v;
+            }
+            if (!closed) ++runLength;
+            ++k;
+        } while (!closed && k < bins);
+        if (closed) {
 #ifdef COMBINE_EXACT
-            if (runV > 0.0) sum += runV * runAirlight(L, geo, w, runTa, ta);
+            if (runV > 0.0) sum += runV * runAirlight(L, geo, w, runTa, closeTa);
 #else
-            unshadowed += runAirlight(L, geo, w, runTa, ta);
+            unshadowed += runAirlight(L, geo, w, runTa, closeTa);
 #endif
-            runV = v;
-            runTa = ta;
-            runLength = 0;
+            runV = nextV;
+            runTa = closeTa;
+            runLength = 1;
         }
-        ++runLength;
     }
     if (runLength > 0) {
         float tEnd = min(epiTOnEyeRay(S, alpha, min(uEpiPhi.x + float(bins) * uEpiPhi.y, phiD)), d);
