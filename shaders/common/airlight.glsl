@@ -266,14 +266,16 @@ vec2 frontOfEmitter(vec3 D, vec3 w, vec3 n, float x0, float x1) {
 // L(x0, x1) for a light at D (camera-relative) emitting I0 max(0, n . u) toward u, n its unit normal: the
 // lobe (n . m) sech(y) + (n . w) tanh(y) integrated exactly, the segment ended at the lobe's zero (the
 // emitter's plane) by pointSegmentWithLobe (see airlight.h).
-float cosineLobeSegment(vec3 D, vec3 w, vec3 n, float x0, float x1, float sigma_s, float sigma_t, float g, float I0) {
-    // rayLightGeometry's D x w, once: h = |D x w| and m = (D x w) x w.
-    vec3 dw = cross(D, w);
-    vec3 m = cross(dw, w);
+// The lobe of a light at D with normal n along the ray w: vec3(0, n . m / |m|, n . w), m = (D x w) x w.
+vec3 cosineLobeOf(vec3 D, vec3 w, vec3 n) {
+    vec3 m = cross(cross(D, w), w);
     float mLength = length(m);
-    float mn = mLength > 0.0 ? dot(m, n) / mLength : 0.0;
-    return pointSegmentWithLobe(dot(D, w), length(dw), x0, x1, sigma_s, sigma_t, g, I0,
-                                vec3(0.0, mn, dot(w, n)));
+    return vec3(0.0, mLength > 0.0 ? dot(m, n) / mLength : 0.0, dot(w, n));
+}
+
+float cosineLobeSegment(vec3 D, vec3 w, vec3 n, float x0, float x1, float sigma_s, float sigma_t, float g, float I0) {
+    RayLightGeometry geo = rayLightGeometry(D, w);
+    return pointSegmentWithLobe(geo.tP, geo.h, x0, x1, sigma_s, sigma_t, g, I0, cosineLobeOf(D, w, n));
 }
 
 #ifdef AIRLIGHT_NAIVE_CLOSED_FORM

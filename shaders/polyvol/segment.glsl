@@ -45,13 +45,16 @@ vec3 lightIntensityToward(GpuLight L, vec3 dirFromLight) {
     return lightIntensity(L, dirFromLight);
 }
 
-vec3 angularPieces(GpuLight L, vec3 w, RayLightGeometry g, float h, float x0, float x1) {
+// whole: the part lies inside a spot's inner cone with no cookie, where A_spot = 1: one exact piece at the
+// light's full intensity (the same loop, so that the segment integral is inlined once: llvmpipe runs every
+// inlined copy for the whole invocation group, whichever lanes need it).
+vec3 angularPieces(GpuLight L, vec3 w, RayLightGeometry g, float h, float x0, float x1, bool whole) {
     vec3 m = cross(cross(L.position.xyz, w), w);  // P - light, see angularSegment
     float phi0 = atan(x0 - g.tP, h);
     float phi1 = atan(x1 - g.tP, h);
-    int pieces = uSpotPieces;
+    int pieces = whole ? 1 : uSpotPieces;
 #ifndef LIGHTS_NO_COOKIE
-    if (L.info.x == kLightSpot && L.info.y >= 0) {
+    if (!whole && L.info.x == kLightSpot && L.info.y >= 0) {
         float texelAngle = 2.0 * atan(L.spot.z) / max(L.frameX.w, 1.0);
         pieces = clamp(int(ceil(abs(phi1 - phi0) / texelAngle)), uSpotPieces, max(uSpotPieces, kMaxCookiePieces));
     }
@@ -62,7 +65,7 @@ vec3 angularPieces(GpuLight L, vec3 w, RayLightGeometry g, float h, float x0, fl
         float xb = k + 1 == pieces ? x1 : g.tP + h * tan(mix(phi0, phi1, float(k + 1) / float(pieces)));
         xb = clamp(xb, xa, x1);
         float phiMid = mix(phi0, phi1, (float(k) + 0.5) / float(pieces));
-        vec3 a = lightIntensityToward(L, directionFromLight(m, h, w, phiMid));
+        vec3 a = whole ? L.radiant.rgb : lightIntensityToward(L, directionFromLight(m, h, w, phiMid));
         if (any(greaterThan(a, vec3(0.0)))) sum += a * unitPointSegment(g, xa, xb);
         xa = xb;
     }
@@ -143,12 +146,8 @@ vec3 angularSegment(GpuLight L, vec3 w, RayLightGeometry g, float x0, float x1) 
         if (!(xb > xa)) continue;
         vec3 dirMid = directionFromLight(m, h, w, atan(0.5 * (xa + xb) - g.tP, h));
         float cd = dot(dirMid, a);
-        if (cd <= cosOuter) continue;                       // outside the outer cone: A_spot = 0
-        if (cd >= cosInner && !cookie) {
-            sum += L.radiant.rgb * unitPointSegment(g, xa, xb);  // inside the inner cone: A_spot = 1
-        } else {
-            sum += angularPieces(L, w, g, h, xa, xb);
-        }
+        if (cd <= cosOuter) continue;  // outside the outer cone: A_spot = 0
+        sum += angularPieces(L, w, g, h, xa, xb, cd >= cosInner && !cookie);  // inside the inner cone: whole
     }
     return sum;
 }
@@ -163,20 +162,27 @@ vec3 segmentAirlight(GpuLight L, vec3 w, float x0, float x1) {
 #ifndef LIGHTS_NO_SPOT
     if (L.info.x == kLightSpot) return angularSegment(L, w, g, x0, x1);
 #endif
-    if (L.info.x == kLightVpl) {
+    // Point lights and area-light VPLs. Without either in the scene the plan leaves out their cube maps
+    // (SHADOW_NO_CUBE) and this code is not compiled: llvmpipe would run it for every fragment.
+#ifndef SHADOW_NO_CUBE
 #ifdef AIRLIGHT_LUT
+    if (L.info.x == kLightVpl) {
         // Cosine lobe around the emitter normal: zero behind the emitter's plane, which cuts the segment;
         // the table has no lobe, so equal-angle pieces on the front part.
         float h = max(g.h, 1.0e-7 * max(abs(g.tP), 1.0e-20));
         vec2 front = frontOfEmitter(L.position.xyz, w, L.direction.xyz, x0, x1);
-        return front.y > front.x ? angularPieces(L, w, g, h, front.x, front.y) : vec3(0.0);
-#else
-        // Cosine lobe around the emitter normal, integrated exactly (one segment, not uSpotPieces pieces).
-        return cosineLobeSegment(L.position.xyz, w, L.direction.xyz, x0, x1, uSigmaS, uSigmaT, uG, 1.0) *
-               L.radiant.rgb;
-#endif
+        return front.y > front.x ? angularPieces(L, w, g, h, front.x, front.y, false) : vec3(0.0);
     }
     return unitPointSegment(g, x0, x1) * L.radiant.rgb;
+#else
+    // One segment integral for both: a point light's angular factor is 1, a VPL's its cosine lobe around
+    // the emitter normal, integrated exactly (not uSpotPieces pieces).
+    vec3 lobe = L.info.x == kLightVpl ? cosineLobeOf(L.position.xyz, w, L.direction.xyz) : AIRLIGHT_NO_LOBE;
+    return pointSegmentWithLobe(g.tP, g.h, x0, x1, uSigmaS, uSigmaT, uG, 1.0, lobe) * L.radiant.rgb;
+#endif
+#else
+    return vec3(0.0);
+#endif
 }
 
 // ---- The ball around the light (README, "Rays next to the light") ----------------------------------
