@@ -44,6 +44,13 @@ const float uAxisReach = 3.0e38;
 #endif
 #include "common/march_samples.glsl"
 
+// A light with a position can walk this dispatch (a spot, or a point light with EPIPOLAR_POINT); without
+// one (the plan's LIGHTS_NO_SPOT and no EPIPOLAR_POINT: only suns) their segment integrals are not
+// compiled, since llvmpipe runs every inlined copy for the whole invocation group, whichever lanes need it.
+#if !defined(LIGHTS_NO_SPOT) || defined(EPIPOLAR_POINT)
+#define MINMAX_POSITIONAL_LIGHT
+#endif
+
 // Brute force for lights without an epipolar path (raymarch's midpoint rule): uMarchSamples samples
 // uniform in t over [0, d] (or, with a far camera, by the light: placeSample), each the integrand
 // sigma_s p E V exp(-sigma_t t) dt at its point. No loops inside the loop: llvmpipe ends all loops of an
@@ -133,9 +140,11 @@ vec3 marchAxis(GpuLight L, vec3 w, float d) {
             sum += directionalSegment(dot(directionToLight(L, x), w), x0, x1, uSigmaS, uSigmaT, uG, 1.0) *
                    L.radiant.rgb;
         } else {
+#ifdef MINMAX_POSITIONAL_LIGHT
             // The angular factor needs a direction from the light: none at the light's own position.
             vec3 I = distance(x, L.position.xyz) > 0.0 ? lightIntensity(L, x) : vec3(0.0);
             sum += pointSegment(g.tP, g.h, x0, x1, uSigmaS, uSigmaT, uG, 1.0) * I;
+#endif
         }
     }
     if (d > reach && lastV > 0.0) {
@@ -144,8 +153,10 @@ vec3 marchAxis(GpuLight L, vec3 w, float d) {
             sum += directionalSegment(dot(directionToLight(L, x), w), reach, d, uSigmaS, uSigmaT, uG, 1.0) *
                    L.radiant.rgb;
         } else {
+#ifdef MINMAX_POSITIONAL_LIGHT
             vec3 I = distance(x, L.position.xyz) > 0.0 ? lightIntensity(L, x) : vec3(0.0);
             sum += pointSegment(g.tP, g.h, reach, d, uSigmaS, uSigmaT, uG, 1.0) * I;
+#endif
         }
     }
     return sum;
@@ -173,6 +184,9 @@ vec3 integrateRunAnalytic(GpuLight L, vec3 w, RayLightGeometry g, float beta, fl
         return pointSegment(g.tP, g.h, t0, t1, uSigmaS, uSigmaT, uG, 1.0) * L.radiant.rgb;
     }
 #endif
+#ifdef LIGHTS_NO_SPOT
+    return vec3(0.0);  // no spot in the scene: only suns (and point lights, above) reach this
+#else
     // Spot: A_spot * cookie varies across the cone; pieces on a fixed grid of uPieces cells over
     // [gammaLo, gammaHi] each take it at their middle (uPieces / columns cells per column).
     float cellColumns = float(uColumns) / float(uPieces);
@@ -191,6 +205,7 @@ vec3 integrateRunAnalytic(GpuLight L, vec3 w, RayLightGeometry g, float beta, fl
         c = next;
     }
     return sum;
+#endif
 }
 
 #ifdef INTEGRAND_SVD
