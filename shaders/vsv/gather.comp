@@ -66,12 +66,18 @@ vec3 runAirlight(GpuLight L, RayLightGeometry geo, vec3 w, float ta, float tb) {
     if (!(tb > ta)) return vec3(0.0);
     if (L.info.x == kLightDirectional)  // E = I colour everywhere; cos theta against the travel direction
         return L.radiant.rgb * directionalSegment(dot(-L.direction.xyz, w), ta, tb, uSigmaS, uSigmaT, uG, 1.0);
+#if defined(LIGHTS_NO_SPOT) && defined(SHADOW_NO_CUBE)
+    // The plan found no spot and no point light (suns only): the segment integral of a light with a
+    // position is not compiled (llvmpipe would run it for every pixel, whichever lanes need it).
+    return vec3(0.0);
+#else
     vec3 ia = lightIntensity(L, ta * w);
     vec3 im = lightIntensity(L, 0.5 * (ta + tb) * w);
     vec3 ib = lightIntensity(L, tb * w);
     vec3 angular = (ia + 4.0 * im + ib) / 6.0;
     if (angular == vec3(0.0)) return vec3(0.0);
     return angular * pointSegment(geo.tP, geo.h, ta, tb, uSigmaS, uSigmaT, uG, 1.0);
+#endif
 }
 
 // This light's airlight added to the pixel's (overwritten for the first light), and its visibility record.
