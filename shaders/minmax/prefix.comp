@@ -30,7 +30,9 @@ layout(rgba32f, binding = 0) uniform writeonly image2DArray uPrefix;
 uniform int uLight;
 uniform int uRows;
 uniform int uTexels;
-uniform int uRank;
+// The rank: a compile-time constant (MINMAX_RANK, from the run's settings), so that the loops over it unroll
+// and the per-rank sums stay in registers instead of a dynamically indexed array.
+const int kRank = MINMAX_RANK;
 uniform bool uSharedRow;
 // Gamma_i at 64 gamma samples (inclusive ends), rank-major, four to a vec4: a float array of 512 takes 512
 // vec4 slots of NVIDIA's default uniform block and fails to link there.
@@ -53,7 +55,7 @@ void addTexelTerm(GpuLight L, float alpha, int k, inout float sums[24]) {
         vec3 p = lightRayPoint(alpha, gamma);
         T = lightIntensity(L, p);
     }
-    for (int i = 0; i < uRank; ++i) {
+    for (int i = 0; i < kRank; ++i) {
         float w = gammaBasis(i, gamma) * step;
         sums[3 * i] += w * T.r;
         sums[3 * i + 1] += w * T.g;
@@ -62,7 +64,7 @@ void addTexelTerm(GpuLight L, float alpha, int k, inout float sums[24]) {
 }
 
 void storePrefix(int k, int row, float sums[24]) {
-    int layers = (3 * uRank + 3) / 4;
+    int layers = (3 * kRank + 3) / 4;
     for (int layer = 0; layer < layers; ++layer) {
         vec4 v = vec4(sums[4 * layer], sums[4 * layer + 1], sums[4 * layer + 2], sums[4 * layer + 3]);
         imageStore(uPrefix, ivec3(k, row, layer), v);
@@ -79,7 +81,7 @@ void main() {
     GpuLight L = gLights[uLight];
     selectRow(row);
     float alpha = sliceAlpha(row);
-    int channels = 3 * uRank;
+    int channels = 3 * kRank;
     // Texels [first, last) are this invocation's chunk.
     int chunk = (uTexels + kScanWidth - 1) / kScanWidth;
     int first = min(lane * chunk, uTexels), last = min(first + chunk, uTexels);

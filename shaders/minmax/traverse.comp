@@ -217,7 +217,9 @@ vec3 integrateRunAnalytic(GpuLight L, vec3 w, RayLightGeometry g, float beta, fl
 // weight gPrefixBlend, instead of read from the nearest slice's alone (the paper), whose T is up to half a
 // slice off the ray's.
 layout(binding = kFirstFreeTextureUnit + 2) uniform sampler2DArray uPrefix;
-uniform int uRank;
+// The rank: a compile-time constant (MINMAX_RANK, from the run's settings), so that the loops over it unroll
+// and the per-rank sums stay in registers instead of a dynamically indexed array.
+const int kRank = MINMAX_RANK;
 uniform int uPrefixTexels;
 uniform int uPrefixRows;
 uniform bool uBlendRows;
@@ -252,7 +254,7 @@ void accumulateRun(float c0, float c1) {
     float scale = float(uPrefixTexels) / float(uColumns);
     float u0 = (c0 * scale + 0.5) / float(uPrefixTexels + 1);
     float u1 = (c1 * scale + 0.5) / float(uPrefixTexels + 1);
-    int layers = (3 * uRank + 3) / 4;
+    int layers = (3 * kRank + 3) / 4;
     for (int layer = 0; layer < layers; ++layer) {
         vec4 sum = prefixDifference(u0, u1, gPrefixRow, layer);
         if (gPrefixBlend > 0.0) sum = mix(sum, prefixDifference(u0, u1, gPrefixRow1, layer), gPrefixBlend);
@@ -268,7 +270,7 @@ float betaBasis(int i, float beta) {
 
 vec3 lowRankResult(float beta) {
     vec3 sum = vec3(0.0);
-    for (int i = 0; i < uRank; ++i) {
+    for (int i = 0; i < kRank; ++i) {
         float b = betaBasis(i, beta);
         for (int c = 0; c < 3; ++c) {
             int q = 3 * i + c;

@@ -142,12 +142,13 @@ void MinmaxTechnique::prefixSums(LightWork& w, const scene::Scene& scene) {
         w.prefix.setWrap(GL_CLAMP_TO_EDGE);
     }
     w.prefixRows = rows;
-    const int variant = (w.point() ? 1 : 0) | (mLog2Prefix ? 2 : 0);
+    const int variant = (w.point() ? 1 : 0) | (mLog2Prefix ? 2 : 0) | (rank << 2);
     gl::Program& program = mPrefix[variant];
     if (!program) {
         gl::ShaderDefines defines;
         if (w.point()) defines.push_back({"EPIPOLAR_POINT", "1"});
         if (mLog2Prefix) defines.push_back({"LOG2_PASSES", "1"});
+        defines.push_back({"MINMAX_RANK", std::to_string(rank)});
         program = gl::Program::compile({.stages = {"minmax/prefix.comp"}, .defines = defines, .label = "minmax.prefix"});
     }
     program.use();
@@ -155,7 +156,6 @@ void MinmaxTechnique::prefixSums(LightWork& w, const scene::Scene& scene) {
     program.set("uLight", w.gpuIndex);
     program.set("uRows", rows);
     program.set("uTexels", texels);
-    program.set("uRank", rank);
     program.set("uSharedRow", !perRow);
     VIZ_CHECK(w.lowRank.basisGamma.size() % 4 == 0, "minmax: the gamma basis is packed four floats to a vec4");
     glProgramUniform4fv(program.id(), program.location("uGammaBasis[0]"), GLsizei(w.lowRank.basisGamma.size() / 4),
@@ -209,8 +209,13 @@ void MinmaxTechnique::allocateTargets(int width, int height) {
 
 const gl::Program& MinmaxTechnique::traverseProgram(const Plan& plan) {
     std::string key;
-    const gl::ShaderDefines defines = permutationDefines(plan, kDefines, &key);
+    gl::ShaderDefines defines = permutationDefines(plan, kDefines, &key);
     mFarRays = featureEnabled(plan, "FAR_RAYS");
+    if (featureEnabled(plan, "INTEGRAND_SVD")) {
+        // The rank is compiled in (its loops unroll and the per-rank sums stay in registers).
+        defines.push_back({"MINMAX_RANK", std::to_string(mSettings.rank)});
+        key += " rank=" + std::to_string(mSettings.rank);
+    }
     if (key != mProgramKey || !mTraverse) {
         mTraverse = gl::Program::compile(
             {.stages = {"minmax/traverse.comp"}, .defines = defines, .label = kStageTraverse});
@@ -247,7 +252,6 @@ void MinmaxTechnique::traverse(const gl::Program& program, const scene::Scene& s
         if (work->point()) work->rowGamma.bindBase(GL_SHADER_STORAGE_BUFFER, render::hd::kFirstFreeSsboBinding);
         if (mSvd && work->prefix) {
             const minmax::LowRank& lr = work->lowRank;
-            program.set("uRank", lr.rank);
             program.set("uPrefixTexels", work->prefix.size().x - 1);
             program.set("uPrefixRows", work->prefixRows);
             // A point light's rows each span their own gamma range: their tables' texels do not line up.

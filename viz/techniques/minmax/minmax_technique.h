@@ -235,7 +235,7 @@ private:
     bool mFarRays = false;          // the traverse program's FAR_RAYS (its far-camera uniforms are set)
     minmax::IntegrandChooser mIntegrandChooser;  // integrand=auto, for plan()
     gl::Program mRectify, mRectifyPoint, mGammaRange, mMipmap, mTraverse;
-    std::map<int, gl::Program> mPrefix;  // by variant: 1 point light (EPIPOLAR_POINT), 2 LOG2_PASSES
+    std::map<int, gl::Program> mPrefix;  // by variant: 1 point light (EPIPOLAR_POINT), 2 LOG2_PASSES, rank << 2
     std::string mProgramKey;
     gl::Texture mAirlight, mVisited, mNearMask, mRayCoords;
     // What markersFor needs of the last run.
