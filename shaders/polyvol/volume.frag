@@ -40,13 +40,13 @@ void main() {
     float x = min(length(vPosition), d);
     // Counter-clockwise seen from inside the volume: a front-facing fragment is where the ray leaves it.
     float s = gl_FrontFacing ? 1.0 : -1.0;
-    vec3 term;
-    if (uOriginAtSurface != 0) {
-        s = -s;
-        term = uConstant != 0 ? vec3(d - x) : segmentAirlightOutsideBall(gLights[uLightIndex], w, x, d, uNearRadius);
-    } else {
-        term = uConstant != 0 ? vec3(x) : segmentAirlightOutsideBall(gLights[uLightIndex], w, 0.0, x, uNearRadius);
-    }
+    // The term's span, [x, d] relative to the surface or [0, x] from the eye, chosen first so that the
+    // segment integral is inlined once (llvmpipe runs every inlined copy for every fragment).
+    bool fromSurface = uOriginAtSurface != 0;
+    if (fromSurface) s = -s;
+    float x0 = fromSurface ? x : 0.0;
+    float x1 = fromSurface ? d : x;
+    vec3 term = uConstant != 0 ? vec3(x1 - x0) : segmentAirlightOutsideBall(gLights[uLightIndex], w, x0, x1, uNearRadius);
     oTotal = vec4(s * term, gl_FrontFacing ? 1.0 : -1.0);
     oPositive = vec4(s > 0.0 ? term : vec3(0.0), 0.0);
     oNegative = vec4(s < 0.0 ? term : vec3(0.0), 0.0);
