@@ -201,8 +201,11 @@ TextureUse checkResources(const std::string& json, const Folder& folder, bool bi
             if (!ext.is_string()) throw InputError(prefix + "extensionsRequired holds a " + ext.type_name() + ", not a name");
             const std::string name = ext.get<std::string>();
             if (std::find(kSupported.begin(), kSupported.end(), name) == kSupported.end()) {
+                std::string reads;
+                for (std::size_t k = 0; k < kSupported.size(); ++k)
+                    reads += (k == 0 ? "" : k + 1 == kSupported.size() ? " and " : ", ") + kSupported[k];
                 throw InputError(prefix + "requires unsupported extension " + quoteValue(name) + " (Airlight reads " +
-                                 kSupported[0] + " and " + kSupported[1] + ")");
+                                 reads + ")");
             }
         }
     }
