@@ -211,30 +211,38 @@ int runStiffSuite(const Options& o, const std::string& commandLine) {
 // The technique at its cheapest sweep setting, timed as planned and with force_features=1.
 viz::report::PlanSaving measurePlanSaving(const std::string& id, const viz::scene::Scene& scene,
                                           const std::string& sceneName, const Options& o) {
-    auto technique = viz::makeTechnique(id);
+    // Two instances, one per side: each keeps its own compiled programs and targets, so the runs can
+    // alternate without recompiling (one instance would time its compiler on every switch).
+    auto plannedTechnique = viz::makeTechnique(id), forcedTechnique = viz::makeTechnique(id);
     viz::report::PlanSaving saving{sceneName, id, 0.0, 0.0, {}};
     // The cheapest setting of the technique's sweep (its quick sweep with --quick), so that the check
     // costs what one row of the sweep costs; force_features on top of it for the forced runs.
-    viz::Settings base = technique->qualitySweep(o.quick).front().settings;
-    const viz::Settings planned = viz::completeSettings(*technique, base);
+    viz::Settings base = plannedTechnique->qualitySweep(o.quick).front().settings;
+    const viz::Settings planned = viz::completeSettings(*plannedTechnique, base);
     base["force_features"] = 1.0;
-    const viz::Settings forced = viz::completeSettings(*technique, base);
-    const viz::Plan a = technique->plan(scene, planned), b = technique->plan(scene, forced);
+    const viz::Settings forced = viz::completeSettings(*forcedTechnique, base);
+    const viz::Plan a = plannedTechnique->plan(scene, planned), b = forcedTechnique->plan(scene, forced);
     for (std::size_t i = 0; i < a.stages.size() && i < b.stages.size(); ++i)
         if (!a.stages[i].runs && b.stages[i].runs) saving.skipped.push_back("stage " + a.stages[i].stage);
     for (std::size_t i = 0; i < a.features.size() && i < b.features.size(); ++i)
         if (!a.features[i].enabled && b.features[i].enabled) saving.skipped.push_back(a.features[i].feature);
     viz::FrameInput in = viz::frameInput(&scene, o.width, o.height, planned);
     viz::FrameInput inForced = viz::frameInput(&scene, o.width, o.height, forced);
-    // Two blocks, each after its own warm-up: a technique that keeps one compiled program at a time
-    // would otherwise recompile on every alternation and time its compiler. At least 7 runs of each (the
-    // cheapest setting is cheap), so that the ranges the page compares are not two or three samples.
+    // A warm-up of each, then the runs in pairs, alternated (planned first in even pairs, forced first in
+    // odd ones): a slow spell of the machine falls on both sides instead of on whichever block it met.
+    // At least 7 of each (the cheapest setting is cheap), so that the ranges the page compares are not
+    // two or three samples.
     const int runs = std::max(o.runs, 7);
     std::vector<double> plannedTimes, forcedTimes;
-    technique->run(in);
-    for (int r = 0; r < runs; ++r) plannedTimes.push_back(technique->run(in).timing.totalMilliseconds());
-    technique->run(inForced);
-    for (int r = 0; r < runs; ++r) forcedTimes.push_back(technique->run(inForced).timing.totalMilliseconds());
+    plannedTechnique->run(in);
+    forcedTechnique->run(inForced);
+    for (int r = 0; r < runs; ++r)
+        for (int side = 0; side < 2; ++side) {
+            if ((side == 0) == (r % 2 == 0))
+                plannedTimes.push_back(plannedTechnique->run(in).timing.totalMilliseconds());
+            else
+                forcedTimes.push_back(forcedTechnique->run(inForced).timing.totalMilliseconds());
+        }
     saving.plannedMilliseconds = median(plannedTimes);
     saving.forcedMilliseconds = median(forcedTimes);
     saving.plannedRuns = plannedTimes;

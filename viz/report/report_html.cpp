@@ -166,7 +166,7 @@ void writeHtml(const std::string& path, const ReportMeta& meta, const std::vecto
     if (!savings.empty()) {
         h << "<h2>What each plan leaves out, and what that saves</h2>\n<p class=\"note\">The technique's cheapest sweep "
              "setting, timed as planned and with <code>force_features=1</code> (everything the plan leaves out for the scene runs "
-             "anyway; the image is the same), medians, each after its own warm-up. A saving is called significant only when every planned run is faster than every forced one (or slower: then the plan costs more).</p>\n<table><tr><th class=\"l\">"
+             "anyway; the image is the same), medians of runs alternated in pairs between the two (each side its own instance of the technique, warmed up once, so that neither recompiles and a slow spell of the machine falls on both). A saving is called significant only when every planned run is faster than every forced one (or slower: then the plan costs more).</p>\n<table><tr><th class=\"l\">"
              "scene</th><th class=\"l\">technique</th><th>planned ms</th><th>forced ms</th><th>saved</th><th "
              "class=\"l\">left out</th></tr>\n";
         for (const PlanSaving& p : savings) {
