@@ -6,6 +6,13 @@
 // planes is a midpoint rule of L_air. Otherwise the paper's artistic formula and constants.
 // Terms compiled in by defines: SPOT_FALLOFF, COOKIE, SHADOW (nearest, or PCF), NOISE; CHANNEL_MASK
 // routes plane i's scalar to channel i mod 4; COUNT_OUTSIDE counts fragments outside the light frustum.
+// SLAB_EQUIANGULAR (integration=equiangular, physical weighting only): instead of one sample at the
+// plane, the fragment integrates its whole slab along the pixel's ray, cut to the surface and to a spot's
+// cone (litInterval), with nodes equally spaced in the angle the part subtends at the light, at most
+// uSlabAngle radians apart (one node for a directional light): t = t_P + h tan(theta), weight
+// dtheta / h, so the 1/r^2 of E is integrated exactly and the nodes crowd where a ray passes the light.
+// plane.vert widens each plane and its clip planes by the slab (a slab whose plane point misses the light
+// volume may still cross it).
 // Output is scaled by uStoreScale (RGBA8 targets hold [0, 1]).
 // PICK_RAY (a separate draw of the same planes, scissored to the picked pixel, colour writes off): the
 // fragment there writes what it computed and did into its plane's record (slices.ray_planes;
@@ -39,6 +46,11 @@ uniform int uFalloff;         // artistic: 1 = ambient + 20000 / r^2, 0 = consta
 uniform float uNoiseTiles;    // noise repeats per light-space unit square ([-1, 1]^2 -> 2 tiles)
 uniform vec4 uScroll;         // xy, zw: scroll offsets of the two noise layers (animated by time)
 uniform float uPlaneWeight;   // extra per-plane weight (distance-scaled plane count), 1 normally
+#ifdef SLAB_EQUIANGULAR
+uniform float uSlabAngle;     // the largest angle between two nodes of a slab, radians
+const int kMaxSlabNodes = 64;
+flat in vec2 vSlab;           // the slab's view-depth range [s_lo, s_hi]
+#endif
 
 #ifdef COUNT_OUTSIDE
 layout(binding = 0, offset = 0) uniform atomic_uint uOutside;
@@ -86,12 +98,18 @@ float visibility(GpuLight L, vec3 p) {
 #endif
 }
 
-// One light's contribution at p on ray w (t along it), before the store scale.
-vec3 shade(GpuLight L, vec3 p, vec3 w, float t) {
+// One light's contribution at distance t along ray w, standing for dt of the ray (SLAB_EQUIANGULAR, a
+// point-like light: dt is int dt / r^2 over the node's part, and E leaves out its 1/r^2), before the
+// store scale.
+vec3 shade(GpuLight L, vec3 w, float t, float dt) {
+    vec3 p = t * w;
     int type = L.info.x;
     bool directional = type == kLightDirectional;
     bool spot = type == kLightSpot;
-    vec3 dirFromLight = directional ? L.direction.xyz : normalize(p - L.position.xyz);
+    // At the light itself (a node of a ray through it, integration=equiangular) the direction from it is
+    // the ray's own.
+    vec3 fromLight = p - L.position.xyz;
+    vec3 dirFromLight = directional ? L.direction.xyz : dot(fromLight, fromLight) > 1.0e-30 ? normalize(fromLight) : w;
     float angular = 1.0;
 #ifdef SPOT_FALLOFF
     if (spot) angular = spotAttenuation(L, dirFromLight);
@@ -135,9 +153,12 @@ vec3 shade(GpuLight L, vec3 p, vec3 w, float t) {
     } else {
         vec3 toLight = L.position.xyz - p;
         float r2 = dot(toLight, toLight);
+#ifdef SLAB_EQUIANGULAR
+        E = L.radiant.rgb * angular * cookie * exp(-uSigmaT * sqrt(r2));
+#else
         E = L.radiant.rgb * angular * cookie * (exp(-uSigmaT * sqrt(r2)) / max(r2, 1.0e-20));
+#endif
     }
-    float dt = slabLength(vPlane) / dot(w, uForward);
     // The noise scales the density where the sample is, as visibility scales what reaches it.
     return airlightSample(V * noise, cosTheta, E, t, dt);
 #else
@@ -159,6 +180,44 @@ vec3 shade(GpuLight L, vec3 p, vec3 w, float t) {
     return vec3(compositeNoise * lum * scale * atten * V * angular) * colour;
 #endif
 }
+
+#ifdef SLAB_EQUIANGULAR
+// One light's part of L_air over [t0, t1] of ray w (this fragment's slab, cut to the surface d): a
+// spot's cone cuts it further; the nodes split the angle it subtends at the light into equal steps of at
+// most uSlabAngle. shade() is called once, in the loop (docs/architecture.md, "Shader branches on a CPU
+// rasteriser").
+vec3 slabIntegral(GpuLight L, vec3 w, float t0, float t1, float d) {
+    if (L.info.x == kLightSpot) {
+        vec2 lit = litInterval(L, w, d, uSigmaT);
+        t0 = max(t0, lit.x);
+        t1 = min(t1, lit.y);
+    }
+    if (!(t1 > t0)) return vec3(0.0);
+    bool directional = L.info.x == kLightDirectional;
+    float tP = 0.0, h = 1.0, a0 = 0.0, step_ = t1 - t0;
+    int nodes = 1;
+    if (!directional) {
+        // Foot point t_P and distance h of the light from the ray; the angle from the foot point, and the
+        // angle the part subtends, written without cancellation (both ends on one side: h -> 0 gives
+        // (s1 - s0) h / (s0 s1)). h is floored as the closed forms floor it (airlight.glsl).
+        tP = dot(L.position.xyz, w);
+        float s0 = t0 - tP, s1 = t1 - tP;
+        h = max(length(L.position.xyz - tP * w),
+                max(AIRLIGHT_MIN_RELATIVE_H * max(abs(s0), abs(s1)), AIRLIGHT_MIN_ABSOLUTE_H));
+        float subtended = atan(h * (s1 - s0), h * h + s0 * s1);
+        a0 = atan(s0 / h);
+        nodes = clamp(int(ceil(subtended / uSlabAngle)), 1, kMaxSlabNodes);
+        step_ = subtended / float(nodes);
+    }
+    vec3 sum = vec3(0.0);
+    for (int j = 0; j < nodes; ++j) {
+        // The node at the middle of its angle step, kept inside the part against rounding near +-pi/2.
+        float t = directional ? 0.5 * (t0 + t1) : clamp(tP + h * tan(a0 + (float(j) + 0.5) * step_), t0, t1);
+        sum += shade(L, w, t, directional ? step_ : step_ / h);
+    }
+    return sum;
+}
+#endif
 
 void main() {
     WORK_PIXEL(gl_FragCoord.xy);
@@ -190,15 +249,23 @@ void main() {
     atomicCounterIncrement(uShaded);
 #endif
     float d = texelFetch(uDistance, ivec2(gl_FragCoord.xy), 0).r;
+    float dt = slabLength(vPlane) / dot(w, uForward);
+#ifdef SLAB_EQUIANGULAR
+    // The slab along this ray, cut to the surface; it has ended when the slab begins beyond it.
+    float slabStart = vSlab.x / dot(w, uForward), slabEnd = min(vSlab.y / dot(w, uForward), d);
+    bool beyond = !(slabEnd > slabStart);
+#else
+    bool beyond = t > d;
+#endif
 #ifdef PICK_RAY
     // The pick draw is scissored to the picked pixel; the test keeps the records right without it.
     bool picked = ivec2(gl_FragCoord.xy) == uPickPixel;
     int record = uPickBase + vPlane;
-    if (picked) gPick[record].where = vec4(float(vPlane), vDepth, t, slabLength(vPlane) / dot(w, uForward));
-    if (picked && t > d) gPick[record].test = vec4(kPickBeyondSurface, -1.0, -1.0, d);  // V: not tested
+    if (picked) gPick[record].where = vec4(float(vPlane), vDepth, t, dt);
+    if (picked && beyond) gPick[record].test = vec4(kPickBeyondSurface, -1.0, -1.0, d);  // V: not tested
 #endif
     // Beyond the first surface (or zfar) the ray has ended: the plane adds nothing there.
-    if (t > d) WORK_DISCARD;
+    if (beyond) WORK_DISCARD;
 
     // One light (uLight >= 0: a spot, or a boxed directional light, drawn clipped to its own volume), or
     // every unbounded light sharing one set of planes over the camera frustum: every light except spots
@@ -211,7 +278,11 @@ void main() {
         GpuLight L = gLights[i];
         if (uLight < 0 && (L.info.x == kLightSpot || (uBoxedDirectional != 0 && L.info.x == kLightDirectional)))
             continue;
-        value += shade(L, p, w, t);
+#ifdef SLAB_EQUIANGULAR
+        value += slabIntegral(L, w, slabStart, slabEnd, d);
+#else
+        value += shade(L, w, t, dt);
+#endif
     }
     value *= uPlaneWeight * uStoreScale;
 

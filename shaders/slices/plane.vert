@@ -6,11 +6,20 @@
 // Output: the plane's depth s_i (flat) and index; gl_ClipDistance[0..5] against the light frustum's six planes
 // (from the light's shadow matrix: w +- x, w +- y, w +- z >= 0) with CLIP, then the two user planes with
 // USER_CLIP; the host enables exactly the distances written.
+// SLAB_EQUIANGULAR (plane.frag integrates the plane's whole slab): the quad and the light-frustum clip
+// planes are widened to every pixel whose ray meets the light volume somewhere in the slab, not only at
+// the plane. On the plane at view depth s, the point p stands for the ray's points f p, f in [s_lo / s,
+// s_hi / s]; the quad spans the box scaled by s / s_lo and s / s_hi, and a frustum plane
+// dot(n, p) + c >= 0 keeps p when f dot(n, p) + c >= 0 at either end, which is f_lo dot(n, p) + c >= 0 for
+// c >= 0 (the plane keeps the eye) and f_hi dot(n, p) + c >= 0 otherwise: still linear in p. So it
+// keeps a superset; plane.frag cuts each ray to the exact part.
 
 uniform mat4 uViewProj;     // eye-relative world -> camera clip space
 uniform vec3 uRight;        // camera basis, world axes
 uniform vec3 uUp;
 uniform vec3 uForward;
+uniform float uTanHalf;     // tan(yfov / 2)
+uniform float uAspect;
 uniform vec2 uBoxMinXY;     // view-space box of the light frustum (x along uRight, y along uUp)
 uniform vec2 uBoxMaxXY;
 uniform float uDepthFar;    // view depth of plane 0's slab far edge
@@ -23,6 +32,9 @@ uniform vec4 uUserPlane1;
 
 flat out float vDepth;      // s_i, the plane's view depth
 flat out int vPlane;
+#ifdef SLAB_EQUIANGULAR
+flat out vec2 vSlab;        // the slab's view-depth range [s_lo, s_hi], s_lo >= 0 (the eye)
+#endif
 
 // Only the distances in use are declared and written: Mesa llvmpipe was seen to clip with written
 // distances whose GL_CLIP_DISTANCEi was disabled.
@@ -43,8 +55,21 @@ void main() {
     vec2 c = kCorners[gl_VertexID % 6];
     // Midpoint of slab i: s_i = far - (i + 1/2) delta s.
     // The nearest slab may start at the eye; its plane is drawn where the camera does not clip it.
-    float s = max(uDepthFar - (float(plane) + 0.5) * uSpacing, uDrawNear);
+    float sMid = uDepthFar - (float(plane) + 0.5) * uSpacing;
+    float s = max(sMid, uDrawNear);
+#ifdef SLAB_EQUIANGULAR
+    float sLo = max(sMid - 0.5 * uSpacing, 0.0), sHi = sMid + 0.5 * uSpacing;
+    vSlab = vec2(sLo, sHi);
+    // Cut to the view at depth s (1 % wider): a slab reaching the eye scales the box without bound, and
+    // llvmpipe drops a quad a thousand times the screen's size.
+    float scaleLo = s / max(sLo, 1.0e-3 * s), scaleHi = s / sHi;
+    vec2 view = 1.01 * s * vec2(uTanHalf * uAspect, uTanHalf);
+    vec2 lo = clamp(min(uBoxMinXY * scaleLo, uBoxMinXY * scaleHi), -view, view);
+    vec2 hi = clamp(max(uBoxMaxXY * scaleLo, uBoxMaxXY * scaleHi), -view, view);
+    vec2 xy = mix(lo, hi, c);
+#else
     vec2 xy = mix(uBoxMinXY, uBoxMaxXY, c);
+#endif
     vec3 p = xy.x * uRight + xy.y * uUp + s * uForward;
     vDepth = s;
     vPlane = plane;
@@ -54,12 +79,21 @@ void main() {
     // uClipLight = 0 (a directional light, whose lit volume is unbounded): nothing is clipped. Writing
     // +1 rather than disabling the planes works around the llvmpipe behaviour noted above.
     vec4 lc = uClipLight != 0 ? uLightMatrix * vec4(p, 1.0) : vec4(0.0, 0.0, 0.0, 1.0);
+#ifdef SLAB_EQUIANGULAR
+    // c of each plane is its distance at the eye (p = 0): the matrix's last column.
+    vec4 le = uClipLight != 0 ? uLightMatrix[3] : vec4(0.0, 0.0, 0.0, 1.0);
+    float fLo = sLo / s, fHi = sHi / s;
+    float atP[6] = float[6](lc.w + lc.x, lc.w - lc.x, lc.w + lc.y, lc.w - lc.y, lc.w + lc.z, lc.w - lc.z);
+    float atEye[6] = float[6](le.w + le.x, le.w - le.x, le.w + le.y, le.w - le.y, le.w + le.z, le.w - le.z);
+    for (int j = 0; j < 6; ++j) gl_ClipDistance[j] = (atEye[j] >= 0.0 ? fLo : fHi) * (atP[j] - atEye[j]) + atEye[j];
+#else
     gl_ClipDistance[0] = lc.w + lc.x;
     gl_ClipDistance[1] = lc.w - lc.x;
     gl_ClipDistance[2] = lc.w + lc.y;
     gl_ClipDistance[3] = lc.w - lc.y;
     gl_ClipDistance[4] = lc.w + lc.z;
     gl_ClipDistance[5] = lc.w - lc.z;
+#endif
 #endif
 #ifdef USER_CLIP
     gl_ClipDistance[kFirstUserPlane] = dot(uUserPlane0, vec4(p, 1.0));

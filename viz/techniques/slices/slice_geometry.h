@@ -120,20 +120,37 @@ inline std::vector<glm::dvec3> clipPolygon(const std::vector<glm::dvec3>& poly, 
 
 // The sampling planes as the debugger shows them from outside: plane i's quad (eye-relative world,
 // corners in the vertex shader's order) clipped to the frustum when `clip` is set. Empty when clipped away.
+// `wholeSlab` (integration=equiangular): widened as plane.vert widens them, to every point p of the plane
+// whose ray meets the frustum somewhere in the slab (the points f p, f in [s_lo / s, s_hi / s]): the box
+// scaled by s / s_lo and s / s_hi, and each frustum plane (n, c) tested at f_lo p where c >= 0 (it keeps
+// the eye) and at f_hi p otherwise; cut to the view (tangents of its half-angles `viewTan`, 1 % wider).
 inline std::vector<std::vector<glm::dvec3>> planePolygons(const PlaneRange& r, const CameraBasis& basis,
-                                                          const glm::dmat4& lightMatrix, int planes, bool clip) {
+                                                          const glm::dmat4& lightMatrix, int planes, bool clip,
+                                                          bool wholeSlab = false, glm::dvec2 viewTan = glm::dvec2(1e30)) {
     std::vector<std::vector<glm::dvec3>> out;
     if (r.empty) return out;
     const auto frustum = frustumPlanes(lightMatrix);
     for (int i = 0; i < planes; ++i) {
-        const double s = std::max(r.far - (double(i) + 0.5) * r.spacing, r.drawNear);
+        const double mid = r.far - (double(i) + 0.5) * r.spacing;
+        const double s = std::max(mid, r.drawNear);
+        const double lo = std::max(mid - 0.5 * r.spacing, 0.0), hi = mid + 0.5 * r.spacing;
+        glm::dvec2 boxMin = r.minXY, boxMax = r.maxXY;
+        if (wholeSlab) {
+            const double scaleLo = s / std::max(lo, 1e-3 * s), scaleHi = s / hi;
+            const glm::dvec2 view = 1.01 * s * viewTan;
+            boxMin = glm::clamp(glm::min(r.minXY * scaleLo, r.minXY * scaleHi), -view, view);
+            boxMax = glm::clamp(glm::max(r.maxXY * scaleLo, r.maxXY * scaleHi), -view, view);
+        }
         std::vector<glm::dvec3> poly;
         for (const glm::dvec2 c : {glm::dvec2(0, 0), glm::dvec2(1, 0), glm::dvec2(1, 1), glm::dvec2(0, 1)}) {
-            const glm::dvec2 xy = r.minXY + (r.maxXY - r.minXY) * c;
+            const glm::dvec2 xy = boxMin + (boxMax - boxMin) * c;
             poly.push_back(xy.x * basis.right + xy.y * basis.up + s * basis.forward);
         }
         if (clip)
-            for (const glm::dvec4& plane : frustum) poly = clipPolygon(poly, plane);
+            for (const glm::dvec4& plane : frustum) {
+                const double f = !wholeSlab ? 1.0 : plane.w >= 0.0 ? lo / s : hi / s;
+                poly = clipPolygon(poly, glm::dvec4(glm::dvec3(plane) * f, plane.w));
+            }
         out.push_back(poly);
     }
     return out;

@@ -56,6 +56,13 @@ const ParamTable<SlicesSettings>& slicesParams() {
             .declare({"planes_drawn", "draw only the k farthest planes (stepping, 1..N); 0: all", 0, 0, 4096, true})
             .add(&S::physical, {"weighting", "artistic (0: the paper's formula and constants) or physical (1: "
                                 "converges to reference)", 1, 0, 1, true, {"artistic", "physical"}})
+            .add(&S::equiangular,
+                 {"integration", "physical weighting: midpoint (0: one sample at the plane, the spacing its weight) or "
+                  "equiangular (1: each plane integrates its slab along the ray, cut to the surface and a spot's "
+                  "cone, with nodes equally spaced in the angle seen from the light, 1/r^2 exact)",
+                  0, 0, 1, true, {"midpoint", "equiangular"}})
+            .add(&S::slabAngle, {"slab_angle", "integration=equiangular: the largest angle (radians) between two "
+                                 "nodes of a slab seen from the light (at most 64 nodes a slab)", 0.1, 0.05, 3.15, false})
             .add(&S::accum, {"accum", "accumulation target: rgba8 (0), rgba8-mask (1: channel mask), rgba16f (2), "
                              "rgba32f (3)", 3, 0, 3, true, {"rgba8", "rgba8-mask", "rgba16f", "rgba32f"}})
             .add(&S::accumRange, {"accum_range", "value stored as 1.0 in the 8-bit targets (rgba8-mask: per "
@@ -114,7 +121,7 @@ SlicesTechnique::SlicesTechnique()
         render::SceneViewPasses::surfaceStage("slices"),
         {kStagePlanes, "Sampling planes",
          "N view-aligned planes per light, clipped to its frustum, added back to front",
-         {"planes", "planes_drawn", "weighting", "accum", "accum_range", "shadow", "spot_falloff", "cookie",
+         {"planes", "planes_drawn", "weighting", "integration", "slab_angle", "accum", "accum_range", "shadow", "spot_falloff", "cookie",
           "noise", "noise_tiles", "time", "falloff", "ambient", "artistic_units", "clip", "user_clip",
           "clip_y_min", "clip_y_max", "directional_box", "plane_grid", "distance_scale", "count_fragments", "mesh_view",
           "mesh_yaw", "mesh_pitch", "mesh_zoom", "pick_x", "pick_y", "ray_planes", "force_features"},
@@ -147,6 +154,12 @@ std::vector<QualitySetting> SlicesTechnique::qualitySweep(bool quick) const {
               : std::vector<std::pair<std::string, double>>{{"rgba8", 0}, {"rgba8-mask", 1}, {"rgba16f", 2}};
     for (const auto& [name, code] : accums)
         sweep.push_back({"planes=256 " + name, {{"planes", 256.0}, {"accum", code}}});
+    // Each plane integrating its slab (integration=equiangular) reaches a given error with far fewer planes
+    // where a spot or point light is in view (grate at 640x480: 2.1 % with 8 planes, the midpoint rule 5.2 %
+    // with 128).
+    const std::vector<int> slabCounts = quick ? std::vector<int>{8, 32} : std::vector<int>{8, 16, 32, 64, 128};
+    for (int n : slabCounts)
+        sweep.push_back({"planes=" + std::to_string(n) + " equiangular", {{"planes", double(n)}, {"integration", 1.0}}});
     // The report times the technique, not the inspector's recording of one pixel.
     for (QualitySetting& q : sweep) q.settings["ray_planes"] = 0.0;
     return sweep;
@@ -204,6 +217,13 @@ Plan SlicesTechnique::plan(const scene::Scene& scene, const Settings& settings) 
     p.features.push_back({"PHYSICAL", t.physical,
                           t.physical ? "weight = integrand of L_air x plane spacing along the ray"
                                      : "weighting=0: the paper's artistic formula and constants"});
+    p.features.push_back({"SLAB_EQUIANGULAR", t.equiangular,
+                          t.equiangular
+                              ? "each plane integrates its slab (cut to the surface and a spot's cone) with nodes "
+                                "at most slab_angle = " + format("%g", s.slabAngle) +
+                                    " rad apart as seen from the light; planes and clip planes widened by the slab"
+                              : !t.physical ? "weighting=artistic: the paper's one sample per plane"
+                                            : "integration=midpoint: one sample at the plane, weighted by the spacing"});
     p.features.push_back({"SPOT_FALLOFF", t.spot,
                           t.spot ? "A_spot (KHR angular attenuation)"
                                  : (hasSpot ? "spot_falloff=0" : "no spot light in the scene")});
@@ -443,6 +463,7 @@ Terms SlicesTechnique::terms(const scene::Scene& scene, const SlicesSettings& s)
     // force_features=1 compiles in what this scene would not need (to measure what leaving it out saves).
     const bool force = s.forceFeatures;
     t.physical = s.physical;
+    t.equiangular = s.physical && s.equiangular;
     t.spot = (hasSpot || force) && s.spotFalloff;
     t.cookie = (hasCookie || force) && s.cookie;
     t.shadow = s.shadow != 0;

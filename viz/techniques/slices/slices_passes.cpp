@@ -8,6 +8,7 @@ namespace viz::slices_detail {
 gl::ShaderDefines SlicesTechnique::planeDefines(const Terms& t, bool pick) {
     gl::ShaderDefines d;
     if (t.physical) d.push_back({"PHYSICAL", "1"});
+    if (t.equiangular) d.push_back({"SLAB_EQUIANGULAR", "1"});
     if (t.spot) d.push_back({"SPOT_FALLOFF", "1"});
     if (t.cookie) d.push_back({"COOKIE", "1"});
     else d.push_back({"LIGHTS_NO_COOKIE", "1"});
@@ -83,6 +84,8 @@ void SlicesTechnique::drawPlanes(const scene::Scene& scene, const FrameInput& in
     mPlanesUsed.clear();
     mPolygons.clear();
     const CameraBasis basis{cam.forward, scene::cameraRight(cam), cam.up};
+    const double tanHalf = std::tan(cam.yfov * 0.5);
+    const glm::dvec2 viewTan(tanHalf * scene::aspectOf(cam, input.width, input.height), tanHalf);
 
     program.use();
     setBoth("uViewProj", render::eyeRelativeViewProjection(cam, input.width, input.height));
@@ -103,6 +106,7 @@ void SlicesTechnique::drawPlanes(const scene::Scene& scene, const FrameInput& in
     const float time = float(input.controls.time);
     setBoth("uScroll", glm::vec4(0.031f * time, 0.017f * time, -0.023f * time, 0.029f * time));
     setBoth("uPlaneWeight", 1.0f);
+    setBoth("uSlabAngle", float(s.slabAngle));
     // User planes: world y >= clip_y_min and y <= clip_y_max, written in eye-relative space.
     const double eyeY = cam.position.y;
     setBoth("uUserPlane0", glm::vec4(0, 1, 0, float(eyeY - s.clipYMin)));
@@ -188,7 +192,7 @@ void SlicesTechnique::drawPlanes(const scene::Scene& scene, const FrameInput& in
         const int drawnLimit = int(substepLimit(input, kPlanesIndex));
         const int drawn = drawnLimit > 0 ? std::min(planes, drawnLimit) : planes;
         mPlanesUsed.push_back(planes);
-        for (auto& poly : planePolygons(range, basis, set.volume, drawn, t.clip && boxed))
+        for (auto& poly : planePolygons(range, basis, set.volume, drawn, t.clip && boxed, t.equiangular, viewTan))
             mPolygons.push_back(std::move(poly));
         setBoth("uClipLight", boxed ? 1 : 0);
         setBoth("uFractionOfMaxShells", float(double(planes) / kPaperMaxPlanes));

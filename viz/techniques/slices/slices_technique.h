@@ -66,6 +66,7 @@ constexpr int kMinScaledPlanes = 8;
 
 struct Terms {
     bool physical = true;
+    bool equiangular = false;  // integration=equiangular (physical weighting only): plane.frag integrates its slab
     bool spot = false, cookie = false, shadow = false, pcf = false, noise = false;
     bool mask = false, blur = false, clip = true, userClip = false, count = false, cubes = false;
     bool pick = false;  // record the picked pixel's planes (slices.ray_planes)
@@ -92,6 +93,8 @@ struct PickSet {
 struct SlicesSettings {
     int planes = 0;
     bool physical = false;  // weighting=physical
+    bool equiangular = false;  // integration=equiangular
+    double slabAngle = 0.0;    // radians between two nodes of a slab at most
     SlicesAccum accum = SlicesAccum::Rgba32f;
     double accumRange = 0.0;
     int shadow = 0;  // off, nearest, pcf
