@@ -193,6 +193,11 @@ vec3 slabIntegral(GpuLight L, vec3 w, float t0, float t1, float d) {
         t1 = min(t1, lit.y);
     }
     if (!(t1 > t0)) return vec3(0.0);
+#if defined(LIGHTS_NO_SPOT) && defined(SHADOW_NO_CUBE)
+    // Only suns in the scene (the plan's LIGHTS_NO_SPOT and SHADOW_NO_CUBE): one node at the middle of the
+    // cut slab, and the angle code is not compiled (llvmpipe would run it, masked, for every fragment).
+    return shade(L, w, 0.5 * (t0 + t1), t1 - t0);
+#else
     bool directional = L.info.x == kLightDirectional;
     float tP = 0.0, h = 1.0, a0 = 0.0, step_ = t1 - t0;
     int nodes = 1;
@@ -216,6 +221,7 @@ vec3 slabIntegral(GpuLight L, vec3 w, float t0, float t1, float d) {
         sum += shade(L, w, t, directional ? step_ : step_ / h);
     }
     return sum;
+#endif
 }
 #endif
 

@@ -270,6 +270,9 @@ Plan SlicesTechnique::plan(const scene::Scene& scene, const Settings& settings) 
                                  : "ray_planes=0: none of it runs, costs nothing"});
     p.features.push_back({"USER_CLIP", t.userClip, t.userClip ? "planes y >= clip_y_min, y <= clip_y_max"
                                                              : "user_clip=0"});
+    p.features.push_back({"SPOT_LIGHTS", t.spots,
+                          t.spots ? "a spot light: its cone and cookie code compiled in"
+                                  : "no spot light: spot code compiled out (LIGHTS_NO_SPOT)"});
     p.features.push_back({"SHADOW_MAPS_CUBE", t.cubes,
                           t.cubes ? "point lights / area-light VPLs: cube shadow maps"
                                   : "no point or area light: cube-map code compiled out (SHADOW_NO_CUBE)"});
@@ -281,7 +284,8 @@ Plan SlicesTechnique::plan(const scene::Scene& scene, const Settings& settings) 
         const Terms t0 = terms(scene, unforced);
         for (FeaturePlan& f : p.features)
             if ((f.feature == "SPOT_FALLOFF" && t.spot != t0.spot) || (f.feature == "COOKIE" && t.cookie != t0.cookie) ||
-                (f.feature == "CLIP" && t.clip != t0.clip) || (f.feature == "SHADOW_MAPS_CUBE" && t.cubes != t0.cubes))
+                (f.feature == "CLIP" && t.clip != t0.clip) || (f.feature == "SHADOW_MAPS_CUBE" && t.cubes != t0.cubes) ||
+                (f.feature == "SPOT_LIGHTS" && t.spots != t0.spots))
                 f.why = "forced on (force_features=1); the plan would leave it out for this scene";
         forcePlan(p, true, {});
     }
@@ -478,6 +482,7 @@ Terms SlicesTechnique::terms(const scene::Scene& scene, const SlicesSettings& s)
     t.userClip = s.userClip;
     t.count = s.countFragments;
     t.pick = s.rayPlanes;
+    t.spots = hasSpot || force;
     t.cubes = render::hasLightOfType(scene, scene::LightType::Point) ||
               render::hasLightOfType(scene, scene::LightType::Area) || force;
     // The unbounded lights' planes end at the scene's far side under a far camera; the rest of each ray is

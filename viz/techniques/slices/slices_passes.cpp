@@ -22,6 +22,7 @@ gl::ShaderDefines SlicesTechnique::planeDefines(const Terms& t, bool pick) {
     if (pick) d.push_back({"PICK_RAY", "1"});
     // Cube maps serve point lights and area-light VPLs only.
     if (!t.cubes) d.push_back({"SHADOW_NO_CUBE", "1"});
+    if (!t.spots) d.push_back({"LIGHTS_NO_SPOT", "1"});
     return d;
 }
 

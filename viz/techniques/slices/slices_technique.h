@@ -69,6 +69,7 @@ struct Terms {
     bool equiangular = false;  // integration=equiangular (physical weighting only): plane.frag integrates its slab
     bool spot = false, cookie = false, shadow = false, pcf = false, noise = false;
     bool mask = false, blur = false, clip = true, userClip = false, count = false, cubes = false;
+    bool spots = false;  // a spot light in the scene (else LIGHTS_NO_SPOT)
     bool pick = false;  // record the picked pixel's planes (slices.ray_planes)
     bool lastPlane = false;  // draw the last plane alone too (slices.plane, on demand)
     bool farTail = false;    // a far camera: the resolve adds each ray past the planes' end (resolve.frag)
