@@ -9,7 +9,7 @@
 // SLAB_EQUIANGULAR (integration=equiangular, physical weighting only): instead of one sample at the
 // plane, the fragment integrates its whole slab along the pixel's ray, cut to the surface and to a spot's
 // cone (litInterval), with nodes equally spaced in the angle the part subtends at the light, at most
-// uSlabAngle radians apart (one node for a directional light): t = t_P + h tan(theta), weight
+// uSlabAngle radians apart (and one cookie texel; one node for a directional light): t = t_P + h tan(theta), weight
 // dtheta / h, so the 1/r^2 of E is integrated exactly and the nodes crowd where a ray passes the light.
 // plane.vert widens each plane and its clip planes by the slab (a slab whose plane point misses the light
 // volume may still cross it).
@@ -211,7 +211,13 @@ vec3 slabIntegral(GpuLight L, vec3 w, float t0, float t1, float d) {
                 max(AIRLIGHT_MIN_RELATIVE_H * max(abs(s0), abs(s1)), AIRLIGHT_MIN_ABSOLUTE_H));
         float subtended = atan(h * (s1 - s0), h * h + s0 * s1);
         a0 = atan(s0 / h);
-        nodes = clamp(int(ceil(subtended / uSlabAngle)), 1, kMaxSlabNodes);
+        // Under a cookie the nodes follow its texels (one texel spans about 2 atan(tan(outer)) / width
+        // seen from the light), as polyvol's pieces do: a ray passing the apex crosses the whole cookie.
+        float stepMax = uSlabAngle;
+#ifdef COOKIE
+        if (L.info.x == kLightSpot && L.info.y >= 0) stepMax = min(stepMax, 2.0 * atan(L.spot.z) / max(L.frameX.w, 1.0));
+#endif
+        nodes = clamp(int(ceil(subtended / stepMax)), 1, kMaxSlabNodes);
         step_ = subtended / float(nodes);
     }
     vec3 sum = vec3(0.0);

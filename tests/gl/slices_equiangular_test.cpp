@@ -145,3 +145,16 @@ TEST_F(SlicesEquiangularTest, TheSlabAtTheEyeIsDrawnWhenTheCameraIsInTheLitVolum
     std::printf("camera-in-lit-volume, 512 planes: midpoint %.4f, equiangular %.4f\n", midpoint, equiangular);
     EXPECT_LT(equiangular, 1.1 * midpoint);
 }
+
+// Under a cookie the nodes follow its texels: on stained-glass the spot projects a coloured window, and
+// a ray passing the apex crosses all of it within a few degrees. With nodes only slab_angle apart the
+// error stayed at 0.11 at 32 planes and 0.098 at 128 (the midpoint rule: 0.95 and 3.2); one node per
+// cookie texel brings 32 planes below 1 %.
+TEST_F(SlicesEquiangularTest, NodesFollowTheCookiesTexelsOnStainedGlass) {
+    const viz::scene::Scene scene = viz::scene::makeBuiltinScene("stained-glass");
+    const viz::FrameOutput reference = render(scene, "reference", {}, 160, 120);
+    const double error =
+        relativeL2(render(scene, "slices", {{"planes", 32}, {"integration", 1}}, 160, 120).airlight, reference.airlight);
+    std::printf("stained-glass, equiangular planes=32: relative L2 %.4f\n", error);
+    EXPECT_LT(error, 0.01);
+}
