@@ -217,7 +217,10 @@ vec3 slabIntegral(GpuLight L, vec3 w, float t0, float t1, float d) {
 #ifdef COOKIE
         if (L.info.x == kLightSpot && L.info.y >= 0) stepMax = min(stepMax, 2.0 * atan(L.spot.z) / max(L.frameX.w, 1.0));
 #endif
-        nodes = clamp(int(ceil(subtended / stepMax)), 1, kMaxSlabNodes);
+        // An area light's VPLs take one node each (still 1/r^2 exact over the slab): there are many of them,
+        // and their own spacing, not the slab's, is what limits such a light (tv-room, 128 planes, 320x240:
+        // 0.756 with nodes by angle, 0.702 with one; 0.762 with the midpoint rule).
+        nodes = L.info.x == kLightVpl ? 1 : clamp(int(ceil(subtended / stepMax)), 1, kMaxSlabNodes);
         step_ = subtended / float(nodes);
     }
     vec3 sum = vec3(0.0);
