@@ -77,6 +77,13 @@ vec3 spotCookie(GpuLight L, vec3 dirFromLight) {
     return sampleLayerLinearRgb(uCookies, L.info.y, uv, vec2(L.frameX.w, L.frameY.w));
 }
 
+// The angle one cookie texel spans as seen from a spot light, across the width: the cookie covers
+// 2 atan(tan(outer)) over frameX.w texels. Quadratures that follow the cookie step by it (polyvol's pieces,
+// slices' slab nodes).
+float cookieTexelAngle(GpuLight L) {
+    return 2.0 * atan(L.spot.z) / max(L.frameX.w, 1.0);
+}
+
 // The light's angular emission toward p, without distance terms: colour * I * A_spot * cookie (spot),
 // colour * I (point, directional), weight * max(0, cos theta_e) (VPL).
 vec3 lightIntensity(GpuLight L, vec3 p) {

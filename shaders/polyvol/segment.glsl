@@ -55,8 +55,7 @@ vec3 angularPieces(GpuLight L, vec3 w, RayLightGeometry g, float h, float x0, fl
     int pieces = whole ? 1 : uSpotPieces;
 #ifndef LIGHTS_NO_COOKIE
     if (!whole && L.info.x == kLightSpot && L.info.y >= 0) {
-        float texelAngle = 2.0 * atan(L.spot.z) / max(L.frameX.w, 1.0);
-        pieces = clamp(int(ceil(abs(phi1 - phi0) / texelAngle)), uSpotPieces, max(uSpotPieces, kMaxCookiePieces));
+        pieces = clamp(int(ceil(abs(phi1 - phi0) / cookieTexelAngle(L))), uSpotPieces, max(uSpotPieces, kMaxCookiePieces));
     }
 #endif
     vec3 sum = vec3(0.0);

@@ -205,17 +205,17 @@ vec3 slabIntegral(GpuLight L, vec3 w, float t0, float t1, float d) {
         // Foot point t_P and distance h of the light from the ray; the angle from the foot point, and the
         // angle the part subtends, written without cancellation (both ends on one side: h -> 0 gives
         // (s1 - s0) h / (s0 s1)). h is floored as the closed forms floor it (airlight.glsl).
-        tP = dot(L.position.xyz, w);
+        RayLightGeometry g = rayLightGeometry(L.position.xyz, w);
+        tP = g.tP;
         float s0 = t0 - tP, s1 = t1 - tP;
-        h = max(length(L.position.xyz - tP * w),
-                max(AIRLIGHT_MIN_RELATIVE_H * max(abs(s0), abs(s1)), AIRLIGHT_MIN_ABSOLUTE_H));
+        h = max(g.h, max(AIRLIGHT_MIN_RELATIVE_H * max(abs(s0), abs(s1)), AIRLIGHT_MIN_ABSOLUTE_H));
         float subtended = atan(h * (s1 - s0), h * h + s0 * s1);
         a0 = atan(s0 / h);
-        // Under a cookie the nodes follow its texels (one texel spans about 2 atan(tan(outer)) / width
-        // seen from the light), as polyvol's pieces do: a ray passing the apex crosses the whole cookie.
+        // Under a cookie the nodes follow its texels, as polyvol's pieces do: a ray passing the apex
+        // crosses the whole cookie.
         float stepMax = uSlabAngle;
 #ifdef COOKIE
-        if (L.info.x == kLightSpot && L.info.y >= 0) stepMax = min(stepMax, 2.0 * atan(L.spot.z) / max(L.frameX.w, 1.0));
+        if (L.info.x == kLightSpot && L.info.y >= 0) stepMax = min(stepMax, cookieTexelAngle(L));
 #endif
         // An area light's VPLs take one node each (still 1/r^2 exact over the slab): there are many of them,
         // and their own spacing, not the slab's, is what limits such a light (tv-room, 128 planes, 320x240:

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <initializer_list>
 #include <random>
 #include <vector>
 
@@ -18,9 +19,27 @@
 
 namespace {
 
-class SlicesEquiangularTest : public viz::testing::TechniqueTest {};
-
 using viz::testing::relativeL2;
+
+class SlicesEquiangularTest : public viz::testing::TechniqueTest {
+protected:
+    // Relative L2 against the reference of slices with integration=equiangular at each plane count
+    // (160x120), printed under `label`.
+    std::vector<double> equiangularErrors(const viz::scene::Scene& scene, const viz::FrameOutput& reference,
+                                          std::initializer_list<int> counts, const char* label) {
+        std::vector<double> errors;
+        for (int n : counts) {
+            const viz::FrameOutput out = render(scene, "slices", {{"planes", n}, {"integration", 1}}, 160, 120);
+            errors.push_back(relativeL2(out.airlight, reference.airlight));
+            std::printf("%s, equiangular planes=%3d: relative L2 %.4f\n", label, n, errors.back());
+        }
+        return errors;
+    }
+};
+
+void expectFalling(const std::vector<double>& errors) {
+    for (std::size_t i = 1; i < errors.size(); ++i) EXPECT_LT(errors[i], errors[i - 1]) << "step " << i;
+}
 
 // Whether p (on the plane of `poly`, a convex polygon) lies inside it, with a tolerance relative to size.
 bool insideConvex(const std::vector<glm::dvec3>& poly, const glm::dvec3& p, const glm::dvec3& normal) {
@@ -51,16 +70,11 @@ TEST_F(SlicesEquiangularTest, FewPlanesMatchTheReferenceOnGrate) {
     ASSERT_FALSE(reference.airlight.empty());
     const viz::FrameOutput midpoint = render(scene, "slices", {{"planes", 128}}, 160, 120);
     const double midpointError = relativeL2(midpoint.airlight, reference.airlight);
-    std::vector<double> errors;
-    for (int n : {16, 128, 512}) {
-        const viz::FrameOutput out = render(scene, "slices", {{"planes", n}, {"integration", 1}}, 160, 120);
-        errors.push_back(relativeL2(out.airlight, reference.airlight));
-        std::printf("grate, slices integration=equiangular planes=%3d: relative L2 %.4f\n", n, errors.back());
-    }
-    std::printf("grate, slices integration=midpoint planes=128: relative L2 %.4f\n", midpointError);
+    const std::vector<double> errors = equiangularErrors(scene, reference, {16, 128, 512}, "grate");
+    std::printf("grate, midpoint planes=128: relative L2 %.4f\n", midpointError);
     EXPECT_LT(errors[0], 0.05);
     EXPECT_LT(errors[0], midpointError);
-    for (std::size_t i = 1; i < errors.size(); ++i) EXPECT_LT(errors[i], errors[i - 1]) << "step " << i;
+    expectFalling(errors);
 }
 
 // The same with the spot made a point light (the unbounded planes over the camera frustum, no cone): the
@@ -71,15 +85,10 @@ TEST_F(SlicesEquiangularTest, APointLightConvergesToo) {
     const viz::FrameOutput reference = render(scene, "reference", {}, 160, 120);
     const double midpoint =
         relativeL2(render(scene, "slices", {{"planes", 32}}, 160, 120).airlight, reference.airlight);
-    std::vector<double> errors;
-    for (int n : {32, 128, 512}) {
-        const viz::FrameOutput out = render(scene, "slices", {{"planes", n}, {"integration", 1}}, 160, 120);
-        errors.push_back(relativeL2(out.airlight, reference.airlight));
-        std::printf("grate with a point light, equiangular planes=%3d: relative L2 %.4f\n", n, errors.back());
-    }
+    const std::vector<double> errors = equiangularErrors(scene, reference, {32, 128, 512}, "grate with a point light");
     std::printf("grate with a point light, midpoint planes= 32: relative L2 %.4f\n", midpoint);
     EXPECT_LT(errors[0], midpoint);
-    for (std::size_t i = 1; i < errors.size(); ++i) EXPECT_LT(errors[i], errors[i - 1]) << "step " << i;
+    expectFalling(errors);
 }
 
 // Clipping only saves work: a fragment the widened clip planes remove must add nothing. With clip=0 every
