@@ -92,15 +92,20 @@ TEST_F(MeshViewRender, PolyvolAndSlicesDrawTheirMeshesWithTheCameraAndLight) {
                                            160, 120, -1, {"polyvol.mesh"});
     EXPECT_NE(find(turned, "polyvol.mesh")->image->pixels, mesh->image->pixels);
 
-    const viz::FrameOutput slices =
-        render(scene, "slices", {{"mesh_view", 1}, {"planes", 16}}, 160, 120, -1, {"slices.plane_view"});
+    // The paper's planes (integration=midpoint), each the light volume's cross-section, so the nearest one is
+    // large enough to find by its colour; under the slab integral the nearest planes are cut to the view
+    // (SliceGeometry.WidenedPolygonsHoldEveryFrustumPointOfTheirSlab checks those polygons).
+    const viz::Settings paperPlanes{{"planes", 16}, {"integration", 0}};
+    viz::Settings withView = paperPlanes;
+    withView["mesh_view"] = 1;
+    const viz::FrameOutput slices = render(scene, "slices", withView, 160, 120, -1, {"slices.plane_view"});
     const viz::Intermediate* planes = find(slices, "slices.plane_view");
     ASSERT_TRUE(planes && planes->image);
     EXPECT_GT(pixelsNear(*planes->image, blue), 10);
     // The nearest plane's outline is drawn in (1, 0.85, 0.2): the brightest of the plane colours.
     EXPECT_GT(pixelsNear(*planes->image, {1.0f, 0.85f, 0.2f}), 10);
     // The airlight is the same with or without the view.
-    const viz::FrameOutput plain = render(scene, "slices", {{"planes", 16}}, 160, 120);
+    const viz::FrameOutput plain = render(scene, "slices", paperPlanes, 160, 120);
     EXPECT_EQ(plain.airlight.pixels, slices.airlight.pixels);
 }
 

@@ -8,6 +8,8 @@
 #include <cstdio>
 #include <initializer_list>
 #include <random>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -68,7 +70,7 @@ TEST_F(SlicesEquiangularTest, FewPlanesMatchTheReferenceOnGrate) {
     const viz::scene::Scene scene = viz::scene::makeBuiltinScene("grate");
     const viz::FrameOutput reference = render(scene, "reference", {}, 160, 120);
     ASSERT_FALSE(reference.airlight.empty());
-    const viz::FrameOutput midpoint = render(scene, "slices", {{"planes", 128}}, 160, 120);
+    const viz::FrameOutput midpoint = render(scene, "slices", {{"planes", 128}, {"integration", 0}}, 160, 120);
     const double midpointError = relativeL2(midpoint.airlight, reference.airlight);
     const std::vector<double> errors = equiangularErrors(scene, reference, {16, 128, 512}, "grate");
     std::printf("grate, midpoint planes=128: relative L2 %.4f\n", midpointError);
@@ -84,7 +86,7 @@ TEST_F(SlicesEquiangularTest, APointLightConvergesToo) {
     scene.lights[0].type = viz::scene::LightType::Point;
     const viz::FrameOutput reference = render(scene, "reference", {}, 160, 120);
     const double midpoint =
-        relativeL2(render(scene, "slices", {{"planes", 32}}, 160, 120).airlight, reference.airlight);
+        relativeL2(render(scene, "slices", {{"planes", 32}, {"integration", 0}}, 160, 120).airlight, reference.airlight);
     const std::vector<double> errors = equiangularErrors(scene, reference, {32, 128, 512}, "grate with a point light");
     std::printf("grate with a point light, midpoint planes= 32: relative L2 %.4f\n", midpoint);
     EXPECT_LT(errors[0], midpoint);
@@ -148,7 +150,8 @@ TEST_F(SlicesEquiangularTest, TheSlabAtTheEyeIsDrawnWhenTheCameraIsInTheLitVolum
     ASSERT_NE(c, nullptr);
     const viz::scene::Scene scene = viz::scene::buildStiffScene(*c);
     const viz::FrameOutput reference = render(scene, "reference", {}, 80, 60);
-    const double midpoint = relativeL2(render(scene, "slices", {{"planes", 512}}, 80, 60).airlight, reference.airlight);
+    const double midpoint =
+        relativeL2(render(scene, "slices", {{"planes", 512}, {"integration", 0}}, 80, 60).airlight, reference.airlight);
     const double equiangular =
         relativeL2(render(scene, "slices", {{"planes", 512}, {"integration", 1}}, 80, 60).airlight, reference.airlight);
     std::printf("camera-in-lit-volume, 512 planes: midpoint %.4f, equiangular %.4f\n", midpoint, equiangular);
@@ -166,4 +169,42 @@ TEST_F(SlicesEquiangularTest, NodesFollowTheCookiesTexelsOnStainedGlass) {
         relativeL2(render(scene, "slices", {{"planes", 32}, {"integration", 1}}, 160, 120).airlight, reference.airlight);
     std::printf("stained-glass, equiangular planes=32: relative L2 %.4f\n", error);
     EXPECT_LT(error, 0.01);
+}
+
+// integration=auto, the default: the slab integral where a light has a position (a spot or point light) and
+// for suns alone, the midpoint rule where an area light's VPLs are the only such lights; the plan says
+// which and why. Each choice draws exactly the image of the setting it stands for. On terrain (a sun) the
+// slab integral, one node cut at the surface, is no less accurate than one sample at the plane.
+TEST_F(SlicesEquiangularTest, AutoChoosesTheSlabIntegralExceptForVplsAlone) {
+    viz::scene::Scene tvWithPoint = viz::scene::makeBuiltinScene("tv-room");
+    viz::scene::Light point = tvWithPoint.lights.front();
+    point.type = viz::scene::LightType::Point;
+    point.intensity *= 0.1;
+    tvWithPoint.lights.push_back(point);
+    const std::vector<std::pair<std::string, viz::scene::Scene>> scenes = {
+        {"grate", viz::scene::makeBuiltinScene("grate")},
+        {"terrain", viz::scene::makeBuiltinScene("terrain")},
+        {"tv-room", viz::scene::makeBuiltinScene("tv-room")},
+        {"tv-room with a point light", tvWithPoint}};
+    const auto slices = viz::makeTechnique("slices");
+    for (const auto& [name, scene] : scenes) {
+        SCOPED_TRACE(name);
+        const bool vplsAlone = name == "tv-room";
+        ASSERT_EQ(vplsAlone, scene.lights.size() == 1 && scene.lights[0].type == viz::scene::LightType::Area);
+        const viz::Plan plan = slices->plan(scene, viz::completeSettings(*slices, {}));
+        const viz::FeaturePlan* feature = viz::findFeature(plan, "SLAB_EQUIANGULAR");
+        ASSERT_NE(feature, nullptr);
+        EXPECT_EQ(feature->enabled, !vplsAlone);
+        EXPECT_EQ(feature->why.rfind("integration=auto", 0), 0u) << feature->why;
+        const viz::FrameOutput automatic = render(scene, "slices", {{"planes", 16}}, 80, 60);
+        const viz::FrameOutput chosen = render(scene, "slices", {{"planes", 16}, {"integration", vplsAlone ? 0 : 1}}, 80, 60);
+        EXPECT_EQ(automatic.airlight.pixels, chosen.airlight.pixels);
+    }
+    const viz::scene::Scene& terrain = scenes[1].second;
+    const viz::FrameOutput reference = render(terrain, "reference", {}, 160, 120);
+    const double slab = relativeL2(render(terrain, "slices", {{"planes", 128}}, 160, 120).airlight, reference.airlight);
+    const double midpoint =
+        relativeL2(render(terrain, "slices", {{"planes", 128}, {"integration", 0}}, 160, 120).airlight, reference.airlight);
+    std::printf("terrain, 128 planes: auto (one node a slab) %.4f, midpoint %.4f\n", slab, midpoint);
+    EXPECT_LE(slab, midpoint);
 }

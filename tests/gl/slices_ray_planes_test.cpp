@@ -195,7 +195,8 @@ TEST_F(SlicesRayPlanesTest, RecordsMatchAnIndependentCpuComputation) {
 
     for (int accum = 0; accum < 4; ++accum) {
         SCOPED_TRACE("accum " + std::to_string(accum));
-        const Run run = renderPick(scene, accum);
+        // The paper's one sample per plane (integration=midpoint), the formula computed here.
+        const Run run = renderPick(scene, accum, {{"integration", 0}});
         ASSERT_EQ(run.rows.size(), std::size_t(kPlanes));
         const double storeScale = accum == 0 ? 1.0 / accumRange : accum == 1 ? 4.0 / accumRange : 1.0;
         const double spacing = run.rows[0].s - run.rows[1].s;

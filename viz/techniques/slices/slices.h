@@ -10,9 +10,10 @@
 
 namespace viz {
 
-// Numeric codes of the `weighting` and `accum` parameters (Settings hold numbers).
+// Numeric codes of the `weighting`, `accum` and `integration` parameters (Settings hold numbers).
 enum class SlicesWeighting { Artistic = 0, Physical = 1 };
 enum class SlicesAccum { Rgba8 = 0, Rgba8Mask = 1, Rgba16f = 2, Rgba32f = 3 };
+enum class SlicesIntegration { Midpoint = 0, Equiangular = 1, Auto = 2 };
 
 std::unique_ptr<Technique> makeSlicesTechnique();
 

@@ -66,7 +66,7 @@ constexpr int kMinScaledPlanes = 8;
 
 struct Terms {
     bool physical = true;
-    bool equiangular = false;  // integration=equiangular (physical weighting only): plane.frag integrates its slab
+    bool equiangular = false;  // the slab integral (integration=equiangular, or auto's choice; physical weighting only)
     bool spot = false, cookie = false, shadow = false, pcf = false, noise = false;
     bool mask = false, blur = false, clip = true, userClip = false, count = false, cubes = false;
     bool spots = false;  // a spot light in the scene (else LIGHTS_NO_SPOT)
@@ -94,7 +94,7 @@ struct PickSet {
 struct SlicesSettings {
     int planes = 0;
     bool physical = false;  // weighting=physical
-    bool equiangular = false;  // integration=equiangular
+    SlicesIntegration integration = SlicesIntegration::Auto;
     double slabAngle = 0.0;    // radians between two nodes of a slab at most
     SlicesAccum accum = SlicesAccum::Rgba32f;
     double accumRange = 0.0;
