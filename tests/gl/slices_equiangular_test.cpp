@@ -79,6 +79,18 @@ TEST_F(SlicesEquiangularTest, FewPlanesMatchTheReferenceOnGrate) {
     expectFalling(errors);
 }
 
+// In a spot's penumbra, between its outer and inner cone, A_spot^2 rises from 0 to 1 over the penumbra's
+// angle (0.15 rad on grate). Nodes only slab_angle = 0.1 rad apart sampled it once or twice per slab, often
+// outside the cone: 8 planes read 0.0208 against the reference (160x120), most of it at the cone's edge.
+// With at most an eighth of the penumbra's angle a node wherever a slab's part is not wholly inside the
+// inner cone: 0.0079.
+TEST_F(SlicesEquiangularTest, ThePenumbraIsSampledFinely) {
+    const viz::scene::Scene scene = viz::scene::makeBuiltinScene("grate");
+    const viz::FrameOutput reference = render(scene, "reference", {}, 160, 120);
+    const std::vector<double> errors = equiangularErrors(scene, reference, {8}, "grate");
+    EXPECT_LT(errors[0], 0.0125);
+}
+
 // The same with the spot made a point light (the unbounded planes over the camera frustum, no cone): the
 // slab integral converges too, and with 32 planes it is closer to the reference than the midpoint rule.
 TEST_F(SlicesEquiangularTest, APointLightConvergesToo) {

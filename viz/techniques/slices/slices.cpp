@@ -75,8 +75,9 @@ const ParamTable<SlicesSettings>& slicesParams() {
                   "auto (2: equiangular, except midpoint where an area light's VPLs are the only lights with a "
                   "position; the plan says which)",
                   2, 0, 2, true, {"midpoint", "equiangular", "auto"}})
-            .add(&S::slabAngle, {"slab_angle", "the slab integral (integration=equiangular, or auto's choice): the largest angle (radians) between two "
-                                 "nodes of a slab seen from the light (at most 64 nodes a slab)", 0.1, 0.05, 3.15, false})
+            .add(&S::slabAngle, {"slab_angle", "the slab integral (integration=equiangular, or auto's choice): the "
+                                 "largest angle (radians) between two nodes of a slab seen from the light (at most 64 "
+                                 "nodes a slab)", 0.1, 0.05, 3.15, false})
             .add(&S::accum, {"accum", "accumulation target: rgba8 (0), rgba8-mask (1: channel mask), rgba16f (2), "
                              "rgba32f (3)", 3, 0, 3, true, {"rgba8", "rgba8-mask", "rgba16f", "rgba32f"}})
             .add(&S::accumRange, {"accum_range", "value stored as 1.0 in the 8-bit targets (rgba8-mask: per "
