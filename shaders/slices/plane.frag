@@ -222,7 +222,8 @@ vec3 slabIntegral(GpuLight L, vec3 w, float t0, float t1, float d) {
             // were up to 20x too dark with one node, its middle outside the cone).
             float cosInner = min((1.0 - L.spot.y) / L.spot.x, 1.0);
             vec3 axis = L.direction.xyz;
-            float cd0 = dot(normalize(t0 * w - L.position.xyz), axis), cd1 = dot(normalize(t1 * w - L.position.xyz), axis);
+            float cd0 = dot(normalize(t0 * w - L.position.xyz), axis);
+            float cd1 = dot(normalize(t1 * w - L.position.xyz), axis);
             if (min(cd0, cd1) < cosInner)
                 stepMax = min(stepMax, max(acos(L.spot.w) - acos(cosInner), 8.0e-3) / 8.0);
         }
