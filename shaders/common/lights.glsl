@@ -63,6 +63,12 @@ float spotAttenuation(GpuLight L, vec3 dirFromLight) {
     return a * a;
 }
 
+// cos(inner) of a spot: A_spot = 1 from there in (cd * scale + offset >= 1), the penumbra between it and
+// cos(outer) (L.spot.w).
+float spotCosInner(GpuLight L) {
+    return min((1.0 - L.spot.y) / L.spot.x, 1.0);
+}
+
 // Cookie projected over the outer cone: in the light frame (x right, y up, z axis),
 // uv = 0.5 + 0.5 (x, y) / (z tan(outer)), v = 0 at the top row; 1 without a cookie.
 vec3 spotCookie(GpuLight L, vec3 dirFromLight) {

@@ -123,8 +123,7 @@ vec3 angularSegment(GpuLight L, vec3 w, RayLightGeometry g, float x0, float x1) 
     vec3 m = cross(cross(L.position.xyz, w), w);
     vec3 a = L.direction.xyz;
     float cosOuter = L.spot.w;
-    // KHR: A = 1 where cd * scale + offset >= 1, i.e. cd >= (1 - offset) / scale = cos(inner).
-    float cosInner = min((1.0 - L.spot.y) / L.spot.x, 1.0);
+    float cosInner = spotCosInner(L);
     float breaks[8];
     int n = 0;
     breaks[n++] = x0;

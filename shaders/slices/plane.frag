@@ -220,7 +220,7 @@ vec3 slabIntegral(GpuLight L, vec3 w, float t0, float t1, float d) {
             // wholly inside the inner cone (a convex set: both ends inside means all of it), at most an
             // eighth of the penumbra's angle a node (grate, 160x120, 64 planes: the slabs at the cone's edge
             // were up to 20x too dark with one node, its middle outside the cone).
-            float cosInner = min((1.0 - L.spot.y) / L.spot.x, 1.0);
+            float cosInner = spotCosInner(L);
             vec3 axis = L.direction.xyz;
             float cd0 = dot(normalize(t0 * w - L.position.xyz), axis);
             float cd1 = dot(normalize(t1 * w - L.position.xyz), axis);

@@ -15,6 +15,7 @@
 #include "scene/builtin_scenes.h"
 #include "scene/camera.h"
 #include "shared/airlight.h"
+#include "techniques/reference/emitters.h"
 #include "techniques/reference/ray_probe.h"
 #include "techniques/registry.h"
 #include "techniques/slices/ray_planes.h"
@@ -74,20 +75,17 @@ double toHalf(double x, Round round) {
 }
 
 // grate's spot at distance t along the eye ray w, as the plane shader defines it but without the shadow
-// test: sigma_s p(cos theta) E exp(-sigma_t t), E = intensity A_spot^2 exp(-sigma_t r) / r^2 with KHR's
-// A_spot = clamp((cd - cos outer) / (cos inner - cos outer), 0, 1), cd the cosine to the axis.
+// test: sigma_s p(cos theta) E exp(-sigma_t t), E = intensity A_spot exp(-sigma_t r) / r^2, A_spot the
+// reference's (KHR's squared falloff; grate's spot has no cookie).
 glm::dvec3 spotIntegrand(const viz::scene::Scene& scene, const glm::dvec3& w, double t) {
     const viz::scene::Light& spot = scene.lights.front();
     const glm::dvec3 light = spot.position - scene.camera.position;  // eye-relative world, as the shaders work
     const glm::dvec3 p = t * w;
     const glm::dvec3 fromLight = glm::normalize(p - light);
-    const double cd = glm::dot(glm::normalize(spot.direction), fromLight);
-    const double cosInner = std::cos(spot.innerConeAngle), cosOuter = std::cos(spot.outerConeAngle);
-    const double width = std::max(0.001, cosInner - cosOuter);
-    const double a = std::clamp(cd / width - cosOuter / width, 0.0, 1.0);
+    const double a = viz::reference::SpotProfile::fromLight(spot, nullptr).attenuation(fromLight);
     const glm::dvec3 toLight = light - p;
     const double r2 = glm::dot(toLight, toLight), sigmaT = scene.medium.sigma_t();
-    const glm::dvec3 e = spot.colour * spot.intensity * (a * a) * std::exp(-sigmaT * std::sqrt(r2)) / r2;
+    const glm::dvec3 e = spot.colour * spot.intensity * a * std::exp(-sigmaT * std::sqrt(r2)) / r2;
     const double phase = viz::airlight::phaseHG(glm::dot(fromLight, -w), scene.medium.g);
     return scene.medium.sigma_s * phase * std::exp(-sigmaT * t) * e;
 }

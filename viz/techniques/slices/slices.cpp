@@ -58,6 +58,29 @@ bool autoIntegratesSlabs(const scene::Scene& scene) {
            !render::hasLightOfType(scene, scene::LightType::Area);
 }
 
+// The plan's word on SLAB_EQUIANGULAR: which integration the run takes and, under auto, why.
+std::string slabIntegralWhy(const scene::Scene& scene, const SlicesSettings& s, const Terms& t) {
+    const bool automatic = s.integration == SlicesIntegration::Auto;
+    if (!t.equiangular) {
+        if (!t.physical) return "weighting=artistic: the paper's one sample per plane";
+        if (!automatic) return "integration=midpoint: one sample at the plane, weighted by the spacing";
+        return "integration=auto, an area light's VPLs the only lights with a position: one sample at the plane (a "
+               "slab integral costs each VPL its angle code, 1.65x the time on tv-room, while the VPLs' own spacing "
+               "limits the error)";
+    }
+    const bool onlySuns = !render::hasLightOfType(scene, scene::LightType::Spot) &&
+                          !render::hasLightOfType(scene, scene::LightType::Point) &&
+                          !render::hasLightOfType(scene, scene::LightType::Area);
+    std::string why = !automatic ? ""
+                      : onlySuns ? "integration=auto, only suns: "
+                                 : "integration=auto, a spot or point light: ";
+    why += onlySuns ? "each plane integrates its slab as one node at the middle of its part before the surface (the "
+                      "midpoint rule's cost, but cut exactly at the surface)"
+                    : "each plane integrates its slab (cut to the surface and a spot's cone) with nodes at most "
+                      "slab_angle = " + format("%g", s.slabAngle) + " rad apart as seen from the light";
+    return why + "; planes and clip planes widened by the slab";
+}
+
 }  // namespace
 
 const ParamTable<SlicesSettings>& slicesParams() {
@@ -209,8 +232,7 @@ Plan SlicesTechnique::plan(const scene::Scene& scene, const Settings& settings) 
     Plan p = planEveryStage(mStages);
     const bool hasSpot = render::hasLightOfType(scene, scene::LightType::Spot);
     const bool hasDir = render::hasLightOfType(scene, scene::LightType::Directional);
-    const bool hasPoint = render::hasLightOfType(scene, scene::LightType::Point);
-    const bool hasOther = hasPoint || render::hasLightOfType(scene, scene::LightType::Area);
+    const bool hasOther = render::hasLightOfType(scene, scene::LightType::Point) || render::hasLightOfType(scene, scene::LightType::Area);
     if (scene.medium.sigma_s == 0.0) {
         p.stages[kPlanesIndex].runs = false;
         p.stages[kPlanesIndex].why = "sigma_s = 0: the medium scatters nothing, L_air = 0";
@@ -238,26 +260,7 @@ Plan SlicesTechnique::plan(const scene::Scene& scene, const Settings& settings) 
     p.features.push_back({"PHYSICAL", t.physical,
                           t.physical ? "weight = integrand of L_air x plane spacing along the ray"
                                      : "weighting=0: the paper's artistic formula and constants"});
-    const bool autoIntegration = s.integration == SlicesIntegration::Auto;
-    const bool onlySuns = !hasSpot && !hasOther;
-    p.features.push_back({"SLAB_EQUIANGULAR", t.equiangular,
-                          t.equiangular
-                              ? std::string(!autoIntegration ? ""
-                                            : onlySuns       ? "integration=auto, only suns: "
-                                                             : "integration=auto, a spot or point light: ") +
-                                    (onlySuns ? "each plane integrates its slab as one node at the middle of its part "
-                                                "before the surface (the midpoint rule's cost, but cut exactly at the "
-                                                "surface)"
-                                              : "each plane integrates its slab (cut to the surface and a spot's cone) "
-                                                "with nodes at most slab_angle = " + format("%g", s.slabAngle) +
-                                                    " rad apart as seen from the light") +
-                                    "; planes and clip planes widened by the slab"
-                              : !t.physical ? "weighting=artistic: the paper's one sample per plane"
-                              : autoIntegration
-                                  ? "integration=auto, an area light's VPLs the only lights with a position: one sample "
-                                    "at the plane (a slab integral costs each VPL its angle code, 1.65x the time on "
-                                    "tv-room, while the VPLs' own spacing limits the error)"
-                                  : "integration=midpoint: one sample at the plane, weighted by the spacing"});
+    p.features.push_back({"SLAB_EQUIANGULAR", t.equiangular, slabIntegralWhy(scene, s, t)});
     p.features.push_back({"SPOT_FALLOFF", t.spot,
                           t.spot ? "A_spot (KHR angular attenuation)"
                                  : (hasSpot ? "spot_falloff=0" : "no spot light in the scene")});
