@@ -114,12 +114,13 @@ RayLightGeometry rayLightGeometry(vec3 D, vec3 w) {
 // (docs/numerics.md#anchored-point-light-segment and docs/numerics.md#quadrature)
 
 // An angular factor that follows the ray (AngularFactor in airlight.h): A(y) = c + a sech(y) + b tanh(y),
-// clamped at 0, stored as vec3(c, a, b). vec3(1, 0, 0) is a point light (A = 1 exactly); an area light's
-// VPL is vec3(0, n . m, n . w) (cosineLobeSegment).
-const vec3 AIRLIGHT_NO_LOBE = vec3(1.0, 0.0, 0.0);
+// clamped at 0, stored as vec4(c, a, b, 0); vec4(c, a, b, 1) is min(1, max(0, c + a sech + b tanh))^2, a
+// spot's penumbra (spotPenumbraLobeOf). vec4(1, 0, 0, 0) is a point light (A = 1 exactly); an area
+// light's VPL is vec4(0, n . m, n . w, 0) (cosineLobeSegment).
+const vec4 AIRLIGHT_NO_LOBE = vec4(1.0, 0.0, 0.0, 0.0);
 
 // p(cos) * exp(-nu expm1(eta)) / cosh(y) * A(y), y = y0 + eta; 1 -+ cos = 1 +- tanh(y) from e = exp(-|y|).
-float pointIntegrand(float eta, float y0, float nu, float g, vec3 lobe) {
+float pointIntegrand(float eta, float y0, float nu, float g, vec4 lobe) {
     float y = y0 + eta;
     float e = exp(-abs(y));
     float e2 = e * e;
@@ -127,13 +128,15 @@ float pointIntegrand(float eta, float y0, float nu, float g, vec3 lobe) {
     float oneMinusCos = y >= 0.0 ? 2.0 / (1.0 + e2) : 2.0 * e2 / (1.0 + e2);
     float onePlusCos = y >= 0.0 ? 2.0 * e2 / (1.0 + e2) : 2.0 / (1.0 + e2);
     float tanhY = (y >= 0.0 ? 1.0 : -1.0) * ((1.0 - e2) / (1.0 + e2));
-    float angular = max(0.0, lobe.x + lobe.y * sech + lobe.z * tanhY);
+    float linear = max(0.0, lobe.x + lobe.y * sech + lobe.z * tanhY);
+    float clipped = min(linear, 1.0);
+    float angular = lobe.w > 0.0 ? clipped * clipped : linear;
     float attenuation = exp(-nu * stableExpm1(eta));
     return phaseHGFromCosTerms(oneMinusCos, onePlusCos, g) * attenuation * sech * angular;
 }
 
 // 8-point Gauss-Legendre over eta in [a, b]; 0 for an empty panel.
-float pointPanel(float a, float b, float y0, float nu, float g, vec3 lobe) {
+float pointPanel(float a, float b, float y0, float nu, float g, vec4 lobe) {
     if (!(b > a)) return 0.0;
     WORK_COUNT(kWorkQuadratureNodes, AIRLIGHT_NODES);
     float half_ = 0.5 * (b - a);
@@ -152,7 +155,7 @@ float pointPanel(float a, float b, float y0, float nu, float g, vec3 lobe) {
 // derivation, the h floor for rays through the light, and the quadrature windows. pointSegmentWithLobe
 // multiplies the integrand by the angular factor A(y).
 float pointSegmentWithLobe(float tP, float h, float x0, float x1, float sigma_s, float sigma_t, float g, float I0,
-                           vec3 lobe) {
+                           vec4 lobe) {
     if (!(x1 > x0) || !(sigma_s > 0.0) || !(I0 > 0.0)) return 0.0;
 
     // Positions relative to the foot point P; s1 = +inf for the sky.
@@ -266,16 +269,33 @@ vec2 frontOfEmitter(vec3 D, vec3 w, vec3 n, float x0, float x1) {
 // L(x0, x1) for a light at D (camera-relative) emitting I0 max(0, n . u) toward u, n its unit normal: the
 // lobe (n . m) sech(y) + (n . w) tanh(y) integrated exactly, the segment ended at the lobe's zero (the
 // emitter's plane) by pointSegmentWithLobe (see airlight.h).
-// The lobe of a light at D with normal n along the ray w: vec3(0, n . m / |m|, n . w), m = (D x w) x w.
-vec3 cosineLobeOf(vec3 D, vec3 w, vec3 n) {
+// The lobe of a light at D with normal n along the ray w: vec4(0, n . m / |m|, n . w, 0), m = (D x w) x w.
+vec4 cosineLobeOf(vec3 D, vec3 w, vec3 n) {
     vec3 m = cross(cross(D, w), w);
     float mLength = length(m);
-    return vec3(0.0, mLength > 0.0 ? dot(m, n) / mLength : 0.0, dot(w, n));
+    return vec4(0.0, mLength > 0.0 ? dot(m, n) / mLength : 0.0, dot(w, n), 0.0);
 }
 
 float cosineLobeSegment(vec3 D, vec3 w, vec3 n, float x0, float x1, float sigma_s, float sigma_t, float g, float I0) {
     RayLightGeometry geo = rayLightGeometry(D, w);
     return pointSegmentWithLobe(geo.tP, geo.h, x0, x1, sigma_s, sigma_t, g, I0, cosineLobeOf(D, w, n));
+}
+
+// ---- Spot light's penumbra (spotPenumbraSegment in airlight.h; docs/numerics.md#spot-penumbra) --------
+
+// A spot at D with unit axis a and KHR falloff clamp(cd scale + offset, 0, 1)^2 along the ray w: in its
+// penumbra the square of the lobe vec4(offset, scale (a . m / |m|), scale (a . w), 1), m = (D x w) x w.
+vec4 spotPenumbraLobeOf(vec3 D, vec3 w, vec3 a, float scale, float offset) {
+    vec3 m = cross(cross(D, w), w);
+    float mLength = length(m);
+    return vec4(offset, scale * (mLength > 0.0 ? dot(m, a) / mLength : 0.0), scale * dot(w, a), 1.0);
+}
+
+float spotPenumbraSegment(vec3 D, vec3 w, vec3 a, float scale, float offset, float x0, float x1, float sigma_s,
+                          float sigma_t, float g, float I0) {
+    RayLightGeometry geo = rayLightGeometry(D, w);
+    return pointSegmentWithLobe(geo.tP, geo.h, x0, x1, sigma_s, sigma_t, g, I0,
+                                spotPenumbraLobeOf(D, w, a, scale, offset));
 }
 
 #ifdef AIRLIGHT_NAIVE_CLOSED_FORM

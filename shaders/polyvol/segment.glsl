@@ -14,12 +14,13 @@
 #include "common/medium.glsl"  // uSigmaS, uSigmaT, uG
 uniform int uSpotPieces;   // spot lights: equal-angle pieces per penumbra part (see angularSegment)
 
-// Unit-intensity isotropic-source airlight of [x0, x1] (closed form or lookup table).
-float unitPointSegment(RayLightGeometry g, float x0, float x1) {
+// Unit-intensity airlight of [x0, x1] with the angular factor `lobe` (the segment integral), or of an
+// isotropic source (the lookup table, which has no lobe: callers pass AIRLIGHT_NO_LOBE there).
+float unitPointSegment(RayLightGeometry g, float x0, float x1, vec4 lobe) {
 #ifdef AIRLIGHT_LUT
     return lutPointSegment(g.tP, g.h, x0, x1, uSigmaS, uSigmaT, uG);
 #else
-    return pointSegment(g.tP, g.h, x0, x1, uSigmaS, uSigmaT, uG, 1.0);
+    return pointSegmentWithLobe(g.tP, g.h, x0, x1, uSigmaS, uSigmaT, uG, 1.0, lobe);
 #endif
 }
 
@@ -46,12 +47,22 @@ vec3 lightIntensityToward(GpuLight L, vec3 dirFromLight) {
 }
 
 // whole: the part lies inside a spot's inner cone with no cookie, where A_spot = 1: one exact piece at the
-// light's full intensity (the same loop, so that the segment integral is inlined once: llvmpipe runs every
-// inlined copy for the whole invocation group, whichever lanes need it).
+// light's full intensity. A spot's penumbra without a cookie is one exact piece too with the segment
+// integral: A_spot there is the square of a lobe in the integrand's own variable (spotPenumbraLobeOf),
+// integrated on the segment's panels; the pieces remain for the lookup table (no lobe) and cookies.
+// (One loop for all, so that the segment integral is inlined once: llvmpipe runs every inlined copy for
+// the whole invocation group, whichever lanes need it.)
 vec3 angularPieces(GpuLight L, vec3 w, RayLightGeometry g, float h, float x0, float x1, bool whole) {
     vec3 m = cross(cross(L.position.xyz, w), w);  // P - light, see angularSegment
     float phi0 = atan(x0 - g.tP, h);
     float phi1 = atan(x1 - g.tP, h);
+    vec4 lobe = AIRLIGHT_NO_LOBE;
+#ifndef AIRLIGHT_LUT
+    if (!whole && L.info.x == kLightSpot && L.info.y < 0) {
+        lobe = spotPenumbraLobeOf(L.position.xyz, w, L.direction.xyz, L.spot.x, L.spot.y);
+        whole = true;
+    }
+#endif
     int pieces = whole ? 1 : uSpotPieces;
 #ifndef LIGHTS_NO_COOKIE
     if (!whole && L.info.x == kLightSpot && L.info.y >= 0) {
@@ -65,7 +76,7 @@ vec3 angularPieces(GpuLight L, vec3 w, RayLightGeometry g, float h, float x0, fl
         xb = clamp(xb, xa, x1);
         float phiMid = mix(phi0, phi1, (float(k) + 0.5) / float(pieces));
         vec3 a = whole ? L.radiant.rgb : lightIntensityToward(L, directionFromLight(m, h, w, phiMid));
-        if (any(greaterThan(a, vec3(0.0)))) sum += a * unitPointSegment(g, xa, xb);
+        if (any(greaterThan(a, vec3(0.0)))) sum += a * unitPointSegment(g, xa, xb, lobe);
         xa = xb;
     }
     return sum;
@@ -113,7 +124,8 @@ void coneRoots(vec3 m, float h, vec3 w, float tP, vec3 a, float c, float x0, flo
 // along the segment, so they do not factor out of the integral. The segment is cut where it crosses the
 // outer and inner cones and the plane through the light normal to the axis; each part is classified at
 // its middle: outside the outer cone it adds nothing, inside the inner cone (no cookie) A_spot = 1 and the
-// part is exact, in the penumbra (or under a cookie) it takes uSpotPieces equal-angle pieces.
+// part is exact, in the penumbra exact too with the segment integral (A_spot's lobe), and under a cookie
+// (or with the lookup table) it takes uSpotPieces or more equal-angle pieces (angularPieces).
 vec3 angularSegment(GpuLight L, vec3 w, RayLightGeometry g, float x0, float x1) {
     float h = max(g.h, 1.0e-7 * max(abs(g.tP), 1.0e-20));
     // m = P - light = (D x w) x w (D = light - eye): every position along the ray is m + s w relative to
@@ -171,11 +183,11 @@ vec3 segmentAirlight(GpuLight L, vec3 w, float x0, float x1) {
         vec2 front = frontOfEmitter(L.position.xyz, w, L.direction.xyz, x0, x1);
         return front.y > front.x ? angularPieces(L, w, g, h, front.x, front.y, false) : vec3(0.0);
     }
-    return unitPointSegment(g, x0, x1) * L.radiant.rgb;
+    return unitPointSegment(g, x0, x1, AIRLIGHT_NO_LOBE) * L.radiant.rgb;
 #else
     // One segment integral for both: a point light's angular factor is 1, a VPL's its cosine lobe around
     // the emitter normal, integrated exactly (not uSpotPieces pieces).
-    vec3 lobe = L.info.x == kLightVpl ? cosineLobeOf(L.position.xyz, w, L.direction.xyz) : AIRLIGHT_NO_LOBE;
+    vec4 lobe = L.info.x == kLightVpl ? cosineLobeOf(L.position.xyz, w, L.direction.xyz) : AIRLIGHT_NO_LOBE;
     return pointSegmentWithLobe(g.tP, g.h, x0, x1, uSigmaS, uSigmaT, uG, 1.0, lobe) * L.radiant.rgb;
 #endif
 #else

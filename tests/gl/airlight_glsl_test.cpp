@@ -14,6 +14,7 @@
 
 #include "cpu/math/airlight_cases.h"
 #include "cpu/math/cosine_lobe_cases.h"
+#include "cpu/math/spot_penumbra_cases.h"
 #include "gl/buffer.h"
 #include "gl/gl_test_fixture.h"
 #include "gl/program.h"
@@ -157,6 +158,49 @@ TEST_F(AirlightGlsl, CosineLobeMatchesDoubleKernel) {
     }
     EXPECT_GT(compared, 120);  // the rest are below float's normal range (thick media far from the light)
     std::printf("  GLSL cosineLobeSegment vs double: %d cases, worst %.2e (%s)\n", compared, worst, worstName.c_str());
+}
+
+// spotPenumbraSegment (a spot's penumbra, A_spot the square of a lobe) against the double kernel on the same
+// float inputs, which tests/cpu/math/spot_penumbra_test.cpp holds to an independent quadrature. The bound
+// is the float kernel's 1e-4, widened for hard-edged cones: cd scale + offset rounds to about |offset|
+// float epsilons, which A_spot = (cd scale + offset)^2 doubles relative to its value (a 0.01 rad penumbra
+// has |offset| ~ 240).
+TEST_F(AirlightGlsl, SpotPenumbraMatchesDoubleKernel) {
+    const std::vector<SpotCase> cases = spotPenumbraCases();
+    const int count = int(cases.size());
+    std::vector<glm::vec4> inputs;
+    for (const SpotCase& c : cases) {
+        inputs.emplace_back(glm::vec3(c.D), float(c.x0));
+        inputs.emplace_back(glm::vec3(c.w), float(c.x1));
+        inputs.emplace_back(glm::vec3(c.axis), float(c.scale));
+        inputs.emplace_back(float(c.offset), float(c.sigma_s), float(c.sigma_t), float(c.g));
+    }
+    const std::vector<float> outputs = runCaseShader<float>("spot_penumbra_glsl_test.comp", inputs, count);
+    ASSERT_EQ(int(outputs.size()), count);
+    double worst = 0;
+    std::string worstName;
+    int compared = 0;
+    for (int i = 0; i < count; ++i) {
+        const SpotCase& c = cases[size_t(i)];
+        SCOPED_TRACE(c.name);
+        const float value = outputs[size_t(i)];
+        ASSERT_TRUE(std::isfinite(value)) << value;
+        EXPECT_GE(value, 0.0f);
+        const glm::dvec3 D(glm::vec3(c.D)), w(glm::vec3(c.w)), axis(glm::vec3(c.axis));
+        const double reference = spotPenumbraSegment<double>(
+            D, w, axis, double(float(c.scale)), double(float(c.offset)), double(float(c.x0)), double(float(c.x1)),
+            double(float(c.sigma_s)), double(float(c.sigma_t)), double(float(c.g)), 1.0);
+        if (!isNormalFloat(reference)) {
+            EXPECT_LE(std::abs(double(value) - reference), 2.0 * double(std::numeric_limits<float>::min()));
+            continue;
+        }
+        const double error = relativeError(value, reference);
+        EXPECT_LT(error, 1e-4 * std::max(1.0, std::abs(c.offset) / 64.0)) << "glsl " << value << " double " << reference;
+        if (error >= worst) worst = error, worstName = c.name;
+        ++compared;
+    }
+    EXPECT_GT(compared, 200);
+    std::printf("  GLSL spotPenumbraSegment vs double: %d cases, worst %.2e (%s)\n", compared, worst, worstName.c_str());
 }
 
 }  // namespace

@@ -209,12 +209,15 @@ RayLightGeometry<Real> rayLightGeometry(glm::vec<3, Real> D, glm::vec<3, Real> w
 // u(y) = m sech(y) + w tanh(y), m the unit vector from the light to the foot point P (m . w = 0). A light
 // whose intensity toward u(y) is I0 A(y), A(y) = c + a sech(y) + b tanh(y) (clamped at 0), enters the
 // integrand exactly. A point light is {1, 0, 0} (A = 1); an area light's VPL,
-// I0 max(0, n . u) around its emitter normal n, is {0, n . m, n . w} (cosineLobeSegment).
+// I0 max(0, n . u) around its emitter normal n, is {0, n . m, n . w} (cosineLobeSegment). `squared` takes
+// A(y) = min(1, max(0, c + a sech(y) + b tanh(y)))^2 instead: a spot light's KHR falloff, whose penumbra
+// is the square of such a lobe (spotPenumbraSegment).
 template <typename Real>
 struct AngularFactor {
     Real constant = Real(1);  // c
     Real foot = Real(0);      // a, the coefficient of sech(y) = |P - light| / r
     Real ray = Real(0);       // b, the coefficient of tanh(y) = (x - tP) / r
+    bool squared = false;
 };
 
 // The integrand in eta = y - y0 without the constant factors: p(cos) * exp(-nu expm1(eta)) / cosh(y) * A(y).
@@ -232,7 +235,9 @@ Real pointIntegrand(Real eta, Real y0, Real nu, Real g, AngularFactor<Real> lobe
     const Real oneMinusCos = y >= Real(0) ? Real(2) / (Real(1) + e2) : Real(2) * e2 / (Real(1) + e2);
     const Real onePlusCos = y >= Real(0) ? Real(2) * e2 / (Real(1) + e2) : Real(2) / (Real(1) + e2);
     const Real tanhY = (y >= Real(0) ? Real(1) : Real(-1)) * ((Real(1) - e2) / (Real(1) + e2));
-    const Real angular = std::max(Real(0), lobe.constant + lobe.foot * sech + lobe.ray * tanhY);
+    const Real linear = std::max(Real(0), lobe.constant + lobe.foot * sech + lobe.ray * tanhY);
+    const Real clipped = std::min(linear, Real(1));
+    const Real angular = lobe.squared ? clipped * clipped : linear;
     const Real attenuation = std::exp(-nu * stableExpm1(eta));
     return phaseHGFromCosTerms(oneMinusCos, onePlusCos, g) * attenuation * sech * angular;
 }
@@ -409,6 +414,28 @@ Real cosineLobeSegment(glm::vec<3, Real> D, glm::vec<3, Real> w, glm::vec<3, Rea
     const Real mn = mLength > Real(0) ? glm::dot(m, n) / mLength : Real(0);
     return pointSegmentWithLobe<Real, N>(glm::dot(D, w), glm::length(dw), x0, x1, sigma_s, sigma_t, g, I0,
                                          AngularFactor<Real>{Real(0), mn, glm::dot(w, n)});
+}
+
+// ---- Spot light's penumbra (docs/numerics.md#spot-penumbra) -------------------------------------------
+
+// L(x0, x1) for a spot light at D (camera-relative) with unit axis `axis` and KHR_lights_punctual falloff
+// A_spot = clamp(cd scale + offset, 0, 1)^2, cd = axis . u the cosine between the axis and the direction u
+// from the light, on a segment that lies in the penumbra (0 <= cd scale + offset <= 1 along it; the
+// caller cuts the ray at the cones). cd(y) = (axis . m) sech(y) + (axis . w) tanh(y) is a lobe, so
+// A_spot(y) is the square of the lobe {offset, scale (axis . m), scale (axis . w)}, smooth on the segment,
+// and integrated by the same panels as the rest of the integrand (one segment instead of pieces of
+// constant A_spot, which are off by its curvature over a piece and cost a segment each). The clamp at 0
+// and 1 is kept, so a segment that crosses a cone stays bounded, but its kink then falls inside a panel.
+template <typename Real, int N = Precision<Real>::kNodes>
+Real spotPenumbraSegment(glm::vec<3, Real> D, glm::vec<3, Real> w, glm::vec<3, Real> axis, Real scale, Real offset,
+                         Real x0, Real x1, Real sigma_s, Real sigma_t, Real g, Real I0) {
+    // As in cosineLobeSegment: m = (D x w) x w = P - light from cross products.
+    const glm::vec<3, Real> dw = glm::cross(D, w);
+    const glm::vec<3, Real> m = glm::cross(dw, w);
+    const Real mLength = glm::length(m);
+    const Real am = mLength > Real(0) ? glm::dot(m, axis) / mLength : Real(0);
+    return pointSegmentWithLobe<Real, N>(glm::dot(D, w), glm::length(dw), x0, x1, sigma_s, sigma_t, g, I0,
+                                         AngularFactor<Real>{offset, scale * am, scale * glm::dot(w, axis), true});
 }
 
 // ---- Directional light ----------------------------------------------------------------------------

@@ -24,8 +24,10 @@ const ParamTable<PolyvolSettings>& polyvolParams() {
             .add(&S::threshold, {"threshold", "adaptive: edge measure of the vertex depths (directional) or reciprocal "
                                  "depths (spot, cube faces; scaled to a depth), relative to the map's depth range, above "
                                  "which a vertex needs the finest level", 1e-4, 0, 1e3, false})
-            .add(&S::spotPieces, {"spot_pieces", "spot lights: equal-angle pieces per penumbra part of a segment (VPLs "
-                                  "too with airlight=lut; otherwise their lobe is integrated exactly)", 8, 1, 256, true})
+            .add(&S::spotPieces, {"spot_pieces", "equal-angle pieces per penumbra part of a spot segment with airlight=lut, "
+                                  "and the least under a cookie (VPLs' lobes too with airlight=lut); the segment "
+                                  "integral takes a penumbra without a cookie, and VPLs' lobes, exactly",
+                                  8, 1, 256, true})
             .add(&S::crackCheck, {"crack_check", "1: constant integrand; the signed crossing count per pixel reveals "
                                   "holes", 0, 0, 1, true})
             .add(&S::drawTriangles, {"draw_triangles", "stepping: draw only the first N triangles of each light "
@@ -196,8 +198,10 @@ Plan PolyvolTechnique::plan(const scene::Scene& scene, const Settings& settings)
     const bool lut = s.lut;
     p.features.push_back({"SPOT", hasSpot,
                           hasSpot ? "spot cone: volume follows the cone; segments clipped to the cones, " +
-                                        std::to_string(s.spotPieces) +
-                                        " equal-angle pieces per penumbra part"
+                                        (lut ? std::to_string(s.spotPieces) +
+                                                   " equal-angle pieces per penumbra part (the table has no lobe)"
+                                             : std::string("each penumbra part one segment integral with A_spot "
+                                                           "as the square of a lobe"))
                                   : "no spot light in the scene"});
     p.features.push_back({"COOKIE", hasCookie,
                           hasCookie ? "cookie: dark texels close the volume; colour per angular piece, about one "
