@@ -13,6 +13,8 @@
 
 #include <glm/glm.hpp>
 
+#include "cpu/math/case_media.h"
+
 namespace viz::airlight::test {
 
 struct LobeCase {
@@ -51,18 +53,10 @@ inline std::vector<LobeCase> cosineLobeCases() {
         {"along the ray", {1.0, 0.0, 0.0}},    {"against the ray", {-1.0, 0.0, 0.0}},
         {"perpendicular", {0.0, 0.0, 1.0}},    {"oblique", glm::normalize(glm::dvec3(0.6, -0.48, 0.64))},
     };
-    struct Medium {
-        const char* name;
-        double sigma_s, sigma_t, g;
-    };
-    const Medium media[] = {
-        {"thin isotropic", 0.1, 0.1, 0.0}, {"forward", 0.5, 2.0, 0.6},      {"backward", 0.05, 0.05, -0.8},
-        {"thick", 1.0, 20.0, 0.3},         {"no extinction", 0.1, 0.0, 0.0},
-    };
     std::vector<LobeCase> cases;
     for (const Geometry& geometry : geometries)
         for (const Normal& normal : normals)
-            for (const Medium& medium : media) {
+            for (const CaseMedium& medium : caseMedia()) {
                 // Without extinction the sky's integral of 1/r^2 converges, but slowly: keep it finite.
                 const double x1 = std::isinf(geometry.x1) && medium.sigma_t == 0.0 ? 1e6 : geometry.x1;
                 cases.push_back({std::string(geometry.name) + ", " + normal.name + ", " + medium.name, geometry.D,
@@ -71,15 +65,9 @@ inline std::vector<LobeCase> cosineLobeCases() {
     // A fixed random sample: any light position, ray and normal.
     std::mt19937 rng(20261130u);
     std::uniform_real_distribution<double> unit(-1.0, 1.0), length(0.5, 30.0), logSigma(-3.0, 1.0), phase(-0.9, 0.9);
-    auto direction = [&] {
-        glm::dvec3 v;
-        do v = {unit(rng), unit(rng), unit(rng)};
-        while (glm::dot(v, v) < 0.05 || glm::dot(v, v) > 1.0);
-        return glm::normalize(v);
-    };
     for (int i = 0; i < 60; ++i) {
         const glm::dvec3 D = 10.0 * glm::dvec3(unit(rng), unit(rng), unit(rng));
-        const glm::dvec3 ray = direction(), n = direction();
+        const glm::dvec3 ray = randomUnitDirection(rng), n = randomUnitDirection(rng);
         const double x1 = length(rng), sigma_t = std::pow(10.0, logSigma(rng));
         cases.push_back({"random " + std::to_string(i), D, ray, n, 0.0, x1, 0.8 * sigma_t, sigma_t, phase(rng), 1.0});
     }

@@ -11,10 +11,8 @@
 #include <string>
 #include <vector>
 
-#include <boost/math/constants/constants.hpp>
-#include <boost/math/quadrature/gauss_kronrod.hpp>
-
 #include "cpu/math/cosine_lobe_cases.h"
+#include "cpu/math/ray_parameter_quadrature.h"
 #include "shared/airlight.h"
 
 namespace viz::airlight::test {
@@ -23,19 +21,11 @@ namespace {
 using LongReal = long double;
 using LongVec = glm::vec<3, LongReal>;
 
-struct LobeReference {
-    LongReal value = 0;
-    LongReal ruleDifference = 0;  // |Gauss-Kronrod 61 - Gauss-Kronrod 31| / value
-};
-
 // int_x0^x1 sigma_s p(u . -w) I0 max(0, n . u) exp(-sigma_t (x + r)) / r^2 dx, r = |x w - D|,
-// u = (x w - D) / r the direction from the light, in long double, piecewise between break points at the
-// segment ends, the emitter's plane, graded distances around the foot point P (the 1/r^2 peak of width h)
-// and around the HG lobe's peak, and optical depths from x0.
-LobeReference referenceLobeSegment(const LobeCase& c) {
+// u = (x w - D) / r the direction from the light, with a break point at the emitter's plane.
+RayParameterIntegral referenceLobeSegment(const LobeCase& c) {
     const LongVec D(c.D), w(c.w), n(c.n);
     const LongReal sigma_s = c.sigma_s, sigma_t = c.sigma_t, g = c.g, I0 = c.I0;
-    const LongReal pi = boost::math::constants::pi<LongReal>();
     auto f = [&](LongReal x) -> LongReal {
         const LongVec v = x * w - D;
         const LongReal r = std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z);
@@ -43,42 +33,12 @@ LobeReference referenceLobeSegment(const LobeCase& c) {
         const LongReal lobe = std::max(LongReal(0), n.x * u.x + n.y * u.y + n.z * u.z);
         if (lobe == 0) return 0;
         const LongReal cosTheta = -(u.x * w.x + u.y * w.y + u.z * w.z);
-        const LongReal p = (1 - g * g) / (4 * pi * std::pow(1 + g * g - 2 * g * cosTheta, LongReal(1.5)));
-        return sigma_s * I0 * p * lobe * std::exp(-sigma_t * (x + r)) / (r * r);
+        return sigma_s * I0 * textbookPhase(cosTheta, g) * lobe * std::exp(-sigma_t * (x + r)) / (r * r);
     };
-    const LongReal tP = D.x * w.x + D.y * w.y + D.z * w.z;
-    const LongVec m = D - tP * w;
-    const LongReal h = std::sqrt(m.x * m.x + m.y * m.y + m.z * m.z);
-    const LongReal x0 = c.x0, x1 = c.x1;
-    std::vector<LongReal> points{x0};
-    auto add = [&](LongReal x) {
-        if (x > x0 && x < x1) points.push_back(x);
-    };
+    std::vector<LongReal> plane;
     const LongReal wn = w.x * n.x + w.y * n.y + w.z * n.z;
-    if (wn != 0) add((D.x * n.x + D.y * n.y + D.z * n.z) / wn);
-    for (LongReal k : {0.0L, 0.03L, 0.1L, 0.3L, 1.0L, 3.0L, 10.0L, 30.0L, 100.0L, 300.0L, 1e3L, 1e4L, 1e5L, 1e6L}) {
-        add(tP + k * h);
-        add(tP - k * h);
-    }
-    if (g != 0) {
-        // The HG peak at scattering angle 0, graded around y = yPeak (s = h sinh(y)).
-        const LongReal yPeak = std::log((1 - std::abs(g)) / 2) * (g > 0 ? 1 : -1);
-        for (LongReal dy : {-2.0L, -1.0L, 0.0L, 1.0L, 2.0L}) add(tP + h * std::sinh(yPeak + dy));
-    }
-    if (sigma_t > 0)
-        for (int k = 1; k <= 60; ++k) add(x0 + LongReal(k) / (2 * sigma_t));
-    std::sort(points.begin(), points.end());
-    points.push_back(x1);
-    LobeReference ref;
-    LongReal coarse = 0;
-    for (std::size_t i = 0; i + 1 < points.size(); ++i) {
-        const LongReal a = points[i], b = points[i + 1];
-        if (!(b > a)) continue;
-        ref.value += boost::math::quadrature::gauss_kronrod<LongReal, 61>::integrate(f, a, b, 0, 1e-14L);
-        coarse += boost::math::quadrature::gauss_kronrod<LongReal, 31>::integrate(f, a, b, 0, 1e-14L);
-    }
-    ref.ruleDifference = ref.value > 0 ? std::abs(ref.value - coarse) / ref.value : std::abs(coarse);
-    return ref;
+    if (wn != 0) plane.push_back((D.x * n.x + D.y * n.y + D.z * n.z) / wn);
+    return integrateAlongRay(f, c.D, c.w, c.x0, c.x1, sigma_t, g, plane);
 }
 
 double lobeDouble(const LobeCase& c) {
@@ -94,7 +54,7 @@ TEST(CosineLobeSegment, DoubleMatchesAnIndependentQuadratureInTheRayParameter) {
         const double value = lobeDouble(c);
         ASSERT_TRUE(std::isfinite(value)) << value;
         ASSERT_GE(value, 0.0);
-        const LobeReference ref = referenceLobeSegment(c);
+        const RayParameterIntegral ref = referenceLobeSegment(c);
         if (ref.value == 0) {
             // The whole segment behind the emitter: nothing, exactly.
             EXPECT_EQ(value, 0.0);

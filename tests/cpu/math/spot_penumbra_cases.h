@@ -13,6 +13,8 @@
 
 #include <glm/glm.hpp>
 
+#include "cpu/math/case_media.h"
+
 namespace viz::airlight::test {
 
 struct SpotCase {
@@ -106,19 +108,11 @@ inline std::vector<SpotCase> spotPenumbraCases() {
         double inner, outer;
     };
     const Cone cones[] = {{"narrow", 0.15, 0.3}, {"wide", 0.5, 1.2}, {"hard edge", 0.40, 0.41}};
-    struct Medium {
-        const char* name;
-        double sigma_s, sigma_t, g;
-    };
-    const Medium media[] = {
-        {"thin isotropic", 0.1, 0.1, 0.0}, {"forward", 0.5, 2.0, 0.6}, {"backward", 0.05, 0.05, -0.8},
-        {"thick", 1.0, 20.0, 0.3},         {"no extinction", 0.1, 0.0, 0.0},
-    };
     std::vector<SpotCase> cases;
     for (const Geometry& geometry : geometries)
         for (const Axis& axis : axes)
             for (const Cone& cone : cones)
-                for (const Medium& medium : media) {
+                for (const CaseMedium& medium : caseMedia()) {
                     SpotCase c{std::string(geometry.name) + ", " + axis.name + ", " + cone.name + ", " + medium.name,
                                geometry.D, w, axis.axis, 0.0, 0.0, geometry.x0, geometry.x1,
                                medium.sigma_s, medium.sigma_t, medium.g, 1.0};
@@ -129,18 +123,12 @@ inline std::vector<SpotCase> spotPenumbraCases() {
     std::mt19937 rng(20261202u);
     std::uniform_real_distribution<double> unit(-1.0, 1.0), length(0.5, 30.0), logSigma(-3.0, 1.0),
         phase(-0.9, 0.9), angle(0.05, 1.0);
-    auto direction = [&] {
-        glm::dvec3 v;
-        do v = {unit(rng), unit(rng), unit(rng)};
-        while (glm::dot(v, v) < 0.05 || glm::dot(v, v) > 1.0);
-        return glm::normalize(v);
-    };
     for (int i = 0; i < 120; ++i) {
         const glm::dvec3 D = 10.0 * glm::dvec3(unit(rng), unit(rng), unit(rng));
-        const glm::dvec3 ray = direction();
+        const glm::dvec3 ray = randomUnitDirection(rng);
         // The axis toward a random point of the ray's first 20 units, tilted: most rays cross the cone.
         const glm::dvec3 axis = glm::normalize(glm::normalize(20.0 * (unit(rng) + 1.0) * 0.5 * ray - D) +
-                                               0.3 * direction());
+                                               0.3 * randomUnitDirection(rng));
         const double inner = angle(rng), outer = inner + 0.02 + 0.5 * (unit(rng) + 1.0) * 0.5;
         const double sigma_t = std::pow(10.0, logSigma(rng));
         SpotCase c{"random " + std::to_string(i), D, ray, axis, 0.0, 0.0, 0.0, length(rng), 0.8 * sigma_t, sigma_t,
