@@ -13,6 +13,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 #include "common/host_device.glsl"
 #include "common/airlight.glsl"
 #include "common/lights.glsl"
+#include "common/spot_cone.glsl"
 #include "common/shadow_map.glsl"
 #include "minmax/epipolar.glsl"
 #include "minmax/camera_ray.glsl"
@@ -186,9 +187,30 @@ vec3 integrateRunAnalytic(GpuLight L, vec3 w, RayLightGeometry g, float beta, fl
 #endif
 #ifdef LIGHTS_NO_SPOT
     return vec3(0.0);  // no spot in the scene: only suns (and point lights, above) reach this
+#elif defined(LIGHTS_NO_COOKIE)
+    // Spot without a cookie: the run cut where it crosses the cones (common/spot_cone.glsl), each part one
+    // segment integral: A_spot = 1 inside the inner cone, the square of a lobe in the penumbra
+    // (docs/numerics.md#spot-penumbra), nothing outside. One call site in the loop: llvmpipe runs every
+    // inlined copy of the segment integral for the whole invocation group.
+    float t0 = distanceAtColumn(beta, c0, cEnd, d);
+    float t1 = distanceAtColumn(beta, c1, cEnd, d);
+    if (!(t1 > t0)) return vec3(0.0);
+    SpotCuts cuts = spotConeCuts(L, w, g, t0, t1);
+    vec4 penumbra = spotPenumbraLobeOf(L.position.xyz, w, L.direction.xyz, L.spot.x, L.spot.y);
+    float sum = 0.0;
+    for (int i = 0; i < cuts.n; ++i) {
+        float ta = cuts.breaks[i];
+        float tb = i + 1 < cuts.n ? cuts.breaks[i + 1] : t1;
+        if (!(tb > ta)) continue;
+        int zone = spotZone(L, cuts, w, g.tP, ta, tb);
+        if (zone == kSpotDark) continue;
+        sum += pointSegmentWithLobe(g.tP, g.h, ta, tb, uSigmaS, uSigmaT, uG, 1.0,
+                                    zone == kSpotInside ? AIRLIGHT_NO_LOBE : penumbra);
+    }
+    return sum * L.radiant.rgb;
 #else
-    // Spot: A_spot * cookie varies across the cone; pieces on a fixed grid of uPieces cells over
-    // [gammaLo, gammaHi] each take it at their middle (uPieces / columns cells per column).
+    // Spot with a cookie: A_spot * cookie varies across the cone; pieces on a fixed grid of uPieces cells
+    // over [gammaLo, gammaHi] each take it at their middle (uPieces / columns cells per column).
     float cellColumns = float(uColumns) / float(uPieces);
     vec3 sum = vec3(0.0);
     float c = c0;

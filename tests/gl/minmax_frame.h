@@ -32,7 +32,7 @@ inline minmax::EpipolarFrame<float> minmaxFrame(const scene::Scene& scene, int i
 // minmaxFrame.
 inline minmax::MirrorResult mirrorPixel(const scene::Scene& scene, const FrameOutput& out,
                                         const minmax::EpipolarFrame<float>& f, const render::GpuLightCpu& L, int w,
-                                        int h, int x, int y, int pieces) {
+                                        int h, int x, int y) {
     const Intermediate *tree = nullptr, *coords = nullptr;
     for (const Intermediate& i : out.intermediates) {
         if (i.id == "minmax.tree") tree = &i;
@@ -45,6 +45,7 @@ inline minmax::MirrorResult mirrorPixel(const scene::Scene& scene, const FrameOu
     ml.radiant = glm::vec3(L.radiant);
     ml.spotScale = L.spot.x;
     ml.spotOffset = L.spot.y;
+    ml.spotCosOuter = L.spot.w;
     const minmax::MirrorMedium medium{float(scene.medium.sigma_s), float(scene.medium.sigma_t()), float(scene.medium.g)};
     const glm::vec3 ray = shaderPixelRay(scene.camera, w, h, x, y);  // traverse.comp's
     // The tree texture's GL row `row` is image row height - 1 - row.
@@ -54,7 +55,7 @@ inline minmax::MirrorResult mirrorPixel(const scene::Scene& scene, const FrameOu
     for (int k = 0; k < 2 * f.columns; ++k)
         nodes[std::size_t(k)] = {tree->image->at(k, imageRow, 0), tree->image->at(k, imageRow, 1)};
     return minmax::integratePixel(f, ml, medium, ray, coords->image->at(x, y, 1), coords->image->at(x, y, 2),
-                                  coords->image->at(x, y, 3), nodes, pieces);
+                                  coords->image->at(x, y, 3), nodes);
 }
 
 }  // namespace viz::testing

@@ -259,8 +259,7 @@ TEST_F(MinmaxPointTest, CpuMirrorEqualsGpuForSampledPixels) {
                 nodes[std::size_t(k)] = {tree->image->at(k, glRow, 0), tree->image->at(k, glRow, 1)};
             const auto rowFrame = f.withGammaRange(0.0f, std::max(rows->image->at(0, row), 1e-6f));
             const auto r = viz::minmax::integratePixel(rowFrame, ml, medium, ray, coords->image->at(x, y, 1),
-                                                       coords->image->at(x, y, 2), coords->image->at(x, y, 3), nodes,
-                                                       64);
+                                                       coords->image->at(x, y, 2), coords->image->at(x, y, 3), nodes);
             EXPECT_EQ(float(r.visited), visited->image->at(x, y)) << "pixel " << x << "," << y;
             for (int c = 0; c < 3; ++c) {
                 const double gpu = out.airlight.at(x, y, c), cpu = r.airlight[c];

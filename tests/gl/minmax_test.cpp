@@ -227,7 +227,7 @@ TEST_F(MinmaxTest, CpuMirrorEqualsGpuForSampledPixels) {
         for (int y = 0; y < h; y += 3) {
             for (int x = 0; x < w; x += 3) {
                 if (near->image->at(x, y) != 0.0f) continue;
-                const auto r = viz::testing::mirrorPixel(scene, out, f, L, w, h, x, y, 64);
+                const auto r = viz::testing::mirrorPixel(scene, out, f, L, w, h, x, y);
                 EXPECT_EQ(float(r.visited), visited->image->at(x, y)) << name << " pixel " << x << "," << y;
                 for (int c = 0; c < 3; ++c) {
                     const double gpu = out.airlight.at(x, y, c), cpu = r.airlight[c];

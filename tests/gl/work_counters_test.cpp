@@ -115,7 +115,7 @@ TEST_F(WorkCountersTest, MinmaxTreeNodesOfAPickedPixelEqualTheCpuMirrorsWalk) {
         int checked = 0;
         for (const glm::ivec2 p : {glm::ivec2(13, 11), glm::ivec2(40, 30), glm::ivec2(61, 47), glm::ivec2(70, 8)}) {
             if (near->image->at(p.x, p.y) != 0.0f) continue;  // marched near the epipole: no walk
-            const minmax::MirrorResult mirror = mirrorPixel(scene, out, f, L, w, h, p.x, p.y, 64);
+            const minmax::MirrorResult mirror = mirrorPixel(scene, out, f, L, w, h, p.x, p.y);
 
             gl::WorkCounters::setEnabled(true);
             gl::WorkCounters::countPixel(glm::ivec2(p.x, h - 1 - p.y));  // GL rows count from the bottom

@@ -48,8 +48,9 @@ const ParamTable<MinmaxSettings>& minmaxParams() {
                                    "comparison)", 0, 0, 1, true, {"epipolar", "march"}})
             // Each piece is one pointSegment call; llvmpipe stops every loop of a shader invocation after
             // 65535 iterations in total (all loops together), which more pieces would exceed (README).
-            .add(&S::spotPieces, {"spot_pieces", "spot lights: pieces across the cone, each with its own A_spot * "
-                                  "cookie", 64, 1, 128, true})
+            .add(&S::spotPieces, {"spot_pieces", "spot lights with a cookie, integrand=analytic: pieces across the "
+                                  "cone, each with its own A_spot * cookie (without a cookie each lit run is cut "
+                                  "at the cones)", 64, 1, 128, true})
             .add(&S::epipoleRadius, {"epipole_radius", "pixels around the (anti-)epipole marched by brute force", 4, 0,
                                      1000, false})
             .add(&S::marchSamples, {"march_samples", "brute-force samples per ray (near the epipole, and lights "
@@ -259,7 +260,10 @@ Plan MinmaxTechnique::plan(const scene::Scene& scene, const Settings& settings) 
     const bool hasCookie = std::any_of(scene.lights.begin(), scene.lights.end(),
                                        [](const scene::Light& l) { return l.cookie >= 0; });
     p.features.push_back({"SPOT", hasSpot,
-                          hasSpot ? "spot A_spot per gamma piece" : "no spot light in the scene"});
+                          hasSpot ? (hasCookie ? "spot: A_spot * cookie per gamma piece of each lit run (analytic)"
+                                               : "spot: each lit run cut at the cones, the penumbra's A_spot "
+                                                 "integrated as the square of a lobe (analytic)")
+                                  : "no spot light in the scene"});
     p.features.push_back({"COOKIE", hasCookie,
                           hasCookie ? "cookie texture sampled per gamma piece" : "no light has a cookie"});
     const bool hasPoint = render::hasLightOfType(scene, scene::LightType::Point);

@@ -12,6 +12,7 @@
 #include <glm/glm.hpp>
 
 #include "shared/airlight.h"
+#include "shared/spot_cone.h"
 #include "techniques/minmax/epipolar.h"
 #include "techniques/minmax/minmax_tree.h"
 
@@ -23,6 +24,7 @@ struct MirrorLight {
     glm::vec3 direction{0.0f};  // spot axis / directional travel direction
     glm::vec3 radiant{0.0f};    // colour * intensity
     float spotScale = 1.0f, spotOffset = 0.0f;  // KHR angular attenuation (GpuLight::spot.xy)
+    float spotCosOuter = 0.0f;                  // cos(outer) (GpuLight::spot.w)
 };
 
 struct MirrorMedium {
@@ -36,17 +38,6 @@ struct MirrorResult {
     int visited = 0;
 };
 
-// lights.glsl lightIntensity for a spot without cookie (the mirror does not sample cookies), a point or a
-// directional light.
-inline glm::vec3 mirrorIntensity(const MirrorLight& L, glm::vec3 p) {
-    if (L.kind != LightKind::Spot) return L.radiant;
-    const glm::vec3 dir = glm::normalize(p - L.position);
-    const float a = std::clamp(glm::dot(L.direction, dir) * L.spotScale + L.spotOffset, 0.0f, 1.0f);
-    const float A = a * a;
-    if (A == 0.0f) return glm::vec3(0.0f);
-    return L.radiant * A;
-}
-
 inline float mirrorDistanceAtColumn(const EpipolarFrame<float>& f, float beta, float c, float cEnd, float d) {
     if (c >= cEnd) return d;
     return std::min(distanceAtGamma(f, beta, gammaOfColumn(f, c)), d);
@@ -54,8 +45,7 @@ inline float mirrorDistanceAtColumn(const EpipolarFrame<float>& f, float beta, f
 
 // integrateRun of traverse.comp.
 inline glm::vec3 mirrorRun(const EpipolarFrame<float>& f, const MirrorLight& L, const MirrorMedium& m, glm::vec3 w,
-                           airlight::RayLightGeometry<float> g, float beta, float c0, float c1, float cEnd, float d,
-                           int pieces) {
+                           airlight::RayLightGeometry<float> g, float beta, float c0, float c1, float cEnd, float d) {
     if (f.kind == LightKind::Directional) {
         const float t0 = mirrorDistanceAtColumn(f, beta, c0, cEnd, d);
         const float t1 = mirrorDistanceAtColumn(f, beta, c1, cEnd, d);
@@ -67,28 +57,32 @@ inline glm::vec3 mirrorRun(const EpipolarFrame<float>& f, const MirrorLight& L, 
         if (t1 <= t0) return glm::vec3(0.0f);
         return airlight::pointSegment<float>(g.tP, g.h, t0, t1, m.sigmaS, m.sigmaT, m.g, 1.0f) * L.radiant;
     }
-    const float cellColumns = float(f.columns) / float(pieces);
-    glm::vec3 sum(0.0f);
-    float c = c0;
-    for (int cell = int(std::floor(c0 / cellColumns)) + 1; c < c1; ++cell) {
-        const float next = std::min(c1, float(cell) * cellColumns);
-        if (next <= c) continue;
-        const float ta = mirrorDistanceAtColumn(f, beta, c, cEnd, d);
-        const float tb = mirrorDistanceAtColumn(f, beta, next, cEnd, d);
-        const float tm = mirrorDistanceAtColumn(f, beta, 0.5f * (c + next), cEnd, d);
-        const glm::vec3 I = mirrorIntensity(L, tm * w);
-        if (tb > ta && I != glm::vec3(0.0f))
-            sum += airlight::pointSegment<float>(g.tP, g.h, ta, tb, m.sigmaS, m.sigmaT, m.g, 1.0f) * I;
-        c = next;
+    // A spot (the mirror samples no cookie): the run cut at the cones, each part one segment integral.
+    const float t0 = mirrorDistanceAtColumn(f, beta, c0, cEnd, d);
+    const float t1 = mirrorDistanceAtColumn(f, beta, c1, cEnd, d);
+    if (!(t1 > t0)) return glm::vec3(0.0f);
+    const float cosInner = std::min((1.0f - L.spotOffset) / L.spotScale, 1.0f);
+    const airlight::SpotCuts<float> cuts =
+        airlight::spotConeCuts(L.position, L.direction, L.spotCosOuter, cosInner, w, g, t0, t1);
+    float sum = 0.0f;
+    for (int i = 0; i < cuts.n; ++i) {
+        const float ta = cuts.breaks[i], tb = i + 1 < cuts.n ? cuts.breaks[i + 1] : t1;
+        if (!(tb > ta)) continue;
+        const airlight::SpotZone zone = airlight::spotZone(L.direction, L.spotCosOuter, cosInner, cuts, w, g.tP, ta, tb);
+        if (zone == airlight::SpotZone::Inside)
+            sum += airlight::pointSegment<float>(g.tP, g.h, ta, tb, m.sigmaS, m.sigmaT, m.g, 1.0f);
+        else if (zone == airlight::SpotZone::Penumbra)
+            sum += airlight::spotPenumbraSegment<float>(L.position, w, L.direction, L.spotScale, L.spotOffset, ta, tb,
+                                                        m.sigmaS, m.sigmaT, m.g, 1.0f);
     }
-    return sum;
+    return sum * L.radiant;
 }
 
 // One pixel: w its ray, (beta, cEnd, d) from minmax.ray_coords, `tree` the 2n nodes of its slice's row.
 // A point light's f is its row's frame (EpipolarFrame::withGammaRange with minmax.row_gamma).
 inline MirrorResult integratePixel(const EpipolarFrame<float>& f, const MirrorLight& L, const MirrorMedium& m,
                                    glm::vec3 w, float beta, float cEnd, float d,
-                                   const std::vector<glm::vec2>& tree, int pieces) {
+                                   const std::vector<glm::vec2>& tree) {
     MirrorResult r;
     const float end = std::min(cEnd, float(f.columns));
     const auto g = airlight::rayLightGeometry<float>(L.position, w);
@@ -97,13 +91,13 @@ inline MirrorResult integratePixel(const EpipolarFrame<float>& f, const MirrorLi
             tree, beta, end,
             [&](const LitRun& run) {
                 r.runs.push_back(run);
-                r.airlight += mirrorRun(f, L, m, w, g, beta, run.begin, run.end, cEnd, d, pieces);
+                r.airlight += mirrorRun(f, L, m, w, g, beta, run.begin, run.end, cEnd, d);
             },
             [&](const VisitedNode& v) { r.nodes.push_back(v); });
     }
     if (f.kind == LightKind::Directional && cEnd > float(f.columns)) {
         r.runs.push_back({float(f.columns), cEnd});
-        r.airlight += mirrorRun(f, L, m, w, g, beta, float(f.columns), cEnd, cEnd, d, pieces);
+        r.airlight += mirrorRun(f, L, m, w, g, beta, float(f.columns), cEnd, cEnd, d);
     }
     return r;
 }
