@@ -11,7 +11,7 @@
 #include "common/sort.glsl"
 
 // The direction from the light to the ray's point at angle phi: (m / h) cos(phi) + w sin(phi), m = P - light
-// (see angularSegment), with no difference of |eye - light|-sized vectors (a ray passing 1e-4 from a light
+// (see spotConeCuts), with no difference of |eye - light|-sized vectors (a ray passing 1e-4 from a light
 // 5 away would lose ~0.5 % of the direction to rounding, and the spot factor's penumbra slope of ~15 per
 // unit cosine turned that into a few % per piece next to the apex).
 vec3 directionFromLight(vec3 m, float h, vec3 w, float phi) {
