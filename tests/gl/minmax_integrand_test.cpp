@@ -1,6 +1,7 @@
 // minmax's integrand=auto (integrand_choice.h) on every stiff case and every built-in scene with an
 // epipolar light, against the reference: the run follows the plan's choice, svd is taken only where its
-// image stays within the bound minmax declares, and analytic only where svd's image would have been worse.
+// image stays within the bound minmax declares, analytic for the tables' error only where svd's image would
+// have been worse, and analytic for suns alone (its closed form is the cheaper one) within the bound.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -56,7 +57,7 @@ double errorOf(const viz::Image& test, const viz::Image& reference, const viz::I
 
 TEST_F(MinmaxIntegrandTest, AutoTakesSvdWhereItStaysWithinTheBoundAndAnalyticWhereSvdWouldBeWorse) {
     auto technique = viz::makeTechnique("minmax");
-    int svdCases = 0, analyticCases = 0;
+    int svdCases = 0, analyticCases = 0, sunCases = 0;
     for (const IntegrandCase& c : cases()) {
         const viz::Settings autoSettings = technique->stiffSettings();  // no integrand: auto
         const viz::Plan plan = technique->plan(c.scene, viz::completeSettings(*technique, autoSettings));
@@ -81,6 +82,13 @@ TEST_F(MinmaxIntegrandTest, AutoTakesSvdWhereItStaysWithinTheBoundAndAnalyticWhe
         if (svd) {
             ++svdCases;
             EXPECT_LT(es, c.bound) << c.name << ": " << f->why;
+        } else if (f->why.find("suns only") != std::string::npos) {
+            // Taken for its cost (the closed form), not for svd's error: it holds the bound itself and is no
+            // farther from the reference than the tables would have been (within 2 %: both are exact where
+            // the tables hold, and differ in the last digits there).
+            ++sunCases;
+            EXPECT_LT(ea, c.bound) << c.name << ": " << f->why;
+            EXPECT_LE(ea, 1.02 * es) << c.name << ": " << f->why;
         } else if (f->why.find("no spot, directional or point light") == std::string::npos &&
                    f->why.find("sigma_s = 0") == std::string::npos) {
             // Refused for the tables' error: svd's image would have been farther from the reference.
@@ -88,9 +96,12 @@ TEST_F(MinmaxIntegrandTest, AutoTakesSvdWhereItStaysWithinTheBoundAndAnalyticWhe
             EXPECT_GT(es, ea) << c.name << ": " << f->why;
         }
     }
-    // Both answers occur (svd on most scenes; analytic on a thick medium, a huge sun map and forest).
+    // Every answer occurs: svd on most spot and point cases; analytic for the tables' error (a thick medium,
+    // a spot behind the camera) and for suns alone (9 cases, among them a huge sun map and forest, where
+    // svd's tables would be 1.36 and 0.012 off).
     EXPECT_GE(svdCases, 10);
-    EXPECT_GE(analyticCases, 3);
+    EXPECT_GE(analyticCases, 2);
+    EXPECT_GE(sunCases, 5);
 }
 
 // The choice follows the scene: the same grate thickened to sigma_t = 50 turns auto to analytic, and the

@@ -211,7 +211,7 @@ TEST_F(MinmaxTest, CpuMirrorEqualsGpuForSampledPixels) {
     for (const char* name : {"grate", "terrain"}) {
         const viz::scene::Scene scene = viz::scene::makeBuiltinScene(name);
         const int w = 80, h = 60, size = 512;
-        // The mirror integrates with the analytic integrand (integrand=auto takes svd on both scenes).
+        // The mirror integrates with the analytic integrand (integrand=auto takes svd on grate).
         const viz::FrameOutput out = render(scene, "minmax", {{"shadow_map", size}, {"integrand", 0}}, w, h, 4,
                                             {"minmax.tree", "minmax.ray_coords", "minmax.visited",
                                              "minmax.near_epipole"});

@@ -1,5 +1,6 @@
 #include "techniques/minmax/integrand_choice.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -37,13 +38,24 @@ IntegrandChoice chooseFor(const scene::Scene& scene, const std::vector<render::G
         c.why = "integrand=auto: analytic (sigma_s = 0: nothing scatters, nothing to factorise)";
         return c;
     }
+    if (lights.empty()) {
+        c.why = "integrand=auto: analytic (no spot, directional or point light to factorise)";
+        return c;
+    }
+    // Suns alone: a sun's lit run is a closed form, exact, and its traverse costs less than svd's table
+    // lookups (README "Integrand=auto": 640x480, traverse 2x, the whole run 1.26x), so there is nothing for
+    // the tables to buy.
+    if (std::all_of(lights.begin(), lights.end(),
+                    [](const render::GpuLightCpu& L) { return L.info.x == render::hd::kLightDirectional; })) {
+        c.why = "integrand=auto: analytic (suns only: each lit run is a closed form, exact and cheaper than "
+                "svd's table lookups)";
+        return c;
+    }
     // The frame depends on the screen's directions, not its resolution: a small image of the camera's
     // aspect (4:3 without one) gives the beta range the run's frame will have.
     const double aspect = scene.camera.aspectRatio > 0.0 ? scene.camera.aspectRatio : 4.0 / 3.0;
     const int width = 64, height = std::max(1, int(std::lround(64.0 / aspect)));
-    int epipolar = 0;
     for (const render::GpuLightCpu& L : lights) {
-        ++epipolar;
         const Setup setup = setupLight({.light = &L, .camera = &scene.camera, .width = width, .height = height,
                                         .slices = 0, .columns = 64, .oversampling = 1});
         const LowRank lr = lowRankIntegrand(setup.frame, setup.betaLo, setup.betaHi, scene.medium.sigma_s,
@@ -55,10 +67,6 @@ IntegrandChoice chooseFor(const scene::Scene& scene, const std::vector<render::G
             c.worstError = error;
             c.worstLight = scene.lights[std::size_t(L.info.w)].name;
         }
-    }
-    if (epipolar == 0) {
-        c.why = "integrand=auto: analytic (no spot, directional or point light to factorise)";
-        return c;
     }
     const std::string measured = r + " SVD with " + std::to_string(textureColumns) + "-texel tables is " +
                                  (std::isfinite(c.worstError) ? percent(c.worstError) : std::string("wholly")) +
