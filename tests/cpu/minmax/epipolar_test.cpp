@@ -186,7 +186,8 @@ GapMeasurement measureSliceGap(const viz::scene::Camera& cam, int w, int h, glm:
     return m;
 }
 
-// The setup sweeps every pixel's ray in blocks of rows on several threads. Its beta range and its smallest
+// The setup reads its figures off the image's border and the epipoles' pixels (the default), or sweeps every
+// pixel's ray in blocks of rows on several threads (everyPixel). Either way its beta range and its smallest
 // alpha change per pixel equal, to the bit, those of one plain loop over every pixel (each pixel against
 // its left and upper neighbours), for a spot, a sun and a point light, the epipole on and off screen.
 TEST(MinmaxEpipolar, TheParallelSweepOverEveryPixelEqualsOnePlainLoop) {
@@ -205,6 +206,8 @@ TEST(MinmaxEpipolar, TheParallelSweepOverEveryPixelEqualsOnePlainLoop) {
             L.shadowMatrix = glm::mat4(0.1f);
             L.shadowMatrix[3][3] = 1.0f;
             const auto s = viz::minmax::setupLight({.light = &L, .camera = &cam, .width = w, .height = h});
+            const auto every =
+                viz::minmax::setupLight({.light = &L, .camera = &cam, .width = w, .height = h, .everyPixel = true});
             double betaLo = pi, betaHi = 0.0, minGradient = std::numeric_limits<double>::max();
             for (int y = 0; y < h; ++y) {
                 for (int x = 0; x < w; ++x) {
@@ -222,6 +225,9 @@ TEST(MinmaxEpipolar, TheParallelSweepOverEveryPixelEqualsOnePlainLoop) {
             EXPECT_EQ(s.betaLo, betaLo) << "light kind " << kind << " at " << light.x;
             EXPECT_EQ(s.betaHi, betaHi) << "light kind " << kind << " at " << light.x;
             EXPECT_EQ(s.minAlphaGradient, minGradient) << "light kind " << kind << " at " << light.x;
+            EXPECT_EQ(every.betaLo, betaLo) << "light kind " << kind << " at " << light.x;
+            EXPECT_EQ(every.betaHi, betaHi) << "light kind " << kind << " at " << light.x;
+            EXPECT_EQ(every.minAlphaGradient, minGradient) << "light kind " << kind << " at " << light.x;
         }
     }
 }

@@ -26,11 +26,8 @@ bool ndcOf(const scene::Camera& cam, double aspect, glm::dvec3 q, glm::dvec2& nd
     return true;
 }
 
-// alpha's and beta's ranges over every pixel's ray, and alpha's smallest change from a pixel to its left
-// and upper neighbours. 1920x1080 is two million rays with two atan2 each (about 200 ms on one core), so
-// blocks of rows run in parallel (oneTBB); a block first computes the row above its own, so every pixel is
-// compared with the same neighbours as in one pass, and min and max give the same figures whatever the
-// split.
+// alpha's and beta's ranges over the pixels' rays, and alpha's smallest change from a pixel to its left
+// and upper neighbours.
 struct PixelSweep {
     double alphaLo = std::numeric_limits<double>::max(), alphaHi = std::numeric_limits<double>::lowest();
     double betaLo = std::numbers::pi, betaHi = 0.0;
@@ -43,9 +40,20 @@ struct PixelSweep {
         betaHi = std::max(betaHi, o.betaHi);
         minGradient = std::min(minGradient, o.minGradient);
     }
+    // One pixel: its ray's alpha a and beta b, and (when it has both) the steps gx, gy to its neighbours.
+    void add(double a, double b) {
+        betaLo = std::min(betaLo, b);
+        betaHi = std::max(betaHi, b);
+        alphaLo = std::min(alphaLo, a);
+        alphaHi = std::max(alphaHi, a);
+    }
+    void addSteps(double gx, double gy) { minGradient = std::min(minGradient, std::sqrt(gx * gx + gy * gy)); }
 };
 
-PixelSweep sweepPixels(const EpipolarFrame<double>& f, const scene::PixelRays& rays, int width, int height) {
+// Every pixel. 1920x1080 is two million rays with two atan2 each (about 200 ms on one core), so blocks of
+// rows run in parallel (oneTBB); a block first computes the row above its own, so every pixel is compared
+// with the same neighbours as in one pass, and min and max give the same figures whatever the split.
+PixelSweep sweepEveryPixel(const EpipolarFrame<double>& f, const scene::PixelRays& rays, int width, int height) {
     const auto rows = [&](const tbb::blocked_range<int>& r, PixelSweep s) {
         std::vector<double> previousRow(std::size_t(width), 0.0);
         if (r.begin() > 0)
@@ -55,15 +63,8 @@ PixelSweep sweepPixels(const EpipolarFrame<double>& f, const scene::PixelRays& r
             for (int x = 0; x < width; ++x) {
                 const glm::dvec3 ray = rays(x, y);
                 const double a = alphaOf(f, ray);
-                const double b = betaOf(f, ray);
-                s.betaLo = std::min(s.betaLo, b);
-                s.betaHi = std::max(s.betaHi, b);
-                s.alphaLo = std::min(s.alphaLo, a);
-                s.alphaHi = std::max(s.alphaHi, a);
-                if (x > 0 && y > 0) {
-                    const double gx = alphaStep(left, a), gy = alphaStep(previousRow[std::size_t(x)], a);
-                    s.minGradient = std::min(s.minGradient, std::sqrt(gx * gx + gy * gy));
-                }
+                s.add(a, betaOf(f, ray));
+                if (x > 0 && y > 0) s.addSteps(alphaStep(left, a), alphaStep(previousRow[std::size_t(x)], a));
                 left = a;
                 previousRow[std::size_t(x)] = a;
             }
@@ -74,6 +75,51 @@ PixelSweep sweepPixels(const EpipolarFrame<double>& f, const scene::PixelRays& r
         a.join(b);
         return a;
     });
+}
+
+// The same figures from the pixels where they can occur. On the image plane alpha is constant along each
+// line through the epipole (or the anti-epipole; parallel lines when neither is finite), so in polar
+// coordinates (r, theta) about that point alpha = F(theta) and |grad alpha| = |F'(theta)| / r: along each
+// such line it falls (or stays) away from the point, and its smallest value over the image lies on the
+// border; so do alpha's extremes when the epipole is off screen (on screen the slices wrap and alpha's
+// range is not used). beta, the angle from the axis, has no critical point on the image plane but the
+// epipole (its minimum) and the anti-epipole (its maximum), so its extremes lie on the border or next to
+// those. A band kBand pixels wide along the border (the steps are finite differences: its inner rows
+// cover one a pixel from the border) and a block around each (anti-)epipole on screen give the figures of
+// every pixel, bit for bit as far as the tests' exhaustive comparison reaches
+// (tests/cpu/minmax/epipolar_sweep_test.cpp): about 6 (width + height) pixels instead of width x height.
+constexpr int kBand = 3, kBlock = 3;
+
+PixelSweep sweepBorder(const EpipolarFrame<double>& f, const scene::PixelRays& rays, int width, int height,
+                       const Epipoles& ep) {
+    PixelSweep s;
+    const auto visit = [&](int x, int y) {
+        const glm::dvec3 ray = rays(x, y);
+        const double a = alphaOf(f, ray);
+        s.add(a, betaOf(f, ray));
+        if (x > 0 && y > 0)
+            s.addSteps(alphaStep(alphaOf(f, rays(x - 1, y)), a), alphaStep(alphaOf(f, rays(x, y - 1)), a));
+    };
+    for (int y = 0; y < height; ++y) {
+        const bool whole = y < kBand || y >= height - kBand;
+        for (int x = 0; x < width; ++x) {
+            if (!whole && x == kBand) x = width - kBand;
+            visit(x, y);
+        }
+    }
+    for (const ScreenPoint& p : {ep.epipole, ep.antiEpipole}) {
+        // screenEpipoles counts y up from the bottom with pixel i's centre at i + 1/2; rays counts rows down.
+        const double cx = p.pixel.x - 0.5, cy = double(height) - p.pixel.y - 0.5;
+        if (!p.valid || !(cx > -kBlock - 1.0 && cx < width + kBlock && cy > -kBlock - 1.0 && cy < height + kBlock))
+            continue;
+        const int x0 = std::max(0, int(std::floor(cx)) - kBlock);
+        const int x1 = std::min(width, int(std::ceil(cx)) + kBlock + 1);
+        const int y0 = std::max(0, int(std::floor(cy)) - kBlock);
+        const int y1 = std::min(height, int(std::ceil(cy)) + kBlock + 1);
+        for (int y = y0; y < y1; ++y)
+            for (int x = x0; x < x1; ++x) visit(x, y);
+    }
+    return s;
 }
 
 // slice_frame=screen (the paper's grid), in the frame centred on the image centre's slice: alpha over the
@@ -200,7 +246,10 @@ Setup setupLight(const SetupInput& in) {
     // alpha over every pixel: its range, and its smallest change per pixel (where slices are sparsest).
     const double pi = std::numbers::pi;
     const scene::PixelRays rays(cam, in.width, in.height);
-    const PixelSweep sweep = sweepPixels(f, rays, in.width, in.height);
+    const Epipoles ep = screenEpipoles(cam, in.width, in.height, f.axis);
+    const bool border = !in.everyPixel && in.width > 2 * kBand && in.height > 2 * kBand;
+    const PixelSweep sweep = border ? sweepBorder(f, rays, in.width, in.height, ep)
+                                    : sweepEveryPixel(f, rays, in.width, in.height);
     const double lo = sweep.alphaLo, hi = sweep.alphaHi, betaLo = sweep.betaLo, betaHi = sweep.betaHi;
     double minGradient = sweep.minGradient;
     // An image one pixel wide or tall has no neighbour across it: the rays one pixel beyond the image (to
@@ -217,7 +266,6 @@ Setup setupLight(const SetupInput& in) {
     s.minAlphaGradient = minGradient;
     s.betaLo = betaLo;
     s.betaHi = betaHi;
-    const Epipoles ep = screenEpipoles(cam, in.width, in.height, f.axis);
     auto onScreen = [&](const ScreenPoint& p) {
         return p.valid && p.pixel.x >= -1.0 && p.pixel.x <= in.width + 1.0 && p.pixel.y >= -1.0 &&
                p.pixel.y <= in.height + 1.0;

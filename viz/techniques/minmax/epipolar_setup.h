@@ -57,6 +57,10 @@ struct SetupInput {
     // place, a spot turning about its position) the slices stay put in the world instead of following
     // the screen. false: the paper's grid, centred on the image centre's slice.
     bool fixedFrame = false;
+    // true: alpha's and beta's ranges and alpha's smallest step are read off every pixel's ray; false
+    // (default): off the image's border and the (anti-)epipole's pixels, where they occur (epipolar_setup.cpp,
+    // sweepBorder), the same figures from about 6 (width + height) pixels instead of width x height.
+    bool everyPixel = false;
 };
 
 struct Setup {

@@ -43,7 +43,7 @@ IntegrandChoice chooseFor(const scene::Scene& scene, const std::vector<render::G
         return c;
     }
     // Suns alone: a sun's lit run is a closed form, exact, and its traverse costs less than svd's table
-    // lookups (README "Integrand=auto": 640x480, traverse 2x, the whole run 1.26x), so there is nothing for
+    // lookups (README "Integrands", auto: 640x480, traverse 2x, the whole run 1.26x), so there is nothing for
     // the tables to buy.
     if (std::all_of(lights.begin(), lights.end(),
                     [](const render::GpuLightCpu& L) { return L.info.x == render::hd::kLightDirectional; })) {

@@ -1,7 +1,7 @@
 // minmax's `integrand=auto` (the default): which of the two integrands a scene gets, decided by plan()
 // before any GL object exists, and why.
 //
-// Speed (measured, README "Integrand=auto"): the svd integrand's lit run is two prefix-table lookups per
+// Speed (measured, README "Integrands", auto): the svd integrand's lit run is two prefix-table lookups per
 // layer; the analytic one is a closed form for a sun, one segment integral (Gauss-Legendre panels) per cone
 // part for a spot without a cookie, and one per cookie cell for a spot with one. With suns alone the closed
 // form is the cheaper traverse and svd's SVD and prefix sums only add to rectify, so auto takes analytic
