@@ -84,10 +84,10 @@ PixelSweep sweepEveryPixel(const EpipolarFrame<double>& f, const scene::PixelRay
 // border; so do alpha's extremes when the epipole is off screen (on screen the slices wrap and alpha's
 // range is not used). beta, the angle from the axis, has no critical point on the image plane but the
 // epipole (its minimum) and the anti-epipole (its maximum), so its extremes lie on the border or next to
-// those. A band kBand pixels wide along the border (the steps are finite differences: its inner rows
-// cover one a pixel from the border) and a block around each (anti-)epipole on screen give the figures of
-// every pixel, bit for bit as far as the tests' exhaustive comparison reaches
-// (tests/cpu/minmax/epipolar_sweep_test.cpp): about 6 (width + height) pixels instead of width x height.
+// those. So: a band kBand pixels wide along the border (the steps are finite differences, so a smallest
+// one may sit a pixel or two in from the border) and a block around each (anti-)epipole on screen. In the
+// tests' exhaustive comparisons (tests/cpu/minmax/epipolar_sweep_test.cpp) these give every pixel's
+// figures bit for bit, from about 6 (width + height) pixels instead of width x height.
 constexpr int kBand = 3, kBlock = 3;
 
 PixelSweep sweepBorder(const EpipolarFrame<double>& f, const scene::PixelRays& rays, int width, int height,
