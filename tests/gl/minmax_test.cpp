@@ -16,6 +16,7 @@
 #include "scene/builtin_scenes.h"
 #include "scene/camera.h"
 #include "scene/stiff_scenes.h"
+#include "techniques/minmax/charts.h"
 #include "techniques/minmax/epipolar_setup.h"
 #include "techniques/minmax/pixel_mirror.h"
 #include "techniques/reference/ray_tracer.h"
@@ -200,6 +201,40 @@ TEST_F(MinmaxTest, RectifiedMapAgreesWithRayCasting) {
         EXPECT_GT(compared, 1000) << name;
         EXPECT_GT(blocked, compared / 10) << name;
         EXPECT_GE(agree, compared * 99 / 100) << name;
+    }
+}
+
+// The "Rectified map, picked row" picture copies only the rows it shows on the GPU and reads those back:
+// it equals the picture drawn from the whole map read back (S itself), at a size whose slices outnumber
+// the picture's 1024 rows, for the image centre's slice and for a picked pixel's.
+TEST_F(MinmaxTest, RectifiedPictureEqualsOneDrawnFromTheWholeMap) {
+    const viz::scene::Scene scene = viz::scene::makeBuiltinScene("grate");
+    const int w = 320, h = 240, size = 256;
+    viz::render::GpuLightCpu L{};
+    const auto f = viz::testing::minmaxFrame(scene, 0, w, h, size, &L);
+    ASSERT_GT(f.slices, 1024) << "the picture would show every row";
+    std::printf("grate %dx%d: %d slices of %d columns\n", w, h, f.slices, f.columns);
+    for (glm::ivec2 pick : {glm::ivec2(-1, -1), glm::ivec2(37, 201)}) {
+        const viz::Settings settings = {{"shadow_map", size}, {"pick_x", pick.x}, {"pick_y", pick.y}};
+        const viz::FrameOutput out =
+            render(scene, "minmax", settings, w, h, 2, {"minmax.rectified", "minmax.rectified_view"});
+        const auto* S = find(out, "minmax.rectified");
+        const auto* picture = find(out, "minmax.rectified_view");
+        ASSERT_TRUE(S && S->image && picture && picture->image);
+        ASSERT_EQ(S->image->height, f.slices);
+        const glm::ivec2 px = pick.x < 0 ? glm::ivec2(w / 2, h / 2) : pick;
+        const glm::vec3 ray(viz::scene::pixelRay(scene.camera, w, h, px.x, px.y));
+        const int row = viz::minmax::sliceRow(f, viz::minmax::alphaOf(f, ray));
+        const auto wholeMap = [&](const std::vector<int>& sources) {
+            std::vector<float> rows;
+            for (int r : sources)
+                for (int c = 0; c < S->image->width; ++c) rows.push_back(texel(*S->image, c, r));
+            return rows;
+        };
+        const viz::Image expected = viz::minmax::rectifiedView(wholeMap, S->image->width, S->image->height, row);
+        EXPECT_EQ(picture->image->width, expected.width);
+        EXPECT_EQ(picture->image->height, 1024);
+        EXPECT_EQ(picture->image->pixels, expected.pixels) << "pick " << pick.x << ", " << pick.y;
     }
 }
 

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/error.h"
 #include "techniques/minmax/minmax_tree.h"
 
 namespace viz::minmax {
@@ -20,16 +21,21 @@ void setRgb(Image& img, int x, int y, glm::vec3 c) {
 
 }  // namespace
 
-Image rectifiedView(const std::function<std::vector<float>(int)>& readRow, int columns, int rows, int pickedRow) {
+Image rectifiedView(const std::function<std::vector<float>(const std::vector<int>&)>& readRows, int columns,
+                    int rows, int pickedRow) {
     const int vw = std::min(columns, 1024), vh = std::min(rows, 1024);
     Image img(vw, vh, 3);
     const int pickedY = int(static_cast<long long>(pickedRow) * vh / rows);
+    std::vector<int> sources(static_cast<std::size_t>(vh));
+    for (int y = 0; y < vh; ++y)
+        sources[std::size_t(y)] = y == pickedY ? pickedRow : int(static_cast<long long>(y) * rows / vh);
+    const std::vector<float> values = readRows(sources);
+    VIZ_CHECK(values.size() == std::size_t(vh) * std::size_t(columns), "rectifiedView: readRows gave a wrong size");
     for (int y = 0; y < vh; ++y) {
         const bool picked = y == pickedY;
-        const int source = picked ? pickedRow : int(static_cast<long long>(y) * rows / vh);
-        const std::vector<float> values = readRow(source);
+        const float* row = values.data() + std::size_t(y) * std::size_t(columns);
         for (int x = 0; x < vw; ++x) {
-            const float grey = greyOfBeta(values[std::size_t(static_cast<long long>(x) * columns / vw)]);
+            const float grey = greyOfBeta(row[std::size_t(static_cast<long long>(x) * columns / vw)]);
             setRgb(img, x, y, picked ? glm::vec3(1.0f, 0.2f * grey, 0.2f * grey) : glm::vec3(grey));
         }
     }

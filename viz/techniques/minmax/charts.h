@@ -19,8 +19,10 @@ namespace viz::minmax {
 // An Intermediate holding a CPU image.
 
 // S / pi as grey, row 0 at the top, the picked row in red; at most 1024 x 1024 (nearest rows and columns).
-// readRow(r) returns row r of S (columns floats).
-Image rectifiedView(const std::function<std::vector<float>(int)>& readRow, int columns, int rows, int pickedRow);
+// readRows(sources) returns those rows of S one after another (columns floats each): the at most 1024 the
+// picture shows, the picked one among them, in increasing order.
+Image rectifiedView(const std::function<std::vector<float>(const std::vector<int>&)>& readRows, int columns,
+                    int rows, int pickedRow);
 
 // The widest chart of a row's columns, in pixels; a wider row's pixels each stand for several columns.
 inline constexpr int kChartWidth = 1024;

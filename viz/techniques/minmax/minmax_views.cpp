@@ -54,18 +54,26 @@ void MinmaxTechnique::publishRectified(FrameOutput& out, const FrameInput& input
         "occluder (4 = unblocked, -1 = outside the cone)", "radians", ViewKind::Scalar, 0.0f,
         float(std::numbers::pi), w.rectified));
     out.intermediates.back().sentinels = outsideAndUnblocked();
-    // One read-back of the whole map, not one per row of the picture: every glGetTextureSubImage waits for the
-    // GPU, and the 1024 rows of a 1920x1080 frame took about 1.9 s per run on an NVIDIA H100 (README.md,
-    // "Measured on an NVIDIA H100"), against 25 ms on llvmpipe.
+    // Only the rows the picture shows (at most 1024), copied on the GPU into one texture and read back once.
+    // Not one read-back per row: every glGetTextureSubImage waits for the GPU, and the 1024 rows of a
+    // 1920x1080 frame took about 1.9 s per run on an NVIDIA H100 (README.md, "Measured on an NVIDIA H100"),
+    // against 25 ms on llvmpipe. Not the whole map: at 1920x1080 it has up to 16384 rows of the shadow map's
+    // 2048 columns, 134 MB read back and built into a 1024-row picture every frame.
     const gl::Texture& t = w.rectified;
     const int columns = t.size().x;
-    std::vector<float> map(std::size_t(columns) * std::size_t(t.size().y));
-    glGetTextureImage(t.id(), 0, GL_RED, GL_FLOAT, GLsizei(map.size() * sizeof(float)), map.data());
-    const auto row = [&](int r) {
-        const auto first = map.begin() + std::ptrdiff_t(r) * columns;
-        return std::vector<float>(first, first + columns);
+    const auto readRows = [&](const std::vector<int>& sources) {
+        const int n = int(sources.size());
+        const gl::Texture picked = gl::Texture::create(
+            {.target = GL_TEXTURE_2D, .format = GL_R32F, .size = {columns, n, 1}, .levels = 1,
+             .label = "minmax.rectified_view_rows"});
+        for (int k = 0; k < n; ++k)
+            glCopyImageSubData(t.id(), GL_TEXTURE_2D, 0, 0, sources[std::size_t(k)], 0, picked.id(), GL_TEXTURE_2D,
+                               0, 0, k, 0, columns, 1, 1);
+        std::vector<float> rows(std::size_t(columns) * std::size_t(n));
+        glGetTextureImage(picked.id(), 0, GL_RED, GL_FLOAT, GLsizei(rows.size() * sizeof(float)), rows.data());
+        return rows;
     };
-    auto img = std::make_shared<Image>(minmax::rectifiedView(row, columns, t.size().y, pickedRow(input)));
+    auto img = std::make_shared<Image>(minmax::rectifiedView(readRows, columns, t.size().y, pickedRow(input)));
     out.intermediates.push_back(cpuIntermediate(
         kRectifiedView, "Rectified map, picked row",
         "S / pi as grey (row 0 at the top = slice 0; nearest rows and columns when larger than 1024), the "
