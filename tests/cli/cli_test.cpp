@@ -247,16 +247,16 @@ TEST_F(CliTest, PlanSaysWhatIsSkippedAndWhy) {
 // slices' artistic formula on); --set still wins over it; an unknown preset is a one-line error. terrain:
 // suns alone, where the default (integrand=auto) takes the closed form.
 TEST_F(CliTest, PaperPresetSetsThePapersChoicesAndSetWins) {
-    // The state column of a feature's line ("feature NAME   on   why..."), not a word of its reason.
-    auto state = [](const std::string& out, const std::string& feature) {
-        std::size_t at = out.find("feature " + feature + " ");
-        if (at == std::string::npos) return std::string();
-        at = out.find_first_not_of(' ', at + 9 + feature.size());
-        return out.substr(at, out.find(' ', at) - at);
-    };
     auto line = [](const std::string& out, const std::string& feature) {
         const std::size_t at = out.find("feature " + feature + " ");
         return at == std::string::npos ? std::string() : out.substr(at, out.find('\n', at) - at);
+    };
+    // The state column of a feature's line ("feature NAME   on   why..."), not a word of its reason.
+    auto state = [&line](const std::string& out, const std::string& feature) {
+        std::istringstream words(line(out, feature));
+        std::string keyword, name, on;
+        words >> keyword >> name >> on;
+        return on;
     };
     RunResult r = run("plan --scene terrain --technique minmax");
     ASSERT_EQ(r.exitCode, 0) << r.err;

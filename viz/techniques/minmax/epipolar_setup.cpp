@@ -243,7 +243,7 @@ Setup setupLight(const SetupInput& in) {
     const EpipolarFrame<double> world = f;  // alpha from makeFrame's world-fixed direction
     centreAlphaOn(f, centre);
 
-    // alpha over every pixel: its range, and its smallest change per pixel (where slices are sparsest).
+    // alpha over the pixels: its range, and its smallest change per pixel (where slices are sparsest).
     const double pi = std::numbers::pi;
     const scene::PixelRays rays(cam, in.width, in.height);
     const Epipoles ep = screenEpipoles(cam, in.width, in.height, f.axis);
