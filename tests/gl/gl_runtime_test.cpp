@@ -203,6 +203,37 @@ TEST_F(GlRuntime, ReadbackOfOneLayer) {
     EXPECT_EQ(readTexture(cube, 0, 0).at(1, 1, 2), 0.0f);
 }
 
+TEST_F(GlRuntime, ReadbackOfAChosenChannelCountKeepsEveryPixelInItsPlace) {
+    // 7 x 5: an odd height leaves a middle row that the in-place flip must not move; the values come
+    // from the texel's GL position, so each read is checked against the upload, not the other read.
+    const int w = 7, h = 5;
+    std::vector<float> rgba, red;
+    for (int glRow = 0; glRow < h; ++glRow)
+        for (int x = 0; x < w; ++x) {
+            rgba.insert(rgba.end(), {float(x), float(glRow), float(x * 100 + glRow), -1.0f});
+            red.push_back(float(x + 10 * glRow));
+        }
+    Texture t = Texture::create({.format = GL_RGBA32F, .size = {w, h, 1}, .label = "test.rgba_as_rgb"});
+    t.upload(GL_RGBA, GL_FLOAT, rgba.data());
+    const Image rgb = readTexture(t, 0, -1, 3);
+    ASSERT_EQ(rgb.channels, 3);
+    ASSERT_EQ(rgb.pixels.size(), std::size_t(w * h * 3));
+    Texture r = Texture::create({.format = GL_R32F, .size = {w, h, 1}, .label = "test.r_as_rgb"});
+    r.upload(GL_RED, GL_FLOAT, red.data());
+    const Image filled = readTexture(r, 0, -1, 3);  // green and blue come back 0
+    ASSERT_EQ(filled.channels, 3);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const int glRow = h - 1 - y;
+            EXPECT_EQ(rgb.at(x, y, 0), float(x));
+            EXPECT_EQ(rgb.at(x, y, 1), float(glRow));
+            EXPECT_EQ(rgb.at(x, y, 2), float(x * 100 + glRow));
+            EXPECT_EQ(filled.at(x, y, 0), float(x + 10 * glRow));
+            EXPECT_EQ(filled.at(x, y, 1), 0.0f);
+            EXPECT_EQ(filled.at(x, y, 2), 0.0f);
+        }
+}
+
 TEST_F(GlRuntime, BufferUploadAndDownload) {
     const std::vector<int> initial = {1, 2, 3, 4};
     Buffer b =

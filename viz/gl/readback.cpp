@@ -18,7 +18,7 @@ GLint levelParameter(GLuint texture, int level, GLenum pname) {
 
 }  // namespace
 
-Image readTexture(GLuint texture, int level, int layer) {
+Image readTexture(GLuint texture, int level, int layer, int wantChannels) {
     VIZ_CHECK(texture != 0 && glIsTexture(texture), "readTexture: not a texture name");
     GLint target = 0;
     glGetTextureParameteriv(texture, GL_TEXTURE_TARGET, &target);
@@ -44,6 +44,9 @@ Image readTexture(GLuint texture, int level, int layer) {
     }
     const bool isInteger =
         !isDepth && (componentType == GL_INT || componentType == GL_UNSIGNED_INT);
+    VIZ_CHECK(wantChannels >= 0 && wantChannels <= 4 && (wantChannels == 0 || !isDepth),
+              "readTexture: a channel count of 1 to 4, and none for a depth format");
+    if (wantChannels > 0) channels = wantChannels;  // GL drops the channels past it or fills them (0, alpha 1)
     static const GLenum kFloatFormats[] = {GL_RED, GL_RG, GL_RGB, GL_RGBA};
     static const GLenum kIntFormats[] = {GL_RED_INTEGER, GL_RG_INTEGER, GL_RGB_INTEGER,
                                          GL_RGBA_INTEGER};
@@ -51,11 +54,12 @@ Image readTexture(GLuint texture, int level, int layer) {
                                : isInteger ? kIntFormats[channels - 1]
                                            : kFloatFormats[channels - 1];
 
-    const size_t count =
-        static_cast<size_t>(width) * static_cast<size_t>(height) * static_cast<size_t>(channels);
+    // Read straight into the image's storage and flip its rows there: a second buffer of the same
+    // size would be fresh memory every frame (a 1920x1080 RGBA float read is 33 MB of page faults).
+    Image image(width, height, channels);
+    const size_t count = image.pixels.size();
     // Rows are tightly packed in our buffers; the default pack alignment of 4 would pad odd widths.
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    std::vector<float> raw(count);
     const GLsizei bytes = static_cast<GLsizei>(count * sizeof(float));
     if (isInteger) {
         // Signed and unsigned 32-bit values are read as their own type, then converted to float.
@@ -64,29 +68,27 @@ Image readTexture(GLuint texture, int level, int layer) {
         glGetTextureSubImage(texture, level, 0, 0, z, width, height, 1, pixelFormat, type, bytes,
                              ints.data());
         for (size_t i = 0; i < count; ++i) {
-            raw[i] = type == GL_INT ? static_cast<float>(static_cast<int32_t>(ints[i]))
-                                    : static_cast<float>(ints[i]);
+            image.pixels[i] = type == GL_INT ? static_cast<float>(static_cast<int32_t>(ints[i]))
+                                             : static_cast<float>(ints[i]);
         }
     } else {
         glGetTextureSubImage(texture, level, 0, 0, z, width, height, 1, pixelFormat, GL_FLOAT,
-                             bytes, raw.data());
+                             bytes, image.pixels.data());
     }
 
     // GL row 0 is the bottom; viz::Image row 0 is the top.
-    Image image(width, height, channels);
     const size_t rowFloats = static_cast<size_t>(width) * static_cast<size_t>(channels);
-    for (int y = 0; y < height; ++y) {
-        const size_t src = static_cast<size_t>(height - 1 - y) * rowFloats;
-        std::copy(
-            raw.begin() + static_cast<std::ptrdiff_t>(src),
-            raw.begin() + static_cast<std::ptrdiff_t>(src + rowFloats),
-            image.pixels.begin() + static_cast<std::ptrdiff_t>(static_cast<size_t>(y) * rowFloats));
+    for (int y = 0; y < height / 2; ++y) {
+        auto top = image.pixels.begin() + static_cast<std::ptrdiff_t>(static_cast<size_t>(y) * rowFloats);
+        auto bottom =
+            image.pixels.begin() + static_cast<std::ptrdiff_t>(static_cast<size_t>(height - 1 - y) * rowFloats);
+        std::swap_ranges(top, top + static_cast<std::ptrdiff_t>(rowFloats), bottom);
     }
     return image;
 }
 
-Image readTexture(const Texture& texture, int level, int layer) {
-    return readTexture(texture.id(), level, layer);
+Image readTexture(const Texture& texture, int level, int layer, int channels) {
+    return readTexture(texture.id(), level, layer, channels);
 }
 
 }  // namespace viz::gl

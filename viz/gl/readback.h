@@ -11,7 +11,9 @@
 namespace viz::gl {
 
 // layer: the array layer, cube face (0..5 = +X,-X,+Y,-Y,+Z,-Z) or 3D slice; -1 means layer 0.
-Image readTexture(GLuint texture, int level = 0, int layer = -1);
-Image readTexture(const Texture& texture, int level = 0, int layer = -1);
+// channels: 0 reads the format's; 1 to 4 reads that many (GL drops the rest, or fills green and blue
+// with 0 and alpha with 1), in one pass and one buffer (not for depth formats).
+Image readTexture(GLuint texture, int level = 0, int layer = -1, int channels = 0);
+Image readTexture(const Texture& texture, int level = 0, int layer = -1, int channels = 0);
 
 }  // namespace viz::gl

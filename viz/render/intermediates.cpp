@@ -18,15 +18,7 @@ Intermediate textureIntermediate(const std::string& id, const std::string& label
     return i;
 }
 
-Image readRgb(const gl::Texture& texture) {
-    const Image rgba = gl::readTexture(texture);
-    if (rgba.channels == 3) return rgba;
-    Image rgb(rgba.width, rgba.height, 3);
-    for (int y = 0; y < rgba.height; ++y)
-        for (int x = 0; x < rgba.width; ++x)
-            for (int c = 0; c < 3; ++c) rgb.at(x, y, c) = c < rgba.channels ? rgba.at(x, y, c) : 0.0f;
-    return rgb;
-}
+Image readRgb(const gl::Texture& texture) { return gl::readTexture(texture, 0, -1, 3); }
 
 bool hasLightOfType(const scene::Scene& scene, scene::LightType type) {
     return std::any_of(scene.lights.begin(), scene.lights.end(),
