@@ -29,8 +29,10 @@ void MinmaxTechnique::prepareLights(const scene::Scene& scene, const FrameInput&
                                       .columns = columns,
                                       .oversampling = s.sliceOversampling, .fixedFrame = s.fixedFrame});
         sliceGapNote(scene, L.info.w, input, w.setup, notes);
-        // Reuse the previous textures when the sizes agree.
+        // Reuse the previous textures when the sizes agree (prefixSums() checks its table's own size: a
+        // spot's is one table per slice, hundreds of MB at 1920x1080, too much to allocate every frame).
         const std::size_t k = work.size();
+        if (k < mWork.size()) w.prefix = std::move(mWork[k].prefix);
         if (k < mWork.size() && mWork[k].rectified &&
             mWork[k].rectified.size() == glm::ivec3(w.setup.frame.columns, w.setup.frame.slices, 1)) {
             w.rectified = std::move(mWork[k].rectified);
