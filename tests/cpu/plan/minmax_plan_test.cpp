@@ -93,6 +93,31 @@ TEST(MinmaxPlan, SunsAloneTakeTheClosedFormAndASpotBringsTheTablesBack) {
     EXPECT_NE(thick.why.find("off on the fully lit rays"), std::string::npos) << thick.why;
 }
 
+// The report's sweep measures minmax as a user runs it: its grid leaves the integrand to the plan (on
+// grate's spot the tables, on terrain's sun the closed form, at every grid point) and both sweeps hold
+// the default settings themselves; the forced points of the full sweep say which integrand they force.
+TEST(MinmaxPlan, QualitySweepRunsTheDefaultIntegrandAndHoldsTheDefaults) {
+    const auto t = makeTechnique("minmax");
+    const Settings defaults = completeSettings(*t, {});
+    const scene::Scene grate = scene::makeBuiltinScene("grate"), terrain = scene::makeBuiltinScene("terrain");
+    for (bool quick : {true, false}) {
+        int holdsDefaults = 0;
+        for (const QualitySetting& q : t->qualitySweep(quick)) {
+            const Settings complete = completeSettings(*t, q.settings);
+            holdsDefaults += complete == defaults ? 1 : 0;
+            if (q.label.rfind("map=", 0) != 0) {
+                EXPECT_FALSE(quick) << q.label << ": the quick sweep forces nothing";
+                EXPECT_EQ(q.label.find(complete.at("integrand") == 0.0 ? "analytic" : "svd"), 0u) << q.label;
+                continue;
+            }
+            EXPECT_EQ(q.settings.count("integrand"), 0u) << q.label;
+            EXPECT_TRUE(findFeature(t->plan(grate, complete), "INTEGRAND_SVD")->enabled) << q.label;
+            EXPECT_FALSE(findFeature(t->plan(terrain, complete), "INTEGRAND_SVD")->enabled) << q.label;
+        }
+        EXPECT_EQ(holdsDefaults, 1) << (quick ? "quick" : "full");
+    }
+}
+
 TEST(MinmaxPlan, SettingsChooseTheIntegrandAndTheNearEpipolePass) {
     EXPECT_TRUE(findFeature(minmaxPlan("terrain", {{"integrand", 1.0}}), "INTEGRAND_SVD")->enabled);
     const Plan svdGrate = minmaxPlan("grate", {{"integrand", 1.0}});
