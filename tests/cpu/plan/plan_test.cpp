@@ -194,3 +194,29 @@ TEST(StageOfIntermediate, ExactIdsAndNumberedSiblingsOnly) {
 
 }  // namespace
 }  // namespace viz
+
+namespace viz {
+namespace {
+
+// The report measures each technique as a user runs it: both of its sweeps, the quick one too, hold the
+// technique's default settings (the sweep may set what the report must not time, such as slices'
+// recording of one pixel's planes, to a value that changes no image).
+TEST(QualitySweep, EverySweepHoldsTheTechniquesDefaults) {
+    for (const std::string& id : techniqueIds()) {
+        const auto t = makeTechnique(id);
+        Settings defaults = completeSettings(*t, {});
+        defaults.erase("ray_planes");
+        for (bool quick : {true, false}) {
+            int found = 0;
+            for (const QualitySetting& q : t->qualitySweep(quick)) {
+                Settings complete = completeSettings(*t, q.settings);
+                complete.erase("ray_planes");
+                found += complete == defaults ? 1 : 0;
+            }
+            EXPECT_GE(found, 1) << id << (quick ? " quick" : " full") << " sweep never runs the defaults";
+        }
+    }
+}
+
+}  // namespace
+}  // namespace viz
