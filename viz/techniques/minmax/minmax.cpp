@@ -125,11 +125,6 @@ std::vector<QualitySetting> MinmaxTechnique::qualitySweep(bool quick) const {
                          {{"shadow_map", double(map)}, {"slices", double(slices)},
                           {"spot_pieces", double(pieces)}, {"march_samples", double(samples)}}});
     };
-    auto forced = [&](const char* integrand, double value, int rank) {
-        sweep.push_back({std::string(integrand) + (rank ? " rank=" + std::to_string(rank) : std::string()),
-                         {{"integrand", value}, {"rank", double(rank ? rank : 4)}, {"shadow_map", 1024.0},
-                          {"march_samples", 512.0}}});
-    };
     if (quick) {
         grid(256, 64, 32, 128);
         grid(1024, 0, 64, 512);  // the default
@@ -143,8 +138,9 @@ std::vector<QualitySetting> MinmaxTechnique::qualitySweep(bool quick) const {
     grid(2048, 0, 64, 512);
     grid(4096, 0, 128, 1024);
     // Each integrand forced at the default's other settings, whatever auto would take.
-    forced("analytic", 0.0, 0);
-    for (int rank : {1, 2, 4, 8}) forced("svd", 1.0, rank);
+    sweep.push_back({"analytic", {{"integrand", 0.0}}});
+    for (int rank : {1, 2, 4, 8})
+        sweep.push_back({"svd rank=" + std::to_string(rank), {{"integrand", 1.0}, {"rank", double(rank)}}});
     return sweep;
 }
 

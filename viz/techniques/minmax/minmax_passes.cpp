@@ -29,17 +29,12 @@ void MinmaxTechnique::prepareLights(const scene::Scene& scene, const FrameInput&
                                       .columns = columns,
                                       .oversampling = s.sliceOversampling, .fixedFrame = s.fixedFrame});
         sliceGapNote(scene, L.info.w, input, w.setup, notes);
-        // Reuse the previous textures when the sizes agree (prefixSums() checks its table's own size: a
-        // spot's is one table per slice, hundreds of MB at 1920x1080, too much to allocate every frame).
+        // This light's GPU objects from the previous frame; the map and tree are made again when their
+        // size changes (prefixSums() and the lines below check the table's and the gamma buffer's).
         const std::size_t k = work.size();
-        if (k < mWork.size()) w.prefix = std::move(mWork[k].prefix);
-        if (k < mWork.size() && mWork[k].rectified &&
-            mWork[k].rectified.size() == glm::ivec3(w.setup.frame.columns, w.setup.frame.slices, 1)) {
-            w.rectified = std::move(mWork[k].rectified);
-            w.tree = std::move(mWork[k].tree);
-            w.rowGamma = std::move(mWork[k].rowGamma);
-        } else {
-            const int c = w.setup.frame.columns, r = w.setup.frame.slices;
+        if (k < mWork.size()) static_cast<LightTargets&>(w) = std::move(static_cast<LightTargets&>(mWork[k]));
+        const int c = w.setup.frame.columns, r = w.setup.frame.slices;
+        if (!w.rectified || w.rectified.size() != glm::ivec3(c, r, 1)) {
             w.rectified = gl::Texture::create({.target = GL_TEXTURE_2D, .format = GL_R32F, .size = {c, r, 1},
                                                .levels = 1, .label = kRectified});
             w.tree = gl::Texture::create({.target = GL_TEXTURE_2D, .format = GL_RG32F, .size = {2 * c, r, 1},

@@ -75,20 +75,25 @@ inline bool epipolarLight(const scene::Light& l) {
            l.type == scene::LightType::Point;
 }
 
-// Everything one epipolar light needs between the stages.
-struct LightWork {
-    int gpuIndex = 0;  // into GpuLights::lights()
-    minmax::Setup setup;
+// One epipolar light's GPU objects, kept from frame to frame (prepareLights() moves them all to the next
+// frame's LightWork; each is made again only where its size no longer fits).
+struct LightTargets {
     // Point light: the gamma range of each row, [0, hi_i], one float per row stored as its uint bits
     // (gamma_range.comp); read back only to publish minmax.row_gamma.
     gl::Buffer rowGamma;
-    bool point() const { return setup.frame.kind == LightKind::Point; }
     gl::Texture rectified;  // r32f, columns x slices
     gl::Texture tree;       // rg32f, 2 columns x slices (Ahnentafel rows)
+    gl::Texture prefix;     // integrand=svd: rgba32f array, (texels + 1) x rows x ceil(3 N / 4) layers
+};
+
+// Everything one epipolar light needs between the stages: its GPU objects and this frame's figures.
+struct LightWork : LightTargets {
+    int gpuIndex = 0;  // into GpuLights::lights()
+    minmax::Setup setup;
+    bool point() const { return setup.frame.kind == LightKind::Point; }
     int levelsBuilt = 0;
-    // integrand=svd: the rank-N factorisation and the prefix sums of Gamma_i T (prefix.comp).
+    // integrand=svd: the rank-N factorisation whose prefix sums of Gamma_i T `prefix` holds (prefix.comp).
     minmax::LowRank lowRank;
-    gl::Texture prefix;  // rgba32f array: (texels + 1) x rows x ceil(3 N / 4) layers
     int prefixRows = 0;
 };
 
@@ -238,6 +243,8 @@ private:
     std::map<int, gl::Program> mPrefix;  // by variant: 1 point light (EPIPOLAR_POINT), 2 LOG2_PASSES, rank << 2
     std::string mProgramKey;
     gl::Texture mAirlight, mVisited, mNearMask, mRayCoords;
+    // The rows of the rectified map its picture shows (publishRectified), kept while its size holds.
+    mutable gl::Texture mRectifiedRows;
     // What markersFor needs of the last run.
     scene::Camera mMarkCamera;
     glm::ivec2 mMarkSize{0};

@@ -63,14 +63,15 @@ void MinmaxTechnique::publishRectified(FrameOutput& out, const FrameInput& input
     const int columns = t.size().x;
     const auto readRows = [&](const std::vector<int>& sources) {
         const int n = int(sources.size());
-        const gl::Texture picked = gl::Texture::create(
-            {.target = GL_TEXTURE_2D, .format = GL_R32F, .size = {columns, n, 1}, .levels = 1,
-             .label = "minmax.rectified_view_rows"});
+        if (!mRectifiedRows || mRectifiedRows.size() != glm::ivec3(columns, n, 1))
+            mRectifiedRows = gl::Texture::create({.target = GL_TEXTURE_2D, .format = GL_R32F, .size = {columns, n, 1},
+                                                  .levels = 1, .label = "minmax.rectified_view_rows"});
         for (int k = 0; k < n; ++k)
-            glCopyImageSubData(t.id(), GL_TEXTURE_2D, 0, 0, sources[std::size_t(k)], 0, picked.id(), GL_TEXTURE_2D,
-                               0, 0, k, 0, columns, 1, 1);
+            glCopyImageSubData(t.id(), GL_TEXTURE_2D, 0, 0, sources[std::size_t(k)], 0, mRectifiedRows.id(),
+                               GL_TEXTURE_2D, 0, 0, k, 0, columns, 1, 1);
         std::vector<float> rows(std::size_t(columns) * std::size_t(n));
-        glGetTextureImage(picked.id(), 0, GL_RED, GL_FLOAT, GLsizei(rows.size() * sizeof(float)), rows.data());
+        glGetTextureImage(mRectifiedRows.id(), 0, GL_RED, GL_FLOAT, GLsizei(rows.size() * sizeof(float)),
+                          rows.data());
         return rows;
     };
     auto img = std::make_shared<Image>(minmax::rectifiedView(readRows, columns, t.size().y, pickedRow(input)));
