@@ -29,47 +29,100 @@ float unitPointSegment(RayLightGeometry g, float x0, float x1, vec4 lobe) {
 // exact unit-intensity integral (pointSegment) times the angular factor at its middle angle.
 // Under a cookie the pieces follow its texels instead: about one piece per cookie texel the segment
 // sweeps (texel angle 2 atan(tan(outer)) / width), at least uSpotPieces, at most kMaxCookiePieces.
+// Neighbouring pieces whose angular factors agree (a cookie's texels of one colour, its dark lead, the
+// inner cone) form a run, integrated as one segment: the same sum, one segment integral where there were
+// as many as pieces (README, "Runs of one colour").
 const int kMaxCookiePieces = 64;
+const int kMaxPieces = 256;          // spot_pieces' largest value
+const float kRunTolerance = 1.0e-5;  // relative difference of two angular factors taken as one run
 
-// lightIntensity toward a direction from the light (the light moved to the origin: lightIntensity only
+// lightIntensityToward a direction from the light (the light moved to the origin: lightIntensity only
 // forms p - position from its point).
 vec3 lightIntensityToward(GpuLight L, vec3 dirFromLight) {
     L.position.xyz = vec3(0.0);
     return lightIntensity(L, dirFromLight);
 }
 
+// The factor piece k takes at its middle angle: the light's whole intensity when the part is whole; a
+// spot's colour times its cookie when the segment integral carries A_spot (its lobe, 1 inside the inner
+// cone); else the whole angular factor (lightIntensityToward).
+vec3 pieceIntensity(GpuLight L, vec3 m, float h, vec3 w, float phi0, float phi1, int k, int pieces, bool whole) {
+    if (whole) return L.radiant.rgb;
+    float phiMid = mix(phi0, phi1, (float(k) + 0.5) / float(pieces));
+    vec3 dirFromLight = directionFromLight(m, h, w, phiMid);
+#if !defined(AIRLIGHT_LUT) && !defined(LIGHTS_NO_COOKIE)
+    if (L.info.x == kLightSpot) return L.radiant.rgb * spotCookie(L, dirFromLight);
+#endif
+    return lightIntensityToward(L, dirFromLight);
+}
+
+// The ray parameter of the edge before piece k (k = pieces: x1), kept inside [x0, x1] against rounding
+// near +-pi/2.
+float pieceEdge(RayLightGeometry g, float h, float x0, float x1, float phi0, float phi1, int k, int pieces) {
+    if (k <= 0) return x0;
+    if (k >= pieces) return x1;
+    return clamp(g.tP + h * tan(mix(phi0, phi1, float(k) / float(pieces))), x0, x1);
+}
+
 // whole: the part lies inside a spot's inner cone with no cookie, where A_spot = 1: one exact piece at the
-// light's full intensity. A spot's penumbra without a cookie is one exact piece too with the segment
-// integral: A_spot there is the square of a lobe in the integrand's own variable (spotPenumbraLobeOf),
-// integrated on the segment's panels; the pieces remain for the lookup table (no lobe) and cookies.
-// (One loop for all, so that the segment integral is inlined once: llvmpipe runs every inlined copy for
-// the whole invocation group, whichever lanes need it.)
-vec3 angularPieces(GpuLight L, vec3 w, RayLightGeometry g, float h, float x0, float x1, bool whole) {
+// light's full intensity. In a spot's penumbra (`penumbra`) the segment integral takes A_spot exactly: it
+// is the square of a lobe in the integrand's own variable (spotPenumbraLobeOf), integrated on the
+// segment's panels; without a cookie that is one piece, under a cookie the pieces carry the cookie alone.
+// The lookup table has no lobe: with it the pieces carry A_spot * cookie at their middles.
+// Two loops: the first finds where a run of pieces with one angular factor begins (a bit per piece), the
+// second integrates each run that has light, so a SIMD group runs as many segment integrals as its
+// lanes' largest number of runs, not of pieces. (One call of the segment integral, so that it is
+// inlined once: llvmpipe runs every inlined copy for the whole invocation group, whichever lanes need it.)
+vec3 angularPieces(GpuLight L, vec3 w, RayLightGeometry g, float h, float x0, float x1, bool whole, bool penumbra) {
     vec3 m = cross(cross(L.position.xyz, w), w);  // P - light, see angularSegment
     float phi0 = atan(x0 - g.tP, h);
     float phi1 = atan(x1 - g.tP, h);
     vec4 lobe = AIRLIGHT_NO_LOBE;
 #ifndef AIRLIGHT_LUT
-    if (!whole && L.info.x == kLightSpot && L.info.y < 0) {
-        lobe = spotPenumbraLobeOf(L.position.xyz, w, L.direction.xyz, L.spot.x, L.spot.y);
-        whole = true;
+    if (L.info.x == kLightSpot) {
+        if (penumbra) lobe = spotPenumbraLobeOf(L.position.xyz, w, L.direction.xyz, L.spot.x, L.spot.y);
+        if (L.info.y < 0) whole = true;
     }
 #endif
-    int pieces = whole ? 1 : uSpotPieces;
+    int pieces = whole ? 1 : min(uSpotPieces, kMaxPieces);
 #ifndef LIGHTS_NO_COOKIE
     if (!whole && L.info.x == kLightSpot && L.info.y >= 0) {
-        pieces = clamp(int(ceil(abs(phi1 - phi0) / cookieTexelAngle(L))), uSpotPieces, max(uSpotPieces, kMaxCookiePieces));
+        pieces = clamp(int(ceil(abs(phi1 - phi0) / cookieTexelAngle(L))), pieces, max(pieces, kMaxCookiePieces));
     }
 #endif
-    vec3 sum = vec3(0.0);
-    float xa = x0;
+    // Bit k: piece k begins a run (its angular factor differs from the run's first piece's).
+    uint begins[kMaxPieces / 32];
+    for (int i = 0; i < kMaxPieces / 32; ++i) begins[i] = 0u;
+    vec3 first = vec3(-1.0);
     for (int k = 0; k < pieces; ++k) {
-        float xb = k + 1 == pieces ? x1 : g.tP + h * tan(mix(phi0, phi1, float(k + 1) / float(pieces)));
-        xb = clamp(xb, xa, x1);
-        float phiMid = mix(phi0, phi1, (float(k) + 0.5) / float(pieces));
-        vec3 a = whole ? L.radiant.rgb : lightIntensityToward(L, directionFromLight(m, h, w, phiMid));
-        if (any(greaterThan(a, vec3(0.0)))) sum += a * unitPointSegment(g, xa, xb, lobe);
-        xa = xb;
+        vec3 a = pieceIntensity(L, m, h, w, phi0, phi1, k, pieces, whole);
+        vec3 tolerance = vec3(kRunTolerance * max(max(first.r, first.g), first.b));
+        if (k == 0 || any(greaterThan(abs(a - first), tolerance))) {
+            begins[k >> 5] |= 1u << uint(k & 31);
+            first = a;
+        }
+    }
+    vec3 sum = vec3(0.0);
+    int begin = 0;
+    while (begin < pieces) {
+        // The next run's first piece: the lowest bit above `begin`, else the end.
+        int end = pieces;
+        for (int word = (begin + 1) >> 5; word < (pieces + 31) >> 5; ++word) {
+            uint bits = begins[word];
+            int low = (begin + 1) - 32 * word;  // bits below it belong to this run or an earlier one
+            if (low > 0) bits &= ~((1u << uint(low)) - 1u);
+            if (bits != 0u) {
+                end = min(pieces, 32 * word + findLSB(bits));
+                break;
+            }
+        }
+        vec3 a = pieceIntensity(L, m, h, w, phi0, phi1, begin, pieces, whole);
+        if (any(greaterThan(a, vec3(0.0)))) {
+            float xa = pieceEdge(g, h, x0, x1, phi0, phi1, begin, pieces);
+            float xb = max(pieceEdge(g, h, x0, x1, phi0, phi1, end, pieces), xa);
+            sum += a * unitPointSegment(g, xa, xb, lobe);
+        }
+        begin = end;
     }
     return sum;
 }
@@ -90,7 +143,7 @@ vec3 angularSegment(GpuLight L, vec3 w, RayLightGeometry g, float x0, float x1) 
         if (!(xb > xa)) continue;
         int zone = spotZone(L, cuts, w, g.tP, xa, xb);
         if (zone == kSpotDark) continue;
-        sum += angularPieces(L, w, g, cuts.h, xa, xb, zone == kSpotInside && !cookie);
+        sum += angularPieces(L, w, g, cuts.h, xa, xb, zone == kSpotInside && !cookie, zone == kSpotPenumbra);
     }
     return sum;
 }
@@ -114,7 +167,7 @@ vec3 segmentAirlight(GpuLight L, vec3 w, float x0, float x1) {
         // the table has no lobe, so equal-angle pieces on the front part.
         float h = max(g.h, 1.0e-7 * max(abs(g.tP), 1.0e-20));
         vec2 front = frontOfEmitter(L.position.xyz, w, L.direction.xyz, x0, x1);
-        return front.y > front.x ? angularPieces(L, w, g, h, front.x, front.y, false) : vec3(0.0);
+        return front.y > front.x ? angularPieces(L, w, g, h, front.x, front.y, false, false) : vec3(0.0);
     }
     return unitPointSegment(g, x0, x1, AIRLIGHT_NO_LOBE) * L.radiant.rgb;
 #else

@@ -461,7 +461,8 @@ TEST_F(PolyvolTest, CrossingsCountTheFacesTheDepthClampKeeps) {
 }
 
 // A coloured cookie (stained-glass): the volume follows the cookie's dark texels and the colour is taken
-// per angular piece, about one piece per cookie texel the segment sweeps.
+// per angular piece, about one piece per cookie texel the segment sweeps (runs of one colour:
+// polyvol_cookie_test.cpp).
 TEST_F(PolyvolTest, MatchesTheReferenceUnderAColouredCookie) {
     const viz::scene::Scene scene = viz::scene::makeBuiltinScene("stained-glass");
     expectNearReference(scene, "polyvol", {{"shadow_map", 512}}, 80, 60, 0.03,

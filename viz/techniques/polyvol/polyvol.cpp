@@ -207,7 +207,8 @@ Plan PolyvolTechnique::plan(const scene::Scene& scene, const Settings& settings)
                                   : "no spot light in the scene"});
     p.features.push_back({"COOKIE", hasCookie,
                           hasCookie ? "cookie: dark texels close the volume; colour per angular piece, about one "
-                                      "piece per cookie texel (at most 64)"
+                                      "piece per cookie texel (at most 64), neighbouring pieces of one colour "
+                                      "one segment integral"
                                     : "no spot light has a cookie"});
     p.features.push_back({"SHADOW_MAPS_CUBE", hasPoint || hasArea,
                           hasPoint || hasArea
