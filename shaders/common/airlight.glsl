@@ -276,6 +276,14 @@ vec4 cosineLobeOf(vec3 D, vec3 w, vec3 n) {
     return vec4(0.0, mLength > 0.0 ? dot(m, n) / mLength : 0.0, dot(w, n), 0.0);
 }
 
+// A VPL's lobe softened by its disc of radius rho (lights.glsl, vplDiscRadius) for the segment integral
+// at hDisc = hypot(h, rho): (n.m) h / hDisc sech y' + (n.w) tanh y' = n.(p - D) / r', so the integrand is
+// n.(p - D) / r'^3 with r' = hypot(r, rho), and the lobe's zero (the emitter's plane) stays where it is.
+// (The attenuation then reads exp(-sigma_t r') for exp(-sigma_t r): at most sigma_t rho apart, at the VPL.)
+vec4 softenedLobe(vec4 lobe, float h, float hDisc) {
+    return hDisc > 0.0 ? vec4(lobe.x, lobe.y * (h / hDisc), lobe.zw) : lobe;
+}
+
 float cosineLobeSegment(vec3 D, vec3 w, vec3 n, float x0, float x1, float sigma_s, float sigma_t, float g, float I0) {
     RayLightGeometry geo = rayLightGeometry(D, w);
     return pointSegmentWithLobe(geo.tP, geo.h, x0, x1, sigma_s, sigma_t, g, I0, cosineLobeOf(D, w, n));

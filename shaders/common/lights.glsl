@@ -14,6 +14,48 @@
 layout(std140, binding = kBindingLightsUniform) uniform GpuLightBlock { GpuLight gLights[kMaxGpuLights]; };
 layout(binding = kUnitCookies) uniform sampler2DArray uCookies;
 
+// An area light's VPL stands for the part dA of the emitter around its node. Far from the emitter that
+// is a point; near it a point's kernel n.(p - D) / r^3 spikes (a bright dot in the air and on the walls
+// next to each VPL, which the emitter spreads over its cell). Every technique softens it with the radius
+// rho = sqrt(dA / pi) of a disc of that area. Along an eye ray (the eye at the origin) the VPL is moved
+// away from the ray, from h to hypot(h, rho) (vplAirPosition), so that its distance from every point
+// of the ray is r' = hypot(r, rho): the inverse square, the attenuation exp(-sigma_t r') and the phase
+// angle are that light's, and the emitter's cosine is n.(p - D) / r' (vplSoftening: r / r'). A segment
+// integral takes exactly that as the light at hypot(h, rho) from the ray with its lobe's h term scaled
+// by h / hypot(h, rho) (softenedLobe in airlight.glsl). rho is 0 for every other light.
+float vplDiscRadius(GpuLight L) {
+#ifdef SHADOW_NO_CUBE
+    return 0.0;  // the plan found no point or area light: no VPL, and the code below folds away
+#else
+    return L.info.x == kLightVpl ? L.position.w : 0.0;
+#endif
+}
+
+// r / hypot(r, rho) for a light at distance r (1 where rho is 0: every light but a VPL).
+float vplSoftening(GpuLight L, float r) {
+    float rho = vplDiscRadius(L);
+    return rho > 0.0 ? r / sqrt(r * r + rho * rho) : 1.0;  // rho > 0 only for a VPL, inside the scene
+}
+
+// The position a light takes for the air along the eye ray through p: its own, or a VPL's moved away
+// from the ray to hypot(h, rho) (see vplDiscRadius).
+vec3 vplAirPosition(GpuLight L, vec3 p) {
+    float rho = vplDiscRadius(L);
+    if (!(rho > 0.0) || dot(p, p) == 0.0) return L.position.xyz;
+    vec3 w = normalize(p);
+    vec3 m = dot(L.position.xyz, w) * w - L.position.xyz;  // foot point of the light on the ray - light
+    float h = length(m);
+    // A ray through the VPL: any direction across the ray.
+    vec3 across = h > 0.0 ? m / h : normalize(abs(w.x) < 0.9 ? cross(w, vec3(1.0, 0.0, 0.0)) : cross(w, vec3(0.0, 1.0, 0.0)));
+    return L.position.xyz - across * (sqrt(h * h + rho * rho) - h);
+}
+
+// The direction from p to the light for the phase function of the air at p (eye ray through p).
+vec3 airDirectionToLight(GpuLight L, vec3 p) {
+    if (L.info.x == kLightDirectional) return -L.direction.xyz;
+    return normalize(vplAirPosition(L, p) - p);
+}
+
 // distanceToLight() of a directional light.
 const float kInfiniteDistance = 1.0e30;
 
@@ -168,8 +210,12 @@ vec3 unshadowedIrradiance(GpuLight L, vec3 p, float sigma_t) {
     if (L.info.x == kLightDirectional) return L.radiant.rgb;
     vec3 d = L.position.xyz - p;
     float r2 = dot(d, d);
-    // r -> 0 is a true singularity of the definition; the floor only keeps it finite.
-    return lightIntensity(L, p) * (exp(-sigma_t * sqrt(r2)) / max(r2, 1.0e-20));
+    // r -> 0 is a true singularity of the definition; the floor only keeps it finite (a VPL's disc
+    // softens its own: r' = hypot(r, rho), see vplDiscRadius).
+    float rho = vplDiscRadius(L);
+    float r = sqrt(r2);
+    float r2Soft = r2 + rho * rho;
+    return lightIntensity(L, p) * vplSoftening(L, r) * (exp(-sigma_t * sqrt(r2Soft)) / max(r2Soft, 1.0e-20));
 }
 
 #endif  // LIGHTS_GLSL

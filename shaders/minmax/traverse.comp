@@ -69,7 +69,7 @@ vec3 march(GpuLight L, vec3 w, float d) {
         vec3 x = t * w;
         float V = shadowVisibility(L, x);
         if (V == 0.0) continue;
-        float cosTheta = dot(directionToLight(L, x), w);
+        float cosTheta = dot(airDirectionToLight(L, x), w);
         sum += airlightSample(V, cosTheta, unshadowedIrradiance(L, x, uSigmaT), t, m.dt);
     }
     return sum;
@@ -108,7 +108,7 @@ vec3 marchGamma(GpuLight L, vec3 w, float beta, float d) {
             float s = sin(beta + gamma);
             jacobian = uLightDistance * sinBeta / (s * s);
         }
-        float cosTheta = dot(directionToLight(L, x), w);
+        float cosTheta = dot(airDirectionToLight(L, x), w);
         sum += airlightSample(1.0, cosTheta, unshadowedIrradiance(L, x, uSigmaT), t, jacobian * step);
     }
     return sum;

@@ -88,7 +88,7 @@ void main() {
         litSamples += V;
         if (V == 0.0) continue;
         // cos theta = dot(direction light->point, direction point->eye) = dot(toLight, w).
-        vec3 toLight = directionToLight(L, x);
+        vec3 toLight = airDirectionToLight(L, x);  // a VPL softened by its disc: lights.glsl
         float cosTheta = dot(toLight, w);
 #ifdef EXACT
         float x0 = m.x0;
@@ -103,9 +103,12 @@ void main() {
             sum += V * pointSegmentNaive(L.position.xyz, w, x0, x1, uSigmaS, uSigmaT, 1.0) * lightIntensity(L, x);
 #else
             if (L.info.x == kLightVpl) {
-                // An area light's VPL: its cosine lobe integrated exactly over the interval too.
-                sum += V * cosineLobeSegment(L.position.xyz, w, L.direction.xyz, x0, x1, uSigmaS, uSigmaT, uG, 1.0) *
-                       L.radiant.rgb;
+                // An area light's VPL: its cosine lobe integrated exactly over the interval too, softened
+                // by its disc near the emitter (lights.glsl, vplDiscRadius).
+                RayLightGeometry g = rayLightGeometry(L.position.xyz, w);
+                float hDisc = scaledHypot(g.h, vplDiscRadius(L));
+                vec4 lobe = softenedLobe(cosineLobeOf(L.position.xyz, w, L.direction.xyz), g.h, hDisc);
+                sum += V * pointSegmentWithLobe(g.tP, hDisc, x0, x1, uSigmaS, uSigmaT, uG, 1.0, lobe) * L.radiant.rgb;
             } else {
                 RayLightGeometry g = rayLightGeometry(L.position.xyz, w);
                 sum += V * pointSegment(g.tP, g.h, x0, x1, uSigmaS, uSigmaT, uG, 1.0) * lightIntensity(L, x);

@@ -118,8 +118,9 @@ vec3 shade(GpuLight L, vec3 w, float t, float dt) {
 #ifdef COOKIE
     if (spot) cookie = spotCookie(L, dirFromLight);
 #endif
-    // A VPL (one node of an area light) emits a cosine lobe around the emitter normal.
-    if (type == kLightVpl) angular = max(0.0, dot(L.direction.xyz, dirFromLight));
+    // A VPL (one node of an area light) emits a cosine lobe around the emitter normal, softened by its
+    // disc near the emitter (lights.glsl, vplDiscRadius), as its distance and phase angle below.
+    if (type == kLightVpl) angular = max(0.0, dot(L.direction.xyz, dirFromLight)) * vplSoftening(L, length(fromLight));
     float V = 1.0;
 #ifdef SHADOW
     V = visibility(L, p);
@@ -145,13 +146,14 @@ vec3 shade(GpuLight L, vec3 w, float t, float dt) {
 #ifdef NOISE
     noise = 4.0 * n1 * n2;  // mean about 1: noise modulates the density, it does not dim the medium
 #endif
-    // cos theta = dot(direction light->point, direction point->eye) = dot(dirFromLight, -w).
-    float cosTheta = dot(dirFromLight, -w);
+    // cos theta = dot(direction light->point, direction point->eye) = dot(dirFromLight, -w); a VPL's
+    // light for the air sits hypot(h, rho) from the ray (lights.glsl, vplAirPosition).
+    float cosTheta = dot(type == kLightVpl ? -airDirectionToLight(L, p) : dirFromLight, -w);
     vec3 E;
     if (directional) {
         E = L.radiant.rgb;
     } else {
-        vec3 toLight = L.position.xyz - p;
+        vec3 toLight = vplAirPosition(L, p) - p;
         float r2 = dot(toLight, toLight);
 #ifdef SLAB_EQUIANGULAR
         E = L.radiant.rgb * angular * cookie * exp(-uSigmaT * sqrt(r2));
@@ -208,7 +210,9 @@ vec3 slabIntegral(GpuLight L, vec3 w, float t0, float t1, float d) {
         RayLightGeometry g = rayLightGeometry(L.position.xyz, w);
         tP = g.tP;
         float s0 = t0 - tP, s1 = t1 - tP;
-        h = max(g.h, max(AIRLIGHT_MIN_RELATIVE_H * max(abs(s0), abs(s1)), AIRLIGHT_MIN_ABSOLUTE_H));
+        // A VPL's disc near the emitter (lights.glsl, vplDiscRadius) raises its distance to hypot(h, rho)
+        // (its cosine is softened in shade()).
+        h = max(scaledHypot(g.h, vplDiscRadius(L)), max(AIRLIGHT_MIN_RELATIVE_H * max(abs(s0), abs(s1)), AIRLIGHT_MIN_ABSOLUTE_H));
         float subtended = atan(h * (s1 - s0), h * h + s0 * s1);
         a0 = atan(s0 / h);
         // Under a cookie the nodes follow its texels, as polyvol's pieces do: a ray passing the apex

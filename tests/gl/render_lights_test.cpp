@@ -256,6 +256,9 @@ TEST_F(RenderLights, AreaLightBecomesVplsThatIntegrateTheEmitter) {
     EXPECT_NO_THROW(GpuLights(s, glm::dvec3(0.0), 16));
 }
 
+// A VPL's E: its weight L_e dA times the emitter's cosine, softened by the disc of area dA it stands for
+// (shaders/common/lights.glsl, vplDiscRadius): L_e dA n.(p - D) exp(-sigma_t r') / r'^3, r' = hypot(r, rho),
+// rho^2 = dA / pi. The points on the emitter's axis at a few rho show the softening; the far ones the point.
 TEST_F(RenderLights, VplIrradianceHasTheCosineLobe) {
     scene::Scene s;
     s.meshes.push_back(floorQuad(3.0));
@@ -270,16 +273,19 @@ TEST_F(RenderLights, VplIrradianceHasTheCosineLobe) {
     GpuLights lights(s, glm::dvec3(0.0), 1);
     ASSERT_EQ(lights.count(), 1);
     const float sigma_t = 0.1f;
-    const std::vector<glm::dvec3> world = {{0.0, 0.0, 0.0}, {1.5, 0.5, -0.7}, {0.3, 2.5, 0.0}};
+    const std::vector<glm::dvec3> world = {{0.0, 0.0, 0.0}, {1.5, 0.5, -0.7}, {0.3, 2.5, 0.0}, {0.0, 1.9, 0.0},
+                                           {0.05, 1.75, 0.02}};
     std::vector<glm::vec4> points;
     for (const auto& p : world) points.push_back(glm::vec4(glm::vec3(p), 1.0f));
     const auto out = probe(gpuScene, lights, 1, 0, points, 4 * int(points.size()), sigma_t);
     const double dA = 0.2 * 0.2;  // one node: the whole rectangle
+    const double rho2 = dA / std::numbers::pi;
     for (std::size_t i = 0; i < world.size(); ++i) {
         const glm::dvec3 d = world[i] - area.position;
         const double r = glm::length(d);
-        const double cosE = std::max(0.0, glm::dot(area.direction, d / r));
-        const glm::dvec3 expected = area.radiance * dA * cosE * std::exp(-double(sigma_t) * r) / (r * r);
+        const double soft = std::sqrt(r * r + rho2);
+        const double normal = std::max(0.0, glm::dot(area.direction, d));
+        const glm::dvec3 expected = area.radiance * dA * normal * std::exp(-double(sigma_t) * soft) / (soft * soft * soft);
         for (int c = 0; c < 3; ++c) {
             EXPECT_NEAR(out[4 * i + 1][c], expected[c], 1e-5 * glm::length(area.radiance * dA) + 1e-6 * expected[c]);
         }
@@ -287,6 +293,8 @@ TEST_F(RenderLights, VplIrradianceHasTheCosineLobe) {
     }
     // The point above the emitter is behind it: no emission.
     EXPECT_EQ(glm::vec3(out[4 * 2 + 1]), glm::vec3(0.0f));
+    // 0.1 below the emitter (rho = 0.113) a point light's E would be (1 + rho^2 / r^2)^(3/2) = 3.4 times higher.
+    EXPECT_LT(out[4 * 3 + 1].x, 0.5 * float(area.radiance.x * dA / 0.01));
 }
 
 }  // namespace

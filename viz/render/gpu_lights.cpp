@@ -208,7 +208,9 @@ LightDescription describeLights(const scene::Scene& scene, glm::dvec3 eye, int a
                         }
                         GpuLightCpu v = g;
                         const glm::dvec3 p = pos + s * light.halfU + t * light.halfV;
-                        v.position = glm::vec4(glm::vec3(p), 1.0f);
+                        // w: the radius of the disc of area dA the VPL stands for near the emitter
+                        // (shaders/common/lights.glsl, vplDiscRadius).
+                        v.position = glm::vec4(glm::vec3(p), float(std::sqrt(dA / std::numbers::pi)));
                         v.radiant = glm::vec4(glm::vec3(le * dA), 0.0f);
                         v.info = glm::ivec4(hd::kLightVpl, -1, layout.vplCubes++, static_cast<int>(li));
                         const ShadowRange r = rangeFrom(p, center, radius);
