@@ -90,7 +90,7 @@ gl::Texture uploadCookies(const scene::Scene& scene, const std::map<int, int>& l
 }  // namespace
 
 
-LightDescription describeLights(const scene::Scene& scene, glm::dvec3 eye, int areaSamples) {
+LightDescription describeLights(const scene::Scene& scene, glm::dvec3 eye, int areaSamples, double vplDisc) {
     if (areaSamples < 1) {
         throw InputError("area_samples must be at least 1 (got " + std::to_string(areaSamples) + ")");
     }
@@ -208,9 +208,9 @@ LightDescription describeLights(const scene::Scene& scene, glm::dvec3 eye, int a
                         }
                         GpuLightCpu v = g;
                         const glm::dvec3 p = pos + s * light.halfU + t * light.halfV;
-                        // w: the radius of the disc of area dA the VPL stands for near the emitter
-                        // (shaders/common/lights.glsl, vplDiscRadius).
-                        v.position = glm::vec4(glm::vec3(p), float(std::sqrt(dA / std::numbers::pi)));
+                        // w: the radius of the disc of area vplDisc dA that softens the VPL near the
+                        // emitter (shaders/common/lights.glsl, vplDiscRadius).
+                        v.position = glm::vec4(glm::vec3(p), float(std::sqrt(std::max(vplDisc, 0.0) * dA / std::numbers::pi)));
                         v.radiant = glm::vec4(glm::vec3(le * dA), 0.0f);
                         v.info = glm::ivec4(hd::kLightVpl, -1, layout.vplCubes++, static_cast<int>(li));
                         const ShadowRange r = rangeFrom(p, center, radius);
@@ -227,8 +227,8 @@ LightDescription describeLights(const scene::Scene& scene, glm::dvec3 eye, int a
     return out;
 }
 
-GpuLights::GpuLights(const scene::Scene& scene, glm::dvec3 eye, int areaSamples) : mEye(eye) {
-    LightDescription described = describeLights(scene, eye, areaSamples);
+GpuLights::GpuLights(const scene::Scene& scene, glm::dvec3 eye, int areaSamples, double vplDisc) : mEye(eye) {
+    LightDescription described = describeLights(scene, eye, areaSamples, vplDisc);
     mLights = std::move(described.lights);
     mLayout = described.layout;
     mCookies = uploadCookies(scene, described.cookieLayers);

@@ -35,13 +35,16 @@ struct LightDescription {
     ShadowLayout layout;
     std::map<int, int> cookieLayers;  // scene texture -> layer of the cookie array, in first-use order
 };
-LightDescription describeLights(const scene::Scene& scene, glm::dvec3 eye, int areaSamples);
+// vplDisc: each VPL is softened near the emitter by a disc of vplDisc times its area dA (the `vpl_disc`
+// parameter; 0: point VPLs; shaders/common/lights.glsl, vplDiscRadius).
+LightDescription describeLights(const scene::Scene& scene, glm::dvec3 eye, int areaSamples, double vplDisc = 1.0);
 
 class GpuLights {
 public:
-    // areaSamples >= 1 nodes per axis for each area light. Throws InputError for areaSamples < 1 and
-    // when the lights (VPLs included) exceed hd::kMaxGpuLights.
-    GpuLights(const scene::Scene& scene, glm::dvec3 eye, int areaSamples);
+    // areaSamples >= 1 nodes per axis for each area light, each node's VPL softened by a disc of vplDisc
+    // times its area. Throws InputError for areaSamples < 1 and when the lights (VPLs included) exceed
+    // hd::kMaxGpuLights.
+    GpuLights(const scene::Scene& scene, glm::dvec3 eye, int areaSamples, double vplDisc = 1.0);
 
     // Binds the light buffer as SSBO at kBindingLights and as uniform block at kBindingLightsUniform
     // (what common/lights.glsl reads), and the cookie array at kUnitCookies.

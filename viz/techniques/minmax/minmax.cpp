@@ -63,6 +63,7 @@ const ParamTable<MinmaxSettings>& minmaxParams() {
                       "by node", 0, 0, 100000, true})
             .add(&S::shadowMap, render::SceneViewPasses::params(), "shadow_map")
             .declare(render::SceneViewPasses::params(), "area_samples")
+            .declare(render::SceneViewPasses::params(), "vpl_disc")
             .add(&S::forceFeatures, forceFeaturesParam());
     VIZ_CHECK(table.missing().empty(), "minmax declares a shared parameter the shared passes lack");
     return table;

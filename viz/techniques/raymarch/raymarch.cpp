@@ -39,6 +39,7 @@ const ParamTable<MarchSettings>& marchParams() {
                                   "polyvol's triangles", 0, 0, 1, true, {"nearest", "mesh"}})
             .add(&S::shadowMap, render::SceneViewPasses::params(), "shadow_map")
             .add(&S::areaSamples, render::SceneViewPasses::params(), "area_samples")
+            .declare(render::SceneViewPasses::params(), "vpl_disc")
             .add(&S::forceFeatures, forceFeaturesParam());
     VIZ_CHECK(table.missing().empty(), "raymarch declares a shared parameter the shared passes lack");
     return table;

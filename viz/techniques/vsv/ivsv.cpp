@@ -95,7 +95,7 @@ IvsvTechnique::IvsvTechnique()
          "naive: a cube shadow map per VPL",
          {"mode", "points", "fill_levels", "shadow_map"}, {kPointCloud, kIsmRaw, kIsm, "ivsv.naive.shadow_map"}, 1},
         {kStageSurface, "Camera view",
-         "the shared surface term: its own shadow maps, distance d and surface radiance", {"area_samples"},
+         "the shared surface term: its own shadow maps, distance d and surface radiance", {"area_samples", "vpl_disc"},
          {"ivsv.shadow_map", "ivsv.distance", "ivsv.surface"}, 1},
         {kStageVoxelize, "Rectify",
          "every VPL's shadow map resampled into its own epipolar grid tile (one pass, or one per VPL for naive)",
