@@ -80,7 +80,7 @@ struct GpuMaterial {
 // One light. All positions are eye-relative world space (world translated so the eye is at the origin,
 // axes unchanged; the translation is done in double on the CPU).
 struct GpuLight {
-    vec4 position;     // xyz: point, spot, VPL position; w: a VPL's disc radius sqrt(dA / pi)
+    vec4 position;     // xyz: point, spot, VPL position; w: a VPL's disc radius sqrt(vpl_disc dA / pi)
                        // (lights.glsl, vplDiscRadius), 1 for other lights
     vec4 direction;    // xyz unit: spot axis / directional travel direction / VPL emitter normal
     vec4 radiant;      // rgb: colour * intensity (point, spot, directional) or VPL weight L_e(uv) * dA

@@ -17,7 +17,8 @@ layout(binding = kUnitCookies) uniform sampler2DArray uCookies;
 // An area light's VPL stands for the part dA of the emitter around its node. Far from the emitter that
 // is a point; near it a point's kernel n.(p - D) / r^3 spikes (a bright dot in the air and on the walls
 // next to each VPL, which the emitter spreads over its cell). Every technique softens it with the radius
-// rho = sqrt(dA / pi) of a disc of that area. Along an eye ray (the eye at the origin) the VPL is moved
+// rho = sqrt(vpl_disc dA / pi) of a disc of vpl_disc times that area (the shared parameter, default 1;
+// 0: points). Along an eye ray (the eye at the origin) the VPL is moved
 // away from the ray, from h to hypot(h, rho) (vplAirPosition), so that its distance from every point
 // of the ray is r' = hypot(r, rho): the inverse square, the attenuation exp(-sigma_t r') and the phase
 // angle are that light's, and the emitter's cosine is n.(p - D) / r' (vplSoftening: r / r'). A segment
