@@ -31,6 +31,7 @@ uniform bool uLinear;        // scan the leaves instead of walking the tree (tra
 uniform bool uWriteCoords;   // store (row, beta, cEnd, d) for the CPU mirror
 uniform int uPieces;         // spot: gamma pieces across the cone with their own A_spot * cookie
 uniform int uMarchSamples;   // brute-force samples per ray
+uniform int uVplSamples;     // the same for an area light's VPL (softened by its disc: smooth)
 uniform vec4 uEpipoles;      // xy epipole, zw anti-epipole, GL pixel coordinates (y up); far away if none
 uniform float uEpipoleRadius;
 #include "common/medium.glsl"  // uSigmaS, uSigmaT, uG
@@ -53,7 +54,7 @@ const float uAxisReach = 3.0e38;
 #endif
 
 // Brute force for lights without an epipolar path (raymarch's midpoint rule): uMarchSamples samples
-// uniform in t over [0, d] (or, with a far camera, by the light: placeSample), each the integrand
+// (uVplSamples for a VPL) uniform in t over [0, d] (or, with a far camera, by the light: placeSample), each the integrand
 // sigma_s p E V exp(-sigma_t t) dt at its point. No loops inside the loop: llvmpipe ends all loops of an
 // invocation together after 65535 iterations.
 vec3 march(GpuLight L, vec3 w, float d) {
@@ -62,9 +63,10 @@ vec3 march(GpuLight L, vec3 w, float d) {
     span.y = reachAlongRay(d, uSigmaT);  // litInterval's reach (60 mean free paths)
 #endif
     vec3 sum = vec3(0.0);
-    for (int i = 0; i < uMarchSamples; ++i) {
+    int samples = L.info.x == kLightVpl ? uVplSamples : uMarchSamples;
+    for (int i = 0; i < samples; ++i) {
         WORK_COUNT(kWorkRaySamples, 1);
-        MarchSample m = placeSample(L, w, span, i, uMarchSamples, 0.5, uFarSpan);
+        MarchSample m = placeSample(L, w, span, i, samples, 0.5, uFarSpan);
         float t = m.t;
         vec3 x = t * w;
         float V = shadowVisibility(L, x);

@@ -53,8 +53,12 @@ const ParamTable<MinmaxSettings>& minmaxParams() {
                                   "at the cones)", 64, 1, 128, true})
             .add(&S::epipoleRadius, {"epipole_radius", "pixels around the (anti-)epipole marched by brute force", 4, 0,
                                      1000, false})
-            .add(&S::marchSamples, {"march_samples", "brute-force samples per ray (near the epipole, and lights "
-                                    "without epipolar path)", 512, 1, 16384, true})
+            .add(&S::marchSamples, {"march_samples", "brute-force samples per ray (near the epipole, and point "
+                                    "lights with point_lights=march)", 512, 1, 16384, true})
+            // An area light's VPL is softened by its disc (vpl_disc): its integrand is smooth on the disc's
+            // scale, and 64 samples come within 0.1 % of a converged march on tv-room (README, "Area lights").
+            .add(&S::vplSamples, {"vpl_samples", "brute-force samples per ray for each area-light VPL", 64, 1,
+                                  16384, true})
             .declare({"mip_levels", "mipmap passes to run (0: all); fewer stops the frame after the mipmap stage", 0,
                       0, 13, true})
             .declare(pickParam('x', "slice row, tree walk and ray chart"))
@@ -86,7 +90,7 @@ MinmaxTechnique::MinmaxTechnique()
          {"mip_levels"}, {kTree, kPyramid}, 1, "mip_levels"},
         {kStageTraverse, "Traverse", "per pixel: walk the slice's tree, integrate the lit segments",
          {"integrand", "rank", "slice_blend", "traversal", "point_lights", "spot_pieces", "epipole_radius", "march_samples",
-          "pick_x", "pick_y", "trace_steps", "force_features"},
+          "vpl_samples", "pick_x", "pick_y", "trace_steps", "force_features"},
          {kAirlight, kVisited, kNearMask, kRayCoords, kTrace}, 1, "trace_steps"},
         render::SceneViewPasses::composeStage("minmax"),
     };
@@ -284,8 +288,8 @@ Plan MinmaxTechnique::plan(const scene::Scene& scene, const Settings& settings) 
     const bool brute = area || (hasPoint && marchPoints);
     std::string bruteWhy = "every light has an epipolar path (spot, directional, point)";
     if (area)
-        bruteWhy = "area lights: each VPL (a cube-mapped point-like light of its own) is marched per pixel, not "
-                   "rectified";
+        bruteWhy = "area lights: each VPL (a cube-mapped point-like light of its own) is marched per pixel with " +
+                   std::to_string(s.vplSamples) + " samples (vpl_samples), not rectified";
     if (hasPoint && marchPoints) bruteWhy = (area ? bruteWhy + "; " : std::string()) + pointWhy;
     p.features.push_back({"BRUTE_FORCE_LIGHTS", brute, bruteWhy});
     const bool cubes = render::hasLightOfType(scene, scene::LightType::Point) ||

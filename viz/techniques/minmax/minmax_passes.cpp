@@ -231,6 +231,7 @@ void MinmaxTechnique::traverse(const gl::Program& program, const scene::Scene& s
     program.set("uLinear", s.linear);
     program.set("uPieces", s.spotPieces);
     program.set("uMarchSamples", s.marchSamples);
+    program.set("uVplSamples", s.vplSamples);
     if (mFarRays) {
         program.set("uFarSpan", float(scene::farSpan(scene)));
         program.set("uAxisReach", float(scene::depthOfInterest(scene)));

@@ -124,6 +124,7 @@ struct MinmaxSettings {
     int spotPieces = 0;
     double epipoleRadius = 0.0;
     int marchSamples = 0;
+    int vplSamples = 0;
     int shadowMap = 0;
     bool forceFeatures = false;
 };
