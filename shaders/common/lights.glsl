@@ -47,7 +47,8 @@ vec3 vplAirPosition(GpuLight L, vec3 p) {
     vec3 m = dot(L.position.xyz, w) * w - L.position.xyz;  // foot point of the light on the ray - light
     float h = length(m);
     // A ray through the VPL: any direction across the ray.
-    vec3 across = h > 0.0 ? m / h : normalize(abs(w.x) < 0.9 ? cross(w, vec3(1.0, 0.0, 0.0)) : cross(w, vec3(0.0, 1.0, 0.0)));
+    vec3 across = h > 0.0 ? m / h
+                          : normalize(abs(w.x) < 0.9 ? cross(w, vec3(1.0, 0.0, 0.0)) : cross(w, vec3(0.0, 1.0, 0.0)));
     return L.position.xyz - across * (sqrt(h * h + rho * rho) - h);
 }
 

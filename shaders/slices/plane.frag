@@ -212,7 +212,8 @@ vec3 slabIntegral(GpuLight L, vec3 w, float t0, float t1, float d) {
         float s0 = t0 - tP, s1 = t1 - tP;
         // A VPL's disc near the emitter (lights.glsl, vplDiscRadius) raises its distance to hypot(h, rho)
         // (its cosine is softened in shade()).
-        h = max(scaledHypot(g.h, vplDiscRadius(L)), max(AIRLIGHT_MIN_RELATIVE_H * max(abs(s0), abs(s1)), AIRLIGHT_MIN_ABSOLUTE_H));
+        h = max(scaledHypot(g.h, vplDiscRadius(L)),
+                max(AIRLIGHT_MIN_RELATIVE_H * max(abs(s0), abs(s1)), AIRLIGHT_MIN_ABSOLUTE_H));
         float subtended = atan(h * (s1 - s0), h * h + s0 * s1);
         a0 = atan(s0 / h);
         // Under a cookie the nodes follow its texels, as polyvol's pieces do: a ray passing the apex

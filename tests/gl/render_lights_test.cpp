@@ -285,7 +285,8 @@ TEST_F(RenderLights, VplIrradianceHasTheCosineLobe) {
         const double r = glm::length(d);
         const double soft = std::sqrt(r * r + rho2);
         const double normal = std::max(0.0, glm::dot(area.direction, d));
-        const glm::dvec3 expected = area.radiance * dA * normal * std::exp(-double(sigma_t) * soft) / (soft * soft * soft);
+        const glm::dvec3 expected =
+            area.radiance * dA * normal * std::exp(-double(sigma_t) * soft) / (soft * soft * soft);
         for (int c = 0; c < 3; ++c) {
             EXPECT_NEAR(out[4 * i + 1][c], expected[c], 1e-5 * glm::length(area.radiance * dA) + 1e-6 * expected[c]);
         }

@@ -1,7 +1,7 @@
 // An area light's VPLs softened by the disc of emitter each stands for (shaders/common/lights.glsl,
-// vplDiscRadius; the shared parameter vpl_disc), checked against the reference, which integrates the emitter over its area and shares
-// no code with the VPLs: on tv-room the point VPLs' 1/r^2 dots next to the screen were most of every
-// technique's error.
+// vplDiscRadius; the shared parameter vpl_disc), checked against the reference, which integrates the
+// emitter over its area and shares no code with the VPLs: on tv-room the point VPLs' 1/r^2 dots next to
+// the screen were most of every technique's error.
 #include <gtest/gtest.h>
 
 #include <cstdio>

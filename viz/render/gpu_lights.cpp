@@ -210,7 +210,8 @@ LightDescription describeLights(const scene::Scene& scene, glm::dvec3 eye, int a
                         const glm::dvec3 p = pos + s * light.halfU + t * light.halfV;
                         // w: the radius of the disc of area vplDisc dA that softens the VPL near the
                         // emitter (shaders/common/lights.glsl, vplDiscRadius).
-                        v.position = glm::vec4(glm::vec3(p), float(std::sqrt(std::max(vplDisc, 0.0) * dA / std::numbers::pi)));
+                        const double discRadius = std::sqrt(std::max(vplDisc, 0.0) * dA / std::numbers::pi);
+                        v.position = glm::vec4(glm::vec3(p), float(discRadius));
                         v.radiant = glm::vec4(glm::vec3(le * dA), 0.0f);
                         v.info = glm::ivec4(hd::kLightVpl, -1, layout.vplCubes++, static_cast<int>(li));
                         const ShadowRange r = rangeFrom(p, center, radius);
