@@ -54,8 +54,8 @@ const float uAxisReach = 3.0e38;
 #endif
 
 // Brute force for lights without an epipolar path (raymarch's midpoint rule): uMarchSamples samples
-// (uVplSamples for a VPL) uniform in t over [0, d] (or, with a far camera, by the light: placeSample), each the integrand
-// sigma_s p E V exp(-sigma_t t) dt at its point. No loops inside the loop: llvmpipe ends all loops of an
+// (uVplSamples for a VPL) uniform in t over [0, d] (or, with a far camera, by the light: placeSample),
+// each the integrand sigma_s p E V exp(-sigma_t t) dt at its point. No loops inside the loop: llvmpipe ends all loops of an
 // invocation together after 65535 iterations.
 vec3 march(GpuLight L, vec3 w, float d) {
     vec2 span = vec2(0.0, d);

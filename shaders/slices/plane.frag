@@ -147,13 +147,14 @@ vec3 shade(GpuLight L, vec3 w, float t, float dt) {
     noise = 4.0 * n1 * n2;  // mean about 1: noise modulates the density, it does not dim the medium
 #endif
     // cos theta = dot(direction light->point, direction point->eye) = dot(dirFromLight, -w); a VPL's
-    // light for the air sits hypot(h, rho) from the ray (lights.glsl, vplAirPosition).
-    float cosTheta = dot(type == kLightVpl ? -airDirectionToLight(L, p) : dirFromLight, -w);
+    // light for the air sits hypot(h, rho) from the ray (lights.glsl, vplAirPosition): its phase angle and
+    // distance both from there, placed once.
+    vec3 toLight = directional ? vec3(0.0) : vplAirPosition(L, p) - p;
+    float cosTheta = dot(type == kLightVpl ? -normalize(toLight) : dirFromLight, -w);
     vec3 E;
     if (directional) {
         E = L.radiant.rgb;
     } else {
-        vec3 toLight = vplAirPosition(L, p) - p;
         float r2 = dot(toLight, toLight);
 #ifdef SLAB_EQUIANGULAR
         E = L.radiant.rgb * angular * cookie * exp(-uSigmaT * sqrt(r2));

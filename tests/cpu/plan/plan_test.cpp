@@ -192,12 +192,6 @@ TEST(StageOfIntermediate, ExactIdsAndNumberedSiblingsOnly) {
     EXPECT_EQ(stageOfIntermediate(stages, "t.march"), -1);
 }
 
-}  // namespace
-}  // namespace viz
-
-namespace viz {
-namespace {
-
 // The report measures each technique as a user runs it: both of its sweeps, the quick one too, hold the
 // technique's default settings (the sweep may set what the report must not time, such as slices'
 // recording of one pixel's planes, to a value that changes no image).
