@@ -9,6 +9,7 @@
 #define AIRLIGHT_GLSL
 
 #include "common/constants.glsl"
+#include "common/solid_angle.glsl"
 #include "common/sort.glsl"
 #include "common/work_counters.glsl"
 
@@ -119,8 +120,25 @@ RayLightGeometry rayLightGeometry(vec3 D, vec3 w) {
 // light's VPL is vec4(0, n . m, n . w, 0) (cosineLobeSegment).
 const vec4 AIRLIGHT_NO_LOBE = vec4(1.0, 0.0, 0.0, 0.0);
 
+// An area light's VPL as its cell of the emitter (lights.glsl, vplHasCell) inside the segment integral
+// (GPU only: viz/shared/airlight.h has no cells; tests/gl/vpl_cell_test.cpp checks it against an
+// independent quadrature). Positions relative to the foot point F of the VPL's node on the ray, so that
+// the point at s along the ray from F is s w. The angular factor becomes A(y) = Omega_cell(s w) r^2 / dA
+// (r: the distance to the node, h cosh y): times the point kernel's I0 / r^2 with I0 = L_e dA that is
+// L_e Omega_cell, the cosine lobe far from the cell and bounded next to it. area 0: no cell.
+struct AirlightCell {
+    vec3 corner;  // a corner of the cell - F
+    vec3 edgeU;   // its edges
+    vec3 edgeV;
+    vec3 normal;  // unit, toward the lit side
+    vec3 w;       // the ray's unit direction
+    float area;   // |edgeU x edgeV|; 0: no cell
+};
+const AirlightCell AIRLIGHT_NO_CELL = AirlightCell(vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), 0.0);
+
 // p(cos) * exp(-nu expm1(eta)) / cosh(y) * A(y), y = y0 + eta; 1 -+ cos = 1 +- tanh(y) from e = exp(-|y|).
-float pointIntegrand(float eta, float y0, float nu, float g, vec4 lobe) {
+// h: the light-to-ray distance the segment uses (a cell's A(y) needs the position along the ray).
+float pointIntegrand(float eta, float y0, float nu, float g, vec4 lobe, float h, AirlightCell cell) {
     float y = y0 + eta;
     float e = exp(-abs(y));
     float e2 = e * e;
@@ -128,15 +146,23 @@ float pointIntegrand(float eta, float y0, float nu, float g, vec4 lobe) {
     float oneMinusCos = y >= 0.0 ? 2.0 / (1.0 + e2) : 2.0 * e2 / (1.0 + e2);
     float onePlusCos = y >= 0.0 ? 2.0 * e2 / (1.0 + e2) : 2.0 / (1.0 + e2);
     float tanhY = (y >= 0.0 ? 1.0 : -1.0) * ((1.0 - e2) / (1.0 + e2));
-    float linear = max(0.0, lobe.x + lobe.y * sech + lobe.z * tanhY);
-    float clipped = min(linear, 1.0);
-    float angular = lobe.w > 0.0 ? clipped * clipped : linear;
+    float angular;
+    if (cell.area > 0.0) {
+        if (!(e > 0.0)) return 0.0;  // sech = 0 there: nothing to add, and sinh would overflow
+        float s = h * ((y >= 0.0 ? 1.0 : -1.0) * (1.0 - e2) / (2.0 * e));  // h sinh(y)
+        float omega = parallelogramSolidAngle(cell.corner - s * cell.w, cell.edgeU, cell.edgeV, cell.normal, cell.area);
+        angular = omega * ((h * h + s * s) / cell.area);
+    } else {
+        float linear = max(0.0, lobe.x + lobe.y * sech + lobe.z * tanhY);
+        float clipped = min(linear, 1.0);
+        angular = lobe.w > 0.0 ? clipped * clipped : linear;
+    }
     float attenuation = exp(-nu * stableExpm1(eta));
     return phaseHGFromCosTerms(oneMinusCos, onePlusCos, g) * attenuation * sech * angular;
 }
 
 // 8-point Gauss-Legendre over eta in [a, b]; 0 for an empty panel.
-float pointPanel(float a, float b, float y0, float nu, float g, vec4 lobe) {
+float pointPanel(float a, float b, float y0, float nu, float g, vec4 lobe, float h, AirlightCell cell) {
     if (!(b > a)) return 0.0;
     WORK_COUNT(kWorkQuadratureNodes, AIRLIGHT_NODES);
     float half_ = 0.5 * (b - a);
@@ -144,8 +170,8 @@ float pointPanel(float a, float b, float y0, float nu, float g, vec4 lobe) {
     float sum = 0.0;
     for (int k = 0; k < AIRLIGHT_NODES / 2; ++k) {
         float dx = half_ * AIRLIGHT_GL_X[k];
-        sum += AIRLIGHT_GL_W[k] *
-               (pointIntegrand(mid - dx, y0, nu, g, lobe) + pointIntegrand(mid + dx, y0, nu, g, lobe));
+        sum += AIRLIGHT_GL_W[k] * (pointIntegrand(mid - dx, y0, nu, g, lobe, h, cell) +
+                                   pointIntegrand(mid + dx, y0, nu, g, lobe, h, cell));
     }
     return sum * half_;
 }
@@ -153,9 +179,10 @@ float pointPanel(float a, float b, float y0, float nu, float g, vec4 lobe) {
 // L(x0, x1) = int_x0^x1 sigma_s p(cos) I0 exp(-sigma_t (x + r(x))) / r(x)^2 dx, x1 may be +inf.
 // Anchored at x0 (docs/numerics.md#anchored-point-light-segment); see viz/shared/airlight.h for the
 // derivation, the h floor for rays through the light, and the quadrature windows. pointSegmentWithLobe
-// multiplies the integrand by the angular factor A(y).
-float pointSegmentWithLobe(float tP, float h, float x0, float x1, float sigma_s, float sigma_t, float g, float I0,
-                           vec4 lobe) {
+// multiplies the integrand by the angular factor A(y); pointSegmentCell takes a VPL's cell's instead
+// (AirlightCell; the lobe then only ends the segment at the emitter's plane).
+float pointSegmentCell(float tP, float h, float x0, float x1, float sigma_s, float sigma_t, float g, float I0,
+                       vec4 lobe, AirlightCell cell) {
     if (!(x1 > x0) || !(sigma_s > 0.0) || !(I0 > 0.0)) return 0.0;
 
     // Positions relative to the foot point P; s1 = +inf for the sky.
@@ -222,16 +249,34 @@ float pointSegmentWithLobe(float tP, float h, float x0, float x1, float sigma_s,
     }
     float depth2 = nu > 0.0 ? stableLog1p(2.0 / nu) : hi;
     float depth6 = nu > 0.0 ? stableLog1p(6.0 / nu) : hi;
-    float breaks[12] = float[12](split - 3.0 * a, split - a, split, split + a, split + 3.0 * a,
+    float breaks[18] = float[18](split - 3.0 * a, split - a, split, split + a, split + 3.0 * a,
                                  centre1 - 3.0 * a, centre1 - a, centre1, centre1 + a, centre1 + 3.0 * a,
-                                 depth2, depth6);
-    for (int i = 0; i < 12; ++i) {
+                                 depth2, depth6, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
+    int count = 12;
+    // A cell's factor turns from the near field (Omega_cell up to 2 pi) to the cosine lobe where the
+    // distance from the node passes the cell's size c. A ray that passes the node closer than c / 4 meets
+    // that turn inside the wide panels beside its closest approach (they reach |s| = h sinh(3 a), 200 h),
+    // so it gets breaks where |s| = c / 4, c and 4 c on both sides of the foot point (a ray through the
+    // node was 4.4e-4 off without them). Further away the turn lies within a few h of the closest
+    // approach, where the panels are fine (rays 0.3 to 2 cells from the node: 3.4e-6 at worst,
+    // tests/gl/vpl_cell_test.cpp), and a point light or a cell-less VPL keeps its 12 breaks.
+    float c = sqrt(cell.area);
+    if (cell.area > 0.0 && h < 0.25 * c) {
+        for (int i = 0; i < 3; ++i) {
+            float yc = stableAsinh(c * (0.25 * float(1 << (2 * i))) / h);
+            breaks[12 + 2 * i] = yc - y0;
+            breaks[13 + 2 * i] = -yc - y0;
+        }
+        count = 18;
+    }
+    for (int i = 0; i < count; ++i) {
         breaks[i] = clamp(breaks[i], lo, hi);
     }
-    SORT_ASCENDING(breaks, 12);
-    float sum = pointPanel(lo, breaks[0], y0, nu, g, lobe) + pointPanel(breaks[11], hi, y0, nu, g, lobe);
-    for (int i = 0; i < 11; ++i) {
-        sum += pointPanel(breaks[i], breaks[i + 1], y0, nu, g, lobe);
+    SORT_ASCENDING(breaks, count);
+    float sum = pointPanel(lo, breaks[0], y0, nu, g, lobe, h, cell) +
+                pointPanel(breaks[count - 1], hi, y0, nu, g, lobe, h, cell);
+    for (int i = 0; i < count - 1; ++i) {
+        sum += pointPanel(breaks[i], breaks[i + 1], y0, nu, g, lobe, h, cell);
     }
     if (!(sum > 0.0)) return 0.0;
 
@@ -239,6 +284,11 @@ float pointSegmentWithLobe(float tP, float h, float x0, float x1, float sigma_s,
     // (docs/numerics.md#combined-exponents).
     float logL = log(sigma_s) + log(I0) - log(h) - sigma_t * (x0 + r0) + log(sum);
     return exp(logL);
+}
+
+float pointSegmentWithLobe(float tP, float h, float x0, float x1, float sigma_s, float sigma_t, float g, float I0,
+                           vec4 lobe) {
+    return pointSegmentCell(tP, h, x0, x1, sigma_s, sigma_t, g, I0, lobe, AIRLIGHT_NO_CELL);
 }
 
 float pointSegment(float tP, float h, float x0, float x1, float sigma_s, float sigma_t, float g, float I0) {
@@ -276,12 +326,10 @@ vec4 cosineLobeOf(vec3 D, vec3 w, vec3 n) {
     return vec4(0.0, mLength > 0.0 ? dot(m, n) / mLength : 0.0, dot(w, n), 0.0);
 }
 
-// A VPL's lobe softened by its disc of radius rho (lights.glsl, vplDiscRadius) for the segment integral
-// at hDisc = hypot(h, rho): (n.m) h / hDisc sech y' + (n.w) tanh y' = n.(p - D) / r', so the integrand is
-// n.(p - D) / r'^3 with r' = hypot(r, rho), and the lobe's zero (the emitter's plane) stays where it is.
-// (The attenuation then reads exp(-sigma_t r') for exp(-sigma_t r): at most sigma_t rho apart, at the VPL.)
-vec4 softenedLobe(vec4 lobe, float h, float hDisc) {
-    return hDisc > 0.0 ? vec4(lobe.x, lobe.y * (h / hDisc), lobe.zw) : lobe;
+// A VPL's cell (lights.glsl, vplHasCell) for pointSegmentCell along the ray w from the eye (the origin):
+// corner c, edges eU and eV, unit normal n, area; D the node, tP its foot point's parameter on the ray.
+AirlightCell airlightCellOf(vec3 corner, vec3 eU, vec3 eV, vec3 n, float area, vec3 w, float tP) {
+    return AirlightCell(corner - tP * w, eU, eV, n, w, area);
 }
 
 float cosineLobeSegment(vec3 D, vec3 w, vec3 n, float x0, float x1, float sigma_s, float sigma_t, float g, float I0) {

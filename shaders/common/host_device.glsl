@@ -80,11 +80,12 @@ struct GpuMaterial {
 // One light. All positions are eye-relative world space (world translated so the eye is at the origin,
 // axes unchanged; the translation is done in double on the CPU).
 struct GpuLight {
-    vec4 position;     // xyz: point, spot, VPL position; w: a VPL's disc radius sqrt(vpl_disc dA / pi)
-                       // (lights.glsl, vplDiscRadius), 1 for other lights
+    vec4 position;     // xyz: point, spot, VPL position; w: a VPL's kernel (1: its cell, 0: a point;
+                       // lights.glsl, vplHasCell), 1 for other lights
     vec4 direction;    // xyz unit: spot axis / directional travel direction / VPL emitter normal
     vec4 radiant;      // rgb: colour * intensity (point, spot, directional) or VPL weight L_e(uv) * dA
-    vec4 spot;         // x KHR scale, y KHR offset, z tan(outer), w cos(outer)
+    vec4 spot;         // x KHR scale, y KHR offset, z tan(outer), w cos(outer); a VPL's cell: xyz a corner,
+                       // w its area dA (frameX.xyz, frameY.xyz: its edges)
     vec4 frameX;       // xyz cookie frame x (right) axis; w cookie width in texels
     vec4 frameY;       // xyz cookie frame y (up) axis;    w cookie height in texels
     ivec4 info;        // x type (kLight*), y cookie layer (-1: none), z shadow map index (-1: none;

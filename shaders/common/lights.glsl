@@ -1,6 +1,7 @@
 // Light evaluation for GpuLight (common/host_device.glsl), in eye-relative world space. Implements the
 // emission side of the project's definition: E = I * colour * A_spot * cookie * exp(-sigma_t r) / r^2
-// (point, spot), E = I * colour (directional), VPL: E = weight * max(0, cos theta_e) * exp(-sigma_t r) / r^2.
+// (point, spot), E = I * colour (directional), VPL: E = weight * max(0, cos theta_e) * exp(-sigma_t r) / r^2
+// (a point) or L_e * Omega_cell * exp(-sigma_t r) (its cell, vplHasCell).
 #ifndef LIGHTS_GLSL
 #define LIGHTS_GLSL
 
@@ -9,53 +10,38 @@
 // type is handled at run time.
 
 #include "common/host_device.glsl"
+#include "common/solid_angle.glsl"
 
 // The lights as a uniform block (see host_device.glsl for why not the SSBO); count from the caller.
 layout(std140, binding = kBindingLightsUniform) uniform GpuLightBlock { GpuLight gLights[kMaxGpuLights]; };
 layout(binding = kUnitCookies) uniform sampler2DArray uCookies;
 
-// An area light's VPL stands for the part dA of the emitter around its node. Far from the emitter that
-// is a point; near it a point's kernel n.(p - D) / r^3 spikes (a bright dot in the air and on the walls
-// next to each VPL, which the emitter spreads over its cell). Every technique softens it with the radius
-// rho = sqrt(vpl_disc dA / pi) of a disc of vpl_disc times that area (the shared parameter, default 1;
-// 0: points). Along an eye ray (the eye at the origin) the VPL is moved
-// away from the ray, from h to hypot(h, rho) (vplAirPosition), so that its distance from every point
-// of the ray is r' = hypot(r, rho): the inverse square, the attenuation exp(-sigma_t r') and the phase
-// angle are that light's, and the emitter's cosine is n.(p - D) / r' (vplSoftening: r / r'). A segment
-// integral takes exactly that as the light at hypot(h, rho) from the ray with its lobe's h term scaled
-// by h / hypot(h, rho) (softenedLobe in airlight.glsl). rho is 0 for every other light.
-float vplDiscRadius(GpuLight L) {
+// An area light's VPL stands for its cell of the emitter (render/gpu_lights.cpp: the cells tile the
+// emitter with the Gauss-Legendre weights, each holding its node). Far from the emitter that is a point,
+// L_e dA cos(theta_e) / r^2; near it a point's kernel spikes like 1 / r^2 (a bright dot in the air and on
+// the walls next to each VPL) where the emitter gives at most 2 pi L_e. With `vpl_kernel=cell` (the
+// shared parameter, default; position.w = 1) the air and the surfaces see the cell's exact solid angle
+// instead: E = L_e Omega_cell(p) exp(-sigma_t r), r the distance to the node, which is the point's
+// kernel once the cell is small as seen from p, and bounded by 2 pi L_e next to it. The cell rides in
+// the VPL's spot (xyz: a corner, w: its area dA), frameX.xyz and frameY.xyz (its two edges); the phase
+// angle, the attenuation and the visibility stay the node's. docs/numerics.md, "A VPL's cell".
+bool vplHasCell(GpuLight L) {
 #ifdef SHADOW_NO_CUBE
-    return 0.0;  // the plan found no point or area light: no VPL, and the code below folds away
+    return false;  // the plan found no point or area light: no VPL, and the code below folds away
 #else
-    return L.info.x == kLightVpl ? L.position.w : 0.0;
+    return L.info.x == kLightVpl && L.position.w > 0.0;
 #endif
 }
 
-// r / hypot(r, rho) for a light at distance r (1 where rho is 0: every light but a VPL).
-float vplSoftening(GpuLight L, float r) {
-    float rho = vplDiscRadius(L);
-    return rho > 0.0 ? r / sqrt(r * r + rho * rho) : 1.0;  // rho > 0 only for a VPL, inside the scene
+// A VPL's cell seen from p (vplHasCell).
+float vplCellSolidAngle(GpuLight L, vec3 p) {
+    return parallelogramSolidAngle(L.spot.xyz - p, L.frameX.xyz, L.frameY.xyz, L.direction.xyz, L.spot.w);
 }
 
-// The position a light takes for the air along the eye ray through p: its own, or a VPL's moved away
-// from the ray to hypot(h, rho) (see vplDiscRadius).
-vec3 vplAirPosition(GpuLight L, vec3 p) {
-    float rho = vplDiscRadius(L);
-    if (!(rho > 0.0) || dot(p, p) == 0.0) return L.position.xyz;
-    vec3 w = normalize(p);
-    vec3 m = dot(L.position.xyz, w) * w - L.position.xyz;  // foot point of the light on the ray - light
-    float h = length(m);
-    // A ray through the VPL: any direction across the ray.
-    vec3 across = h > 0.0 ? m / h
-                          : normalize(abs(w.x) < 0.9 ? cross(w, vec3(1.0, 0.0, 0.0)) : cross(w, vec3(0.0, 1.0, 0.0)));
-    return L.position.xyz - across * (sqrt(h * h + rho * rho) - h);
-}
-
-// The direction from p to the light for the phase function of the air at p (eye ray through p).
+// The direction from p to the light for the phase function of the air at p.
 vec3 airDirectionToLight(GpuLight L, vec3 p) {
     if (L.info.x == kLightDirectional) return -L.direction.xyz;
-    return normalize(vplAirPosition(L, p) - p);
+    return normalize(L.position.xyz - p);
 }
 
 // distanceToLight() of a directional light.
@@ -212,12 +198,10 @@ vec3 unshadowedIrradiance(GpuLight L, vec3 p, float sigma_t) {
     if (L.info.x == kLightDirectional) return L.radiant.rgb;
     vec3 d = L.position.xyz - p;
     float r2 = dot(d, d);
-    // r -> 0 is a true singularity of the definition; the floor only keeps it finite (a VPL's disc
-    // softens its own: r' = hypot(r, rho), see vplDiscRadius).
-    float rho = vplDiscRadius(L);
-    float r = sqrt(r2);
-    float r2Soft = r2 + rho * rho;
-    return lightIntensity(L, p) * vplSoftening(L, r) * (exp(-sigma_t * sqrt(r2Soft)) / max(r2Soft, 1.0e-20));
+    // A VPL's cell: L_e times its solid angle (vplHasCell), bounded next to the emitter.
+    if (vplHasCell(L)) return L.radiant.rgb / L.spot.w * vplCellSolidAngle(L, p) * exp(-sigma_t * sqrt(r2));
+    // r -> 0 is a true singularity of the definition; the floor only keeps it finite.
+    return lightIntensity(L, p) * (exp(-sigma_t * sqrt(r2)) / max(r2, 1.0e-20));
 }
 
 #endif  // LIGHTS_GLSL

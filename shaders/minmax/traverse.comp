@@ -31,7 +31,7 @@ uniform bool uLinear;        // scan the leaves instead of walking the tree (tra
 uniform bool uWriteCoords;   // store (row, beta, cEnd, d) for the CPU mirror
 uniform int uPieces;         // spot: gamma pieces across the cone with their own A_spot * cookie
 uniform int uMarchSamples;   // brute-force samples per ray
-uniform int uVplSamples;     // the same for an area light's VPL (softened by its disc: smooth)
+uniform int uVplSamples;     // the same for an area light's VPL (its cell's kernel: bounded, smooth)
 uniform vec4 uEpipoles;      // xy epipole, zw anti-epipole, GL pixel coordinates (y up); far away if none
 uniform float uEpipoleRadius;
 #include "common/medium.glsl"  // uSigmaS, uSigmaT, uG

@@ -7,6 +7,7 @@
 #include "common/host_device.glsl"
 #include "common/airlight.glsl"
 #include "common/lights.glsl"
+#include "common/vpl_cell.glsl"
 #include "common/spot_cone.glsl"
 #include "polyvol/airlight_lut.glsl"
 #include "common/camera_ray.glsl"
@@ -53,8 +54,13 @@ vec3 pieceIntensity(GpuLight L, vec3 m, float h, vec3 w, float phi0, float phi1,
 #if !defined(AIRLIGHT_LUT) && !defined(LIGHTS_NO_COOKIE)
     if (L.info.x == kLightSpot) return L.radiant.rgb * spotCookie(L, dirFromLight);
 #endif
-    // A VPL's cosine softened by its disc (lights.glsl, vplDiscRadius) at the middle's distance h / cos.
-    return lightIntensityToward(L, dirFromLight) * vplSoftening(L, h / max(cos(phiMid), 1.0e-30));
+    // A VPL's cell (lights.glsl, vplHasCell): its solid angle times r^2 / dA at the middle, r = h / cos.
+    if (vplHasCell(L)) {
+        float r = h / max(cos(phiMid), 1.0e-30);
+        vec3 x = L.position.xyz + r * dirFromLight;
+        return L.radiant.rgb * (vplCellSolidAngle(L, x) * (r * r / L.spot.w));
+    }
+    return lightIntensityToward(L, dirFromLight);
 }
 
 // The ray parameter of the edge before piece k (k = pieces: x1), kept inside [x0, x1] against rounding
@@ -162,25 +168,22 @@ vec3 segmentAirlight(GpuLight L, vec3 w, float x0, float x1) {
     // Point lights and area-light VPLs. Without either in the scene the plan leaves out their cube maps
     // (SHADOW_NO_CUBE) and this code is not compiled: llvmpipe would run it for every fragment.
 #ifndef SHADOW_NO_CUBE
-    // A VPL is softened by the disc it stands for near the emitter (lights.glsl, vplDiscRadius): the
-    // segment integral sees the light at hypot(h, rho) from the ray; directions keep the true h.
-    float hPoint = g.h;
-    g.h = scaledHypot(g.h, vplDiscRadius(L));
 #ifdef AIRLIGHT_LUT
     if (L.info.x == kLightVpl) {
         // Cosine lobe around the emitter normal: zero behind the emitter's plane, which cuts the segment;
         // the table has no lobe, so equal-angle pieces on the front part.
-        float h = max(hPoint, 1.0e-7 * max(abs(g.tP), 1.0e-20));
+        float h = max(g.h, 1.0e-7 * max(abs(g.tP), 1.0e-20));
         vec2 front = frontOfEmitter(L.position.xyz, w, L.direction.xyz, x0, x1);
         return front.y > front.x ? angularPieces(L, w, g, h, front.x, front.y, false, false) : vec3(0.0);
     }
     return unitPointSegment(g, x0, x1, AIRLIGHT_NO_LOBE) * L.radiant.rgb;
 #else
     // One segment integral for both: a point light's angular factor is 1, a VPL's its cosine lobe around
-    // the emitter normal, integrated exactly (not uSpotPieces pieces).
-    vec4 lobe = L.info.x == kLightVpl ? softenedLobe(cosineLobeOf(L.position.xyz, w, L.direction.xyz), hPoint, g.h)
-                                      : AIRLIGHT_NO_LOBE;
-    return pointSegmentWithLobe(g.tP, g.h, x0, x1, uSigmaS, uSigmaT, uG, 1.0, lobe) * L.radiant.rgb;
+    // the emitter normal, or its cell's solid angle (lights.glsl, vplHasCell), integrated exactly (not
+    // uSpotPieces pieces).
+    vec4 lobe = L.info.x == kLightVpl ? cosineLobeOf(L.position.xyz, w, L.direction.xyz) : AIRLIGHT_NO_LOBE;
+    return pointSegmentCell(g.tP, g.h, x0, x1, uSigmaS, uSigmaT, uG, 1.0, lobe, lightCellAlong(L, w, g.tP)) *
+           L.radiant.rgb;
 #endif
 #else
     return vec3(0.0);

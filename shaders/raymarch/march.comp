@@ -19,6 +19,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 #endif
 #include "common/airlight.glsl"
 #include "common/lights.glsl"
+#include "common/vpl_cell.glsl"
 #include "common/shadow_map.glsl"
 #include "common/camera_ray.glsl"
 
@@ -88,7 +89,7 @@ void main() {
         litSamples += V;
         if (V == 0.0) continue;
         // cos theta = dot(direction light->point, direction point->eye) = dot(toLight, w).
-        vec3 toLight = airDirectionToLight(L, x);  // a VPL softened by its disc: lights.glsl
+        vec3 toLight = airDirectionToLight(L, x);
         float cosTheta = dot(toLight, w);
 #ifdef EXACT
         float x0 = m.x0;
@@ -103,12 +104,12 @@ void main() {
             sum += V * pointSegmentNaive(L.position.xyz, w, x0, x1, uSigmaS, uSigmaT, 1.0) * lightIntensity(L, x);
 #else
             if (L.info.x == kLightVpl) {
-                // An area light's VPL: its cosine lobe integrated exactly over the interval too, softened
-                // by its disc near the emitter (lights.glsl, vplDiscRadius).
+                // An area light's VPL: its cosine lobe integrated exactly over the interval too, or its
+                // cell's solid angle (lights.glsl, vplHasCell).
                 RayLightGeometry g = rayLightGeometry(L.position.xyz, w);
-                float hDisc = scaledHypot(g.h, vplDiscRadius(L));
-                vec4 lobe = softenedLobe(cosineLobeOf(L.position.xyz, w, L.direction.xyz), g.h, hDisc);
-                sum += V * pointSegmentWithLobe(g.tP, hDisc, x0, x1, uSigmaS, uSigmaT, uG, 1.0, lobe) * L.radiant.rgb;
+                vec4 lobe = cosineLobeOf(L.position.xyz, w, L.direction.xyz);
+                AirlightCell cell = lightCellAlong(L, w, g.tP);
+                sum += V * pointSegmentCell(g.tP, g.h, x0, x1, uSigmaS, uSigmaT, uG, 1.0, lobe, cell) * L.radiant.rgb;
             } else {
                 RayLightGeometry g = rayLightGeometry(L.position.xyz, w);
                 sum += V * pointSegment(g.tP, g.h, x0, x1, uSigmaS, uSigmaT, uG, 1.0) * lightIntensity(L, x);

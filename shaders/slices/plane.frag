@@ -118,9 +118,9 @@ vec3 shade(GpuLight L, vec3 w, float t, float dt) {
 #ifdef COOKIE
     if (spot) cookie = spotCookie(L, dirFromLight);
 #endif
-    // A VPL (one node of an area light) emits a cosine lobe around the emitter normal, softened by its
-    // disc near the emitter (lights.glsl, vplDiscRadius), as its distance and phase angle below.
-    if (type == kLightVpl) angular = max(0.0, dot(L.direction.xyz, dirFromLight)) * vplSoftening(L, length(fromLight));
+    // A VPL (one node of an area light) emits a cosine lobe around the emitter normal as a point; as its
+    // cell (lights.glsl, vplHasCell) the cell's solid angle takes the place of lobe and inverse square.
+    if (type == kLightVpl) angular = max(0.0, dot(L.direction.xyz, dirFromLight));
     float V = 1.0;
 #ifdef SHADOW
     V = visibility(L, p);
@@ -146,16 +146,16 @@ vec3 shade(GpuLight L, vec3 w, float t, float dt) {
 #ifdef NOISE
     noise = 4.0 * n1 * n2;  // mean about 1: noise modulates the density, it does not dim the medium
 #endif
-    // cos theta = dot(direction light->point, direction point->eye) = dot(dirFromLight, -w); a VPL's
-    // light for the air sits hypot(h, rho) from the ray (lights.glsl, vplAirPosition): its phase angle and
-    // distance both from there, placed once.
-    vec3 toLight = directional ? vec3(0.0) : vplAirPosition(L, p) - p;
-    float cosTheta = dot(type == kLightVpl ? -normalize(toLight) : dirFromLight, -w);
+    // cos theta = dot(direction light->point, direction point->eye) = dot(dirFromLight, -w).
+    float cosTheta = dot(dirFromLight, -w);
     vec3 E;
     if (directional) {
         E = L.radiant.rgb;
     } else {
+        vec3 toLight = L.position.xyz - p;
         float r2 = dot(toLight, toLight);
+        // A VPL's cell: Omega_cell r^2 / dA, so that with I = L_e dA and the 1/r^2 below E is L_e Omega_cell.
+        if (vplHasCell(L)) angular = vplCellSolidAngle(L, p) * (r2 / L.spot.w);
 #ifdef SLAB_EQUIANGULAR
         E = L.radiant.rgb * angular * cookie * exp(-uSigmaT * sqrt(r2));
 #else
@@ -211,10 +211,7 @@ vec3 slabIntegral(GpuLight L, vec3 w, float t0, float t1, float d) {
         RayLightGeometry g = rayLightGeometry(L.position.xyz, w);
         tP = g.tP;
         float s0 = t0 - tP, s1 = t1 - tP;
-        // A VPL's disc near the emitter (lights.glsl, vplDiscRadius) raises its distance to hypot(h, rho)
-        // (its cosine is softened in shade()).
-        h = max(scaledHypot(g.h, vplDiscRadius(L)),
-                max(AIRLIGHT_MIN_RELATIVE_H * max(abs(s0), abs(s1)), AIRLIGHT_MIN_ABSOLUTE_H));
+        h = max(g.h, max(AIRLIGHT_MIN_RELATIVE_H * max(abs(s0), abs(s1)), AIRLIGHT_MIN_ABSOLUTE_H));
         float subtended = atan(h * (s1 - s0), h * h + s0 * s1);
         a0 = atan(s0 / h);
         // Under a cookie the nodes follow its texels, as polyvol's pieces do: a ray passing the apex

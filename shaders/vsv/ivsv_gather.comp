@@ -48,7 +48,7 @@ uniform int uPhaseShift;  // added to the 3x3 subset index, mod 9 (subsets=per-f
 #include "common/airlight_sample.glsl"
 #include "common/work_counters.glsl"
 uniform int uChunkBits;
-uniform float uDiscScale;  // 1: VPLs as discs of their area near the emitter (vpl_disc), 0: points  // phi bits per quadrature node
+uniform float uDiscScale;  // 1: VPLs as discs of their area near the emitter (vpl_kernel=cell), 0: points
 uniform int uAccumulate;
 uniform ivec2 uPick;      // full-resolution pixel whose per-VPL contributions go to gPick (-1: none)
 uniform int uTileSize;    // ISM tile size (EPIPOLE)

@@ -256,10 +256,24 @@ TEST_F(RenderLights, AreaLightBecomesVplsThatIntegrateTheEmitter) {
     EXPECT_NO_THROW(GpuLights(s, glm::dvec3(0.0), 16));
 }
 
-// A VPL's E: its weight L_e dA times the emitter's cosine, softened by the disc of area dA it stands for
-// (shaders/common/lights.glsl, vplDiscRadius): L_e dA n.(p - D) exp(-sigma_t r') / r'^3, r' = hypot(r, rho),
-// rho^2 = dA / pi. The points on the emitter's axis at a few rho show the softening; the far ones the point.
-TEST_F(RenderLights, VplIrradianceHasTheCosineLobe) {
+// Solid angle of the rectangle with corner c and perpendicular edges eU, eV (lit side n) seen from p, by
+// the corner formula, independent of the shader's two triangles: in the rectangle's frame with p at
+// height z over the origin, the sum over corners (a, b) of +-atan(a b / (z |(a, b, z)|)).
+double rectangleSolidAngle(glm::dvec3 c, glm::dvec3 eU, glm::dvec3 eV, glm::dvec3 n, glm::dvec3 p) {
+    const glm::dvec3 d = p - c;
+    const double z = glm::dot(d, n);
+    if (!(z > 0.0)) return 0.0;
+    const double lu = glm::length(eU), lv = glm::length(eV);
+    const double pu = glm::dot(d, eU) / lu, pv = glm::dot(d, eV) / lv;
+    const auto f = [z](double a, double b) { return std::atan(a * b / (z * std::sqrt(a * a + b * b + z * z))); };
+    return f(lu - pu, lv - pv) - f(-pu, lv - pv) - f(lu - pu, -pv) + f(-pu, -pv);
+}
+
+// A VPL's E stands for its cell (shaders/common/lights.glsl, vplHasCell): L_e Omega_cell(p) exp(-sigma_t r),
+// r to the node; as a point (vpl_kernel=point) L_e dA n.(p - D) exp(-sigma_t r) / r^3. One node: the cell is
+// the whole rectangle. Points far below show the two agree; 0.01 below the centre the point's 1/r^2 is
+// 70 times the cell's, which stays under 2 pi L_e.
+TEST_F(RenderLights, VplIrradianceIsTheCellsSolidAngleOrThePointsCosineLobe) {
     scene::Scene s;
     s.meshes.push_back(floorQuad(3.0));
     scene::Light area{.type = scene::LightType::Area,
@@ -270,32 +284,115 @@ TEST_F(RenderLights, VplIrradianceHasTheCosineLobe) {
                       .radiance = {1.0, 2.0, 3.0}};
     s.lights = {area};
     GpuScene gpuScene(s);
-    GpuLights lights(s, glm::dvec3(0.0), 1);
-    ASSERT_EQ(lights.count(), 1);
     const float sigma_t = 0.1f;
     const std::vector<glm::dvec3> world = {{0.0, 0.0, 0.0}, {1.5, 0.5, -0.7}, {0.3, 2.5, 0.0}, {0.0, 1.9, 0.0},
-                                           {0.05, 1.75, 0.02}};
+                                           {0.05, 1.75, 0.02}, {0.09, 1.999, -0.03}, {0.0, 1.99, 0.0}};
     std::vector<glm::vec4> points;
     for (const auto& p : world) points.push_back(glm::vec4(glm::vec3(p), 1.0f));
-    const auto out = probe(gpuScene, lights, 1, 0, points, 4 * int(points.size()), sigma_t);
-    const double dA = 0.2 * 0.2;  // one node: the whole rectangle
-    const double rho2 = dA / std::numbers::pi;
-    for (std::size_t i = 0; i < world.size(); ++i) {
-        const glm::dvec3 d = world[i] - area.position;
-        const double r = glm::length(d);
-        const double soft = std::sqrt(r * r + rho2);
-        const double normal = std::max(0.0, glm::dot(area.direction, d));
-        const glm::dvec3 expected =
-            area.radiance * dA * normal * std::exp(-double(sigma_t) * soft) / (soft * soft * soft);
-        for (int c = 0; c < 3; ++c) {
-            EXPECT_NEAR(out[4 * i + 1][c], expected[c], 1e-5 * glm::length(area.radiance * dA) + 1e-6 * expected[c]);
-        }
-        EXPECT_NEAR(out[4 * i + 3].w, r, 1e-5 * r);
+    const double dA = 0.2 * 0.2;
+    // The expectations take the float inputs the shader sees (a point 1e-3 from the plane has its height
+    // to 6e-5 only).
+    const auto asFloat = [](glm::dvec3 v) { return glm::dvec3(glm::vec3(v)); };
+    const glm::dvec3 corner = asFloat(area.position - area.halfU - area.halfV);
+    std::vector<glm::vec4> cellOut, pointOut;
+    {
+        GpuLights lights(s, glm::dvec3(0.0), 1, VplKernel::Cell);
+        ASSERT_EQ(lights.count(), 1);
+        cellOut = probe(gpuScene, lights, 1, 0, points, 4 * int(points.size()), sigma_t);
     }
-    // The point above the emitter is behind it: no emission.
-    EXPECT_EQ(glm::vec3(out[4 * 2 + 1]), glm::vec3(0.0f));
-    // 0.1 below the emitter (rho = 0.113) a point light's E would be (1 + rho^2 / r^2)^(3/2) = 3.4 times higher.
-    EXPECT_LT(out[4 * 3 + 1].x, 0.5 * float(area.radiance.x * dA / 0.01));
+    {
+        GpuLights lights(s, glm::dvec3(0.0), 1, VplKernel::Point);
+        pointOut = probe(gpuScene, lights, 1, 0, points, 4 * int(points.size()), sigma_t);
+    }
+    for (std::size_t i = 0; i < world.size(); ++i) {
+        SCOPED_TRACE(i);
+        const glm::dvec3 d = asFloat(world[i]) - area.position;
+        const double r = glm::length(d);
+        const double omega = rectangleSolidAngle(corner, asFloat(2.0 * area.halfU), asFloat(2.0 * area.halfV),
+                                                 area.direction, asFloat(world[i]));
+        const glm::dvec3 cell = area.radiance * omega * std::exp(-double(sigma_t) * r);
+        const double normal = std::max(0.0, glm::dot(area.direction, d));
+        const glm::dvec3 point = area.radiance * dA * normal * std::exp(-double(sigma_t) * r) / (r * r * r);
+        for (int c = 0; c < 3; ++c) {
+            EXPECT_NEAR(cellOut[4 * i + 1][c], cell[c], 1e-5 * cell[c] + 1e-7);
+            EXPECT_NEAR(pointOut[4 * i + 1][c], point[c], 1e-5 * glm::length(area.radiance * dA) + 1e-6 * point[c]);
+        }
+        EXPECT_NEAR(cellOut[4 * i + 3].w, r, 1e-5 * r);
+        EXPECT_LE(cellOut[4 * i + 1].z, 2.0 * std::numbers::pi * area.radiance.z);
+    }
+    // Far below, the cell is the point within (size / r)^2.
+    EXPECT_NEAR(cellOut[1].y, pointOut[1].y, 0.01 * pointOut[1].y);
+    // The point above the emitter is behind it: no emission either way.
+    EXPECT_EQ(glm::vec3(cellOut[4 * 2 + 1]), glm::vec3(0.0f));
+    EXPECT_EQ(glm::vec3(pointOut[4 * 2 + 1]), glm::vec3(0.0f));
+    // 0.01 below the centre the point's E is dA / r^2 = 400 L_e, the cell's under 2 pi L_e.
+    EXPECT_GT(pointOut[4 * 6 + 1].x, 50.0f * cellOut[4 * 6 + 1].x);
+}
+
+// A textured emitter's VPLs carry the texture's mean over their cells: together the emitter's mean colour
+// times its area (checked against a fine grid of bilinear samples, not the exact cell means), and each
+// the mean over the cell that holds its node.
+TEST_F(RenderLights, VplsCarryTheirCellsMeanColour) {
+    scene::Scene s;
+    s.meshes.push_back(floorQuad(3.0));
+    scene::Texture bars;
+    bars.width = 7;
+    bars.height = 3;
+    const std::uint8_t colours[7][3] = {{255, 255, 255}, {255, 255, 0}, {0, 255, 255}, {0, 255, 0},
+                                        {255, 0, 255},   {255, 0, 0},   {0, 0, 255}};
+    for (int y = 0; y < bars.height; ++y)
+        for (int x = 0; x < bars.width; ++x) {
+            const std::uint8_t* c = colours[x];
+            const std::uint8_t shade = std::uint8_t(255 - 80 * y);
+            for (int k = 0; k < 3; ++k) bars.rgba8.push_back(std::uint8_t(c[k] * shade / 255));
+            bars.rgba8.push_back(255);
+        }
+    s.textures.push_back(bars);
+    scene::Light area{.type = scene::LightType::Area,
+                      .position = {0.0, 2.0, 0.0},
+                      .direction = {0.0, -1.0, 0.0},
+                      .halfU = {0.8, 0.0, 0.0},
+                      .halfV = {0.0, 0.0, 0.45},
+                      .radiance = {3.0, 3.0, 3.0}};
+    area.emissionTexture = 0;
+    s.lights = {area};
+    const int fine = 1400;
+    glm::dvec3 mean(0.0);
+    for (int j = 0; j < fine; ++j)
+        for (int i = 0; i < fine; ++i)
+            mean += glm::dvec3(scene::sampleLinearRgb(bars, {(i + 0.5) / fine, (j + 0.5) / fine}));
+    mean /= double(fine) * fine;
+    const double areaSize = 4.0 * 0.8 * 0.45;
+    for (int n : {1, 2, 4, 7}) {
+        const LightDescription d = describeLights(s, glm::dvec3(0.0), n);
+        ASSERT_EQ(int(d.lights.size()), n * n);
+        glm::dvec3 sum(0.0);
+        for (const GpuLightCpu& L : d.lights) {
+            sum += glm::dvec3(L.radiant);
+            // The node lies in its cell (corner spot.xyz, edges frameX, frameY), whose area is spot.w.
+            const glm::dvec3 rel = glm::dvec3(L.position) - glm::dvec3(L.spot);
+            const glm::dvec3 eU(L.frameX), eV(L.frameY);
+            EXPECT_GE(glm::dot(rel, eU), 0.0);
+            EXPECT_LE(glm::dot(rel, eU), glm::dot(eU, eU) * (1.0 + 1e-6));
+            EXPECT_GE(glm::dot(rel, eV), 0.0);
+            EXPECT_LE(glm::dot(rel, eV), glm::dot(eV, eV) * (1.0 + 1e-6));
+            EXPECT_NEAR(double(L.spot.w), glm::length(glm::cross(eU, eV)), 1e-6);
+        }
+        for (int c = 0; c < 3; ++c)
+            EXPECT_NEAR(sum[c], area.radiance[c] * areaSize * mean[c], 2e-4 * area.radiance[c] * areaSize)
+                << "n = " << n;
+    }
+    // Four VPLs across seven bars (the nodes fall in bars 0, 2, 4 and 6): most VPLs' colours differ from
+    // the texture at their nodes, which is what they carried before.
+    const LightDescription four = describeLights(s, glm::dvec3(0.0), 4);
+    int differ = 0;
+    for (const GpuLightCpu& L : four.lights) {
+        const glm::dvec3 rel = glm::dvec3(L.position) - (area.position - area.halfU - area.halfV);
+        const glm::dvec2 uv(rel.x / 1.6, rel.z / 0.9);
+        const glm::dvec3 atNode = area.radiance * glm::dvec3(scene::sampleLinearRgb(bars, uv)) * double(L.spot.w);
+        if (glm::length(glm::dvec3(L.radiant) - atNode) > 0.05 * glm::length(atNode)) ++differ;
+    }
+    EXPECT_GT(differ, 8);
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <map>
 #include <numbers>
 #include <string>
+#include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -90,7 +91,7 @@ gl::Texture uploadCookies(const scene::Scene& scene, const std::map<int, int>& l
 }  // namespace
 
 
-LightDescription describeLights(const scene::Scene& scene, glm::dvec3 eye, int areaSamples, double vplDisc) {
+LightDescription describeLights(const scene::Scene& scene, glm::dvec3 eye, int areaSamples, VplKernel kernel) {
     if (areaSamples < 1) {
         throw InputError("area_samples must be at least 1 (got " + std::to_string(areaSamples) + ")");
     }
@@ -187,7 +188,12 @@ LightDescription describeLights(const scene::Scene& scene, glm::dvec3 eye, int a
             }
             case scene::LightType::Area: {
                 // areaSamples^2 VPLs at the Gauss-Legendre nodes (s, t) in [-1, 1]^2 of
-                // p = centre + s halfU + t halfV, dA = |halfU x halfV| w_s w_t, uv = ((s + 1) / 2, (t + 1) / 2).
+                // p = centre + s halfU + t halfV, dA = |halfU x halfV| w_s w_t. Each node stands for its own
+                // cell, [c_(i-1), c_i] along each axis with c_i = -1 + w_0 + ... + w_i: the cells tile the
+                // emitter with the nodes' weights and each holds its node (the separation theorem of
+                // Gaussian quadrature). A VPL's colour is the texture's mean over its cell, so the VPLs
+                // carry the emitter's whole power and colour, not the texture at areaSamples^2 points;
+                // near the emitter the air and the surfaces see the cell's solid angle (lights.glsl).
                 const double jacobian = glm::length(glm::cross(light.halfU, light.halfV));
                 const scene::Texture* tex = nullptr;
                 if (light.emissionTexture >= 0) {
@@ -196,24 +202,32 @@ LightDescription describeLights(const scene::Scene& scene, glm::dvec3 eye, int a
                     }
                     tex = &scene.textures[static_cast<std::size_t>(light.emissionTexture)];
                 }
+                std::vector<double> cellEnd(std::size_t(areaSamples) + 1, 0.0);  // in uv
+                for (int i = 0; i < areaSamples; ++i)
+                    cellEnd[std::size_t(i) + 1] = cellEnd[std::size_t(i)] + 0.5 * rule.weights[std::size_t(i)];
+                cellEnd.back() = 1.0;
                 for (int j = 0; j < areaSamples; ++j) {
                     for (int i = 0; i < areaSamples; ++i) {
-                        const double s = rule.nodes[static_cast<std::size_t>(i)];
-                        const double t = rule.nodes[static_cast<std::size_t>(j)];
-                        const double dA =
-                            jacobian * rule.weights[static_cast<std::size_t>(i)] * rule.weights[static_cast<std::size_t>(j)];
+                        const std::size_t ci = std::size_t(i), cj = std::size_t(j);
+                        const double s = rule.nodes[ci];
+                        const double t = rule.nodes[cj];
+                        const double dA = jacobian * rule.weights[ci] * rule.weights[cj];
                         glm::dvec3 le = light.radiance;
-                        if (tex) {
-                            le *= glm::dvec3(scene::sampleLinearRgb(*tex, {0.5 * (s + 1.0), 0.5 * (t + 1.0)}));
-                        }
+                        if (tex)
+                            le *= scene::averageLinearRgb(*tex, {cellEnd[ci], cellEnd[cj]},
+                                                          {cellEnd[ci + 1], cellEnd[cj + 1]});
                         GpuLightCpu v = g;
                         const glm::dvec3 p = pos + s * light.halfU + t * light.halfV;
-                        // w: the radius of the disc of area vplDisc dA that softens the VPL near the
-                        // emitter (shaders/common/lights.glsl, vplDiscRadius).
-                        const double discRadius = std::sqrt(std::max(vplDisc, 0.0) * dA / std::numbers::pi);
-                        v.position = glm::vec4(glm::vec3(p), float(discRadius));
+                        // w: the kernel (shaders/common/lights.glsl, vplHasCell): 1, the node's cell, whose
+                        // corner, edges and area ride in spot, frameX and frameY; 0, a point.
+                        v.position = glm::vec4(glm::vec3(p), kernel == VplKernel::Cell ? 1.0f : 0.0f);
                         v.radiant = glm::vec4(glm::vec3(le * dA), 0.0f);
                         v.info = glm::ivec4(hd::kLightVpl, -1, layout.vplCubes++, static_cast<int>(li));
+                        const double s0 = 2.0 * cellEnd[ci] - 1.0, s1 = 2.0 * cellEnd[ci + 1] - 1.0;
+                        const double t0 = 2.0 * cellEnd[cj] - 1.0, t1 = 2.0 * cellEnd[cj + 1] - 1.0;
+                        v.spot = glm::vec4(glm::vec3(pos + s0 * light.halfU + t0 * light.halfV), float(dA));
+                        v.frameX = glm::vec4(glm::vec3((s1 - s0) * light.halfU), 0.0f);
+                        v.frameY = glm::vec4(glm::vec3((t1 - t0) * light.halfV), 0.0f);
                         const ShadowRange r = rangeFrom(p, center, radius);
                         v.shadow = glm::vec4(float(r.near), float(r.far), float(kBiasTexels * 2.0),
                                              float(biasConstant));
@@ -228,8 +242,8 @@ LightDescription describeLights(const scene::Scene& scene, glm::dvec3 eye, int a
     return out;
 }
 
-GpuLights::GpuLights(const scene::Scene& scene, glm::dvec3 eye, int areaSamples, double vplDisc) : mEye(eye) {
-    LightDescription described = describeLights(scene, eye, areaSamples, vplDisc);
+GpuLights::GpuLights(const scene::Scene& scene, glm::dvec3 eye, int areaSamples, VplKernel kernel) : mEye(eye) {
+    LightDescription described = describeLights(scene, eye, areaSamples, kernel);
     mLights = std::move(described.lights);
     mLayout = described.layout;
     mCookies = uploadCookies(scene, described.cookieLayers);

@@ -35,16 +35,19 @@ struct LightDescription {
     ShadowLayout layout;
     std::map<int, int> cookieLayers;  // scene texture -> layer of the cookie array, in first-use order
 };
-// vplDisc: each VPL is softened near the emitter by a disc of vplDisc times its area dA (the `vpl_disc`
-// parameter; 0: point VPLs; shaders/common/lights.glsl, vplDiscRadius).
-LightDescription describeLights(const scene::Scene& scene, glm::dvec3 eye, int areaSamples, double vplDisc = 1.0);
+// What an area light's VPL stands for (the `vpl_kernel` parameter; shaders/common/lights.glsl,
+// vplHasCell): its cell of the emitter, whose solid angle the air and the surfaces see (exact near the
+// emitter), or a point with the kernel L_e dA cos(theta_e) / r^2 (which spikes next to the emitter).
+enum class VplKernel { Point = 0, Cell = 1 };
+LightDescription describeLights(const scene::Scene& scene, glm::dvec3 eye, int areaSamples,
+                                VplKernel kernel = VplKernel::Cell);
 
 class GpuLights {
 public:
-    // areaSamples >= 1 nodes per axis for each area light, each node's VPL softened by a disc of vplDisc
-    // times its area. Throws InputError for areaSamples < 1 and when the lights (VPLs included) exceed
+    // areaSamples >= 1 nodes per axis for each area light, each node's VPL with the given kernel.
+    // Throws InputError for areaSamples < 1 and when the lights (VPLs included) exceed
     // hd::kMaxGpuLights.
-    GpuLights(const scene::Scene& scene, glm::dvec3 eye, int areaSamples, double vplDisc = 1.0);
+    GpuLights(const scene::Scene& scene, glm::dvec3 eye, int areaSamples, VplKernel kernel = VplKernel::Cell);
 
     // Binds the light buffer as SSBO at kBindingLights and as uniform block at kBindingLightsUniform
     // (what common/lights.glsl reads), and the cookie array at kUnitCookies.

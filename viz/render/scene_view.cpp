@@ -14,14 +14,15 @@ std::vector<ParamInfo> SceneViewPasses::params() {
     return {
         {"shadow_map", "shadow-map size in texels per side (2D maps and point-light cube faces)", 1024, 16, 8192, true},
         {"area_samples", "virtual point lights per axis of each area light (Gauss-Legendre nodes)", 4, 1, 16, true},
-        {"vpl_disc", "near the emitter each VPL is softened by a disc of this many times its area (bounds the "
-                     "1/r^2 peak next to it); 0: points", 1, 0, 16, false},
+        {"vpl_kernel", "what an area light's VPL stands for: point (L_e dA cos / r^2, which peaks next to the "
+                       "emitter) or cell (its cell of the emitter: near it the air and the surfaces see the "
+                       "cell's solid angle)", 1, 0, 1, true, {"point", "cell"}},
     };
 }
 
 StageInfo SceneViewPasses::shadowStage(const std::string& prefix, const std::vector<std::string>& extraIntermediates) {
     StageInfo stage{prefix + ".shadow_maps", "Shadow maps", "render every light's shadow map (linear distance)",
-                    {"shadow_map", "area_samples", "vpl_disc"}, {prefix + ".shadow_map"}, 1};
+                    {"shadow_map", "area_samples", "vpl_kernel"}, {prefix + ".shadow_map"}, 1};
     stage.keepsOutputs = true;  // the instance's shadow maps
     stage.intermediates.insert(stage.intermediates.end(), extraIntermediates.begin(), extraIntermediates.end());
     return stage;
@@ -42,7 +43,7 @@ StageInfo SceneViewPasses::composeStage(const std::string& prefix) {
 void SceneViewPasses::buildShadows(const scene::Scene& scene, const Settings& settings, std::vector<Intermediate>& out,
                                    const std::string& prefix) {
     buildShadows(scene, int(settings.at("shadow_map")), int(settings.at("area_samples")), out, prefix,
-                 settings.at("vpl_disc"));
+                 settings.at("vpl_kernel") != 0.0 ? VplKernel::Cell : VplKernel::Point);
 }
 
 void SceneViewPasses::createPasses() {
@@ -53,7 +54,7 @@ void SceneViewPasses::createPasses() {
 }
 
 void SceneViewPasses::buildShadows(const scene::Scene& scene, int shadowMapSize, int areaSamples,
-                                   std::vector<Intermediate>& out, const std::string& prefix, double vplDisc) {
+                                   std::vector<Intermediate>& out, const std::string& prefix, VplKernel kernel) {
     createPasses();
     // Geometry is uploaded once per scene; a camera move (the window) reuses it. The key is the content
     // hash of meshes, materials and textures, not the scene's address or counts: an edited or rescaled
@@ -64,7 +65,7 @@ void SceneViewPasses::buildShadows(const scene::Scene& scene, int shadowMapSize,
         mSceneSource = &scene;
         mSceneFingerprint = fingerprint;
     }
-    mLights = std::make_unique<GpuLights>(scene, scene.camera.position, areaSamples, vplDisc);
+    mLights = std::make_unique<GpuLights>(scene, scene.camera.position, areaSamples, kernel);
     mCamera = scene.camera;
     mSurfaceCurrent = false;
     mFrameSize = glm::ivec2(0);  // known again from runSharedStages or renderSurface

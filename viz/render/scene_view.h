@@ -26,7 +26,7 @@ inline constexpr int kMaxVplShadowSize = 256;
 class SceneViewPasses {
 public:
     // ---- declarations, so that a technique lists these stages and parameters exactly as they run ----
-    // `shadow_map` (texels per side, shared by every shadow-map technique), `area_samples` and `vpl_disc`.
+    // `shadow_map` (texels per side, shared by every shadow-map technique), `area_samples` and `vpl_kernel`.
     static std::vector<ParamInfo> params();
     // prefix.shadow_maps, publishing prefix.shadow_map and `extraIntermediates`.
     static StageInfo shadowStage(const std::string& prefix, const std::vector<std::string>& extraIntermediates = {});
@@ -35,14 +35,14 @@ public:
     // prefix.compose, publishing prefix.final.
     static StageInfo composeStage(const std::string& prefix);
 
-    // buildShadows with the `shadow_map`, `area_samples` and `vpl_disc` of completed settings.
+    // buildShadows with the `shadow_map`, `area_samples` and `vpl_kernel` of completed settings.
     void buildShadows(const scene::Scene& scene, const Settings& settings, std::vector<Intermediate>& out,
                       const std::string& prefix);
     // Uploads the geometry when the scene changed, lays out the lights (area lights as areaSamples^2
-    // VPLs, each softened by a disc of vplDisc times its area), renders every shadow map and publishes
+    // VPLs with the given kernel, gpu_lights.h), renders every shadow map and publishes
     // them as prefix.shadow_map[.N].
     void buildShadows(const scene::Scene& scene, int shadowMapSize, int areaSamples,
-                      std::vector<Intermediate>& out, const std::string& prefix, double vplDisc = 1.0);
+                      std::vector<Intermediate>& out, const std::string& prefix, VplKernel kernel = VplKernel::Cell);
     // The camera view; publishes prefix.distance and prefix.surface.
     void renderSurface(const scene::Scene& scene, int width, int height, std::vector<Intermediate>& out,
                        const std::string& prefix);

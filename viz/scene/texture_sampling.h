@@ -59,4 +59,50 @@ inline glm::vec3 sampleLinearRgb(const Texture& tex, glm::dvec2 uv) {
     return glm::mix(top, bottom, ay);
 }
 
+// Integral over [a, b] (texel-centre coordinates, a <= b) of texel i's share of the linear
+// interpolation along one axis of n texels, clamp to edge: the tent max(0, 1 - |x - i|), whose outer
+// half is 1 for the first texel (x <= 0) and for the last (x >= n - 1).
+inline double texelShare(int i, int n, double a, double b) {
+    // Antiderivative of the tent about 0: 0 below -1, 1 above 1.
+    const auto tent = [](double x) {
+        if (x <= -1.0) return 0.0;
+        if (x <= 0.0) return 0.5 * (x + 1.0) * (x + 1.0);
+        if (x <= 1.0) return 1.0 - 0.5 * (1.0 - x) * (1.0 - x);
+        return 1.0;
+    };
+    const double lo = a - i, hi = b - i;
+    double share = tent(hi) - tent(lo);
+    // The first texel's outer half is 1 below 0, the last one's above n - 1 (in place of the tent's).
+    if (i == 0) share += std::max(0.0, std::min(hi, 0.0) - lo) - (tent(std::min(hi, 0.0)) - tent(std::min(lo, 0.0)));
+    if (i == n - 1)
+        share += std::max(0.0, hi - std::max(lo, 0.0)) - (tent(std::max(hi, 0.0)) - tent(std::max(lo, 0.0)));
+    return share;
+}
+
+// Mean of sampleLinearRgb over the uv rectangle [uv0, uv1] (uv0 <= uv1 componentwise, inside [0,1]^2),
+// exactly: the bilinear interpolant is separable, so each texel weighs the product of its two axes'
+// shares. An emitter's cell thus carries the colour of its whole area, not of one point in it.
+inline glm::dvec3 averageLinearRgb(const Texture& tex, glm::dvec2 uv0, glm::dvec2 uv1) {
+    if (tex.width <= 0 || tex.height <= 0) return glm::dvec3(1.0);
+    uv0 = glm::clamp(uv0, glm::dvec2(0.0), glm::dvec2(1.0));
+    uv1 = glm::clamp(uv1, uv0, glm::dvec2(1.0));
+    if (uv1.x - uv0.x <= 0.0 || uv1.y - uv0.y <= 0.0)
+        return glm::dvec3(sampleLinearRgb(tex, 0.5 * (uv0 + uv1)));
+    const double ax = uv0.x * tex.width - 0.5, bx = uv1.x * tex.width - 0.5;
+    const double ay = uv0.y * tex.height - 0.5, by = uv1.y * tex.height - 0.5;
+    // Texels whose share can be non-zero: those within one texel of the interval.
+    const int x0 = std::max(0, int(std::floor(ax))), x1 = std::min(tex.width - 1, int(std::ceil(bx)));
+    const int y0 = std::max(0, int(std::floor(ay))), y1 = std::min(tex.height - 1, int(std::ceil(by)));
+    glm::dvec3 sum(0.0);
+    for (int y = y0; y <= y1; ++y) {
+        const double wy = texelShare(y, tex.height, ay, by);
+        if (wy == 0.0) continue;
+        for (int x = x0; x <= x1; ++x) {
+            const double wx = texelShare(x, tex.width, ax, bx);
+            if (wx != 0.0) sum += wx * wy * glm::dvec3(texelLinearRgb(tex, x, y));
+        }
+    }
+    return sum / ((bx - ax) * (by - ay));
+}
+
 }  // namespace viz::scene

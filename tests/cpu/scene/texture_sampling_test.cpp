@@ -1,6 +1,9 @@
 // sRGB decoding and texture sampling conventions (v = 0 at the top row, clamp to edge).
 #include <gtest/gtest.h>
 
+#include <utility>
+#include <vector>
+
 #include "scene/texture_sampling.h"
 
 namespace viz::scene {
@@ -49,6 +52,49 @@ TEST(TextureSampling, ClampsToEdge) {
     EXPECT_EQ(sampleLinearRgb(t, {0.0, 0.0}), glm::vec3(0.0f));
     EXPECT_EQ(sampleLinearRgb(t, {7.0, 7.0}), glm::vec3(1, 0, 0));
     EXPECT_EQ(sampleNearestRgb(t, {1.0, 1.0}), glm::vec3(1, 0, 0));
+}
+
+// averageLinearRgb integrates the bilinear filter exactly: against the mean of a fine grid of
+// sampleLinearRgb samples (midpoint rule, error O(1/n^2) on a piecewise bilinear function) over
+// rectangles inside texels, across texel centres, at the clamped edges and over the whole texture.
+TEST(TextureSampling, AverageIsTheMeanOfTheBilinearFilter) {
+    Texture t;
+    t.width = 5;
+    t.height = 3;
+    for (int i = 0; i < t.width * t.height; ++i) {
+        t.rgba8.push_back(std::uint8_t((37 * i) % 256));
+        t.rgba8.push_back(std::uint8_t((91 * i + 50) % 256));
+        t.rgba8.push_back(std::uint8_t(255 - (13 * i) % 256));
+        t.rgba8.push_back(255);
+    }
+    const auto fineMean = [&](glm::dvec2 a, glm::dvec2 b) {
+        const int n = 600;
+        glm::dvec3 sum(0.0);
+        for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i)
+                sum += glm::dvec3(
+                    sampleLinearRgb(t, {a.x + (b.x - a.x) * (i + 0.5) / n, a.y + (b.y - a.y) * (j + 0.5) / n}));
+        return sum / double(n * n);
+    };
+    const std::vector<std::pair<glm::dvec2, glm::dvec2>> rects = {
+        {{0.0, 0.0}, {1.0, 1.0}},        // the whole texture
+        {{0.0, 0.0}, {0.05, 0.1}},       // the clamped corner
+        {{0.95, 0.9}, {1.0, 1.0}},       // the other one
+        {{0.31, 0.2}, {0.36, 0.45}},     // inside one texel column, across a row's centre
+        {{0.13, 0.05}, {0.77, 0.93}},    // across many centres
+        {{0.5, 0.5}, {0.5004, 0.5007}},  // tiny
+    };
+    for (const auto& [a, b] : rects) {
+        const glm::dvec3 exact = averageLinearRgb(t, a, b);
+        const glm::dvec3 fine = fineMean(a, b);
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(exact[c], fine[c], 2e-5) << a.x << "," << a.y << " " << c;
+    }
+    // An empty rectangle is the filter at its point; a single texel's texture is its colour everywhere.
+    EXPECT_NEAR(averageLinearRgb(t, {0.4, 0.4}, {0.4, 0.4}).x, sampleLinearRgb(t, {0.4, 0.4}).x, 1e-7);
+    Texture one;
+    one.width = one.height = 1;
+    one.rgba8 = {200, 100, 50, 255};
+    EXPECT_NEAR(averageLinearRgb(one, {0.1, 0.2}, {0.7, 0.9}).y, srgbToLinear(100), 1e-7);
 }
 
 }  // namespace

@@ -55,8 +55,9 @@ const ParamTable<MinmaxSettings>& minmaxParams() {
                                      1000, false})
             .add(&S::marchSamples, {"march_samples", "brute-force samples per ray (near the epipole, and point "
                                     "lights with point_lights=march)", 512, 1, 16384, true})
-            // An area light's VPL is softened by its disc (vpl_disc): its integrand is smooth on the disc's
-            // scale, and 64 samples come within 0.1 % of a converged march on tv-room (README, "Area lights").
+            // An area light's VPL stands for its cell (vpl_kernel): its integrand is bounded and smooth on
+            // the cell's scale, and 64 samples come within 0.4 % of a converged march on tv-room (README,
+            // "Area lights").
             .add(&S::vplSamples, {"vpl_samples", "brute-force samples per ray for each area-light VPL", 64, 1,
                                   16384, true})
             .declare({"mip_levels", "mipmap passes to run (0: all); fewer stops the frame after the mipmap stage", 0,
@@ -67,7 +68,7 @@ const ParamTable<MinmaxSettings>& minmaxParams() {
                       "by node", 0, 0, 100000, true})
             .add(&S::shadowMap, render::SceneViewPasses::params(), "shadow_map")
             .declare(render::SceneViewPasses::params(), "area_samples")
-            .declare(render::SceneViewPasses::params(), "vpl_disc")
+            .declare(render::SceneViewPasses::params(), "vpl_kernel")
             .add(&S::forceFeatures, forceFeaturesParam());
     VIZ_CHECK(table.missing().empty(), "minmax declares a shared parameter the shared passes lack");
     return table;

@@ -49,7 +49,7 @@ const ParamTable<PolyvolSettings>& polyvolParams() {
                                   "volume", 1.0 / 512.0, 0, 1, false})
             .add(&S::shadowMap, render::SceneViewPasses::params(), "shadow_map")
             .add(&S::areaSamples, render::SceneViewPasses::params(), "area_samples")
-            .declare(render::SceneViewPasses::params(), "vpl_disc")
+            .declare(render::SceneViewPasses::params(), "vpl_kernel")
             .add(&S::forceFeatures, forceFeaturesParam());
     VIZ_CHECK(table.missing().empty(), "polyvol declares a shared parameter the shared passes lack");
     return table;

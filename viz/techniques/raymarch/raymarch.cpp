@@ -39,7 +39,7 @@ const ParamTable<MarchSettings>& marchParams() {
                                   "polyvol's triangles", 0, 0, 1, true, {"nearest", "mesh"}})
             .add(&S::shadowMap, render::SceneViewPasses::params(), "shadow_map")
             .add(&S::areaSamples, render::SceneViewPasses::params(), "area_samples")
-            .declare(render::SceneViewPasses::params(), "vpl_disc")
+            .declare(render::SceneViewPasses::params(), "vpl_kernel")
             .add(&S::forceFeatures, forceFeaturesParam());
     VIZ_CHECK(table.missing().empty(), "raymarch declares a shared parameter the shared passes lack");
     return table;

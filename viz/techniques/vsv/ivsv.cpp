@@ -20,6 +20,19 @@ ParamInfo tileParam() {
     return {};
 }
 
+// The shared vpl_kernel: the surface term's VPLs take it as every technique does; the gather's Halton
+// VPLs have no cells, so `cell` makes each a disc of its area near the emitter there.
+ParamInfo vplKernelParam() {
+    for (ParamInfo p : render::SceneViewPasses::params())
+        if (p.name == "vpl_kernel") {
+            p.help += "; the gather's Halton VPLs have no cells: with cell each acts as a disc of its area dA (the "
+                      "point's 1/r^2 times r^2 / (r^2 + dA / pi))";
+            return p;
+        }
+    VIZ_CHECK(false, "the shared passes declare no vpl_kernel");
+    return {};
+}
+
 }  // namespace
 
 const ParamTable<IvsvSettings>& ivsvParams() {
@@ -61,8 +74,6 @@ const ParamTable<IvsvSettings>& ivsvParams() {
                                "Dai Sec. 5", 1, 0, 1, true, {"off", "paper"}})
             .add(&S::chunkBits, {"chunk_bits", "phi bits per quadrature node of the airlight (1, 2, 4, ..., 128)", 8,
                                  1, 128, true})
-            .add(&S::vplDisc, {"vpl_disc", "near the emitter each VPL acts as a disc of this many times its area "
-                               "(bounds the 1/r^2 spike of rays grazing it); 0: points", 1, 0, 16, false})
             .add(&S::bilateralSigma, {"bilateral_sigma", "distance tolerance of the bilateral filters, relative to d",
                                       0.1, 0.001, 10, false})
             .declare({"scan_passes", "stop the segmented alpha scan after this many passes (-1: all; stepping)", -1,
@@ -77,6 +88,7 @@ const ParamTable<IvsvSettings>& ivsvParams() {
                                  "picked pixel)", -1, -1, 512, true})
             .add(&S::tile, tileParam())
             .declare(render::SceneViewPasses::params(), "area_samples")
+            .add(&S::vplKernel, vplKernelParam())
             .add(&S::forceFeatures, forceFeaturesParam());
     VIZ_CHECK(table.missing().empty(), "ivsv declares a shared parameter the shared passes lack");
     return table;
@@ -95,7 +107,7 @@ IvsvTechnique::IvsvTechnique()
          "naive: a cube shadow map per VPL",
          {"mode", "points", "fill_levels", "shadow_map"}, {kPointCloud, kIsmRaw, kIsm, "ivsv.naive.shadow_map"}, 1},
         {kStageSurface, "Camera view",
-         "the shared surface term: its own shadow maps, distance d and surface radiance", {"area_samples", "vpl_disc"},
+         "the shared surface term: its own shadow maps, distance d and surface radiance", {"area_samples", "vpl_kernel"},
          {"ivsv.shadow_map", "ivsv.distance", "ivsv.surface"}, 1},
         {kStageVoxelize, "Rectify",
          "every VPL's shadow map resampled into its own epipolar grid tile (one pass, or one per VPL for naive)",
@@ -103,7 +115,7 @@ IvsvTechnique::IvsvTechnique()
         {kStageScan, "Extrude (segmented scan)", "prefix OR along alpha restarting at every tile boundary",
          {"scan_passes"}, {kScanSlice}, kMaxScanPasses, "scan_passes"},
         {kStageGather, "Gather", "per pixel: sum over VPLs of visibility x airlight (full, interleaved, quarter)",
-         {"combine", "gather", "subsets", "deinterleave", "interp", "epipole", "chunk_bits", "vpl_disc", "bilateral_sigma", "vpl_step", "pick_x", "pick_y",
+         {"combine", "gather", "subsets", "deinterleave", "interp", "epipole", "chunk_bits", "vpl_kernel", "bilateral_sigma", "vpl_step", "pick_x", "pick_y",
           "force_features"},
          {kColumn, kPerVpl, kInterleave, kAirlight, kVisibility}, 1, "vpl_step"},
         render::SceneViewPasses::composeStage("ivsv"),

@@ -105,7 +105,7 @@ void IvsvTechnique::gather(const scene::Scene& scene, const FrameInput& input, i
     program.set("uPhaseShift", phaseShift(s, input));
     mMedium.bind(scene.medium);
     program.set("uChunkBits", s.chunkBits);
-    program.set("uDiscScale", float(s.vplDisc));
+    program.set("uDiscScale", s.vplKernel != 0.0 ? 1.0f : 0.0f);
     program.set("uPick", pickGl);
     mVplBuffer.bindBase(GL_SHADER_STORAGE_BUFFER, 4);
     mPick.bindBase(GL_SHADER_STORAGE_BUFFER, 6);

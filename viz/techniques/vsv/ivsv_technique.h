@@ -113,7 +113,7 @@ struct IvsvSettings {
     bool interp = false;
     bool epipole = false;  // epipole=paper
     int chunkBits = 0;
-    double vplDisc = 0.0, bilateralSigma = 0.0;
+    double vplKernel = 0.0, bilateralSigma = 0.0;
     int pickVpl = 0, pickTheta = -1;
     int tile = 0;  // shadow_map: the ISM tile or naive cube face
     bool forceFeatures = false;

@@ -307,7 +307,7 @@ Plan VsvTechnique::planFor(const scene::Scene& scene, const Settings& settings, 
                           hasSun ? "light lines at offset y replace light-ray angles (a run-time branch)"
                                  : "no directional light"});
     p.features.push_back({"AREA_LIGHTS_BY_IVSV", hasArea,
-                          hasArea ? "the area light is shaded by an inner ivsv (its defaults, vsv's vpl_disc) in the "
+                          hasArea ? "the area light is shaded by an inner ivsv (its defaults, vsv's vpl_kernel) in the "
                                     "gather stage"
                                   : "no area light"});
     render::planCulledLights(scene, p);

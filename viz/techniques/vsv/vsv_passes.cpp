@@ -48,9 +48,9 @@ void VsvTechnique::addAreaLights(const FrameInput& input) {
     in.scene = &mAreaLightsScene;
     in.width = input.width;
     in.height = input.height;
-    // The inner ivsv's VPLs take vsv's vpl_disc, as the surface term's do.
+    // The inner ivsv's VPLs take vsv's vpl_kernel, as the surface term's do.
     setRunSettings(in, completeSettings(*mIvsv, {{"voxels", std::min(512.0, double(mSettings.voxels))},
-                                                 {"vpl_disc", input.settings.at("vpl_disc")}}));
+                                                 {"vpl_kernel", input.settings.at("vpl_kernel")}}));
     in.stopAfterStage = 5;  // ivsv.gather: L_air exists, no compose needed
     in.readBack = false;    // the add reads the inner L_air's texture
     in.timer = input.timer;  // the caller's clock, if it gave one, times the inner stages too
