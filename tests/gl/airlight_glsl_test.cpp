@@ -15,9 +15,8 @@
 #include "cpu/math/airlight_cases.h"
 #include "cpu/math/cosine_lobe_cases.h"
 #include "cpu/math/spot_penumbra_cases.h"
-#include "gl/buffer.h"
+#include "case_shader.h"
 #include "gl/gl_test_fixture.h"
-#include "gl/program.h"
 #include "shared/airlight.h"
 
 namespace viz::airlight::test {
@@ -30,23 +29,7 @@ double relativeError(double value, double reference) {
     return std::abs(value - reference) / std::abs(reference);
 }
 
-// Runs the compute shader tests/data/math/FILE over `count` cases (its inputs, uCount, 64 per work group)
-// and returns one Output per case.
-template <typename Output>
-std::vector<Output> runCaseShader(const char* file, const std::vector<glm::vec4>& inputs, int count) {
-    gl::Buffer inBuffer = gl::Buffer::create(
-        {.bytes = inputs.size() * sizeof(glm::vec4), .data = inputs.data(), .label = "test.case_inputs"});
-    gl::Buffer outBuffer = gl::Buffer::create({.bytes = size_t(count) * sizeof(Output), .label = "test.case_outputs"});
-    const std::string shader = std::string(VIZ_TEST_DATA_DIR) + "/math/" + file;
-    gl::Program program = gl::Program::compile({.stages = {shader}, .label = file});
-    program.use();
-    program.set("uCount", count);
-    inBuffer.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
-    outBuffer.bindBase(GL_SHADER_STORAGE_BUFFER, 1);
-    glDispatchCompute(GLuint((count + 63) / 64), 1, 1);
-    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-    return outBuffer.download<Output>();
-}
+using viz::testing::runCaseShader;
 
 TEST_F(AirlightGlsl, MatchesDoubleKernelOnStiffGrid) {
     std::vector<SegmentCase> cases;

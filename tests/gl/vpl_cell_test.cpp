@@ -14,8 +14,7 @@
 
 #include <glm/glm.hpp>
 
-#include "gl/buffer.h"
-#include "gl/program.h"
+#include "case_shader.h"
 #include "scene/builtin_scenes.h"
 #include "technique_test_util.h"
 
@@ -179,18 +178,7 @@ std::vector<glm::vec4> runCells(const std::vector<CellCase>& cases) {
         inputs.emplace_back(glm::vec3(c.rect.eV), float(c.g));
         inputs.emplace_back(glm::vec3(c.rect.n), 0.0f);
     }
-    const int count = int(cases.size());
-    gl::Buffer in = gl::Buffer::create({.bytes = inputs.size() * sizeof(glm::vec4), .data = inputs.data(), .label = "test.cells"});
-    gl::Buffer out = gl::Buffer::create({.bytes = std::size_t(count) * sizeof(glm::vec4), .label = "test.cell_outputs"});
-    gl::Program program = gl::Program::compile(
-        {.stages = {std::string(VIZ_TEST_DATA_DIR) + "/math/vpl_cell_glsl_test.comp"}, .label = "vpl_cell_glsl_test"});
-    program.use();
-    program.set("uCount", count);
-    in.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
-    out.bindBase(GL_SHADER_STORAGE_BUFFER, 1);
-    glDispatchCompute(GLuint((count + 63) / 64), 1, 1);
-    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-    return out.download<glm::vec4>();
+    return runCaseShader<glm::vec4>("vpl_cell_glsl_test.comp", inputs, int(cases.size()));
 }
 
 // The double side takes the float-rounded inputs the shader saw.

@@ -20,6 +20,12 @@ std::vector<ParamInfo> SceneViewPasses::params() {
     };
 }
 
+std::string SceneViewPasses::vplKernelText(const Settings& settings) {
+    const auto it = settings.find("vpl_kernel");
+    return it == settings.end() || it->second != 0.0 ? "each its cell of the emitter (vpl_kernel=cell)"
+                                                     : "each a point (vpl_kernel=point)";
+}
+
 StageInfo SceneViewPasses::shadowStage(const std::string& prefix, const std::vector<std::string>& extraIntermediates) {
     StageInfo stage{prefix + ".shadow_maps", "Shadow maps", "render every light's shadow map (linear distance)",
                     {"shadow_map", "area_samples", "vpl_kernel"}, {prefix + ".shadow_map"}, 1};

@@ -221,12 +221,15 @@ Plan PolyvolTechnique::plan(const scene::Scene& scene, const Settings& settings)
                           lut ? "airlight=lut: 2D table of the unit point-light integral (supplement)"
                               : "airlight=analytic: segment integral of common/airlight.glsl, no table"});
     const int areaSamples = s.areaSamples;
+    const bool cells = settingOr(settings, "vpl_kernel", 1.0) != 0.0;
+    const std::string factor = cells ? "its cell's solid angle" : "the cosine lobe";
     p.features.push_back({"AREA_VPLS", hasArea,
                           hasArea ? "each area light -> " + std::to_string(areaSamples * areaSamples) +
-                                        " virtual point lights, each a cube light volume (" +
-                                        (lut ? std::to_string(s.spotPieces) + " equal-angle pieces of the cosine lobe "
-                                               "per crossing: the table has no lobe)"
-                                             : std::string("cosine lobe integrated exactly in each crossing's segment)"))
+                                        " virtual point lights, " + render::SceneViewPasses::vplKernelText(settings) +
+                                        ", each a cube light volume (" +
+                                        (lut ? std::to_string(s.spotPieces) + " equal-angle pieces of " + factor +
+                                                   " per crossing: the table has none)"
+                                             : factor + " integrated exactly in each crossing's segment)")
                                   : "no area light in the scene"});
     // Adaptive tessellation is left out below the shadow-map size where it stops paying off
     // (measured, README "Benchmark: static vs adaptive": from 256^2 on colonnade but only from 512^2

@@ -149,7 +149,8 @@ Plan RaymarchTechnique::plan(const scene::Scene& scene, const Settings& settings
     const bool hasArea = render::hasLightOfType(scene, scene::LightType::Area);
     p.features.push_back({"AREA_VPLS", hasArea,
                           hasArea ? "each area light -> " + std::to_string(area * area) +
-                                        " virtual point lights with cube shadow maps"
+                                        " virtual point lights with cube shadow maps, " +
+                                        render::SceneViewPasses::vplKernelText(settings)
                                   : "no area light in the scene"});
     const bool cubes = render::hasLightOfType(scene, scene::LightType::Point) || hasArea;
     p.features.push_back({"SHADOW_MAPS_CUBE", cubes,
