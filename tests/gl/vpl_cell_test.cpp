@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <algorithm>
 #include <cstdio>
 #include <functional>
 #include <numbers>
@@ -16,6 +17,8 @@
 
 #include "case_shader.h"
 #include "scene/builtin_scenes.h"
+#include "scene/texture_sampling.h"
+#include "shared/gauss_legendre.h"
 #include "technique_test_util.h"
 
 namespace viz::testing {
@@ -262,6 +265,56 @@ TEST_F(VplCellTest, MinmaxMarchesEachVplWithFewSamplesAndStaysWithinHalfAPercent
     const double e = relativeL2(out.airlight, converged.airlight);
     std::printf("minmax (vpl_samples=64) against raymarch at 1024 samples on tv-room's VPLs: relative L2 %.5f\n", e);
     EXPECT_LT(e, 0.006);
+}
+
+// The VPL cells view (render/vpl_cells_view.h): on tv-room every technique on the shared VPLs shows the
+// screen at its aspect ratio, each cell in the picture's mean colour over that cell (against a fine grid
+// of bilinear samples over the cell the Gauss-Legendre weights give it, normalised like the view); grate,
+// without an area light, has none.
+TEST_F(VplCellTest, TheCellsViewShowsEachCellInItsMeanColour) {
+    const scene::Scene tv = scene::makeBuiltinScene("tv-room");
+    const scene::Light& screen = tv.lights.front();
+    const scene::Texture& picture = tv.textures[std::size_t(screen.emissionTexture)];
+    const int n = 4;
+    const QuadratureRule rule = gaussLegendreRule(n);
+    std::vector<double> edge{0.0};
+    for (double w : rule.weights) edge.push_back(edge.back() + 0.5 * w);
+    // uv at fraction f of the way across cell i (the same edges along u and v).
+    const auto within = [&](int i, double f) {
+        return edge[std::size_t(i)] + f * (edge[std::size_t(i) + 1] - edge[std::size_t(i)]);
+    };
+    std::vector<glm::dvec3> means;
+    double peak = 0.0;
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            const int fine = 200;
+            glm::dvec3 sum(0.0);
+            for (int b = 0; b < fine; ++b)
+                for (int a = 0; a < fine; ++a) {
+                    const glm::dvec2 uv(within(i, (a + 0.5) / fine), within(j, (b + 0.5) / fine));
+                    sum += glm::dvec3(scene::sampleLinearRgb(picture, uv));
+                }
+            means.push_back(screen.radiance * sum / double(fine * fine));
+            peak = std::max({peak, means.back().r, means.back().g, means.back().b});
+        }
+    for (const std::string technique : {"raymarch", "slices", "polyvol", "minmax"}) {
+        SCOPED_TRACE(technique);
+        const FrameOutput out = render(tv, technique, {{"area_samples", double(n)}}, 32, 24, 0);
+        const Intermediate* view = find(out, technique + ".vpl_cells");
+        ASSERT_NE(view, nullptr);
+        ASSERT_TRUE(view->image);
+        const Image& im = *view->image;
+        EXPECT_NEAR(double(im.width) / double(im.height), 1.6 / 0.9, 0.02);
+        for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i) {
+                // A point a third of the way into the cell from its low corner: inside, off the node's dot.
+                const int x = int(within(i, 0.3) * im.width), y = int(within(j, 0.3) * im.height);
+                for (int c = 0; c < 3; ++c)
+                    EXPECT_NEAR(im.at(x, y, c), means[std::size_t(j * n + i)][c] / peak, 2e-3) << i << "," << j;
+            }
+    }
+    const FrameOutput grate = render(scene::makeBuiltinScene("grate"), "raymarch", {}, 32, 24, 0);
+    EXPECT_EQ(find(grate, "raymarch.vpl_cells"), nullptr);
 }
 
 }  // namespace

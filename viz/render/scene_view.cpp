@@ -5,6 +5,7 @@
 
 #include "render/intermediates.h"
 #include "render/shadow_map_markers.h"
+#include "render/vpl_cells_view.h"
 #include "scene/camera.h"
 #include "scene/scene_source.h"
 
@@ -28,7 +29,7 @@ std::string SceneViewPasses::vplKernelText(const Settings& settings) {
 
 StageInfo SceneViewPasses::shadowStage(const std::string& prefix, const std::vector<std::string>& extraIntermediates) {
     StageInfo stage{prefix + ".shadow_maps", "Shadow maps", "render every light's shadow map (linear distance)",
-                    {"shadow_map", "area_samples", "vpl_kernel"}, {prefix + ".shadow_map"}, 1};
+                    {"shadow_map", "area_samples", "vpl_kernel"}, {prefix + ".shadow_map", prefix + ".vpl_cells"}, 1};
     stage.keepsOutputs = true;  // the instance's shadow maps
     stage.intermediates.insert(stage.intermediates.end(), extraIntermediates.begin(), extraIntermediates.end());
     return stage;
@@ -77,6 +78,7 @@ void SceneViewPasses::buildShadows(const scene::Scene& scene, int shadowMapSize,
     mFrameSize = glm::ivec2(0);  // known again from runSharedStages or renderSurface
     mShadows->build(*mGpuScene, *mLights, shadowMapSize, std::min(shadowMapSize, kMaxVplShadowSize));
     mShadows->publish(out, prefix);
+    for (Intermediate& view : vplCellsViews(scene, *mLights, prefix)) out.push_back(std::move(view));
 }
 
 void SceneViewPasses::renderSurface(const scene::Scene& scene, int width, int height, std::vector<Intermediate>& out,

@@ -108,7 +108,7 @@ IvsvTechnique::IvsvTechnique()
          {"mode", "points", "fill_levels", "shadow_map"}, {kPointCloud, kIsmRaw, kIsm, "ivsv.naive.shadow_map"}, 1},
         {kStageSurface, "Camera view",
          "the shared surface term: its own shadow maps, distance d and surface radiance", {"area_samples", "vpl_kernel"},
-         {"ivsv.shadow_map", "ivsv.distance", "ivsv.surface"}, 1},
+         {"ivsv.shadow_map", "ivsv.vpl_cells", "ivsv.distance", "ivsv.surface"}, 1},
         {kStageVoxelize, "Rectify",
          "every VPL's shadow map resampled into its own epipolar grid tile (one pass, or one per VPL for naive)",
          {"voxels", "alpha_bias", "phi_bias", "pick_vpl", "pick_theta"}, {kVoxelSlice}, 1},
