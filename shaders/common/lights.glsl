@@ -29,7 +29,7 @@ bool vplHasCell(GpuLight L) {
 #ifdef SHADOW_NO_CUBE
     return false;  // the plan found no point or area light: no VPL, and the code below folds away
 #else
-    return L.info.x == kLightVpl && L.position.w > 0.0;
+    return L.info.x == kLightVpl && L.position.w > 0.0 && L.spot.w > 0.0;  // a cell of no area: the point
 #endif
 }
 
