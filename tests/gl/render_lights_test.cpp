@@ -16,6 +16,7 @@
 #include "render/medium_block.h"
 #include "render/shadow_maps.h"
 #include "scene/texture_sampling.h"
+#include "solid_angle_oracle.h"
 
 namespace viz::render {
 namespace {
@@ -256,19 +257,6 @@ TEST_F(RenderLights, AreaLightBecomesVplsThatIntegrateTheEmitter) {
     EXPECT_NO_THROW(GpuLights(s, glm::dvec3(0.0), 16));
 }
 
-// Solid angle of the rectangle with corner c and perpendicular edges eU, eV (lit side n) seen from p, by
-// the corner formula, independent of the shader's two triangles: in the rectangle's frame with p at
-// height z over the origin, the sum over corners (a, b) of +-atan(a b / (z |(a, b, z)|)).
-double rectangleSolidAngle(glm::dvec3 c, glm::dvec3 eU, glm::dvec3 eV, glm::dvec3 n, glm::dvec3 p) {
-    const glm::dvec3 d = p - c;
-    const double z = glm::dot(d, n);
-    if (!(z > 0.0)) return 0.0;
-    const double lu = glm::length(eU), lv = glm::length(eV);
-    const double pu = glm::dot(d, eU) / lu, pv = glm::dot(d, eV) / lv;
-    const auto f = [z](double a, double b) { return std::atan(a * b / (z * std::sqrt(a * a + b * b + z * z))); };
-    return f(lu - pu, lv - pv) - f(-pu, lv - pv) - f(lu - pu, -pv) + f(-pu, -pv);
-}
-
 // A VPL's E stands for its cell (shaders/common/lights.glsl, vplHasCell): L_e Omega_cell(p) exp(-sigma_t r),
 // r to the node; as a point (vpl_kernel=point) L_e dA n.(p - D) exp(-sigma_t r) / r^3. One node: the cell is
 // the whole rectangle. Points far below show the two agree; 0.01 below the centre the point's 1/r^2 is
@@ -308,8 +296,8 @@ TEST_F(RenderLights, VplIrradianceIsTheCellsSolidAngleOrThePointsCosineLobe) {
         SCOPED_TRACE(i);
         const glm::dvec3 d = asFloat(world[i]) - area.position;
         const double r = glm::length(d);
-        const double omega = rectangleSolidAngle(corner, asFloat(2.0 * area.halfU), asFloat(2.0 * area.halfV),
-                                                 area.direction, asFloat(world[i]));
+        const double omega = testing::rectangleSolidAngle(corner, asFloat(2.0 * area.halfU),
+                                                          asFloat(2.0 * area.halfV), area.direction, asFloat(world[i]));
         const glm::dvec3 cell = area.radiance * omega * std::exp(-double(sigma_t) * r);
         const double normal = std::max(0.0, glm::dot(area.direction, d));
         const glm::dvec3 point = area.radiance * dA * normal * std::exp(-double(sigma_t) * r) / (r * r * r);

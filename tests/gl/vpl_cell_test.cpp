@@ -19,29 +19,20 @@
 #include "scene/builtin_scenes.h"
 #include "scene/texture_sampling.h"
 #include "shared/gauss_legendre.h"
+#include "solid_angle_oracle.h"
 #include "technique_test_util.h"
 
 namespace viz::testing {
 namespace {
 
-// ---- The independent side, in double ------------------------------------------------------------------
+// ---- The independent side, in double (the rectangle's solid angle: solid_angle_oracle.h) -----------------
 
 // A rectangle with corner c, perpendicular edges eU and eV and unit normal n toward its lit side.
 struct Rect {
     glm::dvec3 corner, eU, eV, n;
 };
 
-// Solid angle of the rectangle from p, by the corner formula: in the rectangle's frame with p's foot
-// point at the origin and p at height z, Omega = sum over corners (a, b) of +-atan(a b / (z |(a, b, z)|)).
-double rectSolidAngle(const Rect& r, glm::dvec3 p) {
-    const glm::dvec3 d = p - r.corner;
-    const double z = glm::dot(d, r.n);
-    if (!(z > 0.0)) return 0.0;
-    const double lu = glm::length(r.eU), lv = glm::length(r.eV);
-    const double pu = glm::dot(d, r.eU) / lu, pv = glm::dot(d, r.eV) / lv;
-    const auto f = [z](double a, double b) { return std::atan(a * b / (z * std::sqrt(a * a + b * b + z * z))); };
-    return f(lu - pu, lv - pv) - f(-pu, lv - pv) - f(lu - pu, -pv) + f(-pu, -pv);
-}
+double rectSolidAngle(const Rect& r, glm::dvec3 p) { return rectangleSolidAngle(r.corner, r.eU, r.eV, r.n, p); }
 
 double phaseHenyeyGreenstein(double cosTheta, double g) {
     const double denominator = 1.0 + g * g - 2.0 * g * cosTheta;
