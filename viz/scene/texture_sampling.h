@@ -81,7 +81,12 @@ inline double texelShare(int i, int n, double a, double b) {
 
 // Mean of sampleLinearRgb over the uv rectangle [uv0, uv1] (uv0 <= uv1 componentwise, inside [0,1]^2),
 // exactly: the bilinear interpolant is separable, so each texel weighs the product of its two axes'
-// shares. An emitter's cell thus carries the colour of its whole area, not of one point in it.
+// shares. An emitter's cell thus carries the colour of its whole area, not of one point in it. A
+// rectangle wider or taller than kMaxExactTexels texels (a large emission texture: every VPL set is laid
+// out again when the camera moves) takes the mean of a kMaxExactTexels^2 midpoint grid of the filter
+// instead, so that the cost per rectangle stays bounded.
+inline constexpr int kMaxExactTexels = 128;
+
 inline glm::dvec3 averageLinearRgb(const Texture& tex, glm::dvec2 uv0, glm::dvec2 uv1) {
     if (tex.width <= 0 || tex.height <= 0) return glm::dvec3(1.0);
     uv0 = glm::clamp(uv0, glm::dvec2(0.0), glm::dvec2(1.0));
@@ -94,12 +99,21 @@ inline glm::dvec3 averageLinearRgb(const Texture& tex, glm::dvec2 uv0, glm::dvec
     const int x0 = std::max(0, int(std::floor(ax))), x1 = std::min(tex.width - 1, int(std::ceil(bx)));
     const int y0 = std::max(0, int(std::floor(ay))), y1 = std::min(tex.height - 1, int(std::ceil(by)));
     glm::dvec3 sum(0.0);
+    if (x1 - x0 >= kMaxExactTexels || y1 - y0 >= kMaxExactTexels) {
+        const int n = kMaxExactTexels;
+        for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i)
+                sum += glm::dvec3(sampleLinearRgb(tex, glm::mix(uv0, uv1, glm::dvec2((i + 0.5) / n, (j + 0.5) / n))));
+        return sum / double(n * n);
+    }
+    std::array<double, kMaxExactTexels + 1> wx{};
+    for (int x = x0; x <= x1; ++x) wx[std::size_t(x - x0)] = texelShare(x, tex.width, ax, bx);
     for (int y = y0; y <= y1; ++y) {
         const double wy = texelShare(y, tex.height, ay, by);
         if (wy == 0.0) continue;
         for (int x = x0; x <= x1; ++x) {
-            const double wx = texelShare(x, tex.width, ax, bx);
-            if (wx != 0.0) sum += wx * wy * glm::dvec3(texelLinearRgb(tex, x, y));
+            const double w = wx[std::size_t(x - x0)];
+            if (w != 0.0) sum += w * wy * glm::dvec3(texelLinearRgb(tex, x, y));
         }
     }
     return sum / ((bx - ax) * (by - ay));

@@ -89,6 +89,28 @@ TEST(TextureSampling, AverageIsTheMeanOfTheBilinearFilter) {
         const glm::dvec3 fine = fineMean(a, b);
         for (int c = 0; c < 3; ++c) EXPECT_NEAR(exact[c], fine[c], 2e-5) << a.x << "," << a.y << " " << c;
     }
+    // Wider than kMaxExactTexels texels: the mean of a midpoint grid of the filter, still near the fine
+    // mean (a smooth 600 x 400 ramp in each channel, whose grid error is O(1/128^2)).
+    Texture big;
+    big.width = 600;
+    big.height = 400;
+    for (int y = 0; y < big.height; ++y)
+        for (int x = 0; x < big.width; ++x) {
+            big.rgba8.push_back(std::uint8_t(x * 255 / (big.width - 1)));
+            big.rgba8.push_back(std::uint8_t(y * 255 / (big.height - 1)));
+            big.rgba8.push_back(std::uint8_t((x + y) * 255 / (big.width + big.height - 2)));
+            big.rgba8.push_back(255);
+        }
+    {
+        const glm::dvec3 a = averageLinearRgb(big, {0.05, 0.1}, {0.9, 0.8});
+        glm::dvec3 fine(0.0);
+        const int n = 1000;
+        for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i)
+                fine += glm::dvec3(sampleLinearRgb(big, {0.05 + 0.85 * (i + 0.5) / n, 0.1 + 0.7 * (j + 0.5) / n}));
+        fine /= double(n * n);
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(a[c], fine[c], 1e-4) << c;
+    }
     // An empty rectangle is the filter at its point; a single texel's texture is its colour everywhere.
     EXPECT_NEAR(averageLinearRgb(t, {0.4, 0.4}, {0.4, 0.4}).x, sampleLinearRgb(t, {0.4, 0.4}).x, 1e-7);
     Texture one;
