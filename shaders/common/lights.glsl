@@ -38,10 +38,10 @@ float vplCellSolidAngle(GpuLight L, vec3 p) {
     return parallelogramSolidAngle(L.spot.xyz - p, L.frameX.xyz, L.frameY.xyz, L.direction.xyz, L.spot.w);
 }
 
-// The direction from p to the light for the phase function of the air at p.
-vec3 airDirectionToLight(GpuLight L, vec3 p) {
-    if (L.info.x == kLightDirectional) return -L.direction.xyz;
-    return normalize(L.position.xyz - p);
+// A VPL cell's angular factor at p, in place of a point's cos(theta_e): Omega_cell(p) r^2 / dA (r2 = r^2
+// = |p - D|^2, as the caller has it), so that the point's I / r^2 with I = L_e dA gives L_e Omega_cell.
+float vplCellFactor(GpuLight L, vec3 p, float r2) {
+    return vplCellSolidAngle(L, p) * (r2 / L.spot.w);
 }
 
 // distanceToLight() of a directional light.

@@ -60,7 +60,7 @@ vec3 tailByTheLight(GpuLight L, vec3 w, vec2 span, int count) {
         MarchSample m = placeSample(L, w, span, i, count, 0.5, 0.0);
         vec3 x = m.t * w;
         float V = shadowVisibilityMedium(L, x);
-        if (V > 0.0) sum += airlightSample(V, dot(airDirectionToLight(L, x), w), unshadowedIrradiance(L, x, uSigmaT), m.t, m.dt);
+        if (V > 0.0) sum += airlightSample(V, dot(directionToLight(L, x), w), unshadowedIrradiance(L, x, uSigmaT), m.t, m.dt);
     }
     return sum;
 }

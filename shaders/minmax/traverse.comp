@@ -55,8 +55,8 @@ const float uAxisReach = 3.0e38;
 
 // Brute force for lights without an epipolar path (raymarch's midpoint rule): uMarchSamples samples
 // (uVplSamples for a VPL) uniform in t over [0, d] (or, with a far camera, by the light: placeSample),
-// each the integrand sigma_s p E V exp(-sigma_t t) dt at its point. No loops inside the loop: llvmpipe ends all loops of an
-// invocation together after 65535 iterations.
+// each the integrand sigma_s p E V exp(-sigma_t t) dt at its point. No loops inside the loop: llvmpipe
+// ends all loops of an invocation together after 65535 iterations.
 vec3 march(GpuLight L, vec3 w, float d) {
     vec2 span = vec2(0.0, d);
 #ifdef FAR_RAYS
@@ -71,7 +71,7 @@ vec3 march(GpuLight L, vec3 w, float d) {
         vec3 x = t * w;
         float V = shadowVisibility(L, x);
         if (V == 0.0) continue;
-        float cosTheta = dot(airDirectionToLight(L, x), w);
+        float cosTheta = dot(directionToLight(L, x), w);
         sum += airlightSample(V, cosTheta, unshadowedIrradiance(L, x, uSigmaT), t, m.dt);
     }
     return sum;
@@ -110,7 +110,7 @@ vec3 marchGamma(GpuLight L, vec3 w, float beta, float d) {
             float s = sin(beta + gamma);
             jacobian = uLightDistance * sinBeta / (s * s);
         }
-        float cosTheta = dot(airDirectionToLight(L, x), w);
+        float cosTheta = dot(directionToLight(L, x), w);
         sum += airlightSample(1.0, cosTheta, unshadowedIrradiance(L, x, uSigmaT), t, jacobian * step);
     }
     return sum;

@@ -54,11 +54,10 @@ vec3 pieceIntensity(GpuLight L, vec3 m, float h, vec3 w, float phi0, float phi1,
 #if !defined(AIRLIGHT_LUT) && !defined(LIGHTS_NO_COOKIE)
     if (L.info.x == kLightSpot) return L.radiant.rgb * spotCookie(L, dirFromLight);
 #endif
-    // A VPL's cell (lights.glsl, vplHasCell): its solid angle times r^2 / dA at the middle, r = h / cos.
+    // A VPL's cell (lights.glsl, vplCellFactor) at the middle's point, r = h / cos from the light.
     if (vplHasCell(L)) {
         float r = h / max(cos(phiMid), 1.0e-30);
-        vec3 x = L.position.xyz + r * dirFromLight;
-        return L.radiant.rgb * (vplCellSolidAngle(L, x) * (r * r / L.spot.w));
+        return L.radiant.rgb * vplCellFactor(L, L.position.xyz + r * dirFromLight, r * r);
     }
     return lightIntensityToward(L, dirFromLight);
 }

@@ -89,7 +89,7 @@ void main() {
         litSamples += V;
         if (V == 0.0) continue;
         // cos theta = dot(direction light->point, direction point->eye) = dot(toLight, w).
-        vec3 toLight = airDirectionToLight(L, x);
+        vec3 toLight = directionToLight(L, x);
         float cosTheta = dot(toLight, w);
 #ifdef EXACT
         float x0 = m.x0;

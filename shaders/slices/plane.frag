@@ -154,8 +154,7 @@ vec3 shade(GpuLight L, vec3 w, float t, float dt) {
     } else {
         vec3 toLight = L.position.xyz - p;
         float r2 = dot(toLight, toLight);
-        // A VPL's cell: Omega_cell r^2 / dA, so that with I = L_e dA and the 1/r^2 below E is L_e Omega_cell.
-        if (vplHasCell(L)) angular = vplCellSolidAngle(L, p) * (r2 / L.spot.w);
+        if (vplHasCell(L)) angular = vplCellFactor(L, p, r2);  // E below is then L_e Omega_cell
 #ifdef SLAB_EQUIANGULAR
         E = L.radiant.rgb * angular * cookie * exp(-uSigmaT * sqrt(r2));
 #else

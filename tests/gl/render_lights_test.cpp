@@ -16,6 +16,7 @@
 #include "render/medium_block.h"
 #include "render/shadow_maps.h"
 #include "scene/texture_sampling.h"
+#include "cpu/scene/texture_mean_oracle.h"
 #include "solid_angle_oracle.h"
 
 namespace viz::render {
@@ -344,12 +345,7 @@ TEST_F(RenderLights, VplsCarryTheirCellsMeanColour) {
                       .radiance = {3.0, 3.0, 3.0}};
     area.emissionTexture = 0;
     s.lights = {area};
-    const int fine = 1400;
-    glm::dvec3 mean(0.0);
-    for (int j = 0; j < fine; ++j)
-        for (int i = 0; i < fine; ++i)
-            mean += glm::dvec3(scene::sampleLinearRgb(bars, {(i + 0.5) / fine, (j + 0.5) / fine}));
-    mean /= double(fine) * fine;
+    const glm::dvec3 mean = testing::gridMeanLinearRgb(bars, {0.0, 0.0}, {1.0, 1.0}, 1400);
     const double areaSize = 4.0 * 0.8 * 0.45;
     for (int n : {1, 2, 4, 7}) {
         const LightDescription d = describeLights(s, glm::dvec3(0.0), n);

@@ -16,8 +16,9 @@
 #include <glm/glm.hpp>
 
 #include "case_shader.h"
+#include "cpu/reference/reference_test_util.h"
 #include "scene/builtin_scenes.h"
-#include "scene/texture_sampling.h"
+#include "cpu/scene/texture_mean_oracle.h"
 #include "shared/gauss_legendre.h"
 #include "solid_angle_oracle.h"
 #include "technique_test_util.h"
@@ -33,11 +34,6 @@ struct Rect {
 };
 
 double rectSolidAngle(const Rect& r, glm::dvec3 p) { return rectangleSolidAngle(r.corner, r.eU, r.eV, r.n, p); }
-
-double phaseHenyeyGreenstein(double cosTheta, double g) {
-    const double denominator = 1.0 + g * g - 2.0 * g * cosTheta;
-    return (1.0 - g * g) / (4.0 * std::numbers::pi * denominator * std::sqrt(denominator));
-}
 
 double adaptiveSimpson(const std::function<double(double)>& f, double a, double b, double fa, double fm, double fb,
                        double whole, double tolerance, int depth) {
@@ -82,7 +78,7 @@ double cellAirlight(const CellCase& c, double relativeTolerance) {
         const glm::dvec3 toNode = c.node - x;
         const double r = glm::length(toNode);
         const double cosTheta = r > 0.0 ? glm::dot(toNode, c.w) / r : 1.0;
-        return c.sigmaS * phaseHenyeyGreenstein(cosTheta, c.g) * rectSolidAngle(c.rect, x) *
+        return c.sigmaS * reference_test::hg(cosTheta, c.g) * rectSolidAngle(c.rect, x) *
                std::exp(-c.sigmaT * (t + r));
     };
     // Break points where the ray is near the cell: around the node's foot point at a ladder of scales.
@@ -278,14 +274,8 @@ TEST_F(VplCellTest, TheCellsViewShowsEachCellInItsMeanColour) {
     double peak = 0.0;
     for (int j = 0; j < n; ++j)
         for (int i = 0; i < n; ++i) {
-            const int fine = 200;
-            glm::dvec3 sum(0.0);
-            for (int b = 0; b < fine; ++b)
-                for (int a = 0; a < fine; ++a) {
-                    const glm::dvec2 uv(within(i, (a + 0.5) / fine), within(j, (b + 0.5) / fine));
-                    sum += glm::dvec3(scene::sampleLinearRgb(picture, uv));
-                }
-            means.push_back(screen.radiance * sum / double(fine * fine));
+            const glm::dvec2 lo(within(i, 0.0), within(j, 0.0)), hi(within(i, 1.0), within(j, 1.0));
+            means.push_back(screen.radiance * gridMeanLinearRgb(picture, lo, hi, 200));
             peak = std::max({peak, means.back().r, means.back().g, means.back().b});
         }
     for (const std::string technique : {"raymarch", "slices", "polyvol", "minmax"}) {

@@ -21,10 +21,13 @@ std::vector<ParamInfo> SceneViewPasses::params() {
     };
 }
 
+VplKernel SceneViewPasses::vplKernel(const Settings& settings) {
+    return settingOr(settings, "vpl_kernel", 1.0) != 0.0 ? VplKernel::Cell : VplKernel::Point;
+}
+
 std::string SceneViewPasses::vplKernelText(const Settings& settings) {
-    const auto it = settings.find("vpl_kernel");
-    return it == settings.end() || it->second != 0.0 ? "each its cell of the emitter (vpl_kernel=cell)"
-                                                     : "each a point (vpl_kernel=point)";
+    return vplKernel(settings) == VplKernel::Cell ? "each its cell of the emitter (vpl_kernel=cell)"
+                                                  : "each a point (vpl_kernel=point)";
 }
 
 StageInfo SceneViewPasses::shadowStage(const std::string& prefix, const std::vector<std::string>& extraIntermediates) {
@@ -50,7 +53,7 @@ StageInfo SceneViewPasses::composeStage(const std::string& prefix) {
 void SceneViewPasses::buildShadows(const scene::Scene& scene, const Settings& settings, std::vector<Intermediate>& out,
                                    const std::string& prefix) {
     buildShadows(scene, int(settings.at("shadow_map")), int(settings.at("area_samples")), out, prefix,
-                 settings.at("vpl_kernel") != 0.0 ? VplKernel::Cell : VplKernel::Point);
+                 vplKernel(settings));
 }
 
 void SceneViewPasses::createPasses() {

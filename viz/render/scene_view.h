@@ -28,8 +28,10 @@ public:
     // ---- declarations, so that a technique lists these stages and parameters exactly as they run ----
     // `shadow_map` (texels per side, shared by every shadow-map technique), `area_samples` and `vpl_kernel`.
     static std::vector<ParamInfo> params();
-    // What an area light's VPL stands for under completed settings' `vpl_kernel`, for a plan's reason:
-    // "each its cell of the emitter (vpl_kernel=cell)" or "each a point (vpl_kernel=point)".
+    // The `vpl_kernel` of settings (the cell when they do not set it), and what it makes an area light's
+    // VPL, for a plan's reason: "each its cell of the emitter (vpl_kernel=cell)" or "each a point
+    // (vpl_kernel=point)".
+    static VplKernel vplKernel(const Settings& settings);
     static std::string vplKernelText(const Settings& settings);
     // prefix.shadow_maps, publishing prefix.shadow_map and `extraIntermediates`.
     static StageInfo shadowStage(const std::string& prefix, const std::vector<std::string>& extraIntermediates = {});

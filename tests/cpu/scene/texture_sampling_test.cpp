@@ -4,6 +4,7 @@
 #include <utility>
 #include <vector>
 
+#include "cpu/scene/texture_mean_oracle.h"
 #include "scene/texture_sampling.h"
 
 namespace viz::scene {
@@ -67,15 +68,6 @@ TEST(TextureSampling, AverageIsTheMeanOfTheBilinearFilter) {
         t.rgba8.push_back(std::uint8_t(255 - (13 * i) % 256));
         t.rgba8.push_back(255);
     }
-    const auto fineMean = [&](glm::dvec2 a, glm::dvec2 b) {
-        const int n = 600;
-        glm::dvec3 sum(0.0);
-        for (int j = 0; j < n; ++j)
-            for (int i = 0; i < n; ++i)
-                sum += glm::dvec3(
-                    sampleLinearRgb(t, {a.x + (b.x - a.x) * (i + 0.5) / n, a.y + (b.y - a.y) * (j + 0.5) / n}));
-        return sum / double(n * n);
-    };
     const std::vector<std::pair<glm::dvec2, glm::dvec2>> rects = {
         {{0.0, 0.0}, {1.0, 1.0}},        // the whole texture
         {{0.0, 0.0}, {0.05, 0.1}},       // the clamped corner
@@ -86,7 +78,7 @@ TEST(TextureSampling, AverageIsTheMeanOfTheBilinearFilter) {
     };
     for (const auto& [a, b] : rects) {
         const glm::dvec3 exact = averageLinearRgb(t, a, b);
-        const glm::dvec3 fine = fineMean(a, b);
+        const glm::dvec3 fine = testing::gridMeanLinearRgb(t, a, b, 600);
         for (int c = 0; c < 3; ++c) EXPECT_NEAR(exact[c], fine[c], 2e-5) << a.x << "," << a.y << " " << c;
     }
     // Wider than kMaxExactTexels texels: the mean of a midpoint grid of the filter, still near the fine
@@ -103,12 +95,7 @@ TEST(TextureSampling, AverageIsTheMeanOfTheBilinearFilter) {
         }
     {
         const glm::dvec3 a = averageLinearRgb(big, {0.05, 0.1}, {0.9, 0.8});
-        glm::dvec3 fine(0.0);
-        const int n = 1000;
-        for (int j = 0; j < n; ++j)
-            for (int i = 0; i < n; ++i)
-                fine += glm::dvec3(sampleLinearRgb(big, {0.05 + 0.85 * (i + 0.5) / n, 0.1 + 0.7 * (j + 0.5) / n}));
-        fine /= double(n * n);
+        const glm::dvec3 fine = testing::gridMeanLinearRgb(big, {0.05, 0.1}, {0.9, 0.8}, 1000);
         for (int c = 0; c < 3; ++c) EXPECT_NEAR(a[c], fine[c], 1e-4) << c;
     }
     // An empty rectangle is the filter at its point; a single texel's texture is its colour everywhere.

@@ -221,7 +221,7 @@ Plan PolyvolTechnique::plan(const scene::Scene& scene, const Settings& settings)
                           lut ? "airlight=lut: 2D table of the unit point-light integral (supplement)"
                               : "airlight=analytic: segment integral of common/airlight.glsl, no table"});
     const int areaSamples = s.areaSamples;
-    const bool cells = settingOr(settings, "vpl_kernel", 1.0) != 0.0;
+    const bool cells = render::SceneViewPasses::vplKernel(settings) == render::VplKernel::Cell;
     const std::string factor = cells ? "its cell's solid angle" : "the cosine lobe";
     p.features.push_back({"AREA_VPLS", hasArea,
                           hasArea ? "each area light -> " + std::to_string(areaSamples * areaSamples) +
