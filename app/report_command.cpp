@@ -50,7 +50,9 @@ Sweeps each technique's quality knobs on each scene, times every setting (median
 warm-up; N = 5 by default) and compares its L_air with the reference (cached on disk). Writes into DIR:
 results.csv, results.json, one error-against-time plot per scene (PNG), each technique's image and error
 heat map, and index.html (static, no scripts). The headline is each technique's speed-up over
-brute-force raymarch at equal error.
+brute-force raymarch at equal error. On a scene with an area light the sweeps of the techniques that
+sample it as virtual point lights add more of them (area_samples 8, 12 and 16; 16 alone with --quick,
+where polyvol adds none).
 
   --scenes      built-in scene names or glTF paths, comma-separated (default: every built-in scene)
   --techniques  techniques to compare, comma-separated (default: every one but the reference;
@@ -62,7 +64,8 @@ brute-force raymarch at equal error.
                 on the same frames (cached), and score the frame-to-frame change of the error: per scene a
                 temporal table (mean per-frame error, temporal RMS, worst flicker, ms per frame), a flicker
                 heat map per setting, a plot of temporal RMS against time, and the techniques ranked by
-                stability. Every sweep setting and paper preset; with --quick each technique's cheapest setting
+                stability. Every sweep setting and paper preset but the added area_samples; with --quick
+                each technique's cheapest setting
   --frames N    frames per path, 2 to 240 (default 12; 6 with --quick); needs --temporal
   --path P      the motion path for every scene (as for animate: camera-orbit:A, camera-dolly:D,
                 light-orbit:A, light-sweep:A or a keyframe .json); default per scene: light-sweep:10deg, or
@@ -262,16 +265,40 @@ struct SweepPoint {
     std::string technique;
     viz::QualitySetting setting;
     std::string series;  // the report's series: the technique, or "T (paper)" for its paper preset
-    int indexInSeries = 0;
+    bool alongPath = false;    // with --temporal, also measured along the motion path
     std::string stabiliser{};  // a stabilising option's pair (always measured along the path)
     bool stabiliserOn = false;
 };
 
-// With --temporal, a scene's sweep: the techniques' sweep, then each technique's stabilising options on
-// that scene as pairs of points (the option off, then on).
-std::vector<SweepPoint> sceneSweep(const std::vector<SweepPoint>& sweep, const std::vector<std::string>& techniques,
-                                   const viz::scene::Scene& scene, bool temporal) {
-    std::vector<SweepPoint> out = sweep;
+bool hasAreaLight(const viz::scene::Scene& scene) {
+    return std::any_of(scene.lights.begin(), scene.lights.end(),
+                       [](const viz::scene::Light& l) { return l.type == viz::scene::LightType::Area; });
+}
+
+// A scene's sweep, technique by technique: the technique's quality sweep, with more VPLs where the scene
+// has an area light (Technique::areaLightSweep: these join the technique's front but are not measured
+// along the path, which would cost their square of VPLs on every frame), then its paper preset as a
+// series of its own; with --temporal, each technique's stabilising options on that scene as pairs of
+// points (the option off, then on). Every setting is checked here, before any work starts.
+std::vector<SweepPoint> sceneSweep(const std::vector<std::string>& techniques, const viz::scene::Scene& scene,
+                                   bool quick, bool temporal) {
+    std::vector<SweepPoint> out;
+    for (const std::string& id : techniques) {
+        const auto technique = viz::makeTechnique(id);
+        std::vector<viz::QualitySetting> points = technique->qualitySweep(quick);
+        const std::size_t own = points.size();
+        if (hasAreaLight(scene))
+            for (viz::QualitySetting& q : technique->areaLightSweep(quick)) points.push_back(std::move(q));
+        for (std::size_t k = 0; k < points.size(); ++k) {
+            viz::completeSettings(*technique, points[k].settings);  // throws if a declared sweep is invalid
+            out.push_back({id, std::move(points[k]), id, k < own && measuredAlongPath(quick, false, int(k))});
+        }
+        // The paper's configuration beside ours: its own series, one point.
+        if (const viz::Settings paper = technique->paperSettings(); !paper.empty()) {
+            viz::completeSettings(*technique, paper);
+            out.push_back({id, {"paper preset", paper}, id + " (paper)", measuredAlongPath(quick, true, 0)});
+        }
+    }
     if (!temporal) return out;
     for (const std::string& id : techniques) {
         const auto technique = viz::makeTechnique(id);
@@ -280,7 +307,7 @@ std::vector<SweepPoint> sceneSweep(const std::vector<SweepPoint>& sweep, const s
                 viz::Settings settings = on ? option.on : option.off;
                 (void)viz::completeSettings(*technique, settings);  // throws if a declared option is invalid
                 const viz::Settings& given = on ? option.on : option.off;
-                out.push_back({id, {settingsText(technique->params(), given), given}, id, -1, option.name, on});
+                out.push_back({id, {settingsText(technique->params(), given), given}, id, true, option.name, on});
             }
         }
     }
@@ -303,20 +330,6 @@ int runReportCommand(Args& args, const std::string& commandLine) {
         scenes.push_back(viz::scene::loadScene(name));
         viz::scene::stampGeometry(scenes.back());  // the timed runs neither walk nor hash the geometry
     }
-    std::vector<SweepPoint> sweep;
-    for (const std::string& id : o.techniques) {
-        const auto technique = viz::makeTechnique(id);
-        for (viz::QualitySetting& q : technique->qualitySweep(o.quick)) {
-            viz::completeSettings(*technique, q.settings);  // throws if a declared sweep is invalid
-            const int index = int(std::count_if(sweep.begin(), sweep.end(), [&](const SweepPoint& p) { return p.series == id; }));
-            sweep.push_back({id, std::move(q), id, index});
-        }
-        // The paper's configuration beside ours: its own series, one point.
-        if (const viz::Settings paper = technique->paperSettings(); !paper.empty()) {
-            viz::completeSettings(*technique, paper);
-            sweep.push_back({id, {"paper preset", paper}, id + " (paper)", 0});
-        }
-    }
     // --temporal: every scene's path and poses, so that a path that cannot move a scene fails here.
     std::vector<viz::scene::MotionPath> paths;
     if (o.temporal) {
@@ -328,12 +341,11 @@ int runReportCommand(Args& args, const std::string& commandLine) {
     std::vector<std::vector<SweepPoint>> sweeps;  // per scene: with --temporal, the stabilising options too
     std::size_t progressSteps = 0;
     for (const viz::scene::Scene& scene : scenes) {
-        sweeps.push_back(sceneSweep(sweep, o.techniques, scene, o.temporal));
+        sweeps.push_back(sceneSweep(o.techniques, scene, o.quick, o.temporal));
         progressSteps += 2 * sweeps.back().size() + 1 + o.techniques.size();
         if (o.temporal) {
             progressSteps += std::size_t(o.frames);
-            for (const SweepPoint& p : sweeps.back())
-                progressSteps += !p.stabiliser.empty() || measuredAlongPath(o.quick, p.series != p.technique, p.indexInSeries);
+            for (const SweepPoint& p : sweeps.back()) progressSteps += p.alongPath;
         }
     }
     const std::filesystem::path dir = createOutputFolder(o.out);
@@ -416,8 +428,7 @@ int runReportCommand(Args& args, const std::string& commandLine) {
             const double e = row.error.relativeL2;
             if (it == bestImage.end() || (std::isfinite(e) && !(rows[it->second.first].error.relativeL2 <= e)))
                 bestImage[point.series] = {rows.size(), output.airlight};
-            if (o.temporal && (!point.stabiliser.empty() ||
-                               measuredAlongPath(o.quick, point.series != point.technique, point.indexInSeries)))
+            if (o.temporal && point.alongPath)
                 temporalJobs.push_back({rows.size(), point.technique, in.settings});
             rows.push_back(std::move(row));
             ++done;

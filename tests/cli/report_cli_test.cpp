@@ -42,6 +42,8 @@ TEST_F(CliTest, ReportWritesResultsPlotsImagesAndAPageThatLoads) {
     for (const auto& row : j.at("rows")) {
         EXPECT_EQ(row.at("scene"), "grate");
         EXPECT_EQ(row.at("width"), 32);
+        // grate has no area light: no VPL points (Technique::areaLightSweep).
+        EXPECT_EQ(row.at("setting").get<std::string>().find("area_samples"), std::string::npos) << row.dump();
         EXPECT_GT(row.at("total_ms").get<double>(), 0.0);
         // Two timed runs: their median is the middle of the fastest and the slowest.
         const double lo = row.at("total_ms_min").get<double>(), hi = row.at("total_ms_max").get<double>();

@@ -150,6 +150,14 @@ public:
         (void)quick;
         return {{"default", {}}};
     }
+    // The points the sweep adds on a scene with an area light: more virtual point lights per emitter
+    // (the shared `area_samples`), everything else at the defaults, so that the front reaches below the
+    // error the default VPL count leaves near the emitter. Empty: the technique's air does not take the
+    // shared VPLs (vsv hands an area light to an inner ivsv; ivsv's own sweep varies its VPL count).
+    virtual std::vector<QualitySetting> areaLightSweep(bool quick) const {
+        (void)quick;
+        return {};
+    }
     // The settings the stiff-case suite runs with (the accurate end of the technique's knobs), and the
     // bound it promises per case class. No bound: the technique does not handle that class, and then it
     // must say so in plan() and refuse (InputError) or fall back to a correct path.

@@ -30,6 +30,13 @@ std::string SceneViewPasses::vplKernelText(const Settings& settings) {
                                                   : "each a point (vpl_kernel=point)";
 }
 
+std::vector<QualitySetting> SceneViewPasses::areaSampleSweep(bool quick, int largest) {
+    std::vector<QualitySetting> sweep;
+    for (int n : quick ? std::vector<int>{largest} : std::vector<int>{8, 12, 16})
+        if (n <= largest) sweep.push_back({"area_samples=" + std::to_string(n), {{"area_samples", double(n)}}});
+    return sweep;
+}
+
 StageInfo SceneViewPasses::shadowStage(const std::string& prefix, const std::vector<std::string>& extraIntermediates) {
     StageInfo stage{prefix + ".shadow_maps", "Shadow maps", "render every light's shadow map (linear distance)",
                     {"shadow_map", "area_samples", "vpl_kernel"}, {prefix + ".shadow_map", prefix + ".vpl_cells"}, 1};

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -208,6 +209,38 @@ TEST(QualitySweep, EverySweepHoldsTheTechniquesDefaults) {
                 found += complete == defaults ? 1 : 0;
             }
             EXPECT_GE(found, 1) << id << (quick ? " quick" : " full") << " sweep never runs the defaults";
+        }
+    }
+}
+
+// On a scene with an area light the report adds more VPLs (Technique::areaLightSweep): each added point
+// is the defaults with a larger area_samples, so that it extends the technique's own front, and only the
+// techniques whose air takes the shared VPLs add any (vsv hands an area light to ivsv, which sweeps its
+// own VPL count).
+TEST(QualitySweep, AreaLightPointsAreTheDefaultsWithMoreVpls) {
+    const std::set<std::string> shared = {"raymarch", "slices", "polyvol", "minmax"};
+    for (const std::string& id : techniqueIds()) {
+        const auto t = makeTechnique(id);
+        const Settings defaults = completeSettings(*t, {});
+        for (bool quick : {true, false}) {
+            const std::vector<QualitySetting> points = t->areaLightSweep(quick);
+            if (!shared.count(id)) {
+                EXPECT_TRUE(points.empty()) << id;
+                continue;
+            }
+            // polyvol's quick sweep leaves them out (each VPL is a cube volume: 8^2 would double the
+            // quick report's time on tv-room).
+            EXPECT_EQ(points.empty(), quick && id == "polyvol") << id << (quick ? " quick" : " full");
+            double previous = defaults.at("area_samples");
+            for (const QualitySetting& q : points) {
+                Settings complete = completeSettings(*t, q.settings);
+                const double n = complete.at("area_samples");
+                EXPECT_GT(n, previous) << id << " " << q.label << ": not more VPLs than the point before";
+                EXPECT_EQ(q.label, "area_samples=" + std::to_string(int(n)));
+                previous = n;
+                complete["area_samples"] = defaults.at("area_samples");
+                EXPECT_EQ(complete, defaults) << id << " " << q.label << " changes more than area_samples";
+            }
         }
     }
 }

@@ -146,6 +146,10 @@ public:
     // epipole cost accuracy where the light is in view. The quick sweep keeps two points, a coarse grid
     // and rank 8 on a 1024 map: its share of `airlight report --quick` stays near 40 s on two cores.
     std::vector<QualitySetting> qualitySweep(bool quick) const override;
+    // Area lights: more VPLs (SceneViewPasses::areaSampleSweep).
+    std::vector<QualitySetting> areaLightSweep(bool quick) const override {
+        return render::SceneViewPasses::areaSampleSweep(quick);
+    }
     std::vector<StabilisingOption> stabilisingOptions(const scene::Scene& scene) const override;
 
     // The accurate end of the knobs: every camera ray within 1/8 pixel of a slice (slice_oversampling 4),

@@ -110,10 +110,15 @@ public:
 
     // Issue 9's knobs: the shadow-map size (the volume's resolution, one vertex per texel) with static
     // tessellation, then adaptive at the sizes where it was measured to pay off (README, benchmark).
-    // The quick sweep also takes area lights as one VPL (area_samples=1, label "1vpl"): tv-room's 16 VPL
-    // cube volumes cost ~6 s per run in Release on llvmpipe (every crossing integrates the cosine lobe
-    // in 8 pieces), which alone would exceed the quick report's budget; other scenes have no area light.
+    // The quick sweep's cheap end also takes area lights as one VPL (area_samples=1, label "1vpl").
     std::vector<QualitySetting> qualitySweep(bool quick) const override;
+    // Area lights: 8^2 and 12^2 VPLs in the full sweep (SceneViewPasses::areaSampleSweep), none in the
+    // quick one. Each VPL is a cube volume, so the count costs its square: tv-room on llvmpipe 3.3 s a run
+    // at the default 4^2 and 13 s at 8^2 (160x120; 18 and 71 s at 640x480), which alone would double the
+    // quick report's time on tv-room, for 8.5 % -> 5.9 %.
+    std::vector<QualitySetting> areaLightSweep(bool quick) const override {
+        return quick ? std::vector<QualitySetting>{} : render::SceneViewPasses::areaSampleSweep(false, 12);
+    }
 
     // The accurate end: 1024^2 (at 512^2 a ray passing the light within a texel of the plate's shadow
     // boundary in occluder-touching-light is misclassified next to the 1/r^2 singularity: 0.25), adaptive

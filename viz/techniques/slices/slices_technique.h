@@ -119,6 +119,10 @@ public:
 
     // Plane count in float accumulation, then the precision lab's targets at one plane count.
     std::vector<QualitySetting> qualitySweep(bool quick) const override;
+    // Area lights: more VPLs (SceneViewPasses::areaSampleSweep).
+    std::vector<QualitySetting> areaLightSweep(bool quick) const override {
+        return render::SceneViewPasses::areaSampleSweep(quick);
+    }
     std::vector<StabilisingOption> stabilisingOptions(const scene::Scene& scene) const override;
 
     Settings stiffSettings() const override { return {{"planes", 512.0}, {"ray_planes", 0.0}}; }
