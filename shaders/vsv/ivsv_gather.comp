@@ -48,7 +48,7 @@ uniform int uPhaseShift;  // added to the 3x3 subset index, mod 9 (subsets=per-f
 #include "common/airlight_sample.glsl"
 #include "common/work_counters.glsl"
 uniform int uChunkBits;
-uniform float uDiscScale;  // 1: VPLs as discs of their area near the emitter (vpl_kernel=cell), 0: points
+uniform float uDiscScale;  // 1: vpl_kernel=cell (a grid VPL is its cell, a Halton VPL a disc of its area), 0: points
 uniform int uAccumulate;
 uniform ivec2 uPick;      // full-resolution pixel whose per-VPL contributions go to gPick (-1: none)
 uniform int uTileSize;    // ISM tile size (EPIPOLE)
@@ -143,13 +143,22 @@ void main() {
             float t = D * sin(phiM) / sn;
             float r = D * sinA / sn;
             vec3 x = t * w;
-            float lobe = max(0.0, dot(v.normal.xyz, (x - v.position.xyz) / max(r, 1.0e-6)));
-            // Near the emitter a VPL stands for a disc of area dA, radius^2 eps2 = dA / pi: on its axis the disc
-            // gives the point's 1/r^2 times r^2 / (r^2 + eps2), which bounds the spike of rays grazing a VPL.
-            float disc = r * r / (r * r + uDiscScale * v.weight.w);
+            // The VPL's angular factor in place of a point's 1/r^2 times r^2: cos(theta_e) for a point; a grid
+            // VPL with vpl_kernel=cell is its cell, Omega_cell r^2 / dA (so that L_e dA / r^2 gives L_e Omega_cell,
+            // as lights.glsl's vplCellFactor); a Halton VPL then stands for a disc of area dA, radius^2 eps2 =
+            // dA / pi: on its axis the disc gives the point's 1/r^2 times r^2 / (r^2 + eps2), which bounds the
+            // spike of rays grazing a VPL.
+            float angular;
+            if (uDiscScale > 0.0 && v.cellCorner.w > 0.0) {
+                angular = parallelogramSolidAngle(v.cellCorner.xyz - x, v.cellU.xyz, v.cellV.xyz, v.normal.xyz,
+                                                  v.cellCorner.w) * (r * r / v.cellCorner.w);
+            } else {
+                float lobe = max(0.0, dot(v.normal.xyz, (x - v.position.xyz) / max(r, 1.0e-6)));
+                angular = lobe * (r * r / (r * r + uDiscScale * v.weight.w));
+            }
             // The sample in phi: dt = r^2 / h dphi cancels the VPL's 1/r^2, so its irradiance times that
-            // Jacobian is lobe disc exp(-sigma_t r) / h (the VPL's intensity is applied per VPL, after the sum).
-            float f = airlightSample(1.0, cos(alpha + phiM), vec3(lobe * disc * exp(-uSigmaT * r) / h), t, phiB - phiA).x;
+            // Jacobian is angular exp(-sigma_t r) / h (the VPL's intensity is applied per VPL, after the sum).
+            float f = airlightSample(1.0, cos(alpha + phiM), vec3(angular * exp(-uSigmaT * r) / h), t, phiB - phiA).x;
             float vis = mix(litBits(c0, first, last), litBits(c1, first, last), wTheta);
             sum += vis * f;
             unshadowed += f;

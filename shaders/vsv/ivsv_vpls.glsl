@@ -10,7 +10,7 @@ struct IvsvVpl {
     vec4 normal;     // xyz emitter normal (the hemisphere's axis)
     vec4 tangent;    // xyz hemisphere frame x
     vec4 bitangent;  // xyz hemisphere frame y
-    vec4 weight;     // rgb L_e dA, w dA / pi (the squared radius of a disc of the VPL's area)
+    vec4 weight;     // rgb L_e dA, w dA / pi (the squared radius of a disc of the VPL's area; 0: a point)
     vec4 epiB;       // xyz baseline, w eye-VPL distance D
     vec4 epiU;
     vec4 epiV;
@@ -19,6 +19,10 @@ struct IvsvVpl {
     vec4 epiPhi;     // phi0, dPhi
     ivec4 tile;      // xy origin of its epipolar grid tile, zw origin of its shadow-map tile
     ivec4 extra;     // x cube index of its shadow map (mode=naive)
+    vec4 cellCorner; // vpl_layout=grid with vpl_kernel=cell: xyz eye-relative corner of its cell of the
+                     // emitter, w its area dA (0: no cell)
+    vec4 cellU;      // xyz the cell's edges from the corner
+    vec4 cellV;
 };
 
 layout(std430, binding = 4) readonly buffer IvsvVplBlock { IvsvVpl gVpls[]; };

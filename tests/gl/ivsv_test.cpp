@@ -50,20 +50,37 @@ using viz::testing::relativeL2;
 
 // The issue: below 8 % at 256 VPLs against the reference (which integrates the emitter cell by cell, its
 // kernel averaged over each cell: converged to 0.17 % at area_samples 8 vs 32), and the error falls as
-// the VPL count grows. Measured 0.58, 0.23, 0.135, 0.052 for 4, 16, 64, 256 VPLs.
+// the VPL count grows, in either layout. Measured for 4, 16, 64, 256 VPLs: Halton points (discs) 0.58,
+// 0.23, 0.135, 0.052; grid cells (the default) 0.142, 0.085, 0.042, 0.026.
 TEST_F(IvsvTest, ErrorAgainstTheReferenceFallsWithTheVplCount) {
     const viz::FrameOutput& ref = reference();
     ASSERT_FALSE(ref.airlight.empty());
-    std::vector<double> errors;
-    for (int n : {4, 16, 64, 256}) {
-        const viz::FrameOutput& out = tvRoom({{"vpls", n}});
-        ASSERT_TRUE(allFinite(out.airlight));
-        ASSERT_TRUE(allFinite(out.final));
-        errors.push_back(relativeL2(out.airlight, ref.airlight));
-        std::printf("ivsv tv-room 160x120 vpls=%3d: relative L2 %.4f\n", n, errors.back());
+    for (double layout : {0.0, 1.0}) {
+        std::vector<double> errors;
+        for (int n : {4, 16, 64, 256}) {
+            const viz::FrameOutput& out = tvRoom({{"vpls", n}, {"vpl_layout", layout}});
+            ASSERT_TRUE(allFinite(out.airlight));
+            ASSERT_TRUE(allFinite(out.final));
+            errors.push_back(relativeL2(out.airlight, ref.airlight));
+            std::printf("ivsv tv-room 160x120 vpls=%3d %s: relative L2 %.4f\n", n, layout != 0.0 ? "grid" : "halton",
+                        errors.back());
+        }
+        for (std::size_t i = 1; i < errors.size(); ++i) EXPECT_LT(errors[i], errors[i - 1]) << i;
+        EXPECT_LT(errors.back(), 0.08);
     }
-    for (std::size_t i = 1; i < errors.size(); ++i) EXPECT_LT(errors[i], errors[i - 1]) << i;
-    EXPECT_LT(errors.back(), 0.08);
+}
+
+// Grid cells against Halton points at equal VPL counts: each grid VPL is its cell of the emitter (its
+// solid angle near the screen, its mean colour), where a Halton point is a disc of the right area at one
+// texel's colour: at least twice closer to the reference at 64 and 256 VPLs (measured 0.042 against
+// 0.135, 0.026 against 0.052).
+TEST_F(IvsvTest, GridCellsBeatHaltonPointsAtEqualVplCounts) {
+    const viz::FrameOutput& ref = reference();
+    for (int n : {64, 256}) {
+        const double grid = relativeL2(tvRoom({{"vpls", n}, {"vpl_layout", 1.0}}).airlight, ref.airlight);
+        const double halton = relativeL2(tvRoom({{"vpls", n}, {"vpl_layout", 0.0}}).airlight, ref.airlight);
+        EXPECT_LT(grid, 0.6 * halton) << n;
+    }
 }
 
 // ivsv's point and spot lights go through vsv with ivsv's grid: every voxel count ivsv declares (16 to 512)
@@ -109,14 +126,19 @@ TEST_F(IvsvTest, AShadowMapBetweenPowersOfTwoIsRoundedUpAndSaysSo) {
     EXPECT_LT(relativeL2(a.airlight, b.airlight), 0.02);
 }
 
-// Issue: the 3x3 interleaved and the quarter-resolution gathers stay within 2 % of the full gather.
-// Quarter reaches it at 160x120; interleaved measures 3.1 % there, all of it on the pixels that see the
-// screen (each pixel has only a ninth of the VPLs' near-field peaks, and at 160x120 a 3x3 block spans
-// structure the filter blurs), so this asserts 0.035 at 160x120; the next test checks 2 % at 320x240.
+// Issue: the 3x3 interleaved and the quarter-resolution gathers stay within 2 % of the full gather, on
+// the paper's Halton points. Quarter reaches it at 160x120; interleaved measures 3.1 % there, all of it on
+// the pixels that see the screen (each pixel has only a ninth of the VPLs' near-field peaks, and at
+// 160x120 a 3x3 block spans structure the filter blurs), so this asserts 0.035 at 160x120; the next test
+// checks 2 % at 320x240. On grid cells the interleaved gather is 3.9 % from its full gather (2.4 % at
+// 320x240; each pixel's ninth of the cells leaves larger near-field gaps than a ninth of the Halton
+// points), yet closer to the reference than Halton's, interleaved or full (0.050 against 0.054 and
+// 0.052).
 TEST_F(IvsvTest, ReducedGathersStayCloseToTheFullGather) {
-    const viz::FrameOutput& full = tvRoom({{"vpls", 256}});
-    const viz::FrameOutput& interleaved = tvRoom({{"vpls", 256}, {"gather", 1}});
-    const viz::FrameOutput& quarter = tvRoom({{"vpls", 256}, {"gather", 2}});
+    const viz::Settings halton{{"vpls", 256}, {"vpl_layout", 0.0}};
+    const viz::FrameOutput& full = tvRoom(halton);
+    const viz::FrameOutput& interleaved = tvRoom({{"vpls", 256}, {"vpl_layout", 0.0}, {"gather", 1}});
+    const viz::FrameOutput& quarter = tvRoom({{"vpls", 256}, {"vpl_layout", 0.0}, {"gather", 2}});
     ASSERT_TRUE(allFinite(interleaved.airlight));
     ASSERT_TRUE(allFinite(quarter.airlight));
     const double eInterleaved = relativeL2(interleaved.airlight, full.airlight);
@@ -124,14 +146,22 @@ TEST_F(IvsvTest, ReducedGathersStayCloseToTheFullGather) {
     std::printf("ivsv tv-room vpls=256: interleaved vs full %.4f, quarter vs full %.4f\n", eInterleaved, eQuarter);
     EXPECT_LT(eQuarter, 0.02);
     EXPECT_LT(eInterleaved, 0.035);  // issue: 0.02
+
+    const viz::FrameOutput& ref = reference();
+    const double gridInterleaved = relativeL2(tvRoom({{"vpls", 256}, {"gather", 1}}).airlight, ref.airlight);
+    std::printf("ivsv tv-room vpls=256 against the reference: interleaved grid %.4f, halton %.4f, full halton %.4f\n",
+                gridInterleaved, relativeL2(interleaved.airlight, ref.airlight), relativeL2(full.airlight, ref.airlight));
+    EXPECT_LT(gridInterleaved, relativeL2(interleaved.airlight, ref.airlight));
 }
 
 // The interleaved gather's difference is a matter of the pixel footprint: at 320x240 (each 3x3 block a
-// quarter of the solid angle it covers at 160x120) it is within the issue's 2 % (1.8 % measured).
+// quarter of the solid angle it covers at 160x120) it is within the issue's 2 % (1.8 % measured) on the
+// paper's Halton points.
 TEST_F(IvsvTest, InterleavedGatherIsWithinTwoPercentAtTwiceTheResolution) {
     const viz::scene::Scene scene = viz::scene::makeBuiltinScene("tv-room");
-    const viz::FrameOutput full = render(scene, "ivsv", {{"vpls", 256}}, 320, 240);
-    const viz::FrameOutput interleaved = render(scene, "ivsv", {{"vpls", 256}, {"gather", 1}}, 320, 240);
+    const viz::FrameOutput full = render(scene, "ivsv", {{"vpls", 256}, {"vpl_layout", 0.0}}, 320, 240);
+    const viz::FrameOutput interleaved =
+        render(scene, "ivsv", {{"vpls", 256}, {"gather", 1}, {"vpl_layout", 0.0}}, 320, 240);
     ASSERT_TRUE(allFinite(interleaved.airlight));
     const double e = relativeL2(interleaved.airlight, full.airlight);
     std::printf("ivsv tv-room 320x240 vpls=256: interleaved vs full %.4f\n", e);
@@ -221,8 +251,11 @@ TEST_F(IvsvTest, OpenSkyStaysLitAfterPushPull) {
     for (viz::scene::Light& l : open.lights)
         if (l.mesh > removed) --l.mesh;
     const viz::scene::Scene closed = viz::scene::makeBuiltinScene("tv-room");
-    // At 80 x 60: 0.1352, 0.1420 and 0.2869 (closed, open, filling every hole), where 160 x 120 measured
-    // 0.1353, 0.1420 and 0.2868 at four times the cost (two references of tv-room, 26 s each at 160 x 120).
+    // At 80 x 60 on grid cells: 0.0416, 0.0449 and 0.2223 (closed, open, filling every hole); the open sky
+    // at fill_levels 0, 1, 2, 3: 0.0421, 0.0449, 0.0547, 0.0907 (the closed room 0.0416 at each). On
+    // Halton points, whose own error hid the difference: 0.1352, 0.1420 and 0.2869 at fill_levels 2, where
+    // 160 x 120 measured 0.1353, 0.1420 and 0.2868 at four times the cost (two references of tv-room, 26 s
+    // each at 160 x 120).
     const int w = 80, h = 60;
     const double eClosed =
         relativeL2(render(closed, "ivsv", {}, w, h).airlight, render(closed, "reference", kReferenceSettings, w, h).airlight);

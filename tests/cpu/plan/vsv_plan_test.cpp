@@ -116,6 +116,21 @@ TEST(IvsvPlan, RunsTheVplPipelineOnlyForAnAreaLight) {
     EXPECT_TRUE(findFeature(forced, "OTHER_LIGHTS_BY_VSV")->enabled);
 }
 
+// The plan says how the VPLs are laid out: tv-room's 1.6 x 0.9 screen takes 64 VPLs as an 8 x 8 grid
+// (cells 0.2 x 0.11) and 128 as 16 x 8 (0.1 x 0.11), each its cell with vpl_kernel=cell; Halton points
+// are discs of their area.
+TEST(IvsvPlan, SaysHowTheVplsAreLaidOut) {
+    const scene::Scene room = scene::makeBuiltinScene("tv-room");
+    auto vplsWhy = [&](const Settings& s) { return findStage(planOf("ivsv", room, s), "ivsv.vpls")->why; };
+    EXPECT_EQ(vplsWhy({}), "64 VPLs, the centres of 8 x 8 equal cells (vpl_layout=grid; each its cell of the "
+                           "emitter, vpl_kernel=cell)");
+    EXPECT_NE(vplsWhy({{"vpls", 128}}).find("16 x 8 equal cells"), std::string::npos) << vplsWhy({{"vpls", 128}});
+    EXPECT_NE(vplsWhy({{"vpl_layout", 0}}).find("at Halton points (vpl_layout=halton; each a disc"), std::string::npos)
+        << vplsWhy({{"vpl_layout", 0}});
+    EXPECT_EQ(vplsWhy({{"vpl_kernel", 0}}).find("vpl_kernel"), std::string::npos) << vplsWhy({{"vpl_kernel", 0}});
+    EXPECT_NE(findFeature(planOf("ivsv", room), "VPL_PIPELINE")->why.find("8 x 8 equal cells"), std::string::npos);
+}
+
 TEST(VsvPlan, QualitySweepAndStiffDeclarations) {
     for (const char* id : {"vsv", "ivsv"}) {
         const auto t = makeTechnique(id);

@@ -20,13 +20,14 @@ ParamInfo tileParam() {
     return {};
 }
 
-// The shared vpl_kernel: the surface term's VPLs take it as every technique does; the gather's Halton
-// VPLs have no cells, so `cell` makes each a disc of its area near the emitter there.
+// The shared vpl_kernel: the surface term's VPLs take it as every technique does, and so do the gather's
+// on a grid (vpl_layout=grid); Halton points have no cells, so `cell` makes each a disc of its area near
+// the emitter there.
 ParamInfo vplKernelParam() {
     for (ParamInfo p : render::SceneViewPasses::params())
         if (p.name == "vpl_kernel") {
-            p.help += "; the gather's Halton VPLs have no cells: with cell each acts as a disc of its area dA (the "
-                      "point's 1/r^2 times r^2 / (r^2 + dA / pi))";
+            p.help += "; the gather's VPLs take it on a grid (vpl_layout=grid); Halton points have no cells: with "
+                      "cell each acts as a disc of its area dA (the point's 1/r^2 times r^2 / (r^2 + dA / pi))";
             return p;
         }
     VIZ_CHECK(false, "the shared passes declare no vpl_kernel");
@@ -39,7 +40,12 @@ const ParamTable<IvsvSettings>& ivsvParams() {
     using S = IvsvSettings;
     static const ParamTable<S> table =
         ParamTable<S>()
-            .add(&S::vpls, {"vpls", "virtual point lights on the area light (Halton points)", 64, 1, kMaxVpls, true})
+            .add(&S::vpls, {"vpls", "virtual point lights on the area light", 64, 1, kMaxVpls, true})
+            .add(&S::gridLayout, {"vpl_layout", "halton: VPLs at Halton points of the emitter (Wyman and Dai Sec. "
+                                  "3.1.1), each L_e at its point times dA; grid: at the centres of vpls equal cells "
+                                  "(the factor pair of vpls closest to square cells), each its cell's mean L_e times "
+                                  "dA, and with vpl_kernel=cell its cell of the emitter", 1, 0, 1, true,
+                                  {"halton", "grid"}})
             .add(&S::voxels, {"voxels", "alpha and theta cells per VPL grid (phi is 128 bits)", 128, 16, 512, true})
             .add(&S::exactCombine, {"combine", "fraction: lit fraction x unshadowed airlight; exact: each quadrature "
                                     "node weighted by the visibility of its own bits", 1, 0, 1, true,
@@ -63,7 +69,7 @@ const ParamTable<IvsvSettings>& ivsvParams() {
                               1 << 20, 1024, 1 << 23, true})
             .add(&S::fillLevels, {"fill_levels", "push-pull fills a hole only from a sample within 2^k texels of it "
                                   "(k levels up the pyramid); wider holes stay empty, so directions that see nothing "
-                                  "(open sky) stay lit", 2, 0, 12, true})
+                                  "(open sky) stay lit", 1, 0, 12, true})
             .add(&S::alphaBias, {"alpha_bias", "occluder alpha offset in cells (negative: shadow starts further from "
                                  "the light)", -2.25, -16, 16, false})
             .add(&S::phiBias, {"phi_bias", "light-ray phi offset in cells (negative: shadow moves away from the eye)",
@@ -100,8 +106,8 @@ IvsvTechnique::IvsvTechnique()
                    .controls = {.pickedPixel = true}},
                   ivsvParams()) {
     mStages = {
-        {kStageVpls, "VPLs", "Halton points on the area light: position, normal, L_e dA from the emission texture",
-         {"vpls"}, {kVplImage}, 1},
+        {kStageVpls, "VPLs", "Halton points or grid cells on the area light: position, normal, L_e dA from the "
+         "emission texture", {"vpls", "vpl_layout"}, {kVplImage}, 1},
         {kStageShadows, "Shadow maps",
          "imperfect: point cloud subsets splatted into one paraboloid tile per VPL, push-pull hole filling; "
          "naive: a cube shadow map per VPL",
@@ -184,8 +190,19 @@ Plan IvsvTechnique::plan(const scene::Scene& scene, const Settings& settings) co
     const bool exact = s.exactCombine;
     const bool interp = s.interp;
     const int gather = s.gather;
+    std::string layout;
+    if (hasArea) {
+        const bool cell = s.vplKernel != 0.0;
+        const glm::ivec2 grid = vsv::vplGridSize(*areaLightOf(scene), vpls);
+        layout = s.gridLayout ? ", the centres of " + std::to_string(grid.x) + " x " + std::to_string(grid.y) +
+                                    " equal cells (vpl_layout=grid" +
+                                    (cell ? "; each its cell of the emitter, vpl_kernel=cell)" : ")")
+                              : " at Halton points (vpl_layout=halton" +
+                                    std::string(cell ? "; each a disc of its area near it, vpl_kernel=cell)" : ")");
+        p.stages[kVplsIndex].why = std::to_string(vpls) + " VPLs" + layout;
+    }
     p.features.push_back({"VPL_PIPELINE", hasArea,
-                          hasArea ? "the area light becomes " + std::to_string(vpls) + " VPLs" : "no area light"});
+                          hasArea ? "the area light becomes " + std::to_string(vpls) + " VPLs" + layout : "no area light"});
     p.features.push_back({"OTHER_LIGHTS_BY_VSV", hasOthers,
                           hasOthers ? "point, spot and directional lights: one vsv grid each (in the gather stage)"
                                     : "the scene has only its area light"});
@@ -248,7 +265,7 @@ FrameOutput IvsvTechnique::run(const FrameInput& input) {
         [&] {
             mVpls.clear();
             if (area) {
-                mVpls = vsv::sampleVpls(scene, *area, count);
+                mVpls = s.gridLayout ? vsv::gridVpls(scene, *area, count) : vsv::sampleVpls(scene, *area, count);
                 mVplArea = 4.0 * glm::length(glm::cross(area->halfU, area->halfV)) / count;
                 for (vsv::Vpl& v : mVpls) v.position += kVplOffset * v.normal;
             }
@@ -258,7 +275,8 @@ FrameOutput IvsvTechnique::run(const FrameInput& input) {
         [&] {
             if (!area) return;
             out.intermediates.push_back(cpuIntermediate(
-                kVplImage, "VPLs on the emitter", "emitter uv square (u right, v down): each VPL's L_e as a dot",
+                kVplImage, "VPLs on the emitter",
+                "emitter uv square (u right, v down): each VPL's L_e as a dot, on a grid inside its cell (60 %)",
                 ViewKind::Colour, vplImage()));
             out.intermediates.back().picture = true;
         }))

@@ -67,6 +67,11 @@ void IvsvTechnique::uploadVpls(const scene::Scene& scene, int width, int height,
         o.tangent = glm::vec4(glm::vec3(tx), 0.0f);
         o.bitangent = glm::vec4(glm::vec3(ty), 0.0f);
         o.weight = glm::vec4(glm::vec3(v.weight), float(mVplArea / std::numbers::pi));
+        // The grid layout's cell (the gather takes it with vpl_kernel=cell), eye-relative like the position.
+        const bool cell = glm::length(glm::cross(v.edgeU, v.edgeV)) > 0.0;
+        o.cellCorner = glm::vec4(glm::vec3(v.corner - scene.camera.position), cell ? float(mVplArea) : 0.0f);
+        o.cellU = glm::vec4(glm::vec3(v.edgeU), 0.0f);
+        o.cellV = glm::vec4(glm::vec3(v.edgeV), 0.0f);
         o.epiB = glm::vec4(glm::vec3(f.b), float(f.D));
         o.epiU = glm::vec4(glm::vec3(f.u), 0.0f);
         o.epiV = glm::vec4(glm::vec3(f.v), 0.0f);

@@ -67,8 +67,9 @@ struct GpuVpl {
     glm::vec4 position, normal, tangent, bitangent, weight;
     glm::vec4 epiB, epiU, epiV, epiAlpha, epiTheta, epiPhi;
     glm::ivec4 tile, extra;
+    glm::vec4 cellCorner, cellU, cellV;
 };
-static_assert(sizeof(GpuVpl) == 13 * 16);
+static_assert(sizeof(GpuVpl) == 16 * 16);
 
 inline const PermutationTable kDefines = {
     {"COMBINE_EXACT", {"COMBINE_EXACT", nullptr}},
@@ -103,6 +104,7 @@ inline scene::Scene withoutAreaLights(const scene::Scene& scene) {
 // The settings a run reads, each declared once with its parameter (ivsvParams(), debug/param_table.h).
 struct IvsvSettings {
     int vpls = 0, voxels = 0;
+    bool gridLayout = false;    // vpl_layout=grid
     bool exactCombine = false;  // combine=exact
     int gather = kGatherFull;
     bool subsetsPerFrame = false;  // subsets=per-frame
@@ -144,11 +146,12 @@ public:
 
     // The stiff cases have no area light: ivsv hands every light to its inner vsv at this resolution.
     Settings stiffSettings() const override { return {{"voxels", 512.0}, {"vpls", 256.0}}; }
-    // Wyman and Dai 2013: 256 VPLs with imperfect shadow maps, the lit fraction, the 3x3 interleaved
+    // Wyman and Dai 2013: 256 VPLs at Halton points (Sec. 3.1.1) with imperfect shadow maps, the lit
+    // fraction, the 3x3 interleaved
     // gather with its bilateral filter (ours offers it or the quarter-size gather, not both at once), the
     // fragment-against-light test at each VPL's epipole.
     Settings paperSettings() const override {
-        return {{"vpls", 256.0}, {"mode", 0.0}, {"combine", 0.0}, {"gather", 1.0}, {"epipole", 1.0}};
+        return {{"vpls", 256.0}, {"vpl_layout", 0.0}, {"mode", 0.0}, {"combine", 0.0}, {"gather", 1.0}, {"epipole", 1.0}};
     }
     std::optional<StiffBound> stiffBound(const std::string& caseClass) const override {
         return vsv::stiffBound(caseClass);

@@ -81,9 +81,16 @@ std::shared_ptr<Image> IvsvTechnique::vplImage() const {
     double peak = 0.0;
     for (const vsv::Vpl& v : mVpls) peak = std::max(peak, std::max(v.weight.x, std::max(v.weight.y, v.weight.z)));
     for (const vsv::Vpl& v : mVpls) {
+        const auto colour = [&](int c) { return float(peak > 0.0 ? v.weight[c] / peak : 1.0); };
+        // A grid VPL's cell at 60 % of its colour, its last row and column left dark as the cells' edges.
+        const glm::dvec2 lo = v.uv - 0.5 * v.uvSize, hi = v.uv + 0.5 * v.uvSize;
+        for (int y = int(std::lround(lo.y * kSize)); y < int(std::lround(hi.y * kSize)) - 1; ++y)
+            for (int x = int(std::lround(lo.x * kSize)); x < int(std::lround(hi.x * kSize)) - 1; ++x)
+                if (x >= 0 && y >= 0 && x < kSize && y < kSize)
+                    for (int c = 0; c < 3; ++c) image->at(x, y, c) = 0.6f * colour(c);
         const int x = std::clamp(int(v.uv.x * kSize), 0, kSize - 1);
         const int y = std::clamp(int(v.uv.y * kSize), 0, kSize - 1);
-        for (int c = 0; c < 3; ++c) image->at(x, y, c) = float(peak > 0.0 ? v.weight[c] / peak : 1.0);
+        for (int c = 0; c < 3; ++c) image->at(x, y, c) = colour(c);
     }
     return image;
 }
