@@ -1,6 +1,6 @@
 // Tests of render::GpuLights and shaders/common/lights.glsl: the GpuLight/GpuMaterial layout agrees
 // between C++ and GLSL, spot cookies sample as scene::sampleLinearRgb does, area lights become VPLs
-// whose weights integrate the emitter, and the Gauss-Legendre rule is exact where it must be.
+// at the centres of equal cells, whose weights integrate the emitter.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -318,9 +318,9 @@ TEST_F(RenderLights, VplIrradianceIsTheCellsSolidAngleOrThePointsCosineLobe) {
     EXPECT_GT(pointOut[4 * 6 + 1].x, 50.0f * cellOut[4 * 6 + 1].x);
 }
 
-// A textured emitter's VPLs carry the texture's mean over their cells: together the emitter's mean colour
-// times its area (checked against a fine grid of bilinear samples, not the exact cell means), and each
-// the mean over the cell that holds its node.
+// A textured emitter's VPLs sit at the centres of equal cells and carry the texture's mean over their
+// cells: together the emitter's mean colour times its area (checked against a fine grid of bilinear
+// samples, not the exact cell means), and each the mean over the cell that holds its node.
 TEST_F(RenderLights, VplsCarryTheirCellsMeanColour) {
     scene::Scene s;
     s.meshes.push_back(floorQuad(3.0));
@@ -361,6 +361,9 @@ TEST_F(RenderLights, VplsCarryTheirCellsMeanColour) {
             EXPECT_GE(glm::dot(rel, eV), 0.0);
             EXPECT_LE(glm::dot(rel, eV), glm::dot(eV, eV) * (1.0 + 1e-6));
             EXPECT_NEAR(double(L.spot.w), glm::length(glm::cross(eU, eV)), 1e-6);
+            // Equal cells, each node at its cell's centre.
+            EXPECT_NEAR(double(L.spot.w), areaSize / (n * n), 1e-6 * areaSize);
+            EXPECT_NEAR(glm::length(rel - 0.5 * (eU + eV)), 0.0, 1e-6);
         }
         for (int c = 0; c < 3; ++c)
             EXPECT_NEAR(sum[c], area.radiance[c] * areaSize * mean[c], 2e-4 * area.radiance[c] * areaSize)

@@ -151,9 +151,9 @@ public:
         return {{"default", {}}};
     }
     // The points the sweep adds on a scene with an area light: more virtual point lights per emitter
-    // (the shared `area_samples`), everything else at the defaults, so that the front reaches below the
-    // error the default VPL count leaves near the emitter. Empty: the technique's air does not take the
-    // shared VPLs (vsv hands an area light to an inner ivsv; ivsv's own sweep varies its VPL count).
+    // (the shared `area_samples`, or ivsv's own `vpls`), everything else at the defaults, so that the
+    // front reaches below the error the default VPL count leaves near the emitter. Empty: no VPL count to
+    // add (vsv hands an area light to an inner ivsv at its defaults).
     virtual std::vector<QualitySetting> areaLightSweep(bool quick) const {
         (void)quick;
         return {};

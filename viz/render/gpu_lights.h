@@ -1,8 +1,8 @@
 // The lights of a scene on the GPU: an std430 array of GpuLight (shaders/common/host_device.glsl) at
 // kBindingLights and the spot cookies in one GL_TEXTURE_2D_ARRAY (GL_RGBA8 holding sRGB bytes, decoded in the
 // shader: see gpu_scene.h) at kUnitCookies.
-// Area lights become areaSamples x areaSamples virtual point lights (VPLs) at Gauss-Legendre nodes of
-// the rectangle, each with weight L_e(uv) * dA and a cosine emission lobe. Positions are eye-relative
+// Area lights become areaSamples x areaSamples virtual point lights (VPLs) at the centres of equal cells
+// of the rectangle, each with weight L_e * dA (the cell's mean L_e) and its cell or a cosine emission lobe. Positions are eye-relative
 // (computed in double). Shadow layers and matrices are assigned here too, so ShadowMaps only renders.
 #pragma once
 

@@ -14,7 +14,7 @@ namespace viz::render {
 std::vector<ParamInfo> SceneViewPasses::params() {
     return {
         {"shadow_map", "shadow-map size in texels per side (2D maps and point-light cube faces)", 1024, 16, 8192, true},
-        {"area_samples", "virtual point lights per axis of each area light (Gauss-Legendre nodes)", 4, 1, 16, true},
+        {"area_samples", "virtual point lights per axis of each area light (the centres of equal cells)", 4, 1, 16, true},
         {"vpl_kernel", "what an area light's VPL stands for: point (L_e dA cos / r^2, which peaks next to the "
                        "emitter) or cell (its cell of the emitter: near it the air and the surfaces see the "
                        "cell's solid angle)", 1, 0, 1, true, {"point", "cell"}},

@@ -75,8 +75,8 @@ std::vector<Intermediate> vplCellsViews(const scene::Scene& scene, const GpuLigh
         out.push_back(cpuIntermediate(
             id, "VPL cells",
             "area light '" + light.name + "' in its uv square (u right, v down): each cell its VPL's L_e (the " +
-                "emission's mean over the cell) over the brightest channel of all; grey lines: cell edges (the " +
-                "Gauss-Legendre weights); white dots: the nodes, where each VPL's shadow cube sits",
+                "emission's mean over the cell) over the brightest channel of all; grey lines: cell edges (equal " +
+                "cells); white dots: the nodes, where each VPL's shadow cube sits",
             ViewKind::Colour, image));
         out.back().picture = true;
     }
