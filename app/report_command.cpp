@@ -51,7 +51,7 @@ warm-up; N = 5 by default) and compares its L_air with the reference (cached on 
 results.csv, results.json, one error-against-time plot per scene (PNG), each technique's image and error
 heat map, and index.html (static, no scripts). The headline is each technique's speed-up over
 brute-force raymarch at equal error. On a scene with an area light the sweeps of the techniques that
-sample it as virtual point lights add more of them (area_samples 8, 12 and 16; 16 alone with --quick,
+sample it as virtual point lights add more of them (area_samples 8, 12 and 16; 8 and 16 with --quick,
 where polyvol adds none and ivsv adds vpls=256).
 
   --scenes      built-in scene names or glTF paths, comma-separated (default: every built-in scene)

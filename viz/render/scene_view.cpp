@@ -32,7 +32,7 @@ std::string SceneViewPasses::vplKernelText(const Settings& settings) {
 
 std::vector<QualitySetting> SceneViewPasses::areaSampleSweep(bool quick, int largest) {
     std::vector<QualitySetting> sweep;
-    for (int n : quick ? std::vector<int>{largest} : std::vector<int>{8, 12, 16})
+    for (int n : quick ? std::vector<int>{8, 16} : std::vector<int>{8, 12, 16})
         if (n <= largest) sweep.push_back({"area_samples=" + std::to_string(n), {{"area_samples", double(n)}}});
     return sweep;
 }
