@@ -41,7 +41,7 @@ float vplCellSolidAngle(GpuLight L, vec3 p) {
 // A VPL cell's angular factor at p, in place of a point's cos(theta_e): Omega_cell(p) r^2 / dA (r2 = r^2
 // = |p - D|^2, as the caller has it), so that the point's I / r^2 with I = L_e dA gives L_e Omega_cell.
 float vplCellFactor(GpuLight L, vec3 p, float r2) {
-    return vplCellSolidAngle(L, p) * (r2 / L.spot.w);
+    return cellAngularFactor(L.spot.xyz - p, L.frameX.xyz, L.frameY.xyz, L.direction.xyz, L.spot.w, r2);
 }
 
 // distanceToLight() of a directional light.

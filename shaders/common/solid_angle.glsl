@@ -47,4 +47,11 @@ float parallelogramSolidAngle(vec3 c, vec3 eU, vec3 eV, vec3 n, float area) {
     return 2.0 * (first + second);
 }
 
+// A cell's angular factor at the viewpoint (c its corner from there, n its emitting side, r2 the squared
+// distance to the VPL that stands for it, as the caller has it): Omega_cell r^2 / dA, in place of a point
+// light's cos(theta_e), so that the point's L_e dA / r^2 gives L_e Omega_cell.
+float cellAngularFactor(vec3 c, vec3 eU, vec3 eV, vec3 n, float area, float r2) {
+    return parallelogramSolidAngle(c, eU, eV, n, area) * (r2 / area);
+}
+
 #endif  // SOLID_ANGLE_GLSL

@@ -144,14 +144,14 @@ void main() {
             float r = D * sinA / sn;
             vec3 x = t * w;
             // The VPL's angular factor in place of a point's 1/r^2 times r^2: cos(theta_e) for a point; a grid
-            // VPL with vpl_kernel=cell is its cell, Omega_cell r^2 / dA (so that L_e dA / r^2 gives L_e Omega_cell,
-            // as lights.glsl's vplCellFactor); a Halton VPL then stands for a disc of area dA, radius^2 eps2 =
-            // dA / pi: on its axis the disc gives the point's 1/r^2 times r^2 / (r^2 + eps2), which bounds the
-            // spike of rays grazing a VPL.
+            // VPL with vpl_kernel=cell is its cell (cellAngularFactor, common/solid_angle.glsl, as the shared
+            // VPLs); a Halton VPL then stands for a disc of area dA, radius^2 eps2 = dA / pi: on its axis the
+            // disc gives the point's 1/r^2 times r^2 / (r^2 + eps2), which bounds the spike of rays grazing a
+            // VPL.
             float angular;
             if (uDiscScale > 0.0 && v.cellCorner.w > 0.0) {
-                angular = parallelogramSolidAngle(v.cellCorner.xyz - x, v.cellU.xyz, v.cellV.xyz, v.normal.xyz,
-                                                  v.cellCorner.w) * (r * r / v.cellCorner.w);
+                angular = cellAngularFactor(v.cellCorner.xyz - x, v.cellU.xyz, v.cellV.xyz, v.normal.xyz,
+                                            v.cellCorner.w, r * r);
             } else {
                 float lobe = max(0.0, dot(v.normal.xyz, (x - v.position.xyz) / max(r, 1.0e-6)));
                 angular = lobe * (r * r / (r * r + uDiscScale * v.weight.w));

@@ -115,7 +115,7 @@ public:
     // Area lights: 8^2 and 12^2 VPLs in the full sweep (SceneViewPasses::areaSampleSweep), none in the
     // quick one. Each VPL is a cube volume, so the count costs its square: tv-room on llvmpipe 3.3 s a run
     // at the default 4^2 and 13 s at 8^2 (160x120; 18 and 71 s at 640x480), which alone would double the
-    // quick report's time on tv-room, for 8.5 % -> 5.9 %.
+    // quick report's time on tv-room, for 8.4 % -> 3.9 %.
     std::vector<QualitySetting> areaLightSweep(bool quick) const override {
         return quick ? std::vector<QualitySetting>{} : render::SceneViewPasses::areaSampleSweep(false, 12);
     }
