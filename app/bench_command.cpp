@@ -146,11 +146,6 @@ std::vector<AxisPoint> axisPoints(const std::string& axis, const Options& o, dou
     return points;
 }
 
-bool hasAreaLight(const viz::scene::Scene& s) {
-    return std::any_of(s.lights.begin(), s.lights.end(),
-                       [](const viz::scene::Light& l) { return l.type == viz::scene::LightType::Area; });
-}
-
 double triangleCount(const viz::scene::Scene& s) {
     double n = 0;
     for (const auto& m : s.meshes) n += double(m.indices.size() / 3);
@@ -162,7 +157,7 @@ std::string whyNot(const std::string& axis, const viz::Technique& t, const std::
                    const viz::scene::Scene& scene) {
     if (axis == "shadow_map" && !viz::findParam(t, "shadow_map")) return t.id() + " has no shadow map";
     if (axis == "vpls" && !viz::findParam(t, "vpls")) return t.id() + " has no VPLs";
-    if (axis == "vpls" && !hasAreaLight(scene)) return sceneName + " has no area light (VPLs sample area lights)";
+    if (axis == "vpls" && !viz::scene::hasAreaLight(scene)) return sceneName + " has no area light (VPLs sample area lights)";
     if (axis == "triangles") {
         const auto names = viz::scene::detailedSceneNames();
         if (std::find(names.begin(), names.end(), sceneName) == names.end())

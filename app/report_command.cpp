@@ -270,11 +270,6 @@ struct SweepPoint {
     bool stabiliserOn = false;
 };
 
-bool hasAreaLight(const viz::scene::Scene& scene) {
-    return std::any_of(scene.lights.begin(), scene.lights.end(),
-                       [](const viz::scene::Light& l) { return l.type == viz::scene::LightType::Area; });
-}
-
 // A scene's sweep, technique by technique: the technique's quality sweep, with more VPLs where the scene
 // has an area light (Technique::areaLightSweep: these join the technique's front but are not measured
 // along the path, which would cost their square of VPLs on every frame), then its paper preset as a
@@ -287,7 +282,7 @@ std::vector<SweepPoint> sceneSweep(const std::vector<std::string>& techniques, c
         const auto technique = viz::makeTechnique(id);
         std::vector<viz::QualitySetting> points = technique->qualitySweep(quick);
         const std::size_t own = points.size();
-        if (hasAreaLight(scene))
+        if (viz::scene::hasAreaLight(scene))
             for (viz::QualitySetting& q : technique->areaLightSweep(quick)) points.push_back(std::move(q));
         for (std::size_t k = 0; k < points.size(); ++k) {
             viz::completeSettings(*technique, points[k].settings);  // throws if a declared sweep is invalid

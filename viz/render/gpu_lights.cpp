@@ -201,20 +201,16 @@ LightDescription describeLights(const scene::Scene& scene, glm::dvec3 eye, int a
                     }
                     tex = &scene.textures[static_cast<std::size_t>(light.emissionTexture)];
                 }
-                std::vector<double> cellEnd(std::size_t(areaSamples) + 1, 0.0);  // in uv
-                for (int i = 1; i < areaSamples; ++i) cellEnd[std::size_t(i)] = double(i) / areaSamples;
-                cellEnd.back() = 1.0;
+                const auto edge = [&](int k) { return double(k) / areaSamples; };  // the k-th cell edge in uv
                 const double width = 2.0 / areaSamples;  // a cell's side in s and t
                 for (int j = 0; j < areaSamples; ++j) {
                     for (int i = 0; i < areaSamples; ++i) {
-                        const std::size_t ci = std::size_t(i), cj = std::size_t(j);
                         const double s = (i + 0.5) * width - 1.0;
                         const double t = (j + 0.5) * width - 1.0;
                         const double dA = jacobian * width * width;
                         glm::dvec3 le = light.radiance;
                         if (tex)
-                            le *= scene::averageLinearRgb(*tex, {cellEnd[ci], cellEnd[cj]},
-                                                          {cellEnd[ci + 1], cellEnd[cj + 1]});
+                            le *= scene::averageLinearRgb(*tex, {edge(i), edge(j)}, {edge(i + 1), edge(j + 1)});
                         GpuLightCpu v = g;
                         const glm::dvec3 p = pos + s * light.halfU + t * light.halfV;
                         // w: the kernel (shaders/common/lights.glsl, vplHasCell): 1, the node's cell, whose
@@ -222,8 +218,8 @@ LightDescription describeLights(const scene::Scene& scene, glm::dvec3 eye, int a
                         v.position = glm::vec4(glm::vec3(p), kernel == VplKernel::Cell ? 1.0f : 0.0f);
                         v.radiant = glm::vec4(glm::vec3(le * dA), 0.0f);
                         v.info = glm::ivec4(hd::kLightVpl, -1, layout.vplCubes++, static_cast<int>(li));
-                        const double s0 = 2.0 * cellEnd[ci] - 1.0, s1 = 2.0 * cellEnd[ci + 1] - 1.0;
-                        const double t0 = 2.0 * cellEnd[cj] - 1.0, t1 = 2.0 * cellEnd[cj + 1] - 1.0;
+                        const double s0 = 2.0 * edge(i) - 1.0, s1 = 2.0 * edge(i + 1) - 1.0;
+                        const double t0 = 2.0 * edge(j) - 1.0, t1 = 2.0 * edge(j + 1) - 1.0;
                         v.spot = glm::vec4(glm::vec3(pos + s0 * light.halfU + t0 * light.halfV), float(dA));
                         v.frameX = glm::vec4(glm::vec3((s1 - s0) * light.halfU), 0.0f);
                         v.frameY = glm::vec4(glm::vec3((t1 - t0) * light.halfV), 0.0f);

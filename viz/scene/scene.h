@@ -97,4 +97,11 @@ struct Scene {
     std::uint64_t geometryKey = 0;
 };
 
+// Whether any of the scene's lights is an area light (the techniques sample those as VPLs).
+inline bool hasAreaLight(const Scene& scene) {
+    for (const Light& l : scene.lights)
+        if (l.type == LightType::Area) return true;
+    return false;
+}
+
 }  // namespace viz::scene

@@ -163,7 +163,8 @@ std::vector<QualitySetting> IvsvTechnique::qualitySweep(bool quick) const {
 
 Plan IvsvTechnique::plan(const scene::Scene& scene, const Settings& settings) const {
     const IvsvSettings s = ivsvParams().read(settings);
-    const bool hasArea = areaLightOf(scene) != nullptr;
+    const scene::Light* area = areaLightOf(scene);
+    const bool hasArea = area != nullptr;
     const bool hasOthers = int(scene.lights.size()) > (hasArea ? 1 : 0);
     Plan p = planEveryStage(mStages);
     if (!hasArea) {
@@ -193,7 +194,7 @@ Plan IvsvTechnique::plan(const scene::Scene& scene, const Settings& settings) co
     std::string layout;
     if (hasArea) {
         const bool cell = s.vplKernel != 0.0;
-        const glm::ivec2 grid = vsv::vplGridSize(*areaLightOf(scene), vpls);
+        const glm::ivec2 grid = vsv::vplGridSize(*area, vpls);
         layout = s.gridLayout ? ", the centres of " + std::to_string(grid.x) + " x " + std::to_string(grid.y) +
                                     " equal cells (vpl_layout=grid" +
                                     (cell ? "; each its cell of the emitter, vpl_kernel=cell)" : ")")
