@@ -161,9 +161,10 @@ TEST_F(ReportTemporalTest, ReferenceFramesAreCachedPerPoseAndReused) {
     }
 }
 
-// tv-room's area light: the techniques on the shared VPLs add more of them to their sweeps, and with them
-// reach a lower error against the reference than at their defaults; the added points are not measured
-// along the path, and vsv (whose air does not take the shared VPLs) adds none.
+// tv-room's area light: the techniques on the shared VPLs add more of them to their sweeps (each count
+// also with a shorter march of each VPL's ray), and with them reach a lower error against the reference
+// than at their defaults; the added points are not measured along the path, and vsv (whose air does not
+// take the shared VPLs) adds none.
 TEST_F(ReportTemporalTest, AnAreaLightAddsVplsToTheSweepsOffThePath) {
     const fs::path out = path("report");
     const RunResult r = run("report --scenes tv-room --techniques raymarch,minmax,vsv --size 32x24 --quick --runs 1 "
@@ -171,7 +172,7 @@ TEST_F(ReportTemporalTest, AnAreaLightAddsVplsToTheSweepsOffThePath) {
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const nlohmann::json j = nlohmann::json::parse(readFile(out / "results.json"));
     std::map<std::string, double> defaultError;
-    std::map<std::string, std::map<int, double>> areaError;  // series -> area_samples -> error
+    std::map<std::string, std::map<std::string, double>> areaError;  // series -> setting -> error
     for (const auto& row : j.at("rows")) {
         if (!row.at("stabiliser").is_null()) continue;
         const std::string series = row.at("technique").get<std::string>();
@@ -180,20 +181,26 @@ TEST_F(ReportTemporalTest, AnAreaLightAddsVplsToTheSweepsOffThePath) {
         if (setting.rfind("area_samples=", 0) == 0) {
             EXPECT_EQ(row.at("settings"), setting) << series;
             EXPECT_TRUE(row.at("temporal").is_null()) << series << ": measured along the path";
-            areaError[series][std::stoi(setting.substr(13))] = error;
+            areaError[series][setting] = error;
         }
         if ((series == "raymarch" && setting == "N=64") || (series == "minmax" && setting == "map=1024 slices=auto"))
             defaultError[series] = error;
     }
     EXPECT_EQ(areaError.size(), 2u);  // raymarch and minmax, not vsv
-    for (const char* id : {"raymarch", "minmax"}) {
+    for (const auto& [id, march] : std::map<std::string, std::string>{{"raymarch", "samples"}, {"minmax", "vpl_samples"}}) {
         ASSERT_TRUE(defaultError.count(id)) << id;
-        ASSERT_EQ(areaError[id].size(), 2u) << id;
-        ASSERT_TRUE(areaError[id].count(8) && areaError[id].count(16)) << id;
-        // 8^2 and 16^2 VPLs against the default 4^2 (0.039 and 0.015 against 0.084 at 160x120).
-        EXPECT_LT(areaError[id][8], defaultError[id]) << id;
-        EXPECT_LT(areaError[id][16], areaError[id][8]) << id;
-        EXPECT_LT(areaError[id][16], 0.4 * defaultError[id]) << id;
+        std::map<std::string, double>& e = areaError[id];
+        ASSERT_EQ(e.size(), 4u) << id;
+        const std::string at8 = "area_samples=8", at16 = "area_samples=16";
+        for (const std::string& s : {at8, at16, at8 + " " + march + "=16", at16 + " " + march + "=16"})
+            ASSERT_TRUE(e.count(s)) << id << ": no " << s;
+        // 8^2 and 16^2 VPLs against the default 4^2 (0.039 and 0.015 against 0.084 at 160x120), and with 16
+        // samples per VPL ray (0.043 and 0.035).
+        EXPECT_LT(e[at8], defaultError[id]) << id;
+        EXPECT_LT(e[at16], e[at8]) << id;
+        EXPECT_LT(e[at16], 0.4 * defaultError[id]) << id;
+        EXPECT_LT(e[at8 + " " + march + "=16"], defaultError[id]) << id;
+        EXPECT_LT(e[at16 + " " + march + "=16"], defaultError[id]) << id;
     }
 }
 

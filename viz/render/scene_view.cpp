@@ -30,10 +30,17 @@ std::string SceneViewPasses::vplKernelText(const Settings& settings) {
                                                   : "each a point (vpl_kernel=point)";
 }
 
-std::vector<QualitySetting> SceneViewPasses::areaSampleSweep(bool quick, int largest) {
+std::vector<QualitySetting> SceneViewPasses::areaSampleSweep(bool quick, int largest, const std::string& marchKnob) {
+    constexpr int kFewerMarchSamples = 16;
     std::vector<QualitySetting> sweep;
-    for (int n : quick ? std::vector<int>{8, 16} : std::vector<int>{8, 12, 16})
-        if (n <= largest) sweep.push_back({"area_samples=" + std::to_string(n), {{"area_samples", double(n)}}});
+    for (int n : quick ? std::vector<int>{8, 16} : std::vector<int>{8, 12, 16}) {
+        if (n > largest) continue;
+        const std::string label = "area_samples=" + std::to_string(n);
+        if (!marchKnob.empty())
+            sweep.push_back({label + " " + marchKnob + "=" + std::to_string(kFewerMarchSamples),
+                             {{"area_samples", double(n)}, {marchKnob, double(kFewerMarchSamples)}}});
+        sweep.push_back({label, {{"area_samples", double(n)}}});
+    }
     return sweep;
 }
 

@@ -215,12 +215,15 @@ TEST(QualitySweep, EverySweepHoldsTheTechniquesDefaults) {
 
 // On a scene with an area light the report adds more VPLs (Technique::areaLightSweep): each added point
 // is the defaults with a larger VPL count (area_samples for the techniques on the shared VPLs, ivsv's own
-// vpls), so that it extends the technique's own front; vsv, which hands an area light to an inner ivsv
-// at its defaults, adds none.
+// vpls), so that it extends the technique's own front; where a technique marches each VPL's ray (raymarch's
+// samples, minmax's vpl_samples) each count comes twice, at that march's default and at fewer samples, so
+// that the front can trade the two knobs; vsv, which hands an area light to an inner ivsv at its defaults,
+// adds none.
 TEST(QualitySweep, AreaLightPointsAreTheDefaultsWithMoreVpls) {
     const std::map<std::string, std::string> count = {{"raymarch", "area_samples"}, {"slices", "area_samples"},
                                                       {"polyvol", "area_samples"}, {"minmax", "area_samples"},
                                                       {"ivsv", "vpls"}};
+    const std::map<std::string, std::string> march = {{"raymarch", "samples"}, {"minmax", "vpl_samples"}};
     for (const std::string& id : techniqueIds()) {
         const auto t = makeTechnique(id);
         const Settings defaults = completeSettings(*t, {});
@@ -236,16 +239,28 @@ TEST(QualitySweep, AreaLightPointsAreTheDefaultsWithMoreVpls) {
             EXPECT_EQ(points.empty(), (quick && id == "polyvol") || (!quick && id == "ivsv"))
                 << id << (quick ? " quick" : " full");
             const std::string& param = it->second;
-            double previous = defaults.at(param);
+            const auto marched = march.find(id);
+            std::map<double, std::set<double>> marchesPerCount;  // VPL count -> the march's sample counts
             for (const QualitySetting& q : points) {
                 Settings complete = completeSettings(*t, q.settings);
                 const double n = complete.at(param);
-                EXPECT_GT(n, previous) << id << " " << q.label << ": not more VPLs than the point before";
+                EXPECT_GT(n, defaults.at(param)) << id << " " << q.label << ": not more VPLs than the default";
                 EXPECT_EQ(q.label.rfind(param + "=" + std::to_string(int(n)), 0), 0u) << q.label;
-                previous = n;
                 complete[param] = defaults.at(param);
-                EXPECT_EQ(complete, defaults) << id << " " << q.label << " changes more than " << param;
+                if (marched != march.end()) {
+                    const double m = complete.at(marched->second);
+                    EXPECT_LE(m, defaults.at(marched->second)) << id << " " << q.label;
+                    if (m != defaults.at(marched->second)) {
+                        EXPECT_NE(q.label.find(marched->second + "=" + std::to_string(int(m))), std::string::npos)
+                            << q.label;
+                    }
+                    marchesPerCount[n].insert(m);
+                    complete[marched->second] = defaults.at(marched->second);
+                }
+                EXPECT_EQ(complete, defaults) << id << " " << q.label << " changes more than the VPLs and their march";
             }
+            for (const auto& [n, marches] : marchesPerCount)
+                EXPECT_EQ(marches.size(), 2u) << id << " at " << n << " VPLs per axis: the default march and a shorter one";
         }
     }
 }

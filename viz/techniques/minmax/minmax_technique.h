@@ -146,9 +146,9 @@ public:
     // epipole cost accuracy where the light is in view. The quick sweep keeps two points, a coarse grid
     // and rank 8 on a 1024 map: its share of `airlight report --quick` stays near 40 s on two cores.
     std::vector<QualitySetting> qualitySweep(bool quick) const override;
-    // Area lights: more VPLs (SceneViewPasses::areaSampleSweep).
+    // Area lights: more VPLs, each count also at fewer of vpl_samples, the march of each VPL (SceneViewPasses::areaSampleSweep).
     std::vector<QualitySetting> areaLightSweep(bool quick) const override {
-        return render::SceneViewPasses::areaSampleSweep(quick);
+        return render::SceneViewPasses::areaSampleSweep(quick, 16, "vpl_samples");
     }
     std::vector<StabilisingOption> stabilisingOptions(const scene::Scene& scene) const override;
 

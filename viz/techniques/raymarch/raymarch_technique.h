@@ -70,9 +70,9 @@ public:
     // Samples per ray: the brute-force curve every other technique's speed-up is read against, so it
     // spans errors from about 1 down to below 1e-2.
     std::vector<QualitySetting> qualitySweep(bool quick) const override;
-    // Area lights: more VPLs (SceneViewPasses::areaSampleSweep).
+    // Area lights: more VPLs, each count also at fewer of its samples (SceneViewPasses::areaSampleSweep).
     std::vector<QualitySetting> areaLightSweep(bool quick) const override {
-        return render::SceneViewPasses::areaSampleSweep(quick);
+        return render::SceneViewPasses::areaSampleSweep(quick, 16, "samples");
     }
     Settings stiffSettings() const override { return {{"samples", 1024.0}, {"exact", 1.0}}; }
     // Measured by `airlight report --suite stiff` at 33x25 (figures in README.md), bounds about twice that.
