@@ -53,7 +53,14 @@ void appendTargetTable(std::ostringstream& h, const std::string& title, const st
                 if (t == "raymarch") continue;
                 const TargetSpeedup ts = targetSpeedup(rows, s.scene, t, target, "raymarch", measure, errorOver);
                 h << "<td" << (ts.bound != TargetSpeedup::Bound::Unknown ? "" : " class=\"note\"") << ">"
-                  << escapeHtml(targetSpeedupPhrase(ts, "raymarch", measure)) << "</td>";
+                  << escapeHtml(targetSpeedupPhrase(ts, "raymarch", measure));
+                // Where each side's figure comes from: the settings of its front that bracket the target.
+                std::string from;
+                for (const auto& [series, side] : {std::pair{t, ts.technique}, std::pair{std::string("raymarch"), ts.baseline}})
+                    if (const std::string p = targetSettingsPhrase(targetSettings(rows, s.scene, series, side)); !p.empty())
+                        from += (from.empty() ? "" : "; ") + series + " " + p;
+                if (!from.empty()) h << "<br><span class=\"note\">" << escapeHtml(from) << "</span>";
+                h << "</td>";
             }
             h << "</tr>\n";
         }
@@ -125,7 +132,10 @@ void writeHtml(const std::string& path, const ReportMeta& meta, const std::vecto
                       Measure::Time);
     h << "<p class=\"note\">Each side's time to reach the target is interpolated linearly in log(time) "
          "against log(error) between the two points of its own Pareto front (its sweep settings that no faster "
-         "setting beats) that bracket the target; no extrapolation. &ldquo;or less&rdquo;: even the cheapest setting "
+         "setting beats) that bracket the target; no extrapolation. Under each figure, the settings it lies between "
+         "(or the one it is): where the two differ in more than one knob, the line between them is a guess at how "
+         "the knobs trade, and a setting the sweep did not measure may reach the target sooner. &ldquo;or "
+         "less&rdquo;: even the cheapest setting "
          "is below the target, so its time only bounds the true one, and the speed-up is a bound (at least / at "
          "most). The per-row speed-ups in the tables below compare at each row's own error instead.";
     std::vector<ScenePage> withSilhouettes;  // scenes with pixels whose first hits disagree

@@ -103,6 +103,25 @@ TargetSpeedup targetSpeedup(const std::vector<ReportRow>& rows, const std::strin
     return s;
 }
 
+std::vector<std::string> targetSettings(const std::vector<ReportRow>& rows, const std::string& scene,
+                                        const std::string& series, const TimeToTarget& t) {
+    std::vector<std::string> labels;
+    int k = 0;
+    for (const ReportRow& r : rows) {
+        if (r.scene != scene || r.technique != series) continue;
+        if (k == t.above) labels.insert(labels.begin(), r.setting);
+        else if (k == t.below) labels.push_back(r.setting);
+        ++k;
+    }
+    return labels;
+}
+
+std::string targetSettingsPhrase(const std::vector<std::string>& settings) {
+    if (settings.empty()) return "";
+    if (settings.size() == 1) return "at " + settings[0];
+    return "between " + settings[0] + " and " + settings[1];
+}
+
 std::string targetSpeedupPhrase(const TargetSpeedup& s, const std::string& baseline, Measure measure) {
     using Kind = TimeToTarget::Kind;
     const std::string percent = formatFigure(100.0 * s.target, "%.3g") + " %";
@@ -281,7 +300,9 @@ void writeJson(const std::string& path, const ReportMeta& meta, const std::vecto
                                        {"speedup", t.bound == TargetSpeedup::Bound::Unknown ? nlohmann::json(nullptr)
                                                                                             : jsonNumber(t.ratio)},
                                        {"speedup_bound", kBounds[int(t.bound)]},
-                                       {"phrase", targetSpeedupPhrase(t)}});
+                                       {"phrase", targetSpeedupPhrase(t)},
+                                       {"technique_settings", targetSettings(rows, scene, technique, t.technique)},
+                                       {"raymarch_settings", targetSettings(rows, scene, "raymarch", t.baseline)}});
                     const TargetSpeedup w = targetSpeedup(rows, scene, technique, target, "raymarch", Measure::Work);
                     targets.back()["work_ratio"] =
                         w.bound == TargetSpeedup::Bound::Unknown ? nlohmann::json(nullptr) : jsonNumber(w.ratio);

@@ -109,6 +109,13 @@ enum class ErrorOver { AllPixels, AgreeingPixels };
 TargetSpeedup targetSpeedup(const std::vector<ReportRow>& rows, const std::string& scene, const std::string& technique,
                             double target, const std::string& baseline = "raymarch", Measure measure = Measure::Time,
                             ErrorOver errorOver = ErrorOver::AllPixels);
+// The rows a side's time at a target comes from (TimeToTarget::above and below, as indices into the rows of
+// `series` on `scene` in their order, the order targetSpeedup reads them in): the setting labels, the one
+// above the target first; one label when the time is that row's own; none when the target is not reached.
+std::vector<std::string> targetSettings(const std::vector<ReportRow>& rows, const std::string& scene,
+                                        const std::string& series, const TimeToTarget& t);
+// They in words: "between N=16 and area_samples=8 samples=16", "at N=16", or "".
+std::string targetSettingsPhrase(const std::vector<std::string>& settings);
 // It in words for the headline: "5.2x faster (12.1 ms against 63 ms)", "at least 2.0x faster (...)",
 // "does not reach 1 % (best 2.3 %)", "raymarch does not reach 1 % (best 1.4 %)"; with Measure::Work
 // "12x less work (1.3e+06 ops against 1.6e+07 ops)".

@@ -57,6 +57,7 @@ TimeToTarget timeToReach(const std::vector<TradeoffPoint>& series, double target
         // On the target: its time exactly; below it: a bound.
         t.kind = cheapest.error == target ? TimeToTarget::Kind::Interpolated : TimeToTarget::Kind::AtMost;
         t.milliseconds = cheapest.milliseconds;
+        t.above = t.below = front.front();
         return t;
     }
     if (t.bestError > target) return t;  // NotReached
@@ -68,6 +69,8 @@ TimeToTarget timeToReach(const std::vector<TradeoffPoint>& series, double target
         const double f = std::log(target / p.error) / std::log(q.error / p.error);
         t.kind = TimeToTarget::Kind::Interpolated;
         t.milliseconds = std::exp(std::log(p.milliseconds) + f * std::log(q.milliseconds / p.milliseconds));
+        t.below = front[k];
+        t.above = q.error == target ? front[k] : front[k - 1];
         return t;
     }
     return t;

@@ -36,6 +36,10 @@ struct TimeToTarget {
     Kind kind = Kind::NotReached;
     double milliseconds = 0.0;  // Interpolated, AtMost
     double bestError = 0.0;     // the front's lowest error (NotReached says how close it came)
+    // The points the time comes from, as indices into the series: the front point above the target and
+    // the one at or below it when Interpolated; both the one point when the target falls on it or when
+    // AtMost; -1 when NotReached. A reader can say which settings a figure lies between.
+    int above = -1, below = -1;
 };
 TimeToTarget timeToReach(const std::vector<TradeoffPoint>& series, double target);
 

@@ -135,6 +135,16 @@ TEST(Tradeoff, TimeToReachATargetFollowsTheSeriesOwnFront) {
     EXPECT_EQ(loose.kind, TimeToTarget::Kind::AtMost);
     EXPECT_DOUBLE_EQ(loose.milliseconds, 100.0 * std::pow(0.4, -0.5));
     EXPECT_EQ(timeToReach({}, 0.05).kind, TimeToTarget::Kind::NotReached);
+    // Which points each figure comes from: the front's neighbours around the target, never the dominated one.
+    EXPECT_EQ(at5.above, 1);
+    EXPECT_EQ(at5.below, 2);
+    const TimeToTarget on = timeToReach(series, 0.1);
+    EXPECT_EQ(on.above, 1);
+    EXPECT_EQ(on.below, 1);
+    EXPECT_EQ(loose.above, 0);
+    EXPECT_EQ(loose.below, 0);
+    EXPECT_EQ(at1.above, -1);
+    EXPECT_EQ(at1.below, -1);
 }
 
 TEST(Tradeoff, SpeedupAtATargetIsARatioOfTimesOrABoundOrNothing) {
@@ -256,6 +266,60 @@ TEST_F(ReportFiles, HtmlIsStaticAndReferencesItsImages) {
     for (const char* image : {"grate-plot.png", "grate-reference.png", "grate-slices.png"})
         EXPECT_NE(page.find(std::string("src=\"") + image + "\""), std::string::npos) << image;
     EXPECT_NE(page.find("&quot;odd&quot;"), std::string::npos);  // escaped
+}
+
+// The headline names the settings each side's time at a target lies between, in the page and in
+// results.json: here raymarch's 5 % lies between N=4 (20 %) and N=16 (3 %), its 1 % between N=16 and N=64
+// (0.5 %); the technique's cheapest setting is below 5 % already (a bound, its own row), and its 1 % lies
+// between its two settings. Rows of another scene and a dominated row are never named.
+TEST(ReportTargets, EachFigureNamesTheSettingsItLiesBetween) {
+    std::vector<ReportRow> rows;
+    auto add = [&](const std::string& scene, const std::string& technique, const std::string& setting, double ms,
+                   double error) {
+        ReportRow r;
+        r.scene = scene, r.technique = technique, r.setting = setting;
+        r.totalMilliseconds = ms;
+        r.error.relativeL2 = error;
+        rows.push_back(r);
+    };
+    add("other", "raymarch", "N=2", 1.0, 0.01);
+    add("grate", "raymarch", "N=4", 10.0, 0.2);
+    add("grate", "raymarch", "N=8", 30.0, 0.25);  // dominated: slower and worse than N=4
+    add("grate", "raymarch", "N=16", 40.0, 0.03);
+    add("grate", "raymarch", "N=64", 160.0, 0.005);
+    add("grate", "slices", "planes=8 \"odd\"", 5.0, 0.04);
+    add("grate", "slices", "planes=64", 20.0, 0.008);
+    const TargetSpeedup at5 = targetSpeedup(rows, "grate", "slices", 0.05), at1 = targetSpeedup(rows, "grate", "slices", 0.01);
+    using List = std::vector<std::string>;
+    EXPECT_EQ(targetSettings(rows, "grate", "raymarch", at5.baseline), (List{"N=4", "N=16"}));
+    EXPECT_EQ(targetSettings(rows, "grate", "slices", at5.technique), (List{"planes=8 \"odd\""}));
+    EXPECT_EQ(targetSettings(rows, "grate", "raymarch", at1.baseline), (List{"N=16", "N=64"}));
+    EXPECT_EQ(targetSettings(rows, "grate", "slices", at1.technique), (List{"planes=8 \"odd\"", "planes=64"}));
+    EXPECT_EQ(targetSettingsPhrase(targetSettings(rows, "grate", "raymarch", at1.baseline)), "between N=16 and N=64");
+    EXPECT_EQ(targetSettingsPhrase({"N=16"}), "at N=16");
+    EXPECT_EQ(targetSettingsPhrase({}), "");
+    const TargetSpeedup missed = targetSpeedup(rows, "grate", "slices", 0.001);
+    EXPECT_TRUE(targetSettings(rows, "grate", "slices", missed.technique).empty());
+
+    viz::testing::TempDir temp{"report-targets"};
+    const fs::path json = temp.path() / "results.json", html = temp.path() / "index.html";
+    writeJson(json.string(), {}, rows);
+    const nlohmann::json j = nlohmann::json::parse(readText(json));
+    int checked = 0;
+    for (const auto& t : j.at("speedups_at_targets")) {
+        if (t.at("scene") != "grate") continue;
+        const bool five = t.at("target_relative_l2").get<double>() == 0.05;
+        EXPECT_EQ(t.at("raymarch_settings").get<List>(), five ? (List{"N=4", "N=16"}) : (List{"N=16", "N=64"}));
+        EXPECT_EQ(t.at("technique_settings").get<List>(),
+                  five ? (List{"planes=8 \"odd\""}) : (List{"planes=8 \"odd\"", "planes=64"}));
+        ++checked;
+    }
+    EXPECT_EQ(checked, 2);
+    writeHtml(html.string(), {}, rows, {{"grate", "grate-plot.png", "grate-reference.png"}});
+    const std::string page = readText(html);
+    EXPECT_NE(page.find("slices at planes=8 &quot;odd&quot;; raymarch between N=4 and N=16"), std::string::npos);
+    EXPECT_NE(page.find("slices between planes=8 &quot;odd&quot; and planes=64; raymarch between N=16 and N=64"),
+              std::string::npos);
 }
 
 TEST_F(ReportFiles, UnwritableFolderIsAnInputError) {
