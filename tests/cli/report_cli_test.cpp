@@ -112,15 +112,17 @@ TEST_F(CliTest, ReportAboveTheDefaultSizeComparesAtTheErrorTargetsFromItsOwnRows
     EXPECT_EQ(j.at("meta").at("width"), 320);
     EXPECT_EQ(j.at("meta").at("height"), 240);
     // Each series' time at a target, recomputed here: the cheapest row whose error is at or below the
-    // target, and the fastest row above it; the time on the log-log line between them.
-    auto costAt = [&](const std::string& technique, double target, const char* cost,
-                      const char* error = "relative_l2") -> std::pair<std::string, double> {
-        struct P { double ms, e; };
+    // target, and the fastest row above it; the time on the log-log line between them. `between` gets the
+    // settings of the rows the time comes from (one when it is that row's own).
+    auto costAt = [&](const std::string& technique, double target, const char* cost, const char* error = "relative_l2",
+                      std::vector<std::string>* between = nullptr) -> std::pair<std::string, double> {
+        struct P { double ms, e; std::string setting; };
         std::vector<P> front;  // Pareto front, by brute force over all pairs
         std::vector<P> all;
         for (const auto& row : j.at("rows"))
             if (row.at("technique") == technique)
-                all.push_back({row.at(cost).get<double>(), row.at("error").at(error).get<double>()});
+                all.push_back({row.at(cost).get<double>(), row.at("error").at(error).get<double>(),
+                               row.at("setting").get<std::string>()});
         for (const P& p : all) {
             bool dominated = false;
             for (const P& q : all)
@@ -128,16 +130,20 @@ TEST_F(CliTest, ReportAboveTheDefaultSizeComparesAtTheErrorTargetsFromItsOwnRows
             if (!dominated) front.push_back(p);
         }
         std::sort(front.begin(), front.end(), [](const P& a, const P& b) { return a.ms < b.ms; });
+        if (between) between->clear();
         if (front.empty() || front.back().e > target) return {"not_reached", 0.0};
-        if (front.front().e <= target) return {"at_most", front.front().ms};
+        if (front.front().e <= target) {
+            if (between) *between = {front.front().setting};
+            return {"at_most", front.front().ms};
+        }
         for (std::size_t k = 1; k < front.size(); ++k)
             if (front[k].e <= target) {
+                if (between) *between = {front[k - 1].setting, front[k].setting};
                 const double f = std::log(target / front[k - 1].e) / std::log(front[k].e / front[k - 1].e);
                 return {"interpolated", front[k - 1].ms * std::pow(front[k].ms / front[k - 1].ms, f)};
             }
         return {"not_reached", 0.0};
     };
-    auto timeAt = [&](const std::string& technique, double target) { return costAt(technique, target, "total_ms"); };
     // Every row carries one counting run's work, its sum the row's counted operations.
     for (const auto& row : j.at("rows")) {
         ASSERT_TRUE(row.at("work").is_object()) << row.at("setting");
@@ -153,8 +159,11 @@ TEST_F(CliTest, ReportAboveTheDefaultSizeComparesAtTheErrorTargetsFromItsOwnRows
         EXPECT_TRUE(technique == "slices" || technique == "slices (paper)") << technique;
         const double target = t.at("target_relative_l2").get<double>();
         for (const std::string side : {"technique", "raymarch"}) {
-            const auto [kind, ms] = timeAt(side == "technique" ? technique : "raymarch", target);
+            std::vector<std::string> between;
+            const auto [kind, ms] =
+                costAt(side == "technique" ? technique : "raymarch", target, "total_ms", "relative_l2", &between);
             EXPECT_EQ(t.at(side + "_time"), kind) << side << " at " << target;
+            EXPECT_EQ(t.at(side + "_settings").get<std::vector<std::string>>(), between) << side << " at " << target;
             if (kind != "not_reached") {
                 EXPECT_NEAR(t.at(side + "_ms").get<double>(), ms, 1e-9 * ms) << side;
             }
