@@ -213,6 +213,7 @@ int runBenchCommand(Args& args, const std::string& commandLine) {
                 Job job{si, id, axis, axisPoints(axis, o, param ? param->maxValue : 0.0)};
                 for (AxisPoint& p : job.points) {
                     for (const auto& [name, value] : o.settings.at(id)) p.settings.try_emplace(name, value);
+                    for (const auto& [name, value] : technique->measurementSettings()) p.settings.try_emplace(name, value);
                     viz::completeSettings(*technique, p.settings);
                 }
                 steps += int(job.points.size());
@@ -329,6 +330,14 @@ int runBenchCommand(Args& args, const std::string& commandLine) {
     for (const std::string& text : o.sets) set += " " + text;  // as given: a named value by its name (integrand=svd)
     meta.fixed = "Fixed: each technique's default settings" + (set.empty() ? "" : " with" + set) + "; the axes other than size at " + std::to_string(o.width) +
                  "x" + std::to_string(o.height) + "; the scene at detail 1 except on the triangles axis.";
+    std::string recordingsOff;  // Technique::measurementSettings the user did not set
+    for (const std::string& id : o.techniques) {
+        const auto technique = viz::makeTechnique(id);
+        for (const auto& [name, value] : technique->measurementSettings())
+            if (!o.settings.at(id).count(name))
+                recordingsOff += (recordingsOff.empty() ? "" : ", ") + id + " " + viz::settingText(technique->params(), name, value);
+    }
+    if (!recordingsOff.empty()) meta.fixed += " The debugger's recordings off: " + recordingsOff + ".";
     if (!skipped.empty()) {
         meta.fixed += " Not measured:";
         for (const std::string& s : skipped) meta.fixed += " " + s + ";";

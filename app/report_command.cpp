@@ -222,6 +222,7 @@ viz::report::PlanSaving measurePlanSaving(const std::string& id, const viz::scen
     // The cheapest setting of the technique's sweep (its quick sweep with --quick), so that the check
     // costs what one row of the sweep costs; force_features on top of it for the forced runs.
     viz::Settings base = plannedTechnique->qualitySweep(o.quick).front().settings;
+    for (const auto& [name, value] : plannedTechnique->measurementSettings()) base.try_emplace(name, value);
     const viz::Settings planned = viz::completeSettings(*plannedTechnique, base);
     base["force_features"] = 1.0;
     const viz::Settings forced = viz::completeSettings(*forcedTechnique, base);
@@ -275,10 +276,15 @@ struct SweepPoint {
 // has an area light (Technique::areaLightSweep: these join the technique's front but are not measured
 // along the path, which would cost their square of VPLs on every frame), then its paper preset as a
 // series of its own; with --temporal, each technique's stabilising options on that scene as pairs of
-// points (the option off, then on). Every setting is checked here, before any work starts.
+// points (the option off, then on). Each point's settings hold the technique's measurementSettings
+// beneath its own. Every setting is checked here, before any work starts.
 std::vector<SweepPoint> sceneSweep(const std::vector<std::string>& techniques, const viz::scene::Scene& scene,
                                    bool quick, bool temporal) {
     std::vector<SweepPoint> out;
+    auto measured = [](const viz::Technique& t, viz::Settings s) {
+        for (const auto& [name, value] : t.measurementSettings()) s.try_emplace(name, value);
+        return s;
+    };
     for (const std::string& id : techniques) {
         const auto technique = viz::makeTechnique(id);
         std::vector<viz::QualitySetting> points = technique->qualitySweep(quick);
@@ -286,11 +292,13 @@ std::vector<SweepPoint> sceneSweep(const std::vector<std::string>& techniques, c
         if (viz::scene::hasAreaLight(scene))
             for (viz::QualitySetting& q : technique->areaLightSweep(quick)) points.push_back(std::move(q));
         for (std::size_t k = 0; k < points.size(); ++k) {
+            points[k].settings = measured(*technique, std::move(points[k].settings));
             viz::completeSettings(*technique, points[k].settings);  // throws if a declared sweep is invalid
             out.push_back({id, std::move(points[k]), id, k < own && measuredAlongPath(quick, false, int(k))});
         }
         // The paper's configuration beside ours: its own series, one point.
-        if (const viz::Settings paper = technique->paperSettings(); !paper.empty()) {
+        if (!technique->paperSettings().empty()) {
+            const viz::Settings paper = measured(*technique, technique->paperSettings());
             viz::completeSettings(*technique, paper);
             out.push_back({id, {"paper preset", paper}, id + " (paper)", measuredAlongPath(quick, true, 0)});
         }
@@ -300,9 +308,8 @@ std::vector<SweepPoint> sceneSweep(const std::vector<std::string>& techniques, c
         const auto technique = viz::makeTechnique(id);
         for (viz::StabilisingOption& option : technique->stabilisingOptions(scene)) {
             for (bool on : {false, true}) {
-                viz::Settings settings = on ? option.on : option.off;
-                (void)viz::completeSettings(*technique, settings);  // throws if a declared option is invalid
-                const viz::Settings& given = on ? option.on : option.off;
+                const viz::Settings given = measured(*technique, on ? option.on : option.off);
+                (void)viz::completeSettings(*technique, given);  // throws if a declared option is invalid
                 out.push_back({id, {settingsText(technique->params(), given), given}, id, true, option.name, on});
             }
         }

@@ -158,6 +158,10 @@ public:
         (void)quick;
         return {};
     }
+    // What `airlight report` and `bench` set beneath every setting they time: the debugger's own
+    // recordings off (slices' ray_planes), which the window wants on and a measurement of the technique's
+    // cost must not count. A setting that names one of these keeps its own value.
+    virtual Settings measurementSettings() const { return {}; }
     // The settings the stiff-case suite runs with (the accurate end of the technique's knobs), and the
     // bound it promises per case class. No bound: the technique does not handle that class, and then it
     // must say so in plan() and refuse (InputError) or fall back to a correct path.

@@ -30,16 +30,16 @@ std::string SceneViewPasses::vplKernelText(const Settings& settings) {
                                                   : "each a point (vpl_kernel=point)";
 }
 
-std::vector<QualitySetting> SceneViewPasses::areaSampleSweep(bool quick, int largest, const std::string& marchKnob) {
-    constexpr int kFewerMarchSamples = 16;
+std::vector<QualitySetting> SceneViewPasses::areaSampleSweep(bool quick, int largest, const std::string& march,
+                                                             int marchValue) {
     std::vector<QualitySetting> sweep;
     for (int n : quick ? std::vector<int>{8, 16} : std::vector<int>{8, 12, 16}) {
         if (n > largest) continue;
         const std::string label = "area_samples=" + std::to_string(n);
-        if (!marchKnob.empty())
-            sweep.push_back({label + " " + marchKnob + "=" + std::to_string(kFewerMarchSamples),
-                             {{"area_samples", double(n)}, {marchKnob, double(kFewerMarchSamples)}}});
         sweep.push_back({label, {{"area_samples", double(n)}}});
+        if (!march.empty())
+            sweep.push_back({label + " " + march + "=" + std::to_string(marchValue),
+                             {{"area_samples", double(n)}, {march, double(marchValue)}}});
     }
     return sweep;
 }

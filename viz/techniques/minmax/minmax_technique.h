@@ -148,7 +148,7 @@ public:
     std::vector<QualitySetting> qualitySweep(bool quick) const override;
     // Area lights: more VPLs, each count also at fewer of vpl_samples, the march of each VPL (SceneViewPasses::areaSampleSweep).
     std::vector<QualitySetting> areaLightSweep(bool quick) const override {
-        return render::SceneViewPasses::areaSampleSweep(quick, 16, "vpl_samples");
+        return render::SceneViewPasses::areaSampleSweep(quick, 16, "vpl_samples", 16);
     }
     std::vector<StabilisingOption> stabilisingOptions(const scene::Scene& scene) const override;
 

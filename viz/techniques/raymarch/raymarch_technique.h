@@ -72,7 +72,7 @@ public:
     std::vector<QualitySetting> qualitySweep(bool quick) const override;
     // Area lights: more VPLs, each count also at fewer of its samples (SceneViewPasses::areaSampleSweep).
     std::vector<QualitySetting> areaLightSweep(bool quick) const override {
-        return render::SceneViewPasses::areaSampleSweep(quick, 16, "samples");
+        return render::SceneViewPasses::areaSampleSweep(quick, 16, "samples", 16);
     }
     Settings stiffSettings() const override { return {{"samples", 1024.0}, {"exact", 1.0}}; }
     // Measured by `airlight report --suite stiff` at 33x25 (figures in README.md), bounds about twice that.

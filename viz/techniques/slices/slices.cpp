@@ -176,10 +176,10 @@ std::vector<StabilisingOption> SlicesTechnique::stabilisingOptions(const scene::
     // Only a spot light's planes follow a box that moves (the unbounded lights' planes fill the camera
     // frustum from the eye to zfar, which no motion changes).
     if (!render::hasLightOfType(scene, scene::LightType::Spot)) return {};
-    // 64 planes: few enough that plane positions show (the report times without ray_planes).
+    // 64 planes: few enough that plane positions show.
     return {{"plane_grid=world", "the planes follow the light volume's depth range",
-             {{"planes", 64.0}, {"ray_planes", 0.0}},
-             {{"planes", 64.0}, {"ray_planes", 0.0}, {"plane_grid", 1.0}}}};
+             {{"planes", 64.0}},
+             {{"planes", 64.0}, {"plane_grid", 1.0}}}};
 }
 
 std::vector<QualitySetting> SlicesTechnique::qualitySweep(bool quick) const {
@@ -200,8 +200,6 @@ std::vector<QualitySetting> SlicesTechnique::qualitySweep(bool quick) const {
     const std::vector<int> midpointCounts = quick ? std::vector<int>{128} : std::vector<int>{32, 128, 512};
     for (int n : midpointCounts)
         sweep.push_back({"planes=" + std::to_string(n) + " midpoint", {{"planes", double(n)}, {"integration", 0.0}}});
-    // The report times the technique, not the inspector's recording of one pixel.
-    for (QualitySetting& q : sweep) q.settings["ray_planes"] = 0.0;
     return sweep;
 }
 
