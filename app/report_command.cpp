@@ -52,8 +52,8 @@ results.csv, results.json, one error-against-time plot per scene (PNG), each tec
 heat map, and index.html (static, no scripts). The headline is each technique's speed-up over
 brute-force raymarch at equal error. On a scene with an area light the sweeps of the techniques that
 sample it as virtual point lights add more of them (area_samples 8, 12 and 16; 8 and 16 with --quick,
-where polyvol adds none and ivsv adds vpls=256), raymarch and minmax each count also with 16 samples
-along each VPL's ray (samples=16, vpl_samples=16).
+where polyvol adds none and ivsv adds vpls=256), each count also with the technique's other knob for
+the VPLs' rays (raymarch samples=16, minmax vpl_samples=16, slices planes=256).
 
   --scenes      built-in scene names or glTF paths, comma-separated (default: every built-in scene)
   --techniques  techniques to compare, comma-separated (default: every one but the reference;
