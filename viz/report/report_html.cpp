@@ -48,19 +48,21 @@ void appendTargetTable(std::ostringstream& h, const std::string& title, const st
     h << "</tr>\n";
     for (const ScenePage& s : scenes)
         for (double target : errorTargets()) {
-            h << "<tr><td class=\"l\">" << escapeHtml(s.scene) << "</td><td>" << figure(100.0 * target) << " %</td>";
+            // Under the target, the raymarch settings its time lies between (the same for every column);
+            // under each figure, the technique's.
+            auto settingsLine = [&](const std::string& series, const TimeToTarget& side, const std::string& prefix) {
+                const std::string p = targetSettingsPhrase(targetSettings(rows, s.scene, series, side));
+                return p.empty() ? std::string() : "<br><span class=\"note\">" + escapeHtml(prefix + p) + "</span>";
+            };
+            const TimeToTarget base = targetSpeedup(rows, s.scene, "raymarch", target, "raymarch", measure, errorOver).baseline;
+            h << "<tr><td class=\"l\">" << escapeHtml(s.scene) << "</td><td>" << figure(100.0 * target) << " %"
+              << settingsLine("raymarch", base, "raymarch ") << "</td>";
             for (const std::string& t : techniques) {
                 if (t == "raymarch") continue;
                 const TargetSpeedup ts = targetSpeedup(rows, s.scene, t, target, "raymarch", measure, errorOver);
                 h << "<td" << (ts.bound != TargetSpeedup::Bound::Unknown ? "" : " class=\"note\"") << ">"
-                  << escapeHtml(targetSpeedupPhrase(ts, "raymarch", measure));
-                // Where each side's figure comes from: the settings of its front that bracket the target.
-                std::string from;
-                for (const auto& [series, side] : {std::pair{t, ts.technique}, std::pair{std::string("raymarch"), ts.baseline}})
-                    if (const std::string p = targetSettingsPhrase(targetSettings(rows, s.scene, series, side)); !p.empty())
-                        from += (from.empty() ? "" : "; ") + series + " " + p;
-                if (!from.empty()) h << "<br><span class=\"note\">" << escapeHtml(from) << "</span>";
-                h << "</td>";
+                  << escapeHtml(targetSpeedupPhrase(ts, "raymarch", measure)) << settingsLine(t, ts.technique, "")
+                  << "</td>";
             }
             h << "</tr>\n";
         }
@@ -133,8 +135,9 @@ void writeHtml(const std::string& path, const ReportMeta& meta, const std::vecto
     h << "<p class=\"note\">Each side's time to reach the target is interpolated linearly in log(time) "
          "against log(error) between the two points of its own Pareto front (its sweep settings that no faster "
          "setting beats) that bracket the target; no extrapolation. Under each figure, the settings it lies between "
-         "(or the one it is): where the two differ in more than one knob, the line between them is a guess at how "
-         "the knobs trade, and a setting the sweep did not measure may reach the target sooner. &ldquo;or "
+         "(or the one it is), and under each target raymarch's: where the two differ in more than one knob, the line "
+         "between them is a guess at how the knobs trade, and a setting the sweep did not measure may reach the "
+         "target sooner. &ldquo;or "
          "less&rdquo;: even the cheapest setting "
          "is below the target, so its time only bounds the true one, and the speed-up is a bound (at least / at "
          "most). The per-row speed-ups in the tables below compare at each row's own error instead.";

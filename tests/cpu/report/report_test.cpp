@@ -317,9 +317,12 @@ TEST(ReportTargets, EachFigureNamesTheSettingsItLiesBetween) {
     EXPECT_EQ(checked, 2);
     writeHtml(html.string(), {}, rows, {{"grate", "grate-plot.png", "grate-reference.png"}});
     const std::string page = readText(html);
-    EXPECT_NE(page.find("slices at planes=8 &quot;odd&quot;; raymarch between N=4 and N=16"), std::string::npos);
-    EXPECT_NE(page.find("slices between planes=8 &quot;odd&quot; and planes=64; raymarch between N=16 and N=64"),
-              std::string::npos);
+    // raymarch's under each target (once per row), the technique's under its figure.
+    const std::string note = "<br><span class=\"note\">";
+    EXPECT_NE(page.find("5 %" + note + "raymarch between N=4 and N=16</span>"), std::string::npos);
+    EXPECT_NE(page.find("1 %" + note + "raymarch between N=16 and N=64</span>"), std::string::npos);
+    EXPECT_NE(page.find(note + "at planes=8 &quot;odd&quot;</span>"), std::string::npos);
+    EXPECT_NE(page.find(note + "between planes=8 &quot;odd&quot; and planes=64</span>"), std::string::npos);
 }
 
 TEST_F(ReportFiles, UnwritableFolderIsAnInputError) {
