@@ -213,7 +213,7 @@ int runBenchCommand(Args& args, const std::string& commandLine) {
                 Job job{si, id, axis, axisPoints(axis, o, param ? param->maxValue : 0.0)};
                 for (AxisPoint& p : job.points) {
                     for (const auto& [name, value] : o.settings.at(id)) p.settings.try_emplace(name, value);
-                    for (const auto& [name, value] : technique->measurementSettings()) p.settings.try_emplace(name, value);
+                    p.settings = viz::measuredSettings(*technique, std::move(p.settings));
                     viz::completeSettings(*technique, p.settings);
                 }
                 steps += int(job.points.size());

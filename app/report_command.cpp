@@ -221,8 +221,7 @@ viz::report::PlanSaving measurePlanSaving(const std::string& id, const viz::scen
     viz::report::PlanSaving saving{sceneName, id, 0.0, 0.0, {}};
     // The cheapest setting of the technique's sweep (its quick sweep with --quick), so that the check
     // costs what one row of the sweep costs; force_features on top of it for the forced runs.
-    viz::Settings base = plannedTechnique->qualitySweep(o.quick).front().settings;
-    for (const auto& [name, value] : plannedTechnique->measurementSettings()) base.try_emplace(name, value);
+    viz::Settings base = viz::measuredSettings(*plannedTechnique, plannedTechnique->qualitySweep(o.quick).front().settings);
     const viz::Settings planned = viz::completeSettings(*plannedTechnique, base);
     base["force_features"] = 1.0;
     const viz::Settings forced = viz::completeSettings(*forcedTechnique, base);
@@ -281,10 +280,6 @@ struct SweepPoint {
 std::vector<SweepPoint> sceneSweep(const std::vector<std::string>& techniques, const viz::scene::Scene& scene,
                                    bool quick, bool temporal) {
     std::vector<SweepPoint> out;
-    auto measured = [](const viz::Technique& t, viz::Settings s) {
-        for (const auto& [name, value] : t.measurementSettings()) s.try_emplace(name, value);
-        return s;
-    };
     for (const std::string& id : techniques) {
         const auto technique = viz::makeTechnique(id);
         std::vector<viz::QualitySetting> points = technique->qualitySweep(quick);
@@ -292,13 +287,13 @@ std::vector<SweepPoint> sceneSweep(const std::vector<std::string>& techniques, c
         if (viz::scene::hasAreaLight(scene))
             for (viz::QualitySetting& q : technique->areaLightSweep(quick)) points.push_back(std::move(q));
         for (std::size_t k = 0; k < points.size(); ++k) {
-            points[k].settings = measured(*technique, std::move(points[k].settings));
+            points[k].settings = viz::measuredSettings(*technique, std::move(points[k].settings));
             viz::completeSettings(*technique, points[k].settings);  // throws if a declared sweep is invalid
             out.push_back({id, std::move(points[k]), id, k < own && measuredAlongPath(quick, false, int(k))});
         }
         // The paper's configuration beside ours: its own series, one point.
         if (!technique->paperSettings().empty()) {
-            const viz::Settings paper = measured(*technique, technique->paperSettings());
+            const viz::Settings paper = viz::measuredSettings(*technique, technique->paperSettings());
             viz::completeSettings(*technique, paper);
             out.push_back({id, {"paper preset", paper}, id + " (paper)", measuredAlongPath(quick, true, 0)});
         }
@@ -308,7 +303,7 @@ std::vector<SweepPoint> sceneSweep(const std::vector<std::string>& techniques, c
         const auto technique = viz::makeTechnique(id);
         for (viz::StabilisingOption& option : technique->stabilisingOptions(scene)) {
             for (bool on : {false, true}) {
-                const viz::Settings given = measured(*technique, on ? option.on : option.off);
+                const viz::Settings given = viz::measuredSettings(*technique, on ? option.on : option.off);
                 (void)viz::completeSettings(*technique, given);  // throws if a declared option is invalid
                 out.push_back({id, {settingsText(technique->params(), given), given}, id, true, option.name, on});
             }

@@ -74,6 +74,11 @@ const ParamInfo* findParam(const Technique& technique, const std::string& name) 
     return nullptr;
 }
 
+Settings measuredSettings(const Technique& technique, Settings given) {
+    for (const auto& [name, value] : technique.measurementSettings()) given.try_emplace(name, value);
+    return given;
+}
+
 Settings completeSettings(const Technique& technique, const Settings& given) {
     Settings result;
     for (const ParamInfo& p : technique.params()) result[p.name] = p.defaultValue;

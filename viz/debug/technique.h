@@ -151,9 +151,11 @@ public:
         return {{"default", {}}};
     }
     // The points the sweep adds on a scene with an area light: more virtual point lights per emitter
-    // (the shared `area_samples`, or ivsv's own `vpls`), everything else at the defaults, so that the
-    // front reaches below the error the default VPL count leaves near the emitter. Empty: no VPL count to
-    // add (vsv hands an area light to an inner ivsv at its defaults).
+    // (the shared `area_samples`, or ivsv's own `vpls`), each count at the defaults and, where another
+    // knob sets how finely each VPL's ray is integrated, at one other value of it
+    // (SceneViewPasses::areaSampleSweep), so that the front reaches below the error the default VPL count
+    // leaves near the emitter. Empty: no VPL count to add (vsv hands an area light to an inner ivsv at
+    // its defaults).
     virtual std::vector<QualitySetting> areaLightSweep(bool quick) const {
         (void)quick;
         return {};
@@ -240,6 +242,9 @@ const ParamInfo* findParam(const Technique& technique, const std::string& name);
 
 // Fills in defaults and rejects unknown names and out-of-range values with an InputError.
 Settings completeSettings(const Technique& technique, const Settings& given);
+
+// `given` with the technique's measurementSettings() beneath it: what `report` and `bench` time.
+Settings measuredSettings(const Technique& technique, Settings given);
 
 // The intermediates among `shown` that a stage of `technique` draws only on demand (StageInfo::onDemand),
 // sorted, once each: what FrameInput::views should ask for. `everything`: all of them.

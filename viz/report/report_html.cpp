@@ -54,16 +54,16 @@ void appendTargetTable(std::ostringstream& h, const std::string& title, const st
                 const std::string p = targetSettingsPhrase(targetSettings(rows, s.scene, series, side));
                 return p.empty() ? std::string() : "<br><span class=\"note\">" + escapeHtml(prefix + p) + "</span>";
             };
-            const TimeToTarget base = targetSpeedup(rows, s.scene, "raymarch", target, "raymarch", measure, errorOver).baseline;
+            std::vector<std::pair<std::string, TargetSpeedup>> row;  // every column shares raymarch's side
+            for (const std::string& t : techniques)
+                if (t != "raymarch") row.push_back({t, targetSpeedup(rows, s.scene, t, target, "raymarch", measure, errorOver)});
             h << "<tr><td class=\"l\">" << escapeHtml(s.scene) << "</td><td>" << figure(100.0 * target) << " %"
-              << settingsLine("raymarch", base, "raymarch ") << "</td>";
-            for (const std::string& t : techniques) {
-                if (t == "raymarch") continue;
-                const TargetSpeedup ts = targetSpeedup(rows, s.scene, t, target, "raymarch", measure, errorOver);
+              << (row.empty() ? std::string() : settingsLine("raymarch", row.front().second.baseline, "raymarch "))
+              << "</td>";
+            for (const auto& [t, ts] : row)
                 h << "<td" << (ts.bound != TargetSpeedup::Bound::Unknown ? "" : " class=\"note\"") << ">"
                   << escapeHtml(targetSpeedupPhrase(ts, "raymarch", measure)) << settingsLine(t, ts.technique, "")
                   << "</td>";
-            }
             h << "</tr>\n";
         }
     h << "</table>\n";
