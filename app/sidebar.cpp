@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <utility>
 
 namespace airlight {
 namespace {
@@ -16,18 +17,20 @@ std::string stemOf(const std::string& name) {
 
 }  // namespace
 
-std::vector<ViewGroup> groupViews(const std::vector<std::string>& views) {
+std::vector<ViewGroup> groupViews(const std::vector<std::string>& views, const std::vector<std::string>& viewStages) {
     std::vector<ViewGroup> groups;
     for (int i = 0; i < int(views.size()); ++i) {
-        const std::string stem = stemOf(views[std::size_t(i)]);
-        if (!groups.empty() && groups.back().stem == stem) ++groups.back().count;
-        else groups.push_back({i, 1, stem});
+        std::string stem = stemOf(views[std::size_t(i)]);
+        std::string stage = i < int(viewStages.size()) ? viewStages[std::size_t(i)] : std::string();
+        if (!groups.empty() && groups.back().stem == stem && groups.back().stage == stage) ++groups.back().count;
+        else groups.push_back({i, 1, std::move(stem), std::move(stage)});
     }
     return groups;
 }
 
 SidebarLayout layoutSidebar(const std::vector<std::string>& techniques, int currentTechnique,
-                            const std::vector<std::string>& views, int shownView, const SidebarMetrics& m) {
+                            const std::vector<std::string>& views, const std::vector<std::string>& viewStages,
+                            int shownView, const SidebarMetrics& m) {
     SidebarLayout out;
     float width = m.minWidth;
     for (const std::string& id : techniques) width = std::max(width, m.measure(id) + 4.0f * m.pad);
@@ -47,7 +50,16 @@ SidebarLayout layoutSidebar(const std::vector<std::string>& techniques, int curr
     y += m.line;
     out.headings.push_back({"Views ([ ])", {m.pad, y}});
     y += m.line + 2.0f * m.scale;
-    for (const ViewGroup& g : groupViews(views)) {
+    std::string lastStage;
+    for (const ViewGroup& g : groupViews(views, viewStages)) {
+        // Each stage's views under its sub-heading, once (the stages publish in order).
+        if (!g.stage.empty() && g.stage != lastStage) {
+            // Not alone at the bottom: the heading and its first view, or neither.
+            if (y + 2.0f * m.line + 2.0f * m.scale >= out.panel.max.y) return out;
+            out.headings.push_back({g.stage, {m.pad, y}, true});
+            y += m.line + 2.0f * m.scale;
+            lastStage = g.stage;
+        }
         const bool holdsShown = shownView >= g.first && shownView < g.first + g.count;
         const bool collapsed = g.count >= kViewGroupMin && !holdsShown;
         for (int i = g.first; i < g.first + (collapsed ? 1 : g.count); ++i) {

@@ -24,6 +24,7 @@ struct SidebarEntry {
 struct SidebarHeading {
     std::string text;
     glm::vec2 at{0.0f};
+    bool stage = false;  // a stage's sub-heading in the views list ("4 Ray march"), drawn dimmer
 };
 
 struct SidebarLayout {
@@ -44,16 +45,22 @@ struct SidebarMetrics {
 // A run of kViewGroupMin or more views named alike ("VPL shadow cube", "VPL shadow cube 1", ...) is one
 // entry, "VPL shadow cube (16)", that shows its first view, unless the view shown is one of them:
 // then each is listed. [ ] step through every view either way.
+// `viewStages[i]` names the stage that makes view i, as the stage bar does ("4 Ray march"); "" for the
+// run's own outputs (the final image and L_air). Each stage's views sit under its sub-heading, so a
+// stage's intermediate "L_air" is not mistaken for the run's "Airlight L_air". Empty: no sub-headings.
 inline constexpr int kViewGroupMin = 4;
 
-// The runs of views named alike: a name's stem is the name less a trailing " <digits>".
+// The runs of views named alike: a name's stem is the name less a trailing " <digits>". A run never
+// spans two stages (`viewStages` as for layoutSidebar; empty: one stage).
 struct ViewGroup {
     int first = 0, count = 1;
     std::string stem;
+    std::string stage;  // the stage that makes them ("" for the run's outputs or without `viewStages`)
 };
-std::vector<ViewGroup> groupViews(const std::vector<std::string>& views);
+std::vector<ViewGroup> groupViews(const std::vector<std::string>& views, const std::vector<std::string>& viewStages = {});
 
 SidebarLayout layoutSidebar(const std::vector<std::string>& techniques, int currentTechnique,
-                            const std::vector<std::string>& views, int shownView, const SidebarMetrics& m);
+                            const std::vector<std::string>& views, const std::vector<std::string>& viewStages,
+                            int shownView, const SidebarMetrics& m);
 
 }  // namespace airlight

@@ -52,15 +52,21 @@ void GuiApp::draw() {
         dl.textClipped({pad, bottom + float(i) * line}, helpLines[i], kDim, float(fb.x) - pad);
 
     // Sidebar: techniques, then views (sidebar.h).
-    std::vector<std::string> views;
+    std::vector<std::string> views, viewStages;
     if (mHaveOutput)
-        for (int i = 0; i < contentCount(); ++i) views.push_back(contentLabel(i));
+        for (int i = 0; i < contentCount(); ++i) {
+            views.push_back(contentLabel(i));
+            // Under the stage that makes it, named as on the stage bar; the run's outputs have none.
+            const int k = i < 2 ? -1 : viz::stageOfIntermediate(t.stages(), contentId(i));
+            viewStages.push_back(k < 0 ? "" : std::to_string(k + 1) + " " + t.stages()[std::size_t(k)].label);
+        }
     const SidebarLayout side =
-        layoutSidebar(mIds, currentIndex(), views, mHaveOutput ? focusedView().shown : -1,
+        layoutSidebar(mIds, currentIndex(), views, viewStages, mHaveOutput ? focusedView().shown : -1,
                       {top, bottom, pad, line, s, kSidebarMin * s, [this](const std::string& x) { return mFont->measure(x); }});
     const float sidebarWidth = side.panel.max.x;
     mBackground->rect(side.panel, kPanel);
-    for (const SidebarHeading& h : side.headings) dl.text(h.at, h.text, kAccent);
+    for (const SidebarHeading& h : side.headings)
+        dl.textClipped(h.at, h.text, h.stage ? kDim : kAccent, sidebarWidth - 0.5f * pad);
     for (const SidebarEntry& e : side.entries) {
         const int i = e.index;
         // Clicking a view's entry shows it in the focused view.

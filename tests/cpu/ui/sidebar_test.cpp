@@ -3,6 +3,8 @@
 // panel wide enough for the longest technique name.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "sidebar.h"
 
 namespace airlight {
@@ -22,7 +24,7 @@ std::vector<std::string> names(const std::string& stem, int n) {
 TEST(Sidebar, TechniquesAreNumberedForTheDigitKeysAndViewsStopWhereThePanelEnds) {
     const auto techniques = names("technique", 11);
     const auto views = names("view ", 40);
-    const SidebarLayout side = layoutSidebar(techniques, 3, views, 5, metrics(60.0f, 600.0f));
+    const SidebarLayout side = layoutSidebar(techniques, 3, views, {}, 5, metrics(60.0f, 600.0f));
     int listedTechniques = 0, listedViews = 0;
     float previousBottom = -1.0f;
     for (const SidebarEntry& e : side.entries) {
@@ -52,12 +54,12 @@ TEST(Sidebar, TechniquesAreNumberedForTheDigitKeysAndViewsStopWhereThePanelEnds)
 }
 
 TEST(Sidebar, ThePanelIsWideEnoughForTheLongestTechniqueAndNoViewsBeforeARun) {
-    const SidebarLayout narrow = layoutSidebar({"a", "b"}, 0, {}, -1, metrics(60.0f, 600.0f));
+    const SidebarLayout narrow = layoutSidebar({"a", "b"}, 0, {}, {}, -1, metrics(60.0f, 600.0f));
     EXPECT_FLOAT_EQ(narrow.panel.max.x, 170.0f) << "never narrower than the minimum";
     for (const SidebarEntry& e : narrow.entries) EXPECT_EQ(e.list, SidebarEntry::List::Techniques);
 
     const std::string longName(40, 'x');  // 280 px of text
-    const SidebarLayout wide = layoutSidebar({"a", longName}, 1, {"Final image"}, 0, metrics(60.0f, 600.0f));
+    const SidebarLayout wide = layoutSidebar({"a", longName}, 1, {"Final image"}, {}, 0, metrics(60.0f, 600.0f));
     EXPECT_GE(wide.panel.max.x, 280.0f + 2.0f * 8.0f);
     EXPECT_EQ(wide.entries.back().screenName, "view:Final image");
     EXPECT_TRUE(wide.entries.back().selected);
@@ -93,7 +95,7 @@ TEST(Sidebar, ViewsNamedAlikeAreGroupedByTheirStem) {
 
 TEST(Sidebar, AGroupOfFourOrMoreIsOneEntryUntilTheViewShownIsInIt) {
     const auto views = vsvViews();
-    SidebarLayout side = layoutSidebar({"vsv"}, 0, views, 1, metrics(60.0f, 2000.0f));
+    SidebarLayout side = layoutSidebar({"vsv"}, 0, views, {}, 1, metrics(60.0f, 2000.0f));
     const std::vector<std::string> collapsed = {"Final image", "Airlight L_air", "VPL shadow cube (16)",
                                                 "Distance d", "Surface radiance", "L_air 2", "Visibility"};
     EXPECT_EQ(viewTexts(side), collapsed);
@@ -103,7 +105,7 @@ TEST(Sidebar, AGroupOfFourOrMoreIsOneEntryUntilTheViewShownIsInIt) {
     EXPECT_EQ(group.screenName, "view:VPL shadow cube");
     EXPECT_FALSE(group.selected);
     // Showing one of them lists each, the shown one selected, in order.
-    side = layoutSidebar({"vsv"}, 0, views, 7, metrics(60.0f, 2000.0f));
+    side = layoutSidebar({"vsv"}, 0, views, {}, 7, metrics(60.0f, 2000.0f));
     EXPECT_EQ(viewTexts(side), views);
     for (const SidebarEntry& e : side.entries) {
         if (e.list == SidebarEntry::List::Views) {
@@ -112,7 +114,59 @@ TEST(Sidebar, AGroupOfFourOrMoreIsOneEntryUntilTheViewShownIsInIt) {
     }
     // Three alike stay three entries.
     const std::vector<std::string> three = {"map", "map 1", "map 2", "other"};
-    EXPECT_EQ(viewTexts(layoutSidebar({"t"}, 0, three, 0, metrics(60.0f, 2000.0f))), three);
+    EXPECT_EQ(viewTexts(layoutSidebar({"t"}, 0, three, {}, 0, metrics(60.0f, 2000.0f))), three);
+}
+
+// Each view under the stage that makes it: the run's two outputs first with no sub-heading, then one
+// sub-heading per stage, just above its first view, in order, never repeated; so a stage's own "L_air"
+// reads apart from the run's "Airlight L_air".
+TEST(Sidebar, StageViewsSitUnderTheirStagesSubHeading) {
+    const std::vector<std::string> views = {"Final image", "Airlight L_air", "Shadow map", "VPL cells",
+                                            "Distance d", "Surface radiance", "L_air", "Lit fraction"};
+    const std::vector<std::string> stages = {"", "", "1 Shadow maps", "1 Shadow maps", "2 Camera view",
+                                             "2 Camera view", "3 Ray march", "3 Ray march"};
+    const SidebarLayout side = layoutSidebar({"raymarch"}, 0, views, stages, 0, metrics(60.0f, 2000.0f));
+    EXPECT_EQ(viewTexts(side), views) << "sub-headings change no entry";
+    std::vector<std::string> subHeadings;
+    for (const SidebarHeading& h : side.headings)
+        if (h.stage) subHeadings.push_back(h.text);
+    EXPECT_EQ(subHeadings, (std::vector<std::string>{"1 Shadow maps", "2 Camera view", "3 Ray march"}));
+    // Every view's nearest heading above it is its own stage's (or the list's, for the outputs); nothing
+    // overlaps a heading.
+    for (const SidebarEntry& e : side.entries) {
+        if (e.list != SidebarEntry::List::Views) continue;
+        const SidebarHeading* above = nullptr;
+        for (const SidebarHeading& h : side.headings) {
+            EXPECT_FALSE(h.at.y + 16.0f > e.rect.min.y && h.at.y < e.rect.max.y) << h.text << " overlaps " << e.text;
+            if (h.at.y < e.rect.min.y && (!above || h.at.y > above->at.y)) above = &h;
+        }
+        ASSERT_NE(above, nullptr);
+        const std::string& stage = stages[std::size_t(e.index)];
+        EXPECT_EQ(above->text, stage.empty() ? "Views ([ ])" : stage) << e.text;
+    }
+}
+
+TEST(Sidebar, AGroupNeverSpansTwoStagesAndNoSubHeadingIsLeftAloneAtTheBottom) {
+    // Four views named alike from two stages are two groups of two, so neither collapses.
+    const std::vector<std::string> views = {"Final image", "Airlight L_air", "map", "map 1", "map 2", "map 3"};
+    const std::vector<std::string> stages = {"", "", "1 A", "1 A", "2 B", "2 B"};
+    EXPECT_EQ(groupViews(views).size(), 3u) << "without stages the four are one group";
+    const std::vector<ViewGroup> groups = groupViews(views, stages);
+    ASSERT_EQ(groups.size(), 4u);
+    EXPECT_EQ(groups[2].stage, "1 A");
+    EXPECT_EQ(groups[3].first, 4);
+    EXPECT_EQ(viewTexts(layoutSidebar({"t"}, 0, views, stages, 0, metrics(60.0f, 2000.0f))), views);
+    // A panel that ends where only a sub-heading would fit stops before it, at every height.
+    for (float bottom = 120.0f; bottom < 400.0f; bottom += 1.0f) {
+        const SidebarLayout side = layoutSidebar({"t"}, 0, views, stages, 0, metrics(60.0f, bottom));
+        float lastEntry = -1.0f;
+        for (const SidebarEntry& e : side.entries) lastEntry = std::max(lastEntry, e.rect.min.y);
+        for (const SidebarHeading& h : side.headings) {
+            if (!h.stage) continue;
+            EXPECT_LT(h.at.y, lastEntry) << "bottom " << bottom << ": " << h.text << " has no view under it";
+            EXPECT_LE(h.at.y + 16.0f, side.panel.max.y) << "bottom " << bottom << ": " << h.text;
+        }
+    }
 }
 
 }  // namespace
