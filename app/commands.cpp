@@ -81,7 +81,9 @@ constexpr const char* kGuiHelp = R"(usage: airlight gui [--scene S] [--technique
 Opens the window: the final frame beside one intermediate. Its keys are listed below.
 
 --state FILE          load the session (scene, camera, medium, technique, parameters, view) from FILE
-                      at start; F5 saves it there, F9 loads it again, and it is saved on exit.
+                      at start; F5 saves it there, F9 loads it again, and it is saved on exit. A FILE
+                      that does not exist yet starts a new session; one that is not a session is an
+                      error and is left untouched.
                       Without --state the file is ~/.local/state/airlight/session.json.
 --script FILE         replay window actions (click NAME [FX FY], key NAME, hold NAME N, frames N,
                       screenshot PATH; one per line), then exit (after writing --screenshot if given)

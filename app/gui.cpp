@@ -309,12 +309,15 @@ void GuiApp::replan() {
 
 int runGui(const GuiOptions& options) {
     if (options.width < 1 || options.height < 1) throw viz::InputError("render size must be at least 1x1");
-    // The session: a broken file is reported and the defaults are used, never an error.
+    // The session named with --state: one that does not exist yet starts there; a file that is not a
+    // session stops here, untouched (session_state.h).
     SessionState session;
     std::string notice;
     GuiOptions effective = options;
     if (options.loadStateAtStart) {
-        session = loadSession(options.statePath, notice);
+        SessionRead read = loadNamedSession(options.statePath);
+        session = std::move(read.state);
+        notice = std::move(read.problem);
         if (!notice.empty()) std::fprintf(stderr, "airlight: note: %s\n", notice.c_str());
         if (!options.sceneGiven && !session.scene.empty()) effective.scene = session.scene;
         if (notice.empty()) {

@@ -271,37 +271,67 @@ std::string defaultSessionPath() {
     return (fs::path(home && *home ? home : ".") / ".local" / "state" / "airlight" / "session.json").string();
 }
 
-SessionState loadSession(const std::string& path, std::string& problem) {
+SessionRead readSession(const std::string& path) {
+    SessionRead r;
     std::error_code statusError;  // a path that cannot be looked at reads as one that does not exist
     const std::filesystem::file_status status = std::filesystem::status(path, statusError);
     if (!std::filesystem::exists(status)) {
         // A new session: not a problem with the file, but worth a word on where the state will go.
-        problem = "state file '" + path + "' does not exist yet; using defaults (F5 or closing the window saves it)";
-        return SessionState{};
+        r.problem = "state file '" + path + "' does not exist yet";
+        return r;
     }
+    r.file = SessionRead::File::Broken;
     if (!std::filesystem::is_regular_file(status)) {
-        // A folder, a FIFO or a device: never read (a FIFO would block) and never moved aside.
-        problem = "state file '" + path + "' is not a regular file; using defaults";
-        return SessionState{};
+        // A folder, a FIFO or a device: never read (a FIFO would block).
+        r.problem = "state file '" + path + "' is not a regular file";
+        return r;
     }
     std::ifstream in(path, std::ios::binary);
     if (!in) {
-        problem = "state file '" + path + "' cannot be read; using defaults";
-        return SessionState{};
+        r.problem = "state file '" + path + "' cannot be read";
+        return r;
     }
     std::stringstream text;
     text << in.rdbuf();
-    SessionState s = sessionFromJson(text.str(), problem);
+    std::string problem;
+    r.state = sessionFromJson(text.str(), problem);
     if (!problem.empty()) {
-        // Never lose a hand-edited file: it is moved aside before the window saves over its name.
-        in.close();
-        const std::string aside = path + ".broken";
-        std::error_code ec;
-        std::filesystem::rename(path, aside, ec);
-        problem = "state file '" + path + "': " + problem + "; using defaults" +
-                  (ec ? " (the file could not be moved aside: " + ec.message() + ")" : "; the file was moved to '" + aside + "'");
+        r.problem = "state file '" + path + "': " + problem;
+        return r;
     }
-    return s;
+    r.file = SessionRead::File::Loaded;
+    return r;
+}
+
+SessionState loadSession(const std::string& path, std::string& problem) {
+    SessionRead r = readSession(path);
+    problem = r.problem;
+    if (r.file == SessionRead::File::Missing) problem += "; using defaults (F5 or closing the window saves it)";
+    if (r.file != SessionRead::File::Broken) return std::move(r.state);
+    problem += "; using defaults";
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec)) return std::move(r.state);  // a folder is never moved
+    // Never lose a hand-edited file: it is moved aside, to a name that holds nothing yet, before the
+    // window saves over its name.
+    std::string aside = path + ".broken";
+    for (int n = 2; std::filesystem::exists(std::filesystem::symlink_status(aside, ec)) && n <= 1000; ++n)
+        aside = path + ".broken." + std::to_string(n);
+    if (std::filesystem::exists(std::filesystem::symlink_status(aside, ec))) {
+        problem += " (not moved aside: " + path + ".broken to .broken.1000 all exist)";
+        return std::move(r.state);
+    }
+    std::filesystem::rename(path, aside, ec);
+    problem += ec ? " (the file could not be moved aside: " + ec.message() + ")" : "; the file was moved to '" + aside + "'";
+    return std::move(r.state);
+}
+
+SessionRead loadNamedSession(const std::string& path) {
+    SessionRead r = readSession(path);
+    if (r.file == SessionRead::File::Broken)
+        throw viz::InputError(r.problem + "; not an Airlight session: fix it, or name a file that does not exist "
+                                          "yet to start a new session there (the file was left as it is)");
+    if (r.file == SessionRead::File::Missing) r.problem += "; a new session (F5 or closing the window saves it)";
+    return r;
 }
 
 void saveSession(const std::string& path, const SessionState& state) {

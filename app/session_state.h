@@ -1,6 +1,7 @@
 // The window's session: what the user set up, saved to a small JSON file (F5, and on exit) and loaded
-// back (F9, --state FILE, and at start). Loading never fails hard: a missing, truncated or corrupted
-// file gives the defaults and a one-line reason naming the file.
+// back (F9, --state FILE, and at start). F9 never fails hard: a missing, truncated or corrupted file gives
+// the defaults and a one-line reason naming the file. A file named with --state that exists and is not a
+// session stops the window before it opens, the file untouched.
 #pragma once
 
 #include <map>
@@ -73,9 +74,24 @@ SessionState sessionFromJson(const std::string& text, std::string& problem);
 // The default location: $XDG_STATE_HOME/airlight/session.json, else ~/.local/state/airlight/session.json.
 std::string defaultSessionPath();
 
-// Reads `path`; a missing or unreadable file, or bad contents, give the defaults and a reason
-// ("state file 'P': ...; using defaults"). An empty reason means the state was loaded.
+// Reads `path`, never touching the file: `state` holds the defaults unless `file` is Loaded, and `problem`
+// a one-line reason naming the file ("state file 'P': ...") unless it is.
+struct SessionRead {
+    enum class File { Loaded, Missing, Broken };  // Broken: unreadable, not a regular file, or bad contents
+    File file = File::Missing;
+    SessionState state;
+    std::string problem;
+};
+SessionRead readSession(const std::string& path);
+// As readSession, for F9: a missing or unreadable file, or bad contents, give the defaults and a reason
+// ending "; using defaults". A regular file with bad contents is moved aside first, to the first free
+// name of P.broken, P.broken.2, ... (the window saves over P later, and a hand edit must survive). An
+// empty reason means the state was loaded.
 SessionState loadSession(const std::string& path, std::string& problem);
+// For `gui --state P` at start: the file the user named must be a session or not exist yet (the window
+// then starts one there). Anything else is an InputError and the file is left exactly as it is: a
+// mistyped path (`--state scene.gltf`) must never be renamed or saved over.
+SessionRead loadNamedSession(const std::string& path);
 // Writes atomically (creating the folder); throws InputError naming the path on failure.
 void saveSession(const std::string& path, const SessionState& state);
 

@@ -97,7 +97,7 @@ TEST_F(GuiCli, ScreenshotShowsTheRenderedViewsWhereTheSidecarSays) {
     EXPECT_GE(checked, 1) << "the 80x60 pictures leave room beside them in their cells";
 }
 
-TEST_F(GuiCli, ASavedSessionIsRestoredAndABrokenOneFallsBackToTheDefaults) {
+TEST_F(GuiCli, ASavedSessionIsRestoredAndAFileThatIsNotOneIsRefusedUntouched) {
     const fs::path state = writeText("session.json", R"({
   "version": 1, "scene": "grate", "technique": "slices", "size": [64, 48],
   "camera": {"position": [0.0, 1.0, 6.0], "forward": [0.0, 0.1, -1.0], "up": [0.0, 1.0, 0.0],
@@ -114,16 +114,38 @@ TEST_F(GuiCli, ASavedSessionIsRestoredAndABrokenOneFallsBackToTheDefaults) {
     EXPECT_EQ(a.at("views")[1].at("name"), "slices.shadow_map");
     const std::string before = readFile(state);
 
-    // Truncated: a one-line note naming the file, the defaults, and the file left as it was.
-    const fs::path broken = writeText("broken.json", before.substr(0, before.size() / 3));
-    const RunResult b = run("gui --state " + broken.string() + " --screenshot " + path("b.png").string());
-    ASSERT_EQ(b.exitCode, 0) << b.err;
-    EXPECT_NE(b.err.find("broken.json"), std::string::npos) << b.err;
-    EXPECT_NE(b.err.find("using defaults"), std::string::npos) << b.err;
-    const nlohmann::json bj = nlohmann::json::parse(readFile(path("b.json")));
-    EXPECT_EQ(bj.at("scene"), "colonnade");  // the built-in default scene
-    EXPECT_EQ(bj.at("technique"), "raymarch");  // the window's default
     EXPECT_EQ(readFile(state), before);
+
+    // A file named with --state that is not a session (a truncated one, or a mistyped path to some other
+    // JSON or text file) stops the window before it opens with one line naming the file; the file is
+    // left byte for byte where it was, never moved aside or saved over, and no screenshot is written.
+    const std::vector<std::pair<std::string, std::string>> notSessions = {
+        {"broken.json", before.substr(0, before.size() / 3)},
+        {"scene.gltf", R"({"asset": {"version": "2.0"}, "scenes": [{"nodes": []}]})"},
+        {"notes.txt", "root:x:0:0:root:/root:/bin/bash\n"},
+    };
+    for (const auto& [name, text] : notSessions) {
+        const fs::path file = writeText(name, text);
+        const fs::path shot = path(name + ".png");
+        const RunResult b = run("gui --state " + file.string() + " --screenshot " + shot.string());
+        EXPECT_EQ(b.exitCode, 2) << name << ": " << b.err;
+        EXPECT_NE(b.err.find(name), std::string::npos) << b.err;
+        EXPECT_NE(b.err.find("not an Airlight session"), std::string::npos) << b.err;
+        EXPECT_EQ(std::count(b.err.begin(), b.err.end(), '\n'), 1) << "one line: " << b.err;
+        EXPECT_EQ(readFile(file), text) << name << " must be left as it was";
+        EXPECT_FALSE(fs::exists(file.string() + ".broken")) << name;
+        EXPECT_FALSE(fs::exists(shot)) << name;
+    }
+
+    // A name that holds nothing yet starts a new session there, with the defaults.
+    const fs::path fresh = path("fresh.json");
+    const RunResult c = run("gui --state " + fresh.string() + " --screenshot " + path("c.png").string());
+    ASSERT_EQ(c.exitCode, 0) << c.err;
+    EXPECT_NE(c.err.find("fresh.json"), std::string::npos) << c.err;
+    EXPECT_NE(c.err.find("a new session"), std::string::npos) << c.err;
+    const nlohmann::json cj = nlohmann::json::parse(readFile(path("c.json")));
+    EXPECT_EQ(cj.at("scene"), "colonnade");  // the built-in default scene
+    EXPECT_EQ(cj.at("technique"), "raymarch");  // the window's default
 }
 
 TEST_F(GuiCli, AScriptClicksWidgetsAndSidebarItemsByName) {

@@ -7,6 +7,9 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <string>
+#include <vector>
 
 #include "core/error.h"
 #include "session_state.h"
@@ -234,6 +237,75 @@ TEST(SessionState, BrokenFilesAreMovedAsideAndHostileOnesRefused) {
         EXPECT_EQ(kept, text) << what << ": the broken file must survive byte for byte";
     }
     fs::remove_all(dir);
+}
+
+std::string contents(const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// Moving aside never overwrites an earlier broken file: each goes to the first free name.
+TEST(SessionState, EachBrokenFileIsMovedAsideToANameThatHoldsNothingYet) {
+    const viz::testing::TempDir temp("state_aside_twice");
+    const fs::path file = temp.path() / "session.json";
+    for (const std::string text : {"first {", "second [", "third \"", "fourth ,"}) {
+        std::ofstream(file, std::ios::binary) << text;
+        std::string problem;
+        (void)loadSession(file.string(), problem);
+        EXPECT_FALSE(fs::exists(file)) << text;
+    }
+    EXPECT_EQ(contents(temp.path() / "session.json.broken"), "first {");
+    EXPECT_EQ(contents(temp.path() / "session.json.broken.2"), "second [");
+    EXPECT_EQ(contents(temp.path() / "session.json.broken.3"), "third \"");
+    EXPECT_EQ(contents(temp.path() / "session.json.broken.4"), "fourth ,");
+}
+
+// The file named with --state: read without being touched; anything but a session, or a name that holds
+// nothing yet, is an InputError naming it, and the file stays byte for byte (a mistyped `--state
+// scene.gltf` must never be renamed). A missing name is a new session.
+TEST(SessionState, AFileNamedAtStartIsNeverMovedAndMustBeASession) {
+    const viz::testing::TempDir temp("state_named");
+    const fs::path dir = temp.path();
+    const std::string good = sessionToJson(sample());
+    std::ofstream(dir / "good.json", std::ios::binary) << good;
+    const SessionRead ok = loadNamedSession((dir / "good.json").string());
+    EXPECT_EQ(ok.file, SessionRead::File::Loaded);
+    EXPECT_EQ(ok.problem, "");
+    EXPECT_EQ(ok.state.technique, "slices");
+
+    const SessionRead fresh = loadNamedSession((dir / "new.json").string());
+    EXPECT_EQ(fresh.file, SessionRead::File::Missing);
+    EXPECT_NE(fresh.problem.find("new.json"), std::string::npos) << fresh.problem;
+    EXPECT_FALSE(fs::exists(dir / "new.json")) << "reading creates nothing";
+
+    const std::vector<std::pair<std::string, std::string>> others = {
+        {"scene.gltf", R"({"asset": {"version": "2.0"}})"},
+        {"passwd", "root:x:0:0:root:/root:/bin/bash\n"},
+        {"half.json", good.substr(0, good.size() / 2)},
+        {"newer.json", std::string(good).replace(good.find("\"version\": 1"), 12, "\"version\": 9")},
+    };
+    for (const auto& [name, text] : others) {
+        const fs::path file = dir / name;
+        std::ofstream(file, std::ios::binary) << text;
+        const SessionRead r = readSession(file.string());
+        EXPECT_EQ(r.file, SessionRead::File::Broken) << name;
+        EXPECT_NE(r.problem.find(name), std::string::npos) << r.problem;
+        try {
+            (void)loadNamedSession(file.string());
+            ADD_FAILURE() << name << " was taken for a session";
+        } catch (const viz::InputError& e) {
+            const std::string what = e.what();
+            EXPECT_NE(what.find(file.string()), std::string::npos) << what;
+            EXPECT_NE(what.find("not an Airlight session"), std::string::npos) << what;
+            EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+        }
+        EXPECT_EQ(contents(file), text) << name << " is left as it was";
+        EXPECT_FALSE(fs::exists(file.string() + ".broken")) << name;
+    }
+    // A folder under the name is refused too, and stays a folder.
+    fs::create_directories(dir / "folder.json");
+    EXPECT_THROW((void)loadNamedSession((dir / "folder.json").string()), viz::InputError);
+    EXPECT_TRUE(fs::is_directory(dir / "folder.json"));
 }
 
 TEST(SessionState, SavingWhereNothingCanBeWrittenIsAnInputError) {
