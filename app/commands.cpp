@@ -329,10 +329,6 @@ int runGuiCommand(Args& args) {
             throw InputError("--screenshot '" + o.screenshot + "' would write its view rectangles over the state file '" +
                              o.state + "'");
     }
-    if (const std::string problem = viz::displayProblem(); !problem.empty())
-        throw InputError(problem + ": set DISPLAY to a running X server (or run under xvfb-run), or " +
-                         (o.lesson.empty() ? std::string("use 'airlight render'")
-                                           : "export the lesson with 'airlight lesson " + o.lesson + " --export DIR'"));
     GuiOptions g;
     g.scene = o.request.scene;
     g.technique = o.request.technique;
@@ -353,13 +349,23 @@ int runGuiCommand(Args& args) {
     g.sceneGiven = o.sceneGiven;
     g.techniqueGiven = o.techniqueGiven;
     g.sizeGiven = o.sizeGiven;
-    if (!o.exportDir.empty()) g.exportDir = o.exportDir;
+    if (!o.exportDir.empty()) {
+        std::error_code ec;
+        if (std::filesystem::exists(o.exportDir, ec) && !std::filesystem::is_directory(o.exportDir, ec))
+            throw InputError("--export-dir '" + o.exportDir + "' is a file, not a folder");
+        g.exportDir = o.exportDir;
+    }
     g.uiScale = o.uiScale;
     if (!o.path.empty()) viz::scene::parseMotionPath(o.path);  // a bad path fails before the window opens
     g.path = o.path;
     g.pathFrames = o.pathFrames;
     // An unknown lesson name fails here; a malformed lesson file opens and shows its error in the panel.
     if (!o.lesson.empty()) g.lesson = findLesson(o.lesson);
+    // The arguments' own errors first, then whether a window can open at all.
+    if (const std::string problem = viz::displayProblem(); !problem.empty())
+        throw InputError(problem + ": set DISPLAY to a running X server (or run under xvfb-run), or " +
+                         (o.lesson.empty() ? std::string("use 'airlight render'")
+                                           : "export the lesson with 'airlight lesson " + o.lesson + " --export DIR'"));
     return runGui(g);
 }
 

@@ -263,19 +263,66 @@ std::string lessonDirectory() {
     return std::string(VIZ_SOURCE_DIR) + "/lessons";
 }
 
+std::string matchLesson(const std::string& name, const std::vector<std::string>& lessons,
+                        std::vector<std::string>& matches) {
+    matches.clear();
+    if (name.empty()) return "";
+    const auto pick = [&](const auto& accepts) {
+        for (const std::string& l : lessons)
+            if (accepts(l)) matches.push_back(l);
+        return matches.size() == 1 ? matches.front() : std::string();
+    };
+    const auto lower = [](std::string s) {
+        for (char& c : s) c = char(std::tolower(static_cast<unsigned char>(c)));
+        return s;
+    };
+    const std::string want = lower(name);
+    for (const std::string& l : lessons)
+        if (lower(l) == want) return l;
+    // A number: the lesson whose name starts with that number ("3" and "03" are 03-slices).
+    if (std::all_of(want.begin(), want.end(), [](unsigned char c) { return std::isdigit(c); })) {
+        const unsigned long long n = want.size() <= 9 ? std::stoull(want) : ~0ull;
+        return pick([&](const std::string& l) {
+            std::size_t digits = 0;
+            while (digits < l.size() && std::isdigit(static_cast<unsigned char>(l[digits]))) ++digits;
+            return digits > 0 && digits <= 9 && std::stoull(l.substr(0, digits)) == n;
+        });
+    }
+    // The start of a name, else any part of it (after the number: "slices" is 03-slices).
+    if (std::string one = pick([&](const std::string& l) { return lower(l).rfind(want, 0) == 0; }); !one.empty() ||
+        !matches.empty())
+        return one;
+    return pick([&](const std::string& l) { return lower(l).find(want) != std::string::npos; });
+}
+
 std::string findLesson(const std::string& nameOrPath) {
     namespace fs = std::filesystem;
     if (nameOrPath.size() > 3 && nameOrPath.substr(nameOrPath.size() - 3) == ".md") return nameOrPath;
+    std::string problem;  // the first folder's, when no folder has the lesson
     for (const fs::path& dir : {fs::path(lessonDirectory()), fs::path("lessons")}) {
-        const fs::path p = dir / (nameOrPath + ".md");
-        if (fs::exists(p)) return p.string();
+        // The lessons of a folder, in order; its README describes the format and is not one.
+        std::vector<std::string> lessons;
+        std::error_code ec;
+        for (const auto& entry : fs::directory_iterator(dir, ec))
+            if (entry.path().extension() == ".md" && entry.path().filename() != "README.md")
+                lessons.push_back(entry.path().stem().string());
+        if (lessons.empty()) continue;
+        std::sort(lessons.begin(), lessons.end());
+        std::vector<std::string> matches;
+        if (const std::string found = matchLesson(nameOrPath, lessons, matches); !found.empty())
+            return (dir / (found + ".md")).string();
+        const auto list = [](const std::vector<std::string>& names) {
+            std::string out;
+            for (const std::string& n : names) out += (out.empty() ? "" : ", ") + n;
+            return out;
+        };
+        if (problem.empty())
+            problem = matches.size() > 1 ? "lesson '" + nameOrPath + "' could be any of " + list(matches) + ": name one"
+                                         : "unknown lesson '" + nameOrPath + "' (known: " + list(lessons) + ")";
     }
-    std::string known;
-    std::error_code ec;
-    for (const auto& entry : fs::directory_iterator(fs::path(lessonDirectory()), ec))
-        if (entry.path().extension() == ".md" && entry.path().filename() != "README.md")
-            known += (known.empty() ? "" : ", ") + entry.path().stem().string();
-    throw InputError("unknown lesson '" + nameOrPath + "' (known: " + known + ")");
+    if (problem.empty())
+        problem = "unknown lesson '" + nameOrPath + "': no lessons in '" + lessonDirectory() + "' or './lessons'";
+    throw InputError(problem);
 }
 
 namespace {

@@ -75,7 +75,13 @@ Lesson parseLesson(const std::string& path);
 std::string lessonDirectory();
 
 // A lesson by name: NAME.md in lessonDirectory() or the working folder's lessons/, or a path to a .md file.
+// NAME may be shortened as far as it stays one lesson's: its number ("3" or "03") or the start or any part
+// of its name ("slices", "min-max"); unknown or ambiguous names are an InputError listing the lessons.
 std::string findLesson(const std::string& nameOrPath);
+// The lesson `name` picks among `lessons` (file stems, "01-airlight-integral", ...), as findLesson reads
+// it; empty when none or several do, with `matches` holding the several.
+std::string matchLesson(const std::string& name, const std::vector<std::string>& lessons,
+                        std::vector<std::string>& matches);
 
 // Renders every step headlessly (each named view as PNG) and writes DIR/index.html with the text and the
 // images. `size` (if non-zero) overrides every step's image size. Checks that every named view exists.

@@ -81,6 +81,7 @@ int main(int argc, char** argv) {
                 return 0;
             }
             const std::string name = args.take();
+            if (name.empty()) throw viz::InputError("lesson needs a NAME (run 'airlight lesson --help')");
             if (std::find(words.begin(), words.end(), "--export") == words.end()) {
                 // No export: the lesson player in the window, with the window's options.
                 std::vector<std::string> gui = {"--lesson", name};

@@ -197,6 +197,11 @@ TEST_F(CliTest, MalformedLessonsNameTheFileAndLine) {
     EXPECT_FALSE(fs::exists(path("o5")));
     EXPECT_FALSE(fs::exists(path(".o5.partial")));
     expectUserError(run("lesson no-such-lesson --export " + path("o6").string()), "no-such-lesson");
+    // lessons/README.md describes the format and is not a lesson; a name that fits several lists them.
+    expectUserError(run("lesson README --export " + path("o10").string()), "unknown lesson 'README' (known: 01-");
+    expectUserError(run("lesson volumes --export " + path("o11").string()),
+                    "could be any of 04-polygonal-light-volumes, 06-voxelized-shadow-volumes");
+    EXPECT_FALSE(fs::exists(path("o10")));
     expectUserError(run("lesson " + lesson("cmp.md", "# T\n## one\n```airlight\nscene: grate\ntechnique: raymarch\n"
                                                       "compare: raymarch, reference\n```\n") +
                         " --export " + path("o9").string()),
@@ -207,6 +212,18 @@ TEST_F(CliTest, MalformedLessonsNameTheFileAndLine) {
     expectUserError(run("lesson " + lesson("twice.md", good + "## two\n```airlight\nset: samples=8\nset: samples=16\n```\n") +
                         " --export " + path("o8").string()),
                     "twice.md:14: 'samples' is set twice in this step");
+}
+
+// The window's own arguments fail before it opens, with or without a display: the lesson's name, an
+// export folder that is a file.
+TEST_F(CliTest, TheWindowsArgumentsAreCheckedBeforeItOpens) {
+    expectUserError(run("lesson volumes --screenshot " + path("a.png").string()), "could be any of");
+    expectUserError(run("lesson '' --screenshot " + path("b.png").string()), "lesson needs a NAME");
+    const fs::path file = writeText("exports", "a file\n");
+    expectUserError(run("gui --export-dir " + file.string() + " --screenshot " + path("c.png").string()),
+                    "--export-dir '" + file.string() + "' is a file, not a folder");
+    EXPECT_EQ(readFile(file), "a file\n");
+    for (const char* shot : {"a.png", "b.png", "c.png"}) EXPECT_FALSE(fs::exists(path(shot))) << shot;
 }
 
 TEST_F(CliTest, ALessonWithAByteOrderMarkExports) {
