@@ -70,6 +70,7 @@ TimedRuns timeRuns(viz::Technique& technique, const viz::FrameInput& input, int 
     TimedRuns timed;
     timed.last = technique.run(input);  // warm-up
     std::vector<double> totals, walls;
+    int compiled = 0;  // shader programs compiled after the warm-up: none, for a technique that keeps them
     std::vector<std::string> order;
     std::map<std::string, std::pair<std::vector<double>, std::vector<double>>> stages;
     for (int r = 0; r < runs; ++r) {
@@ -77,6 +78,7 @@ TimedRuns timeRuns(viz::Technique& technique, const viz::FrameInput& input, int 
         timed.last = technique.run(input);
         walls.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
         totals.push_back(timed.last.timing.totalMilliseconds());
+        compiled += timed.last.timing.programsCompiled();
         for (const viz::StageTiming& s : timed.last.timing.stages) {
             auto [it, added] = stages.try_emplace(s.stage);
             if (added) order.push_back(s.stage);
@@ -86,6 +88,9 @@ TimedRuns timeRuns(viz::Technique& technique, const viz::FrameInput& input, int 
     }
     for (const std::string& id : order)
         timed.stages.push_back({id, median(stages[id].first), median(stages[id].second), viz::report::spreadOf(stages[id].first)});
+    if (compiled > 0)
+        std::fprintf(stderr, "note: %s compiled %d shader programs in its %d timed runs after the warm-up: its times "
+                             "include compiling\n", technique.id().c_str(), compiled, runs);
     timed.totalMilliseconds = median(totals);
     timed.wallMilliseconds = median(walls);
     timed.totalSpread = viz::report::spreadOf(totals);

@@ -34,7 +34,8 @@ nlohmann::json lightsJson(const std::vector<viz::scene::Light>& lights) {
 nlohmann::json timingJson(const viz::Timing& timing) {
     nlohmann::json stages = nlohmann::json::array();
     for (const viz::StageTiming& s : timing.stages)
-        if (std::isfinite(s.milliseconds)) stages.push_back({{"stage", s.stage}, {"ms", s.milliseconds}});
+        if (std::isfinite(s.milliseconds))
+            stages.push_back({{"stage", s.stage}, {"ms", s.milliseconds}, {"programs_compiled", s.programsCompiled}});
     return {{"clock", timing.clock}, {"stages", stages}};
 }
 

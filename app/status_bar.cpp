@@ -24,9 +24,17 @@ std::string timingLine(const viz::Timing& timing) {
     if (timing.stages.empty()) return "timings: (none yet)";
     // The total and its clock first: a narrow window cuts the line at its end, and the stages are also in
     // the stage-times chart under the views.
+    // A run that compiled shaders (a first run, a new permutation) says so: its times are no warm figures,
+    // and the stages that compiled carry a '*'.
+    const int compiled = timing.programsCompiled();
     std::string line = "timings: total " + viz::format("%.1f ms", timing.totalMilliseconds()) + " (clock: " +
-                       timing.clock + ")   |";
-    for (const auto& st : timing.stages) line += "  " + st.stage + " " + viz::format("%.1f ms", st.milliseconds);
+                       timing.clock +
+                       (compiled ? ", * includes compiling " + std::to_string(compiled) + " shader program" +
+                                       (compiled == 1 ? "" : "s") + " (first use)"
+                                 : std::string()) +
+                       ")   |";
+    for (const auto& st : timing.stages)
+        line += "  " + st.stage + " " + viz::format("%.1f ms", st.milliseconds) + (st.programsCompiled ? "*" : "");
     return line;
 }
 

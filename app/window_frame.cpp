@@ -115,8 +115,11 @@ void GuiApp::draw() {
         // Per-stage timings of the last run as bars, with the clock that measured them.
         viz::plot::BarChart chart;
         chart.title = "stage times (" + timing.clock + "), total " + format("%.1f ms", timing.totalMilliseconds());
+        // Stages that compiled shaders this run (first use): marked, and drawn dim, not warm figures.
+        if (mOutput.timing.programsCompiled() > 0) chart.title += "; * compiled shaders (first use)";
         for (const viz::StageTiming& st : mOutput.timing.stages)
-            chart.bars.push_back({st.stage, st.milliseconds, format("%.1f ms", st.milliseconds), kAccent});
+            chart.bars.push_back({st.stage, st.milliseconds, format("%.1f ms", st.milliseconds) + (st.programsCompiled ? "*" : ""),
+                                  st.programsCompiled ? kDim : kAccent});
         if (left.size().y > 2.0f * line) viz::plot::drawBarChart(dl, left, chart, kDim);
     }
     mParamsRect = right;

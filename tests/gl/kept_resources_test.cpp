@@ -50,5 +50,30 @@ TEST_F(KeptResourcesTest, AnInstanceThatRanOtherFramesFirstGivesWhatAFreshOneGiv
     EXPECT_EQ(gpu, 6);
 }
 
+// Programs are kept too: a technique compiles its shaders on first use, inside the stage that uses them
+// (whose time then says so: StageTiming::programsCompiled), and never again for the same scene and
+// settings, nor for the next frame of a moving camera. A technique that compiled on every run would pay
+// a compile per frame in the window and in every timed run of `report` and `bench`.
+TEST_F(KeptResourcesTest, OnlyTheFirstRunCompilesShaders) {
+    for (const std::string& name : scene::builtinSceneNames()) {
+        const scene::Scene scene = scene::makeBuiltinScene(name);
+        const scene::Scene next = turned(scene, 0.04);
+        for (const std::string& id : techniqueIds()) {
+            auto technique = makeTechnique(id);
+            if (!technique->needsGl()) continue;
+            Settings given;
+            if (id == "polyvol") given = {{"shadow_map", 128.0}};
+            const FrameOutput first = runTechnique(*technique, scene, given, 32, 24);
+            EXPECT_GT(first.timing.programsCompiled(), 0) << name << " " << id << ": the first run compiles its shaders";
+            for (const scene::Scene* again : {&scene, &next}) {
+                const FrameOutput later = runTechnique(*technique, *again, given, 32, 24);
+                for (const StageTiming& st : later.timing.stages)
+                    EXPECT_EQ(st.programsCompiled, 0) << name << " " << id << ", " << st.stage
+                                                      << (again == &scene ? " (the same frame)" : " (the next frame)");
+            }
+        }
+    }
+}
+
 }  // namespace
 }  // namespace viz::testing

@@ -22,6 +22,9 @@ struct StageTiming {
     // not measured apart (CPU stages, whose milliseconds are wall time already).
     double wallMilliseconds = -1.0;
     WorkCounts work{};  // counting runs only
+    // Shader programs compiled inside the stage (gl::StageClock; first use of a program or permutation):
+    // its time includes compiling them, so it is no warm figure. 0 for CPU stages.
+    int programsCompiled = 0;
 };
 
 struct Timing {
@@ -31,6 +34,13 @@ struct Timing {
         double t = 0.0;
         for (const auto& s : stages) t += s.milliseconds;
         return t;
+    }
+    // Shader programs compiled in the run (StageTiming::programsCompiled summed): not 0, and its times
+    // include first-use compiles.
+    int programsCompiled() const {
+        int n = 0;
+        for (const auto& s : stages) n += s.programsCompiled;
+        return n;
     }
     // A counting run's work summed over the stages (empty outside counting runs).
     WorkCounts totalWork() const {

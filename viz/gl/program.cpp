@@ -80,7 +80,14 @@ Handle<ShaderTraits> compileStage(const std::string& path, const ShaderDefines& 
 
 }  // namespace
 
+namespace {
+thread_local std::uint64_t tProgramsCompiled = 0;
+}  // namespace
+
+std::uint64_t programsCompiledOnThisThread() { return tProgramsCompiled; }
+
 Program Program::compile(const ProgramDesc& desc) {
+    ++tProgramsCompiled;
     if (desc.stages.empty())
         throw ShaderError("program '" + desc.label + "' has no stages", "", 0);
     std::vector<Handle<ShaderTraits>> shaders;

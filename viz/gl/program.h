@@ -3,6 +3,8 @@
 // throw ShaderError whose message starts with the original "file:line:".
 #pragma once
 
+#include <cstdint>
+
 #include <epoxy/gl.h>
 
 #include <glm/glm.hpp>
@@ -57,6 +59,11 @@ private:
     Handle<ProgramTraits> mHandle;
     std::string mLabel;
 };
+
+// How many programs Program::compile has built on the calling thread so far. gl::StageClock records the
+// difference across a stage: a stage that compiles (a technique's first run, a new shader permutation)
+// pays for it in its time, which is then no warm figure.
+std::uint64_t programsCompiledOnThisThread();
 
 // Number of work groups covering `size` items with groups of `group`: ceil(size / group) per axis.
 inline glm::ivec3 groupCount(glm::ivec3 size, glm::ivec3 group) {

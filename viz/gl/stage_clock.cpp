@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 #include "gl/context_info.h"
+#include "gl/program.h"
 #include "gl/work_counters.h"
 
 namespace viz::gl {
@@ -15,6 +16,7 @@ StageClock::StageClock(ClockMethod method) : mMethod(method) {
 void StageClock::begin() {
     VIZ_CHECK(!mRunning, "StageClock::begin called twice without endMilliseconds");
     mRunning = true;
+    mCompiledAtBegin = programsCompiledOnThisThread();
     if (WorkCounters::enabled()) {
         WorkCounters::bind();
         mWorkAtBegin = WorkCounters::read();  // waits for the GPU: a counting run's times mean nothing
@@ -45,6 +47,7 @@ StageTiming StageClock::end(const std::string& stage) {
     const double ms = endMilliseconds();
     const double wall = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - mWallStart).count();
     StageTiming timing{stage, ms, wall};
+    timing.programsCompiled = int(programsCompiledOnThisThread() - mCompiledAtBegin);
     if (WorkCounters::enabled() && !mWorkAtBegin.empty()) timing.work = workBetween(mWorkAtBegin, WorkCounters::read());
     mWorkAtBegin.clear();
     return timing;

@@ -12,6 +12,7 @@
 #include <epoxy/gl.h>
 
 #include <chrono>
+#include <cstdint>
 #include <string>
 
 #include "debug/timing.h"
@@ -47,6 +48,7 @@ private:
     std::chrono::steady_clock::time_point mStart, mWallStart;
     bool mRunning = false;
     WorkCounts mWorkAtBegin;  // counting runs (gl/work_counters.h): the totals when the stage began
+    std::uint64_t mCompiledAtBegin = 0;  // gl::programsCompiledOnThisThread() when the stage began
 };
 
 }  // namespace viz::gl

@@ -111,5 +111,19 @@ TEST(StatusBar, APlanThatRunsEveryStageSaysNoneSkipped) {
     EXPECT_EQ(timingLine({}), "timings: (none yet)");
 }
 
+// A run whose stages compiled shaders says how many, and marks those stages: its times are no warm figures.
+TEST(StatusBar, ARunThatCompiledShadersSaysSo) {
+    viz::Timing t;
+    t.clock = "glFinish+steady_clock";
+    t.stages = {{"minmax.rectify", 60.0}, {"minmax.traverse", 700.0}, {"minmax.compose", 1.0}};
+    t.stages[0].programsCompiled = 2;
+    t.stages[1].programsCompiled = 1;
+    EXPECT_EQ(timingLine(t), "timings: total 761.0 ms (clock: glFinish+steady_clock, * includes compiling 3 shader "
+                             "programs (first use))   |  minmax.rectify 60.0 ms*  minmax.traverse 700.0 ms*  "
+                             "minmax.compose 1.0 ms");
+    t.stages[0].programsCompiled = 0;
+    EXPECT_NE(timingLine(t).find("compiling 1 shader program (first use)"), std::string::npos) << timingLine(t);
+}
+
 }  // namespace
 }  // namespace airlight
