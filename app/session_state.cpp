@@ -306,9 +306,9 @@ SessionRead readSession(const std::string& path) {
 SessionState loadSession(const std::string& path, std::string& problem) {
     SessionRead r = readSession(path);
     problem = r.problem;
-    if (r.file == SessionRead::File::Missing) problem += "; using defaults (F5 or closing the window saves it)";
+    if (r.file == SessionRead::File::Missing) problem += "; nothing loaded (F5 or closing the window saves it)";
     if (r.file != SessionRead::File::Broken) return std::move(r.state);
-    problem += "; using defaults";
+    problem += "; nothing loaded";
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec)) return std::move(r.state);  // a folder is never moved
     // Never lose a hand-edited file: it is moved aside, to a name that holds nothing yet, before the

@@ -1,6 +1,6 @@
 // The window's session: what the user set up, saved to a small JSON file (F5, and on exit) and loaded
-// back (F9, --state FILE, and at start). F9 never fails hard: a missing, truncated or corrupted file gives
-// the defaults and a one-line reason naming the file. A file named with --state that exists and is not a
+// back (F9, --state FILE, and at start). F9 never fails hard: a missing, truncated or corrupted file loads
+// nothing, the window keeps its session, and a one-line reason names the file. A file named with --state that exists and is not a
 // session stops the window before it opens, the file untouched.
 #pragma once
 
@@ -84,7 +84,7 @@ struct SessionRead {
 };
 SessionRead readSession(const std::string& path);
 // As readSession, for F9: a missing or unreadable file, or bad contents, give the defaults and a reason
-// ending "; using defaults". A regular file with bad contents is moved aside first, to the first free
+// saying "nothing loaded" (the window keeps its current session). A regular file with bad contents is moved aside first, to the first free
 // name of P.broken, P.broken.2, ... (the window saves over P later, and a hand edit must survive). An
 // empty reason means the state was loaded.
 SessionState loadSession(const std::string& path, std::string& problem);

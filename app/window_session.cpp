@@ -49,7 +49,7 @@ void GuiApp::loadSessionNow() {
     std::string problem;
     SessionState loaded = loadSession(mOptions.statePath, problem);
     if (!problem.empty()) {
-        mNotice = problem;  // the current session stays as it is
+        mNotice = problem + "; the current session stays";
         return;
     }
     if (!loaded.lesson.empty()) {
@@ -61,12 +61,21 @@ void GuiApp::loadSessionNow() {
         return;
     }
     if (!loaded.scene.empty() && loaded.scene != mState.scene) {
-        mNotice = "the saved session is for scene '" + loaded.scene + "': restart with --state to switch scenes";
-        return;
+        // The session's own scene, as opening a file would switch to it; one that no longer loads leaves
+        // the window as it was.
+        try {
+            loadLessonScene(loaded.scene);
+        } catch (const std::exception& e) {
+            mNotice = "the saved session's scene '" + loaded.scene + "' does not load (" + firstLine(e.what()) +
+                      "); the current session stays";
+            return;
+        }
     }
     mLesson.reset();  // a session without a lesson closes the one open
     mSession = std::move(loaded);
+    mState.size = {mSession.width, mSession.height};
     restoreSessionOverStep();
+    replan();
     mNotice = "session loaded from " + mOptions.statePath;
 }
 

@@ -148,6 +148,42 @@ TEST_F(GuiCli, ASavedSessionIsRestoredAndAFileThatIsNotOneIsRefusedUntouched) {
     EXPECT_EQ(cj.at("technique"), "raymarch");  // the window's default
 }
 
+// F9 loads a session saved on another scene: the window switches to that scene, size, technique and
+// camera; a session whose scene no longer loads leaves the window as it was, saying why.
+TEST_F(GuiCli, F9SwitchesToTheSavedSessionsScene) {
+    const fs::path state = path("other.json");
+    const RunResult saved = run("gui --scene terrain --technique minmax --size 48x36 --state " + state.string() +
+                                " --script " + writeText("save.txt", "frames 2\nkey F5\nframes 1\n").string());
+    ASSERT_EQ(saved.exitCode, 0) << saved.err;
+    const nlohmann::json session = nlohmann::json::parse(readFile(state));
+    ASSERT_EQ(session.at("scene"), "terrain");
+
+    const fs::path load = writeText("load.txt", "frames 2\nkey F9\nframes 3\nsidecar " + path("loaded.json").string() + "\n");
+    const RunResult r = run("gui --scene grate --technique raymarch --size 32x24 --state " + state.string() +
+                            " --script " + load.string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const nlohmann::json j = nlohmann::json::parse(readFile(path("loaded.json")));
+    EXPECT_EQ(j.at("scene"), "terrain");
+    EXPECT_EQ(j.at("technique"), "minmax");
+    EXPECT_EQ(j.at("size"), nlohmann::json::array({48, 36}));
+    EXPECT_EQ(j.at("camera").at("position"), session.at("camera").at("position"));
+    EXPECT_NE(j.at("notice").get<std::string>().find("session loaded"), std::string::npos) << j.at("notice");
+
+    nlohmann::json gone = session;
+    gone["scene"] = path("gone.gltf").string();
+    const fs::path goneState = writeText("gone.json", gone.dump(2));
+    const RunResult g = run("gui --scene grate --technique raymarch --size 32x24 --state " + goneState.string() +
+                            " --script " + writeText("load2.txt", "frames 2\nkey F9\nframes 2\nsidecar " +
+                                                                      path("kept.json").string() + "\n").string());
+    ASSERT_EQ(g.exitCode, 0) << g.err;
+    const nlohmann::json k = nlohmann::json::parse(readFile(path("kept.json")));
+    EXPECT_EQ(k.at("scene"), "grate");
+    EXPECT_EQ(k.at("technique"), "raymarch");
+    EXPECT_EQ(k.at("size"), nlohmann::json::array({32, 24}));
+    EXPECT_NE(k.at("notice").get<std::string>().find("gone.gltf"), std::string::npos) << k.at("notice");
+    EXPECT_NE(k.at("notice").get<std::string>().find("the current session stays"), std::string::npos) << k.at("notice");
+}
+
 TEST_F(GuiCli, AScriptClicksWidgetsAndSidebarItemsByName) {
     const fs::path script = writeText("actions.txt", R"S(# switch technique, raise sigma_s on its log slider, show the shadow map
 click technique:slices

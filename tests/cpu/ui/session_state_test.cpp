@@ -170,7 +170,7 @@ TEST(SessionState, BrokenFilesGiveTheDefaultsAndAReasonNamingTheFile) {
         std::string problem;
         const SessionState s = loadSession(file.string(), problem);
         EXPECT_NE(problem.find(file.string()), std::string::npos) << what << ": " << problem;
-        EXPECT_NE(problem.find("using defaults"), std::string::npos) << what;
+        EXPECT_NE(problem.find("nothing loaded"), std::string::npos) << what;
         EXPECT_EQ(problem.find('\n'), std::string::npos) << what;
         EXPECT_EQ(s.scene, SessionState{}.scene) << what;
         EXPECT_FALSE(s.camera.has_value()) << what;
