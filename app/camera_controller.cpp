@@ -70,7 +70,7 @@ void CameraController::place(const viz::scene::Camera& camera, glm::dvec3 target
     mCamera.forward = glm::normalize(mCamera.forward);
     mCamera.up = glm::normalize(mCamera.up);
     // An orbit target on the eye would make orbiting undefined: keep it in front at the usual distance.
-    mTarget = glm::length(target - camera.position) > 1e-9 ? target : camera.position + mCamera.forward * mSpeed;
+    mTarget = glm::length(target - camera.position) > 1e-9 * mSpeed ? target : camera.position + mCamera.forward * mSpeed;
 }
 
 void CameraController::setOrientation(glm::dvec3 forward, glm::dvec3 rightHint) {
@@ -92,7 +92,8 @@ void CameraController::orbit(double yaw, double pitch) {
 void CameraController::zoom(double steps) {
     const double distance = targetDistance() * std::pow(0.85, steps);
     // Never pass through the target or sit on it (the near plane would clip everything).
-    const double clamped = std::max(distance, std::max(1e-4, mCamera.znear * 2.0));
+    // Scale-free: the floor is the near plane's, whatever the scene's size.
+    const double clamped = std::max(distance, mCamera.znear * 2.0);
     mCamera.position = mTarget - mCamera.forward * clamped;
 }
 

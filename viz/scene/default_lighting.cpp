@@ -8,7 +8,8 @@ namespace viz::scene {
 Light defaultSpotLight(const Scene& scene) {
     const Bounds b = sceneBounds(scene);
     const glm::dvec3 centre = b.centre();
-    const double radius = std::max(0.5 * b.diagonal(), 1e-6);
+    const double extent = 0.5 * b.diagonal();  // scale-free; a point-like scene gets a unit radius
+    const double radius = extent > 0.0 && std::isfinite(extent) ? extent : 1.0;
     // The camera's right, flattened onto the ground plane (glTF is +Y up).
     glm::dvec3 right = glm::cross(scene.camera.forward, glm::dvec3(0, 1, 0));
     right.y = 0.0;

@@ -38,7 +38,10 @@ std::vector<std::uint8_t> toRgba8(const tinygltf::Image& image) {
 Camera frameScene(const Scene& scene) {
     const Bounds b = sceneBounds(scene);
     const glm::dvec3 centre = b.centre();
-    const double radius = std::max(0.5 * b.diagonal(), 1e-3);
+    // Scale-free: a model a tenth of a millimetre across is framed as one of ten metres is. Only a scene
+    // with no extent (every vertex in one point) gets a unit radius.
+    const double extent = 0.5 * b.diagonal();
+    const double radius = extent > 0.0 && std::isfinite(extent) ? extent : 1.0;
     Camera cam;
     cam.name = "framed";
     cam.yfov = 0.8;
@@ -48,7 +51,7 @@ Camera frameScene(const Scene& scene) {
     cam.position = centre + distance * fromCentre;
     cam.forward = -fromCentre;
     cam.up = glm::normalize(glm::dvec3(0, 1, 0) - glm::dot(glm::dvec3(0, 1, 0), cam.forward) * cam.forward);
-    cam.znear = std::max(1e-3 * radius, 0.01 * radius);
+    cam.znear = 0.01 * radius;
     cam.zfar = distance + 2.0 * radius;
     return cam;
 }

@@ -14,7 +14,9 @@ double firstHit(const Scene& scene, glm::dvec3 origin, glm::dvec3 dir) {
             const glm::dvec3 e2 = glm::dvec3(mesh.positions[mesh.indices[i + 2]]) - a;
             const glm::dvec3 p = glm::cross(dir, e2);
             const double det = glm::dot(e1, p);
-            if (std::abs(det) < 1e-12) continue;
+            // Scale-free tests: a ray parallel to the triangle (or a sliver) by its own size, a hit behind
+            // or on the origin by the distance to the triangle.
+            if (!(std::abs(det) > 1e-12 * glm::length(e1) * glm::length(e2))) continue;
             const glm::dvec3 s = origin - a;
             const double u = glm::dot(s, p) / det;
             if (u < 0.0 || u > 1.0) continue;
@@ -22,7 +24,7 @@ double firstHit(const Scene& scene, glm::dvec3 origin, glm::dvec3 dir) {
             const double v = glm::dot(dir, q) / det;
             if (v < 0.0 || u + v > 1.0) continue;
             const double t = glm::dot(e2, q) / det;
-            if (t > 1e-6 && (best < 0.0 || t < best)) best = t;
+            if (t > 1e-9 * glm::length(s) && (best < 0.0 || t < best)) best = t;
         }
     }
     return best;
@@ -40,7 +42,8 @@ double orbitDistance(const Scene& scene) {
         }
     if (lo.x > hi.x) return 5.0;
     const glm::dvec3 centre = 0.5 * (lo + hi);
-    const double radius = std::max(0.5 * glm::length(hi - lo), 1e-3);
+    const double extent = 0.5 * glm::length(hi - lo);  // scale-free; a point-like scene gets a unit radius
+    const double radius = extent > 0.0 ? extent : 1.0;
     const double along = glm::dot(centre - scene.camera.position, forward);
     return along > 0.1 * radius ? along : radius;
 }
