@@ -90,7 +90,7 @@ void classes(ColourBar& bar, const std::vector<float>& values, const std::vector
 
 std::string shortNumber(double v, int digits) {
     char buf[48];
-    std::snprintf(buf, sizeof buf, "%.*g", digits, v);
+    std::snprintf(buf, sizeof buf, "%.*g", digits, v + 0.0);  // + 0.0: -0 reads "0", not "-0"
     return buf;
 }
 

@@ -38,7 +38,7 @@ std::pair<std::string, std::string> viewTitle(const ViewState& v, const ViewTitl
     if (v.pane.layers > 1) title += "   layer " + std::to_string(v.pane.layer + 1) + "/" + std::to_string(v.pane.layers);
     std::string note = v.pane.note;
     if (v.pane.id == "final" && v.display.difference == DifferenceMode::Off)
-        note = "surface radiance * exp(-sigma_t d) + L_air   (exposure " + viz::format("%+.1f EV)", f.exposure);
+        note = "surface radiance * exp(-sigma_t d) + L_air   (exposure " + viz::format("%+.1f EV)", std::round(f.exposure * 10.0) / 10.0 + 0.0);  // never "-0.0"
     const DisplayMapping m = resolveMapping(v.pane, v.display, f.exposure, v.measured);
     const bool picture = v.pane.picture && m.mode == DisplayMode::RangeColour;  // no range to state
     if (m.mode != DisplayMode::HdrColour && !picture) {

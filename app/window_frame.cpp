@@ -37,7 +37,7 @@ void GuiApp::draw() {
     // Help lines at the bottom, from the key table.
     const bool flying = mode == CameraController::Mode::Fly;
     std::vector<std::string> frameHelp = {
-        flying ? std::string("camera: FLY") : "camera: ORBIT (target " + format("%.2f", mController.targetDistance()) + ")"};
+        flying ? std::string("camera: FLY") : "camera: ORBIT (target " + format("%.3g", mController.targetDistance()) + ")"};
     if (mAnimation.path)
         frameHelp.push_back("path " + mAnimation.path->text + " frame " + std::to_string(mAnimation.pathFrame + 1) + "/" +
                             std::to_string(mAnimation.pathFrames) + (mAnimation.playing ? " (P pauses)" : " (P plays)"));

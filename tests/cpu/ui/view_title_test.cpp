@@ -13,6 +13,7 @@
 #include "cpu/ui/synthetic_panel.h"
 #include "temporal_monitor.h"
 #include "text_fit.h"
+#include "colour_bar.h"
 #include "view_title.h"
 
 namespace airlight {
@@ -58,6 +59,17 @@ TEST_F(ViewTitleTest, AnIntermediateNamesItsPlaceItsIdItsStageAndItsLayer) {
     // An id no stage declares (a shared pass's) has no stage; an empty label falls back to the content.
     ViewState shared = view("minmax.shadow_map", "", 2);
     EXPECT_EQ(viewTitle(shared, facts).first, "minmax.shadow_map   [3/19]  minmax.shadow_map");
+}
+
+// An exposure that rounds to nothing reads "+0.0 EV", never "-0.0 EV" (auto exposure of a scene whose
+// white is exactly 1 gave -0).
+TEST_F(ViewTitleTest, AnExposureOfNothingHasNoSign) {
+    for (const float e : {-0.0f, -0.04f, 0.0f, 0.04f}) {
+        facts.exposure = e;
+        EXPECT_NE(viewTitle(view("final", "Final image", 0), facts).second.find("(exposure +0.0 EV)"), std::string::npos) << e;
+    }
+    EXPECT_EQ(shortNumber(-0.0), "0");
+    EXPECT_EQ(shortNumber(-0.25), "-0.25");
 }
 
 TEST_F(ViewTitleTest, TheFinalImageStatesTheExposureAndAGreyViewItsRange) {
