@@ -47,6 +47,10 @@ std::vector<PixelReading> readingsAtPixel(const viz::FrameOutput& out, glm::ivec
         } else {
             continue;
         }
+        // Only the channels that mean something: a colour's three (an RGBA texture's alpha is padding), or
+        // as many as the intermediate declares.
+        if (!in.channels.empty()) r.channels = std::min(r.channels, int(in.channels.size()));
+        else if (in.kind == viz::ViewKind::Colour) r.channels = std::min(r.channels, 3);
         readings.push_back(std::move(r));
     }
     return readings;

@@ -94,6 +94,9 @@ TEST_F(GuiInspector, TheRayInspectorShowsTheTechniquesOwnViewOfThePixel) {
     for (int c = 0; c < 3; ++c)
         EXPECT_EQ(readings.at("vsv.airlight")[std::size_t(c)].get<double>(),
                   in.at("technique_value")[std::size_t(c)].get<double>());
+    // A colour reads as its three channels, never an RGBA texture's padding alpha.
+    EXPECT_EQ(readings.at("vsv.airlight").size(), 3u) << readings.dump();
+    EXPECT_EQ(readings.at("vsv.surface").size(), 3u) << readings.dump();
     // Inside the grate's plate, not at a silhouette: the rasterised and traced first hits agree.
     ASSERT_TRUE(in.contains("first_hit")) << in.dump();
     EXPECT_TRUE(in.at("first_hit").at("agree").get<bool>()) << in.at("first_hit").dump();
