@@ -18,6 +18,7 @@
 #include <fstream>
 #include <functional>
 #include <map>
+#include <initializer_list>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -175,7 +176,10 @@ private:
 
     // Files go to --export-dir (default airlight-exports/ in the working folder), named after the scene,
     // technique and view, so that successive exports of different views do not overwrite each other.
-    std::string exportStem(const std::string& what);
+    // DIR/scene-technique-WHAT, numbered (-2, -3, ...) past the names whose files exist; InputError when
+    // kMaxExportsOfOneName are taken.
+    static constexpr int kMaxExportsOfOneName = 9999;
+    std::string exportStem(const std::string& what, std::initializer_list<const char*> extensions);
 
     // E: the intermediate view as EXR (its float values) and PNG (as shown: exposure or range mapping).
     void exportView();

@@ -42,7 +42,7 @@ ComparisonGrid::RunTechnique GuiApp::comparisonRunner() {
 
 void GuiApp::runComparisonTechniques() { mComparison.runTechniques(comparisonRunner()); }
 
-std::string GuiApp::exportStem(const std::string& what) {
+std::string GuiApp::exportStem(const std::string& what, std::initializer_list<const char*> extensions) {
     // A file's scene is named by the file (the glTF's own scene name may be another scene's).
     const std::string scene = isSceneFile(mState.scene) ? std::filesystem::path(mState.scene).stem().string() : mScene.name;
     std::string name = scene + "-" + technique().id() + "-" + what;
@@ -50,7 +50,20 @@ std::string GuiApp::exportStem(const std::string& what) {
         if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_' && c != '.') c = '_';
     std::error_code ec;
     std::filesystem::create_directories(mOptions.exportDir, ec);
-    return (std::filesystem::path(mOptions.exportDir) / name).string();
+    // A name none of whose files exist yet (name, name-2, name-3, ...): exporting again after a change
+    // never writes over an earlier export.
+    const std::filesystem::path base = std::filesystem::path(mOptions.exportDir) / name;
+    const auto taken = [&](const std::string& stem) {
+        for (const char* ext : extensions)
+            if (std::filesystem::exists(std::filesystem::symlink_status(stem + ext, ec))) return true;
+        return false;
+    };
+    std::string stem = base.string();
+    for (int n = 2; taken(stem) && n <= kMaxExportsOfOneName; ++n) stem = base.string() + "-" + std::to_string(n);
+    if (taken(stem))
+        throw viz::InputError("not exported: '" + base.string() + "' to '-" + std::to_string(kMaxExportsOfOneName) +
+                              "' all exist in " + mOptions.exportDir);
+    return stem;
 }
 
 bool GuiApp::focusedViewImage(viz::Image& image, float& exposure) {
@@ -79,8 +92,8 @@ void GuiApp::exportView() {
         mNotice = "nothing to export: the view holds no image";
         return;
     }
-    const std::string stem = exportStem(pane.id.empty() ? "view" : pane.id);
     try {
+        const std::string stem = exportStem(pane.id.empty() ? "view" : pane.id, {".exr", ".png"});
         viz::writeImage(focusedView().values, stem + ".exr");
         viz::writeImage(shown, stem + ".png", exposure);
         mNotice = "exported " + stem + ".exr and .png";
@@ -95,7 +108,12 @@ void GuiApp::toggleRecording() {
         return;
     }
     const PaneImage& pane = focusedView().pane;
-    mAnimation.recorder.start(exportStem(pane.id.empty() ? "view" : pane.id) + ".gif");
+    try {
+        mAnimation.recorder.start(exportStem(pane.id.empty() ? "view" : pane.id, {".gif"}) + ".gif");
+    } catch (const viz::InputError& e) {
+        mNotice = e.what();
+        return;
+    }
     mAnimation.recordStart = mAnimation.clock;
     mNotice = "recording the focused view: E or P stops and writes the GIF";
 }
@@ -109,8 +127,8 @@ void GuiApp::stopRecording() {
 }
 
 void GuiApp::exportWindow() {
-    const std::string path = exportStem("window") + ".png";
     try {
+        const std::string path = exportStem("window", {".png", ".json"}) + ".png";
         writeScreenshot(path);
         mNotice = "wrote " + path;
     } catch (const viz::InputError& e) {

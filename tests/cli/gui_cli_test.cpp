@@ -478,8 +478,11 @@ TEST_F(GuiCli, LeavingAStageRestoresTheCompleteFrame) {
     expectSameImage((path("exports") / "grate-vsv-airlight.exr").string(), path("cli.exr").string());
 }
 
+// E and F12 write what render writes; exporting again after a change never writes over an earlier
+// export: the next gets the first free number (-2, -3, ...).
 TEST_F(GuiCli, ExportingAViewWritesWhatRenderWrites) {
-    const fs::path script = writeText("export.txt", "key E\nkey F12\nframes 1\n");
+    const fs::path script = writeText("export.txt", "key E\nkey F12\nframes 1\nkey Up\nframes 1\nkey E\nkey F12\nframes 1\n"
+                                                    "key E\nframes 1\n");
     const RunResult r = run("gui --scene grate --technique raymarch --size 40x30 --set samples=64 --export-dir " +
                             path("exports").string() + " --script " + script.string());
     ASSERT_EQ(r.exitCode, 0) << r.err;
@@ -487,6 +490,12 @@ TEST_F(GuiCli, ExportingAViewWritesWhatRenderWrites) {
     EXPECT_TRUE(fs::exists(path("exports") / "grate-raymarch-window.png"));
     ASSERT_EQ(run("render --scene grate --technique raymarch --size 40x30 --set samples=64 --layer airlight --out " +
                   path("cli.exr").string()).exitCode, 0);
+    expectSameImage((path("exports") / "grate-raymarch-airlight.exr").string(), path("cli.exr").string());
+    for (const char* later : {"grate-raymarch-airlight-2.exr", "grate-raymarch-airlight-2.png", "grate-raymarch-window-2.png",
+                              "grate-raymarch-window-2.json", "grate-raymarch-airlight-3.exr"})
+        EXPECT_TRUE(fs::exists(path("exports") / later)) << later;
+    EXPECT_FALSE(fs::exists(path("exports") / "grate-raymarch-window-3.png"));
+    // The first export is still the first frame's, bit for bit.
     expectSameImage((path("exports") / "grate-raymarch-airlight.exr").string(), path("cli.exr").string());
 }
 
