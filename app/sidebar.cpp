@@ -50,26 +50,68 @@ SidebarLayout layoutSidebar(const std::vector<std::string>& techniques, int curr
     y += m.line;
     out.headings.push_back({"Views ([ ])", {m.pad, y}});
     y += m.line + 2.0f * m.scale;
+    // The views' rows: each stage's sub-heading once (the stages publish in order), then its entries.
+    struct Row {
+        bool heading = false;
+        std::string text, name;
+        int first = 0, covers = 1;  // the views an entry stands for
+    };
+    std::vector<Row> rows;
+    int shownRow = -1;
     std::string lastStage;
     for (const ViewGroup& g : groupViews(views, viewStages)) {
-        // Each stage's views under its sub-heading, once (the stages publish in order).
         if (!g.stage.empty() && g.stage != lastStage) {
-            // Not alone at the bottom: the heading and its first view, or neither.
-            if (y + 2.0f * m.line + 2.0f * m.scale >= out.panel.max.y) return out;
-            out.headings.push_back({g.stage, {m.pad, y}, true});
-            y += m.line + 2.0f * m.scale;
+            rows.push_back({true, g.stage, "", g.first, 0});
             lastStage = g.stage;
         }
         const bool holdsShown = shownView >= g.first && shownView < g.first + g.count;
         const bool collapsed = g.count >= kViewGroupMin && !holdsShown;
         for (int i = g.first; i < g.first + (collapsed ? 1 : g.count); ++i) {
-            if (y + m.line >= out.panel.max.y) return out;
             const std::string& name = views[std::size_t(i)];
-            const std::string text = collapsed ? g.stem + " (" + std::to_string(g.count) + ")" : name;
-            out.entries.push_back({SidebarEntry::List::Views, i, text, "view:" + name, i == shownView, item(y)});
-            y += m.line + 4.0f * m.scale;
+            if (i == shownView) shownRow = int(rows.size());
+            rows.push_back({false, collapsed ? g.stem + " (" + std::to_string(g.count) + ")" : name, name, i,
+                            collapsed ? g.count : 1});
         }
     }
+    const int n = int(rows.size());
+    const float headingStep = m.line + 2.0f * m.scale, entryStep = m.line + 4.0f * m.scale;
+    const float noteStep = m.line + 2.0f * m.scale;  // a "views above" / "more views" line
+    const auto step = [&](int r) { return rows[std::size_t(r)].heading ? headingStep : entryStep; };
+    // The rows from `b` that fit, leaving room for the lines saying what is hidden above and below; a
+    // sub-heading never ends the list alone.
+    const auto end = [&](int b) {
+        float at = y + (b > 0 ? noteStep : 0.0f);
+        int e = b;
+        while (e < n && at + m.line + (e + 1 < n ? noteStep : 0.0f) < out.panel.max.y) at += step(e++);
+        while (e > b && rows[std::size_t(e - 1)].heading) --e;
+        return e;
+    };
+    // From the top, or scrolled down as little as shows the view shown.
+    int b = 0;
+    while (shownRow >= end(b) && b < shownRow) ++b;
+    const int e = end(b);
+    const auto viewsIn = [&](int from, int to) {
+        int count = 0;
+        for (int r = from; r < to; ++r) count += rows[std::size_t(r)].heading ? 0 : rows[std::size_t(r)].covers;
+        return count;
+    };
+    const auto plural = [](int k, const char* what) { return std::to_string(k) + what + (k == 1 ? " view" : " views"); };
+    if (b > 0 && y + m.line < out.panel.max.y) {
+        out.headings.push_back({"(" + plural(viewsIn(0, b), "") + " above)", {m.pad, y}, false, true});
+        y += noteStep;
+    }
+    for (int r = b; r < e; ++r) {
+        const Row& row = rows[std::size_t(r)];
+        if (row.heading) {
+            out.headings.push_back({row.text, {m.pad, y}, true});
+        } else {
+            out.entries.push_back({SidebarEntry::List::Views, row.first, row.text, "view:" + row.name,
+                                   shownView >= row.first && shownView < row.first + row.covers, item(y)});
+        }
+        y += step(r);
+    }
+    if (e < n && viewsIn(e, n) > 0 && y + m.line < out.panel.max.y)
+        out.headings.push_back({"(" + plural(viewsIn(e, n), " more") + ": [ ])", {m.pad, y}, false, true});
     return out;
 }
 

@@ -25,6 +25,7 @@ struct SidebarHeading {
     std::string text;
     glm::vec2 at{0.0f};
     bool stage = false;  // a stage's sub-heading in the views list ("4 Ray march"), drawn dimmer
+    bool hidden = false;  // says how many views the list leaves out above or below ("(5 more views: [ ])")
 };
 
 struct SidebarLayout {
@@ -41,7 +42,8 @@ struct SidebarMetrics {
 };
 
 // Techniques first, every one of them, numbered 1-9 for the digit keys; then as many views as fit above
-// the panel's bottom (none before the first run: `views` empty). Wide enough for every technique's name.
+// the panel's bottom (none before the first run: `views` empty), scrolled as little as shows the view
+// shown, with a line above and below saying how many views are left out. Wide enough for every technique's name.
 // A run of kViewGroupMin or more views named alike ("VPL shadow cube", "VPL shadow cube 1", ...) is one
 // entry, "VPL shadow cube (16)", that shows its first view, unless the view shown is one of them:
 // then each is listed. [ ] step through every view either way.

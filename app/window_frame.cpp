@@ -66,7 +66,7 @@ void GuiApp::draw() {
     const float sidebarWidth = side.panel.max.x;
     mBackground->rect(side.panel, kPanel);
     for (const SidebarHeading& h : side.headings)
-        dl.textClipped(h.at, h.text, h.stage ? kDim : kAccent, sidebarWidth - 0.5f * pad);
+        dl.textClipped(h.at, h.text, h.stage || h.hidden ? kDim : kAccent, sidebarWidth - 0.5f * pad);
     for (const SidebarEntry& e : side.entries) {
         const int i = e.index;
         // Clicking a view's entry shows it in the focused view.

@@ -49,8 +49,57 @@ TEST(Sidebar, TechniquesAreNumberedForTheDigitKeysAndViewsStopWhereThePanelEnds)
     EXPECT_EQ(listedTechniques, 11) << "every technique is listed";
     EXPECT_GT(listedViews, 5);
     EXPECT_LT(listedViews, 40) << "40 views do not fit in 540 px";
-    ASSERT_EQ(side.headings.size(), 2u);
+    ASSERT_EQ(side.headings.size(), 3u);
     EXPECT_LT(side.headings[0].at.y, side.entries.front().rect.min.y);
+    // The last line says how many views the list leaves out.
+    EXPECT_TRUE(side.headings[2].hidden);
+    EXPECT_EQ(side.headings[2].text, "(" + std::to_string(40 - listedViews) + " more views: [ ])");
+    EXPECT_GT(side.headings[2].at.y, side.entries.back().rect.min.y);
+    EXPECT_LE(side.headings[2].at.y + 16.0f, side.panel.max.y);
+}
+
+std::vector<std::string> viewTexts(const SidebarLayout& side);
+
+// The number in a "(N views above)" or "(N more views: [ ])" line, or 0 when there is none.
+int hiddenCount(const SidebarLayout& side, const std::string& which) {
+    for (const SidebarHeading& h : side.headings)
+        if (h.hidden && h.text.find(which) != std::string::npos) return std::stoi(h.text.substr(1));
+    return 0;
+}
+
+// Whichever view is shown, the list scrolls as little as shows it: it is listed and selected, the views
+// listed are consecutive, and the lines above and below count exactly the views left out; checked for
+// every view of a long list in panels of many heights.
+TEST(Sidebar, TheViewShownIsAlwaysListedAndTheRestAreCounted) {
+    std::vector<std::string> views = {"Final image", "Airlight L_air"}, stages = {"", ""};
+    for (int k = 0; k < 5; ++k)
+        for (int i = 0; i < 7; ++i) {
+            views.push_back("stage " + std::to_string(k) + " view " + std::string(1, char('a' + i)));
+            stages.push_back(std::to_string(k + 1) + " Stage");
+        }
+    const int total = int(views.size());
+    for (float bottom : {300.0f, 420.0f, 640.0f}) {
+        for (int shown = 0; shown < total; ++shown) {
+            const SidebarLayout side = layoutSidebar({"t"}, 0, views, stages, shown, metrics(60.0f, bottom));
+            std::vector<int> listed;
+            for (const SidebarEntry& e : side.entries) {
+                if (e.list != SidebarEntry::List::Views) continue;
+                listed.push_back(e.index);
+                EXPECT_EQ(e.selected, e.index == shown);
+                EXPECT_LE(e.rect.min.y + 16.0f, side.panel.max.y);
+            }
+            ASSERT_FALSE(listed.empty()) << bottom << " " << shown;
+            EXPECT_NE(std::find(listed.begin(), listed.end(), shown), listed.end()) << bottom << ": view " << shown << " not listed";
+            for (std::size_t i = 1; i < listed.size(); ++i) EXPECT_EQ(listed[i], listed[i - 1] + 1);
+            EXPECT_EQ(hiddenCount(side, "above"), listed.front()) << bottom << " " << shown;
+            EXPECT_EQ(hiddenCount(side, "more"), total - 1 - listed.back()) << bottom << " " << shown;
+            for (const SidebarHeading& h : side.headings) EXPECT_LE(h.at.y + 16.0f, side.panel.max.y) << h.text;
+        }
+    }
+    // A list that fits has no such lines and starts at the top.
+    const SidebarLayout all = layoutSidebar({"t"}, 0, views, stages, total - 1, metrics(60.0f, 4000.0f));
+    EXPECT_EQ(hiddenCount(all, "above") + hiddenCount(all, "more"), 0);
+    EXPECT_EQ(int(viewTexts(all).size()), total);
 }
 
 TEST(Sidebar, ThePanelIsWideEnoughForTheLongestTechniqueAndNoViewsBeforeARun) {
