@@ -55,12 +55,16 @@ SidebarLayout layoutSidebar(const std::vector<std::string>& techniques, int curr
         bool heading = false;
         std::string text, name;
         int first = 0, covers = 1;  // the views an entry stands for
+        int under = -1;             // an entry's stage sub-heading (a row index), if any
     };
     std::vector<Row> rows;
     int shownRow = -1;
     std::string lastStage;
+    int stageRow = -1;
     for (const ViewGroup& g : groupViews(views, viewStages)) {
+        if (g.stage.empty()) stageRow = -1;
         if (!g.stage.empty() && g.stage != lastStage) {
+            stageRow = int(rows.size());
             rows.push_back({true, g.stage, "", g.first, 0});
             lastStage = g.stage;
         }
@@ -70,17 +74,22 @@ SidebarLayout layoutSidebar(const std::vector<std::string>& techniques, int curr
             const std::string& name = views[std::size_t(i)];
             if (i == shownView) shownRow = int(rows.size());
             rows.push_back({false, collapsed ? g.stem + " (" + std::to_string(g.count) + ")" : name, name, i,
-                            collapsed ? g.count : 1});
+                            collapsed ? g.count : 1, stageRow});
         }
     }
     const int n = int(rows.size());
     const float headingStep = m.line + 2.0f * m.scale, entryStep = m.line + 4.0f * m.scale;
     const float noteStep = m.line + 2.0f * m.scale;  // a "views above" / "more views" line
     const auto step = [&](int r) { return rows[std::size_t(r)].heading ? headingStep : entryStep; };
+    // A list scrolled into a stage starts with that stage's sub-heading again.
+    const auto sticky = [&](int b) {
+        const int h = b < n && !rows[std::size_t(b)].heading ? rows[std::size_t(b)].under : -1;
+        return h >= 0 && h < b ? h : -1;
+    };
     // The rows from `b` that fit, leaving room for the lines saying what is hidden above and below; a
     // sub-heading never ends the list alone.
     const auto end = [&](int b) {
-        float at = y + (b > 0 ? noteStep : 0.0f);
+        float at = y + (b > 0 ? noteStep : 0.0f) + (sticky(b) >= 0 ? headingStep : 0.0f);
         int e = b;
         while (e < n && at + m.line + (e + 1 < n ? noteStep : 0.0f) < out.panel.max.y) at += step(e++);
         while (e > b && rows[std::size_t(e - 1)].heading) --e;
@@ -99,6 +108,10 @@ SidebarLayout layoutSidebar(const std::vector<std::string>& techniques, int curr
     if (b > 0 && y + m.line < out.panel.max.y) {
         out.headings.push_back({"(" + plural(viewsIn(0, b), "") + " above)", {m.pad, y}, false, true});
         y += noteStep;
+    }
+    if (const int h = sticky(b); h >= 0 && b < e) {
+        out.headings.push_back({rows[std::size_t(h)].text, {m.pad, y}, true});
+        y += headingStep;
     }
     for (int r = b; r < e; ++r) {
         const Row& row = rows[std::size_t(r)];

@@ -94,6 +94,17 @@ TEST(Sidebar, TheViewShownIsAlwaysListedAndTheRestAreCounted) {
             EXPECT_EQ(hiddenCount(side, "above"), listed.front()) << bottom << " " << shown;
             EXPECT_EQ(hiddenCount(side, "more"), total - 1 - listed.back()) << bottom << " " << shown;
             for (const SidebarHeading& h : side.headings) EXPECT_LE(h.at.y + 16.0f, side.panel.max.y) << h.text;
+            // Scrolled or not, every view listed sits under its own stage's sub-heading (the nearest one
+            // above it), and the outputs under none.
+            for (const SidebarEntry& e : side.entries) {
+                if (e.list != SidebarEntry::List::Views) continue;
+                const SidebarHeading* above = nullptr;
+                for (const SidebarHeading& h : side.headings)
+                    if (!h.hidden && h.at.y < e.rect.min.y && (!above || h.at.y > above->at.y)) above = &h;
+                ASSERT_NE(above, nullptr);
+                const std::string& stage = stages[std::size_t(e.index)];
+                EXPECT_EQ(above->text, stage.empty() ? "Views ([ ])" : stage) << bottom << " " << shown << ": " << e.text;
+            }
         }
     }
     // A list that fits has no such lines and starts at the top.
