@@ -31,6 +31,13 @@ static_assert(offsetof(GpuLightCpu, info) == 96);
 static_assert(offsetof(GpuLightCpu, shadow) == 112);
 static_assert(offsetof(GpuLightCpu, shadowMatrix) == 128);
 
+// A spot or point light at the eye itself (a flashlight held at the camera): its eye-relative position is 0
+// in float, as the shaders get it. Every camera ray then starts at the light and is one of its light rays.
+inline bool atEye(glm::vec3 eyeRelativePosition) { return glm::all(glm::equal(eyeRelativePosition, glm::vec3(0.0f))); }
+inline bool atEye(const GpuLightCpu& L) {
+    return L.info.x != hd::kLightDirectional && atEye(glm::vec3(L.position));
+}
+
 // The shaders' reach along a ray (reachAlongRay in common/lights.glsl) is the CPU's (scene/ray_reach.h).
 static_assert(double(hd::kReachMeanFreePaths) == scene::kReachMeanFreePaths);
 

@@ -284,6 +284,20 @@ Real pointPanel(Real a, Real b, Real y0, Real nu, Real g, AngularFactor<Real> lo
 // pointSegmentWithLobe multiplies the integrand by the angular factor A(y) (AngularFactor); A varies on
 // the same scale in y as 1/cosh(y), with poles at the same places, so the same panels resolve it. A lobe
 // without a constant term is cut where it changes sign (below).
+// The light-to-ray distance of the segment [x0, x1] raised to the floor described above (every caller
+// that integrates along a ray past a point light takes it from here: pointSegmentWithLobe and the
+// reference's profile-weighted quadrature).
+template <typename Real>
+Real flooredLightDistance(Real tP, Real h, Real x0, Real x1) {
+    // Positions relative to the foot point P; s1 = +inf for the sky.
+    const Real s0 = x0 - tP, s1 = x1 - tP;
+    const bool footInside = s0 <= Real(0) && s1 >= Real(0);
+    Real scale = footInside ? std::max(std::abs(s0), std::isinf(s1) ? Real(0) : s1)
+                            : std::min(std::abs(s0), std::abs(s1));
+    if (scale == Real(0)) scale = std::abs(tP);
+    return std::max(h, std::max(Precision<Real>::kMinRelativeH * scale, Real(kMinAbsoluteH)));
+}
+
 template <typename Real, int N = Precision<Real>::kNodes>
 Real pointSegmentWithLobe(Real tP, Real h, Real x0, Real x1, Real sigma_s, Real sigma_t, Real g, Real I0,
                           AngularFactor<Real> lobe) {
@@ -292,11 +306,7 @@ Real pointSegmentWithLobe(Real tP, Real h, Real x0, Real x1, Real sigma_s, Real 
     // Positions relative to the foot point P; s1 = +inf for the sky.
     Real s0 = x0 - tP;
     Real s1 = x1 - tP;
-    const bool footInside = s0 <= Real(0) && s1 >= Real(0);
-    Real scale = footInside ? std::max(std::abs(s0), std::isinf(s1) ? Real(0) : s1)
-                            : std::min(std::abs(s0), std::abs(s1));
-    if (scale == Real(0)) scale = std::abs(tP);
-    h = std::max(h, std::max(Precision<Real>::kMinRelativeH * scale, Real(kMinAbsoluteH)));
+    h = flooredLightDistance(tP, h, x0, x1);
 
     // A lobe without a constant term, a sech(y) + b tanh(y) = (a + b sinh(y)) / cosh(y), changes sign at
     // s = h sinh(y) = -h a / b and is negative on one side: the segment ends there, at the zero of the

@@ -44,6 +44,13 @@ bool epipoleNearScreen(const scene::Camera& camera, glm::dvec3 axis, double marg
 // The epipolar axis of a light (toward the light), eye-relative world space.
 glm::dvec3 epipolarAxis(const scene::Light& light, glm::dvec3 eye);
 
+// A spot or point light of the scene at the eye itself (render::atEye). Every camera ray then starts at the light, there is no epipolar axis
+// (the frame's would be NaN), and minmax marches that light's rays instead of rectifying its map.
+inline bool atEye(const scene::Light& light, glm::dvec3 eye) {
+    return light.type != scene::LightType::Directional && light.type != scene::LightType::Area &&
+           render::atEye(glm::vec3(light.position - eye));
+}
+
 struct SetupInput {
     const render::GpuLightCpu* light = nullptr;  // spot, point or directional, with its shadow matrix
     const scene::Camera* camera = nullptr;

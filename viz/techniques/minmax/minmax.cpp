@@ -246,7 +246,7 @@ Plan MinmaxTechnique::plan(const scene::Scene& scene, const Settings& settings) 
     bool near = false;
     std::string nearWhy = "no spot, directional or point light";
     for (const scene::Light& l : scene.lights) {
-        if (!epipolar(l)) continue;
+        if (!epipolar(l) || minmax::atEye(l, scene.camera.position)) continue;
         const glm::dvec3 axis = minmax::epipolarAxis(l, scene.camera.position);
         if (minmax::epipoleNearScreen(scene.camera, axis, 0.25)) {
             near = true;
@@ -286,12 +286,20 @@ Plan MinmaxTechnique::plan(const scene::Scene& scene, const Settings& settings) 
     // Area lights are integrated over their emitter as VPLs (cube maps of their own, a different light
     // position per VPL): marched per pixel.
     const bool area = render::hasLightOfType(scene, scene::LightType::Area);
-    const bool brute = area || (hasPoint && marchPoints);
+    const auto eyeLight = std::find_if(scene.lights.begin(), scene.lights.end(), [&](const scene::Light& l) {
+        return minmax::atEye(l, scene.camera.position);
+    });
+    const bool atEye = eyeLight != scene.lights.end();
+    const bool brute = area || (hasPoint && marchPoints) || atEye;
     std::string bruteWhy = "every light has an epipolar path (spot, directional, point)";
     if (area)
         bruteWhy = "area lights: each VPL (a cube-mapped point-like light of its own) is marched per pixel with " +
                    std::to_string(s.vplSamples) + " samples (vpl_samples), not rectified";
     if (hasPoint && marchPoints) bruteWhy = (area ? bruteWhy + "; " : std::string()) + pointWhy;
+    if (atEye)
+        bruteWhy = (area || (hasPoint && marchPoints) ? bruteWhy + "; " : std::string()) + "light '" + eyeLight->name +
+                   "' sits at the eye: every camera ray starts at it and there is no epipolar axis, so its rays are "
+                   "marched with " + std::to_string(s.marchSamples) + " samples (march_samples)";
     p.features.push_back({"BRUTE_FORCE_LIGHTS", brute, bruteWhy});
     const bool cubes = render::hasLightOfType(scene, scene::LightType::Point) ||
                        render::hasLightOfType(scene, scene::LightType::Area);

@@ -15,9 +15,10 @@ void MinmaxTechnique::prepareLights(const scene::Scene& scene, const FrameInput&
     for (int i = 0; i < int(lights.size()); ++i) {
         const auto& L = lights[std::size_t(i)];
         const bool point = L.info.x == render::hd::kLightPoint && !s.marchPoints;
+        const bool atEye = render::atEye(L);
         const bool epipolar = (L.info.x == render::hd::kLightSpot || L.info.x == render::hd::kLightDirectional ||
                                point) &&
-                              L.info.z >= 0;
+                              L.info.z >= 0 && !atEye;
         if (!epipolar) {
             mBruteLights.push_back(i);
             continue;

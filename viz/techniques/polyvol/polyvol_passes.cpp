@@ -360,6 +360,10 @@ bool PolyvolTechnique::setOrbitClipBox(const scene::Scene& scene) {
 float PolyvolTechnique::nearRadius(const render::GpuLightCpu& L, const scene::Camera& cam, int height) const {
     const int type = L.info.x;
     if (type == render::hd::kLightDirectional || L.info.z < 0) return 0.0f;
+    // A light at the eye: every face of its volume passes through the eye (edge-on: no fragment), and every
+    // eye ray is one of its light rays, lit from the eye to the surface. The ball then holds every ray's
+    // whole length (past zfar): the resolve pass integrates [0, d] and the crossings add nothing.
+    if (render::atEye(L)) return float(2.0 * cam.zfar);
     const float nearest = mView.shadows().nearest(L, L.shadow.y);
     const double footprint = glm::length(glm::dvec3(L.position)) * 2.0 * std::tan(cam.yfov * 0.5) / double(height);
     return float(std::min(0.5 * double(std::max(nearest, 0.0f)), kBallPixels * footprint));

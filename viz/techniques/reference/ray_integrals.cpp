@@ -165,7 +165,8 @@ glm::dvec3 pointEmitterSegment(const PointEmitter& e, const glm::dvec3& o, const
     }
     // Profile-weighted: integrate in theta = atan((t - tP) / h) over [theta(a), theta(b)], where
     // dt / r^2 = dtheta / h and cos(phase angle) = dot(dir light->x, -w) = -sin(theta).
-    const double h = std::max(g.h, 1e-300);
+    // Raised to the floor the closed forms use (a ray from or through the light: a spot at the eye).
+    const double h = airlight::flooredLightDistance(g.tP, g.h, a, b);
     const double th0 = std::atan((a - g.tP) / h), th1 = std::atan((b - g.tP) / h);
     std::vector<double> cuts{th0};
     for (double k : profileKinks(e, g, w, th0, th1)) cuts.push_back(k);

@@ -33,7 +33,9 @@ using reference::VisibilitySearch;
 // 4: the visibility search covers at most 60 mean free paths and, on rays longer than 8 radii of the
 //    scene's bounds, samples inside the bounds (a camera's zfar of 1e6 once left a colonnade's shafts
 //    unsearched: L_air 0.36 at zfar 1e4 and 0.60 at 1e6 where 1e2 and 1e3 give 0.428).
-constexpr int kReferenceVersion = 4;
+// 5: a spot's (and every profile-weighted emitter's) quadrature takes the closed forms' floor on the
+//    light-to-ray distance instead of 1e-300 (a spot at the eye gave Inf on every pixel).
+constexpr int kReferenceVersion = 5;
 
 // ---- ids (stable: lessons and tests use them) ----
 constexpr const char* kStageTrace = "reference.trace";
