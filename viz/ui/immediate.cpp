@@ -436,7 +436,14 @@ bool Context::textInput(std::string_view label, std::string& text) {
             caret += mInput.text.size();
         }
         for (Key k : mInput.keys) {
-            if (k == Key::Backspace && caret > 0) {
+            if (k == Key::Backspace && caret > 0 && mInput.ctrl) {
+                // Ctrl+Backspace: back to the previous '/' or space (one folder of a path, one word).
+                std::size_t start = caret;
+                while (start > 0 && (text[start - 1] == '/' || text[start - 1] == ' ')) --start;
+                while (start > 0 && text[start - 1] != '/' && text[start - 1] != ' ') --start;
+                text.erase(start, caret - start);
+                caret = start;
+            } else if (k == Key::Backspace && caret > 0) {
                 const std::size_t start = previousCodepoint(text, caret);
                 text.erase(start, caret - start);
                 caret = start;
@@ -458,11 +465,15 @@ bool Context::textInput(std::string_view label, std::string& text) {
     drawFrame(field, id, in);
     const float pad = kPadding * mScale;
     const float textY = (r.min.y + r.max.y - mFont->lineHeight()) * 0.5f;
+    // A text longer than the field scrolls so that the caret stays in view (a long path typed at its end).
+    const float caretX = mFont->measure(std::string_view(text).substr(0, caret));
+    const float caretWidth = std::max(1.0f, mScale);
+    const float scroll = std::max(0.0f, caretX + caretWidth - (field.max.x - field.min.x - 2.0f * pad));
     mDraw.pushClip(field);
-    mDraw.text({field.min.x + pad, textY}, text, mStyle.text);
+    mDraw.text({field.min.x + pad - scroll, textY}, text, mStyle.text);
     if (isFocused(id)) {
-        const float x = field.min.x + pad + mFont->measure(std::string_view(text).substr(0, caret));
-        mDraw.rect({{x, textY}, {x + std::max(1.0f, mScale), textY + mFont->lineHeight()}}, mStyle.text);
+        const float x = field.min.x + pad - scroll + caretX;
+        mDraw.rect({{x, textY}, {x + caretWidth, textY + mFont->lineHeight()}}, mStyle.text);
     }
     mDraw.popClip();
     mDraw.textClipped({field.max.x + pad * 2.0f, textY}, visibleText(label), mStyle.text, r.max.x);

@@ -167,6 +167,39 @@ TEST_F(ImmediateTest, TextInputEditsUtf8AndHoldsShortcutsWhileFocused) {
     EXPECT_TRUE(shortcutSeen);
 }
 
+// A path longer than its field scrolls so the caret stays in view, and Ctrl+Backspace takes back one
+// folder of it (or one word) at a time.
+TEST_F(ImmediateTest, ALongTextScrollsToItsCaretAndCtrlBackspaceTakesOneFolder) {
+    std::string path;
+    const auto ui = [&](Context& c) { c.textInput("open glTF", path); };
+    frame({}, ui);
+    const glm::vec2 p = centreOf("open glTF");
+    frame(at(p, true), ui);
+    frame(at(p, false), ui);
+    Input typing;
+    typing.text = "/home/someone/projects/scenes/a long folder name/another folder/cathedral.gltf";
+    frame(typing, ui);
+    ASSERT_EQ(path, typing.text);
+    // The caret: a quad one pixel wide and a line high, drawn inside the field (clipping drops what lies
+    // outside it; without the scroll the caret sat far past the field's right edge).
+    const float line = testing::testFont().lineHeight();
+    int carets = 0;
+    const auto& v = ctx.drawList().vertices();
+    for (std::size_t i = 0; i + 5 < v.size(); i += 6) {
+        const glm::vec2 size = v[i + 2].position - v[i].position;
+        if (std::abs(size.x - 1.0f) < 1e-3f && std::abs(size.y - line) < 1e-3f) ++carets;
+    }
+    EXPECT_EQ(carets, 1) << "the caret is drawn, inside the field";
+    Input ctrlBackspace = keys({Key::Backspace});
+    ctrlBackspace.ctrl = true;
+    frame(ctrlBackspace, ui);
+    EXPECT_EQ(path, "/home/someone/projects/scenes/a long folder name/another folder/");
+    frame(ctrlBackspace, ui);
+    EXPECT_EQ(path, "/home/someone/projects/scenes/a long folder name/another ");
+    frame(keys({Key::Backspace}), ui);
+    EXPECT_EQ(path, "/home/someone/projects/scenes/a long folder name/another");
+}
+
 TEST_F(ImmediateTest, ComboOpensChoosesAndItsListCoversTheWidgetsBelow) {
     int technique = 0, below = 0;
     const std::vector<std::string> items = {"raymarch", "slices", "polyvol"};
