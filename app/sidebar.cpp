@@ -59,14 +59,13 @@ SidebarLayout layoutSidebar(const std::vector<std::string>& techniques, int curr
     };
     std::vector<Row> rows;
     int shownRow = -1;
-    std::string lastStage;
-    int stageRow = -1;
+    int stageRow = -1;  // the current stage's sub-heading
     for (const ViewGroup& g : groupViews(views, viewStages)) {
-        if (g.stage.empty()) stageRow = -1;
-        if (!g.stage.empty() && g.stage != lastStage) {
+        if (g.stage.empty()) {
+            stageRow = -1;
+        } else if (stageRow < 0 || rows[std::size_t(stageRow)].text != g.stage) {
             stageRow = int(rows.size());
             rows.push_back({true, g.stage, "", g.first, 0});
-            lastStage = g.stage;
         }
         const bool holdsShown = shownView >= g.first && shownView < g.first + g.count;
         const bool collapsed = g.count >= kViewGroupMin && !holdsShown;
