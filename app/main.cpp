@@ -14,6 +14,7 @@
 #include "compare_command.h"
 #include "lesson.h"
 #include "bench_command.h"
+#include "probe_command.h"
 #include "report_command.h"
 #include "core/error.h"
 #include "gl/gl_error.h"
@@ -39,6 +40,8 @@ commands:
   report          error against run time of every technique on each scene (CSV, JSON, plots, HTML)
   bench           how each technique's cost per stage grows with image size, shadow-map size, VPL
                   count and scene triangles (CSV, log-log plots with fitted exponents, HTML)
+  probe           what this GL renderer does per second with each kind of work the techniques are
+                  made of: arithmetic in compute and in fragment shaders, blending, triangles
   compare         error figures of one image against another:  airlight compare TEST.exr REFERENCE.exr
   lesson          a guided walkthrough: airlight lesson NAME opens it in the window (as --lesson NAME);
                   airlight lesson NAME --export DIR [--size WxH] renders every step and writes
@@ -66,6 +69,7 @@ int main(int argc, char** argv) {
         if (command == "export-scene") return airlight::runExportScene(args);
         if (command == "gui") return airlight::runGuiCommand(args);
         if (command == "compare") return airlight::runCompare(args);
+        if (command == "probe") return airlight::runProbeCommand(args);
         if (command == "--lesson") {
             airlight::Args all(words);  // --lesson NAME and any window options
             return airlight::runGuiCommand(all);

@@ -6,7 +6,8 @@
 # and unpacked here into / (the machine has the NVIDIA driver's own EGL vendor library). Writes everything
 # into $OUT (default: gpu-out/) as one archive, gpu.tar.gz, and prints a summary last.
 # Usage: scripts/gpu_measure.sh [SECONDS]   (a budget for the whole run, default 540)
-# Environment: SCENES (default all six), TECHNIQUES (default all six GPU techniques), SIZES (the size
+# Environment: STEPS (which steps, comma-separated, default all: plot,probe,bench,variants,ablate,report,quick),
+# SCENES (default all six), TECHNIQUES (default all six GPU techniques), SIZES (the size
 # axis, default 480x270,1920x1080), REPORT_SCENES (default colonnade), REPORT_SIZE (default 1920x1080).
 # Each scene and technique is its own bench run with its own time limit, so that one slow pair leaves
 # the others' figures.
@@ -18,6 +19,8 @@ mkdir -p "$out"
 work=/tmp/airlight-gpu
 rm -rf "$work" && mkdir -p "$work"
 start=$(date +%s)
+steps=",${STEPS:-plot,probe,bench,variants,ablate,report,quick},"
+want() { [[ "$steps" == *",$1,"* ]]; }
 left() { echo $(( budget - ($(date +%s) - start) )); }
 log="$work/log.txt"
 say() { echo "$@" | tee -a "$log"; }
@@ -49,6 +52,7 @@ say() { echo "$(date +%T) $*" | tee -a "$log"; }
 
 # 0. Plots drawn off-screen: one tiny bench in a fresh process with the GL debug output on, and a count
 #    of the pixels of each plot that are not the background.
+if want plot; then
 say "== plot check ($(left) s left)"
 AIRLIGHT_GL_DEBUG=1 timeout 40 "$A" bench --scenes grate --techniques raymarch --axes size --sizes 160x120,320x240 --runs 1 \
     --out "$work/plotcheck" >"$work/plotcheck.txt" 2>"$work/plotcheck.err"
@@ -62,11 +66,23 @@ for p in sorted(pathlib.Path(sys.argv[1]).glob('*.png')):
     print(p.name, im.size, 'pixels not white:', sum(1 for c in px if c != (255, 255, 255)))
 PY
 grep -v '^#' "$work/plotcheck.err" | sort | uniq -c | sort -rn | head -n 12 | tee -a "$log"
+fi
+
+# 0b. The renderer's throughput for each kind of work alone (airlight probe): arithmetic in a compute and in
+#     a fragment shader, full-screen blending into float targets, small triangles. Twice: at the default
+#     1920x1080 and with 4x the arithmetic, so that the ratio is not the fixed cost of a pass.
+if want probe; then
+    say "== probe ($(left) s left)"
+    timeout 60 "$A" probe --out "$work/probe.csv" 2>&1 | tee "$work/probe.txt" | tee -a "$log"
+    timeout 60 "$A" probe --iterations 4096 --layers 512 --out "$work/probe-4x.csv" 2>&1 | tee "$work/probe-4x.txt" | tee -a "$log"
+    pack
+fi
 
 # 1. Per-stage times of every technique on every built-in scene, default settings, at two image sizes.
 sizes="${SIZES:-480x270,1920x1080}"
 scenes="${SCENES:-colonnade grate forest terrain stained-glass tv-room}"
 techniques="${TECHNIQUES:-raymarch slices polyvol minmax vsv ivsv}"
+want bench || scenes=""
 for scene in $scenes; do
     for t in $techniques; do
         [ "$(left)" -gt 200 ] || { say "skip $scene $t: too little time left"; continue; }
@@ -79,8 +95,11 @@ for scene in $scenes; do
 done
 # 1b. The fast paths whose choice waits for a GPU, each pair side by side: minmax's prefix sums (sequential
 # rows against log2 passes, integrand=svd) and ivsv's interleaved gather (deinterleaved or screen order).
-for variant in "minmax stained-glass prefix_sums=sequential" "minmax stained-glass prefix_sums=log2" \
-               "ivsv tv-room deinterleave=on" "ivsv tv-room deinterleave=off"; do
+variants=""
+want variants && variants="minmax:stained-glass:prefix_sums=sequential minmax:stained-glass:prefix_sums=log2
+    ivsv:tv-room:deinterleave=on ivsv:tv-room:deinterleave=off"
+for variant in $variants; do
+    variant="${variant//:/ }"
     set -- $variant
     [ "$(left)" -gt 200 ] || { say "skip $variant: too little time left"; continue; }
     extra="--set integrand=svd"; [ "$1" = ivsv ] && extra="--set gather=interleaved --set vpls=256"
@@ -89,17 +108,36 @@ for variant in "minmax stained-glass prefix_sums=sequential" "minmax stained-gla
     say "variant $1 $2 $3 exit $? ($(left) s left)"
 done
 pack
+# 1c. Where slices' planes and polyvol's volume spend their time on this GPU: each alone with one knob
+#     changed against its default (blending format, the slab's nodes, the plane count; the segment integral,
+#     the mesh), on colonnade at the sizes above.
+ablations=""
+want ablate && ablations="slices:default slices:accum=rgba16f slices:integration=midpoint slices:planes=32
+    polyvol:default polyvol:airlight=lut polyvol:tessellation=static raymarch:default"
+for a in $ablations; do
+    t="${a%%:*}"; knob="${a#*:}"
+    [ "$(left)" -gt 200 ] || { say "skip ablation $a: too little time left"; continue; }
+    extra=""; [ "$knob" != default ] && extra="--set $knob"
+    timeout 50 "$A" bench --scenes colonnade --techniques "$t" --axes size --sizes "$sizes" --runs 3 $extra \
+        --out "$work/ablate-$t-$knob" >"$work/ablate-$t-$knob.txt" 2>"$work/ablate-$t-$knob.err"
+    say "ablation $t $knob exit $? ($(left) s left)"
+done
+pack
 # 2. Error against time at the report's size (the reference on the CPU's threads, cached on disk).
+if want report; then
 say "== report ($(left) s left)"
 timeout $(( $(left) - 70 )) "$A" report --scenes "${REPORT_SCENES:-colonnade}" --size "${REPORT_SIZE:-1920x1080}" --quick --runs 3 \
     --out "$work/report" >"$work/report.txt" 2>"$work/report.err"
 say "exit $?"
 pack
+fi
 # 3. The bench's own quick run (grate and tv-room, small sizes).
+if want quick; then
 say "== bench --quick ($(left) s left)"
 timeout $(( $(left) - 15 )) "$A" bench --quick --out "$work/bench-quick" >"$work/bench-quick.txt" 2>"$work/bench-quick.err"
 say "exit $?"
 pack
+fi
 kill "$sampler" 2>/dev/null
 pack
 say "== summary"
