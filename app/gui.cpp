@@ -14,14 +14,15 @@
 
 namespace airlight {
 
-GuiApp::GuiApp(const GuiOptions& options, viz::scene::Scene scene, viz::Window& window, SessionState session,
-               std::string notice)
+GuiApp::GuiApp(const GuiOptions& options, viz::scene::Scene scene, SceneLighting fileLighting, viz::Window& window,
+               SessionState session, std::string notice)
     : mOptions(options)
     , mScript(options.script, options.scriptPath)
     , mSession(std::move(session))
     , mNotice(std::move(notice))
     , mScene(std::move(scene))
     , mWindow(window)
+    , mFileLighting(std::move(fileLighting))
     , mController(mScene.camera, orbitDistance(mScene))
     , mGizmoArm(kGizmoArm * mController.targetDistance())
     , mIds(viz::techniqueIds()) {
@@ -338,6 +339,7 @@ int runGui(const GuiOptions& options) {
     }
     // Everything that can fail on user input fails before the window opens.
     viz::scene::Scene scene = viz::scene::loadScene(effective.scene, options.load);
+    SceneLighting fileLighting = lightingOf(scene);  // before the session's edits: a reload keeps those
     if (session.medium && effective.scene == session.scene) scene.medium = *session.medium;
     if (effective.scene == session.scene) applyLightPlacements(session.lights, scene);
     // A path that cannot move this scene (a light motion without a movable light) fails here.
@@ -360,7 +362,7 @@ int runGui(const GuiOptions& options) {
     if (debugContext) viz::gl::installDebugOutput();
     int code = 0;
     {
-        GuiApp app(effective, std::move(scene), *window, std::move(session), std::move(notice));
+        GuiApp app(effective, std::move(scene), std::move(fileLighting), *window, std::move(session), std::move(notice));
         code = app.run();
     }
     return code;

@@ -39,6 +39,7 @@
 #include "process_stats.h"
 #include "ray_inspection.h"
 #include "ray_inspector.h"
+#include "reload_merge.h"
 #include "frame_canvas.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
@@ -90,8 +91,9 @@ namespace airlight {
 
 class GuiApp : public LessonHost, private ScriptHost {
 public:
-    GuiApp(const GuiOptions& options, viz::scene::Scene scene, viz::Window& window, SessionState session,
-           std::string notice);
+    // fileLighting: the scene's medium and lights as its file gave them, before a session's edits.
+    GuiApp(const GuiOptions& options, viz::scene::Scene scene, SceneLighting fileLighting, viz::Window& window,
+           SessionState session, std::string notice);
     ~GuiApp();
     int run();
 
@@ -431,6 +433,7 @@ private:
     std::string mNotice;    // last session message, shown in the status line
     viz::scene::Scene mScene;  // the camera follows the controller; stamped on every load (geometryKey)
     viz::Window& mWindow;
+    SceneLighting mFileLighting;  // the medium and lights as the scene file gave them (reload_merge.h)
     CameraController mController;
     double mGizmoArm = 1.0;  // scene units (kGizmoArm of the scene camera's orbit distance)
     std::vector<std::string> mIds;

@@ -1,5 +1,6 @@
 // The scene and parameter panel (parameter_panel.h) in the window: its edits carried out (a scene to
-// load, a file to open, settings to keep, the scene edited), and the scene file's loading and reloading.
+// load, a file to open, settings to keep, the scene edited), and the scene file's loading and reloading
+// (which keeps the user's edits of the medium and the lights: reload_merge.h).
 #include "gui_app.h"
 
 namespace airlight {
@@ -39,8 +40,13 @@ void GuiApp::openSceneFile(const std::string& path) {
 }
 
 void GuiApp::reloadScene() {
+    ReloadMerge merge;
     try {
         viz::scene::Scene scene = viz::scene::loadScene(mState.scene, mOptions.load);
+        // The user's edits of the medium and the lights stay where the file left those values alone.
+        SceneLighting fresh = lightingOf(scene);
+        merge = keepUserEdits(mFileLighting, mScene, scene);
+        mFileLighting = std::move(fresh);
         mScene = std::move(scene);
         viz::scene::stampGeometry(mScene);
     } catch (const std::exception& e) {
@@ -49,7 +55,7 @@ void GuiApp::reloadScene() {
     }
     cpuWorker().setScene(mScene);
     mComparison.close();  // its tiles show the old scene (this runs before the frame is laid out)
-    mNotice = "reloaded " + sceneTitle() + " (changed on disk)";
+    mNotice = "reloaded " + sceneTitle() + " (changed on disk)" + merge.summary;
     if (const std::string notes = sceneNotesLine(mScene); !notes.empty()) mNotice += "; " + notes;
     replan();
     mDirty = true;

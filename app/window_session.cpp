@@ -91,6 +91,7 @@ void GuiApp::restoreSessionOverStep() {
 void GuiApp::loadLessonScene(const std::string& name) {
     viz::scene::Scene scene = viz::scene::loadScene(name, mOptions.load);  // InputError: the window keeps its scene
     mScene = std::move(scene);
+    mFileLighting = lightingOf(mScene);
     mState.scene = name;
     mSceneWatch.watch(name);
     viz::scene::stampGeometry(mScene);

@@ -1,5 +1,6 @@
 // The user's own scene file in the window: File > Open with path completion, a drop on the window, and
-// the automatic reload when the file changes on disk (the camera and the views are kept).
+// the automatic reload when the file changes on disk (the camera, the views and the user's edits of values
+// the file left alone are kept).
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -31,6 +32,22 @@ protected:
         return p;
     }
     nlohmann::json sidecar(const std::string& name) { return nlohmann::json::parse(readFile(path(name))); }
+    // sceneFile with a point light "lamp" added (and the spot's intensity set when not 0).
+    fs::path twoLightFile(const std::string& name, double sigmaS, double spotIntensity = 0.0) {
+        const fs::path p = sceneFile(name, sigmaS);
+        nlohmann::json j = nlohmann::json::parse(readFile(p));
+        auto& lights = j["extensions"]["KHR_lights_punctual"]["lights"];
+        if (spotIntensity != 0.0) lights[0]["intensity"] = spotIntensity;
+        lights.push_back({{"name", "lamp"}, {"type", "point"}, {"intensity", 50.0}, {"color", {1.0, 1.0, 1.0}}});
+        j["nodes"].push_back({{"name", "lamp"}, {"translation", {1.5, 3.0, 1.0}},
+                              {"extensions", {{"KHR_lights_punctual", {{"light", 1}}}}}});
+        j["scenes"][0]["nodes"].push_back(j["nodes"].size() - 1);
+        std::ofstream(p) << j.dump();
+        return p;
+    }
+    // Script lines: pick the lamp in the panel and drag it with the gizmo.
+    static constexpr const char* kMoveTheLamp =
+        "click light\nframes 1\nclick \"light/2: lamp (point)\"\nframes 2\ndrag gizmo:position 0.5 0.5 0.5 0.5 cell:0\nframes 3\n";
 };
 
 // Typing a prefix, Tab to complete it, Enter to open: the file's scene, named by the file.
@@ -90,17 +107,8 @@ TEST_F(GuiSceneFile, AFileChangedOnDiskIsReloadedKeepingTheCamera) {
 // Every light is editable: with a second light picked in the panel, the gizmo moves that light and leaves
 // the first where it was.
 TEST_F(GuiSceneFile, TheGizmoMovesTheLightPickedInThePanel) {
-    sceneFile("two_lights.gltf", 0.12);
-    nlohmann::json j = nlohmann::json::parse(readFile(path("two_lights.gltf")));
-    j["extensions"]["KHR_lights_punctual"]["lights"].push_back(
-        {{"name", "lamp"}, {"type", "point"}, {"intensity", 50.0}, {"color", {1.0, 1.0, 1.0}}});
-    j["nodes"].push_back({{"name", "lamp"}, {"translation", {1.5, 3.0, 1.0}},
-                          {"extensions", {{"KHR_lights_punctual", {{"light", 1}}}}}});
-    j["scenes"][0]["nodes"].push_back(j["nodes"].size() - 1);
-    std::ofstream(path("two_lights.gltf")) << j.dump();
-    const fs::path script = writeText("pick.txt", "frames 2\nscreenshot " + path("before.png").string() +
-                                                      "\nclick light\nframes 1\nclick \"light/2: lamp (point)\"\nframes 2\n"
-                                                      "drag gizmo:position 0.5 0.5 0.5 0.5 cell:0\nframes 3\n");
+    twoLightFile("two_lights.gltf", 0.12);
+    const fs::path script = writeText("pick.txt", "frames 2\nscreenshot " + path("before.png").string() + "\n" + kMoveTheLamp);
     const RunResult r = run("gui --scene " + path("two_lights.gltf").string() + " --technique raymarch --size 64x48 "
                             "--set samples=16 --script " + script.string() + " --screenshot " + path("after.png").string());
     ASSERT_EQ(r.exitCode, 0) << r.err;
@@ -109,6 +117,32 @@ TEST_F(GuiSceneFile, TheGizmoMovesTheLightPickedInThePanel) {
     EXPECT_EQ(after.at("selected_light"), 1);
     EXPECT_EQ(after.at("lights")[0].at("position"), before.at("lights")[0].at("position")) << "the spot stays";
     EXPECT_NE(after.at("lights")[1].at("position"), before.at("lights")[1].at("position")) << "the lamp moved";
+}
+
+// A reload keeps what the user edited and the file did not: the lamp moved with the gizmo stays where the
+// user put it while the file's new medium and the spot's new intensity come in.
+TEST_F(GuiSceneFile, AReloadKeepsTheUsersEditsOfValuesTheFileLeftAlone) {
+    const fs::path file = twoLightFile("edited.gltf", 0.12);
+    const fs::path script = writeText("edit.txt", "frames 2\n" + std::string(kMoveTheLamp) + "screenshot " +
+                                                      path("moved.png").string() + "\nframes 400\n");
+    std::thread editor([&] {
+        for (int i = 0; i < 600 && !fs::exists(path("moved.json")); ++i)
+            std::this_thread::sleep_for(std::chrono::milliseconds(50));
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+        twoLightFile("edited.gltf", 0.4, 77.0);
+    });
+    const RunResult r = run("gui --scene " + file.string() + " --technique raymarch --size 64x48 --set samples=16 --script " +
+                            script.string() + " --screenshot " + path("after.png").string());
+    editor.join();
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const nlohmann::json moved = sidecar("moved.json"), after = sidecar("after.json");
+    const std::string notice = after.at("notice").get<std::string>();
+    ASSERT_NE(notice.find("reloaded edited.gltf"), std::string::npos) << notice;
+    EXPECT_NE(notice.find("kept your edits (light 2 position)"), std::string::npos) << notice;
+    EXPECT_DOUBLE_EQ(after.at("medium").at("sigma_s").get<double>(), 0.4) << "the file's new medium";
+    ASSERT_EQ(after.at("lights").size(), 2u);
+    EXPECT_EQ(after.at("lights")[1].at("position"), moved.at("lights")[1].at("position")) << "the user's lamp";
+    EXPECT_DOUBLE_EQ(after.at("lights")[0].at("intensity").get<double>(), 77.0) << "the file's new spot";
 }
 
 // A difference view against the reference follows a reload that moved geometry only (same lights and
