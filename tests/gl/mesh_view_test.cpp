@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <glm/glm.hpp>
+#include <vector>
 
 #include "render/gpu_scene.h"
 #include "render/mesh_view.h"
@@ -54,6 +55,32 @@ TEST(MeshView, OrbitCameraFramesTheSceneAndTheCameraFromEveryDirection) {
                                                               << " pitch " << pitch;
                 }
             }
+    }
+}
+
+// Scale-free: grate scaled by 1e-9 (a nanometre model) or 1e4 is framed exactly as at scale 1, every
+// corner of its box at the same place in the orbit view.
+TEST(MeshView, OrbitCameraFramesAModelTheSameAtEveryScale) {
+    const viz::scene::Scene scene = viz::scene::makeBuiltinScene("grate");
+    const viz::scene::Bounds bounds = viz::scene::sceneBounds(scene);
+    auto corners = [&](double s) {
+        viz::scene::Scene scaled = scene;
+        scaled.camera.position *= s;
+        const viz::scene::Bounds box{bounds.lo * s, bounds.hi * s, false};
+        const glm::mat4 vp = viz::render::orbitViewProjection(scaled, box, OrbitView{35.0, 25.0, 1.0}, 160, 120);
+        const glm::dvec3 eye = scaled.camera.position, lo = glm::min(box.lo, eye), hi = glm::max(box.hi, eye);
+        std::vector<glm::dvec3> out;
+        for (int corner = 0; corner < 8; ++corner)
+            out.push_back(project(vp, glm::dvec3((corner & 1) ? hi.x : lo.x, (corner & 2) ? hi.y : lo.y, (corner & 4) ? hi.z : lo.z) - eye));
+        return out;
+    };
+    const auto unit = corners(1.0);
+    for (double s : {1e-9, 1e-3, 1e4}) {
+        const auto scaled = corners(s);
+        for (int i = 0; i < 8; ++i) {
+            EXPECT_NEAR(scaled[std::size_t(i)].x, unit[std::size_t(i)].x, 1e-4) << "scale " << s << " corner " << i;
+            EXPECT_NEAR(scaled[std::size_t(i)].y, unit[std::size_t(i)].y, 1e-4) << "scale " << s << " corner " << i;
+        }
     }
 }
 

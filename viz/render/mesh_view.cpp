@@ -21,6 +21,14 @@ scene::Bounds withCamera(const scene::Bounds& bounds, const glm::dvec3& eye) {
     return {glm::min(bounds.lo, eye), glm::max(bounds.hi, eye), false};
 }
 
+// The box's radius, which sizes the orbit camera and the markers; a box of one point (a scene whose
+// meshes and camera coincide) takes a millionth of its distance from the origin instead. No absolute floor:
+// a model a micrometre across is framed as one a kilometre across.
+double viewRadius(const scene::Bounds& box) {
+    const double r = box.radius();
+    return r > 0.0 ? r : std::max(1e-6 * glm::length(box.centre()), 1e-30);
+}
+
 void cross(std::vector<glm::vec3>& out, glm::dvec3 p, const glm::dvec3& eye, double size) {
     for (int axis = 0; axis < 3; ++axis) {
         glm::dvec3 d(0.0);
@@ -36,7 +44,7 @@ glm::mat4 orbitViewProjection(const scene::Scene& scene, const scene::Bounds& bo
                               int height) {
     const scene::Bounds box = withCamera(bounds, scene.camera.position);
     const glm::dvec3 target = box.centre() - scene.camera.position;  // eye-relative
-    const double radius = std::max(box.radius(), 1e-6);
+    const double radius = viewRadius(box);
     const double distance = radius / std::sin(0.5 * kOrbitFov) / std::max(orbit.zoom, 1e-3);
     const double yaw = glm::radians(orbit.yawDegrees);
     const double pitch = glm::radians(std::clamp(orbit.pitchDegrees, -89.0, 89.0));
@@ -123,8 +131,8 @@ void MeshView::begin(const scene::Scene& scene, const GpuScene& gpuScene, const 
     gpuScene.draw();
     // Markers on top of the surfaces where they are hidden: drawn without depth test by lines().
     const scene::Bounds box = withCamera(gpuScene.bounds(), scene.camera.position);
-    const double size = 0.03 * std::max(box.radius(), 1e-6);
-    lines(cameraFrustumLines(scene.camera, width, height, 0.25 * std::max(box.radius(), 1e-6)),
+    const double size = 0.03 * viewRadius(box);
+    lines(cameraFrustumLines(scene.camera, width, height, 0.25 * viewRadius(box)),
           glm::vec4(0.35f, 0.65f, 1.0f, 1.0f));
     lines(lightMarkerLines(scene, box.centre(), size), glm::vec4(1.0f, 0.85f, 0.3f, 1.0f));
 }
