@@ -35,7 +35,8 @@ technique, axis, value, stage, ms, clock, renderer, work, runs, wall_ms: the sta
 until its GPU time was known), DIR/bench.html with a log-log plot per
 axis and a fitted exponent k per technique and stage (cost ~ work^k), and the plots as PNG.
 
-  --scenes      built-in scene names or glTF paths, comma-separated, for every axis (default: grate
+  --scenes      built-in scene names or glTF paths, comma-separated (a path with a comma in its name
+                stays whole when that file exists), for every axis (default: grate
                 for size, shadow_map and triangles; tv-room, the scene with an area light, for vpls)
   --techniques  comma-separated (default: every technique but the CPU reference)
   --axes        which kinds of work to grow (default: all four):
@@ -70,7 +71,7 @@ Options parseBenchOptions(Args& args) {
     Options o;
     while (!args.empty()) {
         const std::string flag = args.take();
-        if (flag == "--scenes") o.scenes = splitList(args.next(flag), flag);
+        if (flag == "--scenes") o.scenes = splitSceneList(args.next(flag), flag);
         else if (flag == "--techniques") o.techniques = splitList(args.next(flag), flag);
         else if (flag == "--axes") o.axes = splitList(args.next(flag), flag);
         else if (flag == "--size") {

@@ -55,7 +55,8 @@ sample it as virtual point lights add more of them (area_samples 8, 12 and 16; 8
 where polyvol adds none and ivsv adds vpls=256), each count also with the technique's other knob for
 the VPLs' rays (raymarch samples=16, minmax vpl_samples=16, slices planes=256).
 
-  --scenes      built-in scene names or glTF paths, comma-separated (default: every built-in scene)
+  --scenes      built-in scene names or glTF paths, comma-separated (default: every built-in scene); a
+                path with a comma in its name stays whole when that file exists
   --techniques  techniques to compare, comma-separated (default: every one but the reference;
                 raymarch is always added: it is the baseline of the speed-up)
   --size        image size (default 160x120)
@@ -107,7 +108,7 @@ Options parseReportOptions(Args& args) {
     Options o;
     while (!args.empty()) {
         const std::string flag = args.take();
-        if (flag == "--scenes") o.scenes = splitList(args.next(flag), flag);
+        if (flag == "--scenes") o.scenes = splitSceneList(args.next(flag), flag);
         else if (flag == "--techniques") o.techniques = splitList(args.next(flag), flag);
         else if (flag == "--size") {
             const glm::ivec2 size = parseSize(args.next(flag));

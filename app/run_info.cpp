@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cstdio>
 #include <ctime>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <thread>
@@ -24,6 +25,32 @@ std::vector<std::string> splitList(const std::string& text, const std::string& f
         if (item.empty()) throw viz::InputError(flag + " '" + text + "' has an empty entry");
         items.push_back(item);
         start = comma + 1;
+    }
+    return items;
+}
+
+std::vector<std::string> splitSceneList(const std::string& text, const std::string& flag) {
+    std::vector<std::string> pieces;
+    for (std::size_t start = 0; start <= text.size();) {
+        const std::size_t comma = std::min(text.find(',', start), text.size());
+        pieces.push_back(text.substr(start, comma - start));
+        start = comma + 1;
+    }
+    std::vector<std::string> items;
+    for (std::size_t i = 0; i < pieces.size();) {
+        // The longest run of pieces from i that names a file; else piece i alone.
+        std::size_t end = i + 1;
+        std::string joined = pieces[i];
+        for (std::size_t j = i + 1; j < pieces.size(); ++j) {
+            joined += "," + pieces[j];
+            std::error_code ec;
+            if (std::filesystem::is_regular_file(joined, ec)) end = j + 1;
+        }
+        std::string item = pieces[i];
+        for (std::size_t j = i + 1; j < end; ++j) item += "," + pieces[j];
+        if (item.empty()) throw viz::InputError(flag + " '" + text + "' has an empty entry");
+        items.push_back(item);
+        i = end;
     }
     return items;
 }

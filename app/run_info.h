@@ -12,6 +12,9 @@ namespace airlight {
 
 // "A,B,C" -> {"A", "B", "C"}; an empty entry is an InputError naming `flag`.
 std::vector<std::string> splitList(const std::string& text, const std::string& flag);
+// splitList for scene lists: pieces that together name an existing file ("my,hall.gltf") stay one entry,
+// so a glTF path with a comma in it can be named.
+std::vector<std::string> splitSceneList(const std::string& text, const std::string& flag);
 double median(std::vector<double> v);  // 0 for no values
 std::string utcNow();                  // "2026-11-26T16:41:38Z"
 std::string machineDescription();      // "host, CPU model, N threads"
