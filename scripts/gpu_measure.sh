@@ -109,10 +109,10 @@ for variant in $variants; do
 done
 pack
 # 1c. Where slices' planes and polyvol's volume spend their time on this GPU: each alone with one knob
-#     changed against its default (blending format, the slab's nodes, the plane count; the segment integral,
+#     changed against its default (the depth test, blending format, the slab's nodes, the plane count; the segment integral,
 #     the mesh), on colonnade at the sizes above.
 ablations=""
-want ablate && ablations="slices:default slices:accum=rgba16f slices:integration=midpoint slices:planes=32
+want ablate && ablations="slices:default slices:depth_test=0 slices:accum=rgba16f slices:integration=midpoint slices:planes=32
     polyvol:default polyvol:airlight=lut polyvol:tessellation=static raymarch:default"
 for a in $ablations; do
     t="${a%%:*}"; knob="${a#*:}"
@@ -141,5 +141,6 @@ fi
 kill "$sampler" 2>/dev/null
 pack
 say "== summary"
+grep -h 'fragment_alu / compute_alu' "$work"/probe*.txt 2>/dev/null
 grep -h 'faster\|slower' "$work"/report.txt 2>/dev/null | head -n 20
 tail -n 3 "$work"/report.err "$work"/bench-quick.err 2>/dev/null

@@ -67,6 +67,13 @@ uniform int uPickBase;     // this draw set's first record
 float gVisibilitySum = 0.0;
 float gVisibilityCount = 0.0;
 
+// depth_test=1 (plane.vert): the depth test before the shader even where it writes work counters (a
+// shader with side effects is otherwise tested after it runs), so the counters count what is shaded. Not
+// with COUNT_OUTSIDE, whose occlusion-query pass counts the fragments it discards.
+#ifndef COUNT_OUTSIDE
+layout(early_fragment_tests) in;
+#endif
+
 flat in float vDepth;  // s_i
 flat in int vPlane;
 layout(location = 0) out vec4 oColour;

@@ -6,6 +6,12 @@
 // Output: the plane's depth s_i (flat) and index; gl_ClipDistance[0..5] against the light frustum's six planes
 // (from the light's shadow matrix: w +- x, w +- y, w +- z >= 0) with CLIP, then the two user planes with
 // USER_CLIP; the host enables exactly the distances written.
+// Depth: every plane is drawn at the depth where the part of the ray it adds begins (its slab's start, or
+// the plane itself with one sample), moved nearer by a margin (slices/plane_depth.glsl); with depth_test=1
+// the host tests it against a depth buffer made from the first surface's distance (slices/depth.frag:
+// Mitchell draws the planes "after the rest of the scene"), so a fragment is rejected unshaded where
+// plane.frag would drop it as beyond the first surface, and the image does not change. The depth is kept
+// inside [-w, w]: no plane is clipped by the camera's near or far plane for it.
 // SLAB_EQUIANGULAR (plane.frag integrates the plane's whole slab): the quad and the light-frustum clip
 // planes are widened to every pixel whose ray meets the light volume somewhere in the slab, not only at
 // the plane. On the plane at view depth s, the point p stands for the ray's points f p, f in [s_lo / s,
@@ -29,6 +35,7 @@ uniform mat4 uLightMatrix;  // eye-relative world -> the light's clip space (sha
 uniform int uClipLight;     // 1: clip to the light frustum (spot lights, or directional_box=1)
 uniform vec4 uUserPlane0;   // user clip planes, eye-relative world: dot(plane, (p, 1)) >= 0 is kept
 uniform vec4 uUserPlane1;
+#include "slices/plane_depth.glsl"
 
 flat out float vDepth;      // s_i, the plane's view depth
 flat out int vPlane;
@@ -74,6 +81,12 @@ void main() {
     vDepth = s;
     vPlane = plane;
     gl_Position = uViewProj * vec4(p, 1.0);
+#ifdef SLAB_EQUIANGULAR
+    float sTest = sLo;
+#else
+    float sTest = s;
+#endif
+    gl_Position.z = max(ndcDepthAtView(sTest) - kPlaneDepthMargin, -1.0) * gl_Position.w;
 
 #ifdef CLIP
     // uClipLight = 0 (a directional light, whose lit volume is unbounded): nothing is clipped. Writing

@@ -82,6 +82,11 @@ void Framebuffer::attachDepth(const Texture& texture, int layer) {
     }
 }
 
+void Framebuffer::detachDepth() {
+    glNamedFramebufferTexture(id(), GL_DEPTH_ATTACHMENT, 0, 0);
+    glNamedFramebufferTexture(id(), GL_STENCIL_ATTACHMENT, 0, 0);
+}
+
 void Framebuffer::checkComplete() const {
     const GLenum status = glCheckNamedFramebufferStatus(id(), GL_FRAMEBUFFER);
     if (status != GL_FRAMEBUFFER_COMPLETE) {

@@ -23,6 +23,7 @@ public:
     void attachColour(int index, const Texture& texture, int level = 0, int layer = -1);
     // GL_DEPTH_ATTACHMENT, or GL_DEPTH_STENCIL_ATTACHMENT for depth-stencil formats.
     void attachDepth(const Texture& texture, int layer = -1);
+    void detachDepth();  // no depth attachment (nothing to do when there is none)
     // Throws std::runtime_error naming the label and the status when incomplete (programmer error).
     void checkComplete() const;
 

@@ -132,6 +132,10 @@ const ParamTable<SlicesSettings>& slicesParams() {
                   0, 0, 1, true, {"fitted", "world"}})
             .add(&S::distanceScale, {"distance_scale", "reference distance: beyond it N shrinks as reference / "
                                      "distance (min 8); 0: off", 0, 0, 1e6, false})
+            .add(&S::depthTest, {"depth_test", "1 (default): the planes are drawn after the scene against its depth "
+                                 "buffer, as in the paper, so a plane's fragments whose part of the ray lies wholly behind "
+                                 "the first surface are rejected before they are shaded (the image is the same); 0: every "
+                                 "fragment is shaded and the shader drops those", 1, 0, 1, true})
             .add(&S::countFragments, {"count_fragments", "1: count shaded fragments and those outside the light "
                                       "frustum (atomic counter)", 0, 0, 1, true})
             .add(&S::meshView, {"mesh_view", "1: draw the planes from an orbit camera of its own, with the scene, the "
@@ -161,8 +165,8 @@ SlicesTechnique::SlicesTechnique()
          "N view-aligned planes per light, clipped to its frustum, added back to front",
          {"planes", "planes_drawn", "weighting", "integration", "slab_angle", "accum", "accum_range", "shadow", "spot_falloff", "cookie",
           "noise", "noise_tiles", "time", "falloff", "ambient", "artistic_units", "clip", "user_clip",
-          "clip_y_min", "clip_y_max", "directional_box", "plane_grid", "distance_scale", "count_fragments", "mesh_view",
-          "mesh_yaw", "mesh_pitch", "mesh_zoom", "pick_x", "pick_y", "ray_planes", "force_features"},
+          "clip_y_min", "clip_y_max", "directional_box", "plane_grid", "distance_scale", "depth_test", "count_fragments",
+          "mesh_view", "mesh_yaw", "mesh_pitch", "mesh_zoom", "pick_x", "pick_y", "ray_planes", "force_features"},
          {kAccum, kPlane, kPlaneMesh, kPlaneView, kFragments, kRayPlanes, kRayPlanesChart}, 128, "planes_drawn", "planes",
          {kPlaneMesh, kPlane}},
         {kStageResolve, "Resolve", "accumulation -> L_air: undo the 8-bit scale, sum the mask channels, blur",
@@ -276,6 +280,11 @@ Plan SlicesTechnique::plan(const scene::Scene& scene, const Settings& settings) 
                           t.mask ? "plane i -> channel i mod 4 of an RGBA8 target; monochrome light colour"
                                  : "accum is not rgba8-mask"});
     p.features.push_back({"BLUR", t.blur, t.blur ? "3x3 tent on composite" : "blur=0"});
+    p.features.push_back({"DEPTH_TEST", t.depthTest,
+                          t.depthTest ? "the planes are tested against the surface's depth before they are shaded: a "
+                                        "fragment whose part of the ray lies behind the first surface costs no shading"
+                                      : "depth_test=0: every fragment of every plane is shaded, and those behind the "
+                                        "first surface are dropped by the shader"});
     p.features.push_back({"CLIP", t.clip,
                           t.clip               ? "gl_ClipDistance against the light frustum's 6 planes"
                           : !s.clip ? "clip=0: whole planes over the frustum's bounding box"
@@ -517,6 +526,7 @@ Terms SlicesTechnique::terms(const scene::Scene& scene, const SlicesSettings& s)
     t.clip = s.clip && (hasSpot || boxedDirectional || force);
     t.userClip = s.userClip;
     t.count = s.countFragments;
+    t.depthTest = s.depthTest;
     t.pick = s.rayPlanes;
     t.spots = hasSpot || force;
     t.cubes = render::hasLightOfType(scene, scene::LightType::Point) ||

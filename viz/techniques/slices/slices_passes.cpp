@@ -43,6 +43,34 @@ void SlicesTechnique::allocateTargets(int width, int height, SlicesAccum accum) 
         {.target = GL_TEXTURE_2D, .format = GL_RGBA32F, .size = {width, height, 1}, .label = kPlane});
     mAirlight = gl::Texture::create(
         {.target = GL_TEXTURE_2D, .format = GL_RGBA32F, .size = {width, height, 1}, .label = kAirlight});
+    mDepth = gl::Texture::create(
+        {.target = GL_TEXTURE_2D, .format = GL_DEPTH_COMPONENT32F, .size = {width, height, 1}, .label = "slices.depth"});
+    if (mDepthFramebuffer.id() == 0) mDepthFramebuffer = gl::Framebuffer::create("slices.depth_framebuffer");
+    mDepthFramebuffer.attachDepth(mDepth);
+}
+
+void SlicesTechnique::writeSurfaceDepth(const FrameInput& input, const CameraBasis& basis) {
+    if (!mDepthProgram)
+        mDepthProgram = gl::Program::compile(
+            {.stages = {"render/fullscreen.vert", "slices/depth.frag"}, .label = "slices.depth_program"});
+    const scene::Camera& cam = input.scene->camera;
+    const glm::dmat4 projection = scene::projectionMatrix(cam, input.width, input.height);
+    mDepthProgram.use();
+    mDepthProgram.set("uDepthFromView", glm::vec2(float(-projection[2][2]), float(projection[3][2])));
+    mDepthProgram.set("uForward", glm::vec3(basis.forward));
+    mDepthProgram.set("uRight", glm::vec3(basis.right));
+    mDepthProgram.set("uUp", glm::vec3(basis.up));
+    mDepthProgram.set("uSize", glm::vec2(float(input.width), float(input.height)));
+    mDepthProgram.set("uTanHalf", float(std::tan(cam.yfov * 0.5)));
+    mDepthProgram.set("uAspect", float(scene::aspectOf(cam, input.width, input.height)));
+    mView.surface().distance().bindUnit(render::hd::kFirstFreeTextureUnit);  // where the planes read it too
+    mDepthFramebuffer.bind();
+    glViewport(0, 0, input.width, input.height);
+    glDisable(GL_BLEND);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_ALWAYS);
+    glDepthMask(GL_TRUE);
+    mTriangle->draw();
 }
 
 double SlicesTechnique::storeScale(const Terms& t, const SlicesSettings& s) const {
@@ -112,6 +140,9 @@ void SlicesTechnique::drawPlanes(const scene::Scene& scene, const FrameInput& in
     const double eyeY = cam.position.y;
     setBoth("uUserPlane0", glm::vec4(0, 1, 0, float(eyeY - s.clipYMin)));
     setBoth("uUserPlane1", glm::vec4(0, -1, 0, float(s.clipYMax - eyeY)));
+    // The surface pass's projection along the view: clip z = -P[2][2] z_view + P[3][2] with z_view = -s.
+    const glm::dmat4 projection = scene::projectionMatrix(cam, input.width, input.height);
+    setBoth("uDepthFromView", glm::vec2(float(-projection[2][2]), float(projection[3][2])));
 
     mView.lights().bind();
     mView.shadows().bind();
@@ -121,7 +152,22 @@ void SlicesTechnique::drawPlanes(const scene::Scene& scene, const FrameInput& in
     mVao.bind();
 
     glViewport(0, 0, input.width, input.height);
-    glDisable(GL_DEPTH_TEST);
+    // depth_test=1: a depth buffer made from the first surface's distance (writeSurfaceDepth), tested and
+    // never written by the planes (plane.vert places each plane's depth where its part of the ray begins);
+    // the count passes and the last plane alone share the test, the pick draw does not (it records the
+    // planes beyond the surface too).
+    if (t.depthTest) {
+        writeSurfaceDepth(input, basis);
+        program.use();
+        mVao.bind();
+        mFramebuffer.attachDepth(mDepth);
+        glEnable(GL_DEPTH_TEST);
+        glDepthFunc(GL_LESS);
+        glDepthMask(GL_FALSE);
+    } else {
+        mFramebuffer.detachDepth();
+        glDisable(GL_DEPTH_TEST);
+    }
     glDisable(GL_CULL_FACE);
     // Additive blending: dst = dst + src (the paper's accumulation; saturates in RGBA8).
     glEnable(GL_BLEND);
@@ -239,7 +285,9 @@ void SlicesTechnique::drawPlanes(const scene::Scene& scene, const FrameInput& in
             glEnable(GL_SCISSOR_TEST);
             glScissor(glPixel.x, glPixel.y, 1, 1);
             glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+            if (t.depthTest) glDisable(GL_DEPTH_TEST);
             glDrawArrays(GL_TRIANGLES, 0, 6 * drawn);
+            if (t.depthTest) glEnable(GL_DEPTH_TEST);
             glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
             glDisable(GL_SCISSOR_TEST);
             program.use();
@@ -247,6 +295,9 @@ void SlicesTechnique::drawPlanes(const scene::Scene& scene, const FrameInput& in
         if (t.count) countFragments(program, drawn);
     }
     for (int i = 0; i < 8; ++i) glDisable(GLenum(GL_CLIP_DISTANCE0 + i));
+    glDisable(GL_DEPTH_TEST);
+    glDepthMask(GL_TRUE);
+    mFramebuffer.detachDepth();
     if (t.pick) replayPick(input, basis, t);
     glDisable(GL_BLEND);
     glMemoryBarrier(GL_ATOMIC_COUNTER_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);

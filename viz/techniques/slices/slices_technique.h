@@ -72,6 +72,7 @@ struct Terms {
     bool spots = false;  // a spot light in the scene (else LIGHTS_NO_SPOT)
     bool pick = false;  // record the picked pixel's planes (slices.ray_planes)
     bool lastPlane = false;  // draw the last plane alone too (slices.plane, on demand)
+    bool depthTest = false;  // depth_test=1: fragments wholly behind the first surface are rejected unshaded
     bool farTail = false;    // a far camera: the resolve adds each ray past the planes' end (resolve.frag)
     double planesEnd = 0.0;  // where the planes end along the view: zfar, or the scene's far side under a
                              // far camera (scene::depthOfInterest)
@@ -110,6 +111,7 @@ struct SlicesSettings {
     double distanceScale = 0.0;
     bool countFragments = false, meshView = false;
     bool rayPlanes = false, forceFeatures = false;
+    bool depthTest = false;  // the surface's depth buffer rejects plane fragments behind it before shading
 };
 const ParamTable<SlicesSettings>& slicesParams();
 
@@ -189,6 +191,12 @@ private:
     gl::Framebuffer mFramebuffer;
     gl::Buffer mCounters;
     gl::Texture mNoise, mAccum, mPlane, mAirlight;
+    // depth_test=1: the first surface's depth from its distance (slices/depth.frag), what the planes are
+    // tested against; its program and framebuffer.
+    gl::Texture mDepth;
+    gl::Program mDepthProgram;
+    gl::Framebuffer mDepthFramebuffer;
+    void writeSurfaceDepth(const FrameInput& input, const CameraBasis& basis);
     double mLastStoreScale = 1.0;
     std::vector<int> mPlanesUsed;                         // per drawn light, after distance scaling
     render::MeshView mMeshView;
