@@ -69,7 +69,8 @@ float gVisibilityCount = 0.0;
 
 // depth_test=1 (plane.vert): the depth test before the shader even where it writes work counters (a
 // shader with side effects is otherwise tested after it runs), so the counters count what is shaded. Not
-// with COUNT_OUTSIDE, whose occlusion-query pass counts the fragments it discards.
+// with COUNT_OUTSIDE (count_fragments=1, which runs without the depth test), whose occlusion-query pass
+// counts the fragments it discards.
 #ifndef COUNT_OUTSIDE
 layout(early_fragment_tests) in;
 #endif

@@ -283,6 +283,8 @@ Plan SlicesTechnique::plan(const scene::Scene& scene, const Settings& settings) 
     p.features.push_back({"DEPTH_TEST", t.depthTest,
                           t.depthTest ? "the planes are tested against the surface's depth before they are shaded: a "
                                         "fragment whose part of the ray lies behind the first surface costs no shading"
+                          : s.depthTest ? "count_fragments=1: every fragment of the planes is shaded and counted (the "
+                                          "shader drops those behind the first surface)"
                                       : "depth_test=0: every fragment of every plane is shaded, and those behind the "
                                         "first surface are dropped by the shader"});
     p.features.push_back({"CLIP", t.clip,
@@ -526,7 +528,9 @@ Terms SlicesTechnique::terms(const scene::Scene& scene, const SlicesSettings& s)
     t.clip = s.clip && (hasSpot || boxedDirectional || force);
     t.userClip = s.userClip;
     t.count = s.countFragments;
-    t.depthTest = s.depthTest;
+    // count_fragments counts every fragment of the planes twice (atomic counter, occlusion query): under the
+    // depth test the query would count only those in front of the surface and the counter all of them.
+    t.depthTest = s.depthTest && !s.countFragments;
     t.pick = s.rayPlanes;
     t.spots = hasSpot || force;
     t.cubes = render::hasLightOfType(scene, scene::LightType::Point) ||
