@@ -5,6 +5,17 @@
 
 namespace viz::slices_detail {
 
+namespace {
+
+// uDepthFromView (slices/plane_depth.glsl): the surface pass's projection along the view, clip z =
+// -P[2][2] z_view + P[3][2] with z_view = -s.
+glm::vec2 depthFromView(const scene::Camera& cam, int width, int height) {
+    const glm::dmat4 projection = scene::projectionMatrix(cam, width, height);
+    return {float(-projection[2][2]), float(projection[3][2])};
+}
+
+}  // namespace
+
 gl::ShaderDefines SlicesTechnique::planeDefines(const Terms& t, bool pick) {
     gl::ShaderDefines d;
     if (t.physical) d.push_back({"PHYSICAL", "1"});
@@ -54,9 +65,8 @@ void SlicesTechnique::writeSurfaceDepth(const FrameInput& input, const CameraBas
         mDepthProgram = gl::Program::compile(
             {.stages = {"render/fullscreen.vert", "slices/depth.frag"}, .label = "slices.depth_program"});
     const scene::Camera& cam = input.scene->camera;
-    const glm::dmat4 projection = scene::projectionMatrix(cam, input.width, input.height);
     mDepthProgram.use();
-    mDepthProgram.set("uDepthFromView", glm::vec2(float(-projection[2][2]), float(projection[3][2])));
+    mDepthProgram.set("uDepthFromView", depthFromView(cam, input.width, input.height));
     mDepthProgram.set("uForward", glm::vec3(basis.forward));
     mDepthProgram.set("uRight", glm::vec3(basis.right));
     mDepthProgram.set("uUp", glm::vec3(basis.up));
@@ -140,9 +150,7 @@ void SlicesTechnique::drawPlanes(const scene::Scene& scene, const FrameInput& in
     const double eyeY = cam.position.y;
     setBoth("uUserPlane0", glm::vec4(0, 1, 0, float(eyeY - s.clipYMin)));
     setBoth("uUserPlane1", glm::vec4(0, -1, 0, float(s.clipYMax - eyeY)));
-    // The surface pass's projection along the view: clip z = -P[2][2] z_view + P[3][2] with z_view = -s.
-    const glm::dmat4 projection = scene::projectionMatrix(cam, input.width, input.height);
-    setBoth("uDepthFromView", glm::vec2(float(-projection[2][2]), float(projection[3][2])));
+    setBoth("uDepthFromView", depthFromView(cam, input.width, input.height));
 
     mView.lights().bind();
     mView.shadows().bind();
