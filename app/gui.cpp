@@ -242,12 +242,14 @@ void GuiApp::render() {
     // follows when the interaction stops.
     mReduced = (mDragButton >= 0 || mGizmoDrag || anyFlyKeyDown()) && size.x >= 64 && size.y >= 48;
     if (mReduced) size /= 2;
+    // What the views show, stand-ins included, before the panes that say so are cleared.
+    const std::vector<std::string> shownViews = shownContents();
     // Panes borrow textures the run is about to replace.
     clearPanes();
     const auto start = Clock::now();
     try {
         // The scheduler re-runs only the stages whose inputs changed (a sub-step: its stage alone).
-        mOutput = mRuns.runner(Consumer::Views, t.id()).run(mScene, size.x, size.y, mState.settings, mState.cursor, shownContents(), mAnimation.frame);
+        mOutput = mRuns.runner(Consumer::Views, t.id()).run(mScene, size.x, size.y, mState.settings, mState.cursor, shownViews, mAnimation.frame);
         // While playing, the temporal views: this frame's L_air against the previous one's, and its error
         // against the reference's frames when they are known (--path).
         if (mAnimation.playing && mAnimation.temporal.add(mOutput.airlight, pathReferenceFrame())) {

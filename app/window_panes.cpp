@@ -9,9 +9,15 @@ namespace airlight {
 int GuiApp::contentCount() const { return airlight::contentCount(mOutput); }
 
 std::vector<std::string> GuiApp::shownContents() const {
+    // What each view chose and what it shows in its stead: a run stepped to a stage before the final frame
+    // shows that stage's views in the final frame's and L_air's panes, and those that are drawn on demand
+    // (slices.plane, the planes' orbit view) must then be asked for.
     std::vector<std::string> shown;
     for (int id : mGrid.layout.views())
-        if (const auto it = mGrid.views.find(id); it != mGrid.views.end()) shown.push_back(it->second.content);
+        if (const auto it = mGrid.views.find(id); it != mGrid.views.end()) {
+            shown.push_back(it->second.content);
+            if (!it->second.pane.id.empty() && it->second.pane.id != it->second.content) shown.push_back(it->second.pane.id);
+        }
     return shown;
 }
 

@@ -427,6 +427,30 @@ TEST_F(GuiCli, SteppingStopsAtAStageAndInsideItAtASubstep) {
     EXPECT_EQ(click.at("stage"), "slices.shadow_maps") << "the timeline's left end is the first stage";
 }
 
+// A run stepped into the planes stage shows that stage's views in the final frame's and L_air's panes;
+// the one slices draws only on demand (the last plane alone) is then asked for and drawn, once: its pane
+// has an image and the following frames run nothing (the stage times stay those of one run). It stayed
+// empty before, asked for by its chosen content ("final") only.
+TEST_F(GuiCli, AStageViewStandingInIsDrawnOnDemandOnce) {
+    const fs::path script = writeText("stand_in.txt", "frames 1\nkey S\nkey S\nkey S\nframes 1\nkey D\nkey D\nframes 3\n"
+                                                      "screenshot " + path("a.png").string() + "\nframes 4\n");
+    const RunResult r = run("gui --scene colonnade --technique slices --size 64x48 --set planes=16 --script " +
+                            script.string() + " --screenshot " + path("b.png").string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const nlohmann::json a = nlohmann::json::parse(readFile(path("a.json")));
+    const nlohmann::json b = nlohmann::json::parse(readFile(path("b.json")));
+    EXPECT_EQ(a.at("substep"), 3);
+    bool plane = false;
+    for (const auto& v : a.at("views"))
+        if (v.at("name") == "slices.plane") {
+            plane = true;
+            EXPECT_EQ(v.at("content"), "final") << "it stands in for the final frame";
+            EXPECT_EQ(v.at("size"), nlohmann::json::array({64, 48})) << "drawn, not an empty pane";
+        }
+    EXPECT_TRUE(plane) << a.at("views").dump();
+    EXPECT_EQ(a.at("timing"), b.at("timing")) << "no run after the one that drew it";
+}
+
 // minmax's walk is stepped node by node as far as the picked ray's walk goes, not a fixed 64 sub-steps (the
 // centre's walk on grate has more): End stops on its last node N, D past it says so, and `render` agrees
 // that the walk has N nodes:
