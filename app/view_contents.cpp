@@ -47,14 +47,19 @@ ShownContent shownContent(const viz::Technique& technique, const viz::FrameOutpu
             shown.content = "airlight";
         }
     }
-    if (shown.content == "final" && out.final.empty() && out.lastStageRun >= 0) shown.content = "airlight";
-    if (shown.content == "airlight" && out.airlight.empty() && out.lastStageRun >= 0 &&
+    const auto shownElsewhere = [&](const std::string& id) {
+        return std::find(elsewhere.begin(), elsewhere.end(), id) != elsewhere.end();
+    };
+    // A final-frame view before the final frame exists shows L_air, unless another view shows L_air
+    // already: then the stage's own views, as when L_air does not exist yet (not the same image twice).
+    const bool finalAbsent = shown.content == "final" && out.final.empty() && out.lastStageRun >= 0;
+    const bool airlightTwice = finalAbsent && !out.airlight.empty() && shownElsewhere("airlight");
+    if (finalAbsent) shown.content = "airlight";
+    if (shown.content == "airlight" && (out.airlight.empty() || airlightTwice) && out.lastStageRun >= 0 &&
         out.lastStageRun < int(technique.stages().size())) {
         const auto& declared = technique.stages()[std::size_t(out.lastStageRun)].intermediates;
-        const auto shownElsewhere = [&](const std::string& id) {
-            return std::find(elsewhere.begin(), elsewhere.end(), id) != elsewhere.end();
-        };
-        const bool leaveFirst = chosen == "final" && shownElsewhere("airlight");
+        // Both views standing in: the L_air view takes the stage's first view, this one the next.
+        const bool leaveFirst = chosen == "final" && shownElsewhere("airlight") && out.airlight.empty();
         int first = -1, unshown = -1;
         for (int i = 0; i < int(all.size()); ++i) {
             const std::string& id = all[std::size_t(i)].id;

@@ -28,7 +28,8 @@ std::string notMadeBecause(const viz::Technique& technique, const viz::FrameOutp
 // when that still holds it, else the first); L_air in its stead, with the stand-in note, when it does not;
 // and, for a run stepped to a stage before the final frame or L_air exists, what that stage published,
 // preferring what no other view shows (`elsewhere`: the other views' chosen contents and what they show).
-// A final-frame view standing in leaves the stage's first view to an L_air view elsewhere.
+// A final-frame view standing in leaves the stage's first view to an L_air view elsewhere; where L_air
+// exists and another view shows it, the final-frame view shows the stage's views rather than L_air again.
 struct ShownContent {
     std::string content;  // "final", "airlight" or an intermediate id
     int index = -1;       // its position in out.intermediates; -1 for the final frame and L_air

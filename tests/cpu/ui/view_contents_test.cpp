@@ -61,7 +61,8 @@ TEST(ViewContents, AViewTheRunDidNotMakeSaysWhy) {
 
 // What a view shows of a run, on raymarch's declared stages: the chosen content, the right one of a
 // repeated id, L_air with a note for a view the run did not make, and for a run stopped before L_air exists
-// what the stage published, an intermediate no other view shows first.
+// what the stage published, an intermediate no other view shows first; and before the final frame, L_air
+// in a final-frame view only where no other view shows it.
 TEST(ViewContents, AViewShowsItsChoiceOrSaysWhyAndAStoppedRunFillsTheGridWithItsStagesViews) {
     const auto t = viz::makeTechnique("raymarch");
     const auto& stages = t->stages();
@@ -115,6 +116,18 @@ TEST(ViewContents, AViewShowsItsChoiceOrSaysWhyAndAStoppedRunFillsTheGridWithIts
     c = shownContent(*t, stopped, "raymarch.lit_fraction", -1, {});
     EXPECT_EQ(c.content, first);
     EXPECT_NE(c.standIn.find("after where the run stops"), std::string::npos) << c.standIn;
+
+    // Stopped in a stage that has made L_air but no final frame yet: a final-frame view shows L_air, unless
+    // an L_air view is beside it; then the stage's first view (not the same image twice).
+    viz::FrameOutput partial = stopped;
+    partial.airlight = viz::Image(2, 2, 3);
+    c = shownContent(*t, partial, "final", -1, {});
+    EXPECT_EQ(c.content, "airlight");
+    c = shownContent(*t, partial, "final", -1, {"airlight"});
+    EXPECT_EQ(c.content, first);
+    EXPECT_EQ(c.index, 1) << "the L_air view shows L_air itself: the final-frame view takes the stage's first view";
+    c = shownContent(*t, partial, "airlight", -1, {"final"});
+    EXPECT_EQ(c.content, "airlight") << "the L_air view keeps L_air";
 }
 
 }  // namespace
