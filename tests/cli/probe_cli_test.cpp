@@ -30,6 +30,13 @@ TEST_F(CliTest, ProbePrintsEachPassAndWritesTheCsv) {
     EXPECT_EQ(passes, (std::vector<std::string>{"compute_alu", "fragment_alu", "blend_rgba32f", "blend_rgba16f", "triangles"}));
 }
 
+TEST_F(CliTest, ProbeHelpListsItsPassesAndOptions) {
+    const RunResult r = run("probe --help");
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    for (const char* word : {"compute_alu", "fragment_alu", "blend_rgba32f", "blend_rgba16f", "triangles", "--iterations", "--out"})
+        EXPECT_NE(r.out.find(word), std::string::npos) << word;
+}
+
 TEST_F(CliTest, ProbeRefusesBadOptionsInOneLine) {
     expectUserError(run("probe --iterations 0"), "--iterations must be a whole number from 1 to 4096");
     expectUserError(run("probe --layers 2.5"), "--layers must be a whole number");
