@@ -80,11 +80,7 @@ Options parseBenchOptions(Args& args) {
         } else if (flag == "--sizes") {
             for (const std::string& item : splitList(args.next(flag), flag)) o.sizes.push_back(parseSize(item));
         } else if (flag == "--runs") {
-            const std::string text = args.next(flag);
-            const double runs = parseNumber(text, flag);
-            if (runs < 1 || runs > 1000 || runs != std::floor(runs))
-                throw InputError("--runs must be a whole number from 1 to 1000, not '" + text + "'");
-            o.runs = int(runs);
+            o.runs = parseWholeNumber(args.next(flag), flag, 1, 1000);
         } else if (flag == "--quick") o.quick = true;
         else if (flag == "--out") o.out = args.next(flag);
         else if (flag == "--set") o.sets.push_back(args.next(flag));

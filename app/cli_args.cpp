@@ -33,6 +33,14 @@ double parseNumber(const std::string& text, const std::string& what) {
     return v;
 }
 
+int parseWholeNumber(const std::string& text, const std::string& flag, int lo, int hi) {
+    const double v = parseNumber(text, flag);
+    if (v < lo || v > hi || v != std::floor(v))
+        throw InputError(flag + " must be a whole number from " + std::to_string(lo) + " to " + std::to_string(hi) +
+                         ", not '" + text + "'");
+    return int(v);
+}
+
 static int parseDimension(const std::string& text, const std::string& whole) {
     if (text.empty() || text.size() > 9 || text.find_first_not_of("0123456789") != std::string::npos)
         throw InputError("size '" + whole + "' must be WIDTHxHEIGHT, e.g. 160x120");

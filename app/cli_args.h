@@ -47,6 +47,8 @@ const std::string* firstRefusal(const std::map<std::string, Refusals>& errors, c
 SettingsByTechnique settingsByTechnique(const std::vector<std::string>& texts, const std::vector<std::string>& techniques,
                                         const std::string& noneHasIt);
 double parseNumber(const std::string& text, const std::string& what);
+// A whole number from lo to hi, else an InputError: "FLAG must be a whole number from LO to HI, not 'TEXT'".
+int parseWholeNumber(const std::string& text, const std::string& flag, int lo, int hi);
 bool isHelpFlag(const std::string& word);
 
 }  // namespace airlight

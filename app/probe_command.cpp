@@ -1,6 +1,5 @@
 #include "probe_command.h"
 
-#include <cmath>
 #include <cstdio>
 #include <filesystem>
 
@@ -9,6 +8,7 @@
 #include "gl/context_info.h"
 #include "gl/throughput_probe.h"
 #include "platform/context_egl.h"
+#include "report/text_output.h"
 #include "run_info.h"
 
 namespace airlight {
@@ -41,15 +41,6 @@ its paper's graphics card would make it, and compute-shaded ones are not.
                    clock, renderer, width, height)
 )";
 
-int wholeNumber(Args& args, const std::string& flag, int lo, int hi) {
-    const std::string text = args.next(flag);
-    const double v = parseNumber(text, flag);
-    if (v < lo || v > hi || v != std::floor(v))
-        throw InputError(flag + " must be a whole number from " + std::to_string(lo) + " to " + std::to_string(hi) +
-                         ", not '" + text + "'");
-    return int(v);
-}
-
 // "21 G fma/s", "1.87 M triangles/s".
 std::string rateText(double perSecond, const std::string& unit) {
     const bool giga = perSecond >= 1e9;
@@ -75,11 +66,11 @@ int runProbeCommand(Args& args) {
             o.width = size.x, o.height = size.y;
             sizeGiven = true;
         } else if (flag == "--iterations") {
-            o.iterations = wholeNumber(args, flag, 1, 4096);
+            o.iterations = parseWholeNumber(args.next(flag), flag, 1, 4096);
             iterationsGiven = true;
-        } else if (flag == "--layers") o.layers = wholeNumber(args, flag, 1, 4096);
-        else if (flag == "--cell") o.cellPixels = wholeNumber(args, flag, 1, 64);
-        else if (flag == "--runs") o.runs = wholeNumber(args, flag, 1, 1000);
+        } else if (flag == "--layers") o.layers = parseWholeNumber(args.next(flag), flag, 1, 4096);
+        else if (flag == "--cell") o.cellPixels = parseWholeNumber(args.next(flag), flag, 1, 64);
+        else if (flag == "--runs") o.runs = parseWholeNumber(args.next(flag), flag, 1, 1000);
         else if (flag == "--out") {
             out = args.next(flag);
             if (std::filesystem::path(out).extension() != ".csv") throw InputError("--out must name a .csv file, not '" + out + "'");
@@ -107,11 +98,13 @@ int runProbeCommand(Args& args) {
         std::snprintf(range, sizeof range, "%.3g-%.3g", p.minMilliseconds, p.maxMilliseconds);
         std::printf("%-14s %10.3f %12s  %-22s  %s\n", p.id.c_str(), p.milliseconds, range,
                     rateText(p.ratePerSecond(), p.unit).c_str(), p.what.c_str());
-        char line[512];
-        std::snprintf(line, sizeof line, "%s,%.6g,%.6g,%.6g,%.6g,%s,%.6g,%s,\"%s\",%d,%d\n", p.id.c_str(), p.milliseconds,
-                      p.minMilliseconds, p.maxMilliseconds, p.work, p.unit.c_str(), p.ratePerSecond(), result.clock.c_str(),
-                      renderer.c_str(), o.width, o.height);
-        csv += line;
+        char figures[160];
+        std::snprintf(figures, sizeof figures, "%.6g,%.6g,%.6g,%.6g,", p.milliseconds, p.minMilliseconds,
+                      p.maxMilliseconds, p.work);
+        char rate[32];
+        std::snprintf(rate, sizeof rate, "%.6g", p.ratePerSecond());
+        csv += p.id + "," + figures + p.unit + "," + rate + "," + viz::report::csvField(result.clock) + "," +
+               viz::report::csvField(renderer) + "," + std::to_string(o.width) + "," + std::to_string(o.height) + "\n";
     }
     const viz::gl::ProbePass* c = result.find("compute_alu");
     const viz::gl::ProbePass* f = result.find("fragment_alu");

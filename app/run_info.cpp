@@ -16,43 +16,49 @@
 
 namespace airlight {
 
-std::vector<std::string> splitList(const std::string& text, const std::string& flag) {
-    std::vector<std::string> items;
-    std::size_t start = 0;
-    while (start <= text.size()) {
-        const std::size_t comma = std::min(text.find(',', start), text.size());
-        const std::string item = text.substr(start, comma - start);
-        if (item.empty()) throw viz::InputError(flag + " '" + text + "' has an empty entry");
-        items.push_back(item);
-        start = comma + 1;
-    }
-    return items;
-}
+namespace {
 
-std::vector<std::string> splitSceneList(const std::string& text, const std::string& flag) {
+// "A,B,,C" -> {"A", "B", "", "C"}.
+std::vector<std::string> commaPieces(const std::string& text) {
     std::vector<std::string> pieces;
     for (std::size_t start = 0; start <= text.size();) {
         const std::size_t comma = std::min(text.find(',', start), text.size());
         pieces.push_back(text.substr(start, comma - start));
         start = comma + 1;
     }
+    return pieces;
+}
+
+// `items`, unless one is empty.
+std::vector<std::string> withoutEmptyEntries(std::vector<std::string> items, const std::string& text,
+                                             const std::string& flag) {
+    for (const std::string& item : items)
+        if (item.empty()) throw viz::InputError(flag + " '" + text + "' has an empty entry");
+    return items;
+}
+
+}  // namespace
+
+std::vector<std::string> splitList(const std::string& text, const std::string& flag) {
+    return withoutEmptyEntries(commaPieces(text), text, flag);
+}
+
+std::vector<std::string> splitSceneList(const std::string& text, const std::string& flag) {
+    const std::vector<std::string> pieces = commaPieces(text);
     std::vector<std::string> items;
     for (std::size_t i = 0; i < pieces.size();) {
         // The longest run of pieces from i that names a file; else piece i alone.
         std::size_t end = i + 1;
-        std::string joined = pieces[i];
+        std::string item = pieces[i], joined = pieces[i];
         for (std::size_t j = i + 1; j < pieces.size(); ++j) {
             joined += "," + pieces[j];
             std::error_code ec;
-            if (std::filesystem::is_regular_file(joined, ec)) end = j + 1;
+            if (std::filesystem::is_regular_file(joined, ec)) item = joined, end = j + 1;
         }
-        std::string item = pieces[i];
-        for (std::size_t j = i + 1; j < end; ++j) item += "," + pieces[j];
-        if (item.empty()) throw viz::InputError(flag + " '" + text + "' has an empty entry");
         items.push_back(item);
         i = end;
     }
-    return items;
+    return withoutEmptyEntries(std::move(items), text, flag);
 }
 
 double median(std::vector<double> v) {

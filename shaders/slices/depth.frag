@@ -5,18 +5,12 @@
 #include "common/host_device.glsl"
 #include "slices/plane_depth.glsl"
 
+#include "slices/pixel_ray.glsl"
+
 layout(binding = kFirstFreeTextureUnit) uniform sampler2D uDistance;  // as plane.frag binds it
-uniform vec3 uForward;
-uniform vec3 uRight;
-uniform vec3 uUp;
-uniform vec2 uSize;
-uniform float uTanHalf;
-uniform float uAspect;
 
 void main() {
-    // The pixel's centre ray as plane.frag forms it.
-    vec2 ndc = 2.0 * gl_FragCoord.xy / uSize - 1.0;
-    vec3 w = normalize(uForward + (ndc.x * uTanHalf * uAspect) * uRight + (ndc.y * uTanHalf) * uUp);
+    vec3 w = pixelRay(gl_FragCoord.xy);  // the ray plane.frag tests d along
     float d = texelFetch(uDistance, ivec2(gl_FragCoord.xy), 0).r;
     gl_FragDepth = 0.5 * ndcDepthAtView(d * dot(w, uForward)) + 0.5;
 }

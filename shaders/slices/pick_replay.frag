@@ -13,12 +13,7 @@ uniform int uPickBase;     // this draw set's first record
 uniform int uColumns;      // the replay target's width (record k at texel (k mod width, k / width))
 uniform int uSeedRow;      // >= 0: the seed draw of that row; -1: records
 uniform ivec2 uPickPixel;  // GL window coordinates
-uniform vec2 uSize;
-uniform float uTanHalf;
-uniform float uAspect;
-uniform vec3 uForward;
-uniform vec3 uRight;
-uniform vec3 uUp;
+#include "slices/pixel_ray.glsl"  // uForward, uRight, uUp, uSize, uTanHalf, uAspect, pixelRay
 #include "slices/slab.glsl"  // uSpacing, slabLength
 uniform mat4 uLightMatrix;  // eye-relative world -> the light's clip space
 uniform int uClipLight;     // 1: the planes were clipped to the light frustum
@@ -46,8 +41,7 @@ void main() {
     ivec2 texel = ivec2(gl_FragCoord.xy);
     if (vStatus == kPickAdded || vStatus == kPickBeyondSurface || texel.y * uColumns + texel.x != record) return;
     // The pixel centre's ray, as plane.frag computes it.
-    vec2 ndc = 2.0 * (vec2(uPickPixel) + 0.5) / uSize - 1.0;
-    vec3 w = normalize(uForward + (ndc.x * uTanHalf * uAspect) * uRight + (ndc.y * uTanHalf) * uUp);
+    vec3 w = pixelRay(vec2(uPickPixel) + 0.5);
     float t = vDepth / dot(w, uForward);
     vec3 p = t * w;
     float status = kPickNone;

@@ -29,12 +29,7 @@ layout(binding = kFirstFreeTextureUnit + 1) uniform sampler2D uNoise;  // tileab
 uniform int uLight;           // index into gLights, or -1: every unbounded light (see main)
 uniform int uLightCount;
 uniform int uBoxedDirectional;  // 1: directional lights are drawn boxed, one by one
-uniform vec3 uForward;
-uniform vec3 uRight;
-uniform vec3 uUp;
-uniform vec2 uSize;           // image size in pixels
-uniform float uTanHalf;       // tan(yfov / 2)
-uniform float uAspect;
+#include "slices/pixel_ray.glsl"  // uForward, uRight, uUp, uSize, uTanHalf, uAspect, pixelRay
 #include "slices/slab.glsl"    // uSpacing, slabLength
 #include "common/medium.glsl"  // uSigmaS, uSigmaT, uG
 #include "common/airlight_sample.glsl"
@@ -261,11 +256,9 @@ vec3 slabIntegral(GpuLight L, vec3 w, float t0, float t1, float d) {
 void main() {
     WORK_PIXEL(gl_FragCoord.xy);
     WORK_COUNT(kWorkFragments, 1);
-    // The sample point is where this pixel's centre ray (scene::pixelRay: GL row 0 is the bottom, so
-    // ndc.y = 2 (y + 1/2) / H - 1) meets the plane dot(p, forward) = s_i. Computed per pixel rather than
-    // interpolated, so it does not depend on how clipping re-triangulated the quad.
-    vec2 ndc = 2.0 * gl_FragCoord.xy / uSize - 1.0;
-    vec3 w = normalize(uForward + (ndc.x * uTanHalf * uAspect) * uRight + (ndc.y * uTanHalf) * uUp);
+    // The sample point is where this pixel's centre ray meets the plane dot(p, forward) = s_i. Computed
+    // per pixel rather than interpolated, so it does not depend on how clipping re-triangulated the quad.
+    vec3 w = pixelRay(gl_FragCoord.xy);
     float t = vDepth / dot(w, uForward);
     vec3 p = t * w;
 #ifdef COUNT_OUTSIDE

@@ -60,6 +60,16 @@ void SlicesTechnique::allocateTargets(int width, int height, SlicesAccum accum) 
     mDepthFramebuffer.attachDepth(mDepth);
 }
 
+void SlicesTechnique::setPixelRay(const gl::Program& program, const CameraBasis& basis, const FrameInput& input) {
+    const scene::Camera& cam = input.scene->camera;
+    program.set("uForward", glm::vec3(basis.forward));
+    program.set("uRight", glm::vec3(basis.right));
+    program.set("uUp", glm::vec3(basis.up));
+    program.set("uSize", glm::vec2(float(input.width), float(input.height)));
+    program.set("uTanHalf", float(std::tan(cam.yfov * 0.5)));
+    program.set("uAspect", float(scene::aspectOf(cam, input.width, input.height)));
+}
+
 void SlicesTechnique::writeSurfaceDepth(const FrameInput& input, const CameraBasis& basis) {
     if (!mDepthProgram)
         mDepthProgram = gl::Program::compile(
@@ -67,12 +77,7 @@ void SlicesTechnique::writeSurfaceDepth(const FrameInput& input, const CameraBas
     const scene::Camera& cam = input.scene->camera;
     mDepthProgram.use();
     mDepthProgram.set("uDepthFromView", depthFromView(cam, input.width, input.height));
-    mDepthProgram.set("uForward", glm::vec3(basis.forward));
-    mDepthProgram.set("uRight", glm::vec3(basis.right));
-    mDepthProgram.set("uUp", glm::vec3(basis.up));
-    mDepthProgram.set("uSize", glm::vec2(float(input.width), float(input.height)));
-    mDepthProgram.set("uTanHalf", float(std::tan(cam.yfov * 0.5)));
-    mDepthProgram.set("uAspect", float(scene::aspectOf(cam, input.width, input.height)));
+    setPixelRay(mDepthProgram, basis, input);
     mView.surface().distance().bindUnit(render::hd::kFirstFreeTextureUnit);  // where the planes read it too
     mDepthFramebuffer.bind();
     glViewport(0, 0, input.width, input.height);
@@ -128,12 +133,8 @@ void SlicesTechnique::drawPlanes(const scene::Scene& scene, const FrameInput& in
 
     program.use();
     setBoth("uViewProj", render::eyeRelativeViewProjection(cam, input.width, input.height));
-    setBoth("uRight", glm::vec3(basis.right));
-    setBoth("uUp", glm::vec3(basis.up));
-    setBoth("uForward", glm::vec3(basis.forward));
-    setBoth("uSize", glm::vec2(float(input.width), float(input.height)));
-    setBoth("uTanHalf", float(std::tan(cam.yfov * 0.5)));
-    setBoth("uAspect", float(scene::aspectOf(cam, input.width, input.height)));
+    setPixelRay(program, basis, input);
+    if (pick) setPixelRay(*pick, basis, input);
     mMedium.bind(scene.medium);
     mLastStoreScale = storeScale(t, s);
     setBoth("uStoreScale", float(mLastStoreScale));

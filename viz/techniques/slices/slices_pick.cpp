@@ -29,12 +29,7 @@ void SlicesTechnique::replayPick(const FrameInput& input, const CameraBasis& bas
     program.set("uColumns", columns);
     program.set("uSeedRow", -1);
     program.set("uPickPixel", glm::ivec2(mPickPixel.x, input.height - 1 - mPickPixel.y));
-    program.set("uSize", glm::vec2(float(input.width), float(input.height)));
-    program.set("uTanHalf", float(std::tan(cam.yfov * 0.5)));
-    program.set("uAspect", float(scene::aspectOf(cam, input.width, input.height)));
-    program.set("uForward", glm::vec3(basis.forward));
-    program.set("uRight", glm::vec3(basis.right));
-    program.set("uUp", glm::vec3(basis.up));
+    setPixelRay(program, basis, input);
     program.set("uUserClip", t.userClip ? 1 : 0);
     const double eyeY = cam.position.y;
     program.set("uUserPlane0", glm::vec4(0, 1, 0, float(eyeY - mSettings.clipYMin)));

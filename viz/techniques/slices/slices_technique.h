@@ -197,6 +197,8 @@ private:
     gl::Program mDepthProgram;
     gl::Framebuffer mDepthFramebuffer;
     void writeSurfaceDepth(const FrameInput& input, const CameraBasis& basis);
+    // The uniforms of slices/pixel_ray.glsl (the camera basis, the image size, the field of view).
+    static void setPixelRay(const gl::Program& program, const CameraBasis& basis, const FrameInput& input);
     double mLastStoreScale = 1.0;
     std::vector<int> mPlanesUsed;                         // per drawn light, after distance scaling
     render::MeshView mMeshView;
