@@ -8,7 +8,8 @@
 # Usage: scripts/gpu_measure.sh [SECONDS]   (a budget for the whole run, default 540)
 # Environment: STEPS (which steps, comma-separated, default all: plot,probe,bench,variants,ablate,report,quick),
 # SCENES (default all six), TECHNIQUES (default all six GPU techniques), SIZES (the size
-# axis, default 480x270,1920x1080), REPORT_SCENES (default colonnade), REPORT_SIZE (default 1920x1080).
+# axis, default 480x270,1920x1080), REPORT_SCENES (default colonnade), REPORT_SIZE (default 1920x1080),
+# REPORT_TECHNIQUES (default every one but the reference).
 # Each scene and technique is its own bench run with its own time limit, so that one slow pair leaves
 # the others' figures.
 set -uo pipefail
@@ -126,7 +127,9 @@ pack
 # 2. Error against time at the report's size (the reference on the CPU's threads, cached on disk).
 if want report; then
 say "== report ($(left) s left)"
+report_techniques=(); [ -n "${REPORT_TECHNIQUES:-}" ] && report_techniques=(--techniques "$REPORT_TECHNIQUES")
 timeout $(( $(left) - 70 )) "$A" report --scenes "${REPORT_SCENES:-colonnade}" --size "${REPORT_SIZE:-1920x1080}" --quick --runs 3 \
+    "${report_techniques[@]}" \
     --out "$work/report" >"$work/report.txt" 2>"$work/report.err"
 say "exit $?"
 pack
