@@ -38,7 +38,7 @@ CommonOptions parseOptions(Args& args, const std::string& command, const std::st
             o.sizeGiven = true;
         } else if (flag == "--out") o.out = args.next(flag);
         else if (flag == "--layer") o.layer = args.next(flag);
-        else if (flag == "--layer-index") o.layerIndex = int(parseNumber(args.next(flag), flag));
+        else if (flag == "--layer-index") o.layerIndex = parseWholeNumber(args.next(flag), flag, 0, 1 << 16);
         else if (flag == "--set") o.sets.push_back(args.next(flag));
         else if (flag == "--stop-after") o.request.stopAfter = args.next(flag);
         else if (flag == "--preset") {
@@ -63,24 +63,14 @@ CommonOptions parseOptions(Args& args, const std::string& command, const std::st
         }
         else if (flag == "--screenshot") o.screenshot = args.next(flag);
         else if (flag == "--frames") {
-            const double frames = parseNumber(args.next(flag), flag);
-            if (frames != std::floor(frames) || frames < 1 || frames > double(maxFrames))
-                throw InputError("--frames must be a whole number from 1 to " + std::to_string(maxFrames));
-            o.frames = int(frames);
+            o.frames = parseWholeNumber(args.next(flag), flag, 1, maxFrames);
             o.framesGiven = true;
         } else if (flag == "--path") o.path = args.next(flag);
         else if (flag == "--path-frames") {
-            const double frames = parseNumber(args.next(flag), flag);
-            if (frames != std::floor(frames) || frames < 2 || frames > 100000)
-                throw InputError("--path-frames must be a whole number from 2 to 100000");
-            o.pathFrames = int(frames);
+            o.pathFrames = parseWholeNumber(args.next(flag), flag, 2, 100000);
         }
         else if (flag == "--exr") o.exr = true;
-        else if (flag == "--fps") {
-            const double fps = parseNumber(args.next(flag), flag);
-            if (fps != std::floor(fps) || fps < 1 || fps > 100) throw InputError("--fps must be a whole number from 1 to 100");
-            o.fps = int(fps);
-        }
+        else if (flag == "--fps") o.fps = parseWholeNumber(args.next(flag), flag, 1, 100);
     }
     // Read once the technique is known: a named value's number is that technique's.
     for (const std::string& text : o.sets) parseSetting(text, o.request.settings, o.request.technique);

@@ -99,6 +99,12 @@ viz::Image RenderJob::layerImage(const std::string& layer, int arrayLayer) const
         for (const auto& i : mOutput.intermediates) known += ", " + i.id;
         throw InputError("unknown layer '" + layer + "' (this run produced: " + known + ")");
     }
+    const int layers = found->glTexture && !found->image ? viz::gl::textureLayerCount(found->glTexture) : 1;
+    if (arrayLayer >= layers)
+        throw InputError("--layer-index " + std::to_string(arrayLayer) + " is past the last layer of '" + layer +
+                         "' (" + (layers == 1 ? std::string("it has one layer, 0") :
+                                  "it has " + std::to_string(layers) + " layers, 0 to " + std::to_string(layers - 1)) +
+                         ")");
     if (found->image) return *found->image;
     if (found->glTexture) return viz::gl::readTexture(found->glTexture, 0, arrayLayer);
     throw InputError("intermediate '" + layer + "' is a " + viz::viewKindName(found->kind) +

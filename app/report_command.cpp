@@ -119,20 +119,10 @@ Options parseReportOptions(Args& args) {
             o.suite = args.next(flag);
             if (o.suite != "stiff") throw InputError("--suite '" + o.suite + "' is not known (known: stiff)");
         }
-        else if (flag == "--runs") {
-            const double runs = parseNumber(args.next(flag), flag);
-            if (runs < 1 || runs > 1000 || runs != std::floor(runs))
-                throw InputError("--runs must be a whole number from 1 to 1000, not '" + std::to_string(runs) + "'");
-            o.runs = int(runs);
-        } else if (flag == "--temporal") o.temporal = true;
-        else if (flag == "--frames") {
-            const std::string text = args.next(flag);
-            const double frames = parseNumber(text, flag);
-            if (frames < 2 || frames > kMaxTemporalFrames || frames != std::floor(frames))
-                throw InputError("--frames must be a whole number from 2 to " + std::to_string(kMaxTemporalFrames) +
-                                 ", not '" + text + "'");
-            o.frames = int(frames);
-        } else if (flag == "--path") o.path = args.next(flag);
+        else if (flag == "--runs") o.runs = parseWholeNumber(args.next(flag), flag, 1, 1000);
+        else if (flag == "--temporal") o.temporal = true;
+        else if (flag == "--frames") o.frames = parseWholeNumber(args.next(flag), flag, 2, kMaxTemporalFrames);
+        else if (flag == "--path") o.path = args.next(flag);
         else throw InputError("unknown option '" + flag + "' for 'report' (run 'airlight report --help')");
     }
     if (o.out.empty()) throw InputError("report needs --out DIR (the folder to write the report into)");

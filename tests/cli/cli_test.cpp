@@ -141,6 +141,27 @@ TEST_F(CliTest, RenderWritesFiniteExrOfTheRightSize) {
     }
 }
 
+// --layer-index picks a cube map's face: a point light's shadow map has six, faces 0 (+X) and 5 (-Z) see
+// different parts of the scene, and a seventh is a one-line error that names the range.
+TEST_F(CliTest, LayerIndexPicksACubeFaceAndNamesTheRangeWhenPastIt) {
+    const std::string render =
+        "render --scene stiff/ray-near-light --technique raymarch --size 16x12 --layer raymarch.shadow_map --quiet ";
+    std::vector<viz::Image> faces;
+    for (const int face : {0, 5}) {
+        const fs::path out = path("face" + std::to_string(face) + ".exr");
+        const RunResult r = run(render + "--layer-index " + std::to_string(face) + " --out " + out.string());
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        faces.push_back(viz::readImage(out.string()));
+        EXPECT_TRUE(allFinite(faces.back()));
+    }
+    ASSERT_EQ(faces[0].pixels.size(), faces[1].pixels.size());
+    EXPECT_NE(faces[0].pixels, faces[1].pixels) << "faces 0 and 5 read back the same image";
+    const fs::path out = path("face6.exr");
+    expectUserError(run(render + "--layer-index 6 --out " + out.string()),
+                    "--layer-index 6 is past the last layer of 'raymarch.shadow_map' (it has 6 layers, 0 to 5)");
+    EXPECT_FALSE(fs::exists(out));
+}
+
 // `voxels=AxBxC` sets vsv's per-axis parameters in order: the same image as setting each, and a
 // different one from the cube `voxels=64` (so the axes really took effect).
 TEST_F(CliTest, PerAxisSettingSetsEachComponent) {
@@ -437,6 +458,19 @@ TEST_F(CliTest, BadInputIsAOneLineErrorWithExitCode2AndNoOutput) {
                                             path("x.jpg").string(), "x.jpg"});
     cases.push_back({"unknown layer", "render --scene grate --technique raymarch --size 8x8 --layer nope.layer --out " +
                                           out, "nope.layer"});
+    // A 2D shadow map has layer 0 alone; an image a technique made on the CPU has one layer too.
+    cases.push_back({"layer index past the last layer",
+                     "render --scene grate --technique vsv --size 8x8 --layer vsv.shadow_map --layer-index 1 --out " + out,
+                     "--layer-index 1 is past the last layer of 'vsv.shadow_map' (it has one layer, 0)"});
+    cases.push_back({"layer index of a CPU image",
+                     "render --scene grate --technique vsv --size 8x8 --layer vsv.voxels --layer-index 3 --out " + out,
+                     "--layer-index 3 is past the last layer of 'vsv.voxels'"});
+    cases.push_back({"fractional layer index",
+                     "render --scene grate --technique vsv --size 8x8 --layer vsv.shadow_map --layer-index 2.5 --out " + out,
+                     "--layer-index must be a whole number from 0 to 65536, not '2.5'"});
+    cases.push_back({"negative layer index",
+                     "render --scene grate --technique vsv --size 8x8 --layer vsv.shadow_map --layer-index -3 --out " + out,
+                     "--layer-index must be a whole number"});
     for (const Case& c : cases) {
         SCOPED_TRACE(c.name);
         const RunResult r = run(c.args);

@@ -18,16 +18,20 @@ GLint levelParameter(GLuint texture, int level, GLenum pname) {
 
 }  // namespace
 
-Image readTexture(GLuint texture, int level, int layer, int wantChannels) {
-    VIZ_CHECK(texture != 0 && glIsTexture(texture), "readTexture: not a texture name");
+int textureLayerCount(GLuint texture, int level) {
+    VIZ_CHECK(texture != 0 && glIsTexture(texture), "textureLayerCount: not a texture name");
     GLint target = 0;
     glGetTextureParameteriv(texture, GL_TEXTURE_TARGET, &target);
+    if (target == GL_TEXTURE_CUBE_MAP) return 6;
+    return std::max(levelParameter(texture, level, GL_TEXTURE_DEPTH), 1);
+}
+
+Image readTexture(GLuint texture, int level, int layer, int wantChannels) {
+    VIZ_CHECK(texture != 0 && glIsTexture(texture), "readTexture: not a texture name");
     const int width = levelParameter(texture, level, GL_TEXTURE_WIDTH);
     const int height = levelParameter(texture, level, GL_TEXTURE_HEIGHT);
-    const int depth = levelParameter(texture, level, GL_TEXTURE_DEPTH);
     const int z = layer < 0 ? 0 : layer;
-    const int layerCount = target == GL_TEXTURE_CUBE_MAP ? 6 : depth;
-    VIZ_CHECK(z < std::max(layerCount, 1), "readTexture: layer out of range");
+    VIZ_CHECK(z < textureLayerCount(texture, level), "readTexture: layer out of range");
 
     // The format decides channels and how to read: per-channel sizes and component types.
     const bool isDepth = levelParameter(texture, level, GL_TEXTURE_DEPTH_SIZE) > 0;

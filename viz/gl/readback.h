@@ -16,4 +16,7 @@ namespace viz::gl {
 Image readTexture(GLuint texture, int level = 0, int layer = -1, int channels = 0);
 Image readTexture(const Texture& texture, int level = 0, int layer = -1, int channels = 0);
 
+// The layers readTexture can read at `level`: 6 for a cube map, the array layers or 3D slices, else 1.
+int textureLayerCount(GLuint texture, int level = 0);
+
 }  // namespace viz::gl
