@@ -20,6 +20,7 @@
 #include "core/image_io.h"
 #include "debug/technique.h"
 #include "gl/gl.h"
+#include "gl/throughput_probe.h"
 #include "gl/work_counters.h"
 #include "platform/context_egl.h"
 #include "plot/plot.h"
@@ -339,7 +340,12 @@ int runReportCommand(Args& args, const std::string& commandLine) {
     }
     const std::filesystem::path dir = createOutputFolder(o.out);
     auto context = viz::HeadlessContext::create(false);
-    const viz::report::ReportMeta meta = describeRun(o, commandLine);
+    viz::report::ReportMeta meta = describeRun(o, commandLine);
+    // Before any technique runs: what this renderer's fragment passes pay against its compute passes.
+    const viz::gl::ArithmeticRatio arithmetic = viz::gl::measureArithmeticRatio();
+    meta.fragmentOverCompute = arithmetic.fragmentOverCompute;
+    meta.arithmeticNote = viz::gl::describeArithmeticRatio(arithmetic);
+    if (arithmetic.fragmentOverCompute > 2.0) std::fprintf(stderr, "note: %s\n", meta.arithmeticNote.c_str());
 
     const viz::ui::FontAtlas font = viz::ui::FontAtlas::bake(viz::ui::FontAtlas::defaultFontPath(), 15.0f);
     std::vector<viz::report::ReportRow> rows;

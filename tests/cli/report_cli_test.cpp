@@ -65,6 +65,10 @@ TEST_F(CliTest, ReportWritesResultsPlotsImagesAndAPageThatLoads) {
     }
     EXPECT_EQ(int(settings.size()), rows);
     EXPECT_NE(j.at("meta").at("renderer").get<std::string>().find("OpenGL"), std::string::npos);
+    // The renderer's fragment against compute arithmetic, measured before the techniques, and on the page.
+    const double fragmentOverCompute = j.at("meta").at("fragment_over_compute").get<double>();
+    EXPECT_TRUE(std::isfinite(fragmentOverCompute) && fragmentOverCompute > 0.0) << fragmentOverCompute;
+    EXPECT_NE(readFile(out / "index.html").find("Renderer: the same arithmetic takes"), std::string::npos);
     // What the plan saves: grate has no point or area light, so raymarch leaves the cube-map code out.
     ASSERT_EQ(j.at("plan_savings").size(), 1u);
     const auto& saving = j.at("plan_savings")[0];

@@ -5,7 +5,9 @@
 // that does not divide them. Options out of range are refused.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <stdexcept>
+#include <string>
 
 #include "gl/gl_test_fixture.h"
 #include "gl/throughput_probe.h"
@@ -56,6 +58,44 @@ TEST_F(ThroughputProbeTest, EveryPassDoesItsWorkOnEveryPixel) {
     // The counts the rates divide: the grid's cells round up (23 x 15 cells of 3 px over 67 x 45).
     EXPECT_EQ(r.find("triangles")->work, 2.0 * 23 * 15);
     EXPECT_EQ(r.find("blend_rgba32f")->work, 67.0 * 45 * 5);
+}
+
+// The quick ratio a report and a bench measure first: the two arithmetic passes alone (still exact on
+// every pixel), their steps raised until the compute pass is long enough to time or the steps reach
+// their limit, and a line that explains the ratio only where it handicaps the fragment-shaded passes.
+TEST_F(ThroughputProbeTest, TheArithmeticRatioRunsTheTwoArithmeticPassesAndExplainsALargeRatio) {
+    gl::ProbeOptions o;
+    o.width = 19, o.height = 7, o.iterations = 11, o.runs = 1, o.arithmeticOnly = true;
+    const gl::ProbeResult r = gl::runThroughputProbe(o, true);
+    ASSERT_EQ(r.passes.size(), 2u);
+    ASSERT_EQ(r.images.size(), 2u);
+    int wrong = 0;
+    for (int row = 0; row < o.height; ++row)
+        for (int x = 0; x < o.width; ++x)
+            for (int c = 0; c < 4; ++c)
+                for (const Image& image : r.images)
+                    wrong += image.at(x, row, c) != gl::probeAluExpected(x, o.height - 1 - row, c, o.iterations);
+    EXPECT_EQ(wrong, 0);
+
+    const gl::ArithmeticRatio ratio = gl::measureArithmeticRatio();
+    EXPECT_TRUE(std::isfinite(ratio.fragmentOverCompute));
+    EXPECT_GT(ratio.fragmentOverCompute, 0.0);
+    EXPECT_GE(ratio.iterations, 64);
+    EXPECT_LE(ratio.iterations, 4096);
+    EXPECT_TRUE(ratio.computeMilliseconds >= 0.5 || ratio.iterations == 4096)
+        << ratio.computeMilliseconds << " ms at " << ratio.iterations << " steps";
+    // Framebuffer and blending as a technique expects them after it.
+    GLint drawFramebuffer = -1;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &drawFramebuffer);
+    EXPECT_EQ(drawFramebuffer, 0);
+    EXPECT_FALSE(glIsEnabled(GL_BLEND));
+
+    const std::string large = gl::describeArithmeticRatio({32.4, 1.0, 32.4, 4096});
+    EXPECT_NE(large.find("32.4x as long in a fragment shader"), std::string::npos) << large;
+    EXPECT_NE(large.find("slices' planes, polyvol's volume"), std::string::npos) << large;
+    const std::string even = gl::describeArithmeticRatio({0.99, 6.0, 5.94, 64});
+    EXPECT_NE(even.find("0.99x as long"), std::string::npos) << even;
+    EXPECT_EQ(even.find("slices"), std::string::npos) << even;
 }
 
 TEST_F(ThroughputProbeTest, OptionsOutOfRangeAreRefused) {

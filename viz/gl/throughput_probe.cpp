@@ -1,6 +1,7 @@
 #include "gl/throughput_probe.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <functional>
 #include <stdexcept>
 
@@ -65,8 +66,6 @@ ProbeResult runThroughputProbe(const ProbeOptions& o, bool keepImages) {
     const Program compute = Program::compile({.stages = {"probe/alu.comp"}, .label = "probe.compute_alu"});
     const Program fragment =
         Program::compile({.stages = {"render/fullscreen.vert", "probe/alu.frag"}, .label = "probe.fragment_alu"});
-    const Program layer = Program::compile({.stages = {"render/fullscreen.vert", "probe/flat.frag"}, .label = "probe.layer"});
-    const Program grid = Program::compile({.stages = {"probe/grid.vert", "probe/flat.frag"}, .label = "probe.grid"});
     for (const Program* p : {&compute, &fragment}) {
         p->set("uIterations", o.iterations);
         p->set("uA", 1.0f);
@@ -119,9 +118,14 @@ ProbeResult runThroughputProbe(const ProbeOptions& o, bool keepImages) {
     add("fragment_alu", "arithmetic per pixel, fragment shader (one full-screen triangle)",
         timeRuns(clock, o.runs, nothing, [&] { glDrawArrays(GL_TRIANGLES, 0, 3); }), fmas, "fma");
     keep(rgba32f);
+    if (o.arithmeticOnly) {
+        Framebuffer::bindDefault();
+        return result;
+    }
 
     // 3, 4. Full-screen layers added into a float target, as slices' planes are: the blending units' cost.
     // The colour 1/256 is exact in both formats and so is the sum of up to 4096 layers in RGBA32F.
+    const Program layer = Program::compile({.stages = {"render/fullscreen.vert", "probe/flat.frag"}, .label = "probe.layer"});
     glEnable(GL_BLEND);
     glBlendEquation(GL_FUNC_ADD);
     glBlendFunc(GL_ONE, GL_ONE);
@@ -141,6 +145,7 @@ ProbeResult runThroughputProbe(const ProbeOptions& o, bool keepImages) {
     // left out): the rasteriser's triangle rate.
     const int cellsX = (o.width + o.cellPixels - 1) / o.cellPixels, cellsY = (o.height + o.cellPixels - 1) / o.cellPixels;
     const double triangles = 2.0 * cellsX * cellsY;
+    const Program grid = Program::compile({.stages = {"probe/grid.vert", "probe/flat.frag"}, .label = "probe.grid"});
     fb32.bind();
     grid.use();
     grid.set("uCells", glm::ivec2(cellsX, cellsY));
@@ -154,6 +159,32 @@ ProbeResult runThroughputProbe(const ProbeOptions& o, bool keepImages) {
     glDisable(GL_BLEND);
     Framebuffer::bindDefault();
     return result;
+}
+
+ArithmeticRatio measureArithmeticRatio() {
+    ProbeOptions o{.width = 512, .height = 256, .iterations = 64, .runs = 3, .arithmeticOnly = true};
+    constexpr double kEnoughMilliseconds = 0.5;
+    for (;;) {
+        const ProbeResult r = runThroughputProbe(o);
+        const double compute = r.find("compute_alu")->milliseconds, fragment = r.find("fragment_alu")->milliseconds;
+        if (compute >= kEnoughMilliseconds || o.iterations >= 4096 || !(compute > 0.0)) {
+            const double ratio = compute > 0.0 ? fragment / compute : 0.0;
+            return {ratio, compute, fragment, o.iterations};
+        }
+        // Aim for twice the threshold, at least 4x the steps a try: at most four tries from 64 to 4096.
+        o.iterations = std::min(4096, std::max(o.iterations * 4, int(o.iterations * 2.0 * kEnoughMilliseconds / compute)));
+    }
+}
+
+std::string describeArithmeticRatio(const ArithmeticRatio& r) {
+    char head[160];
+    std::snprintf(head, sizeof head, "the same arithmetic takes %.3gx as long in a fragment shader as in a compute shader here",
+                  r.fragmentOverCompute);
+    if (!(r.fragmentOverCompute > 2.0)) return head;
+    return std::string(head) +
+           ": the techniques' fragment-shaded passes (every surface pass, slices' planes, polyvol's volume) pay that "
+           "against the compute passes (raymarch's march, minmax, vsv and ivsv), a handicap a graphics card does not have "
+           "(airlight probe)";
 }
 
 }  // namespace viz::gl

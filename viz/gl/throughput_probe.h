@@ -20,6 +20,7 @@ struct ProbeOptions {
     int layers = 128;       // full-screen layers per blending pass (slices' default plane count)
     int cellPixels = 2;     // the triangle grid's cell, pixels a side (two triangles a cell)
     int runs = 5;           // timed runs per pass, after one warm-up run
+    bool arithmeticOnly = false;  // the two arithmetic passes alone
 };
 
 struct ProbePass {
@@ -44,6 +45,21 @@ struct ProbeResult {
 
 // Needs a current GL 4.5 context. Throws std::invalid_argument for options out of range.
 ProbeResult runThroughputProbe(const ProbeOptions& options, bool keepImages = false);
+
+// How many times as long the same arithmetic takes in a fragment shader as in a compute shader on the
+// current renderer, measured quickly enough for the start of a report or a bench: 512x256 pixels, 64
+// steps a pixel, the steps raised (to at most 4096) until the compute pass takes 0.5 ms, so that a GPU's
+// fixed cost per pass does not set the ratio. Needs a current GL 4.5 context; leaves blending off and
+// the default framebuffer bound.
+struct ArithmeticRatio {
+    double fragmentOverCompute = 0.0;
+    double computeMilliseconds = 0.0, fragmentMilliseconds = 0.0;
+    int iterations = 0;
+};
+ArithmeticRatio measureArithmeticRatio();
+
+// One line for people: the ratio, and above 2 what it means for the techniques' fragment-shaded passes.
+std::string describeArithmeticRatio(const ArithmeticRatio& ratio);
 
 // The value probe/alu.glsl gives pixel (x, y) (GL window coordinates) with a = 1, b = 1/1024: exact.
 float probeAluExpected(int x, int y, int channel, int iterations);

@@ -106,7 +106,9 @@ void writeBenchHtml(const std::string& path, const BenchMeta& meta, const std::v
     h << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>Airlight bench</title><style>" << kPageStyle << kBenchStyle
       << "</style></head><body>\n<h1>Airlight bench: how each technique's cost grows</h1>\n<p class=\"note\">"
       << escapeHtml(meta.date) << " &middot; <code>" << escapeHtml(meta.command) << "</code><br>machine: "
-      << escapeHtml(meta.machine) << "<br>renderer: " << escapeHtml(meta.renderer) << "<br>clock: " << escapeHtml(meta.clock)
+      << escapeHtml(meta.machine) << "<br>renderer: " << escapeHtml(meta.renderer)
+      << (meta.arithmeticNote.empty() ? std::string() : "; " + escapeHtml(meta.arithmeticNote))
+      << "<br>clock: " << escapeHtml(meta.clock)
       << "; every time is the median of " << meta.runs << " runs after one warm-up run"
       << (meta.quick ? " (--quick: fewer points per axis)" : "") << ".<br>" << escapeHtml(meta.fixed) << "</p>\n"
       << "<p>Each axis varies one kind of work and keeps everything else at its default. The exponent k is the slope "

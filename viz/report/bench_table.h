@@ -53,6 +53,7 @@ std::vector<BenchFit> fitSeries(const std::vector<BenchRow>& rows);
 
 struct BenchMeta {
     std::string date, command, machine, renderer, clock;
+    std::string arithmeticNote;  // gl::describeArithmeticRatio's line ("": not measured)
     int runs = 0;
     bool quick = false;
     std::string fixed;  // what stayed fixed, in words

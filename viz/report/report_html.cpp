@@ -117,6 +117,7 @@ void writeHtml(const std::string& path, const ReportMeta& meta, const std::vecto
       << escapeHtml(meta.renderer) << " &middot; " << meta.width << "&times;" << meta.height << " &middot; median of "
       << meta.runs << " runs after one warm-up" << (meta.quick ? " &middot; quick sweep" : "")
       << (meta.referenceSettings.empty() ? std::string() : " &middot; reference with " + escapeHtml(meta.referenceSettings))
+      << (meta.arithmeticNote.empty() ? std::string() : "<br>Renderer: " + escapeHtml(meta.arithmeticNote) + ".")
       << "<br><code>"
       << escapeHtml(meta.command) << "</code></p>\n";
     h << "<p class=\"note\">Error: L_air against the reference (Embree ray tracing and adaptive quadrature, cached). "

@@ -218,6 +218,7 @@ void writeJson(const std::string& path, const ReportMeta& meta, const std::vecto
                  {"renderer", meta.renderer}, {"width", meta.width},     {"height", meta.height},
                  {"runs", meta.runs},         {"quick", meta.quick},
                  {"reference_settings", meta.referenceSettings},
+                 {"fragment_over_compute", meta.fragmentOverCompute},
                  {"error_of", "L_air (RGB radiance) against the reference technique's L_air"},
                  {"tone_map", "PSNR on v*k/(1+v*k), k = 0.18 / mean of the reference, peak 1"},
                  {"relative_p999", "99.9th percentile of sum_c|t-r| / max(sum_c|r|, 0.01 * mean sum_c|r|)"},

@@ -84,6 +84,10 @@ struct ReportMeta {
     std::string command;    // the command line
     std::string machine;    // host name, CPU model, core count
     std::string renderer;   // GL_RENDERER and GL_VERSION
+    // gl::measureArithmeticRatio: fragment over compute time for the same arithmetic (0: not measured),
+    // and gl::describeArithmeticRatio's line
+    double fragmentOverCompute = 0.0;
+    std::string arithmeticNote;
     int width = 0, height = 0, runs = 0;
     bool quick = false;
     std::string referenceSettings;  // the reference's settings that differ from its defaults ("" = none)
