@@ -46,7 +46,13 @@ CommonOptions parseOptions(Args& args, const std::string& command, const std::st
             if (o.preset != "paper" && o.preset != "default")
                 throw InputError("--preset '" + o.preset + "': expected 'paper' or 'default'");
         }
-        else if (flag == "--exposure") o.exposure = args.next(flag);
+        else if (flag == "--exposure") {
+            // A scale: 0 or less would write a black image, with no word of why.
+            o.exposure = args.next(flag);
+            if (o.exposure != "auto" && !(parseNumber(o.exposure, flag) > 0.0))
+                throw InputError("--exposure must be auto or a scale above 0 (1 writes the values as they are), not '" +
+                                 o.exposure + "'");
+        }
         else if (flag == "--quiet") o.quiet = true;
         else if (flag == "--no-default-light") o.request.load.defaultLight = false;
         else if (flag == "--strict") o.strict = true;

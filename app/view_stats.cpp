@@ -111,6 +111,15 @@ ValueRange percentileRange(std::vector<float> values, double lower, double upper
     r.lo = at(lower);
     r.hi = at(upper);
     r.valid = true;
+    // A range that collapses to a point maps every other value to one end: a plane that adds light on 2 %
+    // of the pixels, or a difference on a few, showed all white. Then the smallest and largest value,
+    // and none where the image holds one value (the caller keeps its declared range).
+    if (!(r.hi > r.lo)) {
+        const auto [smallest, largest] = std::minmax_element(values.begin(), values.end());
+        r.lo = *smallest;
+        r.hi = *largest;
+        r.valid = r.hi > r.lo;
+    }
     return r;
 }
 

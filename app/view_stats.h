@@ -45,7 +45,8 @@ struct ValueRange {
 };
 // Smallest and largest finite value.
 ValueRange finiteRange(const std::vector<float>& values);
-// The `lower` and `upper` quantiles (in [0, 1]) of the finite values, nearest rank.
+// The `lower` and `upper` quantiles (in [0, 1]) of the finite values, nearest rank. Where they are equal
+// (most values the same), the smallest and largest value; not valid where every value is the same.
 ValueRange percentileRange(std::vector<float> values, double lower, double upper);
 
 // The range the shader maps from on a log scale: [lo, hi] with a non-positive lo replaced by hi * 1e-6

@@ -465,6 +465,12 @@ TEST_F(CliTest, BadInputIsAOneLineErrorWithExitCode2AndNoOutput) {
     cases.push_back({"layer index of a CPU image",
                      "render --scene grate --technique vsv --size 8x8 --layer vsv.voxels --layer-index 3 --out " + out,
                      "--layer-index 3 is past the last layer of 'vsv.voxels'"});
+    cases.push_back({"exposure of 0",
+                     "render --scene grate --technique raymarch --size 8x8 --exposure 0 --out " + out,
+                     "--exposure must be auto or a scale above 0 (1 writes the values as they are), not '0'"});
+    cases.push_back({"negative exposure",
+                     "render --scene grate --technique raymarch --size 8x8 --exposure -1 --out " + out,
+                     "--exposure must be auto or a scale above 0"});
     cases.push_back({"fractional layer index",
                      "render --scene grate --technique vsv --size 8x8 --layer vsv.shadow_map --layer-index 2.5 --out " + out,
                      "--layer-index must be a whole number from 0 to 65536, not '2.5'"});

@@ -88,6 +88,27 @@ TEST(ViewStats, PercentilesIgnoreTheOutliersThatMinMaxShows) {
     EXPECT_EQ(whole.hi, 1e9f);
 }
 
+// Most values the same (a plane that lights 2 % of the pixels): the 2nd and 98th percentiles are both 0,
+// and a range of a point would map every lit pixel to white. The range then runs over all the values;
+// an image of one value has none (the caller keeps its declared range).
+TEST(ViewStats, PercentilesThatCollapseToAPointWidenToTheValuesOrGiveNoRange) {
+    std::vector<float> sparse(1000, 0.0f);
+    sparse[17] = 0.004f, sparse[500] = 0.002f, sparse[900] = 0.001f;
+    const ValueRange r = percentileRange(sparse, 0.02, 0.98);
+    ASSERT_TRUE(r.valid);
+    EXPECT_EQ(r.lo, 0.0f);
+    EXPECT_EQ(r.hi, 0.004f);
+    std::vector<float> negative(1000, 1.0f);
+    negative[3] = -2.0f;
+    const ValueRange n = percentileRange(negative, 0.02, 0.98);
+    EXPECT_EQ(n.lo, -2.0f);
+    EXPECT_EQ(n.hi, 1.0f);
+    EXPECT_FALSE(percentileRange(std::vector<float>(50, 0.25f), 0.02, 0.98).valid);
+    EXPECT_FALSE(percentileRange({0.25f, kNaN, kInf}, 0.0, 1.0).valid);
+    // Spread values keep their percentiles.
+    EXPECT_EQ(percentileRange({1, 2, 3, 4, 5}, 0.0, 0.5).hi, 3.0f);
+}
+
 TEST(ViewStats, TheLogMappingIsDefinedAtBothEnds) {
     EXPECT_FLOAT_EQ(mapToUnit(10.0f, 1.0f, 100.0f, true), 0.5f);
     EXPECT_FLOAT_EQ(mapToUnit(50.0f, 0.0f, 100.0f, false), 0.5f);

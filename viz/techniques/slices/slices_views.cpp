@@ -51,10 +51,15 @@ std::string SlicesTechnique::planeFragmentsNote() {
 
 Intermediate SlicesTechnique::planeIntermediate(int drawn, bool wasDrawn) {
     const std::string label = "Plane " + std::to_string(drawn);
-    if (wasDrawn)
-        return render::textureIntermediate(kPlane, label,
-                                           planeFragmentsNote() + "the last plane drawn alone (every light), float",
-                                           "stored value", ViewKind::Colour, 0.0f, 0.05f, mPlane);
+    if (wasDrawn) {
+        Intermediate i = render::textureIntermediate(kPlane, label,
+                                                     planeFragmentsNote() + "the last plane drawn alone (every light), float",
+                                                     "stored value", ViewKind::Colour, 0.0f, 0.05f, mPlane);
+        // One plane adds from 1e-5 (a far plane in thin air) to 1e-1 (a plane through a spot's cone) of the
+        // sum: a fixed range leaves most planes black.
+        i.rangeFromData = true;
+        return i;
+    }
     // Drawing it costs one more plane per light and a wait for its fragment count: only for a caller that
     // shows it (StageInfo::onDemand), so a report's timing does not include it.
     Intermediate i;
