@@ -11,6 +11,10 @@ layout(location = 3) in uint aMaterial;
 uniform mat4 uModel;
 uniform mat4 uViewProj;
 
+// The same depth in every program that draws the scene: the surface pass tests its shading pass against
+// its depth prepass for equality.
+invariant gl_Position;
+
 out vec3 vPosition;
 out vec3 vNormal;
 out vec2 vUv;

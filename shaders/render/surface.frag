@@ -6,6 +6,10 @@
 #include "common/shadow_map.glsl"
 #include "render/materials.glsl"
 
+// Depth and stencil are tested before the shader (SurfacePass: equal to the prepass's depth, the first
+// such fragment only), so that it runs once a pixel even though it may discard.
+layout(early_fragment_tests) in;
+
 uniform float uZfar;
 #include "common/medium.glsl"  // uSigmaS, uSigmaT, uG
 uniform int uLightCount;

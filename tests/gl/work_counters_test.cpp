@@ -12,6 +12,7 @@
 #include "minmax_frame.h"
 #include "render/host_device.h"
 #include "scene/builtin_scenes.h"
+#include "scene/scene_source.h"
 #include "technique_test_util.h"
 
 namespace viz::testing {
@@ -68,8 +69,9 @@ TEST_F(WorkCountersTest, RaymarchLooksUpTheShadowMapOncePerPixelSampleAndLight) 
 }
 
 // The primitives counter against the scene's triangles, counted from its meshes: the surface pass draws
-// every mesh once; the shadow pass draws them once into a sun's 2D map and once per face into a point
-// light's cube map. The march itself is a compute pass and draws nothing.
+// every mesh twice (its depth prepass, then the shading); the shadow pass draws them once into a sun's 2D
+// map and once per face into a point light's cube map. The march itself is a compute pass and draws
+// nothing.
 TEST_F(WorkCountersTest, PrimitivesAreTheScenesTrianglesOncePerPassAndShadowFace) {
     struct PassCase {
         const char* scene;
@@ -93,8 +95,27 @@ TEST_F(WorkCountersTest, PrimitivesAreTheScenesTrianglesOncePerPassAndShadowFace
         ASSERT_TRUE(shadow && surface && march) << c.scene;
         ASSERT_EQ(shadow->work.size(), std::size_t(gl::kWorkCounts));
         EXPECT_EQ(shadow->work[gl::kWorkPrimitives], c.shadowPasses * triangles) << c.scene;
-        EXPECT_EQ(surface->work[gl::kWorkPrimitives], triangles) << c.scene;
+        EXPECT_EQ(surface->work[gl::kWorkPrimitives], 2 * triangles) << c.scene;
         EXPECT_EQ(march->work[gl::kWorkPrimitives], 0u) << c.scene;
+    }
+}
+
+// The surface pass shades one fragment a pixel whose ray meets a surface within zfar, however many
+// triangles cover it (its depth prepass): colonnade's and forest's overlap about two deep at 320x240.
+// The covered pixels are counted from the distance it wrote (sky and misses hold zfar).
+TEST_F(WorkCountersTest, TheSurfacePassShadesOneFragmentPerCoveredPixel) {
+    for (const char* name : {"colonnade", "forest", "stiff/depth-range-1e6"}) {
+        const scene::Scene scene = scene::loadScene(name);
+        gl::WorkCounters::setEnabled(true);
+        const FrameOutput out = render(scene, "raymarch", {{"samples", 4.0}}, 64, 48, -1, {"raymarch.distance"});
+        gl::WorkCounters::setEnabled(false);
+        const StageTiming* surface = stage(out, "raymarch.surface");
+        const Intermediate* distance = find(out, "raymarch.distance");
+        ASSERT_TRUE(surface && distance && distance->image) << name;
+        std::uint64_t covered = 0;
+        for (float d : distance->image->pixels) covered += d < float(scene.camera.zfar);
+        EXPECT_GT(covered, 0u) << name;
+        EXPECT_EQ(surface->work[hd::kWorkFragments], covered) << name;
     }
 }
 

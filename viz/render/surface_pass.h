@@ -30,7 +30,7 @@ public:
     int height() const { return mHeight; }
 
 private:
-    gl::Program mProgram;
+    gl::Program mProgram, mDepthProgram;  // shading; the depth prepass
     MediumBlock mMedium;
     gl::Texture mDistance, mRadiance, mDepth;
     gl::Framebuffer mFramebuffer;
