@@ -10,7 +10,6 @@
 #include "core/image_io.h"
 #include "core/staged_folder.h"
 #include "debug/technique.h"
-#include "gl/throughput_probe.h"
 #include "platform/context_egl.h"
 #include "plot/plot.h"
 #include "report/bench_table.h"
@@ -224,8 +223,7 @@ int runBenchCommand(Args& args, const std::string& commandLine) {
     viz::StagedFolder folder(o.out);
     auto context = viz::HeadlessContext::create(false);
     const std::string renderer = rendererDescription();
-    const viz::gl::ArithmeticRatio arithmetic = viz::gl::measureArithmeticRatio();
-    if (arithmetic.fragmentOverCompute > 2.0) std::fprintf(stderr, "note: %s\n", viz::gl::describeArithmeticRatio(arithmetic).c_str());
+    const RendererArithmetic arithmetic = measureRendererArithmetic();
 
     std::vector<viz::report::BenchRow> rows;
     std::vector<std::string> clocks;
@@ -323,7 +321,7 @@ int runBenchCommand(Args& args, const std::string& commandLine) {
     meta.command = commandLine;
     meta.machine = machineDescription();
     meta.renderer = renderer;
-    meta.arithmeticNote = viz::gl::describeArithmeticRatio(arithmetic);
+    meta.arithmeticNote = arithmetic.line;
     for (const std::string& c : clocks) meta.clock += (meta.clock.empty() ? "" : ", ") + c;
     meta.runs = o.runs;
     meta.quick = o.quick;

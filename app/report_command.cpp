@@ -20,7 +20,6 @@
 #include "core/image_io.h"
 #include "debug/technique.h"
 #include "gl/gl.h"
-#include "gl/throughput_probe.h"
 #include "gl/work_counters.h"
 #include "platform/context_egl.h"
 #include "plot/plot.h"
@@ -342,10 +341,9 @@ int runReportCommand(Args& args, const std::string& commandLine) {
     auto context = viz::HeadlessContext::create(false);
     viz::report::ReportMeta meta = describeRun(o, commandLine);
     // Before any technique runs: what this renderer's fragment passes pay against its compute passes.
-    const viz::gl::ArithmeticRatio arithmetic = viz::gl::measureArithmeticRatio();
+    const RendererArithmetic arithmetic = measureRendererArithmetic();
     meta.fragmentOverCompute = arithmetic.fragmentOverCompute;
-    meta.arithmeticNote = viz::gl::describeArithmeticRatio(arithmetic);
-    if (arithmetic.fragmentOverCompute > 2.0) std::fprintf(stderr, "note: %s\n", meta.arithmeticNote.c_str());
+    meta.arithmeticNote = arithmetic.line;
 
     const viz::ui::FontAtlas font = viz::ui::FontAtlas::bake(viz::ui::FontAtlas::defaultFontPath(), 15.0f);
     std::vector<viz::report::ReportRow> rows;

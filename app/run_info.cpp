@@ -13,6 +13,7 @@
 
 #include "core/error.h"
 #include "gl/context_info.h"
+#include "gl/throughput_probe.h"
 
 namespace airlight {
 
@@ -91,6 +92,13 @@ std::string machineDescription() {
 std::string rendererDescription() {
     const viz::gl::ContextInfo info = viz::gl::contextInfo();
     return info.renderer + ", OpenGL " + info.version;
+}
+
+RendererArithmetic measureRendererArithmetic() {
+    const viz::gl::ArithmeticRatio ratio = viz::gl::measureArithmeticRatio();
+    RendererArithmetic r{ratio.fragmentOverCompute, viz::gl::describeArithmeticRatio(ratio)};
+    if (ratio.handicapsFragments()) std::fprintf(stderr, "note: %s\n", r.line.c_str());
+    return r;
 }
 
 std::string fileStem(const std::string& text) {

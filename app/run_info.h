@@ -20,6 +20,14 @@ std::string utcNow();                  // "2026-11-26T16:41:38Z"
 std::string machineDescription();      // "host, CPU model, N threads"
 // "RENDERER, OpenGL VERSION" of the current GL context.
 std::string rendererDescription();
+// The renderer's fragment against compute arithmetic (gl::measureArithmeticRatio), measured before any
+// technique runs, with its line for the page (gl::describeArithmeticRatio); where it handicaps the
+// fragment-shaded passes the line is printed on stderr as a note too.
+struct RendererArithmetic {
+    double fragmentOverCompute = 0.0;
+    std::string line;
+};
+RendererArithmetic measureRendererArithmetic();
 // File-name friendly: letters, digits, '-' and '_' kept, anything else becomes '_'.
 std::string fileStem(const std::string& text);
 

@@ -115,9 +115,7 @@ ValueRange percentileRange(std::vector<float> values, double lower, double upper
     // of the pixels, or a difference on a few, showed all white. Then the smallest and largest value,
     // and none where the image holds one value (the caller keeps its declared range).
     if (!(r.hi > r.lo)) {
-        const auto [smallest, largest] = std::minmax_element(values.begin(), values.end());
-        r.lo = *smallest;
-        r.hi = *largest;
+        r = finiteRange(values);
         r.valid = r.hi > r.lo;
     }
     return r;

@@ -180,7 +180,7 @@ std::string describeArithmeticRatio(const ArithmeticRatio& r) {
     char head[160];
     std::snprintf(head, sizeof head, "the same arithmetic takes %.3gx as long in a fragment shader as in a compute shader here",
                   r.fragmentOverCompute);
-    if (!(r.fragmentOverCompute > 2.0)) return head;
+    if (!r.handicapsFragments()) return head;
     return std::string(head) +
            ": the techniques' fragment-shaded passes (every surface pass, slices' planes, polyvol's volume) pay that "
            "against the compute passes (raymarch's march, minmax, vsv and ivsv), a handicap a graphics card does not have "

@@ -55,10 +55,12 @@ struct ArithmeticRatio {
     double fragmentOverCompute = 0.0;
     double computeMilliseconds = 0.0, fragmentMilliseconds = 0.0;
     int iterations = 0;
+    // Far enough above 1 that the fragment-shaded passes lose against the compute passes on this renderer.
+    bool handicapsFragments() const { return fragmentOverCompute > 2.0; }
 };
 ArithmeticRatio measureArithmeticRatio();
 
-// One line for people: the ratio, and above 2 what it means for the techniques' fragment-shaded passes.
+// One line for people: the ratio, and where it handicaps them what it means for the techniques' fragment-shaded passes.
 std::string describeArithmeticRatio(const ArithmeticRatio& ratio);
 
 // The value probe/alu.glsl gives pixel (x, y) (GL window coordinates) with a = 1, b = 1/1024: exact.
